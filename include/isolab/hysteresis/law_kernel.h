@@ -1,0 +1,26 @@
+// The closed set of update kernels, stored by value. Every named law (law_parameters.h) compiles
+// to one of these, so a parallel assembly is a flat array dispatched by a switch, with no heap
+// object or virtual call per component.
+#pragma once
+
+#include <variant>
+
+#include "isolab/hysteresis/dashpot.h"
+#include "isolab/hysteresis/elastic_spring.h"
+#include "isolab/hysteresis/parallel_slider.h"
+#include "isolab/hysteresis/series_slider.h"
+
+namespace isolab::hysteresis {
+
+using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot>;
+
+inline void UpdateLaw(const LawKernel& kernel, const LawState& committed, const LawInput& in,
+                      LawState* trial, LawResponse* response) {
+  std::visit([&](const auto& law) { law.Update(committed, in, trial, response); }, kernel);
+}
+
+inline double StoredEnergy(const LawKernel& kernel, const LawState& state) {
+  return std::visit([&](const auto& law) { return law.StoredEnergy(state); }, kernel);
+}
+
+}  // namespace isolab::hysteresis

@@ -1,0 +1,72 @@
+// The named element laws and their parameters, in the paper's mathematical form (k0, k1, k2, uy,
+// uyh) or its mechanical form (ke, kh1, kh2, fs, uc), converted as in Markou & Manolis (2016),
+// Table 1 (restated in shared/design/models.md):
+//
+//   THM1 (series):   ke = k0, kh1 = k0 k1/(k0 - k1), kh2 = k0 k2/(k0 - k2), fs = k0 uy,
+//                    uc = (uyh - uy)(k0 - k1)/k0
+//   THM2 (parallel): ke = k0, kh1 = k1, kh2 = k2, fs = (k0 - k1) uy, uc = uyh
+//   BHM1, BHM2: THM1, THM2 with k2 = k1 (one hardening stiffness kh, no uyh / uc).
+//
+// Degenerate forms are their own types and also reachable as THM1: the trilinear elastic spring
+// (THM1 with uy = 0 and k0 >> k1, k2; then kh1 = k1, kh2 = k2, uc = uyh) and the elastoplastic
+// element (THM1 with k1 = k2 = 0; uyh is then meaningless and may be omitted).
+//
+// Units are whatever the caller uses consistently (the paper: kN, mm).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "isolab/hysteresis/law_kernel.h"
+
+namespace isolab::hysteresis {
+
+enum class LawType {
+  kLinearSpring,
+  kDashpot,
+  kBhm1,
+  kBhm2,
+  kThm1,
+  kThm2,
+  kTrilinearElastic,
+  kElastoplastic,
+};
+
+inline constexpr int kMaxLawParameters = 5;
+
+enum class ParameterForm { kMathematical, kMechanical };
+
+// The name used in model files ("thm1", "linear_spring", ...).
+std::string_view LawName(LawType type);
+std::optional<LawType> LawTypeFromName(std::string_view name);
+std::span<const LawType> AllLawTypes();
+
+// The parameter names of a law in one form, in the order values are passed and returned.
+std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form);
+
+// True when a law may omit this key: THM1's uyh (uc) when k1 = k2 (kh1 = kh2).
+bool IsOptionalKey(LawType type, std::string_view key);
+
+// A validated law, stored in mathematical form.
+class LawParameters {
+ public:
+  // `values` follows ParameterKeys(type, form); NaN marks an omitted value. Throws
+  // InvalidParameter naming the first key that breaks a rule, in the form given.
+  static LawParameters Make(LawType type, ParameterForm form, std::span<const double> values);
+
+  LawType type() const { return type_; }
+  // Values in the order of ParameterKeys(type(), form); NaN for an omitted optional value.
+  std::span<const double> Values(ParameterForm form) const;
+  LawKernel Kernel() const;
+
+ private:
+  LawParameters(LawType type, std::array<double, kMaxLawParameters> mathematical);
+
+  LawType type_;
+  std::array<double, kMaxLawParameters> mathematical_;
+  std::array<double, kMaxLawParameters> mechanical_;
+};
+
+}  // namespace isolab::hysteresis

@@ -1,0 +1,29 @@
+// The state contract every element law follows (OpenSees' committed/trial split, made structural
+// as in MFront): Update(const committed&, input, trial*, response*) is a pure function, so a
+// trial can be repeated or dropped; committing is the caller's swap.
+#pragma once
+
+namespace isolab::hysteresis {
+
+// What drives a law: the element's total deformation and its rate.
+struct LawInput {
+  double u = 0.0;  // deformation (length)
+  double v = 0.0;  // deformation rate (length/time); only rate-dependent laws read it
+};
+
+// A law's state after an update. Everything a law needs to continue from here.
+struct LawState {
+  double u = 0.0;           // deformation at which this state was computed (length)
+  double v = 0.0;           // deformation rate at which this state was computed (length/time)
+  double slider = 0.0;      // slider displacement: u_h (series form), u_s (parallel form); else 0
+  double dissipated = 0.0;  // energy dissipated since rest: slider work or dashpot work (force*length)
+};
+
+// Force and its exact derivatives at the trial state.
+struct LawResponse {
+  double force = 0.0;      // (force)
+  double stiffness = 0.0;  // d force / d u at fixed committed state (force/length)
+  double damping = 0.0;    // d force / d v (force*time/length)
+};
+
+}  // namespace isolab::hysteresis

@@ -1,0 +1,239 @@
+#include "cyclic_command.h"
+
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <nlohmann/json.hpp>
+
+#include "isolab/core/errors.h"
+#include "isolab/hysteresis/cyclic_test.h"
+#include "isolab/io/atomic_file.h"
+#include "isolab/io/model_file.h"
+
+namespace isolab::cli {
+namespace {
+
+using hysteresis::CyclicProtocol;
+using hysteresis::CyclicResult;
+using hysteresis::ParameterForm;
+
+struct Run {
+  const io::ModelFile* model;
+  CyclicResult result;
+};
+
+std::vector<CyclicProtocol> Protocols(const io::ModelFile& model, const CyclicOptions& options) {
+  CyclicProtocol base = model.cyclic.value_or(CyclicProtocol{});
+  if (options.period) base.period = *options.period;
+  if (options.cycles) base.cycles = *options.cycles;
+  if (options.steps_per_cycle) base.steps_per_cycle = *options.steps_per_cycle;
+  std::vector<double> amplitudes = options.amplitudes;
+  if (amplitudes.empty()) {
+    if (!model.cyclic) {
+      throw InputError({model.path}, "no amplitude: give --amplitude or a 'cyclic:' section");
+    }
+    amplitudes.push_back(model.cyclic->amplitude);
+  }
+  std::vector<CyclicProtocol> protocols;
+  for (const double amplitude : amplitudes) {
+    CyclicProtocol protocol = base;
+    protocol.amplitude = amplitude;
+    try {
+      protocol.Validate();
+    } catch (const InvalidParameter& error) {
+      throw InputError({"command line"}, error.violation().Describe());
+    }
+    protocols.push_back(protocol);
+  }
+  return protocols;
+}
+
+std::string ParameterText(const hysteresis::LawParameters& parameters, ParameterForm form) {
+  const auto keys = hysteresis::ParameterKeys(parameters.type(), form);
+  const auto values = parameters.Values(form);
+  std::string text;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (std::isnan(values[i])) continue;  // an omitted breakpoint between equal slopes
+    text += fmt::format("{}{}={:.6g}", text.empty() ? "" : " ", keys[i], values[i]);
+  }
+  return text;
+}
+
+void PrintModel(const io::ModelFile& model, std::ostream& out) {
+  fmt::print(out, "== {} ==\n", model.path);
+  if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
+  fmt::print(out, "{:<12} {:<18} {:<48} {}\n", "component", "type", "mathematical", "mechanical");
+  for (const auto& component : model.isolation.components()) {
+    fmt::print(out, "{:<12} {:<18} {:<48} {}\n", component.name,
+               hysteresis::LawName(component.parameters.type()),
+               ParameterText(component.parameters, ParameterForm::kMathematical),
+               ParameterText(component.parameters, ParameterForm::kMechanical));
+  }
+}
+
+void PrintRun(const Run& run, std::ostream& out) {
+  const io::Units& u = run.model->units;
+  const CyclicProtocol& p = run.result.protocol;
+  fmt::print(out, "\nu_a = {:g} {}, T = {:g} {}, {} cycles, {} steps per cycle\n", p.amplitude,
+             u.length, p.period, u.time, p.cycles, p.steps_per_cycle);
+  fmt::print(out, "{:>5} {:>16} {:>14}   slider displacement at +u_a [{}]\n", "cycle",
+             fmt::format("W_d [{}*{}]", u.force, u.length), fmt::format("peak|F| [{}]", u.force),
+             u.length);
+  fmt::print(out, "{:>38}", "");
+  for (const auto& component : run.model->isolation.components()) {
+    fmt::print(out, " {:>11}", component.name);
+  }
+  fmt::print(out, "\n");
+  for (const auto& cycle : run.result.cycles) {
+    fmt::print(out, "{:>5} {:>16.6g} {:>14.6g}  ", cycle.index, cycle.dissipated, cycle.peak_force);
+    for (const auto& component : cycle.components) fmt::print(out, " {:>11.6g}", component.slider_at_peak);
+    fmt::print(out, "\n");
+  }
+}
+
+// Energy of the last cycle against amplitude, when one model ran at several amplitudes.
+void PrintAmplitudeTable(const std::vector<Run>& runs, std::size_t first, std::ostream& out) {
+  const io::Units& u = runs[first].model->units;
+  fmt::print(out, "\nlast cycle against amplitude\n{:>12} {:>16} {:>14}\n",
+             fmt::format("u_a [{}]", u.length), fmt::format("W_d [{}*{}]", u.force, u.length),
+             fmt::format("peak|F| [{}]", u.force));
+  for (std::size_t i = first; i < runs.size() && runs[i].model == runs[first].model; ++i) {
+    const auto& last = runs[i].result.cycles.back();
+    fmt::print(out, "{:>12g} {:>16.6g} {:>14.6g}\n", runs[i].result.protocol.amplitude,
+               last.dissipated, last.peak_force);
+  }
+}
+
+nlohmann::json ParameterJson(const hysteresis::LawParameters& parameters, ParameterForm form) {
+  nlohmann::json json = nlohmann::json::object();
+  const auto keys = hysteresis::ParameterKeys(parameters.type(), form);
+  const auto values = parameters.Values(form);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (!std::isnan(values[i])) json[std::string(keys[i])] = values[i];
+  }
+  return json;
+}
+
+nlohmann::json RunJson(const Run& run) {
+  const auto& components = run.model->isolation.components();
+  nlohmann::json json;
+  json["model"] = run.model->path;
+  json["units"] = {{"force", run.model->units.force},
+                   {"length", run.model->units.length},
+                   {"time", run.model->units.time}};
+  const CyclicProtocol& p = run.result.protocol;
+  json["protocol"] = {{"amplitude", p.amplitude},
+                      {"period", p.period},
+                      {"cycles", p.cycles},
+                      {"steps_per_cycle", p.steps_per_cycle}};
+  json["components"] = nlohmann::json::array();
+  for (const auto& component : components) {
+    json["components"].push_back(
+        {{"name", component.name},
+         {"type", hysteresis::LawName(component.parameters.type())},
+         {"mathematical", ParameterJson(component.parameters, ParameterForm::kMathematical)},
+         {"mechanical", ParameterJson(component.parameters, ParameterForm::kMechanical)}});
+  }
+  json["cycles"] = nlohmann::json::array();
+  for (const auto& cycle : run.result.cycles) {
+    nlohmann::json per_component = nlohmann::json::array();
+    for (std::size_t c = 0; c < components.size(); ++c) {
+      per_component.push_back({{"name", components[c].name},
+                               {"dissipated", cycle.components[c].dissipated},
+                               {"slider_at_peak", cycle.components[c].slider_at_peak}});
+    }
+    json["cycles"].push_back({{"cycle", cycle.index},
+                              {"dissipated", cycle.dissipated},
+                              {"peak_force", cycle.peak_force},
+                              {"components", per_component}});
+  }
+  return json;
+}
+
+void WriteLoopCsv(const Run& run, const std::string& path) {
+  const auto& components = run.model->isolation.components();
+  const auto& loop = run.result.loop;
+  io::WriteTextFileAtomically(path, [&](std::ostream& out) {
+    const io::Units& u = run.model->units;
+    fmt::print(out, "time_{},u_{},force_{}", u.time, u.length, u.force);
+    for (const auto& component : components) fmt::print(out, ",force_{}_{}", component.name, u.force);
+    fmt::print(out, "\n");
+    for (std::size_t k = 0; k < loop.time.size(); ++k) {
+      fmt::print(out, "{:.10g},{:.10g},{:.10g}", loop.time[k], loop.displacement[k], loop.force[k]);
+      for (std::size_t c = 0; c < components.size(); ++c) {
+        fmt::print(out, ",{:.10g}", loop.component_force[k * components.size() + c]);
+      }
+      fmt::print(out, "\n");
+    }
+  });
+}
+
+// One CSV per run; with several runs, "loop.csv" becomes "loop_<model>_<amplitude>.csv".
+std::string CsvPath(const std::string& csv, const Run& run, bool several) {
+  if (!several) return csv;
+  const std::filesystem::path base(csv);
+  const std::string stem = std::filesystem::path(run.model->path).stem().string();
+  return (base.parent_path() / fmt::format("{}_{}_{:g}{}", base.stem().string(), stem,
+                                           run.result.protocol.amplitude,
+                                           base.extension().string()))
+      .string();
+}
+
+}  // namespace
+
+void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "cyclic", "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report "
+                "energy per cycle, peak force and slider displacements");
+  command->add_option("models", options.models, "Model files (YAML) with an isolation section")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-a,--amplitude", options.amplitudes,
+                      "Displacement amplitude(s) u_a, comma-separated (model length unit)")
+      ->delimiter(',');
+  command->add_option("-T,--period", options.period, "Period T (model time unit)");
+  command->add_option("-n,--cycles", options.cycles, "Number of cycles");
+  command->add_option("--steps-per-cycle", options.steps_per_cycle,
+                      "Samples per cycle, a multiple of 4");
+  command->add_option("--csv", options.csv, "Write the loop (time, u, force, force per component)");
+  command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
+}
+
+void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
+  std::vector<io::ModelFile> models;
+  models.reserve(options.models.size());
+  for (const std::string& path : options.models) models.push_back(io::LoadModelFile(path));
+
+  std::vector<Run> runs;
+  for (const io::ModelFile& model : models) {
+    for (const CyclicProtocol& protocol : Protocols(model, options)) {
+      runs.push_back({&model, hysteresis::RunCyclicTest(model.isolation, protocol)});
+    }
+  }
+
+  if (!options.csv.empty()) {
+    for (const Run& run : runs) WriteLoopCsv(run, CsvPath(options.csv, run, runs.size() > 1));
+  }
+
+  if (options.json) {
+    nlohmann::json json = {{"runs", nlohmann::json::array()}};
+    for (const Run& run : runs) json["runs"].push_back(RunJson(run));
+    out << json.dump(2) << "\n";
+    return;
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const bool first_of_model = i == 0 || runs[i - 1].model != runs[i].model;
+    if (first_of_model) fmt::print(out, "{}", i == 0 ? "" : "\n"), PrintModel(*runs[i].model, out);
+    PrintRun(runs[i], out);
+    const bool last_of_model = i + 1 == runs.size() || runs[i + 1].model != runs[i].model;
+    if (last_of_model && !first_of_model) {
+      std::size_t first = i;
+      while (first > 0 && runs[first - 1].model == runs[i].model) --first;
+      PrintAmplitudeTable(runs, first, out);
+    }
+  }
+}
+
+}  // namespace isolab::cli

@@ -1,0 +1,32 @@
+// `isolab cyclic`: imposes u(t) = u_a sin(2 pi t / T) on the isolation assembly of one or more
+// model files and reports, per cycle, the dissipated energy, the peak force and each component's
+// slider displacement at +u_a; the loop goes to CSV on request.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace isolab::cli {
+
+struct CyclicOptions {
+  std::vector<std::string> models;
+  std::vector<double> amplitudes;      // overrides the files' cyclic.amplitude; one run each
+  std::optional<double> period;        // overrides cyclic.period
+  std::optional<int> cycles;           // overrides cyclic.cycles
+  std::optional<int> steps_per_cycle;  // overrides cyclic.steps_per_cycle
+  std::string csv;                     // loop output; one file per run, suffixed when several
+  bool json = false;
+};
+
+void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options);
+
+// Throws InputError for bad files or options.
+void RunCyclicCommand(const CyclicOptions& options, std::ostream& out);
+
+}  // namespace isolab::cli

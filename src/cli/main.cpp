@@ -1,0 +1,35 @@
+// isolab: time-history analysis of base-isolated structures. Exit codes: 0 success, 1 a failure
+// inside isolab, 2 bad input (file, option, parameter), with a message saying where and why.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "cyclic_command.h"
+#include "isolab/core/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"isolab: time-history solver for base-isolated structures"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("isolab ") + ISOLAB_VERSION);
+
+  isolab::cli::CyclicOptions cyclic;
+  isolab::cli::RegisterCyclicCommand(app, cyclic);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
+  } catch (const isolab::InputError& error) {
+    std::cerr << "isolab: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "isolab: internal error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

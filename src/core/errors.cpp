@@ -1,0 +1,27 @@
+#include "isolab/core/errors.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace isolab {
+
+std::string ParameterViolation::Describe() const {
+  if (std::isnan(value)) return fmt::format("{} ({})", key, rule);
+  return fmt::format("{} = {:g} ({})", key, value, rule);
+}
+
+InvalidParameter::InvalidParameter(ParameterViolation violation)
+    : std::invalid_argument(violation.Describe()), violation_(std::move(violation)) {}
+
+std::string SourceLocation::Describe() const {
+  if (line <= 0) return file;
+  if (column <= 0) return fmt::format("{}:{}", file, line);
+  return fmt::format("{}:{}:{}", file, line, column);
+}
+
+InputError::InputError(SourceLocation location, const std::string& what)
+    : std::runtime_error(fmt::format("{}: {}", location.Describe(), what)),
+      location_(std::move(location)) {}
+
+}  // namespace isolab

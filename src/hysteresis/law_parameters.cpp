@@ -1,0 +1,336 @@
+#include "isolab/hysteresis/law_parameters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "isolab/core/errors.h"
+
+namespace isolab::hysteresis {
+namespace {
+
+using ParameterArray = std::array<double, kMaxLawParameters>;
+using Keys = std::span<const std::string_view>;
+
+constexpr std::string_view kSpringKeys[] = {"k"};
+constexpr std::string_view kDashpotKeys[] = {"c"};
+constexpr std::string_view kBilinearMath[] = {"k0", "k1", "uy"};
+constexpr std::string_view kBilinearMech[] = {"ke", "kh", "fs"};
+constexpr std::string_view kTrilinearMath[] = {"k0", "k1", "k2", "uy", "uyh"};
+constexpr std::string_view kTrilinearMech[] = {"ke", "kh1", "kh2", "fs", "uc"};
+constexpr std::string_view kElasticMath[] = {"k1", "k2", "uyh"};
+constexpr std::string_view kElasticMech[] = {"kh1", "kh2", "uc"};
+constexpr std::string_view kElastoplasticMath[] = {"k0", "uy"};
+constexpr std::string_view kElastoplasticMech[] = {"ke", "fs"};
+
+constexpr LawType kAllTypes[] = {
+    LawType::kLinearSpring, LawType::kDashpot, LawType::kBhm1,
+    LawType::kBhm2,         LawType::kThm1,    LawType::kThm2,
+    LawType::kTrilinearElastic, LawType::kElastoplastic,
+};
+
+// Checks rules in the order written and throws at the first one broken, naming the key as the
+// user wrote it.
+class RuleChecker {
+ public:
+  RuleChecker(Keys keys, const ParameterArray& values) : keys_(keys), values_(values) {}
+
+  double operator()(std::string_view key) const { return values_[Index(key)]; }
+
+  void Greater(std::string_view key, double bound, std::string_view bound_text = {}) const {
+    Check(key, (*this)(key) > bound, ">", bound, bound_text);
+  }
+  void AtLeast(std::string_view key, double bound, std::string_view bound_text = {}) const {
+    Check(key, (*this)(key) >= bound, ">=", bound, bound_text);
+  }
+  void Less(std::string_view key, double bound, std::string_view bound_text = {}) const {
+    Check(key, (*this)(key) < bound, "<", bound, bound_text);
+  }
+  // A rule on a combination: "ke + kh2 > 0".
+  void Holds(std::string_view key, bool ok, std::string rule) const {
+    if (!ok) throw InvalidParameter({std::string(key), (*this)(key), std::move(rule)});
+  }
+
+ private:
+  std::size_t Index(std::string_view key) const {
+    return static_cast<std::size_t>(std::find(keys_.begin(), keys_.end(), key) - keys_.begin());
+  }
+  void Check(std::string_view key, bool ok, std::string_view op, double bound,
+             std::string_view bound_text) const {
+    if (ok) return;
+    const std::string rule = bound_text.empty()
+                                 ? fmt::format("must be {} {:g}", op, bound)
+                                 : fmt::format("must be {} {} = {:g}", op, bound_text, bound);
+    throw InvalidParameter({std::string(key), (*this)(key), rule});
+  }
+
+  Keys keys_;
+  const ParameterArray& values_;
+};
+
+// The breakpoint that may be omitted when the two slopes around it are equal (it then marks no
+// change of slope): uyh between k1 and k2, or uc between kh1 and kh2.
+struct OptionalBreakpoint {
+  std::string_view key, slope1, slope2;
+};
+
+std::optional<OptionalBreakpoint> Breakpoint(LawType type, ParameterForm form) {
+  if (type != LawType::kThm1 && type != LawType::kThm2 && type != LawType::kTrilinearElastic) {
+    return std::nullopt;
+  }
+  if (form == ParameterForm::kMathematical) return OptionalBreakpoint{"uyh", "k1", "k2"};
+  return OptionalBreakpoint{"uc", "kh1", "kh2"};
+}
+
+// Every value present and finite, but for an optional breakpoint between equal slopes.
+void CheckPresentAndFinite(LawType type, ParameterForm form, const ParameterArray& values) {
+  const Keys keys = ParameterKeys(type, form);
+  const RuleChecker r(keys, values);
+  const auto breakpoint = Breakpoint(type, form);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (std::isnan(values[i])) {
+      if (!breakpoint || keys[i] != breakpoint->key) {
+        throw InvalidParameter({std::string(keys[i]), NAN, "is required"});
+      }
+      if (r(breakpoint->slope1) != r(breakpoint->slope2)) {
+        throw InvalidParameter({std::string(keys[i]), NAN,
+                                fmt::format("is required when {} != {}", breakpoint->slope1,
+                                            breakpoint->slope2)});
+      }
+    } else if (!std::isfinite(values[i])) {
+      throw InvalidParameter({std::string(keys[i]), values[i], "must be finite"});
+    }
+  }
+}
+
+void ValidateMathematical(LawType type, const ParameterArray& v) {
+  const RuleChecker r(ParameterKeys(type, ParameterForm::kMathematical), v);
+  switch (type) {
+    case LawType::kLinearSpring:
+      r.AtLeast("k", 0.0);
+      return;
+    case LawType::kDashpot:
+      r.AtLeast("c", 0.0);
+      return;
+    case LawType::kBhm1:
+    case LawType::kBhm2:
+      r.Greater("k0", 0.0);
+      r.Less("k1", r("k0"), "k0");
+      r.AtLeast("uy", 0.0);
+      return;
+    case LawType::kThm1:
+      r.Greater("k0", 0.0);
+      r.Less("k1", r("k0"), "k0");
+      r.Less("k2", r("k0"), "k0");
+      r.AtLeast("uy", 0.0);
+      if (!std::isnan(r("uyh"))) r.Greater("uyh", r("uy"), "uy");
+      return;
+    case LawType::kThm2:
+      r.Greater("k0", 0.0);
+      r.Less("k1", r("k0"), "k0");
+      r.AtLeast("uy", 0.0);
+      if (!std::isnan(r("uyh"))) r.Greater("uyh", 0.0);
+      return;
+    case LawType::kTrilinearElastic:
+      r.AtLeast("k1", 0.0);
+      if (!std::isnan(r("uyh"))) r.Greater("uyh", 0.0);
+      return;
+    case LawType::kElastoplastic:
+      r.Greater("k0", 0.0);
+      r.Greater("uy", 0.0);
+      return;
+  }
+}
+
+void ValidateMechanical(LawType type, const ParameterArray& v) {
+  const RuleChecker r(ParameterKeys(type, ParameterForm::kMechanical), v);
+  switch (type) {
+    case LawType::kLinearSpring:
+    case LawType::kDashpot:
+      ValidateMathematical(type, v);  // one parameter, the same name in both forms
+      return;
+    case LawType::kTrilinearElastic:
+      r.AtLeast("kh1", 0.0);
+      if (!std::isnan(r("uc"))) r.Greater("uc", 0.0);
+      return;
+    case LawType::kBhm1:
+      r.Greater("ke", 0.0);
+      r.Holds("kh", r("ke") + r("kh") > 0.0,
+              fmt::format("ke + kh must be > 0, is {:g}", r("ke") + r("kh")));
+      r.AtLeast("fs", 0.0);
+      return;
+    case LawType::kBhm2:
+      r.Greater("ke", 0.0);
+      r.Less("kh", r("ke"), "ke");
+      r.AtLeast("fs", 0.0);
+      return;
+    case LawType::kThm1:
+      r.Greater("ke", 0.0);
+      r.Holds("kh1", r("ke") + r("kh1") > 0.0,
+              fmt::format("ke + kh1 must be > 0, is {:g}", r("ke") + r("kh1")));
+      r.Holds("kh2", r("ke") + r("kh2") > 0.0,
+              fmt::format("ke + kh2 must be > 0, is {:g}", r("ke") + r("kh2")));
+      r.AtLeast("fs", 0.0);
+      if (!std::isnan(r("uc"))) r.Greater("uc", 0.0);
+      return;
+    case LawType::kThm2:
+      r.Greater("ke", 0.0);
+      r.Less("kh1", r("ke"), "ke");
+      r.AtLeast("fs", 0.0);
+      if (!std::isnan(r("uc"))) r.Greater("uc", 0.0);
+      return;
+    case LawType::kElastoplastic:
+      r.Greater("ke", 0.0);
+      r.Greater("fs", 0.0);
+      return;
+  }
+}
+
+// Table 1 of the paper, mathematical -> mechanical.
+ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m) {
+  switch (type) {
+    case LawType::kBhm1:  // k0, k1, uy -> ke, kh, fs
+      return {m[0], m[0] * m[1] / (m[0] - m[1]), m[0] * m[2], NAN, NAN};
+    case LawType::kBhm2:
+      return {m[0], m[1], (m[0] - m[1]) * m[2], NAN, NAN};
+    case LawType::kThm1: {  // k0, k1, k2, uy, uyh -> ke, kh1, kh2, fs, uc
+      const double k0 = m[0], k1 = m[1], k2 = m[2], uy = m[3], uyh = m[4];
+      return {k0, k0 * k1 / (k0 - k1), k0 * k2 / (k0 - k2), k0 * uy, (uyh - uy) * (k0 - k1) / k0};
+    }
+    case LawType::kThm2:
+      return {m[0], m[1], m[2], (m[0] - m[1]) * m[3], m[4]};
+    case LawType::kElastoplastic:
+      return {m[0], m[0] * m[1], NAN, NAN, NAN};
+    case LawType::kLinearSpring:
+    case LawType::kDashpot:
+    case LawType::kTrilinearElastic:
+      return m;
+  }
+  return m;
+}
+
+// Table 1 of the paper, mechanical -> mathematical.
+ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q) {
+  switch (type) {
+    case LawType::kBhm1:  // ke, kh, fs -> k0, k1, uy
+      return {q[0], q[0] * q[1] / (q[0] + q[1]), q[2] / q[0], NAN, NAN};
+    case LawType::kBhm2:
+      return {q[0], q[1], q[2] / (q[0] - q[1]), NAN, NAN};
+    case LawType::kThm1: {  // ke, kh1, kh2, fs, uc -> k0, k1, k2, uy, uyh
+      const double ke = q[0], kh1 = q[1], kh2 = q[2], fs = q[3], uc = q[4];
+      const double uy = fs / ke;
+      return {ke, ke * kh1 / (ke + kh1), ke * kh2 / (ke + kh2), uy, uy + uc * (ke + kh1) / ke};
+    }
+    case LawType::kThm2:
+      return {q[0], q[1], q[2], q[3] / (q[0] - q[1]), q[4]};
+    case LawType::kElastoplastic:
+      return {q[0], q[1] / q[0], NAN, NAN, NAN};
+    case LawType::kLinearSpring:
+    case LawType::kDashpot:
+    case LawType::kTrilinearElastic:
+      return q;
+  }
+  return q;
+}
+
+double BreakpointOrInfinity(double uc) { return std::isnan(uc) ? INFINITY : uc; }
+
+}  // namespace
+
+std::string_view LawName(LawType type) {
+  switch (type) {
+    case LawType::kLinearSpring: return "linear_spring";
+    case LawType::kDashpot: return "dashpot";
+    case LawType::kBhm1: return "bhm1";
+    case LawType::kBhm2: return "bhm2";
+    case LawType::kThm1: return "thm1";
+    case LawType::kThm2: return "thm2";
+    case LawType::kTrilinearElastic: return "trilinear_elastic";
+    case LawType::kElastoplastic: return "elastoplastic";
+  }
+  return "unknown";
+}
+
+std::optional<LawType> LawTypeFromName(std::string_view name) {
+  for (const LawType type : kAllTypes) {
+    if (LawName(type) == name) return type;
+  }
+  return std::nullopt;
+}
+
+std::span<const LawType> AllLawTypes() { return kAllTypes; }
+
+std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form) {
+  const bool math = form == ParameterForm::kMathematical;
+  switch (type) {
+    case LawType::kLinearSpring: return kSpringKeys;
+    case LawType::kDashpot: return kDashpotKeys;
+    case LawType::kBhm1:
+    case LawType::kBhm2: return math ? Keys(kBilinearMath) : Keys(kBilinearMech);
+    case LawType::kThm1:
+    case LawType::kThm2: return math ? Keys(kTrilinearMath) : Keys(kTrilinearMech);
+    case LawType::kTrilinearElastic: return math ? Keys(kElasticMath) : Keys(kElasticMech);
+    case LawType::kElastoplastic: return math ? Keys(kElastoplasticMath) : Keys(kElastoplasticMech);
+  }
+  return {};
+}
+
+bool IsOptionalKey(LawType type, std::string_view key) {
+  for (const ParameterForm form : {ParameterForm::kMathematical, ParameterForm::kMechanical}) {
+    const auto breakpoint = Breakpoint(type, form);
+    if (breakpoint && breakpoint->key == key) return true;
+  }
+  return false;
+}
+
+LawParameters LawParameters::Make(LawType type, ParameterForm form,
+                                  std::span<const double> values) {
+  ParameterArray given;
+  given.fill(NAN);
+  std::copy_n(values.begin(), std::min(values.size(), given.size()), given.begin());
+  CheckPresentAndFinite(type, form, given);
+  if (form == ParameterForm::kMathematical) {
+    ValidateMathematical(type, given);
+    return LawParameters(type, given);
+  }
+  ValidateMechanical(type, given);
+  return LawParameters(type, MathematicalFromMechanical(type, given));
+}
+
+LawParameters::LawParameters(LawType type, std::array<double, kMaxLawParameters> mathematical)
+    : type_(type),
+      mathematical_(mathematical),
+      mechanical_(MechanicalFromMathematical(type, mathematical)) {}
+
+std::span<const double> LawParameters::Values(ParameterForm form) const {
+  const std::size_t count = ParameterKeys(type_, form).size();
+  const auto& values = form == ParameterForm::kMathematical ? mathematical_ : mechanical_;
+  return std::span<const double>(values.data(), count);
+}
+
+LawKernel LawParameters::Kernel() const {
+  const auto& q = mechanical_;
+  switch (type_) {
+    case LawType::kLinearSpring:
+      return ElasticSpring{{q[0], q[0], INFINITY}};
+    case LawType::kDashpot:
+      return Dashpot{q[0]};
+    case LawType::kBhm1:
+      return SeriesSlider{q[0], q[2], {q[1], q[1], INFINITY}};
+    case LawType::kBhm2:
+      return ParallelSlider{q[0] - q[1], q[2], {q[1], q[1], INFINITY}};
+    case LawType::kThm1:
+      return SeriesSlider{q[0], q[3], {q[1], q[2], BreakpointOrInfinity(q[4])}};
+    case LawType::kThm2:
+      return ParallelSlider{q[0] - q[1], q[3], {q[1], q[2], BreakpointOrInfinity(q[4])}};
+    case LawType::kTrilinearElastic:
+      return ElasticSpring{{q[0], q[1], BreakpointOrInfinity(q[2])}};
+    case LawType::kElastoplastic:
+      return SeriesSlider{q[0], q[1], {0.0, 0.0, INFINITY}};
+  }
+  return Dashpot{0.0};
+}
+
+}  // namespace isolab::hysteresis

@@ -1,0 +1,23 @@
+#include "isolab/hysteresis/parallel_assembly.h"
+
+namespace isolab::hysteresis {
+
+ParallelAssembly::ParallelAssembly(std::vector<Component> components)
+    : components_(std::move(components)) {
+  kernels_.reserve(components_.size());
+  for (const Component& component : components_) kernels_.push_back(component.parameters.Kernel());
+}
+
+double ParallelAssembly::StoredEnergy(std::span<const LawState> states) const {
+  double energy = 0.0;
+  for (std::size_t i = 0; i < kernels_.size(); ++i) energy += hysteresis::StoredEnergy(kernels_[i], states[i]);
+  return energy;
+}
+
+double ParallelAssembly::DissipatedEnergy(std::span<const LawState> states) const {
+  double energy = 0.0;
+  for (const LawState& state : states) energy += state.dissipated;
+  return energy;
+}
+
+}  // namespace isolab::hysteresis

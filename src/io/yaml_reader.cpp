@@ -1,0 +1,150 @@
+#include "yaml_reader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace isolab::io {
+namespace {
+
+std::size_t EditDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string JoinWords(std::span<const std::string_view> words) {
+  std::string joined;
+  for (const std::string_view word : words) {
+    if (!joined.empty()) joined += ", ";
+    joined += word;
+  }
+  return joined;
+}
+
+}  // namespace
+
+std::string ChildPath(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
+}
+
+std::string IndexPath(const std::string& path, std::size_t index) {
+  return fmt::format("{}[{}]", path, index);
+}
+
+std::string_view NearestWord(std::string_view word, std::span<const std::string_view> candidates) {
+  std::string_view best;
+  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const std::string_view candidate : candidates) {
+    const std::size_t distance = EditDistance(word, candidate);
+    if (distance < best_distance) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+YAML::Node YamlReader::LoadFile() const {
+  std::ifstream stream(file_);
+  if (!stream) throw InputError({file_}, fmt::format("cannot open ({})", std::strerror(errno)));
+  try {
+    YAML::Node root = YAML::Load(stream);
+    if (!root.IsDefined() || root.IsNull()) throw InputError({file_, 1, 1}, "the file is empty");
+    return root;
+  } catch (const YAML::ParserException& e) {
+    throw InputError({file_, e.mark.line + 1, e.mark.column + 1},
+                     fmt::format("YAML syntax error: {}", e.msg));
+  }
+}
+
+SourceLocation YamlReader::Locate(const YAML::Node& node) const {
+  const YAML::Mark mark = node.Mark();
+  if (mark.is_null()) return {file_};
+  return {file_, mark.line + 1, mark.column + 1};
+}
+
+void YamlReader::Fail(const YAML::Node& node, const std::string& path,
+                      const std::string& what) const {
+  throw InputError(Locate(node), path.empty() ? what : fmt::format("{}: {}", path, what));
+}
+
+void YamlReader::RequireMap(const YAML::Node& node, const std::string& path) const {
+  if (!node.IsMap()) Fail(node, path, "expected a mapping of keys to values");
+}
+
+void YamlReader::RequireSequence(const YAML::Node& node, const std::string& path) const {
+  if (!node.IsSequence()) Fail(node, path, "expected a list");
+}
+
+YAML::Node YamlReader::Require(const YAML::Node& map, const std::string& path,
+                               std::string_view key) const {
+  YAML::Node child = map[std::string(key)];
+  if (!child.IsDefined() || child.IsNull()) {
+    Fail(map, path, fmt::format("missing key '{}'", key));
+  }
+  return child;
+}
+
+void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path,
+                           std::span<const std::string_view> allowed) const {
+  for (const auto& entry : map) {
+    const std::string key = entry.first.as<std::string>();
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    const std::string_view nearest = NearestWord(key, allowed);
+    const std::string hint =
+        nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest);
+    throw InputError(Locate(entry.first),
+                     fmt::format("{}: unknown key{}; expected one of: {}", ChildPath(path, key),
+                                 hint, JoinWords(allowed)));
+  }
+}
+
+double YamlReader::ReadNumber(const YAML::Node& node, const std::string& path) const {
+  if (!node.IsScalar()) Fail(node, path, "expected a number");
+  const std::string text = node.Scalar();
+  // YAML's own spellings of the non-finite values are numbers too; laws reject them by rule.
+  if (text == ".nan" || text == ".NaN" || text == ".NAN") return NAN;
+  if (text == ".inf" || text == ".Inf" || text == "+.inf") return INFINITY;
+  if (text == "-.inf" || text == "-.Inf") return -INFINITY;
+  double value = 0.0;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  if (!text.empty() && *begin == '+') ++begin;
+  const auto [last, error] = std::from_chars(begin, end, value);
+  if (error != std::errc() || last != end) {
+    Fail(node, path, fmt::format("'{}' is not a number", text));
+  }
+  return value;
+}
+
+int YamlReader::ReadInteger(const YAML::Node& node, const std::string& path) const {
+  const double value = ReadNumber(node, path);
+  if (!(std::abs(value) < 1e9) || value != std::round(value)) {
+    Fail(node, path, fmt::format("'{}' is not a whole number", node.Scalar()));
+  }
+  return static_cast<int>(value);
+}
+
+std::string YamlReader::ReadString(const YAML::Node& node, const std::string& path) const {
+  if (!node.IsScalar()) Fail(node, path, "expected a text value");
+  return node.Scalar();
+}
+
+}  // namespace isolab::io

@@ -1,0 +1,57 @@
+// Reading YAML with errors that say where: every accessor knows the file, the node's line and
+// column, and the key path from the document root ("isolation.components[2].k1").
+#pragma once
+
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <yaml-cpp/yaml.h>
+
+#include "isolab/core/errors.h"
+
+namespace isolab::io {
+
+class YamlReader {
+ public:
+  explicit YamlReader(std::string file) : file_(std::move(file)) {}
+
+  const std::string& file() const { return file_; }
+
+  // Parses the file; throws InputError for an unreadable file or a syntax error.
+  YAML::Node LoadFile() const;
+
+  SourceLocation Locate(const YAML::Node& node) const;
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& path,
+                         const std::string& what) const;
+
+  void RequireMap(const YAML::Node& node, const std::string& path) const;
+  void RequireSequence(const YAML::Node& node, const std::string& path) const;
+  // The child `key` of a map, or a "missing key" error at the map.
+  YAML::Node Require(const YAML::Node& map, const std::string& path, std::string_view key) const;
+
+  // Rejects keys outside `allowed`, suggesting the nearest valid one.
+  void CheckKeys(const YAML::Node& map, const std::string& path,
+                 std::span<const std::string_view> allowed) const;
+  void CheckKeys(const YAML::Node& map, const std::string& path,
+                 std::initializer_list<std::string_view> allowed) const {
+    CheckKeys(map, path, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+  }
+
+  double ReadNumber(const YAML::Node& node, const std::string& path) const;
+  int ReadInteger(const YAML::Node& node, const std::string& path) const;
+  std::string ReadString(const YAML::Node& node, const std::string& path) const;
+
+ private:
+  std::string file_;
+};
+
+// "path.key", or "key" at the root.
+std::string ChildPath(const std::string& path, std::string_view key);
+std::string IndexPath(const std::string& path, std::size_t index);
+
+// The candidate nearest to `word` by edit distance, or empty when none is plausibly meant.
+std::string_view NearestWord(std::string_view word, std::span<const std::string_view> candidates);
+
+}  // namespace isolab::io
