@@ -304,10 +304,10 @@ LawParameters::LawParameters(LawType type, std::array<double, kMaxLawParameters>
       mathematical_(mathematical),
       mechanical_(MechanicalFromMathematical(type, mathematical)) {}
 
-std::span<const double> LawParameters::Values(ParameterForm form) const {
+std::vector<double> LawParameters::Values(ParameterForm form) const {
   const std::size_t count = ParameterKeys(type_, form).size();
   const auto& values = form == ParameterForm::kMathematical ? mathematical_ : mechanical_;
-  return std::span<const double>(values.data(), count);
+  return std::vector<double>(values.begin(), values.begin() + count);
 }
 
 LawKernel LawParameters::Kernel() const {

@@ -18,6 +18,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "isolab/hysteresis/law_kernel.h"
 
@@ -58,7 +59,7 @@ class LawParameters {
 
   LawType type() const { return type_; }
   // Values in the order of ParameterKeys(type(), form); NaN for an omitted optional value.
-  std::span<const double> Values(ParameterForm form) const;
+  std::vector<double> Values(ParameterForm form) const;
   LawKernel Kernel() const;
 
  private:

@@ -1,0 +1,212 @@
+// The update contract of every rate-independent law: exact for any monotone increment, tangent
+// equal to the derivative of the update actually computed (in every phase, loading and
+// unloading), pure trials, and work = stored + dissipated energy.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "isolab/hysteresis/law_parameters.h"
+
+namespace isolab::hysteresis {
+namespace {
+
+struct LawCase {
+  std::string name;
+  LawKernel kernel;
+  double scale;                         // displacement range the path explores
+  std::vector<double> phase_tangents;   // slopes of every phase, from the paper's k0, k1, k2, k01
+};
+
+LawKernel Math(LawType type, std::vector<double> values) {
+  return LawParameters::Make(type, ParameterForm::kMathematical, values).Kernel();
+}
+
+void PrintTo(const LawCase& c, std::ostream* out) { *out << c.name; }
+
+std::vector<LawCase> Cases() {
+  return {
+      {"thm1_hard", Math(LawType::kThm1, {1, 0.2, 0.45, 20, 120}), 250, {1, 0.2, 0.45}},
+      {"thm1_soft", Math(LawType::kThm1, {1, 0.2, 0.05, 20, 120}), 250, {1, 0.2, 0.05}},
+      {"thm1_negative_k2", Math(LawType::kThm1, {0.863754, 0.402485, -0.792654, 7.146, 125.542}),
+       200, {0.863754, 0.402485, -0.792654}},
+      {"thm1_spring_limit", Math(LawType::kThm1, {1e6, 0.283532, 0.489882, 0, 64.809}), 150,
+       {0.283532, 0.489882}},
+      {"thm2_hard", Math(LawType::kThm2, {1, 0.2, 0.45, 20, 120}), 250, {1, 1.25, 0.2, 0.45}},
+      {"thm2_soft", Math(LawType::kThm2, {1, 0.2, 0.05, 20, 120}), 250, {1, 0.85, 0.2, 0.05}},
+      {"thm2_uyh_below_uy", Math(LawType::kThm2, {1, 0.2, 0.45, 20, 10}), 250, {1, 1.25, 0.2, 0.45}},
+      {"bhm1", Math(LawType::kBhm1, {1, 0.2, 20}), 250, {1, 0.2}},
+      {"bhm2", Math(LawType::kBhm2, {1, 0.2, 20}), 250, {1, 0.2}},
+      {"elastoplastic", Math(LawType::kElastoplastic, {3.225241, 0.597}), 10, {3.225241, 0.0}},
+      {"trilinear_elastic", Math(LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809}), 150,
+       {0.283532, 0.489882}},
+      {"linear_spring", Math(LawType::kLinearSpring, {0.7}), 100, {0.7}},
+  };
+}
+
+// Reversals at growing and shrinking amplitudes, so every phase is entered loading and unloading.
+std::vector<double> Turns(double scale) {
+  return {0.0, scale, -scale, 0.6 * scale, -0.3 * scale, 1.2 * scale, -1.2 * scale, 0.1 * scale};
+}
+
+std::vector<double> Path(double scale, int steps_per_unit_scale) {
+  std::vector<double> path;
+  const auto turns = Turns(scale);
+  for (std::size_t i = 0; i + 1 < turns.size(); ++i) {
+    const int n = static_cast<int>(std::ceil(std::abs(turns[i + 1] - turns[i]) / scale * steps_per_unit_scale));
+    for (int k = (i == 0 ? 0 : 1); k <= n; ++k) {
+      path.push_back(turns[i] + (turns[i + 1] - turns[i]) * k / n);
+    }
+  }
+  return path;
+}
+
+struct Step {
+  LawState state;
+  LawResponse response;
+};
+
+Step Trial(const LawKernel& kernel, const LawState& committed, double u) {
+  Step step;
+  UpdateLaw(kernel, committed, {u, 0.0}, &step.state, &step.response);
+  return step;
+}
+
+// The committed state after following `path` from rest.
+LawState Follow(const LawKernel& kernel, const std::vector<double>& path) {
+  LawState state;
+  for (const double u : path) state = Trial(kernel, state, u).state;
+  return state;
+}
+
+void ExpectRelativelyEqual(double a, double b, double reference, const std::string& what) {
+  EXPECT_NEAR(a, b, 1e-12 * std::max({std::abs(a), std::abs(b), reference})) << what;
+}
+
+class LawUpdate : public ::testing::TestWithParam<LawCase> {};
+
+TEST_P(LawUpdate, OneCallEqualsAThousandSubIncrements) {
+  const LawCase& c = GetParam();
+  const double s = c.scale;
+  // Start states: rest, after a positive excursion, after a negative one and a partial return.
+  const std::vector<std::vector<double>> histories = {
+      {0.0}, {0.5 * s, 1.1 * s}, {-1.1 * s, -0.4 * s}, {1.1 * s, -1.1 * s, -0.9 * s}};
+  for (const auto& history : histories) {
+    const LawState start = Follow(c.kernel, history);
+    for (const double target : {1.3 * s, -1.3 * s, 0.05 * s, 0.7 * s}) {
+      const Step one = Trial(c.kernel, start, target);
+      LawState sub = start;
+      Step last;
+      for (int k = 1; k <= 1000; ++k) {
+        last = Trial(c.kernel, sub, start.u + (target - start.u) * k / 1000.0);
+        sub = last.state;
+      }
+      const std::string where = c.name + " from " + std::to_string(start.u) + " to " + std::to_string(target);
+      ExpectRelativelyEqual(one.response.force, last.response.force, 1e-3 * s, where + " force");
+      ExpectRelativelyEqual(one.state.slider, sub.slider, 1e-3 * s, where + " slider");
+      ExpectRelativelyEqual(one.state.dissipated, sub.dissipated, 1e-3 * s, where + " dissipated");
+      ExpectRelativelyEqual(one.response.stiffness, last.response.stiffness, 1e-6, where + " tangent");
+    }
+  }
+}
+
+TEST_P(LawUpdate, TangentIsTheDerivativeOfTheUpdateInEveryPhase) {
+  const LawCase& c = GetParam();
+  // Steps far above round-off: the stiff THM1 spring limit computes ke (u - u_h) with ke = 1e6.
+  const double h = 1e-4 * c.scale;
+  std::set<double> phases_seen;
+  int checked = 0;
+  LawState committed;
+  for (const double u : Path(c.scale, 97)) {
+    const Step at = Trial(c.kernel, committed, u);
+    const double ahead = Trial(c.kernel, committed, u + h).response.force;
+    const double behind = Trial(c.kernel, committed, u - h).response.force;
+    const double right = (ahead - at.response.force) / h;
+    const double left = (at.response.force - behind) / h;
+    const double size = std::max({1.0, std::abs(left), std::abs(right)});
+    if (std::abs(right - left) < 1e-5 * size) {  // no breakpoint within +-h: the update is smooth
+      EXPECT_NEAR(at.response.stiffness, 0.5 * (left + right), 1e-5 * size)
+          << c.name << " at u = " << u << " from committed u = " << committed.u;
+      phases_seen.insert(std::round(at.response.stiffness * 1e4) / 1e4);
+      ++checked;
+    }
+    committed = at.state;
+  }
+  EXPECT_GT(checked, 500);
+  for (const double slope : c.phase_tangents) {
+    EXPECT_TRUE(phases_seen.count(std::round(slope * 1e4) / 1e4))
+        << c.name << ": no checked step in the phase of slope " << slope;
+  }
+}
+
+TEST_P(LawUpdate, TrialIsPureAndLeavesTheCommittedStateAlone) {
+  const LawCase& c = GetParam();
+  const LawState committed = Follow(c.kernel, {c.scale, -0.2 * c.scale});
+  const LawState copy = committed;
+  const Step first = Trial(c.kernel, committed, 0.9 * c.scale);
+  Trial(c.kernel, committed, -1.4 * c.scale);  // a trial that is then dropped
+  const Step again = Trial(c.kernel, committed, 0.9 * c.scale);
+  EXPECT_EQ(first.response.force, again.response.force);
+  EXPECT_EQ(first.response.stiffness, again.response.stiffness);
+  EXPECT_EQ(first.state.slider, again.state.slider);
+  EXPECT_EQ(first.state.dissipated, again.state.dissipated);
+  EXPECT_EQ(committed.slider, copy.slider);
+  EXPECT_EQ(committed.dissipated, copy.dissipated);
+}
+
+TEST_P(LawUpdate, WorkDoneEqualsStoredPlusDissipatedEnergy) {
+  const LawCase& c = GetParam();
+  LawState state;
+  double work = 0.0, work_scale = 0.0, force = 0.0;
+  for (const double u : Path(c.scale, 20000)) {
+    const Step next = Trial(c.kernel, state, u);
+    const double du = u - state.u;
+    work += 0.5 * (force + next.response.force) * du;
+    work_scale += std::abs(0.5 * (force + next.response.force) * du);
+    force = next.response.force;
+    state = next.state;
+  }
+  EXPECT_NEAR(work, StoredEnergy(c.kernel, state) + state.dissipated, 1e-6 * work_scale) << c.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllLaws, LawUpdate, ::testing::ValuesIn(Cases()),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(Dashpot, ForceIsCTimesVelocityAndCycleEnergyIsPiCOmegaASquared) {
+  const LawKernel dashpot = Math(LawType::kDashpot, {0.02});
+  const double amplitude = 100.0, omega = 2.0 * M_PI / 2.0;
+  const int n = 4000;
+  LawState state;
+  LawResponse response;
+  for (int k = 0; k <= n; ++k) {
+    const double phase = 2.0 * M_PI * k / n;
+    LawState trial;
+    UpdateLaw(dashpot, state, {amplitude * std::sin(phase), amplitude * omega * std::cos(phase)},
+              &trial, &response);
+    state = trial;
+  }
+  EXPECT_DOUBLE_EQ(response.force, 0.02 * amplitude * omega);
+  EXPECT_EQ(response.damping, 0.02);
+  EXPECT_EQ(response.stiffness, 0.0);
+  const double exact = M_PI * 0.02 * omega * amplitude * amplitude;
+  EXPECT_NEAR(state.dissipated, exact, 1e-6 * exact);
+}
+
+TEST(DegenerateForms, Thm1WithZeroYieldAndStiffK0IsTheTrilinearSpring) {
+  const LawKernel thm1 = Math(LawType::kThm1, {1e6, 0.283532, 0.489882, 0, 64.809});
+  const LawKernel spring = Math(LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809});
+  LawState a, b;
+  for (const double u : Path(150.0, 50)) {
+    const Step sa = Trial(thm1, a, u), sb = Trial(spring, b, u);
+    EXPECT_NEAR(sa.response.force, sb.response.force, 2e-6 * (1 + std::abs(sb.response.force)));
+    EXPECT_EQ(sa.state.dissipated, 0.0);
+    a = sa.state;
+    b = sb.state;
+  }
+}
+
+}  // namespace
+}  // namespace isolab::hysteresis
