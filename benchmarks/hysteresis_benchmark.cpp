@@ -1,0 +1,81 @@
+// Cost of one component update, per law and in the nine-component Table 9 assembly, along a
+// cyclic displacement history that keeps every law switching phases (yield, reversal,
+// breakpoints). Counter "per_component" (seconds per component update) is the figure to compare; target
+// <= 10 ns.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "isolab/hysteresis/law_parameters.h"
+#include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/io/model_file.h"
+
+namespace isolab::hysteresis {
+namespace {
+
+// Three cycles per 4096 samples at amplitudes 200, 120, 40 (mm): reversals in every phase.
+std::vector<LawInput> History() {
+  std::vector<LawInput> history(4096);
+  for (std::size_t k = 0; k < history.size(); ++k) {
+    const double phase = 2.0 * std::numbers::pi * 3.0 * k / history.size();
+    const double amplitude = 200.0 - 160.0 * k / history.size();
+    history[k] = {amplitude * std::sin(phase), amplitude * std::cos(phase)};
+  }
+  return history;
+}
+
+void RunAssembly(benchmark::State& state, const ParallelAssembly& assembly) {
+  const std::vector<LawInput> history = History();
+  std::vector<LawState> committed(assembly.size()), trial(assembly.size());
+  std::vector<LawResponse> responses(assembly.size());
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const AssemblyResponse total = assembly.Update(committed, history[k], trial, responses);
+    benchmark::DoNotOptimize(total);
+    std::swap(committed, trial);
+    k = (k + 1) & (history.size() - 1);
+  }
+  // Seconds per component update, printed with an SI prefix ("3.4n" = 3.4 ns).
+  state.counters["per_component"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * assembly.size()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+ParallelAssembly One(LawType type, std::vector<double> math) {
+  return ParallelAssembly({{"law", LawParameters::Make(type, ParameterForm::kMathematical, math)}});
+}
+
+void BM_Law(benchmark::State& state, LawType type, std::vector<double> math) {
+  RunAssembly(state, One(type, std::move(math)));
+}
+
+void BM_Table9Assembly(benchmark::State& state) {
+  const io::ModelFile model =
+      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml");
+  RunAssembly(state, model.isolation);
+}
+
+void BM_Table10Assembly(benchmark::State& state) {
+  const io::ModelFile model =
+      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table10_thm2_system.yaml");
+  RunAssembly(state, model.isolation);
+}
+
+BENCHMARK_CAPTURE(BM_Law, linear_spring, LawType::kLinearSpring, {0.7});
+BENCHMARK_CAPTURE(BM_Law, dashpot, LawType::kDashpot, {0.02});
+BENCHMARK_CAPTURE(BM_Law, bhm1, LawType::kBhm1, {1.0, 0.2, 20.0});
+BENCHMARK_CAPTURE(BM_Law, bhm2, LawType::kBhm2, {1.0, 0.2, 20.0});
+BENCHMARK_CAPTURE(BM_Law, thm1, LawType::kThm1, {1.0, 0.2, 0.45, 20.0, 120.0});
+BENCHMARK_CAPTURE(BM_Law, thm2, LawType::kThm2, {1.0, 0.2, 0.45, 20.0, 120.0});
+BENCHMARK_CAPTURE(BM_Law, trilinear_elastic, LawType::kTrilinearElastic, {0.28, 0.49, 64.8});
+BENCHMARK_CAPTURE(BM_Law, elastoplastic, LawType::kElastoplastic, {3.2, 0.6});
+BENCHMARK(BM_Table9Assembly);
+BENCHMARK(BM_Table10Assembly);
+
+}  // namespace
+}  // namespace isolab::hysteresis
+
+BENCHMARK_MAIN();
