@@ -1,13 +1,14 @@
 // Cost of one component update, per law and in the nine-component Table 9 assembly, along a
 // cyclic displacement history that keeps every law switching phases (yield, reversal,
-// breakpoints). Counter "per_component" (seconds per component update) is the figure to compare; target
+// breakpoints). Counter "per_component" (seconds per component update) is the figure to compare;
+// target
 // <= 10 ns.
+#include <benchmark/benchmark.h>
+
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <benchmark/benchmark.h>
 
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/hysteresis/parallel_assembly.h"
@@ -39,9 +40,9 @@ void RunAssembly(benchmark::State& state, const ParallelAssembly& assembly) {
     k = (k + 1) & (history.size() - 1);
   }
   // Seconds per component update, printed with an SI prefix ("3.4n" = 3.4 ns).
-  state.counters["per_component"] = benchmark::Counter(
-      static_cast<double>(state.iterations() * assembly.size()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["per_component"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * assembly.size()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 ParallelAssembly One(LawType type, std::vector<double> math) {

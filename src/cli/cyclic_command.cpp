@@ -1,10 +1,10 @@
 #include "cyclic_command.h"
 
-#include <filesystem>
-
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "isolab/core/errors.h"
@@ -88,7 +88,8 @@ void PrintRun(const Run& run, std::ostream& out) {
   fmt::print(out, "\n");
   for (const auto& cycle : run.result.cycles) {
     fmt::print(out, "{:>5} {:>16.6g} {:>14.6g}  ", cycle.index, cycle.dissipated, cycle.peak_force);
-    for (const auto& component : cycle.components) fmt::print(out, " {:>11.6g}", component.slider_at_peak);
+    for (const auto& component : cycle.components)
+      fmt::print(out, " {:>11.6g}", component.slider_at_peak);
     fmt::print(out, "\n");
   }
 }
@@ -158,7 +159,8 @@ void WriteLoopCsv(const Run& run, const std::string& path) {
   io::WriteTextFileAtomically(path, [&](std::ostream& out) {
     const io::Units& u = run.model->units;
     fmt::print(out, "time_{},u_{},force_{}", u.time, u.length, u.force);
-    for (const auto& component : components) fmt::print(out, ",force_{}_{}", component.name, u.force);
+    for (const auto& component : components)
+      fmt::print(out, ",force_{}_{}", component.name, u.force);
     fmt::print(out, "\n");
     for (std::size_t k = 0; k < loop.time.size(); ++k) {
       fmt::print(out, "{:.10g},{:.10g},{:.10g}", loop.time[k], loop.displacement[k], loop.force[k]);
@@ -185,13 +187,15 @@ std::string CsvPath(const std::string& csv, const Run& run, bool several) {
 
 void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "cyclic", "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report "
-                "energy per cycle, peak force and slider displacements");
+      "cyclic",
+      "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report "
+      "energy per cycle, peak force and slider displacements");
   command->add_option("models", options.models, "Model files (YAML) with an isolation section")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("-a,--amplitude", options.amplitudes,
-                      "Displacement amplitude(s) u_a, comma-separated (model length unit)")
+  command
+      ->add_option("-a,--amplitude", options.amplitudes,
+                   "Displacement amplitude(s) u_a, comma-separated (model length unit)")
       ->delimiter(',');
   command->add_option("-T,--period", options.period, "Period T (model time unit)");
   command->add_option("-n,--cycles", options.cycles, "Number of cycles");

@@ -1,8 +1,7 @@
 // isolab: time-history analysis of base-isolated structures. Exit codes: 0 success, 1 a failure
 // inside isolab, 2 bad input (file, option, parameter), with a message saying where and why.
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "cyclic_command.h"
 #include "isolab/core/errors.h"

@@ -1,8 +1,8 @@
 #include "isolab/core/errors.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace isolab {
 

@@ -1,10 +1,10 @@
 #include "isolab/hysteresis/law_parameters.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "isolab/core/errors.h"
 
@@ -26,9 +26,14 @@ constexpr std::string_view kElastoplasticMath[] = {"k0", "uy"};
 constexpr std::string_view kElastoplasticMech[] = {"ke", "fs"};
 
 constexpr LawType kAllTypes[] = {
-    LawType::kLinearSpring, LawType::kDashpot, LawType::kBhm1,
-    LawType::kBhm2,         LawType::kThm1,    LawType::kThm2,
-    LawType::kTrilinearElastic, LawType::kElastoplastic,
+    LawType::kLinearSpring,
+    LawType::kDashpot,
+    LawType::kBhm1,
+    LawType::kBhm2,
+    LawType::kThm1,
+    LawType::kThm2,
+    LawType::kTrilinearElastic,
+    LawType::kElastoplastic,
 };
 
 // Checks rules in the order written and throws at the first one broken, naming the key as the
@@ -95,9 +100,9 @@ void CheckPresentAndFinite(LawType type, ParameterForm form, const ParameterArra
         throw InvalidParameter({std::string(keys[i]), NAN, "is required"});
       }
       if (r(breakpoint->slope1) != r(breakpoint->slope2)) {
-        throw InvalidParameter({std::string(keys[i]), NAN,
-                                fmt::format("is required when {} != {}", breakpoint->slope1,
-                                            breakpoint->slope2)});
+        throw InvalidParameter(
+            {std::string(keys[i]), NAN,
+             fmt::format("is required when {} != {}", breakpoint->slope1, breakpoint->slope2)});
       }
     } else if (!std::isfinite(values[i])) {
       throw InvalidParameter({std::string(keys[i]), values[i], "must be finite"});
@@ -241,14 +246,22 @@ double BreakpointOrInfinity(double uc) { return std::isnan(uc) ? INFINITY : uc; 
 
 std::string_view LawName(LawType type) {
   switch (type) {
-    case LawType::kLinearSpring: return "linear_spring";
-    case LawType::kDashpot: return "dashpot";
-    case LawType::kBhm1: return "bhm1";
-    case LawType::kBhm2: return "bhm2";
-    case LawType::kThm1: return "thm1";
-    case LawType::kThm2: return "thm2";
-    case LawType::kTrilinearElastic: return "trilinear_elastic";
-    case LawType::kElastoplastic: return "elastoplastic";
+    case LawType::kLinearSpring:
+      return "linear_spring";
+    case LawType::kDashpot:
+      return "dashpot";
+    case LawType::kBhm1:
+      return "bhm1";
+    case LawType::kBhm2:
+      return "bhm2";
+    case LawType::kThm1:
+      return "thm1";
+    case LawType::kThm2:
+      return "thm2";
+    case LawType::kTrilinearElastic:
+      return "trilinear_elastic";
+    case LawType::kElastoplastic:
+      return "elastoplastic";
   }
   return "unknown";
 }
@@ -265,14 +278,20 @@ std::span<const LawType> AllLawTypes() { return kAllTypes; }
 std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form) {
   const bool math = form == ParameterForm::kMathematical;
   switch (type) {
-    case LawType::kLinearSpring: return kSpringKeys;
-    case LawType::kDashpot: return kDashpotKeys;
+    case LawType::kLinearSpring:
+      return kSpringKeys;
+    case LawType::kDashpot:
+      return kDashpotKeys;
     case LawType::kBhm1:
-    case LawType::kBhm2: return math ? Keys(kBilinearMath) : Keys(kBilinearMech);
+    case LawType::kBhm2:
+      return math ? Keys(kBilinearMath) : Keys(kBilinearMech);
     case LawType::kThm1:
-    case LawType::kThm2: return math ? Keys(kTrilinearMath) : Keys(kTrilinearMech);
-    case LawType::kTrilinearElastic: return math ? Keys(kElasticMath) : Keys(kElasticMech);
-    case LawType::kElastoplastic: return math ? Keys(kElastoplasticMath) : Keys(kElastoplasticMech);
+    case LawType::kThm2:
+      return math ? Keys(kTrilinearMath) : Keys(kTrilinearMech);
+    case LawType::kTrilinearElastic:
+      return math ? Keys(kElasticMath) : Keys(kElasticMech);
+    case LawType::kElastoplastic:
+      return math ? Keys(kElastoplasticMath) : Keys(kElastoplasticMech);
   }
   return {};
 }

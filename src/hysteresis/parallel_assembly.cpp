@@ -10,7 +10,8 @@ ParallelAssembly::ParallelAssembly(std::vector<Component> components)
 
 double ParallelAssembly::StoredEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
-  for (std::size_t i = 0; i < kernels_.size(); ++i) energy += hysteresis::StoredEnergy(kernels_[i], states[i]);
+  for (std::size_t i = 0; i < kernels_.size(); ++i)
+    energy += hysteresis::StoredEnergy(kernels_[i], states[i]);
   return energy;
 }
 

@@ -1,11 +1,11 @@
 #include "isolab/io/atomic_file.h"
 
+#include <fmt/format.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-
-#include <fmt/format.h>
 
 #include "isolab/core/errors.h"
 

@@ -1,11 +1,11 @@
 #include "isolab/io/model_file.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "yaml_reader.h"
 
@@ -28,8 +28,9 @@ std::string ReadUnit(const YamlReader& reader, const YAML::Node& units, const st
   if (!node.IsDefined()) return {};
   const std::string unit = reader.ReadString(node, child_path);
   if (std::find(allowed.begin(), allowed.end(), unit) == allowed.end()) {
-    reader.Fail(node, child_path, fmt::format("'{}' is not a {} unit (expected one of: {})", unit,
-                                              key, fmt::join(allowed, ", ")));
+    reader.Fail(node, child_path,
+                fmt::format("'{}' is not a {} unit (expected one of: {})", unit, key,
+                            fmt::join(allowed, ", ")));
   }
   return unit;
 }
@@ -76,9 +77,11 @@ ParameterForm DetectForm(const YamlReader& reader, const YAML::Node& node, const
     if (in_mech && !in_math && mech_key.empty()) mech_key = key;
   }
   if (!math_key.empty() && !mech_key.empty()) {
-    reader.Fail(node, path,
-                fmt::format("mixes mathematical ({}) and mechanical ({}) parameters; give one form: "
-                            "{} or {}", math_key, mech_key, fmt::join(math, ", "), fmt::join(mech, ", ")));
+    reader.Fail(
+        node, path,
+        fmt::format("mixes mathematical ({}) and mechanical ({}) parameters; give one form: "
+                    "{} or {}",
+                    math_key, mech_key, fmt::join(math, ", "), fmt::join(mech, ", ")));
   }
   return mech_key.empty() ? ParameterForm::kMathematical : ParameterForm::kMechanical;
 }
@@ -119,11 +122,11 @@ Component ReadComponent(const YamlReader& reader, const YAML::Node& node, const 
     if (at.IsDefined()) {
       throw InputError(reader.Locate(at), fmt::format("{}.{}", path, violation.Describe()));
     }
-    reader.Fail(node, path,
-                fmt::format("missing key '{}' ({}; {} in {} form takes {})", violation.key,
-                            violation.rule, type_name,
-                            form == ParameterForm::kMathematical ? "mathematical" : "mechanical",
-                            fmt::join(keys, ", ")));
+    reader.Fail(
+        node, path,
+        fmt::format("missing key '{}' ({}; {} in {} form takes {})", violation.key, violation.rule,
+                    type_name, form == ParameterForm::kMathematical ? "mathematical" : "mechanical",
+                    fmt::join(keys, ", ")));
   }
 }
 
@@ -140,8 +143,9 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
     components.push_back(ReadComponent(reader, list[i], IndexPath(path, i), i));
     for (std::size_t j = 0; j + 1 < components.size(); ++j) {
       if (components[j].name == components.back().name) {
-        reader.Fail(list[i], IndexPath(path, i),
-                    fmt::format("name '{}' is already used by component {}", components[j].name, j));
+        reader.Fail(
+            list[i], IndexPath(path, i),
+            fmt::format("name '{}' is already used by component {}", components[j].name, j));
       }
     }
   }
@@ -153,11 +157,13 @@ hysteresis::CyclicProtocol ReadCyclic(const YamlReader& reader, const YAML::Node
   reader.RequireMap(node, path);
   reader.CheckKeys(node, path, {"amplitude", "period", "cycles", "steps_per_cycle"});
   hysteresis::CyclicProtocol protocol;
-  protocol.amplitude = reader.ReadNumber(reader.Require(node, path, "amplitude"), "cyclic.amplitude");
+  protocol.amplitude =
+      reader.ReadNumber(reader.Require(node, path, "amplitude"), "cyclic.amplitude");
   if (node["period"]) protocol.period = reader.ReadNumber(node["period"], "cyclic.period");
   if (node["cycles"]) protocol.cycles = reader.ReadInteger(node["cycles"], "cyclic.cycles");
   if (node["steps_per_cycle"]) {
-    protocol.steps_per_cycle = reader.ReadInteger(node["steps_per_cycle"], "cyclic.steps_per_cycle");
+    protocol.steps_per_cycle =
+        reader.ReadInteger(node["steps_per_cycle"], "cyclic.steps_per_cycle");
   }
   try {
     protocol.Validate();
@@ -179,7 +185,8 @@ ModelFile LoadModelFile(const std::string& path) {
 
   ModelFile model;
   model.path = path;
-  if (root["description"]) model.description = reader.ReadString(root["description"], "description");
+  if (root["description"])
+    model.description = reader.ReadString(root["description"], "description");
   model.units = ReadUnits(reader, root);
   model.isolation = ReadIsolation(reader, root);
   if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);

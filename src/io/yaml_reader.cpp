@@ -1,5 +1,7 @@
 #include "yaml_reader.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -7,8 +9,6 @@
 #include <cstring>
 #include <fstream>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace isolab::io {
 namespace {
@@ -108,8 +108,7 @@ void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path,
     const std::string key = entry.first.as<std::string>();
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     const std::string_view nearest = NearestWord(key, allowed);
-    const std::string hint =
-        nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest);
+    const std::string hint = nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest);
     throw InputError(Locate(entry.first),
                      fmt::format("{}: unknown key{}; expected one of: {}", ChildPath(path, key),
                                  hint, JoinWords(allowed)));

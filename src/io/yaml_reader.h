@@ -2,12 +2,12 @@
 // column, and the key path from the document root ("isolation.components[2].k1").
 #pragma once
 
+#include <yaml-cpp/yaml.h>
+
 #include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
-
-#include <yaml-cpp/yaml.h>
 
 #include "isolab/core/errors.h"
 

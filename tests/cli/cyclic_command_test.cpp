@@ -1,14 +1,13 @@
 // `isolab cyclic` end to end: the binary's output, exit codes and files.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <string>
-
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "paper_tables.h"
 
@@ -27,14 +26,19 @@ Outcome RunIsolab(const std::string& arguments, bool stderr_only = false) {
   if (pipe == nullptr) return outcome;
   std::array<char, 4096> buffer;
   std::size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) outcome.output.append(buffer.data(), n);
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    outcome.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;
 }
 
-std::string Model(const std::string& name) { return std::string(ISOLAB_SOURCE_DIR) + "/models/paper/" + name; }
-std::string BadFile(const std::string& name) { return std::string(ISOLAB_TEST_DATA_DIR) + "/io/data/" + name; }
+std::string Model(const std::string& name) {
+  return std::string(ISOLAB_SOURCE_DIR) + "/models/paper/" + name;
+}
+std::string BadFile(const std::string& name) {
+  return std::string(ISOLAB_TEST_DATA_DIR) + "/io/data/" + name;
+}
 
 TEST(CyclicCommand, Table9EnergyPerCycleAtTheTestAmplitudesMatchesClosedForms) {
   std::string amplitudes;
@@ -42,7 +46,8 @@ TEST(CyclicCommand, Table9EnergyPerCycleAtTheTestAmplitudesMatchesClosedForms) {
     if (!amplitudes.empty()) amplitudes += ',';
     amplitudes += std::to_string(ua);
   }
-  const Outcome run = RunIsolab("cyclic " + Model("table9_thm1_system.yaml") + " -a " + amplitudes + " --json");
+  const Outcome run =
+      RunIsolab("cyclic " + Model("table9_thm1_system.yaml") + " -a " + amplitudes + " --json");
   ASSERT_EQ(run.exit_code, 0);
   const auto json = nlohmann::json::parse(run.output);
   ASSERT_EQ(json["runs"].size(), std::size(isolab::testing::kTestAmplitudes));
@@ -53,7 +58,8 @@ TEST(CyclicCommand, Table9EnergyPerCycleAtTheTestAmplitudesMatchesClosedForms) {
     for (int c = 0; c < 9; ++c) {
       const double expected = isolab::testing::Thm1CycleEnergy(isolab::testing::kTable9[c], ua);
       total += expected;
-      EXPECT_NEAR(third["components"][c]["dissipated"].get<double>(), expected, 1e-9 * (expected + 1))
+      EXPECT_NEAR(third["components"][c]["dissipated"].get<double>(), expected,
+                  1e-9 * (expected + 1))
           << "component " << c + 1 << " at u_a = " << ua;
     }
     EXPECT_NEAR(third["dissipated"].get<double>(), total, 1e-9 * total) << "u_a = " << ua;
@@ -73,12 +79,15 @@ TEST(CyclicCommand, WritesTheLoopToCsvAtomically) {
   std::filesystem::create_directories(directory);
   const auto csv = directory / "loop.csv";
   std::filesystem::remove(csv);
-  const Outcome run = RunIsolab("cyclic " + Model("table10_thm2_system.yaml") + " -a 100 -n 1 --csv " + csv.string());
+  const Outcome run = RunIsolab("cyclic " + Model("table10_thm2_system.yaml") +
+                                " -a 100 -n 1 --csv " + csv.string());
   ASSERT_EQ(run.exit_code, 0);
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "time_s,u_mm,force_kN,force_c1_kN,force_c2_kN,force_c3_kN,force_c4_kN,force_c5_kN,force_c6_kN");
+  EXPECT_EQ(header,
+            "time_s,u_mm,force_kN,force_c1_kN,force_c2_kN,force_c3_kN,force_c4_kN,force_c5_kN,"
+            "force_c6_kN");
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, 401);
@@ -86,21 +95,26 @@ TEST(CyclicCommand, WritesTheLoopToCsvAtomically) {
 }
 
 TEST(CyclicCommand, BadModelFilesExitWithCodeTwoAndALocatedMessage) {
-  for (const std::string name : {"bad_thm1_k1_above_k0.yaml", "bad_unknown_key.yaml", "bad_syntax.yaml",
-                                 "bad_missing_key.yaml", "bad_law_type.yaml", "bad_empty.yaml"}) {
+  for (const std::string name :
+       {"bad_thm1_k1_above_k0.yaml", "bad_unknown_key.yaml", "bad_syntax.yaml",
+        "bad_missing_key.yaml", "bad_law_type.yaml", "bad_empty.yaml"}) {
     const Outcome run = RunIsolab("cyclic " + BadFile(name) + " -a 10", true);
     EXPECT_EQ(run.exit_code, 2) << name;
     EXPECT_EQ(run.output.rfind("isolab: " + BadFile(name) + ":", 0), 0u) << run.output;
   }
   const Outcome k1 = RunIsolab("cyclic " + BadFile("bad_thm1_k1_above_k0.yaml") + " -a 10", true);
-  EXPECT_NE(k1.output.find(":7:11: isolation.components[0].k1 = 1.2 (must be < k0 = 1)"), std::string::npos)
+  EXPECT_NE(k1.output.find(":7:11: isolation.components[0].k1 = 1.2 (must be < k0 = 1)"),
+            std::string::npos)
       << k1.output;
 }
 
 TEST(CyclicCommand, BadOptionsExitWithCodeTwo) {
   EXPECT_EQ(RunIsolab("cyclic " + Model("table7_thm1_hard.yaml") + " -a -5", true).exit_code, 2);
-  EXPECT_EQ(RunIsolab("cyclic " + Model("table7_thm1_hard.yaml") + " --steps-per-cycle 7", true).exit_code, 2);
-  EXPECT_EQ(RunIsolab("cyclic " + BadFile("good_mechanical.yaml"), true).exit_code, 2);  // no amplitude
+  EXPECT_EQ(RunIsolab("cyclic " + Model("table7_thm1_hard.yaml") + " --steps-per-cycle 7", true)
+                .exit_code,
+            2);
+  EXPECT_EQ(RunIsolab("cyclic " + BadFile("good_mechanical.yaml"), true).exit_code,
+            2);  // no amplitude
   EXPECT_EQ(RunIsolab("cyclic /nonexistent.yaml", true).exit_code, 2);
   EXPECT_EQ(RunIsolab("frobnicate", true).exit_code, 2);
 }

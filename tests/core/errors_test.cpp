@@ -1,14 +1,15 @@
 #include "isolab/core/errors.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace isolab {
 namespace {
 
 TEST(ParameterViolation, DescribesKeyValueAndRule) {
-  EXPECT_EQ((ParameterViolation{"k1", 1.3, "must be < k0 = 1"}.Describe()), "k1 = 1.3 (must be < k0 = 1)");
+  EXPECT_EQ((ParameterViolation{"k1", 1.3, "must be < k0 = 1"}.Describe()),
+            "k1 = 1.3 (must be < k0 = 1)");
   EXPECT_EQ((ParameterViolation{"uy", NAN, "is required"}.Describe()), "uy (is required)");
 }
 

@@ -2,10 +2,10 @@
 // the identified Table 9 (THM1) and Table 10 (THM2) systems.
 #include "isolab/hysteresis/cyclic_test.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "isolab/core/errors.h"
 #include "isolab/io/model_file.h"
@@ -58,7 +58,8 @@ TEST(Table10, EnergyPerCycleIsTheSumOfFourFsTimesAmplitudeMinusYield) {
   const io::ModelFile model = LoadPaperModel("table10_thm2_system.yaml");
   for (const double ua : testing::kTestAmplitudes) {
     double closed_form = 0.0;
-    for (const auto& component : testing::kTable10) closed_form += testing::Thm2CycleEnergy(component, ua);
+    for (const auto& component : testing::kTable10)
+      closed_form += testing::Thm2CycleEnergy(component, ua);
     EXPECT_NEAR(ThirdCycle(model.isolation, ua).dissipated, closed_form, 1e-9 * closed_form)
         << "u_a = " << ua;
   }

@@ -1,9 +1,9 @@
 #include "isolab/hysteresis/law_parameters.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "isolab/core/errors.h"
 
@@ -90,8 +90,10 @@ TEST(LawParameters, BilinearFormsAreTrilinearWithEqualSlopes) {
 
 TEST(LawParameters, ElastoplasticIsThm1WithZeroHardening) {
   // Table 9, component 8: uyh is meaningless when k1 = k2 = 0 and may be omitted.
-  const auto thm1 = std::get<SeriesSlider>(Make(LawType::kThm1, kMath, {3.225241, 0, 0, 0.597, NAN}).Kernel());
-  const auto ep = std::get<SeriesSlider>(Make(LawType::kElastoplastic, kMath, {3.225241, 0.597}).Kernel());
+  const auto thm1 =
+      std::get<SeriesSlider>(Make(LawType::kThm1, kMath, {3.225241, 0, 0, 0.597, NAN}).Kernel());
+  const auto ep =
+      std::get<SeriesSlider>(Make(LawType::kElastoplastic, kMath, {3.225241, 0.597}).Kernel());
   EXPECT_DOUBLE_EQ(thm1.ke, ep.ke);
   EXPECT_DOUBLE_EQ(thm1.fs, ep.fs);
   EXPECT_DOUBLE_EQ(thm1.fs, 3.225241 * 0.597);

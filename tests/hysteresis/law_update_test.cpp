@@ -1,13 +1,13 @@
 // The update contract of every rate-independent law: exact for any monotone increment, tangent
 // equal to the derivative of the update actually computed (in every phase, loading and
 // unloading), pure trials, and work = stored + dissipated energy.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "isolab/hysteresis/law_parameters.h"
 
@@ -17,8 +17,8 @@ namespace {
 struct LawCase {
   std::string name;
   LawKernel kernel;
-  double scale;                         // displacement range the path explores
-  std::vector<double> phase_tangents;   // slopes of every phase, from the paper's k0, k1, k2, k01
+  double scale;                        // displacement range the path explores
+  std::vector<double> phase_tangents;  // slopes of every phase, from the paper's k0, k1, k2, k01
 };
 
 LawKernel Math(LawType type, std::vector<double> values) {
@@ -31,17 +31,26 @@ std::vector<LawCase> Cases() {
   return {
       {"thm1_hard", Math(LawType::kThm1, {1, 0.2, 0.45, 20, 120}), 250, {1, 0.2, 0.45}},
       {"thm1_soft", Math(LawType::kThm1, {1, 0.2, 0.05, 20, 120}), 250, {1, 0.2, 0.05}},
-      {"thm1_negative_k2", Math(LawType::kThm1, {0.863754, 0.402485, -0.792654, 7.146, 125.542}),
-       200, {0.863754, 0.402485, -0.792654}},
-      {"thm1_spring_limit", Math(LawType::kThm1, {1e6, 0.283532, 0.489882, 0, 64.809}), 150,
+      {"thm1_negative_k2",
+       Math(LawType::kThm1, {0.863754, 0.402485, -0.792654, 7.146, 125.542}),
+       200,
+       {0.863754, 0.402485, -0.792654}},
+      {"thm1_spring_limit",
+       Math(LawType::kThm1, {1e6, 0.283532, 0.489882, 0, 64.809}),
+       150,
        {0.283532, 0.489882}},
       {"thm2_hard", Math(LawType::kThm2, {1, 0.2, 0.45, 20, 120}), 250, {1, 1.25, 0.2, 0.45}},
       {"thm2_soft", Math(LawType::kThm2, {1, 0.2, 0.05, 20, 120}), 250, {1, 0.85, 0.2, 0.05}},
-      {"thm2_uyh_below_uy", Math(LawType::kThm2, {1, 0.2, 0.45, 20, 10}), 250, {1, 1.25, 0.2, 0.45}},
+      {"thm2_uyh_below_uy",
+       Math(LawType::kThm2, {1, 0.2, 0.45, 20, 10}),
+       250,
+       {1, 1.25, 0.2, 0.45}},
       {"bhm1", Math(LawType::kBhm1, {1, 0.2, 20}), 250, {1, 0.2}},
       {"bhm2", Math(LawType::kBhm2, {1, 0.2, 20}), 250, {1, 0.2}},
       {"elastoplastic", Math(LawType::kElastoplastic, {3.225241, 0.597}), 10, {3.225241, 0.0}},
-      {"trilinear_elastic", Math(LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809}), 150,
+      {"trilinear_elastic",
+       Math(LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809}),
+       150,
        {0.283532, 0.489882}},
       {"linear_spring", Math(LawType::kLinearSpring, {0.7}), 100, {0.7}},
   };
@@ -56,7 +65,8 @@ std::vector<double> Path(double scale, int steps_per_unit_scale) {
   std::vector<double> path;
   const auto turns = Turns(scale);
   for (std::size_t i = 0; i + 1 < turns.size(); ++i) {
-    const int n = static_cast<int>(std::ceil(std::abs(turns[i + 1] - turns[i]) / scale * steps_per_unit_scale));
+    const int n = static_cast<int>(
+        std::ceil(std::abs(turns[i + 1] - turns[i]) / scale * steps_per_unit_scale));
     for (int k = (i == 0 ? 0 : 1); k <= n; ++k) {
       path.push_back(turns[i] + (turns[i + 1] - turns[i]) * k / n);
     }
@@ -104,11 +114,13 @@ TEST_P(LawUpdate, OneCallEqualsAThousandSubIncrements) {
         last = Trial(c.kernel, sub, start.u + (target - start.u) * k / 1000.0);
         sub = last.state;
       }
-      const std::string where = c.name + " from " + std::to_string(start.u) + " to " + std::to_string(target);
+      const std::string where =
+          c.name + " from " + std::to_string(start.u) + " to " + std::to_string(target);
       ExpectRelativelyEqual(one.response.force, last.response.force, 1e-3 * s, where + " force");
       ExpectRelativelyEqual(one.state.slider, sub.slider, 1e-3 * s, where + " slider");
       ExpectRelativelyEqual(one.state.dissipated, sub.dissipated, 1e-3 * s, where + " dissipated");
-      ExpectRelativelyEqual(one.response.stiffness, last.response.stiffness, 1e-6, where + " tangent");
+      ExpectRelativelyEqual(one.response.stiffness, last.response.stiffness, 1e-6,
+                            where + " tangent");
     }
   }
 }

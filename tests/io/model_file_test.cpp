@@ -1,8 +1,8 @@
 #include "isolab/io/model_file.h"
 
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "isolab/core/errors.h"
 
@@ -31,27 +31,29 @@ void ExpectError(const std::string& name, const std::string& location, const std
 }
 
 TEST(ModelFile, BadParameterNamesFileLineKeyValueAndRule) {
-  ExpectError("bad_thm1_k1_above_k0.yaml", ":7:11:",
-              "isolation.components[0].k1 = 1.2 (must be < k0 = 1)");
-  ExpectError("bad_mechanical_softening.yaml", ":5:54:",
-              "isolation.components[1].kh2 = -1.5 (ke + kh2 must be > 0, is -0.5)");
+  ExpectError("bad_thm1_k1_above_k0.yaml",
+              ":7:11:", "isolation.components[0].k1 = 1.2 (must be < k0 = 1)");
+  ExpectError("bad_mechanical_softening.yaml",
+              ":5:54:", "isolation.components[1].kh2 = -1.5 (ke + kh2 must be > 0, is -0.5)");
 }
 
 TEST(ModelFile, MalformedStructureIsLocated) {
-  ExpectError("bad_unknown_key.yaml", ":5:29:",
-              "isolation.components[1].kO: unknown key (did you mean 'k0'?)");
+  ExpectError("bad_unknown_key.yaml",
+              ":5:29:", "isolation.components[1].kO: unknown key (did you mean 'k0'?)");
   ExpectError("bad_missing_key.yaml", ":4:7:",
               "isolation.components[0]: missing key 'uy' (is required; thm1 in mathematical form "
               "takes k0, k1, k2, uy, uyh)");
   ExpectError("bad_syntax.yaml", ":5:1:", "YAML syntax error");
   ExpectError("bad_mixed_forms.yaml", ":4:7:", "mixes mathematical (k0) and mechanical (kh1)");
   ExpectError("bad_law_type.yaml", ":4:23:", "'thm3' is not an element law; did you mean 'thm1'?");
-  ExpectError("bad_not_a_number.yaml", ":4:42:", "isolation.components[0].k0: 'stiff' is not a number");
+  ExpectError("bad_not_a_number.yaml",
+              ":4:42:", "isolation.components[0].k0: 'stiff' is not a number");
   ExpectError("bad_components_not_a_list.yaml", ":3:15:", "isolation.components: expected a list");
   ExpectError("bad_missing_units.yaml", ":1:1:", "missing key 'units'");
   ExpectError("bad_unit.yaml", ":1:16:", "'kilonewton' is not a force unit");
   ExpectError("bad_duplicate_name.yaml", ":5:7:", "name 'a' is already used by component 0");
-  ExpectError("bad_cyclic_steps.yaml", ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
+  ExpectError("bad_cyclic_steps.yaml",
+              ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
   ExpectError("bad_empty.yaml", ":1:1:", "the file is empty");
 }
 
@@ -65,8 +67,8 @@ TEST(ModelFile, ReadsMechanicalFormAndUnits) {
   EXPECT_EQ(model.units.force, "kN");
   EXPECT_EQ(model.units.length, "mm");
   ASSERT_EQ(model.isolation.size(), 2u);
-  const auto math = model.isolation.components()[0].parameters.Values(
-      hysteresis::ParameterForm::kMathematical);
+  const auto math =
+      model.isolation.components()[0].parameters.Values(hysteresis::ParameterForm::kMathematical);
   EXPECT_NEAR(math[1], 0.2, 1e-15);
   EXPECT_NEAR(math[2], 0.45, 1e-15);
   EXPECT_NEAR(math[4], 120.0, 1e-12);

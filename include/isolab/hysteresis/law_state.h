@@ -13,10 +13,11 @@ struct LawInput {
 
 // A law's state after an update. Everything a law needs to continue from here.
 struct LawState {
-  double u = 0.0;           // deformation at which this state was computed (length)
-  double v = 0.0;           // deformation rate at which this state was computed (length/time)
-  double slider = 0.0;      // slider displacement: u_h (series form), u_s (parallel form); else 0
-  double dissipated = 0.0;  // energy dissipated since rest: slider work or dashpot work (force*length)
+  double u = 0.0;       // deformation at which this state was computed (length)
+  double v = 0.0;       // deformation rate at which this state was computed (length/time)
+  double slider = 0.0;  // slider displacement: u_h (series form), u_s (parallel form); else 0
+  double dissipated =
+      0.0;  // energy dissipated since rest: slider work or dashpot work (force*length)
 };
 
 // Force and its exact derivatives at the trial state.

@@ -17,8 +17,8 @@
 namespace isolab::hysteresis {
 
 struct ParallelSlider {
-  double kp = 0.0;  // element 1 stiffness ke - kh1 (force/length), > 0
-  double fs = 0.0;  // slider characteristic force (force), >= 0; 0 means no stick phase
+  double kp = 0.0;         // element 1 stiffness ke - kh1 (force/length), > 0
+  double fs = 0.0;         // slider characteristic force (force), >= 0; 0 means no stick phase
   TrilinearSpring spring;  // element 3 on the total displacement
 
   void Update(const LawState& committed, const LawInput& in, LawState* trial,

@@ -20,8 +20,8 @@
 namespace isolab::hysteresis {
 
 struct SeriesSlider {
-  double ke = 0.0;  // element 1 stiffness (force/length), > 0
-  double fs = 0.0;  // slider characteristic force (force), >= 0; 0 means no stick phase
+  double ke = 0.0;         // element 1 stiffness (force/length), > 0
+  double fs = 0.0;         // slider characteristic force (force), >= 0; 0 means no stick phase
   TrilinearSpring spring;  // element 3; needs ke + kh1 > 0 and ke + kh2 > 0
 
   void Update(const LawState& committed, const LawInput& in, LawState* trial,

@@ -12,8 +12,8 @@
 namespace isolab::hysteresis {
 
 struct TrilinearSpring {
-  double kh1 = 0.0;  // stiffness inside +-uc (force/length)
-  double kh2 = 0.0;  // stiffness beyond +-uc (force/length); may be negative (softening)
+  double kh1 = 0.0;      // stiffness inside +-uc (force/length)
+  double kh2 = 0.0;      // stiffness beyond +-uc (force/length); may be negative (softening)
   double uc = INFINITY;  // characteristic displacement where the slope changes (length), > 0
 
   double Force(double x) const { return kh2 * x + (kh1 - kh2) * std::clamp(x, -uc, uc); }
