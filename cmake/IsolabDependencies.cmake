@@ -11,7 +11,28 @@ function(isolab_require package debian_package)
   endif()
 endfunction()
 
+isolab_require(Eigen3 libeigen3-dev NO_MODULE)
 isolab_require(yaml-cpp libyaml-cpp-dev)
+isolab_require(HDF5 libhdf5-dev COMPONENTS C)
+
+# SuiteSparse KLU ships no CMake package on Debian 12: find its header and libraries directly.
+find_path(KLU_INCLUDE_DIR klu.h PATH_SUFFIXES suitesparse)
+foreach(lib klu amd colamd btf suitesparseconfig)
+  find_library(SUITESPARSE_${lib}_LIBRARY ${lib})
+  if(NOT SUITESPARSE_${lib}_LIBRARY)
+    set(KLU_INCLUDE_DIR KLU_INCLUDE_DIR-NOTFOUND)
+  endif()
+  list(APPEND KLU_LIBRARIES ${SUITESPARSE_${lib}_LIBRARY})
+endforeach()
+if(NOT KLU_INCLUDE_DIR)
+  message(FATAL_ERROR
+    "isolab needs SuiteSparse KLU, which was not found.\n"
+    "Install the Debian package 'libsuitesparse-dev' (sudo apt-get install libsuitesparse-dev),\n"
+    "or run scripts/setup.sh, which installs every dependency.")
+endif()
+add_library(isolab_klu INTERFACE)
+target_include_directories(isolab_klu SYSTEM INTERFACE ${KLU_INCLUDE_DIR})
+target_link_libraries(isolab_klu INTERFACE ${KLU_LIBRARIES})
 isolab_require(fmt libfmt-dev)
 isolab_require(CLI11 libcli11-dev CONFIG)
 isolab_require(nlohmann_json nlohmann-json3-dev)

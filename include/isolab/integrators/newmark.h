@@ -1,0 +1,52 @@
+// Newmark-beta time stepping with Newton-Raphson iteration on the effective residual
+// (Chopra 2012, Sec. 5.7, Table 5.7.2):
+//   R(u) = p_eff(t+h) - M a(u) - f(u, v(u)),   a = (u - u_n)/(beta h^2) - v_n/(beta h) - (1/(2
+//   beta) - 1) a_n, v = gamma/(beta h) (u - u_n) + (1 - gamma/beta) v_n + h (1 - gamma/(2 beta))
+//   a_n, K_eff = K_t + gamma/(beta h) C_t + M/(beta h^2),
+// with the tangent assembled into a fixed sparse pattern and factorised by KLU. A step that does
+// not converge is reverted and cut in halves, recursively, up to max_step_cuts levels.
+#pragma once
+
+#include "isolab/integrators/excitation.h"
+#include "isolab/integrators/response.h"
+#include "isolab/structure/structure.h"
+
+namespace isolab::integrators {
+
+struct NewmarkOptions {
+  enum class Newton {
+    kFull,             // tangent refactorised every iteration
+    kModifiedInitial,  // tangent of the initial state, factorised once per run
+    kModifiedStep,     // tangent at the start of each step
+  };
+
+  double beta = 0.25;  // 1/4 average acceleration, 1/6 linear acceleration; (0, 0.5]
+  double gamma = 0.5;  // >= 0.5; 0.5 for no numerical damping
+  Newton newton = Newton::kFull;
+  double force_tolerance = 1e-10;         // residual norm / force scale of the step; (0, 1)
+  double displacement_tolerance = 1e-12;  // correction norm / displacement scale; (0, 1)
+  int max_iterations = 30;                // Newton iterations per attempt, >= 1
+  int max_step_cuts = 8;                  // levels of halving a step that does not converge, >= 0
+
+  static NewmarkOptions AverageAcceleration() { return {}; }
+  static NewmarkOptions LinearAcceleration() {
+    NewmarkOptions options;
+    options.beta = 1.0 / 6.0;
+    return options;
+  }
+
+  // Throws InvalidParameter naming the first field out of range.
+  void Validate() const;
+};
+
+// Output at t = k dt, k = 0..steps. The structure starts at rest.
+struct TimeGrid {
+  double dt = 0.0;
+  int steps = 0;
+};
+
+RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseHistory* response);
+
+}  // namespace isolab::integrators

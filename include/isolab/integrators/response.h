@@ -1,0 +1,52 @@
+// What a time-history run returns: the response sampled at the output times, and a summary in the
+// manner of Ceres' Solver::Summary (termination, message, statistics, energy balance).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace isolab::integrators {
+
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// Energy terms since the start (force*length). Input = kinetic + damping + elastic + hysteretic
+// up to the integrator's balance error.
+struct Energies {
+  double input = 0.0;       // work of the effective loads p - M 1 a_g on the relative motion
+  double kinetic = 0.0;     // of the relative motion
+  double damping = 0.0;     // viscous: damping matrix and dashpot components
+  double elastic = 0.0;     // recoverable energy of every law
+  double hysteretic = 0.0;  // slider work of every law
+  double Balance() const { return input - kinetic - damping - elastic - hysteretic; }
+};
+
+// One row per output time; columns per degree of freedom, connection or law component.
+struct ResponseHistory {
+  std::vector<double> time;
+  RowMatrix displacement, velocity, acceleration;  // relative to the ground
+  RowMatrix absolute_acceleration;                 // acceleration + ground acceleration
+  RowMatrix connection_force;                      // each connection's force
+  RowMatrix law_force;                             // each law component's force
+  std::vector<Energies> energies;
+  int rows_written = 0;  // < time.size() when the run stopped early
+
+  void Resize(int rows, int dofs, int connections, int laws);
+};
+
+struct RunSummary {
+  enum class Termination { kCompleted, kFailed };
+  Termination termination = Termination::kCompleted;
+  std::string message;         // why a failed run stopped
+  int steps = 0;               // output steps completed
+  long newton_iterations = 0;  // over all steps and sub-steps
+  int max_iterations_in_a_step = 0;
+  int step_cuts = 0;  // halvings performed
+  long factorisations = 0;
+  double energy_balance_error = 0.0;  // max |balance| / max input energy over the run
+  double wall_seconds = 0.0;
+
+  bool ok() const { return termination == Termination::kCompleted; }
+};
+
+}  // namespace isolab::integrators

@@ -1,0 +1,93 @@
+// A structure for time-history analysis: lumped masses on degrees of freedom (displacements
+// relative to the ground), connections between them or to the ground that each carry a parallel
+// assembly of element laws, and a constant viscous damping matrix. SDOF systems and shear
+// buildings (shear_building.h) are both built as this.
+//
+// The integrator sees only Evaluate(): resisting force and its tangent at a trial state (MFEM's
+// seam between problem and integrator); the structure never sees the integrator.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "isolab/hysteresis/parallel_assembly.h"
+
+namespace isolab::structure {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+inline constexpr int kGround = -1;
+
+// A connection's deformation is u[dof_j] - u[dof_i] (u[kGround] = 0); its force acts +on dof_j.
+struct Connection {
+  std::string name;
+  int dof_i = kGround;
+  int dof_j = 0;
+  hysteresis::ParallelAssembly assembly;
+};
+
+// Coefficients of the effective tangent  mass M + damping (C_t + C) + stiffness K_t.
+struct TangentFactors {
+  double mass = 0.0;
+  double damping = 0.0;
+  double stiffness = 1.0;
+};
+
+class Structure {
+ public:
+  // `viscous_damping` is dofs x dofs (may be empty of entries).
+  Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
+            SparseMatrix viscous_damping);
+
+  int dofs() const { return static_cast<int>(mass_.size()); }
+  const Eigen::VectorXd& mass() const { return mass_; }
+  const std::vector<Connection>& connections() const { return connections_; }
+  const SparseMatrix& viscous_damping() const { return viscous_damping_; }
+
+  // Law states are stored connection after connection; component c of connection k sits at
+  // law_offset(k) + c.
+  std::size_t law_count() const { return law_offsets_.back(); }
+  std::size_t law_offset(std::size_t connection) const { return law_offsets_[connection]; }
+
+  // The effective tangent's sparsity: mass diagonal, connections, viscous damping. Fixed for the
+  // structure's life, so a solver analyses it once.
+  const SparseMatrix& tangent_pattern() const { return pattern_; }
+
+  // Updates every law at trial (u, v) from `committed`, writes `trial` states and `responses`
+  // (law_count() each), the resisting force (connections plus C v) into `force`, each
+  // connection's force into `connection_forces`, and, when `tangent` is not null, the
+  // effective tangent with `factors` into its values (its pattern must be tangent_pattern()).
+  // Allocates nothing.
+  void Evaluate(std::span<const hysteresis::LawState> committed, const Eigen::VectorXd& u,
+                const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
+                std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+                std::span<double> connection_forces, const TangentFactors& factors,
+                SparseMatrix* tangent) const;
+
+  // Recoverable energy of all laws, and dissipated energy split into viscous (dashpots) and
+  // hysteretic (sliders).
+  double StoredEnergy(std::span<const hysteresis::LawState> states) const;
+  double DashpotEnergy(std::span<const hysteresis::LawState> states) const;
+  double HystereticEnergy(std::span<const hysteresis::LawState> states) const;
+
+ private:
+  // Positions in the tangent's value array of the entries a connection touches (-1 if none).
+  struct ConnectionSlots {
+    int ii = -1, jj = -1, ij = -1, ji = -1;
+  };
+
+  Eigen::VectorXd mass_;
+  std::vector<Connection> connections_;
+  SparseMatrix viscous_damping_;
+  std::vector<std::size_t> law_offsets_;
+  std::vector<char> law_is_dashpot_;
+  SparseMatrix pattern_;
+  std::vector<int> mass_slots_;
+  std::vector<ConnectionSlots> connection_slots_;
+  std::vector<int> damping_slots_;  // one per stored entry of viscous_damping_
+};
+
+}  // namespace isolab::structure

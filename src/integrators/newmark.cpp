@@ -1,0 +1,235 @@
+#include "isolab/integrators/newmark.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "isolab/core/errors.h"
+#include "klu_solver.h"
+
+namespace isolab::integrators {
+
+void NewmarkOptions::Validate() const {
+  if (!(beta > 0.0 && beta <= 0.5)) throw InvalidParameter({"beta", beta, "must be in (0, 0.5]"});
+  if (!(gamma >= 0.5 && gamma <= 1.0)) {
+    throw InvalidParameter({"gamma", gamma, "must be in [0.5, 1]"});
+  }
+  if (!(force_tolerance > 0.0 && force_tolerance < 1.0)) {
+    throw InvalidParameter({"force_tolerance", force_tolerance, "must be in (0, 1)"});
+  }
+  if (!(displacement_tolerance > 0.0 && displacement_tolerance < 1.0)) {
+    throw InvalidParameter({"displacement_tolerance", displacement_tolerance, "must be in (0, 1)"});
+  }
+  if (max_iterations < 1) {
+    throw InvalidParameter({"max_iterations", double(max_iterations), "must be >= 1"});
+  }
+  if (max_step_cuts < 0) {
+    throw InvalidParameter({"max_step_cuts", double(max_step_cuts), "must be >= 0"});
+  }
+}
+
+void ResponseHistory::Resize(int rows, int dofs, int connections, int laws) {
+  time.assign(rows, 0.0);
+  displacement.setZero(rows, dofs);
+  velocity.setZero(rows, dofs);
+  acceleration.setZero(rows, dofs);
+  absolute_acceleration.setZero(rows, dofs);
+  connection_force.setZero(rows, connections);
+  law_force.setZero(rows, laws);
+  energies.assign(rows, Energies{});
+  rows_written = 0;
+}
+
+namespace {
+
+using Eigen::VectorXd;
+using hysteresis::LawResponse;
+using hysteresis::LawState;
+
+double MaxAbs(const VectorXd& x) { return x.size() ? x.lpNorm<Eigen::Infinity>() : 0.0; }
+
+// One run's working state; every vector is sized once, so stepping allocates nothing.
+class NewmarkRun {
+ public:
+  NewmarkRun(const structure::Structure& structure, const Excitation& excitation,
+             const NewmarkOptions& options, RunSummary* summary)
+      : structure_(structure),
+        excitation_(excitation),
+        options_(options),
+        summary_(*summary),
+        tangent_(structure.tangent_pattern()),
+        solver_(structure.tangent_pattern()),
+        committed_(structure.law_count()),
+        trial_(structure.law_count()),
+        rest_(structure.law_count()),
+        responses_(structure.law_count()),
+        connection_forces_(structure.connections().size()) {
+    const int n = structure.dofs();
+    for (VectorXd* x : {&u_, &v_, &a_, &u_trial_, &v_trial_, &a_trial_, &load_, &load_trial_,
+                        &force_, &residual_, &correction_, &viscous_, &viscous_trial_}) {
+      x->setZero(n);
+    }
+    excitation_.EffectiveLoad(0.0, structure_.mass(), &load_);
+    a_ = load_.cwiseQuotient(structure_.mass());  // at rest, M a0 = p_eff(0)
+  }
+
+  // Advances from t0 by h, cutting the step in halves while Newton fails.
+  bool Advance(double t0, double h, int level, int step) {
+    if (TryStep(t0, h)) return true;
+    if (level >= options_.max_step_cuts) {
+      summary_.message = fmt::format(
+          "Newton did not converge at t = {:.6g} (step {}) after {} iterations, residual {:.3g} "
+          "against force scale {:.3g}, with the step cut {} times to {:.3g}",
+          t0 + h, step, options_.max_iterations, last_residual_, last_scale_, level, h);
+      return false;
+    }
+    ++summary_.step_cuts;
+    return Advance(t0, 0.5 * h, level + 1, step) && Advance(t0 + 0.5 * h, 0.5 * h, level + 1, step);
+  }
+
+  void Record(double t, int row, ResponseHistory* out) const {
+    out->time[row] = t;
+    out->displacement.row(row) = u_.transpose();
+    out->velocity.row(row) = v_.transpose();
+    out->acceleration.row(row) = a_.transpose();
+    out->absolute_acceleration.row(row) =
+        (a_.array() + excitation_.ground_acceleration.At(t)).matrix().transpose();
+    for (std::size_t k = 0; k < connection_forces_.size(); ++k) {
+      out->connection_force(row, k) = connection_forces_[k];
+    }
+    for (std::size_t k = 0; k < responses_.size(); ++k)
+      out->law_force(row, k) = responses_[k].force;
+    out->energies[row] = energies_;
+    out->rows_written = row + 1;
+  }
+
+  const Energies& energies() const { return energies_; }
+
+ private:
+  bool TryStep(double t0, double h) {
+    const double beta = options_.beta, gamma = options_.gamma;
+    const double c0 = 1.0 / (beta * h * h), c1 = gamma / (beta * h);
+    const structure::TangentFactors factors{c0, c1, 1.0};
+    excitation_.EffectiveLoad(t0 + h, structure_.mass(), &load_trial_);
+    u_trial_ = u_;
+    bool displacement_converged = false;
+    for (int iteration = 0; iteration <= options_.max_iterations; ++iteration) {
+      v_trial_ = c1 * (u_trial_ - u_) + (1.0 - gamma / beta) * v_ +
+                 (h * (1.0 - gamma / (2.0 * beta))) * a_;
+      a_trial_ = c0 * (u_trial_ - u_) - (1.0 / (beta * h)) * v_ - (1.0 / (2.0 * beta) - 1.0) * a_;
+      const bool refactor = NeedsFactorisation(iteration, h);
+      structure_.Evaluate(committed_, u_trial_, v_trial_, trial_, responses_, &force_,
+                          connection_forces_, factors, refactor ? &tangent_ : nullptr);
+      residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
+      last_scale_ = std::max(
+          {MaxAbs(load_trial_), MaxAbs(force_), MaxAbs(structure_.mass().cwiseProduct(a_trial_))});
+      last_residual_ = MaxAbs(residual_);
+      if (last_residual_ <= options_.force_tolerance * last_scale_ || displacement_converged) {
+        Commit(iteration);
+        return true;
+      }
+      if (iteration == options_.max_iterations) break;
+      if (refactor) {
+        if (options_.newton == NewmarkOptions::Newton::kModifiedInitial) {
+          structure_.Evaluate(rest_, VectorXd::Zero(u_.size()), VectorXd::Zero(u_.size()), trial_,
+                              responses_, &force_, connection_forces_, factors, &tangent_);
+        }
+        ++summary_.factorisations;
+        factored_step_ = h;
+        if (!solver_.Factorize(tangent_)) break;
+      }
+      correction_ = residual_;
+      solver_.Solve(&correction_);
+      u_trial_ += correction_;
+      ++summary_.newton_iterations;
+      displacement_converged = MaxAbs(correction_) <=
+                               options_.displacement_tolerance * std::max(MaxAbs(u_trial_), 1e-300);
+      if (options_.newton == NewmarkOptions::Newton::kModifiedInitial && refactor) {
+        // The rest-state evaluation above overwrote trial states: evaluate again next iteration.
+        displacement_converged = false;
+      }
+    }
+    return false;
+  }
+
+  bool NeedsFactorisation(int iteration, double h) const {
+    switch (options_.newton) {
+      case NewmarkOptions::Newton::kFull:
+        return true;
+      case NewmarkOptions::Newton::kModifiedStep:
+        return iteration == 0;
+      case NewmarkOptions::Newton::kModifiedInitial:
+        return factored_step_ != h;
+    }
+    return true;
+  }
+
+  void Commit(int iterations) {
+    summary_.max_iterations_in_a_step = std::max(summary_.max_iterations_in_a_step, iterations);
+    viscous_trial_.noalias() = structure_.viscous_damping() * v_trial_;
+    const VectorXd& du = correction_ = u_trial_ - u_;
+    energies_.input += 0.5 * (load_ + load_trial_).dot(du);
+    viscous_energy_ += 0.5 * (viscous_ + viscous_trial_).dot(du);
+    std::swap(committed_, trial_);
+    u_.swap(u_trial_);
+    v_.swap(v_trial_);
+    a_.swap(a_trial_);
+    load_.swap(load_trial_);
+    viscous_.swap(viscous_trial_);
+    energies_.kinetic = 0.5 * v_.dot(structure_.mass().cwiseProduct(v_));
+    energies_.elastic = structure_.StoredEnergy(committed_);
+    energies_.hysteretic = structure_.HystereticEnergy(committed_);
+    energies_.damping = viscous_energy_ + structure_.DashpotEnergy(committed_);
+  }
+
+  const structure::Structure& structure_;
+  const Excitation& excitation_;
+  const NewmarkOptions& options_;
+  RunSummary& summary_;
+  structure::SparseMatrix tangent_;
+  KluSolver solver_;
+  std::vector<LawState> committed_, trial_, rest_;
+  std::vector<LawResponse> responses_;
+  std::vector<double> connection_forces_;
+  VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
+      correction_, viscous_, viscous_trial_;
+  Energies energies_;
+  double viscous_energy_ = 0.0;
+  double factored_step_ = 0.0;  // step size of the current modified-Newton factorisation
+  double last_residual_ = 0.0, last_scale_ = 0.0;
+};
+
+}  // namespace
+
+RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseHistory* response) {
+  options.Validate();
+  const auto start = std::chrono::steady_clock::now();
+  RunSummary summary;
+  NewmarkRun run(structure, excitation, options, &summary);
+  response->Resize(grid.steps + 1, structure.dofs(),
+                   static_cast<int>(structure.connections().size()),
+                   static_cast<int>(structure.law_count()));
+  run.Record(0.0, 0, response);
+  double max_input = 0.0, max_balance = 0.0;
+  for (int step = 1; step <= grid.steps; ++step) {
+    const double t0 = (step - 1) * grid.dt;
+    if (!run.Advance(t0, grid.dt, 0, step)) {
+      summary.termination = RunSummary::Termination::kFailed;
+      break;
+    }
+    run.Record(step * grid.dt, step, response);
+    summary.steps = step;
+    max_input = std::max(max_input, std::abs(run.energies().input));
+    max_balance = std::max(max_balance, std::abs(run.energies().Balance()));
+  }
+  summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;
+  summary.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace isolab::integrators

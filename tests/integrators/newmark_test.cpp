@@ -1,0 +1,180 @@
+// Newmark-Newton against Chopra's Chapter 5 examples (shared/reference/chopra), a closed-form
+// harmonic response (convergence order), and the energy balance.
+#include "isolab/integrators/newmark.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "isolab/core/errors.h"
+#include "isolab/hysteresis/law_parameters.h"
+#include "isolab/structure/shear_building.h"
+#include "reference_data.h"
+
+namespace isolab::integrators {
+namespace {
+
+using hysteresis::LawParameters;
+using hysteresis::LawType;
+using hysteresis::ParallelAssembly;
+using hysteresis::ParameterForm;
+
+ParallelAssembly Single(LawType type, std::vector<double> math) {
+  return ParallelAssembly(
+      {{"spring", LawParameters::Make(type, ParameterForm::kMathematical, math)}});
+}
+
+// Chopra Ex. 5.1-5.6: m = 0.2533 kip s^2/in, k = 10 kip/in, zeta = 0.05, p = 10 sin(pi t/0.6).
+constexpr double kMass = 0.2533, kStiffness = 10.0;
+const double kDamping = 2.0 * 0.05 * std::sqrt(kStiffness * kMass);
+
+// Sampled at `dt` (0.6 s a whole number of steps), so every analysis step sees the exact load.
+Excitation HalfSinePulse(double dt = 0.1) {
+  Excitation excitation;
+  AppliedForce pulse{0, {dt, {}}};
+  const int samples = static_cast<int>(std::round(0.6 / dt));
+  for (int k = 0; k <= samples; ++k) {
+    pulse.force.values.push_back(10.0 * std::sin(std::numbers::pi * k / samples));
+  }
+  excitation.forces.push_back(pulse);
+  return excitation;
+}
+
+ResponseHistory Simulate(const structure::Structure& s, const Excitation& e, TimeGrid grid,
+                         const NewmarkOptions& options, RunSummary* summary = nullptr) {
+  ResponseHistory response;
+  const RunSummary result = RunNewmark(s, e, grid, options, &response);
+  EXPECT_TRUE(result.ok()) << result.message;
+  if (summary) *summary = result;
+  return response;
+}
+
+class ChopraChapter5 : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto path = testing::SharedPath("reference/chopra/ch5_sdof_halfsine_dt0.1.csv");
+    ISOLAB_REQUIRE_SHARED(path);
+    rows_ = testing::ReadNumericCsv(path);
+    ASSERT_EQ(rows_.size(), 11u);
+  }
+  // Columns: t, p, exact, piecewise exact, central difference, Newmark average u/v/a, Newmark
+  // linear u/v/a, elastoplastic Newton u/v/a/fs.
+  std::vector<std::vector<double>> rows_;
+};
+
+TEST_F(ChopraChapter5, CaseALinearAverageAndLinearAcceleration) {
+  const auto sdof =
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kLinearSpring, {kStiffness}));
+  const auto average =
+      Simulate(sdof, HalfSinePulse(), {0.1, 10}, NewmarkOptions::AverageAcceleration());
+  const auto linear =
+      Simulate(sdof, HalfSinePulse(), {0.1, 10}, NewmarkOptions::LinearAcceleration());
+  for (int k = 0; k <= 10; ++k) {
+    EXPECT_NEAR(average.displacement(k, 0), rows_[k][5], 1e-4) << "t = " << rows_[k][0];
+    EXPECT_NEAR(average.velocity(k, 0), rows_[k][6], 1e-3) << "t = " << rows_[k][0];
+    EXPECT_NEAR(linear.displacement(k, 0), rows_[k][8], 1e-4) << "t = " << rows_[k][0];
+  }
+}
+
+TEST_F(ChopraChapter5, CaseBElastoplasticNewtonAndModifiedNewton) {
+  const auto sdof =
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75}));
+  NewmarkOptions modified;
+  modified.newton = NewmarkOptions::Newton::kModifiedStep;
+  RunSummary full_summary, modified_summary;
+  const auto full = Simulate(sdof, HalfSinePulse(), {0.1, 10}, NewmarkOptions{}, &full_summary);
+  const auto mnr = Simulate(sdof, HalfSinePulse(), {0.1, 10}, modified, &modified_summary);
+  for (int k = 0; k <= 10; ++k) {
+    EXPECT_NEAR(full.displacement(k, 0), rows_[k][11], 2e-4) << "t = " << rows_[k][0];
+    EXPECT_NEAR(full.law_force(k, 0), rows_[k][14], 2e-3) << "t = " << rows_[k][0];
+    EXPECT_NEAR(mnr.displacement(k, 0), rows_[k][11], 2e-4) << "t = " << rows_[k][0];
+  }
+  EXPECT_GT(modified_summary.newton_iterations, full_summary.newton_iterations);
+}
+
+TEST(Newmark, ElastoplasticPeakConvergesToChoprasFineStepValue) {
+  // Chopra reference README: with dt = 0.001 s the converged peak is 2.2338 in at t = 0.690 s.
+  const auto sdof =
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75}));
+  const auto response = Simulate(sdof, HalfSinePulse(0.001), {0.001, 1000}, NewmarkOptions{});
+  Eigen::Index peak = 0;
+  response.displacement.col(0).maxCoeff(&peak);
+  EXPECT_NEAR(response.displacement(peak, 0), 2.2338, 1e-4);
+  EXPECT_NEAR(response.time[peak], 0.690, 1e-3);
+}
+
+// Damped SDOF from rest under p0 sin(W t): closed form (Chopra Sec. 3.2).
+double HarmonicResponse(double t, double m, double k, double zeta, double p0, double big_omega) {
+  const double w = std::sqrt(k / m), wd = w * std::sqrt(1 - zeta * zeta), r = big_omega / w;
+  const double denominator = (1 - r * r) * (1 - r * r) + (2 * zeta * r) * (2 * zeta * r);
+  const double c = p0 / k * (1 - r * r) / denominator, d = p0 / k * (-2 * zeta * r) / denominator;
+  const double a = -d, b = (zeta * w * a - big_omega * c) / wd;
+  return std::exp(-zeta * w * t) * (a * std::cos(wd * t) + b * std::sin(wd * t)) +
+         c * std::sin(big_omega * t) + d * std::cos(big_omega * t);
+}
+
+TEST(Newmark, ConvergesAtSecondOrderOnALinearSdof) {
+  const double m = 1.0, k = 4.0 * std::numbers::pi * std::numbers::pi, zeta = 0.05;
+  const double big_omega = 2.0 * std::numbers::pi * 0.7, duration = 4.0;
+  const auto sdof =
+      structure::BuildSdof(m, 2 * zeta * std::sqrt(k * m), Single(LawType::kLinearSpring, {k}));
+  std::vector<double> errors;
+  for (const double dt : {0.02, 0.01, 0.005, 0.0025}) {
+    const int steps = static_cast<int>(std::round(duration / dt));
+    Excitation excitation;
+    AppliedForce force{0, {dt / 4, {}}};  // sampled finer than dt: the load is exact at steps
+    for (int i = 0; i <= 4 * steps; ++i)
+      force.force.values.push_back(std::sin(big_omega * i * dt / 4));
+    excitation.forces.push_back(force);
+    const auto response = Simulate(sdof, excitation, {dt, steps}, NewmarkOptions{});
+    double error = 0.0;
+    for (int i = 0; i <= steps; ++i) {
+      error = std::max(error, std::abs(response.displacement(i, 0) -
+                                       HarmonicResponse(i * dt, m, k, zeta, 1.0, big_omega)));
+    }
+    errors.push_back(error);
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) {
+    EXPECT_NEAR(std::log2(errors[i - 1] / errors[i]), 2.0, 0.1) << "dt halving " << i;
+  }
+}
+
+TEST(Newmark, EnergyBalancesForAHystereticSdofUnderAPulse) {
+  const auto sdof =
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kThm1, {10.0, 2.0, 4.5, 0.5, 1.5}));
+  RunSummary summary;
+  const auto response =
+      Simulate(sdof, HalfSinePulse(0.001), {0.001, 3000}, NewmarkOptions{}, &summary);
+  const Energies& end = response.energies.back();
+  EXPECT_GT(end.hysteretic, 0.1 * end.input);
+  EXPECT_LT(summary.energy_balance_error, 1e-3);
+}
+
+TEST(Newmark, CutsAStepThatDoesNotConvergeAndReportsAFailureWithTime) {
+  const auto sdof =
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75}));
+  NewmarkOptions options;
+  options.max_iterations = 1;  // one correction is too few once the spring yields
+  options.max_step_cuts = 2;
+  ResponseHistory response;
+  const RunSummary summary = RunNewmark(sdof, HalfSinePulse(), {0.1, 10}, options, &response);
+  EXPECT_FALSE(summary.ok());
+  EXPECT_GT(summary.step_cuts, 0);
+  EXPECT_NE(summary.message.find("Newton did not converge at t = "), std::string::npos)
+      << summary.message;
+  EXPECT_EQ(response.rows_written, summary.steps + 1);
+  EXPECT_LT(summary.steps, 10);
+}
+
+TEST(NewmarkOptions, RejectsOutOfRangeFields) {
+  NewmarkOptions options;
+  options.beta = 0.0;
+  EXPECT_THROW(options.Validate(), isolab::InvalidParameter);
+  options = {};
+  options.max_iterations = 0;
+  EXPECT_THROW(options.Validate(), isolab::InvalidParameter);
+}
+
+}  // namespace
+}  // namespace isolab::integrators
