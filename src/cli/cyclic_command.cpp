@@ -172,15 +172,15 @@ void WriteLoopCsv(const Run& run, const std::string& path) {
   });
 }
 
-// One CSV per run; with several runs, "loop.csv" becomes "loop_<model>_<amplitude>.csv".
-std::string CsvPath(const std::string& csv, const Run& run, bool several) {
+// One CSV per run; with several runs, "loop.csv" becomes "loop_<run>_<model>_<amplitude>.csv",
+// the run number keeping repeated models and amplitudes apart.
+std::string CsvPath(const std::string& csv, const Run& run, std::size_t index, bool several) {
   if (!several) return csv;
   const std::filesystem::path base(csv);
   const std::string stem = std::filesystem::path(run.model->path).stem().string();
-  return (base.parent_path() / fmt::format("{}_{}_{:g}{}", base.stem().string(), stem,
-                                           run.result.protocol.amplitude,
-                                           base.extension().string()))
-      .string();
+  const std::string name = fmt::format("{}_{}_{}_{:g}{}", base.stem().string(), index + 1, stem,
+                                       run.result.protocol.amplitude, base.extension().string());
+  return (base.parent_path() / name).string();
 }
 
 }  // namespace
@@ -218,7 +218,9 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   }
 
   if (!options.csv.empty()) {
-    for (const Run& run : runs) WriteLoopCsv(run, CsvPath(options.csv, run, runs.size() > 1));
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      WriteLoopCsv(runs[i], CsvPath(options.csv, runs[i], i, runs.size() > 1));
+    }
   }
 
   if (options.json) {

@@ -18,6 +18,10 @@ void CyclicProtocol::Validate() const {
   if (steps_per_cycle < 4 || steps_per_cycle % 4 != 0) {
     throw InvalidParameter({"steps_per_cycle", double(steps_per_cycle), "must be a multiple of 4"});
   }
+  if (double(cycles) * steps_per_cycle > 1e8) {
+    throw InvalidParameter(
+        {"steps_per_cycle", double(steps_per_cycle), "times cycles must be <= 1e8 samples"});
+  }
 }
 
 CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtocol& protocol) {

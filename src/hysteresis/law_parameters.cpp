@@ -312,16 +312,15 @@ LawParameters LawParameters::Make(LawType type, ParameterForm form,
   CheckPresentAndFinite(type, form, given);
   if (form == ParameterForm::kMathematical) {
     ValidateMathematical(type, given);
-    return LawParameters(type, given);
+    return LawParameters(type, given, MechanicalFromMathematical(type, given));
   }
   ValidateMechanical(type, given);
-  return LawParameters(type, MathematicalFromMechanical(type, given));
+  return LawParameters(type, MathematicalFromMechanical(type, given), given);
 }
 
-LawParameters::LawParameters(LawType type, std::array<double, kMaxLawParameters> mathematical)
-    : type_(type),
-      mathematical_(mathematical),
-      mechanical_(MechanicalFromMathematical(type, mathematical)) {}
+LawParameters::LawParameters(LawType type, std::array<double, kMaxLawParameters> mathematical,
+                             std::array<double, kMaxLawParameters> mechanical)
+    : type_(type), mathematical_(mathematical), mechanical_(mechanical) {}
 
 std::vector<double> LawParameters::Values(ParameterForm form) const {
   const std::size_t count = ParameterKeys(type_, form).size();

@@ -71,7 +71,7 @@ ParameterForm DetectForm(const YamlReader& reader, const YAML::Node& node, const
   const auto mech = hysteresis::ParameterKeys(type, ParameterForm::kMechanical);
   std::string math_key, mech_key;
   for (const auto& entry : node) {
-    const std::string key = entry.first.as<std::string>();
+    const std::string key = entry.first.Scalar();  // CheckKeys made sure keys are scalars
     const bool in_math = Contains(math, key), in_mech = Contains(mech, key);
     if (in_math && !in_mech && math_key.empty()) math_key = key;
     if (in_mech && !in_math && mech_key.empty()) mech_key = key;

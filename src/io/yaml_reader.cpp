@@ -105,7 +105,8 @@ YAML::Node YamlReader::Require(const YAML::Node& map, const std::string& path,
 void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path,
                            std::span<const std::string_view> allowed) const {
   for (const auto& entry : map) {
-    const std::string key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar()) Fail(entry.first, path, "a key must be a plain name");
+    const std::string key = entry.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     const std::string_view nearest = NearestWord(key, allowed);
     const std::string hint = nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest);
@@ -118,8 +119,8 @@ void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path,
 double YamlReader::ReadNumber(const YAML::Node& node, const std::string& path) const {
   if (!node.IsScalar()) Fail(node, path, "expected a number");
   const std::string text = node.Scalar();
-  // YAML's own spellings of the non-finite values are numbers too; laws reject them by rule.
-  if (text == ".nan" || text == ".NaN" || text == ".NAN") return NAN;
+  // YAML's spellings of infinity are numbers (laws reject them by rule); NaN never is a value.
+  if (text == ".nan" || text == ".NaN" || text == ".NAN") Fail(node, path, "NaN is not a value");
   if (text == ".inf" || text == ".Inf" || text == "+.inf") return INFINITY;
   if (text == "-.inf" || text == "-.Inf") return -INFINITY;
   double value = 0.0;

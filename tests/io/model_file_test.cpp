@@ -55,6 +55,8 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_cyclic_steps.yaml",
               ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
   ExpectError("bad_empty.yaml", ":1:1:", "the file is empty");
+  ExpectError("bad_nan_value.yaml", ":4:69:", "isolation.components[0].uyh: NaN is not a value");
+  ExpectError("bad_non_scalar_key.yaml", ":4:52:", "a key must be a plain name");
 }
 
 TEST(ModelFile, MissingFileIsAnInputError) {

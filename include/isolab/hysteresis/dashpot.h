@@ -16,9 +16,9 @@ struct Dashpot {
     trial->u = in.u;
     trial->v = in.v;
     trial->slider = 0.0;
+    trial->force = response->force = c * in.v;
     trial->dissipated =
-        committed.dissipated + 0.5 * c * (committed.v + in.v) * (in.u - committed.u);
-    response->force = c * in.v;
+        committed.dissipated + 0.5 * (committed.force + trial->force) * (in.u - committed.u);
     response->stiffness = 0.0;
     response->damping = c;
   }

@@ -15,7 +15,7 @@ struct ElasticSpring {
     *trial = committed;
     trial->u = in.u;
     trial->v = in.v;
-    response->force = spring.Force(in.u);
+    trial->force = response->force = spring.Force(in.u);
     response->stiffness = spring.Stiffness(in.u);
     response->damping = 0.0;
   }

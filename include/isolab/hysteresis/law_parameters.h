@@ -50,7 +50,8 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
 // True when a law may omit this key: THM1's uyh (uc) when k1 = k2 (kh1 = kh2).
 bool IsOptionalKey(LawType type, std::string_view key);
 
-// A validated law, stored in mathematical form.
+// A validated law. The form the user gave is kept exactly and drives the kernel; the other
+// form is derived from it.
 class LawParameters {
  public:
   // `values` follows ParameterKeys(type, form); NaN marks an omitted value. Throws
@@ -63,7 +64,8 @@ class LawParameters {
   LawKernel Kernel() const;
 
  private:
-  LawParameters(LawType type, std::array<double, kMaxLawParameters> mathematical);
+  LawParameters(LawType type, std::array<double, kMaxLawParameters> mathematical,
+                std::array<double, kMaxLawParameters> mechanical);
 
   LawType type_;
   std::array<double, kMaxLawParameters> mathematical_;

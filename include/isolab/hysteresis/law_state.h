@@ -15,9 +15,10 @@ struct LawInput {
 struct LawState {
   double u = 0.0;       // deformation at which this state was computed (length)
   double v = 0.0;       // deformation rate at which this state was computed (length/time)
+  double force = 0.0;   // force at this state (force)
   double slider = 0.0;  // slider displacement: u_h (series form), u_s (parallel form); else 0
-  double dissipated =
-      0.0;  // energy dissipated since rest: slider work or dashpot work (force*length)
+  // Energy dissipated since rest: slider work or dashpot work (force*length).
+  double dissipated = 0.0;
 };
 
 // Force and its exact derivatives at the trial state.

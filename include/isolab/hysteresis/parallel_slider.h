@@ -31,7 +31,7 @@ struct ParallelSlider {
     if (fs > 0.0 && std::abs(branch_force) <= fs) {
       trial->slider = us;
       trial->dissipated = committed.dissipated;
-      response->force = branch_force + spring.Force(in.u);
+      trial->force = response->force = branch_force + spring.Force(in.u);
       response->stiffness = kp + spring.Stiffness(in.u);
       return;
     }
@@ -39,7 +39,7 @@ struct ParallelSlider {
     const double us_new = in.u - direction * fs / kp;
     trial->slider = us_new;
     trial->dissipated = committed.dissipated + fs * std::abs(us_new - us);
-    response->force = direction * fs + spring.Force(in.u);
+    trial->force = response->force = direction * fs + spring.Force(in.u);
     response->stiffness = spring.Stiffness(in.u);
   }
 

@@ -34,7 +34,7 @@ struct SeriesSlider {
     if (fs > 0.0 && std::abs(slider_force) <= fs) {
       trial->slider = uh;
       trial->dissipated = committed.dissipated;
-      response->force = ke * (in.u - uh);
+      trial->force = response->force = ke * (in.u - uh);
       response->stiffness = ke;
       return;
     }
@@ -43,15 +43,16 @@ struct SeriesSlider {
     const double uh_new = spring.SolveInSeries(ke, ke * in.u - direction * fs, &kh);
     trial->slider = uh_new;
     trial->dissipated = committed.dissipated + fs * std::abs(uh_new - uh);
-    response->force = ke * (in.u - uh_new);
+    // Equal to ke (u - u_h) but free of its cancellation when ke >> kh (the paper's k0 >> k1
+    // spring limit, where u - u_h is a small difference of large numbers).
+    trial->force = response->force = direction * fs + spring.Force(uh_new);
     // d u_h / d u = ke / (ke + kh), so d f / d u = ke kh / (ke + kh).
     response->stiffness = ke * kh / (ke + kh);
   }
 
-  // Recoverable energy: element 1 plus element 3.
+  // Recoverable energy: element 1 (f^2 / 2 ke, again free of cancellation) plus element 3.
   double StoredEnergy(const LawState& state) const {
-    const double ue = state.u - state.slider;
-    return 0.5 * ke * ue * ue + spring.Energy(state.slider);
+    return 0.5 * state.force * state.force / ke + spring.Energy(state.slider);
   }
 };
 
