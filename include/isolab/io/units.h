@@ -20,7 +20,7 @@ inline constexpr Dimension kLength{0, 1, 0};
 inline constexpr Dimension kTime{0, 0, 1};
 inline constexpr Dimension kMass{1, 0, 0};
 inline constexpr Dimension kForce{1, 1, -2};
-inline constexpr Dimension kStiffness{1, 0, -2};      // force/length
+inline constexpr Dimension kStiffness{1, 0, -2};           // force/length
 inline constexpr Dimension kDampingCoefficient{1, 0, -1};  // force*time/length
 inline constexpr Dimension kAcceleration{0, 1, -2};
 inline constexpr Dimension kVelocity{0, 1, -1};
