@@ -25,6 +25,9 @@ struct Run {
 };
 
 std::vector<CyclicProtocol> Protocols(const io::ModelFile& model, const CyclicOptions& options) {
+  if (model.isolation.size() == 0) {
+    throw InputError({model.path}, "no isolation section: nothing to test cyclically");
+  }
   CyclicProtocol base = model.cyclic.value_or(CyclicProtocol{});
   if (options.period) base.period = *options.period;
   if (options.cycles) base.cycles = *options.cycles;
@@ -74,13 +77,13 @@ void PrintModel(const io::ModelFile& model, std::ostream& out) {
 }
 
 void PrintRun(const Run& run, std::ostream& out) {
-  const io::Units& u = run.model->units;
+  const io::UnitSystem& u = run.model->units;
   const CyclicProtocol& p = run.result.protocol;
   fmt::print(out, "\nu_a = {:g} {}, T = {:g} {}, {} cycles, {} steps per cycle\n", p.amplitude,
-             u.length, p.period, u.time, p.cycles, p.steps_per_cycle);
+             u.length(), p.period, u.time(), p.cycles, p.steps_per_cycle);
   fmt::print(out, "{:>5} {:>16} {:>14}   slider displacement at +u_a [{}]\n", "cycle",
-             fmt::format("W_d [{}*{}]", u.force, u.length), fmt::format("peak|F| [{}]", u.force),
-             u.length);
+             fmt::format("W_d [{}*{}]", u.force(), u.length()), fmt::format("peak|F| [{}]", u.force()),
+             u.length());
   fmt::print(out, "{:>38}", "");
   for (const auto& component : run.model->isolation.components()) {
     fmt::print(out, " {:>11}", component.name);
@@ -96,10 +99,10 @@ void PrintRun(const Run& run, std::ostream& out) {
 
 // Energy of the last cycle against amplitude, when one model ran at several amplitudes.
 void PrintAmplitudeTable(const std::vector<Run>& runs, std::size_t first, std::ostream& out) {
-  const io::Units& u = runs[first].model->units;
+  const io::UnitSystem& u = runs[first].model->units;
   fmt::print(out, "\nlast cycle against amplitude\n{:>12} {:>16} {:>14}\n",
-             fmt::format("u_a [{}]", u.length), fmt::format("W_d [{}*{}]", u.force, u.length),
-             fmt::format("peak|F| [{}]", u.force));
+             fmt::format("u_a [{}]", u.length()), fmt::format("W_d [{}*{}]", u.force(), u.length()),
+             fmt::format("peak|F| [{}]", u.force()));
   for (std::size_t i = first; i < runs.size() && runs[i].model == runs[first].model; ++i) {
     const auto& last = runs[i].result.cycles.back();
     fmt::print(out, "{:>12g} {:>16.6g} {:>14.6g}\n", runs[i].result.protocol.amplitude,
@@ -121,9 +124,9 @@ nlohmann::json RunJson(const Run& run) {
   const auto& components = run.model->isolation.components();
   nlohmann::json json;
   json["model"] = run.model->path;
-  json["units"] = {{"force", run.model->units.force},
-                   {"length", run.model->units.length},
-                   {"time", run.model->units.time}};
+  json["units"] = {{"force", run.model->units.force()},
+                   {"length", run.model->units.length()},
+                   {"time", run.model->units.time()}};
   const CyclicProtocol& p = run.result.protocol;
   json["protocol"] = {{"amplitude", p.amplitude},
                       {"period", p.period},
@@ -157,10 +160,10 @@ void WriteLoopCsv(const Run& run, const std::string& path) {
   const auto& components = run.model->isolation.components();
   const auto& loop = run.result.loop;
   io::WriteTextFileAtomically(path, [&](std::ostream& out) {
-    const io::Units& u = run.model->units;
-    fmt::print(out, "time_{},u_{},force_{}", u.time, u.length, u.force);
+    const io::UnitSystem& u = run.model->units;
+    fmt::print(out, "time_{},u_{},force_{}", u.time(), u.length(), u.force());
     for (const auto& component : components)
-      fmt::print(out, ",force_{}_{}", component.name, u.force);
+      fmt::print(out, ",force_{}_{}", component.name, u.force());
     fmt::print(out, "\n");
     for (std::size_t k = 0; k < loop.time.size(); ++k) {
       fmt::print(out, "{:.10g},{:.10g},{:.10g}", loop.time[k], loop.displacement[k], loop.force[k]);

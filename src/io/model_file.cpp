@@ -1,155 +1,44 @@
 #include "isolab/io/model_file.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
-#include <algorithm>
-#include <cmath>
-#include <vector>
+#include <optional>
+#include <utility>
 
-#include "yaml_reader.h"
+#include "model_sections.h"
 
 namespace isolab::io {
 namespace {
 
-using hysteresis::Component;
-using hysteresis::LawParameters;
-using hysteresis::LawType;
-using hysteresis::ParameterForm;
-
-constexpr std::string_view kForceUnits[] = {"N", "kN", "MN", "lbf", "kip"};
-constexpr std::string_view kLengthUnits[] = {"m", "cm", "mm", "in", "ft"};
-constexpr std::string_view kTimeUnits[] = {"s", "ms"};
-
-std::string ReadUnit(const YamlReader& reader, const YAML::Node& units, const std::string& path,
-                     std::string_view key, std::span<const std::string_view> allowed) {
-  const std::string child_path = ChildPath(path, key);
-  const YAML::Node node = units[std::string(key)];
-  if (!node.IsDefined()) return {};
-  const std::string unit = reader.ReadString(node, child_path);
-  if (std::find(allowed.begin(), allowed.end(), unit) == allowed.end()) {
-    reader.Fail(node, child_path,
-                fmt::format("'{}' is not a {} unit (expected one of: {})", unit, key,
-                            fmt::join(allowed, ", ")));
-  }
-  return unit;
-}
-
-Units ReadUnits(const YamlReader& reader, const YAML::Node& root) {
+UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root) {
   const YAML::Node node = reader.Require(root, "", "units");
   reader.RequireMap(node, "units");
   reader.CheckKeys(node, "units", {"force", "length", "time"});
-  Units units;
-  units.force = ReadUnit(reader, node, "units", "force", kForceUnits);
-  units.length = ReadUnit(reader, node, "units", "length", kLengthUnits);
-  const std::string time = ReadUnit(reader, node, "units", "time", kTimeUnits);
-  if (units.force.empty()) reader.Require(node, "units", "force");
-  if (units.length.empty()) reader.Require(node, "units", "length");
-  if (!time.empty()) units.time = time;
-  return units;
-}
-
-// The keys a component of this type may carry in either form, for "unknown key" hints.
-std::vector<std::string_view> AllowedComponentKeys(LawType type) {
-  std::vector<std::string_view> keys = {"name", "type"};
-  for (const ParameterForm form : {ParameterForm::kMathematical, ParameterForm::kMechanical}) {
-    for (const std::string_view key : hysteresis::ParameterKeys(type, form)) {
-      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  const std::string force =
+      reader.ReadString(reader.Require(node, "units", "force"), "units.force");
+  const std::string length =
+      reader.ReadString(reader.Require(node, "units", "length"), "units.length");
+  const std::string time = node["time"] ? reader.ReadString(node["time"], "units.time") : "s";
+  // Built up one unit at a time, so an error points at the unit that is wrong.
+  const std::pair<const char*,
+                  UnitSystem (*)(const std::string&, const std::string&, const std::string&)>
+      steps[] = {
+          {"force", [](auto& f, auto&, auto&) { return UnitSystem(f, "m", "s"); }},
+          {"length", [](auto& f, auto& l, auto&) { return UnitSystem(f, l, "s"); }},
+          {"time", [](auto& f, auto& l, auto& t) { return UnitSystem(f, l, t); }},
+      };
+  std::optional<UnitSystem> units;
+  for (const auto& [key, build] : steps) {
+    try {
+      units = build(force, length, time);
+    } catch (const std::invalid_argument& error) {
+      reader.Fail(node[key], ChildPath("units", key),
+                  fmt::format("{} (force: N, kN, MN, lbf, kip; length: m, cm, mm, in, ft; time: s, "
+                              "ms)",
+                              error.what()));
     }
   }
-  return keys;
-}
-
-bool Contains(std::span<const std::string_view> keys, std::string_view key) {
-  return std::find(keys.begin(), keys.end(), key) != keys.end();
-}
-
-// Which form a component's keys are written in; both forms in one component is an error.
-ParameterForm DetectForm(const YamlReader& reader, const YAML::Node& node, const std::string& path,
-                         LawType type) {
-  const auto math = hysteresis::ParameterKeys(type, ParameterForm::kMathematical);
-  const auto mech = hysteresis::ParameterKeys(type, ParameterForm::kMechanical);
-  std::string math_key, mech_key;
-  for (const auto& entry : node) {
-    const std::string key = entry.first.Scalar();  // CheckKeys made sure keys are scalars
-    const bool in_math = Contains(math, key), in_mech = Contains(mech, key);
-    if (in_math && !in_mech && math_key.empty()) math_key = key;
-    if (in_mech && !in_math && mech_key.empty()) mech_key = key;
-  }
-  if (!math_key.empty() && !mech_key.empty()) {
-    reader.Fail(
-        node, path,
-        fmt::format("mixes mathematical ({}) and mechanical ({}) parameters; give one form: "
-                    "{} or {}",
-                    math_key, mech_key, fmt::join(math, ", "), fmt::join(mech, ", ")));
-  }
-  return mech_key.empty() ? ParameterForm::kMathematical : ParameterForm::kMechanical;
-}
-
-Component ReadComponent(const YamlReader& reader, const YAML::Node& node, const std::string& path,
-                        std::size_t index) {
-  reader.RequireMap(node, path);
-  const YAML::Node type_node = reader.Require(node, path, "type");
-  const std::string type_name = reader.ReadString(type_node, ChildPath(path, "type"));
-  const auto type = hysteresis::LawTypeFromName(type_name);
-  if (!type) {
-    std::vector<std::string_view> names;
-    for (const LawType t : hysteresis::AllLawTypes()) names.push_back(hysteresis::LawName(t));
-    const std::string_view nearest = NearestWord(type_name, names);
-    reader.Fail(type_node, ChildPath(path, "type"),
-                fmt::format("'{}' is not an element law{} (expected one of: {})", type_name,
-                            nearest.empty() ? "" : fmt::format("; did you mean '{}'?", nearest),
-                            fmt::join(names, ", ")));
-  }
-  reader.CheckKeys(node, path, AllowedComponentKeys(*type));
-
-  const ParameterForm form = DetectForm(reader, node, path, *type);
-  const auto keys = hysteresis::ParameterKeys(*type, form);
-  std::vector<double> values(keys.size(), NAN);
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    const YAML::Node value = node[std::string(keys[i])];
-    if (value.IsDefined()) values[i] = reader.ReadNumber(value, ChildPath(path, keys[i]));
-  }
-
-  std::string name = fmt::format("c{}", index + 1);
-  if (node["name"].IsDefined()) name = reader.ReadString(node["name"], ChildPath(path, "name"));
-
-  try {
-    return Component{name, LawParameters::Make(*type, form, values)};
-  } catch (const InvalidParameter& error) {
-    const ParameterViolation& violation = error.violation();
-    const YAML::Node at = node[violation.key];
-    if (at.IsDefined()) {
-      throw InputError(reader.Locate(at), fmt::format("{}.{}", path, violation.Describe()));
-    }
-    reader.Fail(
-        node, path,
-        fmt::format("missing key '{}' ({}; {} in {} form takes {})", violation.key, violation.rule,
-                    type_name, form == ParameterForm::kMathematical ? "mathematical" : "mechanical",
-                    fmt::join(keys, ", ")));
-  }
-}
-
-hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& root) {
-  const YAML::Node node = reader.Require(root, "", "isolation");
-  reader.RequireMap(node, "isolation");
-  reader.CheckKeys(node, "isolation", {"components"});
-  const YAML::Node list = reader.Require(node, "isolation", "components");
-  const std::string path = "isolation.components";
-  reader.RequireSequence(list, path);
-  if (list.size() == 0) reader.Fail(list, path, "the list is empty; give at least one component");
-  std::vector<Component> components;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    components.push_back(ReadComponent(reader, list[i], IndexPath(path, i), i));
-    for (std::size_t j = 0; j + 1 < components.size(); ++j) {
-      if (components[j].name == components.back().name) {
-        reader.Fail(
-            list[i], IndexPath(path, i),
-            fmt::format("name '{}' is already used by component {}", components[j].name, j));
-      }
-    }
-  }
-  return hysteresis::ParallelAssembly(std::move(components));
+  return *units;
 }
 
 hysteresis::CyclicProtocol ReadCyclic(const YamlReader& reader, const YAML::Node& node) {
@@ -175,21 +64,77 @@ hysteresis::CyclicProtocol ReadCyclic(const YamlReader& reader, const YAML::Node
   return protocol;
 }
 
+// Checks that need more than one section.
+void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const ModelFile& model) {
+  if (!model.structure) return;
+  const YAML::Node structure = root["structure"];
+  int dofs = 1;
+  if (model.structure->kind == StructureSection::Kind::kSdof) {
+    if (model.isolation.size() == 0) {
+      reader.Fail(structure, "structure",
+                  "an sdof takes its restoring force from isolation.components, which is missing");
+    }
+  } else {
+    const bool isolated = model.isolation.size() > 0;
+    const bool has_base_mass = model.structure->building.base_mass > 0.0;
+    if (isolated && !has_base_mass) {
+      reader.Fail(structure, "structure", "an isolated building needs base_mass");
+    }
+    if (!isolated && has_base_mass) {
+      reader.Fail(
+          structure["base_mass"], "structure.base_mass",
+          "given, but there is no isolation section (a fixed-base building has no base mass)");
+    }
+    dofs = static_cast<int>(model.structure->building.stories.size()) + (isolated ? 1 : 0);
+  }
+  const YAML::Node forces = root["excitation"] ? root["excitation"]["forces"] : YAML::Node();
+  for (std::size_t i = 0; i < model.excitation.forces.size(); ++i) {
+    const int dof = model.excitation.forces[i].dof;
+    if (dof < 0 || dof >= dofs) {
+      reader.Fail(
+          forces[i]["dof"], IndexPath("excitation.forces", i) + ".dof",
+          fmt::format("{} (the structure's degrees of freedom are 0 to {})", dof, dofs - 1));
+    }
+  }
+}
+
 }  // namespace
 
 ModelFile LoadModelFile(const std::string& path) {
   const YamlReader reader(path);
-  const YAML::Node root = reader.LoadFile();
-  reader.RequireMap(root, "");
-  reader.CheckKeys(root, "", {"description", "units", "isolation", "cyclic"});
-
   ModelFile model;
+  const YAML::Node root = reader.LoadFile(&model.text);
+  reader.RequireMap(root, "");
+  reader.CheckKeys(root, "",
+                   {"description", "units", "isolation", "structure", "excitation", "analysis",
+                    "output", "cyclic"});
   model.path = path;
-  if (root["description"])
+  if (root["description"]) {
     model.description = reader.ReadString(root["description"], "description");
+  }
   model.units = ReadUnits(reader, root);
-  model.isolation = ReadIsolation(reader, root);
+  if (root["isolation"]) {
+    const YAML::Node isolation = root["isolation"];
+    reader.RequireMap(isolation, "isolation");
+    reader.CheckKeys(isolation, "isolation", {"components"});
+    model.isolation = ReadAssembly(reader, reader.Require(isolation, "isolation", "components"),
+                                   "isolation.components", model.units);
+  }
+  if (root["structure"]) model.structure = ReadStructure(reader, root["structure"], model.units);
+  if (root["excitation"])
+    model.excitation = ReadExcitation(reader, root["excitation"], model.units);
+  if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], model.units);
+  if (root["output"]) {
+    reader.RequireMap(root["output"], "output");
+    reader.CheckKeys(root["output"], "output", {"file"});
+    model.output_file =
+        reader.ReadString(reader.Require(root["output"], "output", "file"), "output.file");
+  }
   if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);
+  if (!model.structure && model.isolation.size() == 0) {
+    reader.Fail(root, "", "missing key 'isolation' (a model needs isolation, structure, or both)");
+  }
+  CheckConsistency(reader, root, model);
   return model;
 }
 

@@ -106,6 +106,22 @@ std::string DescribeDimension(Dimension d) {
   return fmt::format("mass^{} length^{} time^{}", d.mass, d.length, d.time);
 }
 
+std::string DescribeUnits(const UnitSystem& units, Dimension d) {
+  // Mass enters as force * time^2 / length.
+  const int force = d.mass, length = d.length - d.mass, time = d.time + 2 * d.mass;
+  std::string numerator, denominator;
+  const auto add = [](std::string* side, const std::string& unit, int power) {
+    if (power == 0) return;
+    const std::string factor = power == 1 ? unit : fmt::format("{}^{}", unit, power);
+    *side = side->empty() ? factor : fmt::format("{}*{}", *side, factor);
+  };
+  add(force > 0 ? &numerator : &denominator, units.force(), std::abs(force));
+  add(length > 0 ? &numerator : &denominator, units.length(), std::abs(length));
+  add(time > 0 ? &numerator : &denominator, units.time(), std::abs(time));
+  if (numerator.empty()) numerator.assign(1, denominator.empty() ? '-' : '1');
+  return denominator.empty() ? numerator : fmt::format("{}/{}", numerator, denominator);
+}
+
 UnitSystem::UnitSystem(std::string force, std::string length, std::string time)
     : force_(std::move(force)),
       length_(std::move(length)),

@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace isolab::io {
@@ -61,11 +63,14 @@ std::string_view NearestWord(std::string_view word, std::span<const std::string_
   return best;
 }
 
-YAML::Node YamlReader::LoadFile() const {
+YAML::Node YamlReader::LoadFile(std::string* text) const {
   std::ifstream stream(file_);
   if (!stream) throw InputError({file_}, fmt::format("cannot open ({})", std::strerror(errno)));
+  const std::string content((std::istreambuf_iterator<char>(stream)),
+                            std::istreambuf_iterator<char>());
+  if (text != nullptr) *text = content;
   try {
-    YAML::Node root = YAML::Load(stream);
+    YAML::Node root = YAML::Load(content);
     if (!root.IsDefined() || root.IsNull()) throw InputError({file_, 1, 1}, "the file is empty");
     return root;
   } catch (const YAML::ParserException& e) {
@@ -132,6 +137,24 @@ double YamlReader::ReadNumber(const YAML::Node& node, const std::string& path) c
     Fail(node, path, fmt::format("'{}' is not a number", text));
   }
   return value;
+}
+
+double YamlReader::ReadQuantity(const YAML::Node& node, const std::string& path,
+                                Dimension dimension, const UnitSystem& units) const {
+  if (!node.IsScalar()) Fail(node, path, "expected a number or a quantity with a unit");
+  // Plain YAML scalars that parse as numbers are in the model's units.
+  const std::string& text = node.Scalar();
+  const bool has_unit = std::any_of(text.begin(), text.end(), [](unsigned char c) {
+    return std::isalpha(c) && c != 'e' && c != 'E';
+  });
+  if (!has_unit || text.front() == '.') return ReadNumber(node, path);
+  try {
+    return units.Parse(text, dimension);
+  } catch (const std::invalid_argument& error) {
+    Fail(node, path,
+         fmt::format("{} (expected {} in {} units)", error.what(), DescribeDimension(dimension),
+                     DescribeUnits(units, dimension)));
+  }
 }
 
 int YamlReader::ReadInteger(const YAML::Node& node, const std::string& path) const {

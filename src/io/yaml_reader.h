@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/units.h"
 
 namespace isolab::io {
 
@@ -19,8 +20,9 @@ class YamlReader {
 
   const std::string& file() const { return file_; }
 
-  // Parses the file; throws InputError for an unreadable file or a syntax error.
-  YAML::Node LoadFile() const;
+  // Parses the file, keeping its text in `text` when given; throws InputError for an unreadable
+  // file or a syntax error.
+  YAML::Node LoadFile(std::string* text = nullptr) const;
 
   SourceLocation Locate(const YAML::Node& node) const;
   [[noreturn]] void Fail(const YAML::Node& node, const std::string& path,
@@ -40,6 +42,9 @@ class YamlReader {
   }
 
   double ReadNumber(const YAML::Node& node, const std::string& path) const;
+  // A number in the model's units, or a string "value unit" converted into them.
+  double ReadQuantity(const YAML::Node& node, const std::string& path, Dimension dimension,
+                      const UnitSystem& units) const;
   int ReadInteger(const YAML::Node& node, const std::string& path) const;
   std::string ReadString(const YAML::Node& node, const std::string& path) const;
 

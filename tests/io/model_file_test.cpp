@@ -50,7 +50,7 @@ TEST(ModelFile, MalformedStructureIsLocated) {
               ":4:42:", "isolation.components[0].k0: 'stiff' is not a number");
   ExpectError("bad_components_not_a_list.yaml", ":3:15:", "isolation.components: expected a list");
   ExpectError("bad_missing_units.yaml", ":1:1:", "missing key 'units'");
-  ExpectError("bad_unit.yaml", ":1:16:", "'kilonewton' is not a force unit");
+  ExpectError("bad_unit.yaml", ":1:16:", "units.force: 'kilonewton' is not a force unit");
   ExpectError("bad_duplicate_name.yaml", ":5:7:", "name 'a' is already used by component 0");
   ExpectError("bad_cyclic_steps.yaml",
               ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
@@ -66,8 +66,8 @@ TEST(ModelFile, MissingFileIsAnInputError) {
 TEST(ModelFile, ReadsMechanicalFormAndUnits) {
   const ModelFile model = LoadModelFile(DataFile("good_mechanical.yaml"));
   EXPECT_EQ(model.description, "mechanical form");
-  EXPECT_EQ(model.units.force, "kN");
-  EXPECT_EQ(model.units.length, "mm");
+  EXPECT_EQ(model.units.force(), "kN");
+  EXPECT_EQ(model.units.length(), "mm");
   ASSERT_EQ(model.isolation.size(), 2u);
   const auto math =
       model.isolation.components()[0].parameters.Values(hysteresis::ParameterForm::kMathematical);

@@ -1,41 +1,87 @@
-// Model files (YAML). Sections read so far:
+// Model files (YAML). Every number is in the declared units; any quantity may also be a string
+// with its own unit ("0.2 kN/mm", "250 t"). Sections:
 //
 //   description: free text
-//   units: {force: kN, length: mm, time: s}     # required; every number is in these units
-//   isolation:
-//     components:                               # a parallel assembly, one entry per law
+//   units: {force: kN, length: mm, time: s}          # required
+//   isolation:                                       # the isolation layer, or an SDOF's spring
+//     components:                                    # a parallel assembly, one entry per law
 //       - {name: c1, type: thm1, k0: 1.0, k1: 0.2, k2: 0.45, uy: 20, uyh: 120}
-//       - {name: c2, type: thm2, ke: 1.0, kh1: 0.2, kh2: 0.05, fs: 16, uc: 120}
-//   cyclic: {amplitude: 200, period: 1, cycles: 2, steps_per_cycle: 400}  # optional defaults
+//       - {name: c2, type: thm2, ke: "1 kN/mm", kh1: 0.2, kh2: 0.05, fs: 16, uc: 120}
+//   structure:                                       # for `isolab run`
+//     type: sdof                                     # mass, damping: {ratio | coefficient}
+//     type: shear_building                           # stories (list or uniform), base_mass,
+//                                                    # damping: {type: rayleigh|modal|none, ...}
+//   excitation:
+//     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}
+//     forces: [{dof: 0, dt: 0.1, values: [...]}]
+//   analysis: {dt: 0.005, duration: 30, integrator: newmark,
+//              newmark: {beta: 0.25, gamma: 0.5, newton: full, ...}}
+//   output: {file: results.h5}
+//   cyclic: {amplitude: 200, period: 1, cycles: 2, steps_per_cycle: 400}  # for `isolab cyclic`
 //
-// A component gives its parameters in one form, mathematical or mechanical (law_parameters.h).
 // Every error is an InputError "file:line:col: key path: what (what was allowed)".
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/integrators/newmark.h"
+#include "isolab/io/units.h"
+#include "isolab/structure/shear_building.h"
 
 namespace isolab::io {
 
-struct Units {
-  std::string force = "kN";
-  std::string length = "mm";
-  std::string time = "s";
+struct StructureSection {
+  enum class Kind { kSdof, kShearBuilding };
+  Kind kind = Kind::kSdof;
+  double mass = 0.0;                    // SDOF
+  std::optional<double> damping_ratio;  // SDOF, on the initial stiffness
+  double damping_coefficient = 0.0;     // SDOF, when no ratio is given
+  structure::ShearBuilding building;    // shear building (isolation filled in if present)
+};
+
+struct GroundMotionSection {
+  std::string file;   // resolved against the model file's folder
+  std::string units;  // empty: from the record's header
+  double scale = 1.0;
+  double dt = 0.0;  // single-column records only
+};
+
+struct ForceSection {
+  int dof = 0;
+  double dt = 0.0;
+  std::vector<double> values;
+};
+
+struct ExcitationSection {
+  std::optional<GroundMotionSection> ground_motion;
+  std::vector<ForceSection> forces;
+};
+
+struct AnalysisSection {
+  double dt = 0.0;        // 0: the record's step
+  double duration = 0.0;  // 0: the excitation's duration
+  integrators::NewmarkOptions newmark;
 };
 
 struct ModelFile {
   std::string path;
+  std::string text;  // the YAML as read, stored with results
   std::string description;
-  Units units;
-  hysteresis::ParallelAssembly isolation;
+  UnitSystem units{"kN", "mm", "s"};
+  hysteresis::ParallelAssembly isolation;  // empty when the file has no isolation section
+  std::optional<StructureSection> structure;
+  ExcitationSection excitation;
+  AnalysisSection analysis;
+  std::string output_file;  // empty: not given
   std::optional<hysteresis::CyclicProtocol> cyclic;
 };
 
-// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types and
-// parameters that break a law's rules.
+// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types or
+// units, and parameters that break a law's or a section's rules.
 ModelFile LoadModelFile(const std::string& path);
 
 }  // namespace isolab::io

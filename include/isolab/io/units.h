@@ -29,6 +29,10 @@ inline constexpr Dimension kVelocity{0, 1, -1};
 // "force/length", "mass", ... for messages.
 std::string DescribeDimension(Dimension dimension);
 
+class UnitSystem;
+// The model's own unit for a dimension, "kN/mm", "kN*s^2/mm", for messages and output.
+std::string DescribeUnits(const UnitSystem& units, Dimension dimension);
+
 class UnitSystem {
  public:
   // Throws std::invalid_argument naming the unit that is not a force, length or time unit.

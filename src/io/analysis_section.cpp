@@ -1,0 +1,151 @@
+// excitation (ground motion, applied forces) and analysis (step, duration, integrator options).
+#include <fmt/format.h>
+
+#include "isolab/core/errors.h"
+#include "model_sections.h"
+
+namespace isolab::io {
+
+ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
+                                 const UnitSystem& units) {
+  const std::string path = "excitation";
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"ground_motion", "forces"});
+  ExcitationSection section;
+  if (node["ground_motion"]) {
+    const YAML::Node motion = node["ground_motion"];
+    const std::string motion_path = "excitation.ground_motion";
+    reader.RequireMap(motion, motion_path);
+    reader.CheckKeys(motion, motion_path, {"file", "units", "scale", "dt"});
+    GroundMotionSection ground;
+    ground.file =
+        reader.ReadString(reader.Require(motion, motion_path, "file"), motion_path + ".file");
+    if (motion["units"]) {
+      ground.units = reader.ReadString(motion["units"], motion_path + ".units");
+      try {
+        units.Convert(1.0, ground.units, dimension::kAcceleration);
+      } catch (const std::invalid_argument& error) {
+        reader.Fail(motion["units"], motion_path + ".units",
+                    fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
+      }
+    }
+    if (motion["scale"]) ground.scale = reader.ReadNumber(motion["scale"], motion_path + ".scale");
+    if (motion["dt"]) {
+      ground.dt = reader.ReadQuantity(motion["dt"], motion_path + ".dt", dimension::kTime, units);
+      if (!(ground.dt > 0.0)) reader.Fail(motion["dt"], motion_path + ".dt", "must be > 0");
+    }
+    section.ground_motion = ground;
+  }
+  if (node["forces"]) {
+    const YAML::Node list = node["forces"];
+    reader.RequireSequence(list, "excitation.forces");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string force_path = IndexPath("excitation.forces", i);
+      reader.RequireMap(list[i], force_path);
+      reader.CheckKeys(list[i], force_path, {"dof", "dt", "values"});
+      ForceSection force;
+      force.dof =
+          reader.ReadInteger(reader.Require(list[i], force_path, "dof"), force_path + ".dof");
+      const YAML::Node dt = reader.Require(list[i], force_path, "dt");
+      force.dt = reader.ReadQuantity(dt, force_path + ".dt", dimension::kTime, units);
+      if (!(force.dt > 0.0)) reader.Fail(dt, force_path + ".dt", "must be > 0");
+      const YAML::Node values = reader.Require(list[i], force_path, "values");
+      reader.RequireSequence(values, force_path + ".values");
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        force.values.push_back(reader.ReadQuantity(values[k], IndexPath(force_path + ".values", k),
+                                                   dimension::kForce, units));
+      }
+      section.forces.push_back(std::move(force));
+    }
+  }
+  if (!section.ground_motion && section.forces.empty()) {
+    reader.Fail(node, path, "give a ground_motion, forces, or both");
+  }
+  return section;
+}
+
+AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
+                             const UnitSystem& units) {
+  const std::string path = "analysis";
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"dt", "duration", "integrator", "newmark"});
+  AnalysisSection section;
+  if (node["dt"]) {
+    section.dt = reader.ReadQuantity(node["dt"], "analysis.dt", dimension::kTime, units);
+    if (!(section.dt > 0.0))
+      reader.Fail(node["dt"], "analysis.dt", fmt::format("{:g} (must be > 0)", section.dt));
+  }
+  if (node["duration"]) {
+    section.duration =
+        reader.ReadQuantity(node["duration"], "analysis.duration", dimension::kTime, units);
+    if (!(section.duration > 0.0)) {
+      reader.Fail(node["duration"], "analysis.duration",
+                  fmt::format("{:g} (must be > 0)", section.duration));
+    }
+  }
+  if (node["integrator"]) {
+    const std::string integrator = reader.ReadString(node["integrator"], "analysis.integrator");
+    if (integrator != "newmark") {
+      reader.Fail(node["integrator"], "analysis.integrator",
+                  fmt::format("'{}' is not an integrator (expected newmark)", integrator));
+    }
+  }
+  if (node["newmark"]) {
+    const YAML::Node newmark = node["newmark"];
+    const std::string np = "analysis.newmark";
+    reader.RequireMap(newmark, np);
+    reader.CheckKeys(newmark, np,
+                     {"method", "beta", "gamma", "newton", "force_tolerance",
+                      "displacement_tolerance", "max_iterations", "max_step_cuts"});
+    integrators::NewmarkOptions& o = section.newmark;
+    if (newmark["method"]) {
+      const std::string method = reader.ReadString(newmark["method"], np + ".method");
+      if (method == "linear_acceleration") {
+        o = integrators::NewmarkOptions::LinearAcceleration();
+      } else if (method != "average_acceleration") {
+        reader.Fail(
+            newmark["method"], np + ".method",
+            fmt::format("'{}' (expected average_acceleration or linear_acceleration)", method));
+      }
+    }
+    if (newmark["beta"]) o.beta = reader.ReadNumber(newmark["beta"], np + ".beta");
+    if (newmark["gamma"]) o.gamma = reader.ReadNumber(newmark["gamma"], np + ".gamma");
+    if (newmark["newton"]) {
+      const std::string newton = reader.ReadString(newmark["newton"], np + ".newton");
+      using Newton = integrators::NewmarkOptions::Newton;
+      if (newton == "full") {
+        o.newton = Newton::kFull;
+      } else if (newton == "modified_initial") {
+        o.newton = Newton::kModifiedInitial;
+      } else if (newton == "modified_step") {
+        o.newton = Newton::kModifiedStep;
+      } else {
+        reader.Fail(newmark["newton"], np + ".newton",
+                    fmt::format("'{}' (expected full, modified_initial or modified_step)", newton));
+      }
+    }
+    if (newmark["force_tolerance"]) {
+      o.force_tolerance = reader.ReadNumber(newmark["force_tolerance"], np + ".force_tolerance");
+    }
+    if (newmark["displacement_tolerance"]) {
+      o.displacement_tolerance =
+          reader.ReadNumber(newmark["displacement_tolerance"], np + ".displacement_tolerance");
+    }
+    if (newmark["max_iterations"]) {
+      o.max_iterations = reader.ReadInteger(newmark["max_iterations"], np + ".max_iterations");
+    }
+    if (newmark["max_step_cuts"]) {
+      o.max_step_cuts = reader.ReadInteger(newmark["max_step_cuts"], np + ".max_step_cuts");
+    }
+    try {
+      o.Validate();
+    } catch (const InvalidParameter& error) {
+      const YAML::Node at = newmark[error.violation().key];
+      throw InputError(reader.Locate(at.IsDefined() ? at : newmark),
+                       fmt::format("{}.{}", np, error.violation().Describe()));
+    }
+  }
+  return section;
+}
+
+}  // namespace isolab::io

@@ -1,0 +1,132 @@
+// Reading law components: type, name and parameters in one form, each a number in the model's
+// units or a quantity with its own unit.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "model_sections.h"
+
+namespace isolab::io {
+namespace {
+
+using hysteresis::Component;
+using hysteresis::LawParameters;
+using hysteresis::LawType;
+using hysteresis::ParameterForm;
+
+// Stiffnesses k*, displacements u*, the slider force fs and the dashpot coefficient c.
+Dimension ParameterDimension(std::string_view key) {
+  if (key == "fs") return dimension::kForce;
+  if (key == "c") return dimension::kDampingCoefficient;
+  if (key.front() == 'u') return dimension::kLength;
+  return dimension::kStiffness;
+}
+
+// The keys a component of this type may carry in either form, for "unknown key" hints.
+std::vector<std::string_view> AllowedComponentKeys(LawType type) {
+  std::vector<std::string_view> keys = {"name", "type"};
+  for (const ParameterForm form : {ParameterForm::kMathematical, ParameterForm::kMechanical}) {
+    for (const std::string_view key : hysteresis::ParameterKeys(type, form)) {
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+  }
+  return keys;
+}
+
+bool Contains(std::span<const std::string_view> keys, std::string_view key) {
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+// Which form a component's keys are written in; both forms in one component is an error.
+ParameterForm DetectForm(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                         LawType type) {
+  const auto math = hysteresis::ParameterKeys(type, ParameterForm::kMathematical);
+  const auto mech = hysteresis::ParameterKeys(type, ParameterForm::kMechanical);
+  std::string math_key, mech_key;
+  for (const auto& entry : node) {
+    const std::string key = entry.first.Scalar();  // CheckKeys made sure keys are scalars
+    const bool in_math = Contains(math, key), in_mech = Contains(mech, key);
+    if (in_math && !in_mech && math_key.empty()) math_key = key;
+    if (in_mech && !in_math && mech_key.empty()) mech_key = key;
+  }
+  if (!math_key.empty() && !mech_key.empty()) {
+    reader.Fail(
+        node, path,
+        fmt::format("mixes mathematical ({}) and mechanical ({}) parameters; give one form: "
+                    "{} or {}",
+                    math_key, mech_key, fmt::join(math, ", "), fmt::join(mech, ", ")));
+  }
+  return mech_key.empty() ? ParameterForm::kMathematical : ParameterForm::kMechanical;
+}
+
+Component ReadComponent(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                        std::size_t index, const UnitSystem& units) {
+  reader.RequireMap(node, path);
+  const YAML::Node type_node = reader.Require(node, path, "type");
+  const std::string type_name = reader.ReadString(type_node, ChildPath(path, "type"));
+  const auto type = hysteresis::LawTypeFromName(type_name);
+  if (!type) {
+    std::vector<std::string_view> names;
+    for (const LawType t : hysteresis::AllLawTypes()) names.push_back(hysteresis::LawName(t));
+    const std::string_view nearest = NearestWord(type_name, names);
+    reader.Fail(type_node, ChildPath(path, "type"),
+                fmt::format("'{}' is not an element law{} (expected one of: {})", type_name,
+                            nearest.empty() ? "" : fmt::format("; did you mean '{}'?", nearest),
+                            fmt::join(names, ", ")));
+  }
+  reader.CheckKeys(node, path, AllowedComponentKeys(*type));
+
+  const ParameterForm form = DetectForm(reader, node, path, *type);
+  const auto keys = hysteresis::ParameterKeys(*type, form);
+  std::vector<double> values(keys.size(), NAN);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const YAML::Node value = node[std::string(keys[i])];
+    if (value.IsDefined()) {
+      values[i] =
+          reader.ReadQuantity(value, ChildPath(path, keys[i]), ParameterDimension(keys[i]), units);
+    }
+  }
+
+  std::string name = fmt::format("c{}", index + 1);
+  if (node["name"].IsDefined()) name = reader.ReadString(node["name"], ChildPath(path, "name"));
+
+  try {
+    return Component{name, LawParameters::Make(*type, form, values)};
+  } catch (const InvalidParameter& error) {
+    const ParameterViolation& violation = error.violation();
+    const YAML::Node at = node[violation.key];
+    if (at.IsDefined()) {
+      throw InputError(reader.Locate(at), fmt::format("{}.{}", path, violation.Describe()));
+    }
+    reader.Fail(
+        node, path,
+        fmt::format("missing key '{}' ({}; {} in {} form takes {})", violation.key, violation.rule,
+                    type_name, form == ParameterForm::kMathematical ? "mathematical" : "mechanical",
+                    fmt::join(keys, ", ")));
+  }
+}
+
+}  // namespace
+
+hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
+                                          const std::string& path, const UnitSystem& units) {
+  reader.RequireSequence(list, path);
+  if (list.size() == 0) reader.Fail(list, path, "the list is empty; give at least one component");
+  std::vector<Component> components;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    components.push_back(ReadComponent(reader, list[i], IndexPath(path, i), i, units));
+    for (std::size_t j = 0; j + 1 < components.size(); ++j) {
+      if (components[j].name == components.back().name) {
+        reader.Fail(
+            list[i], IndexPath(path, i),
+            fmt::format("name '{}' is already used by component {}", components[j].name, j));
+      }
+    }
+  }
+  return hysteresis::ParallelAssembly(std::move(components));
+}
+
+}  // namespace isolab::io

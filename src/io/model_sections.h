@@ -1,0 +1,20 @@
+// Readers of the model file's sections, one file each; LoadModelFile (model_file.cpp) calls them.
+#pragma once
+
+#include "isolab/io/model_file.h"
+#include "yaml_reader.h"
+
+namespace isolab::io {
+
+// A list of law components (an isolation layer, a hysteretic story).
+hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
+                                          const std::string& path, const UnitSystem& units);
+
+StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
+                               const UnitSystem& units);
+ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
+                                 const UnitSystem& units);
+AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
+                             const UnitSystem& units);
+
+}  // namespace isolab::io
