@@ -4,6 +4,8 @@
 #include <iostream>
 
 #include "cyclic_command.h"
+#include "run_command.h"
+#include "synth_command.h"
 #include "isolab/core/errors.h"
 
 int main(int argc, char** argv) {
@@ -13,6 +15,10 @@ int main(int argc, char** argv) {
 
   isolab::cli::CyclicOptions cyclic;
   isolab::cli::RegisterCyclicCommand(app, cyclic);
+  isolab::cli::RunOptions run;
+  isolab::cli::RegisterRunCommand(app, run);
+  isolab::cli::SynthOptions synth;
+  isolab::cli::RegisterSynthCommand(app, synth);
 
   try {
     app.parse(argc, argv);
@@ -23,6 +29,8 @@ int main(int argc, char** argv) {
 
   try {
     if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
+    if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
+    if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

@@ -1,7 +1,5 @@
 // `isolab cyclic` end to end: the binary's output, exit codes and files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -9,29 +7,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/run_isolab.h"
 #include "paper_tables.h"
 
 namespace {
 
-struct Outcome {
-  int exit_code = -1;
-  std::string output;  // stdout, or stderr with stdout discarded when `stderr_only`
-};
-
-Outcome RunIsolab(const std::string& arguments, bool stderr_only = false) {
-  const std::string command = std::string(ISOLAB_BINARY) + " " + arguments +
-                              (stderr_only ? " 2>&1 >/dev/null" : " 2>/dev/null");
-  Outcome outcome;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return outcome;
-  std::array<char, 4096> buffer;
-  std::size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    outcome.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
-}
+using isolab::testing::Outcome;
+using isolab::testing::RunIsolab;
 
 std::string Model(const std::string& name) {
   return std::string(ISOLAB_SOURCE_DIR) + "/models/paper/" + name;
