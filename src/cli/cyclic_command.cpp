@@ -82,8 +82,8 @@ void PrintRun(const Run& run, std::ostream& out) {
   fmt::print(out, "\nu_a = {:g} {}, T = {:g} {}, {} cycles, {} steps per cycle\n", p.amplitude,
              u.length(), p.period, u.time(), p.cycles, p.steps_per_cycle);
   fmt::print(out, "{:>5} {:>16} {:>14}   slider displacement at +u_a [{}]\n", "cycle",
-             fmt::format("W_d [{}*{}]", u.force(), u.length()), fmt::format("peak|F| [{}]", u.force()),
-             u.length());
+             fmt::format("W_d [{}*{}]", u.force(), u.length()),
+             fmt::format("peak|F| [{}]", u.force()), u.length());
   fmt::print(out, "{:>38}", "");
   for (const auto& component : run.model->isolation.components()) {
     fmt::print(out, " {:>11}", component.name);

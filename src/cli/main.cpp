@@ -4,9 +4,9 @@
 #include <iostream>
 
 #include "cyclic_command.h"
+#include "isolab/core/errors.h"
 #include "run_command.h"
 #include "synth_command.h"
-#include "isolab/core/errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"isolab: time-history solver for base-isolated structures"};

@@ -1,10 +1,10 @@
 #include "run_command.h"
 
-#include <filesystem>
-
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "isolab/integrators/newmark.h"
@@ -76,7 +76,8 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSetup& setup,
 
 nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSetup& setup,
                            const io::ResponsePeaks& peaks, const integrators::RunSummary& summary,
-                           const integrators::ResponseHistory& response, const std::string& output) {
+                           const integrators::ResponseHistory& response,
+                           const std::string& output) {
   nlohmann::json json;
   json["model"] = model.path;
   json["record"] = setup.record_path;
@@ -97,8 +98,10 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSetup& 
                    {"story_drift_ratio", peaks.story_drift_ratio}};
   if (response.rows_written > 0) {
     const integrators::Energies& e = response.energies[response.rows_written - 1];
-    json["energy"] = {{"input", e.input},     {"kinetic", e.kinetic},
-                      {"damping", e.damping}, {"elastic", e.elastic},
+    json["energy"] = {{"input", e.input},
+                      {"kinetic", e.kinetic},
+                      {"damping", e.damping},
+                      {"elastic", e.elastic},
                       {"hysteretic", e.hysteretic}};
   }
   json["energy_balance_error"] = summary.energy_balance_error;
@@ -117,7 +120,9 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSetup& 
 void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   CLI::App* command = app.add_subcommand(
       "run", "Time-history analysis of a model's structure under its excitation (Newmark-Newton)");
-  command->add_option("model", options.model, "Model file (YAML)")->required()->check(CLI::ExistingFile);
+  command->add_option("model", options.model, "Model file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
   command->add_option("--record", options.record, "Ground-motion record replacing the model's");
   command->add_option("--scale", options.scale, "Scale factor of the ground motion");
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
@@ -140,8 +145,8 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   integrators::ResponseHistory response;
   const integrators::RunSummary summary = integrators::RunNewmark(
       setup.structure, setup.excitation, setup.grid, model.analysis.newmark, &response);
-  io::WriteResultsFile(output, {&model, &setup, &model.analysis.newmark, &response, &summary,
-                                ISOLAB_VERSION});
+  io::WriteResultsFile(
+      output, {&model, &setup, &model.analysis.newmark, &response, &summary, ISOLAB_VERSION});
   const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
   if (options.json) {
     out << SummaryJson(model, setup, peaks, summary, response, output).dump(2) << "\n";

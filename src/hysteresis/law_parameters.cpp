@@ -24,6 +24,7 @@ constexpr std::string_view kElasticMath[] = {"k1", "k2", "uyh"};
 constexpr std::string_view kElasticMech[] = {"kh1", "kh2", "uc"};
 constexpr std::string_view kElastoplasticMath[] = {"k0", "uy"};
 constexpr std::string_view kElastoplasticMech[] = {"ke", "fs"};
+constexpr std::string_view kBoucWenKeys[] = {"alpha", "beta", "gamma", "delta", "nu"};
 
 constexpr LawType kAllTypes[] = {
     LawType::kLinearSpring,
@@ -34,6 +35,7 @@ constexpr LawType kAllTypes[] = {
     LawType::kThm2,
     LawType::kTrilinearElastic,
     LawType::kElastoplastic,
+    LawType::kBoucWen,
 };
 
 // Checks rules in the order written and throws at the first one broken, naming the key as the
@@ -146,6 +148,11 @@ void ValidateMathematical(LawType type, const ParameterArray& v) {
       r.Greater("k0", 0.0);
       r.Greater("uy", 0.0);
       return;
+    case LawType::kBoucWen:
+      r.Greater("alpha", 0.0);
+      r.AtLeast("beta", 0.0);
+      r.AtLeast("nu", 1.0);
+      return;
   }
 }
 
@@ -154,7 +161,8 @@ void ValidateMechanical(LawType type, const ParameterArray& v) {
   switch (type) {
     case LawType::kLinearSpring:
     case LawType::kDashpot:
-      ValidateMathematical(type, v);  // one parameter, the same name in both forms
+    case LawType::kBoucWen:
+      ValidateMathematical(type, v);  // the same names in both forms
       return;
     case LawType::kTrilinearElastic:
       r.AtLeast("kh1", 0.0);
@@ -211,6 +219,7 @@ ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m)
     case LawType::kLinearSpring:
     case LawType::kDashpot:
     case LawType::kTrilinearElastic:
+    case LawType::kBoucWen:
       return m;
   }
   return m;
@@ -235,6 +244,7 @@ ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q)
     case LawType::kLinearSpring:
     case LawType::kDashpot:
     case LawType::kTrilinearElastic:
+    case LawType::kBoucWen:
       return q;
   }
   return q;
@@ -262,6 +272,8 @@ std::string_view LawName(LawType type) {
       return "trilinear_elastic";
     case LawType::kElastoplastic:
       return "elastoplastic";
+    case LawType::kBoucWen:
+      return "bouc_wen";
   }
   return "unknown";
 }
@@ -292,6 +304,8 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
       return math ? Keys(kElasticMath) : Keys(kElasticMech);
     case LawType::kElastoplastic:
       return math ? Keys(kElastoplasticMath) : Keys(kElastoplasticMech);
+    case LawType::kBoucWen:
+      return kBoucWenKeys;
   }
   return {};
 }
@@ -347,6 +361,8 @@ LawKernel LawParameters::Kernel() const {
       return ElasticSpring{{q[0], q[1], BreakpointOrInfinity(q[2])}};
     case LawType::kElastoplastic:
       return SeriesSlider{q[0], q[1], {0.0, 0.0, INFINITY}};
+    case LawType::kBoucWen:
+      return BoucWen{q[0], q[1], q[2], q[3], q[4]};
   }
   return Dashpot{0.0};
 }

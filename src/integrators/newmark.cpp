@@ -210,7 +210,8 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   NewmarkRun run(structure, excitation, options, &summary);
-  response->Resize(grid.steps + 1, structure.dofs(),
+  const int every = std::max(grid.output_every, 1);
+  response->Resize(grid.steps / every + 1, structure.dofs(),
                    static_cast<int>(structure.connections().size()),
                    static_cast<int>(structure.law_count()));
   run.Record(0.0, 0, response);
@@ -221,7 +222,7 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
       summary.termination = RunSummary::Termination::kFailed;
       break;
     }
-    run.Record(step * grid.dt, step, response);
+    if (step % every == 0) run.Record(step * grid.dt, step / every, response);
     summary.steps = step;
     max_input = std::max(max_input, std::abs(run.energies().input));
     max_balance = std::max(max_balance, std::abs(run.energies().Balance()));

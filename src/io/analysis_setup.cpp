@@ -1,9 +1,9 @@
 #include "isolab/io/analysis_setup.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "isolab/core/errors.h"
 #include "isolab/io/record.h"
@@ -12,7 +12,8 @@
 namespace isolab::io {
 namespace {
 
-structure::Structure BuildStructure(const ModelFile& model, bool fixed_base, StructureLayout* layout) {
+structure::Structure BuildStructure(const ModelFile& model, bool fixed_base,
+                                    StructureLayout* layout) {
   const StructureSection& section = *model.structure;
   if (section.kind == StructureSection::Kind::kSdof) {
     double c = section.damping_coefficient;
@@ -73,7 +74,8 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
       throw InputError({motion.file}, error.what());
     }
     setup.excitation.ground_acceleration.dt = model.units.Convert(record.dt, "s", dimension::kTime);
-    for (const double a : record.values) setup.excitation.ground_acceleration.values.push_back(a * to_model);
+    for (const double a : record.values)
+      setup.excitation.ground_acceleration.values.push_back(a * to_model);
     record_dt = setup.excitation.ground_acceleration.dt;
     setup.record_path = motion.file;
     setup.scale = motion.scale;
@@ -82,7 +84,8 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
     const int dof = force.dof + dof_shift;
     if (dof < 0 || dof >= dofs) {
       throw InputError({model.path}, fmt::format("excitation force on dof {} does not exist in "
-                                                 "this variant ({} dofs)", force.dof, dofs));
+                                                 "this variant ({} dofs)",
+                                                 force.dof, dofs));
     }
     setup.excitation.forces.push_back({dof, {force.dt, force.values}});
     if (record_dt == 0.0) record_dt = force.dt;

@@ -1,11 +1,10 @@
 #include "isolab/io/results_file.h"
 
+#include <fmt/format.h>
 #include <hdf5.h>
 
 #include <filesystem>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "isolab/core/errors.h"
 
@@ -40,16 +39,18 @@ void WriteStringAttribute(hid_t object, const std::string& name, const std::stri
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
   Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attribute(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose, "attribute " + name);
-  Check(H5Awrite(attribute.get(), type.get(), value.empty() ? "" : value.c_str()), "attribute " + name);
+  Handle attribute(
+      H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+      "attribute " + name);
+  Check(H5Awrite(attribute.get(), type.get(), value.empty() ? "" : value.c_str()),
+        "attribute " + name);
 }
 
 void WriteNumberAttribute(hid_t object, const std::string& name, double value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attribute(H5Acreate2(object, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
-                              H5P_DEFAULT),
-                   H5Aclose, "attribute " + name);
+  Handle attribute(
+      H5Acreate2(object, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose, "attribute " + name);
   Check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &value), "attribute " + name);
 }
 
@@ -82,9 +83,12 @@ RowMatrix Columns(const RowMatrix& source, const std::vector<int>& columns, int 
 
 std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
   switch (newton) {
-    case integrators::NewmarkOptions::Newton::kFull: return "full";
-    case integrators::NewmarkOptions::Newton::kModifiedInitial: return "modified_initial";
-    case integrators::NewmarkOptions::Newton::kModifiedStep: return "modified_step";
+    case integrators::NewmarkOptions::Newton::kFull:
+      return "full";
+    case integrators::NewmarkOptions::Newton::kModifiedInitial:
+      return "modified_initial";
+    case integrators::NewmarkOptions::Newton::kModifiedStep:
+      return "modified_step";
   }
   return "?";
 }
@@ -161,15 +165,16 @@ void WriteContents(hid_t file, const RunDescription& run) {
   WriteStringAttribute(file, "model_yaml", run.model->text);
   WriteStringAttribute(file, "record", setup.record_path);
   WriteNumberAttribute(file, "record_scale", setup.scale);
-  WriteStringAttribute(file, "units", fmt::format("force {}, length {}, time {}", units.force(),
-                                                  units.length(), units.time()));
-  WriteStringAttribute(file, "integrator",
-                       fmt::format("newmark beta={} gamma={} newton={} force_tolerance={:g} "
-                                   "displacement_tolerance={:g} max_iterations={} "
-                                   "max_step_cuts={} dt={:g}",
-                                   o.beta, o.gamma, NewtonName(o.newton), o.force_tolerance,
-                                   o.displacement_tolerance, o.max_iterations, o.max_step_cuts,
-                                   setup.grid.dt));
+  WriteStringAttribute(
+      file, "units",
+      fmt::format("force {}, length {}, time {}", units.force(), units.length(), units.time()));
+  WriteStringAttribute(
+      file, "integrator",
+      fmt::format("newmark beta={} gamma={} newton={} force_tolerance={:g} "
+                  "displacement_tolerance={:g} max_iterations={} "
+                  "max_step_cuts={} dt={:g}",
+                  o.beta, o.gamma, NewtonName(o.newton), o.force_tolerance,
+                  o.displacement_tolerance, o.max_iterations, o.max_step_cuts, setup.grid.dt));
   WriteStringAttribute(file, "termination", summary.ok() ? "completed" : "failed");
   WriteStringAttribute(file, "message", summary.message);
   WriteNumberAttribute(file, "energy_balance_error", summary.energy_balance_error);

@@ -1,12 +1,12 @@
 #include "isolab/io/synthetic_motion.h"
 
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
-
-#include <fmt/format.h>
-#include <fmt/ostream.h>
 
 #include "isolab/io/atomic_file.h"
 
@@ -73,13 +73,14 @@ Record FilteredNoiseRecord(const FilteredNoiseSpec& spec) {
     const double kanai_tajimi = -(2 * site.z * site.w * site.v + site.w * site.w * site.x);
     high_pass.Step(kanai_tajimi, spec.dt);
     const double filtered = high_pass.w * high_pass.w * high_pass.x;  // removes the low end
-    const double envelope = t < spec.rise_end     ? (t / spec.rise_end) * (t / spec.rise_end)
+    const double envelope = t < spec.rise_end      ? (t / spec.rise_end) * (t / spec.rise_end)
                             : t <= spec.strong_end ? 1.0
                                                    : std::exp(-spec.decay * (t - spec.strong_end));
     record.values[k] = envelope * (kanai_tajimi - filtered) + 0.0;  // + 0.0: no "-0" samples
   }
-  const double peak = std::abs(*std::max_element(record.values.begin(), record.values.end(),
-                                                 [](double a, double b) { return std::abs(a) < std::abs(b); }));
+  const double peak =
+      std::abs(*std::max_element(record.values.begin(), record.values.end(),
+                                 [](double a, double b) { return std::abs(a) < std::abs(b); }));
   for (double& value : record.values) value *= spec.pga / peak;
   record.description = fmt::format(
       "isolab filtered white noise, seed {}: Kanai-Tajimi fg = {:g} Hz zg = {:g}, Clough-Penzien "
@@ -103,10 +104,9 @@ Record PulseRecord(const PulseSpec& spec) {
     if (std::abs(s) > half_width) continue;
     const double a = kTwoPi * fp / spec.oscillations, b = kTwoPi * fp;
     // d/dt of A/2 [1 + cos(a s)] cos(b s + nu)
-    const double acceleration =
-        -0.5 * spec.pgv *
-        (a * std::sin(a * s) * std::cos(b * s + spec.phase) +
-         (1 + std::cos(a * s)) * b * std::sin(b * s + spec.phase));
+    const double acceleration = -0.5 * spec.pgv *
+                                (a * std::sin(a * s) * std::cos(b * s + spec.phase) +
+                                 (1 + std::cos(a * s)) * b * std::sin(b * s + spec.phase));
     record.values[k] = acceleration / kGravity;
   }
   record.description = fmt::format(

@@ -1,5 +1,6 @@
 // `isolab cyclic` end to end: the binary's output, exit codes and files.
 #include <gtest/gtest.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>

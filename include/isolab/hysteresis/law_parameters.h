@@ -11,6 +11,8 @@
 // (THM1 with uy = 0 and k0 >> k1, k2; then kh1 = k1, kh2 = k2, uc = uyh) and the elastoplastic
 // element (THM1 with k1 = k2 = 0; uyh is then meaningless and may be omitted).
 //
+// Bouc-Wen (bouc_wen.h) takes alpha, beta, gamma, delta, nu in both forms.
+//
 // Units are whatever the caller uses consistently (the paper: kN, mm).
 #pragma once
 
@@ -33,6 +35,7 @@ enum class LawType {
   kThm2,
   kTrilinearElastic,
   kElastoplastic,
+  kBoucWen,
 };
 
 inline constexpr int kMaxLawParameters = 5;

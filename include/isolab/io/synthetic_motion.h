@@ -20,26 +20,26 @@ namespace isolab::io {
 
 struct FilteredNoiseSpec {
   std::uint64_t seed = 1;
-  double duration = 30.0;        // s
-  double dt = 0.01;              // s
-  double pga = 0.3;              // g
-  double site_frequency = 2.5;   // Hz (Kanai-Tajimi wg / 2 pi)
+  double duration = 30.0;       // s
+  double dt = 0.01;             // s
+  double pga = 0.3;             // g
+  double site_frequency = 2.5;  // Hz (Kanai-Tajimi wg / 2 pi)
   double site_damping = 0.6;
   double high_pass_frequency = 0.25;  // Hz (Clough-Penzien wf / 2 pi)
   double high_pass_damping = 0.6;
-  double rise_end = 2.0;         // t1, s
-  double strong_end = 12.0;      // t2, s
-  double decay = 0.25;           // c, 1/s
+  double rise_end = 2.0;     // t1, s
+  double strong_end = 12.0;  // t2, s
+  double decay = 0.25;       // c, 1/s
 };
 
 struct PulseSpec {
-  double period = 2.0;       // Tp = 1 / fp, s
-  double pgv = 0.8;          // A, m/s
-  double oscillations = 2.0; // gamma > 1
-  double phase = 0.0;        // nu, rad
-  double peak_time = 4.0;    // t0, s
-  double duration = 12.0;    // s
-  double dt = 0.01;          // s
+  double period = 2.0;        // Tp = 1 / fp, s
+  double pgv = 0.8;           // A, m/s
+  double oscillations = 2.0;  // gamma > 1
+  double phase = 0.0;         // nu, rad
+  double peak_time = 4.0;     // t0, s
+  double duration = 12.0;     // s
+  double dt = 0.01;           // s
 };
 
 // Records in g at the spec's dt; description says how they were made.
