@@ -1,0 +1,94 @@
+// Cost per Newmark-Newton step (full Newton, KLU), all output recorded:
+//  * an SDOF on one THM1 isolator, 10,000 steps (target <= 0.2 us per step);
+//  * the five-story building on the nine-component Table 9 isolator (target <= 1 us per step);
+//  * an isolated shear building of 5 to 1000 stories (Rayleigh damping keeps the tangent sparse),
+//    for the growth of the cost with size.
+// Counter "per_step" is seconds per step. The excitation is isolab's seeded filtered noise.
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "isolab/hysteresis/law_parameters.h"
+#include "isolab/integrators/newmark.h"
+#include "isolab/io/model_file.h"
+#include "isolab/io/synthetic_motion.h"
+#include "isolab/structure/shear_building.h"
+
+namespace isolab::integrators {
+namespace {
+
+using hysteresis::LawParameters;
+using hysteresis::LawType;
+using hysteresis::ParallelAssembly;
+using hysteresis::ParameterForm;
+
+// 100 s of filtered noise at 0.01 s, PGA 0.35 g, in mm/s^2.
+Excitation Noise() {
+  io::FilteredNoiseSpec spec;
+  spec.duration = 100.0;
+  spec.pga = 0.35;
+  const io::Record record = io::FilteredNoiseRecord(spec);
+  Excitation excitation;
+  excitation.ground_acceleration.dt = record.dt;
+  for (const double a : record.values) excitation.ground_acceleration.values.push_back(a * 9806.65);
+  return excitation;
+}
+
+ParallelAssembly Single(LawType type, std::vector<double> math) {
+  return ParallelAssembly({{"law", LawParameters::Make(type, ParameterForm::kMathematical, math)}});
+}
+
+void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps) {
+  const Excitation excitation = Noise();
+  ResponseHistory response;
+  long iterations = 0;
+  for (auto _ : state) {
+    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, {}, &response);
+    if (!summary.ok()) state.SkipWithError(summary.message.c_str());
+    iterations += summary.newton_iterations;
+  }
+  state.counters["per_step"] = benchmark::Counter(static_cast<double>(state.iterations()) * steps,
+                                                  benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["newton_per_step"] = static_cast<double>(iterations) / (state.iterations() * steps);
+}
+
+void BM_SdofThm1(benchmark::State& state) {
+  // 31.7 t on the Table 7 THM1 (hardening) law, in kN, mm, s.
+  const auto sdof = structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120}));
+  RunSteps(state, sdof, 10000);
+}
+
+structure::Structure IsolatedBuilding(int stories, const ParallelAssembly& isolation) {
+  structure::ShearBuilding building;
+  for (int i = 0; i < stories; ++i) {
+    building.stories.push_back({"story", 0.025, 3200.0, Single(LawType::kLinearSpring, {76.0})});
+  }
+  building.isolated = true;
+  building.base_mass = 0.025;
+  building.isolation = isolation;
+  building.damping.kind = structure::SuperstructureDamping::Kind::kRayleigh;
+  building.damping.rayleigh_ratios[0] = building.damping.rayleigh_ratios[1] = 0.02;
+  return structure::BuildShearBuilding(building);
+}
+
+ParallelAssembly Table9() {
+  return io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml").isolation;
+}
+
+void BM_FiveStoryTable9(benchmark::State& state) { RunSteps(state, IsolatedBuilding(5, Table9()), 6000); }
+
+void BM_StoriesTable9(benchmark::State& state) {
+  const int stories = static_cast<int>(state.range(0));
+  // A cost benchmark, not a design: the same bearing under every height.
+  RunSteps(state, IsolatedBuilding(stories, Table9()), 2000);
+}
+
+BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StoriesTable9)->Arg(5)->Arg(10)->Arg(50)->Arg(100)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace isolab::integrators
+
+BENCHMARK_MAIN();
