@@ -91,6 +91,16 @@ TEST_F(ChopraChapter5, CaseBElastoplasticNewtonAndModifiedNewton) {
     EXPECT_NEAR(mnr.displacement(k, 0), rows_[k][11], 2e-4) << "t = " << rows_[k][0];
   }
   EXPECT_GT(modified_summary.newton_iterations, full_summary.newton_iterations);
+
+  NewmarkOptions initial;
+  initial.newton = NewmarkOptions::Newton::kModifiedInitial;
+  initial.max_iterations = 200;  // linear convergence with the elastic tangent
+  RunSummary initial_summary;
+  const auto mnr0 = Simulate(sdof, HalfSinePulse(), {0.1, 10}, initial, &initial_summary);
+  for (int k = 0; k <= 10; ++k) {
+    EXPECT_NEAR(mnr0.displacement(k, 0), rows_[k][11], 2e-4) << "t = " << rows_[k][0];
+  }
+  EXPECT_EQ(initial_summary.factorisations, 1);  // one factorisation for the whole run
 }
 
 TEST(Newmark, ElastoplasticPeakConvergesToChoprasFineStepValue) {
