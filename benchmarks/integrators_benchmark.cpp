@@ -4,10 +4,10 @@
 //  * an isolated shear building of 5 to 1000 stories (Rayleigh damping keeps the tangent sparse),
 //    for the growth of the cost with size.
 // Counter "per_step" is seconds per step. The excitation is isolab's seeded filtered noise.
+#include <benchmark/benchmark.h>
+
 #include <string>
 #include <vector>
-
-#include <benchmark/benchmark.h>
 
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/integrators/newmark.h"
@@ -18,10 +18,8 @@
 namespace isolab::integrators {
 namespace {
 
-using hysteresis::LawParameters;
 using hysteresis::LawType;
 using hysteresis::ParallelAssembly;
-using hysteresis::ParameterForm;
 
 // 100 s of filtered noise at 0.01 s, PGA 0.35 g, in mm/s^2.
 Excitation Noise() {
@@ -36,7 +34,7 @@ Excitation Noise() {
 }
 
 ParallelAssembly Single(LawType type, std::vector<double> math) {
-  return ParallelAssembly({{"law", LawParameters::Make(type, ParameterForm::kMathematical, math)}});
+  return hysteresis::SingleLaw(type, std::move(math));
 }
 
 void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps) {
@@ -48,14 +46,17 @@ void RunSteps(benchmark::State& state, const structure::Structure& structure, in
     if (!summary.ok()) state.SkipWithError(summary.message.c_str());
     iterations += summary.newton_iterations;
   }
-  state.counters["per_step"] = benchmark::Counter(static_cast<double>(state.iterations()) * steps,
-                                                  benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["newton_per_step"] = static_cast<double>(iterations) / (state.iterations() * steps);
+  state.counters["per_step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * steps,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["newton_per_step"] =
+      static_cast<double>(iterations) / (state.iterations() * steps);
 }
 
 void BM_SdofThm1(benchmark::State& state) {
   // 31.7 t on the Table 7 THM1 (hardening) law, in kN, mm, s.
-  const auto sdof = structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120}));
+  const auto sdof =
+      structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120}));
   RunSteps(state, sdof, 10000);
 }
 
@@ -73,10 +74,13 @@ structure::Structure IsolatedBuilding(int stories, const ParallelAssembly& isola
 }
 
 ParallelAssembly Table9() {
-  return io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml").isolation;
+  return io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml")
+      .isolation;
 }
 
-void BM_FiveStoryTable9(benchmark::State& state) { RunSteps(state, IsolatedBuilding(5, Table9()), 6000); }
+void BM_FiveStoryTable9(benchmark::State& state) {
+  RunSteps(state, IsolatedBuilding(5, Table9()), 6000);
+}
 
 void BM_StoriesTable9(benchmark::State& state) {
   const int stories = static_cast<int>(state.range(0));
@@ -86,7 +90,14 @@ void BM_StoriesTable9(benchmark::State& state) {
 
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_StoriesTable9)->Arg(5)->Arg(10)->Arg(50)->Arg(100)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StoriesTable9)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(500)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace isolab::integrators

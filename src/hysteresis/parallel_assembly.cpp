@@ -21,4 +21,9 @@ double ParallelAssembly::DissipatedEnergy(std::span<const LawState> states) cons
   return energy;
 }
 
+ParallelAssembly SingleLaw(LawType type, std::vector<double> mathematical, std::string name) {
+  return ParallelAssembly(
+      {{std::move(name), LawParameters::Make(type, ParameterForm::kMathematical, mathematical)}});
+}
+
 }  // namespace isolab::hysteresis

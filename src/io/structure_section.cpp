@@ -25,13 +25,6 @@ double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::st
   return ratio;
 }
 
-hysteresis::ParallelAssembly LinearStory(double stiffness) {
-  return hysteresis::ParallelAssembly(
-      {{"k", hysteresis::LawParameters::Make(hysteresis::LawType::kLinearSpring,
-                                             hysteresis::ParameterForm::kMathematical,
-                                             std::vector<double>{stiffness})}});
-}
-
 structure::Story ReadStory(const YamlReader& reader, const YAML::Node& node,
                            const std::string& path, const UnitSystem& units, std::size_t index) {
   reader.RequireMap(node, path);
@@ -51,8 +44,9 @@ structure::Story ReadStory(const YamlReader& reader, const YAML::Node& node,
   if (node["components"]) {
     story.assembly = ReadAssembly(reader, node["components"], ChildPath(path, "components"), units);
   } else {
-    story.assembly =
-        LinearStory(ReadPositive(reader, node, path, "stiffness", dimension::kStiffness, units));
+    story.assembly = hysteresis::SingleLaw(
+        hysteresis::LawType::kLinearSpring,
+        {ReadPositive(reader, node, path, "stiffness", dimension::kStiffness, units)}, "k");
   }
   return story;
 }

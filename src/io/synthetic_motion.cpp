@@ -54,6 +54,16 @@ struct Oscillator {
   }
 };
 
+// A record of `samples` zeros in g at `dt`, to be filled.
+Record EmptyRecord(int samples, double dt) {
+  Record record;
+  record.dt = dt;
+  record.units = "g";
+  record.format = "PEER AT2";
+  record.values.assign(samples, 0.0);
+  return record;
+}
+
 }  // namespace
 
 Record FilteredNoiseRecord(const FilteredNoiseSpec& spec) {
@@ -61,11 +71,7 @@ Record FilteredNoiseRecord(const FilteredNoiseSpec& spec) {
   GaussianNoise noise(spec.seed);
   Oscillator site{kTwoPi * spec.site_frequency, spec.site_damping};
   Oscillator high_pass{kTwoPi * spec.high_pass_frequency, spec.high_pass_damping};
-  Record record;
-  record.dt = spec.dt;
-  record.units = "g";
-  record.format = "PEER AT2";
-  record.values.resize(samples);
+  Record record = EmptyRecord(samples, spec.dt);
   for (int k = 0; k < samples; ++k) {
     const double t = k * spec.dt;
     // Kanai-Tajimi: the site oscillator's absolute acceleration; Clough-Penzien: its high-pass.
@@ -94,11 +100,7 @@ Record PulseRecord(const PulseSpec& spec) {
   const int samples = static_cast<int>(std::round(spec.duration / spec.dt)) + 1;
   const double fp = 1.0 / spec.period, half_width = spec.oscillations / (2.0 * fp);
   constexpr double kGravity = 9.80665;
-  Record record;
-  record.dt = spec.dt;
-  record.units = "g";
-  record.format = "PEER AT2";
-  record.values.resize(samples);
+  Record record = EmptyRecord(samples, spec.dt);
   for (int k = 0; k < samples; ++k) {
     const double s = k * spec.dt - spec.peak_time;
     if (std::abs(s) > half_width) continue;

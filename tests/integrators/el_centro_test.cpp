@@ -16,18 +16,12 @@
 namespace isolab::integrators {
 namespace {
 
-using hysteresis::LawParameters;
 using hysteresis::LawType;
 using hysteresis::ParallelAssembly;
-using hysteresis::ParameterForm;
 
 constexpr double kGravity = 386.4;  // in/s^2, as in Chopra
 
-ParallelAssembly Linear(double k) {
-  return ParallelAssembly(
-      {{"k", LawParameters::Make(LawType::kLinearSpring, ParameterForm::kMathematical,
-                                 std::vector<double>{k})}});
-}
+ParallelAssembly Linear(double k) { return hysteresis::SingleLaw(LawType::kLinearSpring, {k}); }
 
 // The Chopra CSV: El Centro NS 1940 in g at 0.02 s, with a(0) = 0 at t = 0.
 std::optional<Excitation> ElCentro() {

@@ -15,14 +15,11 @@
 namespace isolab::integrators {
 namespace {
 
-using hysteresis::LawParameters;
 using hysteresis::LawType;
 using hysteresis::ParallelAssembly;
-using hysteresis::ParameterForm;
 
 ParallelAssembly Single(LawType type, std::vector<double> math) {
-  return ParallelAssembly(
-      {{"spring", LawParameters::Make(type, ParameterForm::kMathematical, math)}});
+  return hysteresis::SingleLaw(type, std::move(math));
 }
 
 // Chopra Ex. 5.1-5.6: m = 0.2533 kip s^2/in, k = 10 kip/in, zeta = 0.05, p = 10 sin(pi t/0.6).

@@ -7,16 +7,10 @@
 namespace isolab::structure {
 namespace {
 
-using hysteresis::LawParameters;
 using hysteresis::LawType;
 using hysteresis::ParallelAssembly;
-using hysteresis::ParameterForm;
 
-ParallelAssembly Linear(double k) {
-  return ParallelAssembly(
-      {{"k", LawParameters::Make(LawType::kLinearSpring, ParameterForm::kMathematical,
-                                 std::vector<double>{k})}});
-}
+ParallelAssembly Linear(double k) { return hysteresis::SingleLaw(LawType::kLinearSpring, {k}); }
 
 std::vector<Story> ChopraFiveStory() {
   std::vector<Story> stories;

@@ -57,4 +57,9 @@ class ParallelAssembly {
   std::vector<LawKernel> kernels_;
 };
 
+// An assembly of one law in mathematical form, e.g. a linear story spring; throws
+// InvalidParameter like LawParameters::Make.
+ParallelAssembly SingleLaw(LawType type, std::vector<double> mathematical,
+                           std::string name = "law");
+
 }  // namespace isolab::hysteresis
