@@ -48,9 +48,13 @@ using Eigen::VectorXd;
 using hysteresis::LawResponse;
 using hysteresis::LawState;
 
-double MaxAbs(const VectorXd& x) { return x.size() ? x.lpNorm<Eigen::Infinity>() : 0.0; }
+// Largest magnitude of a vector or of a vector expression, evaluated without a temporary.
+template <typename Derived>
+double MaxAbs(const Eigen::MatrixBase<Derived>& x) {
+  return x.size() ? x.cwiseAbs().maxCoeff() : 0.0;
+}
 
-// One run's working state; every vector is sized once, so stepping allocates nothing.
+// One run's working state; every vector is sized once, so a step allocates nothing.
 class NewmarkRun {
  public:
   NewmarkRun(const structure::Structure& structure, const Excitation& excitation,
@@ -68,7 +72,7 @@ class NewmarkRun {
         connection_forces_(structure.connections().size()) {
     const int n = structure.dofs();
     for (VectorXd* x : {&u_, &v_, &a_, &u_trial_, &v_trial_, &a_trial_, &load_, &load_trial_,
-                        &force_, &residual_, &correction_, &viscous_, &viscous_trial_}) {
+                        &force_, &residual_, &correction_, &viscous_, &viscous_trial_, &zero_}) {
       x->setZero(n);
     }
     excitation_.EffectiveLoad(0.0, structure_.mass(), &load_);
@@ -133,8 +137,8 @@ class NewmarkRun {
       if (iteration == options_.max_iterations) break;
       if (refactor) {
         if (options_.newton == NewmarkOptions::Newton::kModifiedInitial) {
-          structure_.Evaluate(rest_, VectorXd::Zero(u_.size()), VectorXd::Zero(u_.size()), trial_,
-                              responses_, &force_, connection_forces_, factors, &tangent_);
+          structure_.Evaluate(rest_, zero_, zero_, trial_, responses_, &force_, connection_forces_,
+                              factors, &tangent_);
         }
         ++summary_.factorisations;
         factored_step_ = h;
@@ -194,7 +198,7 @@ class NewmarkRun {
   std::vector<LawResponse> responses_;
   std::vector<double> connection_forces_;
   VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
-      correction_, viscous_, viscous_trial_;
+      correction_, viscous_, viscous_trial_, zero_;
   Energies energies_;
   double viscous_energy_ = 0.0;
   double factored_step_ = 0.0;  // step size of the current modified-Newton factorisation

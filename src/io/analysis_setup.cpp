@@ -66,7 +66,9 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
       motion.file = (std::filesystem::path(model.path).parent_path() / motion.file).string();
     }
     if (overrides.scale) motion.scale = *overrides.scale;
-    const Record record = ReadRecord(motion.file, {motion.units, motion.dt});
+    // Records keep their step in seconds; the model gives a single column's dt in its own unit.
+    const double dt_seconds = motion.dt * model.units.SiFactor(dimension::kTime);
+    const Record record = ReadRecord(motion.file, {motion.units, dt_seconds});
     double to_model = 0.0;
     try {
       to_model = model.units.Convert(motion.scale, record.units, dimension::kAcceleration);
@@ -96,7 +98,7 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
 
   const double dt = overrides.dt.value_or(model.analysis.dt > 0.0 ? model.analysis.dt : record_dt);
   if (!(dt > 0.0)) throw InputError({"command line"}, fmt::format("--dt {:g} must be > 0", dt));
-  if (excitation.ground_motion && dt > record_dt * (1.0 + 1e-9)) {
+  if (!setup.record_path.empty() && dt > record_dt * (1.0 + 1e-9)) {
     throw InputError({overrides.dt ? "command line" : model.path},
                      fmt::format("dt = {:g} is coarser than the record's {:g}; the analysis step "
                                  "may only refine it",

@@ -22,6 +22,12 @@ class Handle {
   ~Handle() {
     if (id_ >= 0) close_(id_);
   }
+  // Closes now and reports failure (a file's close flushes it: the status matters).
+  void Close(const std::string& what) {
+    const herr_t status = close_(id_);
+    id_ = -1;
+    if (status < 0) throw std::runtime_error("HDF5: " + what);
+  }
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
   hid_t get() const { return id_; }
@@ -44,6 +50,19 @@ void WriteStringAttribute(hid_t object, const std::string& name, const std::stri
       "attribute " + name);
   Check(H5Awrite(attribute.get(), type.get(), value.empty() ? "" : value.c_str()),
         "attribute " + name);
+}
+
+// Text of any length (attributes stop near 64 KiB): a scalar fixed-length string dataset.
+void WriteStringDataset(hid_t location, const std::string& name, const std::string& value) {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
+  Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
+  Handle dataset(H5Dcreate2(location, name.c_str(), type.get(), space.get(), H5P_DEFAULT,
+                            H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose, "dataset " + name);
+  Check(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                 value.empty() ? "" : value.c_str()),
+        "writing " + name);
 }
 
 void WriteNumberAttribute(hid_t object, const std::string& name, double value) {
@@ -162,7 +181,7 @@ void WriteContents(hid_t file, const RunDescription& run) {
   const auto& summary = *run.summary;
   WriteStringAttribute(file, "isolab_version", run.version);
   WriteStringAttribute(file, "model_file", run.model->path);
-  WriteStringAttribute(file, "model_yaml", run.model->text);
+  WriteStringDataset(file, "model_yaml", run.model->text);
   WriteStringAttribute(file, "record", setup.record_path);
   WriteNumberAttribute(file, "record_scale", setup.scale);
   WriteStringAttribute(
@@ -184,19 +203,25 @@ void WriteContents(hid_t file, const RunDescription& run) {
 
 void WriteResultsFile(const std::string& path, const RunDescription& run) {
   const std::string temporary = path + ".tmp";
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors come back as return codes, reported below
+  // HDF5 prints its own error stack by default; ours are reported through the return codes, so
+  // printing is off while writing and the caller's handler is restored afterwards.
+  H5E_auto2_t handler = nullptr;
+  void* handler_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &handler, &handler_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   try {
-    {
-      Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
-                  "cannot create the file");
-      WriteContents(file.get(), run);
-    }
+    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                "cannot create the file");
+    WriteContents(file.get(), run);
+    file.Close("closing (flushing) the file");
     std::filesystem::rename(temporary, path);
   } catch (const std::exception& error) {
+    H5Eset_auto2(H5E_DEFAULT, handler, handler_data);
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
     throw InputError({path}, fmt::format("cannot write results ({})", error.what()));
   }
+  H5Eset_auto2(H5E_DEFAULT, handler, handler_data);
 }
 
 }  // namespace isolab::io

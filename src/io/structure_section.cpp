@@ -66,9 +66,8 @@ std::vector<structure::Story> ReadStories(const YamlReader& reader, const YAML::
   reader.CheckKeys(node, path, {"count", "mass", "stiffness", "components", "height"});
   const YAML::Node count_node = reader.Require(node, path, "count");
   const int count = reader.ReadInteger(count_node, ChildPath(path, "count"));
-  if (count < 1 || count > 100000) {
-    reader.Fail(count_node, ChildPath(path, "count"),
-                fmt::format("{} (must be 1 to 100000)", count));
+  if (count < 1 || count > 2000) {
+    reader.Fail(count_node, ChildPath(path, "count"), fmt::format("{} (must be 1 to 2000)", count));
   }
   YAML::Node one = YAML::Clone(node);
   one.remove("count");

@@ -63,6 +63,7 @@ void ParseUnitExpression(std::string_view text, double* si, Dimension* dim) {
     std::size_t end = i;
     while (end < text.size() && text[end] != '*' && text[end] != '/' && text[end] != '^') ++end;
     const std::string_view symbol = text.substr(i, end - i);
+    if (symbol.empty()) throw std::invalid_argument(fmt::format("a unit is missing in '{}'", text));
     const UnitSymbol* unit = Find(symbol);
     if (unit == nullptr) throw std::invalid_argument(fmt::format("unknown unit '{}'", symbol));
     int power = 1;

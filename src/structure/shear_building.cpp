@@ -8,14 +8,46 @@
 namespace isolab::structure {
 namespace {
 
-// Classical damping of the fixed-base superstructure, in floor coordinates relative to the base.
-Eigen::MatrixXd SuperstructureDampingMatrix(const std::vector<Story>& stories,
-                                            const SuperstructureDamping& damping) {
+// Modal damping couples every floor with every other: its matrix is dense, and so would the
+// tangent be. Beyond this size Rayleigh damping (sparse) is the sensible choice.
+constexpr int kMaxModalDampingStories = 500;
+
+Eigen::VectorXd FloorMasses(const std::vector<Story>& stories) {
+  Eigen::VectorXd mass(stories.size());
+  for (std::size_t i = 0; i < stories.size(); ++i) mass[i] = stories[i].floor_mass;
+  return mass;
+}
+
+// Tridiagonal stiffness of the fixed-base superstructure with initial story stiffnesses.
+SparseMatrix StoryStiffness(const std::vector<Story>& stories) {
   const int n = static_cast<int>(stories.size());
-  if (damping.kind == SuperstructureDamping::Kind::kNone) return Eigen::MatrixXd::Zero(n, n);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    const double k = InitialStiffness(stories[i].assembly);
+    entries.emplace_back(i, i, k);
+    if (i > 0) {
+      entries.emplace_back(i - 1, i - 1, k);
+      entries.emplace_back(i - 1, i, -k);
+      entries.emplace_back(i, i - 1, -k);
+    }
+  }
+  SparseMatrix k(n, n);
+  k.setFromTriplets(entries.begin(), entries.end());
+  return k;
+}
+
+// Classical damping of the fixed-base superstructure, in floor coordinates relative to the base.
+SparseMatrix SuperstructureDampingMatrix(const std::vector<Story>& stories,
+                                         const SuperstructureDamping& damping) {
+  const int n = static_cast<int>(stories.size());
+  if (damping.kind == SuperstructureDamping::Kind::kNone) return SparseMatrix(n, n);
+  if (damping.kind == SuperstructureDamping::Kind::kModal && n > kMaxModalDampingStories) {
+    throw std::invalid_argument(
+        "damping: modal damping couples every floor (a dense matrix); with more than " +
+        std::to_string(kMaxModalDampingStories) + " stories use rayleigh");
+  }
   const Modes modes = FixedBaseModes(stories);
-  Eigen::VectorXd mass(n);
-  for (int i = 0; i < n; ++i) mass[i] = stories[i].floor_mass;
+  const Eigen::VectorXd mass = FloorMasses(stories);
 
   if (damping.kind == SuperstructureDamping::Kind::kRayleigh) {
     const int m1 = damping.rayleigh_modes[0], m2 = damping.rayleigh_modes[1];
@@ -28,17 +60,16 @@ Eigen::MatrixXd SuperstructureDampingMatrix(const std::vector<Story>& stories,
     // zeta(w) = a0 / (2 w) + a1 w / 2 through both points.
     const double a1 = 2.0 * (z2 * w2 - z1 * w1) / (w2 * w2 - w1 * w1);
     const double a0 = 2.0 * z1 * w1 - a1 * w1 * w1;
-    Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
-    for (int i = 0; i < n; ++i) {
-      const double ki = InitialStiffness(stories[i].assembly);
-      k(i, i) += ki;
-      if (i > 0) {
-        k(i - 1, i - 1) += ki;
-        k(i - 1, i) -= ki;
-        k(i, i - 1) -= ki;
-      }
+    if (a0 < 0.0 || a1 < 0.0) {
+      throw std::invalid_argument(
+          "damping.ratios: these ratios give a negative Rayleigh "
+          "coefficient (a0 = " +
+          std::to_string(a0) + ", a1 = " + std::to_string(a1) + ")");
     }
-    return a0 * Eigen::MatrixXd(mass.asDiagonal()) + a1 * k;
+    SparseMatrix m(n, n);
+    m.reserve(Eigen::VectorXi::Constant(n, 1));
+    for (int i = 0; i < n; ++i) m.insert(i, i) = mass[i];
+    return a0 * m + a1 * StoryStiffness(stories);
   }
 
   // Modal: C = M Phi diag(2 zeta_n w_n) Phi^T M with mass-normalised Phi.
@@ -52,7 +83,7 @@ Eigen::MatrixXd SuperstructureDampingMatrix(const std::vector<Story>& stories,
     diagonal[i] = 2.0 * ratios[ratios.size() == 1 ? 0 : i] * modes.circular_frequencies[i];
   }
   const Eigen::MatrixXd m_phi = mass.asDiagonal() * modes.shapes;
-  return m_phi * diagonal.asDiagonal() * m_phi.transpose();
+  return (m_phi * diagonal.asDiagonal() * m_phi.transpose()).sparseView(0.0, 0.0);
 }
 
 }  // namespace
@@ -64,26 +95,17 @@ double InitialStiffness(const hysteresis::ParallelAssembly& assembly) {
 }
 
 Modes FixedBaseModes(const std::vector<Story>& stories) {
-  const int n = static_cast<int>(stories.size());
-  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n), m = Eigen::MatrixXd::Zero(n, n);
-  for (int i = 0; i < n; ++i) {
-    const double ki = InitialStiffness(stories[i].assembly);
-    m(i, i) = stories[i].floor_mass;
-    k(i, i) += ki;
-    if (i > 0) {
-      k(i - 1, i - 1) += ki;
-      k(i - 1, i) -= ki;
-      k(i, i - 1) -= ki;
-    }
-  }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(k, m);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(StoryStiffness(stories));
+  const Eigen::VectorXd mass = FloorMasses(stories);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
+      k, Eigen::MatrixXd(mass.asDiagonal()));
   if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis failed");
   Modes modes;
   modes.circular_frequencies = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   modes.periods = (2.0 * std::numbers::pi) * modes.circular_frequencies.cwiseInverse();
-  modes.shapes = solver.eigenvectors();                                   // M-orthonormal
-  const Eigen::VectorXd gamma = modes.shapes.transpose() * m.diagonal();  // L_n with M_n = 1
-  modes.effective_mass_ratios = gamma.cwiseAbs2() / m.diagonal().sum();
+  modes.shapes = solver.eigenvectors();                           // M-orthonormal
+  const Eigen::VectorXd gamma = modes.shapes.transpose() * mass;  // L_n with M_n = 1
+  modes.effective_mass_ratios = gamma.cwiseAbs2() / mass.sum();
   return modes;
 }
 
@@ -104,20 +126,20 @@ Structure BuildShearBuilding(const ShearBuilding& building) {
     connections.push_back({story.name, below, first_floor + s, story.assembly});
   }
 
-  // C_full = T^T C_s T with x_s = u_s - u_base 1 (isolated) or x_s = u_s (fixed base).
-  const Eigen::MatrixXd cs = SuperstructureDampingMatrix(building.stories, building.damping);
-  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(n, n);
-  c.bottomRightCorner(stories, stories) = cs;
-  if (building.isolated) {
-    const Eigen::VectorXd column_sums = cs.colwise().sum().transpose();
-    c.block(1, 0, stories, 1) = -cs.rowwise().sum();
-    c.block(0, 1, 1, stories) = -column_sums.transpose();
-    c(0, 0) = column_sums.sum();
+  // C = T^T C_s T, where T maps the DOFs to floor motion relative to the base,
+  // x_s = u_s - u_base 1 (isolated), or x_s = u_s (fixed base).
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int s = 0; s < stories; ++s) {
+    entries.emplace_back(s, first_floor + s, 1.0);
+    if (building.isolated) entries.emplace_back(s, 0, -1.0);
   }
-  const SparseMatrix sparse_c = c.sparseView(0.0, 0.0);
-  return Structure(std::move(mass), std::move(connections), sparse_c);
+  SparseMatrix t(stories, n);
+  t.setFromTriplets(entries.begin(), entries.end());
+  const SparseMatrix cs = SuperstructureDampingMatrix(building.stories, building.damping);
+  SparseMatrix c = SparseMatrix(t.transpose()) * cs * t;
+  c.prune(0.0);
+  return Structure(std::move(mass), std::move(connections), std::move(c));
 }
-
 Structure BuildSdof(double mass, double damping_coefficient,
                     hysteresis::ParallelAssembly restoring) {
   SparseMatrix c(1, 1);

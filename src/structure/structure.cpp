@@ -21,6 +21,11 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
       connections_(std::move(connections)),
       viscous_damping_(std::move(viscous_damping)) {
   const int n = dofs();
+  for (int i = 0; i < n; ++i) {
+    if (!(mass_[i] > 0.0)) {
+      throw std::invalid_argument("the mass of dof " + std::to_string(i) + " must be > 0");
+    }
+  }
   viscous_damping_.makeCompressed();
   law_offsets_.push_back(0);
   for (const Connection& connection : connections_) {

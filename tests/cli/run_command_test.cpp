@@ -65,7 +65,9 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
                            "energy/hysteretic"}) {
     EXPECT_EQ(Dimensions(file, term), (std::vector<hsize_t>{hsize_t(rows)})) << term;
   }
-  for (const char* attribute : {"model_yaml", "record", "integrator", "isolab_version", "units"}) {
+  EXPECT_EQ(Dimensions(file, "model_yaml"), std::vector<hsize_t>{});  // a scalar string
+  EXPECT_GT(H5Lexists(file, "model_yaml", H5P_DEFAULT), 0);
+  for (const char* attribute : {"record", "integrator", "isolab_version", "units"}) {
     EXPECT_GT(H5Aexists(file, attribute), 0) << attribute;
   }
   H5Fclose(file);

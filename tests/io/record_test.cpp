@@ -76,6 +76,18 @@ TEST(ReadRecord, ColumnsWithAndWithoutHeader) {
   EXPECT_EQ(single.values.size(), 3u);
 }
 
+TEST(ReadRecord, HeaderUnitsAreWholeWordsAndFortranExponentsCount) {
+  const Record gal = ReadRecord(DataFile("record_gal_fortran_dt.at2"));
+  EXPECT_EQ(gal.units, "cm/s^2");   // "GAL" is not g
+  EXPECT_DOUBLE_EQ(gal.dt, 0.005);  // ".5D-02"
+  const Record mm = ReadRecord(DataFile("record_mm_rounded_times.csv"));
+  EXPECT_EQ(mm.units, "mm/s^2");        // not m/s^2
+  EXPECT_NEAR(mm.dt, 0.01 / 3, 1e-12);  // times printed to 5 decimals
+  EXPECT_NE(ErrorOf(DataFile("bad_record_header.at2")).find("bad_record_header.at2:4: '"),
+            std::string::npos)
+      << ErrorOf(DataFile("bad_record_header.at2"));
+}
+
 TEST(ReadRecord, BadRecordsNameFileLineAndProblem) {
   EXPECT_NE(ErrorOf(DataFile("bad_record_nan.at2")).find("bad_record_nan.at2:6: 'nan' is not a"),
             std::string::npos)

@@ -6,7 +6,9 @@
 // Integrated implicitly with the trapezoidal rule, z1 = z0 + du (g(z0) + g(z1)) / 2, solved by
 // scalar Newton to round-off, so it is second order in the increment; the tangent is the exact
 // derivative of that discrete update. Stored energy z^2 / (2 alpha); dissipated energy is the
-// trapezoidal work (z0 + z1) du / 2 less the change in stored energy.
+// trapezoidal work (z0 + z1) du / 2 less the change in stored energy. If the local Newton
+// iteration fails (an increment so large that 1 - du g'(z)/2 vanishes), the force is NaN: the
+// global Newton iteration then fails and the integrator cuts the step.
 #pragma once
 
 #include <cmath>
@@ -44,13 +46,15 @@ struct BoucWen {
     const double g0 = Slope(z0, s);
     double z = z0 + du * g0;  // explicit predictor
     double derivative = 1.0;
-    for (int iteration = 0; iteration < 50; ++iteration) {
+    bool converged = false;
+    for (int iteration = 0; iteration < 50 && !converged; ++iteration) {
       const double residual = z - z0 - 0.5 * du * (g0 + Slope(z, s));
       derivative = 1.0 - 0.5 * du * SlopeDerivative(z, s);
       const double correction = residual / derivative;
       z -= correction;
-      if (std::abs(correction) <= 1e-14 * (std::abs(z) + alpha * std::abs(du)) + 1e-300) break;
+      converged = std::abs(correction) <= 1e-14 * (std::abs(z) + alpha * std::abs(du)) + 1e-300;
     }
+    if (!converged || !std::isfinite(z)) z = NAN;
     derivative = 1.0 - 0.5 * du * SlopeDerivative(z, s);
     trial->u = in.u;
     trial->v = in.v;

@@ -16,7 +16,8 @@ namespace isolab::integrators {
 struct NewmarkOptions {
   enum class Newton {
     kFull,             // tangent refactorised every iteration
-    kModifiedInitial,  // tangent of the initial state, factorised once per run
+    kModifiedInitial,  // tangent of the initial state, factorised once per run (again for each
+                       // new step size after a step cut)
     kModifiedStep,     // tangent at the start of each step
   };
 

@@ -38,7 +38,7 @@ struct RunSummary {
   enum class Termination { kCompleted, kFailed };
   Termination termination = Termination::kCompleted;
   std::string message;         // why a failed run stopped
-  int steps = 0;               // output steps completed
+  int steps = 0;               // analysis steps completed
   long newton_iterations = 0;  // over all steps and sub-steps
   int max_iterations_in_a_step = 0;
   int step_cuts = 0;  // halvings performed

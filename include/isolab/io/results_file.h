@@ -6,10 +6,13 @@
 //   /isolator/displacement /isolator/force   (n), /isolator/component_force (n x components)
 //   /story/drift /story/shear                (n x stories)
 //   /energy/{input,kinetic,damping,elastic,hysteretic}  (n)
-// Every dataset has a "units" attribute; the root has the model's YAML text, the record and its
-// scale, the integrator options, the run summary and the isolab version. The file is written
-// under a temporary name and renamed, so no partial file ever has the final name. A run that
-// failed keeps its rows up to the failure, with termination = "failed" and the message.
+//   /model_yaml                              the model file's text (a string dataset)
+// Every numeric dataset has a "units" attribute; the root's attributes give the record and its
+// scale, the integrator options, the run summary and the isolab version. Story shear and base
+// shear are the connections' (spring) forces; the superstructure's viscous forces are not in them.
+// The file is written under a temporary name and renamed, so no partial file ever has the final
+// name. A run that failed keeps its rows up to the failure, with termination = "failed" and the
+// message.
 #pragma once
 
 #include <string>
