@@ -115,7 +115,7 @@ class NewmarkRun {
   bool TryStep(double t0, double h) {
     const double beta = options_.beta, gamma = options_.gamma;
     const double c0 = 1.0 / (beta * h * h), c1 = gamma / (beta * h);
-    const structure::TangentFactors factors{c0, c1, 1.0};
+    const structure::TangentFactors factors{c0, c1};
     excitation_.EffectiveLoad(t0 + h, structure_.mass(), &load_trial_);
     u_trial_ = u_;
     bool displacement_converged = false;
@@ -124,8 +124,11 @@ class NewmarkRun {
                  (h * (1.0 - gamma / (2.0 * beta))) * a_;
       a_trial_ = c0 * (u_trial_ - u_) - (1.0 / (beta * h)) * v_ - (1.0 / (2.0 * beta) - 1.0) * a_;
       const bool refactor = NeedsFactorisation(iteration, h);
+      // Modified-initial Newton assembles its tangent at rest below, not at the trial state.
+      const bool tangent_here =
+          refactor && options_.newton != NewmarkOptions::Newton::kModifiedInitial;
       structure_.Evaluate(committed_, u_trial_, v_trial_, trial_, responses_, &force_,
-                          connection_forces_, factors, refactor ? &tangent_ : nullptr);
+                          connection_forces_, factors, tangent_here ? &tangent_ : nullptr);
       residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
       last_scale_ = std::max(
           {MaxAbs(load_trial_), MaxAbs(force_), MaxAbs(structure_.mass().cwiseProduct(a_trial_))});

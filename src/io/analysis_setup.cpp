@@ -42,6 +42,12 @@ structure::Structure BuildStructure(const ModelFile& model, bool fixed_base,
 
 }  // namespace
 
+double StoryDrift(const AnalysisSetup& setup, const integrators::RowMatrix& displacement, int row,
+                  std::size_t story) {
+  const structure::Connection& c = setup.structure.connections()[setup.layout.stories[story]];
+  return displacement(row, c.dof_j) - (c.dof_i >= 0 ? displacement(row, c.dof_i) : 0.0);
+}
+
 AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overrides) {
   if (!model.structure) {
     throw InputError({model.path}, "no structure section: nothing to analyse in time");

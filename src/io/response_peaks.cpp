@@ -29,11 +29,9 @@ ResponsePeaks ComputePeaks(const AnalysisSetup& setup, const integrators::Respon
     Consider(&peaks.base_shear, base_shear, t);
     Consider(&peaks.roof_absolute_acceleration, r.absolute_acceleration(row, roof), t, roof);
     for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-      const auto& story = connections[setup.layout.stories[s]];
       if (s == 0)
         Consider(&peaks.first_story_shear, r.connection_force(row, setup.layout.stories[s]), t);
-      const double drift = r.displacement(row, story.dof_j) -
-                           (story.dof_i >= 0 ? r.displacement(row, story.dof_i) : 0.0);
+      const double drift = StoryDrift(setup, r.displacement, row, s);
       Consider(&peaks.story_drift, drift, t, static_cast<int>(s));
     }
   }

@@ -154,9 +154,8 @@ void WriteContents(hid_t file, const RunDescription& run) {
                  "group story");
     RowMatrix drift(rows, setup.layout.stories.size());
     for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-      const auto& c = connections[setup.layout.stories[s]];
-      drift.col(s) = r.displacement.col(c.dof_j).head(rows);
-      if (c.dof_i >= 0) drift.col(s) -= r.displacement.col(c.dof_i).head(rows);
+      for (int row = 0; row < rows; ++row)
+        drift(row, s) = StoryDrift(setup, r.displacement, row, s);
     }
     WriteMatrix(group.get(), "drift", drift, rows, length);
     WriteMatrix(group.get(), "shear", Columns(r.connection_force, setup.layout.stories, rows), rows,

@@ -102,7 +102,7 @@ void Structure::Evaluate(std::span<const hysteresis::LawState> committed, const 
     (*force)[connection.dof_j] += total.force;
     if (!grounded) (*force)[connection.dof_i] -= total.force;
     if (values) {
-      const double k_eff = factors.stiffness * total.stiffness + factors.damping * total.damping;
+      const double k_eff = total.stiffness + factors.damping * total.damping;
       const ConnectionSlots& slots = connection_slots_[k];
       values[slots.jj] += k_eff;
       if (!grounded) {

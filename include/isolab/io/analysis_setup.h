@@ -8,6 +8,7 @@
 
 #include "isolab/integrators/excitation.h"
 #include "isolab/integrators/newmark.h"
+#include "isolab/integrators/response.h"
 #include "isolab/io/model_file.h"
 #include "isolab/structure/structure.h"
 
@@ -35,6 +36,10 @@ struct AnalysisSetup {
   std::string record_path;  // empty without a ground motion
   double scale = 1.0;
 };
+
+// Drift of story `story` (bottom = 0) at output row `row`: its top floor less its bottom floor.
+double StoryDrift(const AnalysisSetup& setup, const integrators::RowMatrix& displacement, int row,
+                  std::size_t story);
 
 // Throws InputError (naming the file, or "command line") for records that cannot be read, a dt
 // coarser than the record's, or a structure without what the analysis needs.

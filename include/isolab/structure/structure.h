@@ -29,11 +29,10 @@ struct Connection {
   hysteresis::ParallelAssembly assembly;
 };
 
-// Coefficients of the effective tangent  mass M + damping (C_t + C) + stiffness K_t.
+// Coefficients of the effective tangent  K_t + damping (C_t + C) + mass M.
 struct TangentFactors {
   double mass = 0.0;
   double damping = 0.0;
-  double stiffness = 1.0;
 };
 
 class Structure {
