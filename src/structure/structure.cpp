@@ -3,17 +3,12 @@
 #include <stdexcept>
 
 namespace isolab::structure {
-namespace {
-
-// Position of (row, col) in a compressed column-major matrix's value array.
 int SlotOf(const SparseMatrix& matrix, int row, int col) {
   for (int k = matrix.outerIndexPtr()[col]; k < matrix.outerIndexPtr()[col + 1]; ++k) {
     if (matrix.innerIndexPtr()[k] == row) return k;
   }
-  throw std::logic_error("tangent pattern lacks an entry it was built with");
+  throw std::logic_error("sparse pattern lacks an entry it was built with");
 }
-
-}  // namespace
 
 Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
                      SparseMatrix viscous_damping)

@@ -22,6 +22,18 @@ struct TrilinearSpring {
   // but always the slope of a segment the update can actually be on.
   double Stiffness(double x) const { return std::abs(x) <= uc ? kh1 : kh2; }
 
+  // The linear branch of one segment (-1: x < -uc, 0: inside, +1: x > uc) continued beyond the
+  // segment, for integrators that stay on a smooth branch until an event switches it.
+  double SegmentForce(double x, int segment) const {
+    return segment == 0 ? kh1 * x : kh2 * x + (kh1 - kh2) * segment * uc;
+  }
+  double SegmentStiffness(int segment) const { return segment == 0 ? kh1 : kh2; }
+  // Positive while x is on `segment`; it falls through zero where x leaves it.
+  double SegmentMargin(double x, int segment) const {
+    if (segment != 0) return segment * x - uc;
+    return std::isfinite(uc) ? uc - std::abs(x) : 1.0;
+  }
+
   // Strain energy, the integral of g from 0 to x.
   double Energy(double x) const {
     const double ax = std::abs(x);

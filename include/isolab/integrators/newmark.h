@@ -40,14 +40,6 @@ struct NewmarkOptions {
   void Validate() const;
 };
 
-// Steps of dt from rest, k = 0..steps; the response is recorded every `output_every` steps (an
-// analysis finer than the output, e.g. 15 kHz integration of a 750 Hz record).
-struct TimeGrid {
-  double dt = 0.0;
-  int steps = 0;
-  int output_every = 1;
-};
-
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response);

@@ -21,6 +21,14 @@ struct Energies {
   double Balance() const { return input - kinetic - damping - elastic - hysteretic; }
 };
 
+// Steps of dt from rest, k = 0..steps; the response is recorded every `output_every` steps (an
+// analysis finer than the output, e.g. 15 kHz integration of a 750 Hz record).
+struct TimeGrid {
+  double dt = 0.0;
+  int steps = 0;
+  int output_every = 1;
+};
+
 // One row per output time; columns per degree of freedom, connection or law component.
 struct ResponseHistory {
   std::vector<double> time;
@@ -44,6 +52,12 @@ struct RunSummary {
   int step_cuts = 0;  // halvings performed
   long factorisations = 0;
   double energy_balance_error = 0.0;  // max |balance| / max input energy over the run
+  // IDA only (zero for Newmark): internal steps, phase-change events located, Jacobian
+  // evaluations and local error-test failures.
+  long ida_steps = 0;
+  long events = 0;
+  long jacobian_evaluations = 0;
+  long error_test_failures = 0;
   double wall_seconds = 0.0;
 
   bool ok() const { return termination == Termination::kCompleted; }

@@ -21,6 +21,10 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 inline constexpr int kGround = -1;
 
+// Position of (row, col) in a compressed column-major matrix's value array, so an assembly can
+// write its entries through precomputed slots; throws std::logic_error if the entry is absent.
+int SlotOf(const SparseMatrix& matrix, int row, int col);
+
 // A connection's deformation is u[dof_j] - u[dof_i] (u[kGround] = 0); its force acts +on dof_j.
 struct Connection {
   std::string name;

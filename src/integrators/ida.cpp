@@ -1,0 +1,276 @@
+#include "isolab/integrators/ida.h"
+
+#include <fmt/format.h>
+#include <idas/idas.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "isolab/core/errors.h"
+#include "rate_form_system.h"
+
+namespace isolab::integrators {
+
+void IdaOptions::Validate() const {
+  if (!(relative_tolerance > 0.0 && relative_tolerance < 0.1)) {
+    throw InvalidParameter({"rtol", relative_tolerance, "must be in (0, 0.1)"});
+  }
+  if (!(absolute_tolerance > 0.0 && std::isfinite(absolute_tolerance))) {
+    throw InvalidParameter({"atol", absolute_tolerance, "must be > 0"});
+  }
+  if (!(max_step >= 0.0 && std::isfinite(max_step))) {
+    throw InvalidParameter({"max_step", max_step, "must be >= 0 (0 for no limit)"});
+  }
+  if (max_steps < 1) throw InvalidParameter({"max_steps", double(max_steps), "must be >= 1"});
+}
+
+namespace {
+
+// Owners of the SUNDIALS objects, freed in reverse order of creation.
+struct ContextDeleter {
+  void operator()(SUNContext context) const { SUNContext_Free(&context); }
+};
+struct VectorDeleter {
+  void operator()(N_Vector vector) const { N_VDestroy(vector); }
+};
+struct MatrixDeleter {
+  void operator()(SUNMatrix matrix) const { SUNMatDestroy(matrix); }
+};
+struct SolverDeleter {
+  void operator()(SUNLinearSolver solver) const { SUNLinSolFree(solver); }
+};
+struct IdaDeleter {
+  void operator()(void* memory) const { IDAFree(&memory); }
+};
+using Context = std::unique_ptr<std::remove_pointer_t<SUNContext>, ContextDeleter>;
+using Vector = std::unique_ptr<std::remove_pointer_t<N_Vector>, VectorDeleter>;
+using Matrix = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter>;
+using LinearSolver = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter>;
+using IdaMemory = std::unique_ptr<void, IdaDeleter>;
+
+// The time of the next sample of any excitation history after t: its linear interpolation has a
+// kink there (a jump to zero after the last sample), which the integrator should step onto.
+double NextExcitationSample(const Excitation& excitation, double t, double horizon) {
+  double next = horizon;
+  const auto consider = [&](const SampledHistory& history) {
+    if (history.values.empty() || !(history.dt > 0.0)) return;
+    double k = std::floor(t / history.dt) + 1.0;
+    if (k * history.dt <= t * (1.0 + 1e-12) + 1e-12 * history.dt) k += 1.0;
+    if (k <= static_cast<double>(history.values.size() - 1)) next = std::min(next, k * history.dt);
+  };
+  consider(excitation.ground_acceleration);
+  for (const AppliedForce& force : excitation.forces) consider(force.force);
+  return next;
+}
+
+class IdaRun {
+ public:
+  IdaRun(const structure::Structure& structure, const Excitation& excitation,
+         const IdaOptions& options, RunSummary* summary)
+      : system_(structure, excitation), excitation_(excitation), summary_(*summary) {
+    SUNContext raw_context = nullptr;
+    if (SUNContext_Create(nullptr, &raw_context) != 0) {
+      throw std::runtime_error("SUNContext_Create failed");
+    }
+    context_.reset(raw_context);
+    const sunindextype n = system_.size();
+    y_.reset(Created(N_VNew_Serial(n, context_.get()), "N_VNew_Serial"));
+    yp_.reset(Created(N_VNew_Serial(n, context_.get()), "N_VNew_Serial"));
+    energy_.reset(Created(N_VNew_Serial(kEnergyRates, context_.get()), "N_VNew_Serial"));
+    N_VConst(0.0, y_.get());
+    N_VConst(0.0, energy_.get());
+    system_.ConsistentDerivative(0.0, N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(yp_.get()));
+
+    const auto& pattern = system_.jacobian_pattern();
+    jacobian_.reset(Created(SUNSparseMatrix(n, n, pattern.nonZeros(), CSC_MAT, context_.get()),
+                            "SUNSparseMatrix"));
+    solver_.reset(
+        Created(SUNLinSol_KLU(y_.get(), jacobian_.get(), context_.get()), "SUNLinSol_KLU"));
+    ida_.reset(Created(IDACreate(context_.get()), "IDACreate"));
+    void* ida = ida_.get();
+    Check(IDASetErrHandlerFn(ida, &IdaRun::KeepMessage, this), "IDASetErrHandlerFn");
+    Check(IDAInit(ida, &IdaRun::Residual, 0.0, y_.get(), yp_.get()), "IDAInit");
+    Check(IDASetUserData(ida, this), "IDASetUserData");
+    Check(IDASStolerances(ida, options.relative_tolerance, options.absolute_tolerance),
+          "IDASStolerances");
+    Check(IDASetLinearSolver(ida, solver_.get(), jacobian_.get()), "IDASetLinearSolver");
+    Check(IDASetJacFn(ida, &IdaRun::Jacobian), "IDASetJacFn");
+    Check(IDASetMaxNumSteps(ida, options.max_steps), "IDASetMaxNumSteps");
+    if (options.max_step > 0.0) Check(IDASetMaxStep(ida, options.max_step), "IDASetMaxStep");
+    Check(IDAQuadInit(ida, &IdaRun::EnergyRates, energy_.get()), "IDAQuadInit");
+    roots_found_.resize(system_.root_count());
+    if (system_.root_count() > 0) {
+      Check(IDARootInit(ida, system_.root_count(), &IdaRun::Roots), "IDARootInit");
+      // Every root function is positive while its phase holds: only a fall through zero is an
+      // event, so one that starts an event at zero and then grows is never mistaken for one.
+      std::vector<int> falling(system_.root_count(), -1);
+      Check(IDASetRootDirection(ida, falling.data()), "IDASetRootDirection");
+      Check(IDASetNoInactiveRootWarn(ida), "IDASetNoInactiveRootWarn");
+    }
+  }
+
+  // Integrates to `t_out`, stopping at every excitation sample and restarting at every event.
+  // False (with the summary's message set) when IDA fails.
+  bool AdvanceTo(double t_out) {
+    void* ida = ida_.get();
+    while (t_ < t_out) {
+      const double stop = NextExcitationSample(excitation_, t_, t_out);
+      if (stop - t_ <= 1e-10 * std::max(stop, 1.0)) {  // an event landed on the stop time
+        t_ = stop;
+        continue;
+      }
+      Check(IDASetStopTime(ida, stop), "IDASetStopTime");
+      const int flag = IDASolve(ida, stop, &t_, y_.get(), yp_.get(), IDA_NORMAL);
+      if (flag < 0) {
+        summary_.message = fmt::format("IDASolve failed at t = {:.6g}: {}: {}", t_,
+                                       IDAGetReturnFlagName(flag), last_message_);
+        return false;
+      }
+      if (flag == IDA_ROOT_RETURN && !Restart()) return false;
+    }
+    return true;
+  }
+
+  void Record(int row, ResponseHistory* out) {
+    double t = t_;
+    if (row > 0) Check(IDAGetQuad(ida_.get(), &t, energy_.get()), "IDAGetQuad");
+    system_.Record(t_, N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(energy_.get()), row, out);
+  }
+
+  void CollectStatistics() {
+    long steps = 0, jacobians = 0, failures = 0;
+    Check(IDAGetNumSteps(ida_.get(), &steps), "IDAGetNumSteps");
+    Check(IDAGetNumJacEvals(ida_.get(), &jacobians), "IDAGetNumJacEvals");
+    Check(IDAGetNumErrTestFails(ida_.get(), &failures), "IDAGetNumErrTestFails");
+    summary_.ida_steps += steps;
+    summary_.jacobian_evaluations += jacobians;
+    summary_.error_test_failures += failures;
+  }
+
+ private:
+  // At an event: switch the phases whose roots fell, put the state on their surfaces, and
+  // restart IDA there (its counters restart too, so they are banked first).
+  bool Restart() {
+    void* ida = ida_.get();
+    Check(IDAGetRootInfo(ida, roots_found_.data()), "IDAGetRootInfo");
+    double t = t_;
+    Check(IDAGetQuad(ida, &t, energy_.get()), "IDAGetQuad");
+    double* y = N_VGetArrayPointer(y_.get());
+    summary_.events += system_.SwitchPhases(roots_found_.data(), y);
+    // Roots that keep falling at one instant without the time moving are a chattering phase
+    // (a law that cannot decide between stick and slip): stop rather than loop.
+    same_time_events_ = t_ == last_event_time_ ? same_time_events_ + 1 : 0;
+    last_event_time_ = t_;
+    if (same_time_events_ > 100) {
+      summary_.message =
+          fmt::format("phase changes chatter at t = {:.9g}: over 100 events at one instant", t_);
+      return false;
+    }
+    system_.ConsistentDerivative(t_, y, N_VGetArrayPointer(yp_.get()));
+    CollectStatistics();
+    Check(IDAReInit(ida, t_, y_.get(), yp_.get()), "IDAReInit");
+    Check(IDAQuadReInit(ida, energy_.get()), "IDAQuadReInit");
+    return true;
+  }
+
+  template <typename T>
+  static T Created(T object, const char* call) {
+    if (!object) throw std::runtime_error(fmt::format("{} failed (out of memory?)", call));
+    return object;
+  }
+  void Check(int flag, const char* call) const {
+    if (flag < 0) {
+      throw std::runtime_error(
+          fmt::format("{} failed: {}: {}", call, IDAGetReturnFlagName(flag), last_message_));
+    }
+  }
+
+  static IdaRun& Of(void* user_data) { return *static_cast<IdaRun*>(user_data); }
+  static int Residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
+    double* residual = N_VGetArrayPointer(r);
+    Of(user_data).system_.Residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), residual);
+    // A non-finite residual (a trial far off) is recoverable: IDA retries with a smaller step.
+    for (sunindextype i = 0; i < N_VGetLength(r); ++i) {
+      if (!std::isfinite(residual[i])) return 1;
+    }
+    return 0;
+  }
+  static int Jacobian(double t, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix jacobian,
+                      void* user_data, N_Vector, N_Vector, N_Vector) {
+    IdaRun& run = Of(user_data);
+    const auto& pattern = run.system_.jacobian_pattern();
+    // IDA zeroes the whole sparse matrix, pattern included, before each call.
+    sunindextype* columns = SUNSparseMatrix_IndexPointers(jacobian);
+    sunindextype* rows = SUNSparseMatrix_IndexValues(jacobian);
+    std::copy(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.cols() + 1, columns);
+    std::copy(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(), rows);
+    run.system_.Jacobian(t, cj, N_VGetArrayPointer(y), SUNSparseMatrix_Data(jacobian));
+    return 0;
+  }
+  static int Roots(double, N_Vector y, N_Vector, double* roots, void* user_data) {
+    Of(user_data).system_.Roots(N_VGetArrayPointer(y), roots);
+    return 0;
+  }
+  static int EnergyRates(double t, N_Vector y, N_Vector, N_Vector rates, void* user_data) {
+    Of(user_data).system_.EnergyRates(t, N_VGetArrayPointer(y), N_VGetArrayPointer(rates));
+    return 0;
+  }
+  static void KeepMessage(int, const char*, const char* function, char* message,
+                          void* user_data) {
+    Of(user_data).last_message_ = fmt::format("{}: {}", function, message);
+  }
+
+  RateFormSystem system_;
+  const Excitation& excitation_;
+  RunSummary& summary_;
+  Context context_;
+  Vector y_, yp_, energy_;
+  Matrix jacobian_;
+  LinearSolver solver_;
+  IdaMemory ida_;
+  std::vector<int> roots_found_;
+  std::string last_message_;
+  double t_ = 0.0;
+  double last_event_time_ = -1.0;
+  int same_time_events_ = 0;
+};
+
+}  // namespace
+
+RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
+  options.Validate();
+  const auto start = std::chrono::steady_clock::now();
+  RunSummary summary;
+  IdaRun run(structure, excitation, options, &summary);
+  const int every = std::max(grid.output_every, 1);
+  const int rows = grid.steps / every + 1;
+  response->Resize(rows, structure.dofs(), static_cast<int>(structure.connections().size()),
+                   static_cast<int>(structure.law_count()));
+  run.Record(0, response);
+  double max_input = 0.0, max_balance = 0.0;
+  for (int row = 1; row < rows; ++row) {
+    if (!run.AdvanceTo(row * every * grid.dt)) {
+      summary.termination = RunSummary::Termination::kFailed;
+      break;
+    }
+    run.Record(row, response);
+    summary.steps = row * every;
+    const Energies& e = response->energies[row];
+    max_input = std::max(max_input, std::abs(e.input));
+    max_balance = std::max(max_balance, std::abs(e.Balance()));
+  }
+  run.CollectStatistics();
+  summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;
+  summary.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace isolab::integrators

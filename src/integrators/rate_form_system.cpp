@@ -1,0 +1,305 @@
+#include "rate_form_system.h"
+
+namespace isolab::integrators {
+
+using hysteresis::RateResponse;
+using structure::kGround;
+using structure::SlotOf;
+
+RateFormSystem::RateFormSystem(const structure::Structure& structure,
+                               const Excitation& excitation)
+    : structure_(structure), excitation_(excitation), dofs_(structure.dofs()) {
+  const auto& connections = structure.connections();
+  root_offsets_.push_back(0);
+  for (const auto& connection : connections) {
+    for (const auto& kernel : connection.assembly.kernels()) {
+      internal_index_.push_back(hysteresis::HasInternalVariable(kernel) ? internal_count_++ : -1);
+      root_offsets_.push_back(root_offsets_.back() + hysteresis::PhaseRootCount(kernel));
+      phases_.push_back(hysteresis::RestPhase(kernel));
+    }
+  }
+  responses_.resize(phases_.size());
+  connection_forces_.resize(connections.size());
+  load_.setZero(dofs_);
+  force_.setZero(dofs_);
+  viscous_.setZero(dofs_);
+  velocity_.setZero(dofs_);
+
+  // Column blocks: u at 0, v at n, z at 2n.
+  const int n = dofs_, v0 = n, z0 = 2 * n;
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto add = [&](int row, int col) { entries.emplace_back(row, col, 0.0); };
+  for (int i = 0; i < n; ++i) {
+    add(i, i);
+    add(i, v0 + i);
+    add(v0 + i, v0 + i);
+  }
+  const auto& c = structure.viscous_damping();
+  for (int col = 0; col < c.outerSize(); ++col) {
+    for (structure::SparseMatrix::InnerIterator it(c, col); it; ++it) {
+      add(v0 + static_cast<int>(it.row()), v0 + col);
+    }
+  }
+  const auto scatter_pairs = [&](int row0, int col0, int i, int j) {
+    add(row0 + j, col0 + j);
+    if (i == kGround) return;
+    add(row0 + i, col0 + i);
+    add(row0 + i, col0 + j);
+    add(row0 + j, col0 + i);
+  };
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    const int i = connections[k].dof_i, j = connections[k].dof_j;
+    scatter_pairs(v0, 0, i, j);
+    scatter_pairs(v0, v0, i, j);
+    for (std::size_t l = 0; l < connections[k].assembly.size(); ++l) {
+      const int z = internal_index_[structure.law_offset(k) + l];
+      if (z < 0) continue;
+      for (const int row : {v0 + j, z0 + z}) add(row, z0 + z);
+      add(z0 + z, j);
+      add(z0 + z, v0 + j);
+      if (i != kGround) {
+        add(v0 + i, z0 + z);
+        add(z0 + z, i);
+        add(z0 + z, v0 + i);
+      }
+    }
+  }
+  pattern_.resize(size(), size());
+  pattern_.setFromTriplets(entries.begin(), entries.end());
+  pattern_.makeCompressed();
+
+  for (int i = 0; i < n; ++i) {
+    uu_slots_.push_back(SlotOf(pattern_, i, i));
+    uv_slots_.push_back(SlotOf(pattern_, i, v0 + i));
+    mass_slots_.push_back(SlotOf(pattern_, v0 + i, v0 + i));
+  }
+  for (int col = 0; col < c.outerSize(); ++col) {
+    for (structure::SparseMatrix::InnerIterator it(c, col); it; ++it) {
+      damping_slots_.push_back(SlotOf(pattern_, v0 + static_cast<int>(it.row()), v0 + col));
+    }
+  }
+  internal_slots_.resize(phases_.size());
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    const int i = connections[k].dof_i, j = connections[k].dof_j;
+    ConnectionSlots s;
+    s.vu_jj = SlotOf(pattern_, v0 + j, j);
+    s.vv_jj = SlotOf(pattern_, v0 + j, v0 + j);
+    if (i != kGround) {
+      s.vu_ii = SlotOf(pattern_, v0 + i, i);
+      s.vu_ij = SlotOf(pattern_, v0 + i, j);
+      s.vu_ji = SlotOf(pattern_, v0 + j, i);
+      s.vv_ii = SlotOf(pattern_, v0 + i, v0 + i);
+      s.vv_ij = SlotOf(pattern_, v0 + i, v0 + j);
+      s.vv_ji = SlotOf(pattern_, v0 + j, v0 + i);
+    }
+    connection_slots_.push_back(s);
+    for (std::size_t l = 0; l < connections[k].assembly.size(); ++l) {
+      const std::size_t law = structure.law_offset(k) + l;
+      const int z = internal_index_[law];
+      if (z < 0) continue;
+      InternalSlots& t = internal_slots_[law];
+      t.vz_j = SlotOf(pattern_, v0 + j, z0 + z);
+      t.zu_j = SlotOf(pattern_, z0 + z, j);
+      t.zv_j = SlotOf(pattern_, z0 + z, v0 + j);
+      t.zz = SlotOf(pattern_, z0 + z, z0 + z);
+      if (i != kGround) {
+        t.vz_i = SlotOf(pattern_, v0 + i, z0 + z);
+        t.zu_i = SlotOf(pattern_, z0 + z, i);
+        t.zv_i = SlotOf(pattern_, z0 + z, v0 + i);
+      }
+    }
+  }
+}
+
+RateFormSystem::LawInput RateFormSystem::InputOf(std::size_t connection, std::size_t law,
+                                                 const double* y) const {
+  const auto& c = structure_.connections()[connection];
+  const double* u = y;
+  const double* v = y + dofs_;
+  const bool grounded = c.dof_i == kGround;
+  const int z = internal_index_[law];
+  return {u[c.dof_j] - (grounded ? 0.0 : u[c.dof_i]), v[c.dof_j] - (grounded ? 0.0 : v[c.dof_i]),
+          z >= 0 ? y[2 * dofs_ + z] : 0.0};
+}
+
+void RateFormSystem::EvaluateLaws(const double* y) {
+  velocity_ = Eigen::Map<const Eigen::VectorXd>(y + dofs_, dofs_);
+  viscous_.noalias() = structure_.viscous_damping() * velocity_;
+  force_ = viscous_;
+  const auto& connections = structure_.connections();
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    const auto& kernels = connections[k].assembly.kernels();
+    double total = 0.0;
+    for (std::size_t l = 0; l < kernels.size(); ++l) {
+      const std::size_t law = structure_.law_offset(k) + l;
+      const LawInput in = InputOf(k, law, y);
+      responses_[law] = hysteresis::EvaluateRate(kernels[l], phases_[law], in.u, in.v, in.z);
+      total += responses_[law].force;
+    }
+    connection_forces_[k] = total;
+    force_[connections[k].dof_j] += total;
+    if (connections[k].dof_i != kGround) force_[connections[k].dof_i] -= total;
+  }
+}
+
+void RateFormSystem::Residual(double t, const double* y, const double* yp, double* residual) {
+  EvaluateLaws(y);
+  excitation_.EffectiveLoad(t, structure_.mass(), &load_);
+  const Eigen::VectorXd& m = structure_.mass();
+  for (int i = 0; i < dofs_; ++i) {
+    residual[i] = yp[i] - y[dofs_ + i];
+    residual[dofs_ + i] = m[i] * yp[dofs_ + i] + force_[i] - load_[i];
+  }
+  for (std::size_t law = 0; law < internal_index_.size(); ++law) {
+    const int z = internal_index_[law];
+    if (z >= 0) residual[2 * dofs_ + z] = yp[2 * dofs_ + z] - responses_[law].rate;
+  }
+}
+
+void RateFormSystem::Jacobian(double, double cj, const double* y, double* values) {
+  EvaluateLaws(y);
+  std::fill(values, values + pattern_.nonZeros(), 0.0);
+  const Eigen::VectorXd& m = structure_.mass();
+  for (int i = 0; i < dofs_; ++i) {
+    values[uu_slots_[i]] += cj;
+    values[uv_slots_[i]] -= 1.0;
+    values[mass_slots_[i]] += cj * m[i];
+  }
+  const double* c = structure_.viscous_damping().valuePtr();
+  for (std::size_t k = 0; k < damping_slots_.size(); ++k) values[damping_slots_[k]] += c[k];
+
+  const auto& connections = structure_.connections();
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    const bool grounded = connections[k].dof_i == kGround;
+    const ConnectionSlots& s = connection_slots_[k];
+    double stiffness = 0.0, damping = 0.0;
+    for (std::size_t l = 0; l < connections[k].assembly.size(); ++l) {
+      const std::size_t law = structure_.law_offset(k) + l;
+      const RateResponse& r = responses_[law];
+      stiffness += r.force_u;
+      damping += r.force_v;
+      if (internal_index_[law] < 0) continue;
+      const InternalSlots& t = internal_slots_[law];
+      values[t.vz_j] += r.force_z;
+      values[t.zu_j] -= r.rate_u;
+      values[t.zv_j] -= r.rate_v;
+      values[t.zz] += cj - r.rate_z;
+      if (!grounded) {
+        values[t.vz_i] -= r.force_z;
+        values[t.zu_i] += r.rate_u;
+        values[t.zv_i] += r.rate_v;
+      }
+    }
+    values[s.vu_jj] += stiffness;
+    values[s.vv_jj] += damping;
+    if (!grounded) {
+      values[s.vu_ii] += stiffness;
+      values[s.vu_ij] -= stiffness;
+      values[s.vu_ji] -= stiffness;
+      values[s.vv_ii] += damping;
+      values[s.vv_ij] -= damping;
+      values[s.vv_ji] -= damping;
+    }
+  }
+}
+
+void RateFormSystem::Roots(const double* y, double* roots) const {
+  const auto& connections = structure_.connections();
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    const auto& kernels = connections[k].assembly.kernels();
+    for (std::size_t l = 0; l < kernels.size(); ++l) {
+      const std::size_t law = structure_.law_offset(k) + l;
+      if (root_offsets_[law] == root_offsets_[law + 1]) continue;
+      const LawInput in = InputOf(k, law, y);
+      hysteresis::PhaseRoots(kernels[l], phases_[law], in.u, in.v, in.z,
+                             roots + root_offsets_[law]);
+    }
+  }
+}
+
+int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
+  int switched = 0;
+  const auto& connections = structure_.connections();
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    const auto& kernels = connections[k].assembly.kernels();
+    for (std::size_t l = 0; l < kernels.size(); ++l) {
+      const std::size_t law = structure_.law_offset(k) + l;
+      for (int root = 0; root < root_offsets_[law + 1] - root_offsets_[law]; ++root) {
+        if (roots_found[root_offsets_[law] + root] == 0) continue;
+        const LawInput in = InputOf(k, law, y);
+        const hysteresis::PhaseSwitch next =
+            hysteresis::SwitchPhase(kernels[l], phases_[law], root, in.u, in.v, in.z);
+        switched += next.phase.slip != phases_[law].slip ||
+                    next.phase.segment != phases_[law].segment;
+        phases_[law] = next.phase;
+        if (internal_index_[law] >= 0) y[2 * dofs_ + internal_index_[law]] = next.z;
+      }
+    }
+  }
+  return switched;
+}
+
+void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp) {
+  EvaluateLaws(y);
+  excitation_.EffectiveLoad(t, structure_.mass(), &load_);
+  const Eigen::VectorXd& m = structure_.mass();
+  for (int i = 0; i < dofs_; ++i) {
+    yp[i] = y[dofs_ + i];
+    yp[dofs_ + i] = (load_[i] - force_[i]) / m[i];
+  }
+  for (std::size_t law = 0; law < internal_index_.size(); ++law) {
+    const int z = internal_index_[law];
+    if (z >= 0) yp[2 * dofs_ + z] = responses_[law].rate;
+  }
+}
+
+void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
+  EvaluateLaws(y);
+  excitation_.EffectiveLoad(t, structure_.mass(), &load_);
+  rates[kInputPower] = load_.dot(velocity_);
+  double damping = velocity_.dot(viscous_);
+  double hysteretic = 0.0;
+  for (const RateResponse& r : responses_) {
+    damping += r.viscous_power;
+    hysteretic += r.hysteretic_power;
+  }
+  rates[kDampingPower] = damping;
+  rates[kHystereticPower] = hysteretic;
+}
+
+void RateFormSystem::Record(double t, const double* y, const double* energy_integrals, int row,
+                            ResponseHistory* out) {
+  const Eigen::VectorXd& m = structure_.mass();
+  EvaluateLaws(y);
+  excitation_.EffectiveLoad(t, m, &load_);
+  const double ground = excitation_.ground_acceleration.At(t);
+  out->time[row] = t;
+  for (int i = 0; i < dofs_; ++i) {
+    const double a = (load_[i] - force_[i]) / m[i];
+    out->displacement(row, i) = y[i];
+    out->velocity(row, i) = y[dofs_ + i];
+    out->acceleration(row, i) = a;
+    out->absolute_acceleration(row, i) = a + ground;
+  }
+  Energies& e = out->energies[row];
+  e.input = energy_integrals[kInputPower];
+  e.damping = energy_integrals[kDampingPower];
+  e.hysteretic = energy_integrals[kHystereticPower];
+  e.kinetic = 0.5 * velocity_.dot(m.cwiseProduct(velocity_));
+  e.elastic = 0.0;
+  const auto& connections = structure_.connections();
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    out->connection_force(row, k) = connection_forces_[k];
+    const auto& kernels = connections[k].assembly.kernels();
+    for (std::size_t l = 0; l < kernels.size(); ++l) {
+      const std::size_t law = structure_.law_offset(k) + l;
+      const LawInput in = InputOf(k, law, y);
+      out->law_force(row, law) = responses_[law].force;
+      e.elastic += hysteresis::StoredEnergy(
+          kernels[l], hysteresis::RateFormState(kernels[l], phases_[law], in.u, in.v, in.z));
+    }
+  }
+  out->rows_written = row + 1;
+}
+
+}  // namespace isolab::integrators

