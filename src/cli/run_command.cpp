@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "isolab/integrators/newmark.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
+#include "isolab/io/run_analysis.h"
 
 namespace isolab::cli {
 namespace {
@@ -66,15 +66,24 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSetup& setup,
   }
   fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
              summary.energy_balance_error);
-  fmt::print(out,
-             "Newton: {} iterations (at most {} in a step), {} factorisations, {} step cuts; "
-             "{:.3f} s\n",
-             summary.newton_iterations, summary.max_iterations_in_a_step, summary.factorisations,
-             summary.step_cuts, summary.wall_seconds);
+  if (summary.ida_steps > 0) {
+    fmt::print(out,
+               "IDA: {} steps, {} phase-change events, {} Jacobians, {} error-test failures; "
+               "{:.3f} s\n",
+               summary.ida_steps, summary.events, summary.jacobian_evaluations,
+               summary.error_test_failures, summary.wall_seconds);
+  } else {
+    fmt::print(out,
+               "Newton: {} iterations (at most {} in a step), {} factorisations, {} step cuts; "
+               "{:.3f} s\n",
+               summary.newton_iterations, summary.max_iterations_in_a_step,
+               summary.factorisations, summary.step_cuts, summary.wall_seconds);
+  }
   fmt::print(out, "results: {}\n", output);
 }
 
-nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSetup& setup,
+nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection& analysis,
+                           const io::AnalysisSetup& setup,
                            const io::ResponsePeaks& peaks, const integrators::RunSummary& summary,
                            const integrators::ResponseHistory& response,
                            const std::string& output) {
@@ -105,10 +114,18 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSetup& 
                       {"hysteretic", e.hysteretic}};
   }
   json["energy_balance_error"] = summary.energy_balance_error;
-  json["newton"] = {{"iterations", summary.newton_iterations},
-                    {"max_iterations_in_a_step", summary.max_iterations_in_a_step},
-                    {"factorisations", summary.factorisations},
-                    {"step_cuts", summary.step_cuts}};
+  json["integrator"] = io::DescribeIntegrator(analysis, setup.grid.dt);
+  if (analysis.integrator == io::AnalysisSection::Integrator::kIda) {
+    json["ida"] = {{"steps", summary.ida_steps},
+                   {"events", summary.events},
+                   {"jacobian_evaluations", summary.jacobian_evaluations},
+                   {"error_test_failures", summary.error_test_failures}};
+  } else {
+    json["newton"] = {{"iterations", summary.newton_iterations},
+                      {"max_iterations_in_a_step", summary.max_iterations_in_a_step},
+                      {"factorisations", summary.factorisations},
+                      {"step_cuts", summary.step_cuts}};
+  }
   json["steps_completed"] = summary.steps;
   json["wall_seconds"] = summary.wall_seconds;
   json["results"] = output;
@@ -119,7 +136,7 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSetup& 
 
 void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "run", "Time-history analysis of a model's structure under its excitation (Newmark-Newton)");
+      "run", "Time-history analysis of a model's structure under its excitation (Newmark or IDA)");
   command->add_option("model", options.model, "Model file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -128,6 +145,11 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
   command->add_option("-o,--output", options.output, "HDF5 results file");
   command->add_flag("--fixed-base", options.fixed_base, "Analyse the building without isolation");
+  command->add_option("--integrator", options.integrator,
+                      "newmark or ida (replaces the model's analysis.integrator)")
+      ->check(CLI::IsMember({"newmark", "ida"}));
+  command->add_option("--rtol", options.rtol, "IDA relative tolerance (replaces analysis.ida.rtol)")
+      ->check(CLI::Range(1e-14, 0.1));
   command->add_flag("--json", options.json, "Print the summary as JSON");
 }
 
@@ -142,14 +164,20 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
                  : std::filesystem::path(options.model).stem().string() + ".h5";
   }
 
+  io::AnalysisSection analysis = model.analysis;
+  if (options.integrator == "ida") analysis.integrator = io::AnalysisSection::Integrator::kIda;
+  if (options.integrator == "newmark") {
+    analysis.integrator = io::AnalysisSection::Integrator::kNewmark;
+  }
+  if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
+
   integrators::ResponseHistory response;
-  const integrators::RunSummary summary = integrators::RunNewmark(
-      setup.structure, setup.excitation, setup.grid, model.analysis.newmark, &response);
-  io::WriteResultsFile(
-      output, {&model, &setup, &model.analysis.newmark, &response, &summary, ISOLAB_VERSION});
+  const integrators::RunSummary summary = io::RunAnalysis(analysis, setup, &response);
+  io::WriteResultsFile(output,
+                       {&model, &setup, &analysis, &response, &summary, ISOLAB_VERSION});
   const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
   if (options.json) {
-    out << SummaryJson(model, setup, peaks, summary, response, output).dump(2) << "\n";
+    out << SummaryJson(model, analysis, setup, peaks, summary, response, output).dump(2) << "\n";
   } else {
     PrintSummary(model, setup, peaks, summary, response, output, out);
   }

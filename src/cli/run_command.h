@@ -1,5 +1,5 @@
 // `isolab run`: a time-history analysis of a model file's structure under its excitation, with a
-// summary of peaks, energy balance and Newton statistics, and the full response in HDF5.
+// summary of peaks, energy balance and integrator statistics, and the full response in HDF5.
 #pragma once
 
 #include <optional>
@@ -19,6 +19,8 @@ struct RunOptions {
   std::optional<double> dt;
   std::string output;  // HDF5 path; default: the model's output.file or <model stem>.h5
   bool fixed_base = false;
+  std::string integrator;        // "newmark" or "ida"; empty: the model's analysis.integrator
+  std::optional<double> rtol;    // IDA relative tolerance, overriding analysis.ida.rtol
   bool json = false;
 };
 

@@ -5,6 +5,22 @@
 #include "model_sections.h"
 
 namespace isolab::io {
+namespace {
+
+// Runs an options struct's Validate() and reports a violation at the key it names.
+template <typename Validate>
+void ValidateAt(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                Validate validate) {
+  try {
+    validate();
+  } catch (const InvalidParameter& error) {
+    const YAML::Node at = node[error.violation().key];
+    throw InputError(reader.Locate(at.IsDefined() ? at : node),
+                     fmt::format("{}.{}", path, error.violation().Describe()));
+  }
+}
+
+}  // namespace
 
 ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
                                  const UnitSystem& units) {
@@ -68,7 +84,7 @@ AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
                              const UnitSystem& units) {
   const std::string path = "analysis";
   reader.RequireMap(node, path);
-  reader.CheckKeys(node, path, {"dt", "duration", "integrator", "newmark"});
+  reader.CheckKeys(node, path, {"dt", "duration", "integrator", "newmark", "ida"});
   AnalysisSection section;
   if (node["dt"]) {
     section.dt = reader.ReadQuantity(node["dt"], "analysis.dt", dimension::kTime, units);
@@ -85,9 +101,11 @@ AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
   }
   if (node["integrator"]) {
     const std::string integrator = reader.ReadString(node["integrator"], "analysis.integrator");
-    if (integrator != "newmark") {
+    if (integrator == "ida") {
+      section.integrator = AnalysisSection::Integrator::kIda;
+    } else if (integrator != "newmark") {
       reader.Fail(node["integrator"], "analysis.integrator",
-                  fmt::format("'{}' is not an integrator (expected newmark)", integrator));
+                  fmt::format("'{}' is not an integrator (expected newmark or ida)", integrator));
     }
   }
   if (node["newmark"]) {
@@ -137,13 +155,21 @@ AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
     if (newmark["max_step_cuts"]) {
       o.max_step_cuts = reader.ReadInteger(newmark["max_step_cuts"], np + ".max_step_cuts");
     }
-    try {
-      o.Validate();
-    } catch (const InvalidParameter& error) {
-      const YAML::Node at = newmark[error.violation().key];
-      throw InputError(reader.Locate(at.IsDefined() ? at : newmark),
-                       fmt::format("{}.{}", np, error.violation().Describe()));
+    ValidateAt(reader, newmark, np, [&] { o.Validate(); });
+  }
+  if (node["ida"]) {
+    const YAML::Node ida = node["ida"];
+    const std::string ip = "analysis.ida";
+    reader.RequireMap(ida, ip);
+    reader.CheckKeys(ida, ip, {"rtol", "atol", "max_step", "max_steps"});
+    integrators::IdaOptions& o = section.ida;
+    if (ida["rtol"]) o.relative_tolerance = reader.ReadNumber(ida["rtol"], ip + ".rtol");
+    if (ida["atol"]) o.absolute_tolerance = reader.ReadNumber(ida["atol"], ip + ".atol");
+    if (ida["max_step"]) {
+      o.max_step = reader.ReadQuantity(ida["max_step"], ip + ".max_step", dimension::kTime, units);
     }
+    if (ida["max_steps"]) o.max_steps = reader.ReadInteger(ida["max_steps"], ip + ".max_steps");
+    ValidateAt(reader, ida, ip, [&] { o.Validate(); });
   }
   return section;
 }

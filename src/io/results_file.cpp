@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/run_analysis.h"
 
 namespace isolab::io {
 namespace {
@@ -100,18 +101,6 @@ RowMatrix Columns(const RowMatrix& source, const std::vector<int>& columns, int 
   return out;
 }
 
-std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
-  switch (newton) {
-    case integrators::NewmarkOptions::Newton::kFull:
-      return "full";
-    case integrators::NewmarkOptions::Newton::kModifiedInitial:
-      return "modified_initial";
-    case integrators::NewmarkOptions::Newton::kModifiedStep:
-      return "modified_step";
-  }
-  return "?";
-}
-
 void WriteContents(hid_t file, const RunDescription& run) {
   const auto& r = *run.response;
   const auto& setup = *run.setup;
@@ -176,7 +165,6 @@ void WriteContents(hid_t file, const RunDescription& run) {
     write("hysteretic", &integrators::Energies::hysteretic);
   }
 
-  const auto& o = *run.options;
   const auto& summary = *run.summary;
   WriteStringAttribute(file, "isolab_version", run.version);
   WriteStringAttribute(file, "model_file", run.model->path);
@@ -186,13 +174,9 @@ void WriteContents(hid_t file, const RunDescription& run) {
   WriteStringAttribute(
       file, "units",
       fmt::format("force {}, length {}, time {}", units.force(), units.length(), units.time()));
-  WriteStringAttribute(
-      file, "integrator",
-      fmt::format("newmark beta={} gamma={} newton={} force_tolerance={:g} "
-                  "displacement_tolerance={:g} max_iterations={} "
-                  "max_step_cuts={} dt={:g}",
-                  o.beta, o.gamma, NewtonName(o.newton), o.force_tolerance,
-                  o.displacement_tolerance, o.max_iterations, o.max_step_cuts, setup.grid.dt));
+  WriteStringAttribute(file, "integrator", DescribeIntegrator(*run.analysis, setup.grid.dt));
+  WriteNumberAttribute(file, "ida_steps", static_cast<double>(summary.ida_steps));
+  WriteNumberAttribute(file, "events", static_cast<double>(summary.events));
   WriteStringAttribute(file, "termination", summary.ok() ? "completed" : "failed");
   WriteStringAttribute(file, "message", summary.message);
   WriteNumberAttribute(file, "energy_balance_error", summary.energy_balance_error);

@@ -99,6 +99,28 @@ TEST(RunCommand, ChopraCaseBThroughTheModelFile) {
   EXPECT_NEAR(json["peaks"]["isolator_displacement"]["time"].get<double>(), 0.7, 1e-9);
 }
 
+TEST(RunCommand, IdaAndNewmarkThroughTheCommandLineAgreeOnCaseB) {
+  // The model file samples the load at 0.1 s (linear between samples), so both integrators run
+  // at a 0.001 s output step and must agree on the peak of that load's response.
+  const auto output = TemporaryFile("case_b_ida.h5");
+  const std::string common = "run " + Source("models/chopra/case_b_elastoplastic_sdof.yaml") +
+                             " --dt 0.001 --json -o " + output.string();
+  const auto ida = RunIsolab(common + " --integrator ida --rtol 1e-8");
+  const auto newmark = RunIsolab(common + " --integrator newmark");
+  ASSERT_EQ(ida.exit_code, 0) << ida.output;
+  ASSERT_EQ(newmark.exit_code, 0) << newmark.output;
+  const auto ida_json = nlohmann::json::parse(ida.output);
+  const auto newmark_json = nlohmann::json::parse(newmark.output);
+  const auto peak = [](const nlohmann::json& json) {
+    return json["peaks"]["isolator_displacement"]["value"].get<double>();
+  };
+  EXPECT_NEAR(peak(ida_json), peak(newmark_json), 1e-4);
+  EXPECT_EQ(ida_json["ida"]["events"].get<int>(), 2);  // yield, then unloading at the peak
+  EXPECT_EQ(ida_json["integrator"].get<std::string>().rfind("ida rtol=1e-08", 0), 0u);
+  EXPECT_TRUE(newmark_json.contains("newton"));
+  EXPECT_LT(ida_json["energy_balance_error"].get<double>(), 1e-5);
+}
+
 struct BadInput {
   std::string file, message;
 };
@@ -115,6 +137,10 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
       {"bad_unreadable_record.yaml", "missing_record.at2: cannot open"},
       {"bad_nan_record.yaml", "bad_record_nan.at2:6: 'nan' is not a finite value"},
       {"bad_empty_record.yaml", "bad_record_empty.txt: the record is empty"},
+      {"bad_unknown_integrator.yaml",
+       "bad_unknown_integrator.yaml:8:34: analysis.integrator: 'rk4' is not an integrator "
+       "(expected newmark or ida)"},
+      {"bad_ida_rtol.yaml", "bad_ida_rtol.yaml:11:15: analysis.ida.rtol = 0 (must be in (0, 0.1))"},
   };
   for (const BadInput& c : cases) {
     const auto output = TemporaryFile("bad.h5");

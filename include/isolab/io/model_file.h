@@ -14,8 +14,9 @@
 //   excitation:
 //     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}
 //     forces: [{dof: 0, dt: 0.1, values: [...]}]
-//   analysis: {dt: 0.005, duration: 30, integrator: newmark,
-//              newmark: {beta: 0.25, gamma: 0.5, newton: full, ...}}
+//   analysis: {dt: 0.005, duration: 30, integrator: newmark,   # or ida
+//              newmark: {beta: 0.25, gamma: 0.5, newton: full, ...},
+//              ida: {rtol: 1e-6, atol: 1e-9, max_step: 0.01, max_steps: 100000}}
 //   output: {file: results.h5}
 //   cyclic: {amplitude: 200, period: 1, cycles: 2, steps_per_cycle: 400}  # for `isolab cyclic`
 //
@@ -28,6 +29,7 @@
 
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/io/units.h"
 #include "isolab/structure/shear_building.h"
@@ -62,9 +64,12 @@ struct ExcitationSection {
 };
 
 struct AnalysisSection {
-  double dt = 0.0;        // 0: the record's step
+  enum class Integrator { kNewmark, kIda };
+  double dt = 0.0;        // 0: the record's step (IDA: its output step)
   double duration = 0.0;  // 0: the excitation's duration
+  Integrator integrator = Integrator::kNewmark;
   integrators::NewmarkOptions newmark;
+  integrators::IdaOptions ida;
 };
 
 struct ModelFile {

@@ -26,7 +26,7 @@ namespace isolab::io {
 struct RunDescription {
   const ModelFile* model = nullptr;
   const AnalysisSetup* setup = nullptr;
-  const integrators::NewmarkOptions* options = nullptr;
+  const AnalysisSection* analysis = nullptr;
   const integrators::ResponseHistory* response = nullptr;
   const integrators::RunSummary* summary = nullptr;
   std::string version;

@@ -1,0 +1,46 @@
+#include "isolab/io/run_analysis.h"
+
+#include <fmt/format.h>
+
+namespace isolab::io {
+namespace {
+
+std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
+  switch (newton) {
+    case integrators::NewmarkOptions::Newton::kFull:
+      return "full";
+    case integrators::NewmarkOptions::Newton::kModifiedInitial:
+      return "modified_initial";
+    case integrators::NewmarkOptions::Newton::kModifiedStep:
+      return "modified_step";
+  }
+  return "?";
+}
+
+}  // namespace
+
+integrators::RunSummary RunAnalysis(const AnalysisSection& analysis, const AnalysisSetup& setup,
+                                    integrators::ResponseHistory* response) {
+  if (analysis.integrator == AnalysisSection::Integrator::kIda) {
+    return integrators::RunIda(setup.structure, setup.excitation, setup.grid, analysis.ida,
+                               response);
+  }
+  return integrators::RunNewmark(setup.structure, setup.excitation, setup.grid, analysis.newmark,
+                                 response);
+}
+
+std::string DescribeIntegrator(const AnalysisSection& analysis, double dt) {
+  if (analysis.integrator == AnalysisSection::Integrator::kIda) {
+    const integrators::IdaOptions& o = analysis.ida;
+    return fmt::format("ida rtol={:g} atol={:g} max_step={:g} max_steps={} output_dt={:g}",
+                       o.relative_tolerance, o.absolute_tolerance, o.max_step, o.max_steps, dt);
+  }
+  const integrators::NewmarkOptions& o = analysis.newmark;
+  return fmt::format(
+      "newmark beta={} gamma={} newton={} force_tolerance={:g} displacement_tolerance={:g} "
+      "max_iterations={} max_step_cuts={} dt={:g}",
+      o.beta, o.gamma, NewtonName(o.newton), o.force_tolerance, o.displacement_tolerance,
+      o.max_iterations, o.max_step_cuts, dt);
+}
+
+}  // namespace isolab::io
