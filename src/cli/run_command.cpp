@@ -150,6 +150,8 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
       ->check(CLI::IsMember({"newmark", "ida"}));
   command->add_option("--rtol", options.rtol, "IDA relative tolerance (replaces analysis.ida.rtol)")
       ->check(CLI::Range(1e-14, 0.1));
+  command->add_option("--atol", options.atol, "IDA absolute tolerance (replaces analysis.ida.atol)")
+      ->check(CLI::PositiveNumber);
   command->add_flag("--json", options.json, "Print the summary as JSON");
 }
 
@@ -170,6 +172,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     analysis.integrator = io::AnalysisSection::Integrator::kNewmark;
   }
   if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
+  if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
 
   integrators::ResponseHistory response;
   const integrators::RunSummary summary = io::RunAnalysis(analysis, setup, &response);

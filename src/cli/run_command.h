@@ -21,6 +21,7 @@ struct RunOptions {
   bool fixed_base = false;
   std::string integrator;        // "newmark" or "ida"; empty: the model's analysis.integrator
   std::optional<double> rtol;    // IDA relative tolerance, overriding analysis.ida.rtol
+  std::optional<double> atol;    // IDA absolute tolerance, overriding analysis.ida.atol
   bool json = false;
 };
 

@@ -36,7 +36,9 @@ RateResponse Evaluate(const SeriesSlider& law, const LawPhase& phase, double u, 
   r.force_z = kh;
   r.rate_v = law.ke / (law.ke + kh);  // d(ke (u - u_h) - g(u_h))/dt = 0 on the surface
   r.rate = r.rate_v * v;
-  r.hysteretic_power = law.fs * std::abs(r.rate);
+  // s fs dz/dt rather than fs |dz/dt|: equal while the phase holds, and smooth past its end, so an
+  // integrator that steps over the event and interpolates back does not see a kink.
+  r.hysteretic_power = phase.slip * law.fs * r.rate;
   return r;
 }
 
@@ -90,7 +92,7 @@ RateResponse Evaluate(const ParallelSlider& law, const LawPhase& phase, double u
   r.force_u = kh;
   r.rate = v;
   r.rate_v = 1.0;
-  r.hysteretic_power = law.fs * std::abs(v);
+  r.hysteretic_power = phase.slip * law.fs * v;  // s fs v, smooth past the event as above
   return r;
 }
 

@@ -37,7 +37,7 @@ struct LawPhase {
 struct RateResponse {
   double force = 0.0, force_u = 0.0, force_v = 0.0, force_z = 0.0;
   double rate = 0.0, rate_u = 0.0, rate_v = 0.0, rate_z = 0.0;  // dz/dt; all 0 without z
-  double hysteretic_power = 0.0;  // slider work rate fs |dz/dt|; Bouc-Wen: z v less d(z^2/2a)/dt
+  double hysteretic_power = 0.0;  // slider work rate s fs dz/dt; Bouc-Wen: z v - d(z^2/2a)/dt
   double viscous_power = 0.0;     // rate of dashpot dissipation, >= 0
 };
 
