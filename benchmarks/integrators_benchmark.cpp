@@ -2,14 +2,18 @@
 //  * an SDOF on one THM1 isolator, 10,000 steps (target <= 0.2 us per step);
 //  * the five-story building on the nine-component Table 9 isolator (target <= 1 us per step);
 //  * an isolated shear building of 5 to 1000 stories (Rayleigh damping keeps the tangent sparse),
-//    for the growth of the cost with size.
+//    for the growth of the cost with size;
+//  * the same five-story building on IDA at rtol 1e-4, 1e-6 and 1e-8 (60 s of record, output at
+//    0.01 s), with its internal steps and events per second of record.
 // Counter "per_step" is seconds per step. The excitation is isolab's seeded filtered noise.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "isolab/hysteresis/law_parameters.h"
+#include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/synthetic_motion.h"
@@ -88,8 +92,25 @@ void BM_StoriesTable9(benchmark::State& state) {
   RunSteps(state, IsolatedBuilding(stories, Table9()), 2000);
 }
 
+void BM_FiveStoryTable9Ida(benchmark::State& state) {
+  const structure::Structure building = IsolatedBuilding(5, Table9());
+  const Excitation excitation = Noise();
+  IdaOptions options;
+  options.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  options.absolute_tolerance = options.relative_tolerance * 1e-3;
+  ResponseHistory response;
+  RunSummary summary;
+  for (auto _ : state) {
+    summary = RunIda(building, excitation, {0.01, 6000}, options, &response);
+    if (!summary.ok()) state.SkipWithError(summary.message.c_str());
+  }
+  state.counters["ida_steps_per_s"] = static_cast<double>(summary.ida_steps) / 60.0;
+  state.counters["events_per_s"] = static_cast<double>(summary.events) / 60.0;
+}
+
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryTable9Ida)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesTable9)
     ->Arg(5)
     ->Arg(10)

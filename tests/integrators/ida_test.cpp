@@ -124,7 +124,7 @@ TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
       newmark_summary.energy_balance_error);
   EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 0.002);
   EXPECT_LT(rms, 0.005);
-  EXPECT_LT(ida_summary.energy_balance_error, 1e-4);
+  EXPECT_LT(ida_summary.energy_balance_error, 1e-5);
 }
 
 TEST(IdaOptions, RejectsOutOfRangeFields) {
