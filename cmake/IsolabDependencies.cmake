@@ -15,6 +15,7 @@ isolab_require(Eigen3 libeigen3-dev NO_MODULE)
 isolab_require(yaml-cpp libyaml-cpp-dev)
 isolab_require(HDF5 libhdf5-dev COMPONENTS C)
 isolab_require(SUNDIALS libsundials-dev)
+isolab_require(pagmo libpagmo-dev)
 
 # SuiteSparse KLU ships no CMake package on Debian 12: find its header and libraries directly.
 find_path(KLU_INCLUDE_DIR klu.h PATH_SUFFIXES suitesparse)

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 
@@ -69,6 +70,14 @@ double NextExcitationSample(const Excitation& excitation, double t, double horiz
   return next;
 }
 
+// IDAGetReturnFlagName returns a malloc'd string.
+std::string FlagName(int flag) {
+  char* name = IDAGetReturnFlagName(flag);
+  std::string text = name ? name : "unknown flag";
+  std::free(name);
+  return text;
+}
+
 class IdaRun {
  public:
   IdaRun(const structure::Structure& structure, const Excitation& excitation,
@@ -104,6 +113,11 @@ class IdaRun {
     Check(IDASetMaxNumSteps(ida, options.max_steps), "IDASetMaxNumSteps");
     if (options.max_step > 0.0) Check(IDASetMaxStep(ida, options.max_step), "IDASetMaxStep");
     Check(IDAQuadInit(ida, &IdaRun::EnergyRates, energy_.get()), "IDAQuadInit");
+    // The energy integrals are under error control too: the balance is a check of the
+    // integration, so its terms must be as accurate as the motion.
+    Check(IDAQuadSStolerances(ida, options.relative_tolerance, options.absolute_tolerance),
+          "IDAQuadSStolerances");
+    Check(IDASetQuadErrCon(ida, SUNTRUE), "IDASetQuadErrCon");
     roots_found_.resize(system_.root_count());
     if (system_.root_count() > 0) {
       Check(IDARootInit(ida, system_.root_count(), &IdaRun::Roots), "IDARootInit");
@@ -118,23 +132,12 @@ class IdaRun {
   // Integrates to `t_out`, stopping at every excitation sample and restarting at every event.
   // False (with the summary's message set) when IDA fails.
   bool AdvanceTo(double t_out) {
-    void* ida = ida_.get();
-    while (t_ < t_out) {
-      const double stop = NextExcitationSample(excitation_, t_, t_out);
-      if (stop - t_ <= 1e-10 * std::max(stop, 1.0)) {  // an event landed on the stop time
-        t_ = stop;
-        continue;
-      }
-      Check(IDASetStopTime(ida, stop), "IDASetStopTime");
-      const int flag = IDASolve(ida, stop, &t_, y_.get(), yp_.get(), IDA_NORMAL);
-      if (flag < 0) {
-        summary_.message = fmt::format("IDASolve failed at t = {:.6g}: {}: {}", t_,
-                                       IDAGetReturnFlagName(flag), last_message_);
-        return false;
-      }
-      if (flag == IDA_ROOT_RETURN && !Restart()) return false;
+    try {
+      return Integrate(t_out);
+    } catch (const std::runtime_error& error) {  // a failed SUNDIALS call while integrating
+      summary_.message = fmt::format("at t = {:.6g}: {}", t_, error.what());
+      return false;
     }
-    return true;
   }
 
   void Record(int row, ResponseHistory* out) {
@@ -143,7 +146,11 @@ class IdaRun {
     system_.Record(t_, N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(energy_.get()), row, out);
   }
 
+  // IDA's counters restart with IDAReInit (the linear solver's only at its next solve), so they
+  // are banked at each restart that followed a solve, and at the end.
   void CollectStatistics() {
+    if (!solved_since_restart_) return;
+    solved_since_restart_ = false;
     long steps = 0, jacobians = 0, failures = 0;
     Check(IDAGetNumSteps(ida_.get(), &steps), "IDAGetNumSteps");
     Check(IDAGetNumJacEvals(ida_.get(), &jacobians), "IDAGetNumJacEvals");
@@ -154,6 +161,27 @@ class IdaRun {
   }
 
  private:
+  bool Integrate(double t_out) {
+    void* ida = ida_.get();
+    while (t_ < t_out) {
+      const double stop = NextExcitationSample(excitation_, t_, t_out);
+      if (stop - t_ <= 1e-10 * std::max(stop, 1.0)) {  // an event landed on the stop time
+        t_ = stop;
+        continue;
+      }
+      Check(IDASetStopTime(ida, stop), "IDASetStopTime");
+      const int flag = IDASolve(ida, stop, &t_, y_.get(), yp_.get(), IDA_NORMAL);
+      if (flag < 0) {
+        summary_.message =
+            fmt::format("IDASolve failed at t = {:.6g}: {}: {}", t_, FlagName(flag), last_message_);
+        return false;
+      }
+      solved_since_restart_ = true;
+      if (flag == IDA_ROOT_RETURN && !Restart()) return false;
+    }
+    return true;
+  }
+
   // At an event: switch the phases whose roots fell, put the state on their surfaces, and
   // restart IDA there (its counters restart too, so they are banked first).
   bool Restart() {
@@ -163,9 +191,12 @@ class IdaRun {
     Check(IDAGetQuad(ida, &t, energy_.get()), "IDAGetQuad");
     double* y = N_VGetArrayPointer(y_.get());
     summary_.events += system_.SwitchPhases(roots_found_.data(), y);
-    // Roots that keep falling at one instant without the time moving are a chattering phase
-    // (a law that cannot decide between stick and slip): stop rather than loop.
-    same_time_events_ = t_ == last_event_time_ ? same_time_events_ + 1 : 0;
+    // Events that keep coming without the time moving on are a chattering phase (a law that
+    // cannot decide between stick and slip): stop rather than loop. IDA cannot return a root at
+    // the restart time itself, so "the same instant" is a window of a few hundred ulps.
+    const bool same_instant =
+        std::abs(t_ - last_event_time_) <= 1e3 * 2.2e-16 * std::max(std::abs(t_), 1.0);
+    same_time_events_ = same_instant ? same_time_events_ + 1 : 0;
     last_event_time_ = t_;
     if (same_time_events_ > 100) {
       summary_.message =
@@ -187,7 +218,7 @@ class IdaRun {
   void Check(int flag, const char* call) const {
     if (flag < 0) {
       throw std::runtime_error(
-          fmt::format("{} failed: {}: {}", call, IDAGetReturnFlagName(flag), last_message_));
+          fmt::format("{} failed: {}: {}", call, FlagName(flag), last_message_));
     }
   }
 
@@ -238,6 +269,7 @@ class IdaRun {
   std::string last_message_;
   double t_ = 0.0;
   double last_event_time_ = -1.0;
+  bool solved_since_restart_ = false;
   int same_time_events_ = 0;
 };
 

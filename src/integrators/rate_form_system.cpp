@@ -224,15 +224,33 @@ int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
     const auto& kernels = connections[k].assembly.kernels();
     for (std::size_t l = 0; l < kernels.size(); ++l) {
       const std::size_t law = structure_.law_offset(k) + l;
-      for (int root = 0; root < root_offsets_[law + 1] - root_offsets_[law]; ++root) {
-        if (roots_found[root_offsets_[law] + root] == 0) continue;
+      const int count = root_offsets_[law + 1] - root_offsets_[law];
+      const auto apply = [&](int root) {
         const LawInput in = InputOf(k, law, y);
         const hysteresis::PhaseSwitch next =
             hysteresis::SwitchPhase(kernels[l], phases_[law], root, in.u, in.v, in.z);
-        switched += next.phase.slip != phases_[law].slip ||
-                    next.phase.segment != phases_[law].segment;
+        const bool changed = next.phase.slip != phases_[law].slip ||
+                             next.phase.segment != phases_[law].segment;
         phases_[law] = next.phase;
         if (internal_index_[law] >= 0) y[2 * dofs_ + internal_index_[law]] = next.z;
+        switched += changed;
+        return changed;
+      };
+      bool any = false;
+      for (int root = 0; root < count; ++root) {
+        if (roots_found[root_offsets_[law] + root] != 0) any |= apply(root);
+      }
+      // A switch can leave another of the law's roots already below zero (two boundaries met
+      // at once, e.g. slip ending exactly at +-uc): IDA would never see it fall, so it is
+      // applied here, a bounded number of times.
+      for (int pass = 0; any && pass < 2 * hysteresis::kMaxPhaseRoots; ++pass) {
+        double roots[hysteresis::kMaxPhaseRoots];
+        const LawInput in = InputOf(k, law, y);
+        hysteresis::PhaseRoots(kernels[l], phases_[law], in.u, in.v, in.z, roots);
+        any = false;
+        for (int root = 0; root < count && !any; ++root) {
+          if (roots[root] < 0.0) any = apply(root);
+        }
       }
     }
   }

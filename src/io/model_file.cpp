@@ -8,7 +8,6 @@
 #include "model_sections.h"
 
 namespace isolab::io {
-namespace {
 
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root) {
   const YAML::Node node = reader.Require(root, "", "units");
@@ -40,6 +39,8 @@ UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root) {
   }
   return *units;
 }
+
+namespace {
 
 hysteresis::CyclicProtocol ReadCyclic(const YamlReader& reader, const YAML::Node& node) {
   const std::string path = "cyclic";

@@ -6,6 +6,9 @@
 
 namespace isolab::io {
 
+// The required `units` section of a model (or fit specification) file.
+UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
+
 // A list of law components (an isolation layer, a hysteretic story).
 hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
                                           const std::string& path, const UnitSystem& units);

@@ -94,7 +94,8 @@ TEST(Ida, AgreesWithNewmarkOnChopraCaseB) {
   const double difference = (ida.displacement - newmark.displacement).cwiseAbs().maxCoeff();
   std::printf("Case B: max |u_IDA - u_Newmark(dt 0.001)| = %.2e in; IDA %ld steps, %ld events\n",
               difference, ida_summary.ida_steps, ida_summary.events);
-  EXPECT_LT(difference, 1e-3);
+  EXPECT_LT(difference, 1e-3);  // the requirement
+  EXPECT_LT(difference, 2e-5);  // what the two integrators actually achieve (3.5e-6 measured)
 }
 
 TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
@@ -122,8 +123,10 @@ TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
       ida_summary.ida_steps, ida_summary.events, ida_summary.jacobian_evaluations,
       ida_summary.wall_seconds, newmark_summary.wall_seconds, ida_summary.energy_balance_error,
       newmark_summary.energy_balance_error);
-  EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 0.002);
+  EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 0.002);  // the requirements
   EXPECT_LT(rms, 0.005);
+  EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 1e-5);  // measured: 5e-7 and 1e-5
+  EXPECT_LT(rms, 1e-4);
   EXPECT_LT(ida_summary.energy_balance_error, 1e-5);
 }
 

@@ -1,0 +1,26 @@
+// Synthetic cyclic tests of a known assembly, for identification tests and benchmarks: the
+// sinusoidal protocol of hysteresis/cyclic_test.h at several amplitudes, with optional Gaussian
+// measurement noise on the force (seeded, so a data set is reproducible).
+#pragma once
+
+#include <vector>
+
+#include "isolab/hysteresis/cyclic_test.h"
+#include "isolab/identification/cyclic_data.h"
+
+namespace isolab::identification {
+
+struct SyntheticTestOptions {
+  std::vector<double> amplitudes;  // one test per amplitude (length)
+  double period = 2.0;             // (time); 0.5 Hz as in HDRB qualification tests
+  int cycles = 3;
+  int steps_per_cycle = 200;
+  double noise = 0.0;    // standard deviation of the force noise, relative to the test's RMS force
+  unsigned seed = 1;
+};
+
+// Tests named "u=<amplitude>", split into cycles.
+std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
+                                           const SyntheticTestOptions& options);
+
+}  // namespace isolab::identification

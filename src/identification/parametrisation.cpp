@@ -1,0 +1,254 @@
+#include "isolab/identification/parametrisation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace isolab::identification {
+
+using hysteresis::LawType;
+
+double CoordinateRange::At(double x) const {
+  x = std::clamp(x, 0.0, 1.0);
+  return log ? low * std::pow(high / low, x) : low + x * (high - low);
+}
+
+double CoordinateRange::Inverse(double value) const {
+  const double x = log ? std::log(value / low) / std::log(high / low)
+                       : (value - low) / (high - low);
+  return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.5;
+}
+
+std::vector<std::string> CoordinateNames(LawType type) {
+  switch (type) {
+    case LawType::kThm1:
+      return {"k1_ratio", "k2_ratio", "uy", "uyh_gap"};
+    case LawType::kBhm1:
+      return {"k1_ratio", "uy"};
+    case LawType::kThm2:
+      return {"uy", "uyh"};
+    case LawType::kBhm2:
+    case LawType::kElastoplastic:
+      return {"uy"};
+    case LawType::kTrilinearElastic:
+      return {"uyh"};
+    case LawType::kLinearSpring:
+    case LawType::kDashpot:
+      return {};
+    case LawType::kBoucWen:
+      break;
+  }
+  throw std::invalid_argument("Bouc-Wen components cannot be identified (yet)");
+}
+
+namespace {
+
+// Amplitudes of a law type and whether each must be >= 0: THM2 and BHM2 (k0 - k1, k1, [k2]),
+// trilinear (k1, k2), and one stiffness (or c) for the others.
+std::vector<bool> AmplitudeSigns(LawType type) {
+  switch (type) {
+    case LawType::kThm2:
+      return {true, true, false};
+    case LawType::kBhm2:
+      return {true, true};
+    case LawType::kTrilinearElastic:
+      return {true, false};
+    default:
+      return {true};
+  }
+}
+
+CoordinateRange DefaultRange(const std::string& name, const DataScales& s) {
+  const double u = s.displacement;
+  if (name == "k1_ratio") return {1e-5, 0.99, true};
+  if (name == "k2_ratio") return {-3.0, 0.99, false};
+  if (name == "uy") return {1e-4 * u, u, true};
+  if (name == "uyh" || name == "uyh_gap") return {1e-2 * u, 2 * u, true};
+  throw std::logic_error("no default range for " + name);
+}
+
+double Clamp(double u, double limit) { return std::clamp(u, -limit, limit); }
+
+// Force of one law with unit amplitude driven from rest through the test.
+void UnitLawForce(LawType type, std::vector<double> mathematical, const CyclicTestData& test,
+                  Eigen::Ref<Eigen::VectorXd> column) {
+  const hysteresis::ParallelAssembly law = hysteresis::SingleLaw(type, std::move(mathematical));
+  const std::vector<double> force = SimulateForce(law, test);
+  column = Eigen::Map<const Eigen::VectorXd>(force.data(), static_cast<Eigen::Index>(force.size()));
+}
+
+}  // namespace
+
+ModelParametrisation::ModelParametrisation(std::vector<ComponentSpec> components,
+                                           const DataScales& scales)
+    : components_(std::move(components)) {
+  first_amplitude_.push_back(0);
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    const ComponentSpec& spec = components_[i];
+    const std::vector<std::string> names = CoordinateNames(spec.type);
+    const auto check = [&](const auto& map, const char* what) {
+      for (const auto& entry : map) {
+        if (std::find(names.begin(), names.end(), entry.first) == names.end()) {
+          throw std::invalid_argument(spec.name + ": '" + entry.first +
+                                      "' is not a shape coordinate of " +
+                                      std::string(hysteresis::LawName(spec.type)) + " (" + what +
+                                      ")");
+        }
+      }
+    };
+    check(spec.ranges, "bounds");
+    check(spec.fixed, "fixed");
+    check(spec.start, "start");
+    fixed_values_.emplace_back(names.size(), NAN);
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      if (const auto it = spec.fixed.find(names[c]); it != spec.fixed.end()) {
+        fixed_values_[i][c] = it->second;
+        continue;
+      }
+      CoordinateRange range = DefaultRange(names[c], scales);
+      if (const auto it = spec.ranges.find(names[c]); it != spec.ranges.end()) {
+        range.low = it->second.low;
+        range.high = it->second.high;
+        range.log = range.log && range.low > 0.0;
+      }
+      if (!(range.high > range.low)) {
+        throw std::invalid_argument(spec.name + "." + names[c] + ": empty range");
+      }
+      free_.push_back({static_cast<int>(i), static_cast<int>(c), range});
+    }
+    for (const bool sign : AmplitudeSigns(spec.type)) nonnegative_.push_back(sign);
+    first_amplitude_.push_back(static_cast<int>(nonnegative_.size()));
+  }
+}
+
+std::vector<std::string> ModelParametrisation::FreeNames() const {
+  std::vector<std::string> names;
+  for (const Slot& slot : free_) {
+    const ComponentSpec& spec = components_[slot.component];
+    names.push_back(spec.name + "." + CoordinateNames(spec.type)[slot.coordinate]);
+  }
+  return names;
+}
+
+std::vector<std::vector<double>> ModelParametrisation::Shapes(std::span<const double> x) const {
+  std::vector<std::vector<double>> values = fixed_values_;
+  for (std::size_t k = 0; k < free_.size(); ++k) {
+    values[free_[k].component][free_[k].coordinate] = free_[k].range.At(x[k]);
+  }
+  return values;
+}
+
+void ModelParametrisation::Basis(std::span<const double> x, const CyclicTestData& test,
+                                 Eigen::MatrixXd* basis) const {
+  const auto shapes = Shapes(x);
+  const Eigen::Index n = static_cast<Eigen::Index>(test.displacement.size());
+  basis->resize(n, amplitude_count());
+  const Eigen::Map<const Eigen::VectorXd> u(test.displacement.data(), n);
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    const std::vector<double>& s = shapes[i];
+    const int a = first_amplitude_[i];
+    const auto clamped = [&](double limit, Eigen::Index column) {
+      for (Eigen::Index k = 0; k < n; ++k) (*basis)(k, column) = Clamp(u[k], limit);
+    };
+    switch (components_[i].type) {
+      case LawType::kThm1:
+        UnitLawForce(LawType::kThm1, {1.0, s[0], s[1], s[2], s[2] + s[3]}, test, basis->col(a));
+        break;
+      case LawType::kBhm1:
+        UnitLawForce(LawType::kBhm1, {1.0, s[0], s[1]}, test, basis->col(a));
+        break;
+      case LawType::kThm2:
+        UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
+        clamped(s[1], a + 1);
+        basis->col(a + 2) = u - basis->col(a + 1);
+        break;
+      case LawType::kBhm2:
+        UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
+        basis->col(a + 1) = u;
+        break;
+      case LawType::kElastoplastic:
+        UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
+        break;
+      case LawType::kTrilinearElastic:
+        clamped(s[0], a);
+        basis->col(a + 1) = u - basis->col(a);
+        break;
+      case LawType::kLinearSpring:
+        basis->col(a) = u;
+        break;
+      case LawType::kDashpot:
+        for (Eigen::Index k = 0; k < n; ++k) {
+          const double dt = k > 0 ? test.time[k] - test.time[k - 1] : 0.0;
+          (*basis)(k, a) = dt > 0.0 ? (u[k] - u[k - 1]) / dt : 0.0;
+        }
+        break;
+      case LawType::kBoucWen:
+        throw std::logic_error("Bouc-Wen has no basis");
+    }
+  }
+}
+
+std::vector<std::vector<double>> ModelParametrisation::Mathematical(
+    std::span<const double> x, const Eigen::VectorXd& amplitudes) const {
+  const auto shapes = Shapes(x);
+  std::vector<std::vector<double>> result;
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    const std::vector<double>& s = shapes[i];
+    const double* a = amplitudes.data() + first_amplitude_[i];
+    switch (components_[i].type) {
+      case LawType::kThm1:
+        result.push_back({a[0], a[0] * s[0], a[0] * s[1], s[2], s[2] + s[3]});
+        break;
+      case LawType::kBhm1:
+        result.push_back({a[0], a[0] * s[0], s[1]});
+        break;
+      case LawType::kThm2:
+        result.push_back({a[0] + a[1], a[1], a[2], s[0], s[1]});
+        break;
+      case LawType::kBhm2:
+        result.push_back({a[0] + a[1], a[1], s[0]});
+        break;
+      case LawType::kElastoplastic:
+        result.push_back({a[0], s[0]});
+        break;
+      case LawType::kTrilinearElastic:
+        result.push_back({a[0], a[1], s[0]});
+        break;
+      default:
+        result.push_back({a[0]});
+    }
+  }
+  return result;
+}
+
+hysteresis::ParallelAssembly ModelParametrisation::Assembly(
+    std::span<const double> x, const Eigen::VectorXd& amplitudes) const {
+  // An amplitude at its bound (0) would break a rule (k0 > 0): keep it a hair inside.
+  Eigen::VectorXd inside = amplitudes;
+  const double floor = 1e-12 * std::max(1.0, amplitudes.cwiseAbs().maxCoeff());
+  for (int k = 0; k < amplitude_count(); ++k) {
+    if (nonnegative_[k]) inside[k] = std::max(inside[k], floor);
+  }
+  const auto mathematical = Mathematical(x, inside);
+  std::vector<hysteresis::Component> components;
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    components.push_back(
+        {components_[i].name,
+         hysteresis::LawParameters::Make(components_[i].type,
+                                         hysteresis::ParameterForm::kMathematical,
+                                         mathematical[i])});
+  }
+  return hysteresis::ParallelAssembly(std::move(components));
+}
+
+std::vector<double> ModelParametrisation::StartPoint() const {
+  std::vector<double> x;
+  for (const Slot& slot : free_) {
+    const ComponentSpec& spec = components_[slot.component];
+    const auto it = spec.start.find(CoordinateNames(spec.type)[slot.coordinate]);
+    x.push_back(it != spec.start.end() ? slot.range.Inverse(it->second) : 0.5);
+  }
+  return x;
+}
+
+}  // namespace isolab::identification

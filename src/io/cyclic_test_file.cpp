@@ -1,0 +1,166 @@
+#include "isolab/io/cyclic_test_file.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
+
+namespace isolab::io {
+namespace {
+
+using identification::CyclicTestData;
+
+std::string Trim(std::string text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  const auto last = text.find_last_not_of(" \t\r");
+  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+}
+
+std::string Lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+std::vector<std::string> Split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  for (std::string field; std::getline(stream, field, ',');) fields.push_back(Trim(field));
+  return fields;
+}
+
+// "# units: force kN, length mm" (either order, either part).
+void ReadUnitsComment(const std::string& line, CyclicTestUnits* units) {
+  const auto colon = line.find(':');
+  if (Lower(line).find("units") == std::string::npos || colon == std::string::npos) return;
+  for (const std::string& part : Split(line.substr(colon + 1))) {
+    std::stringstream words(part);
+    std::string what, unit;
+    words >> what >> unit;
+    if (Lower(what) == "force") units->force = unit;
+    if (Lower(what) == "length") units->length = unit;
+  }
+}
+
+void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& into,
+              std::vector<CyclicTestData>* tests) {
+  std::ifstream in(path);
+  if (!in) throw InputError({path}, "cannot open the test data");
+  std::map<std::string, int> column;
+  std::map<std::string, std::size_t> test_index;
+  double force_factor = 1.0, length_factor = 1.0;
+  int line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    line = Trim(line);
+    if (line.empty()) continue;
+    if (line[0] == '#') {
+      if (column.empty()) ReadUnitsComment(line, &units);
+      continue;
+    }
+    const std::vector<std::string> fields = Split(line);
+    if (column.empty()) {  // the header
+      for (std::size_t k = 0; k < fields.size(); ++k) column[Lower(fields[k])] = static_cast<int>(k);
+      for (const char* needed : {"time", "displacement", "force"}) {
+        if (!column.count(needed)) {
+          throw InputError({path, line_number},
+                           fmt::format("missing column '{}' (expected test,time,displacement,"
+                                       "force; test optional)", needed));
+        }
+      }
+      try {
+        force_factor = into.Convert(1.0, units.force, dimension::kForce);
+        length_factor = into.Convert(1.0, units.length, dimension::kLength);
+      } catch (const std::invalid_argument& error) {
+        throw InputError({path, line_number}, fmt::format("units: {}", error.what()));
+      }
+      continue;
+    }
+    const auto field = [&](const char* name) -> const std::string& {
+      const int k = column.at(name);
+      if (k >= static_cast<int>(fields.size())) {
+        throw InputError({path, line_number}, fmt::format("no value in column '{}'", name));
+      }
+      return fields[k];
+    };
+    const auto number = [&](const char* name) {
+      const std::string& text = field(name);
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(value)) {
+        throw InputError({path, line_number},
+                         fmt::format("column '{}': '{}' is not a finite number", name, text));
+      }
+      return value;
+    };
+    const std::string name = column.count("test")
+                                 ? field("test")
+                                 : std::filesystem::path(path).stem().string();
+    auto [it, inserted] = test_index.try_emplace(name, tests->size());
+    if (inserted) tests->push_back({name, {}, {}, {}, {}});
+    CyclicTestData& test = (*tests)[it->second];
+    test.time.push_back(number("time"));
+    test.displacement.push_back(number("displacement") * length_factor);
+    test.force.push_back(number("force") * force_factor);
+  }
+  if (column.empty()) throw InputError({path}, "the file is empty (expected a header line)");
+}
+
+// Whether the displacement ever turns back: a test must go and come back to have a loop.
+bool Reverses(const std::vector<double>& u) {
+  int direction = 0;
+  for (std::size_t k = 1; k < u.size(); ++k) {
+    const int d = u[k] > u[k - 1] ? 1 : (u[k] < u[k - 1] ? -1 : 0);
+    if (d != 0 && direction != 0 && d != direction) return true;
+    if (d != 0) direction = d;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<CyclicTestData> ReadCyclicTests(const std::vector<std::string>& paths,
+                                            const CyclicTestUnits& file_units,
+                                            const UnitSystem& into) {
+  std::vector<CyclicTestData> tests;
+  for (const std::string& path : paths) {
+    const std::size_t first = tests.size();
+    ReadFile(path, file_units, into, &tests);
+    for (std::size_t i = first; i < tests.size(); ++i) {
+      CyclicTestData& test = tests[i];
+      if (!Reverses(test.displacement)) {
+        throw InputError({path}, fmt::format("test '{}': the displacement never reverses", test.name));
+      }
+      test.cycles = identification::SplitCycles(test.displacement);
+      if (test.cycles.size() < 2) {
+        throw InputError({path}, fmt::format("test '{}' has {} whole cycle{} (at least two are "
+                                             "needed: the first is not fitted)",
+                                             test.name, test.cycles.size(),
+                                             test.cycles.size() == 1 ? "" : "s"));
+      }
+    }
+  }
+  return tests;
+}
+
+void WriteCyclicTests(const std::string& path, const std::vector<CyclicTestData>& tests,
+                      const UnitSystem& units) {
+  WriteTextFileAtomically(path, [&](std::ostream& out) {
+    out << fmt::format("# units: force {}, length {}\n", units.force(), units.length());
+    out << "test,time,displacement,force\n";
+    for (const CyclicTestData& test : tests) {
+      for (std::size_t k = 0; k < test.time.size(); ++k) {
+        out << fmt::format("{},{:.6f},{:.9g},{:.9g}\n", test.name, test.time[k],
+                           test.displacement[k], test.force[k]);
+      }
+    }
+  });
+}
+
+}  // namespace isolab::io
