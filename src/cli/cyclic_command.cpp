@@ -10,6 +10,8 @@
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/io/atomic_file.h"
+#include "isolab/identification/synthetic_tests.h"
+#include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/model_file.h"
 
 namespace isolab::cli {
@@ -205,6 +207,12 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   command->add_option("--steps-per-cycle", options.steps_per_cycle,
                       "Samples per cycle, a multiple of 4");
   command->add_option("--csv", options.csv, "Write the loop (time, u, force, force per component)");
+  command->add_option("--test-data", options.test_data,
+                      "Write the runs as cyclic test data (test,time,displacement,force CSV)");
+  command->add_option("--noise", options.noise,
+                      "Gaussian force noise on --test-data, relative to each test's RMS force")
+      ->check(CLI::Range(0.0, 1.0));
+  command->add_option("--seed", options.seed, "Seed of the --noise generator");
   command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
 }
 
@@ -224,6 +232,19 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
       WriteLoopCsv(runs[i], CsvPath(options.csv, runs[i], i, runs.size() > 1));
     }
+  }
+
+  if (!options.test_data.empty()) {
+    std::vector<identification::CyclicTestData> tests;
+    for (const Run& run : runs) {
+      tests.push_back(identification::TestFromLoop(run.result));
+      if (models.size() > 1) {
+        tests.back().name = std::filesystem::path(run.model->path).stem().string() + ":" +
+                            tests.back().name;
+      }
+    }
+    identification::AddForceNoise(&tests, options.noise, options.seed);
+    io::WriteCyclicTests(options.test_data, tests, models.front().units);
   }
 
   if (options.json) {

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cyclic_command.h"
+#include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
 #include "synth_command.h"
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterRunCommand(app, run);
   isolab::cli::SynthOptions synth;
   isolab::cli::RegisterSynthCommand(app, synth);
+  isolab::cli::FitOptions fit;
+  isolab::cli::RegisterFitCommand(app, fit);
 
   try {
     app.parse(argc, argv);
@@ -31,6 +34,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
     if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
+    if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

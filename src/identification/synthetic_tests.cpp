@@ -7,28 +7,36 @@
 
 namespace isolab::identification {
 
+void AddForceNoise(std::vector<CyclicTestData>* tests, double noise, unsigned seed) {
+  if (!(noise > 0.0)) return;
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  for (CyclicTestData& test : *tests) {
+    double square = 0.0;
+    for (const double f : test.force) square += f * f;
+    const double sigma = noise * std::sqrt(square / static_cast<double>(test.force.size()));
+    for (double& f : test.force) f += sigma * gaussian(random);
+  }
+}
+
+CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result) {
+  CyclicTestData test;
+  test.name = fmt::format("u={:g}", result.protocol.amplitude);
+  test.time = result.loop.time;
+  test.displacement = result.loop.displacement;
+  test.force = result.loop.force;
+  test.cycles = SplitCycles(test.displacement);
+  return test;
+}
+
 std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
                                            const SyntheticTestOptions& options) {
-  std::mt19937_64 random(options.seed);
-  std::normal_distribution<double> gaussian(0.0, 1.0);
   std::vector<CyclicTestData> tests;
   for (const double amplitude : options.amplitudes) {
-    const hysteresis::CyclicResult result = hysteresis::RunCyclicTest(
-        assembly, {amplitude, options.period, options.cycles, options.steps_per_cycle});
-    CyclicTestData test;
-    test.name = fmt::format("u={:g}", amplitude);
-    test.time = result.loop.time;
-    test.displacement = result.loop.displacement;
-    test.force = result.loop.force;
-    if (options.noise > 0.0) {
-      double square = 0.0;
-      for (const double f : test.force) square += f * f;
-      const double sigma = options.noise * std::sqrt(square / test.force.size());
-      for (double& f : test.force) f += sigma * gaussian(random);
-    }
-    test.cycles = SplitCycles(test.displacement);
-    tests.push_back(std::move(test));
+    tests.push_back(TestFromLoop(hysteresis::RunCyclicTest(
+        assembly, {amplitude, options.period, options.cycles, options.steps_per_cycle})));
   }
+  AddForceNoise(&tests, options.noise, options.seed);
   return tests;
 }
 

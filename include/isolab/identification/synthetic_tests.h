@@ -19,6 +19,13 @@ struct SyntheticTestOptions {
   unsigned seed = 1;
 };
 
+// Gaussian noise on every force sample, of standard deviation `noise` times the test's RMS force,
+// from a generator seeded with `seed` (the same seed, the same noise).
+void AddForceNoise(std::vector<CyclicTestData>* tests, double noise, unsigned seed);
+
+// A test from a computed loop, named "u=<amplitude>" and split into cycles.
+CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result);
+
 // Tests named "u=<amplitude>", split into cycles.
 std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
                                            const SyntheticTestOptions& options);

@@ -1,0 +1,194 @@
+#include "fit_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "isolab/core/errors.h"
+#include "isolab/identification/fit.h"
+#include "isolab/io/atomic_file.h"
+#include "isolab/io/cyclic_test_file.h"
+#include "isolab/io/fit_spec_file.h"
+
+namespace isolab::cli {
+namespace {
+
+using identification::FitData;
+using identification::FitResult;
+using identification::ModelParametrisation;
+
+struct EnergyRow {
+  std::string test;
+  int cycle = 0;
+  double amplitude = 0.0, measured = 0.0, fitted = 0.0;
+};
+
+// Energy of every fitted cycle, measured and modelled.
+std::vector<EnergyRow> EnergyTable(const hysteresis::ParallelAssembly& model, const FitData& data) {
+  std::vector<EnergyRow> rows;
+  for (std::size_t i = 0; i < data.tests.size(); ++i) {
+    const auto& test = data.tests[i];
+    const std::vector<double> force = identification::SimulateForce(model, test);
+    for (const auto& span : data.fitted[i]) {
+      int cycle = 1;
+      while (test.cycles[cycle - 1].begin != span.begin) ++cycle;
+      rows.push_back({test.name, cycle, identification::SpanAmplitude(test.displacement, span),
+                      identification::LoopEnergy(test.displacement, test.force, span),
+                      identification::LoopEnergy(test.displacement, force, span)});
+    }
+  }
+  return rows;
+}
+
+void WriteFittedModel(const std::string& path, const io::FitSpec& spec, const FitOptions& options,
+                      const FitResult& result, const FitData& data) {
+  io::WriteTextFileAtomically(path, [&](std::ostream& out) {
+    fmt::print(out, "# Identified by isolab fit from {} (specification {}, seed {}, {} "
+               "evaluations).\n", fmt::join(options.data, ", "), spec.path, options.seed,
+               result.evaluations);
+    fmt::print(out, "# e^2 = {:.6g} % (Markou & Manolis 2016, Eq. 20)", 100 * result.error.total);
+    for (std::size_t i = 0; i < data.tests.size(); ++i) {
+      fmt::print(out, "{}{}: {:.4g} %", i == 0 ? "; per test: " : ", ", data.tests[i].name,
+                 100 * result.error.per_test[i]);
+    }
+    fmt::print(out, "\ndescription: \"Fitted to {}\"\n", fmt::join(options.data, ", "));
+    fmt::print(out, "units: {{force: {}, length: {}, time: {}}}\nisolation:\n  components:\n",
+               spec.units.force(), spec.units.length(), spec.units.time());
+    for (std::size_t c = 0; c < spec.components.size(); ++c) {
+      const auto type = spec.components[c].type;
+      const auto keys = hysteresis::ParameterKeys(type, hysteresis::ParameterForm::kMathematical);
+      fmt::print(out, "    - {{name: {}, type: {}", spec.components[c].name,
+                 hysteresis::LawName(type));
+      for (std::size_t k = 0; k < keys.size(); ++k) {
+        fmt::print(out, ", {}: {:.9g}", keys[k], result.mathematical[c][k]);
+      }
+      fmt::print(out, "}}\n");
+    }
+  });
+}
+
+}  // namespace
+
+void RegisterFitCommand(CLI::App& app, FitOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "fit", "Identify an isolator model's parameters from cyclic tests (CMA-ES)");
+  command->add_option("data", options.data, "CSV test data: test,time,displacement,force")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--model", options.spec, "Specification: component types and counts (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the fit exactly");
+  command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
+      ->check(CLI::Range(100L, 1000000000L));
+  command->add_option("--cycles", options.cycles,
+                      "Cycles to fit, 1-based (default: every cycle after the first)");
+  command->add_option("-o,--output", options.output, "Fitted model file (YAML)");
+  command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
+  command->add_option("--length-unit", options.length_unit,
+                      "Length unit of the data (default mm)");
+  command->add_flag("--json", options.json, "Print the result as JSON");
+  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+}
+
+void RunFitCommand(const FitOptions& options, std::ostream& out) {
+  const io::FitSpec spec = io::LoadFitSpec(options.spec);
+  auto tests = io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit},
+                                   spec.units);
+  FitData data;
+  try {
+    data = identification::SelectCycles(std::move(tests), options.cycles);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({"command line"}, fmt::format("--cycles: {}", error.what()));
+  }
+  std::optional<ModelParametrisation> model;
+  try {
+    model.emplace(spec.components, identification::ScalesOf(data));
+  } catch (const std::invalid_argument& error) {
+    throw InputError({spec.path}, error.what());
+  }
+
+  identification::FitOptions fit;
+  fit.seed = options.seed;
+  fit.budget = options.budget;
+  if (!options.quiet) {
+    fmt::print(stderr, "isolab fit: {} tests, {} shape coordinates and {} stiffnesses, budget {}\n",
+               data.tests.size(), model->dimension(), model->amplitude_count(), options.budget);
+    fit.progress = [](const identification::FitProgress& p) {
+      fmt::print(stderr, "  {} generation {:5d}, {:8d} evaluations, best e^2 = {:.6g} %\n",
+                 p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations,
+                 100 * p.best);
+    };
+  }
+  const FitResult result = identification::Fit(*model, data, fit);
+  const std::string output =
+      !options.output.empty()
+          ? options.output
+          : std::filesystem::path(options.spec).stem().string() + ".fitted.yaml";
+  WriteFittedModel(output, spec, options, result, data);
+  const auto energy = EnergyTable(model->Assembly(result.point, result.amplitudes), data);
+
+  if (options.json) {
+    nlohmann::json json;
+    json["e2"] = result.error.total;
+    for (std::size_t i = 0; i < data.tests.size(); ++i) {
+      json["e2_per_test"][data.tests[i].name] = result.error.per_test[i];
+    }
+    for (std::size_t c = 0; c < spec.components.size(); ++c) {
+      const auto type = spec.components[c].type;
+      const auto keys = hysteresis::ParameterKeys(type, hysteresis::ParameterForm::kMathematical);
+      nlohmann::json parameters;
+      for (std::size_t k = 0; k < keys.size(); ++k) {
+        parameters[std::string(keys[k])] = result.mathematical[c][k];
+      }
+      json["components"].push_back({{"name", spec.components[c].name},
+                                    {"type", hysteresis::LawName(type)},
+                                    {"parameters", parameters}});
+    }
+    for (const EnergyRow& row : energy) {
+      json["energy_per_cycle"].push_back({{"test", row.test},
+                                          {"cycle", row.cycle},
+                                          {"amplitude", row.amplitude},
+                                          {"measured", row.measured},
+                                          {"fitted", row.fitted}});
+    }
+    json["evaluations"] = result.evaluations;
+    json["restarts"] = result.restarts;
+    json["seconds"] = result.seconds;
+    json["seed"] = options.seed;
+    json["output"] = output;
+    out << json.dump(2) << "\n";
+    return;
+  }
+  fmt::print(out, "e^2 = {:.4g} % over {} tests ({} evaluations, {:.1f} s)\n\n",
+             100 * result.error.total, data.tests.size(), result.evaluations, result.seconds);
+  fmt::print(out, "{:<14} {:>12} {:>16} {:>16} {:>9} {:>10}\n", "test", "amplitude",
+             "W_d measured", "W_d fitted", "diff", "e^2");
+  std::size_t test_index = 0;
+  for (const EnergyRow& row : energy) {
+    while (data.tests[test_index].name != row.test) ++test_index;
+    fmt::print(out, "{:<14} {:>9.4g} {:<2} {:>16.6g} {:>16.6g} {:>8.2f}% {:>9.4f}%  (cycle {})\n",
+               row.test, row.amplitude, spec.units.length(), row.measured, row.fitted,
+               100 * (row.fitted / row.measured - 1), 100 * result.error.per_test[test_index],
+               row.cycle);
+  }
+  fmt::print(out, "\n");
+  for (std::size_t c = 0; c < spec.components.size(); ++c) {
+    const auto type = spec.components[c].type;
+    const auto keys = hysteresis::ParameterKeys(type, hysteresis::ParameterForm::kMathematical);
+    fmt::print(out, "{:<8} {:<18}", spec.components[c].name, hysteresis::LawName(type));
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      fmt::print(out, " {}={:.6g}", keys[k], result.mathematical[c][k]);
+    }
+    fmt::print(out, "\n");
+  }
+  fmt::print(out, "\nfitted model: {}\n", output);
+}
+
+}  // namespace isolab::cli

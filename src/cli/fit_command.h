@@ -1,0 +1,33 @@
+// `isolab fit`: identifies an assembly's parameters from measured cyclic tests with CMA-ES
+// (identification/fit.h) and writes the fitted model file, with e^2 overall and per test and a
+// table of energy per cycle against amplitude, measured and fitted.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace isolab::cli {
+
+struct FitOptions {
+  std::vector<std::string> data;  // CSV files of cyclic tests
+  std::string spec;               // --model: component types and counts (YAML)
+  unsigned seed = 1;
+  long budget = 60000;
+  std::vector<int> cycles;        // 1-based; empty: every cycle after the first
+  std::string output;             // fitted model file; default: <spec stem>.fitted.yaml
+  std::string force_unit = "kN", length_unit = "mm";  // of the data, unless its header says
+  bool json = false;
+  bool quiet = false;
+};
+
+void RegisterFitCommand(CLI::App& app, FitOptions& options);
+// Throws InputError for bad data or specification.
+void RunFitCommand(const FitOptions& options, std::ostream& out);
+
+}  // namespace isolab::cli

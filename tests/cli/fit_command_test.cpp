@@ -1,0 +1,96 @@
+// `isolab fit` end to end: data written by `isolab cyclic --test-data` from a known model are
+// fitted back, the fitted model file is accepted by `isolab cyclic`, a fixed seed reproduces the
+// fit, and bad data gives a located message with exit code 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/run_isolab.h"
+
+namespace {
+
+using isolab::testing::RunIsolab;
+
+std::string Data(const std::string& name) {
+  return std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/fit/" + name;
+}
+
+std::filesystem::path TemporaryFile(const std::string& name) {
+  const auto directory = std::filesystem::temp_directory_path() / "isolab_fit_test";
+  std::filesystem::create_directories(directory);
+  const auto path = directory / name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+std::string GenerateTests(double noise) {
+  const auto csv = TemporaryFile("three_laws_" + std::to_string(noise) + ".csv");
+  const auto run = RunIsolab("cyclic " + Data("three_laws.yaml") +
+                             " -a 5,50,100,150 -T 2 -n 3 --steps-per-cycle 200 --test-data " +
+                             csv.string() + " --noise " + std::to_string(noise) + " --seed 3");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return csv.string();
+}
+
+nlohmann::json Fit(const std::string& data, const std::string& output, const std::string& extra) {
+  const auto run = RunIsolab("fit " + data + " --model " + Data("three_laws_spec.yaml") +
+                             " --budget 6000 --json -q -o " + output + " " + extra);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return nlohmann::json::parse(run.output);
+}
+
+TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
+  const std::string data = GenerateTests(0.0);
+  const auto fitted = TemporaryFile("fitted.yaml");
+  const auto json = Fit(data, fitted.string(), "--cycles 3 --seed 5");
+  EXPECT_LT(json["e2"].get<double>(), 1e-8);
+  ASSERT_EQ(json["e2_per_test"].size(), 4u);
+  for (const auto& row : json["energy_per_cycle"]) {
+    EXPECT_NEAR(row["fitted"].get<double>() / row["measured"].get<double>(), 1.0, 1e-4);
+    EXPECT_EQ(row["cycle"].get<int>(), 3);
+  }
+  // The trilinear spring comes back exactly; the elastoplastic pair in either order.
+  const auto& c = json["components"][2]["parameters"];
+  EXPECT_NEAR(c["k1"].get<double>(), 0.2, 1e-4);
+  EXPECT_NEAR(c["k2"].get<double>(), 0.6, 1e-4);
+  EXPECT_NEAR(c["uyh"].get<double>(), 120, 1e-2);
+  const auto cyclic = RunIsolab("cyclic " + fitted.string() + " -a 100 --json");
+  EXPECT_EQ(cyclic.exit_code, 0) << cyclic.output;
+}
+
+TEST(FitCommand, AFixedSeedReproducesTheFitAndNoiseSetsTheFloor) {
+  const std::string noisy = GenerateTests(0.01);
+  const auto first = Fit(noisy, TemporaryFile("a.yaml").string(), "--seed 11");
+  const auto second = Fit(noisy, TemporaryFile("b.yaml").string(), "--seed 11");
+  EXPECT_EQ(first["e2"].get<double>(), second["e2"].get<double>());
+  EXPECT_EQ(first["components"], second["components"]);
+  // 1 % noise on every sample: each test's term is near 1e-4, and the fit cannot go below it.
+  const double per_test = first["e2"].get<double>() / 4;
+  EXPECT_GT(per_test, 0.5e-4);
+  EXPECT_LT(per_test, 2e-4);
+}
+
+TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
+  struct Case {
+    std::string file, message;
+  };
+  const Case cases[] = {
+      {"bad_missing_column.csv", "bad_missing_column.csv:1: missing column 'force'"},
+      {"bad_not_a_number.csv", "bad_not_a_number.csv:3: column 'force': 'abc' is not a finite"},
+      {"bad_never_reverses.csv", "test 'ramp': the displacement never reverses"},
+      {"bad_one_cycle.csv", "test 'one' has 1 whole cycle (at least two are needed"},
+  };
+  for (const Case& c : cases) {
+    const auto output = TemporaryFile("bad.yaml");
+    const auto run = RunIsolab("fit " + Data(c.file) + " --model " + Data("three_laws_spec.yaml") +
+                                   " -q -o " + output.string(),
+                               true);
+    EXPECT_EQ(run.exit_code, 2) << c.file << ": " << run.output;
+    EXPECT_NE(run.output.find(c.message), std::string::npos) << c.file << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output)) << c.file;
+  }
+}
+
+}  // namespace
