@@ -58,6 +58,13 @@ TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
   EXPECT_NEAR(c["uyh"].get<double>(), 120, 1e-2);
   const auto cyclic = RunIsolab("cyclic " + fitted.string() + " -a 100 --json");
   EXPECT_EQ(cyclic.exit_code, 0) << cyclic.output;
+  // A building model takes the fitted isolator with isolation: {file: fitted.yaml}.
+  const auto building = fitted.parent_path() / "building_on_fitted.yaml";
+  std::filesystem::copy_file(Data("building_on_fitted.yaml"), building,
+                             std::filesystem::copy_options::overwrite_existing);
+  const auto run = RunIsolab("run " + building.string() + " --json -o " +
+                             (fitted.parent_path() / "building.h5").string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
 TEST(FitCommand, AFixedSeedReproducesTheFitAndNoiseSetsTheFloor) {
