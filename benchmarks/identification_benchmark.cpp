@@ -9,31 +9,16 @@
 #include <thread>
 
 #include "isolab/identification/fit.h"
+#include "identification/table9_assembly.h"
 #include "isolab/identification/synthetic_tests.h"
 
 namespace isolab::identification {
 namespace {
 
-using hysteresis::LawParameters;
 using hysteresis::LawType;
-using hysteresis::ParameterForm;
-
-hysteresis::Component Law(std::string name, LawType type, std::vector<double> math) {
-  return {std::move(name), LawParameters::Make(type, ParameterForm::kMathematical, math)};
-}
 
 FitData HdrbData() {
-  const hysteresis::ParallelAssembly table9({
-      Law("c1", LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809}),
-      Law("c2", LawType::kTrilinearElastic, {0.000282, 0.905635, 136.491}),
-      Law("c3", LawType::kTrilinearElastic, {0.000246, 0.877611, 108.657}),
-      Law("c4", LawType::kThm1, {0.863754, 0.402485, -0.792654, 7.146, 125.542}),
-      Law("c5", LawType::kThm1, {0.157047, 0.000238, -0.285050, 43.938, 151.692}),
-      Law("c6", LawType::kThm1, {0.172839, 0.000547, -0.271989, 18.760, 80.117}),
-      Law("c7", LawType::kThm1, {0.056183, 0.044945, -0.006864, 3.331, 21.299}),
-      Law("c8", LawType::kElastoplastic, {3.225241, 0.597}),
-      Law("c9", LawType::kElastoplastic, {67.445070, 0.041}),
-  });
+  const hysteresis::ParallelAssembly table9 = testing::Table9ExactAssembly();
   return SelectCycles(
       SyntheticTests(table9, {{5, 30, 50, 70, 100, 120, 140, 160, 180, 200}, 2.0, 3, 200, 0.0, 1}),
       {3});

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <random>
 
+#include "identification/table9_assembly.h"
 #include "isolab/identification/synthetic_tests.h"
 
 namespace isolab::identification {
@@ -24,23 +25,10 @@ Component Law(std::string name, LawType type, std::vector<double> math) {
   return {std::move(name), LawParameters::Make(type, ParameterForm::kMathematical, math)};
 }
 
-const std::vector<double> kHdrbAmplitudes = {5, 30, 50, 70, 100, 120, 140, 160, 180, 200};
+const std::vector<double> kHdrbAmplitudes(std::begin(testing::kTestAmplitudes),
+                                           std::end(testing::kTestAmplitudes));
 
-// The paper's Table 9 nine-component THM1 system (kN, mm), as models/paper writes it, with the
-// three elastic springs in their exact form.
-hysteresis::ParallelAssembly Table9() {
-  return hysteresis::ParallelAssembly({
-      Law("c1", LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809}),
-      Law("c2", LawType::kTrilinearElastic, {0.000282, 0.905635, 136.491}),
-      Law("c3", LawType::kTrilinearElastic, {0.000246, 0.877611, 108.657}),
-      Law("c4", LawType::kThm1, {0.863754, 0.402485, -0.792654, 7.146, 125.542}),
-      Law("c5", LawType::kThm1, {0.157047, 0.000238, -0.285050, 43.938, 151.692}),
-      Law("c6", LawType::kThm1, {0.172839, 0.000547, -0.271989, 18.760, 80.117}),
-      Law("c7", LawType::kThm1, {0.056183, 0.044945, -0.006864, 3.331, 21.299}),
-      Law("c8", LawType::kElastoplastic, {3.225241, 0.597}),
-      Law("c9", LawType::kElastoplastic, {67.445070, 0.041}),
-  });
-}
+hysteresis::ParallelAssembly Table9() { return testing::Table9ExactAssembly(); }
 
 std::vector<ComponentSpec> Specs(std::vector<std::pair<LawType, int>> counts) {
   std::vector<ComponentSpec> specs;

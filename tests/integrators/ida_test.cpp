@@ -15,6 +15,7 @@
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/structure/shear_building.h"
+#include "integrators/chopra_chapter5.h"
 #include "reference_data.h"
 
 namespace isolab::integrators {
@@ -22,20 +23,9 @@ namespace {
 
 using hysteresis::LawType;
 
-// Chopra Ex. 5.1-5.6: m = 0.2533 kip s^2/in, k = 10 kip/in, zeta = 0.05, p = 10 sin(pi t/0.6).
-constexpr double kMass = 0.2533, kStiffness = 10.0;
-const double kDamping = 2.0 * 0.05 * std::sqrt(kStiffness * kMass);
-
-Excitation HalfSinePulse(double dt) {
-  Excitation excitation;
-  AppliedForce pulse{0, {dt, {}}};
-  const int samples = static_cast<int>(std::round(0.6 / dt));
-  for (int k = 0; k <= samples; ++k) {
-    pulse.force.values.push_back(10.0 * std::sin(std::numbers::pi * k / samples));
-  }
-  excitation.forces.push_back(pulse);
-  return excitation;
-}
+using testing::HalfSinePulse;
+constexpr double kMass = testing::kChopraMass, kStiffness = testing::kChopraStiffness;
+const double kDamping = testing::kChopraDamping;
 
 IdaOptions Tolerance(double rtol) {
   IdaOptions options;
