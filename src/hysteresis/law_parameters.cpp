@@ -25,6 +25,8 @@ constexpr std::string_view kElasticMech[] = {"kh1", "kh2", "uc"};
 constexpr std::string_view kElastoplasticMath[] = {"k0", "uy"};
 constexpr std::string_view kElastoplasticMech[] = {"ke", "fs"};
 constexpr std::string_view kBoucWenKeys[] = {"alpha", "beta", "gamma", "delta", "nu"};
+constexpr std::string_view kDegradingMath[] = {"k0", "k1", "uy", "loss", "slip_scale"};
+constexpr std::string_view kDegradingMech[] = {"ke", "kh", "fs", "loss", "slip_scale"};
 
 constexpr LawType kAllTypes[] = {
     LawType::kLinearSpring,
@@ -36,6 +38,7 @@ constexpr LawType kAllTypes[] = {
     LawType::kTrilinearElastic,
     LawType::kElastoplastic,
     LawType::kBoucWen,
+    LawType::kDegradingBhm2,
 };
 
 // Checks rules in the order written and throws at the first one broken, naming the key as the
@@ -112,6 +115,13 @@ void CheckPresentAndFinite(LawType type, ParameterForm form, const ParameterArra
   }
 }
 
+// The damage of the degrading laws, the same keys in both forms.
+void CheckDamage(const RuleChecker& r) {
+  r.AtLeast("loss", 0.0);
+  r.Less("loss", 1.0);
+  r.Greater("slip_scale", 0.0);
+}
+
 void ValidateMathematical(LawType type, const ParameterArray& v) {
   const RuleChecker r(ParameterKeys(type, ParameterForm::kMathematical), v);
   switch (type) {
@@ -152,6 +162,12 @@ void ValidateMathematical(LawType type, const ParameterArray& v) {
       r.Greater("alpha", 0.0);
       r.AtLeast("beta", 0.0);
       r.AtLeast("nu", 1.0);
+      return;
+    case LawType::kDegradingBhm2:
+      r.Greater("k0", 0.0);
+      r.Less("k1", r("k0"), "k0");
+      r.Greater("uy", 0.0);
+      CheckDamage(r);
       return;
   }
 }
@@ -198,6 +214,12 @@ void ValidateMechanical(LawType type, const ParameterArray& v) {
       r.Greater("ke", 0.0);
       r.Greater("fs", 0.0);
       return;
+    case LawType::kDegradingBhm2:
+      r.Greater("ke", 0.0);
+      r.Less("kh", r("ke"), "ke");
+      r.Greater("fs", 0.0);
+      CheckDamage(r);
+      return;
   }
 }
 
@@ -208,6 +230,8 @@ ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m)
       return {m[0], m[0] * m[1] / (m[0] - m[1]), m[0] * m[2], NAN, NAN};
     case LawType::kBhm2:
       return {m[0], m[1], (m[0] - m[1]) * m[2], NAN, NAN};
+    case LawType::kDegradingBhm2:
+      return {m[0], m[1], (m[0] - m[1]) * m[2], m[3], m[4]};
     case LawType::kThm1: {  // k0, k1, k2, uy, uyh -> ke, kh1, kh2, fs, uc
       const double k0 = m[0], k1 = m[1], k2 = m[2], uy = m[3], uyh = m[4];
       return {k0, k0 * k1 / (k0 - k1), k0 * k2 / (k0 - k2), k0 * uy, (uyh - uy) * (k0 - k1) / k0};
@@ -232,6 +256,8 @@ ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q)
       return {q[0], q[0] * q[1] / (q[0] + q[1]), q[2] / q[0], NAN, NAN};
     case LawType::kBhm2:
       return {q[0], q[1], q[2] / (q[0] - q[1]), NAN, NAN};
+    case LawType::kDegradingBhm2:
+      return {q[0], q[1], q[2] / (q[0] - q[1]), q[3], q[4]};
     case LawType::kThm1: {  // ke, kh1, kh2, fs, uc -> k0, k1, k2, uy, uyh
       const double ke = q[0], kh1 = q[1], kh2 = q[2], fs = q[3], uc = q[4];
       const double uy = fs / ke;
@@ -274,6 +300,8 @@ std::string_view LawName(LawType type) {
       return "elastoplastic";
     case LawType::kBoucWen:
       return "bouc_wen";
+    case LawType::kDegradingBhm2:
+      return "degrading_bhm2";
   }
   return "unknown";
 }
@@ -306,6 +334,8 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
       return math ? Keys(kElastoplasticMath) : Keys(kElastoplasticMech);
     case LawType::kBoucWen:
       return kBoucWenKeys;
+    case LawType::kDegradingBhm2:
+      return math ? Keys(kDegradingMath) : Keys(kDegradingMech);
   }
   return {};
 }
@@ -363,6 +393,8 @@ LawKernel LawParameters::Kernel() const {
       return SeriesSlider{q[0], q[1], {0.0, 0.0, INFINITY}};
     case LawType::kBoucWen:
       return BoucWen{q[0], q[1], q[2], q[3], q[4]};
+    case LawType::kDegradingBhm2:
+      return DegradingSlider{q[0] - q[1], q[2], q[1], q[3], q[4]};
   }
   return Dashpot{0.0};
 }

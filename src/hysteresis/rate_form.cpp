@@ -1,6 +1,7 @@
 #include "isolab/hysteresis/rate_form.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace isolab::hysteresis {
 namespace {
@@ -178,7 +179,26 @@ PhaseSwitch Switch(const BoucWen&, const LawPhase& phase, int, double, double, d
   return {phase, z};
 }
 
+// The degrading law has two internal variables (slider and accumulated slip) and no rate form
+// yet; HasRateForm keeps it away from the IDA path, so these are never reached.
+[[noreturn]] void NoRateForm() {
+  throw std::logic_error("degrading_bhm2 has no rate form (HasRateForm is false)");
+}
+RateResponse Evaluate(const DegradingSlider&, const LawPhase&, double, double, double) {
+  NoRateForm();
+}
+void Roots(const DegradingSlider&, const LawPhase&, double, double, double, double*) {
+  NoRateForm();
+}
+PhaseSwitch Switch(const DegradingSlider&, const LawPhase&, int, double, double, double) {
+  NoRateForm();
+}
+
 }  // namespace
+
+bool HasRateForm(const LawKernel& kernel) {
+  return !std::holds_alternative<DegradingSlider>(kernel);
+}
 
 bool HasInternalVariable(const LawKernel& kernel) {
   return !std::holds_alternative<ElasticSpring>(kernel) && !std::holds_alternative<Dashpot>(kernel);

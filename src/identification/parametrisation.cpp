@@ -32,6 +32,8 @@ std::vector<std::string> CoordinateNames(LawType type) {
       return {"uy"};
     case LawType::kTrilinearElastic:
       return {"uyh"};
+    case LawType::kDegradingBhm2:
+      return {"uy", "loss", "slip_scale"};
     case LawType::kLinearSpring:
     case LawType::kDashpot:
       return {};
@@ -50,6 +52,7 @@ std::vector<bool> AmplitudeSigns(LawType type) {
     case LawType::kThm2:
       return {true, true, false};
     case LawType::kBhm2:
+    case LawType::kDegradingBhm2:
       return {true, true};
     case LawType::kTrilinearElastic:
       return {true, false};
@@ -64,6 +67,9 @@ CoordinateRange DefaultRange(const std::string& name, const DataScales& s) {
   if (name == "k2_ratio") return {-3.0, 0.99, false};
   if (name == "uy") return {1e-4 * u, u, true};
   if (name == "uyh" || name == "uyh_gap") return {1e-2 * u, 2 * u, true};
+  if (name == "loss") return {0.0, 0.95, false};
+  // A cycle of amplitude u slips about 4 u: from a fraction of a cycle to many cycles.
+  if (name == "slip_scale") return {1e-2 * u, 1e2 * u, true};
   throw std::logic_error("no default range for " + name);
 }
 
@@ -169,6 +175,15 @@ void ModelParametrisation::Basis(std::span<const double> x, const CyclicTestData
       case LawType::kElastoplastic:
         UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
         break;
+      case LawType::kDegradingBhm2: {
+        // phi(kappa) x [elastoplastic, k0 = 1] and phi(kappa) u; the slip, so phi, does not
+        // depend on the stiffnesses, and the second column is 2 f(k1 = 1/2) - f(k1 = 0).
+        UnitLawForce(LawType::kDegradingBhm2, {1.0, 0.0, s[0], s[1], s[2]}, test, basis->col(a));
+        UnitLawForce(LawType::kDegradingBhm2, {1.0, 0.5, s[0], s[1], s[2]}, test,
+                     basis->col(a + 1));
+        basis->col(a + 1) = 2.0 * basis->col(a + 1) - basis->col(a);
+        break;
+      }
       case LawType::kTrilinearElastic:
         clamped(s[0], a);
         basis->col(a + 1) = u - basis->col(a);
@@ -207,6 +222,9 @@ std::vector<std::vector<double>> ModelParametrisation::Mathematical(
         break;
       case LawType::kBhm2:
         result.push_back({a[0] + a[1], a[1], s[0]});
+        break;
+      case LawType::kDegradingBhm2:
+        result.push_back({a[0] + a[1], a[1], s[0], s[1], s[2]});
         break;
       case LawType::kElastoplastic:
         result.push_back({a[0], s[0]});

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "isolab/core/errors.h"
+#include "isolab/hysteresis/rate_form.h"
+
 namespace isolab::io {
 namespace {
 
@@ -22,6 +25,15 @@ std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
 integrators::RunSummary RunAnalysis(const AnalysisSection& analysis, const AnalysisSetup& setup,
                                     integrators::ResponseHistory* response) {
   if (analysis.integrator == AnalysisSection::Integrator::kIda) {
+    for (const auto& connection : setup.structure.connections()) {
+      for (const auto& kernel : connection.assembly.kernels()) {
+        if (!hysteresis::HasRateForm(kernel)) {
+          throw InputError({"analysis.integrator"},
+                           "ida cannot run a degrading_bhm2 component (it has no rate form "
+                           "yet); use integrator: newmark");
+        }
+      }
+    }
     return integrators::RunIda(setup.structure, setup.excitation, setup.grid, analysis.ida,
                                response);
   }

@@ -61,6 +61,12 @@ std::vector<LawCase> Cases() {
        150,
        {0.283532, 0.489882}},
       {"linear_spring", Math(LawType::kLinearSpring, {0.7}), 100, {0.7}},
+      // Only the virgin slopes are fixed numbers; after slip every slope carries phi(kappa).
+      {"degrading_bhm2", Math(LawType::kDegradingBhm2, {1, 0.2, 20, 0.4, 300}), 250, {1}},
+      {"degrading_elastoplastic",
+       Math(LawType::kDegradingBhm2, {2, 0, 5, 0.6, 40}),
+       100,
+       {2}},
   };
 }
 
@@ -197,6 +203,17 @@ TEST_P(LawUpdate, SliderStaysAdmissibleAndDissipatesFsTimesItsTravel) {
                   branch_force * (parallel->fs > 0) + parallel->spring.Force(u),
                   1e-9 * (1 + std::abs(next.response.force)))
           << where;
+    } else if (const auto* degrading = std::get_if<DegradingSlider>(&c.kernel)) {
+      // The undamaged branch is an elastoplastic slider; the damage only scales its force.
+      const double branch_force = degrading->kp * (u - next.state.slider);
+      const double phi = degrading->Factor(next.state.accumulated_slip);
+      EXPECT_LE(std::abs(branch_force), degrading->fs * (1 + 1e-12)) << where;
+      EXPECT_NEAR(next.state.accumulated_slip - state.accumulated_slip, std::abs(travel), 1e-12)
+          << where;
+      EXPECT_NEAR(next.response.force, phi * (branch_force + degrading->kh * u),
+                  1e-9 * (1 + std::abs(next.response.force)))
+          << where;
+      EXPECT_GE(work, -1e-9 * (1 + std::abs(next.state.dissipated))) << where;
     } else {
       EXPECT_EQ(work, 0.0) << where;
     }

@@ -7,13 +7,15 @@
 
 #include "isolab/hysteresis/bouc_wen.h"
 #include "isolab/hysteresis/dashpot.h"
+#include "isolab/hysteresis/degrading_slider.h"
 #include "isolab/hysteresis/elastic_spring.h"
 #include "isolab/hysteresis/parallel_slider.h"
 #include "isolab/hysteresis/series_slider.h"
 
 namespace isolab::hysteresis {
 
-using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen>;
+using LawKernel =
+    std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen, DegradingSlider>;
 
 inline void UpdateLaw(const LawKernel& kernel, const LawState& committed, const LawInput& in,
                       LawState* trial, LawResponse* response) {

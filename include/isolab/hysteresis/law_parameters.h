@@ -11,7 +11,8 @@
 // (THM1 with uy = 0 and k0 >> k1, k2; then kh1 = k1, kh2 = k2, uc = uyh) and the elastoplastic
 // element (THM1 with k1 = k2 = 0; uyh is then meaningless and may be omitted).
 //
-// Bouc-Wen (bouc_wen.h) takes alpha, beta, gamma, delta, nu in both forms.
+// Bouc-Wen (bouc_wen.h) takes alpha, beta, gamma, delta, nu in both forms. The degrading BHM2
+// (degrading_slider.h) takes BHM2's k0, k1, uy (ke, kh, fs) and its damage's loss, slip_scale.
 //
 // Units are whatever the caller uses consistently (the paper: kN, mm).
 #pragma once
@@ -36,6 +37,7 @@ enum class LawType {
   kTrilinearElastic,
   kElastoplastic,
   kBoucWen,
+  kDegradingBhm2,
 };
 
 inline constexpr int kMaxLawParameters = 5;

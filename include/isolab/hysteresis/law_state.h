@@ -17,6 +17,7 @@ struct LawState {
   double v = 0.0;       // deformation rate at which this state was computed (length/time)
   double force = 0.0;   // force at this state (force)
   double slider = 0.0;  // slider displacement: u_h (series form), u_s (parallel form); else 0
+  double accumulated_slip = 0.0;  // total slider travel since rest (length); degrading laws
   // Energy dissipated since rest: slider work or dashpot work (force*length).
   double dissipated = 0.0;
 };

@@ -43,6 +43,10 @@ struct RateResponse {
 
 inline constexpr int kMaxPhaseRoots = 2;
 
+// Whether the law has a rate form at all (the degrading BHM2 does not yet: the IDA path refuses
+// it and the incremental laws run it).
+bool HasRateForm(const LawKernel& kernel);
+
 // Whether the law carries an internal variable z, and how many root functions it has (0..2).
 bool HasInternalVariable(const LawKernel& kernel);
 int PhaseRootCount(const LawKernel& kernel);

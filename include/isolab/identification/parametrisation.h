@@ -8,6 +8,8 @@
 //                       + k2 x (u - clamp(u, +-uyh))     shape: uy, uyh
 //   bhm2:               (k0 - k1) x [elastoplastic, uy] + k1 x u          shape: uy
 //   elastoplastic:      k0 x [elastoplastic, uy]          shape: uy
+//   degrading_bhm2:     (k0 - k1) x phi [elastoplastic, uy] + k1 x phi u
+//                                                         shape: uy, loss, slip_scale
 //   trilinear_elastic:  k1 x clamp(u, +-uyh) + k2 x (u - clamp(u, +-uyh))  shape: uyh
 //   linear_spring:      k x u;   dashpot: c x v           (no shape)
 // So the search (CMA-ES) runs over the shape coordinates only, each mapped from [0, 1] to a range
