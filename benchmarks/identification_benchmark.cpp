@@ -20,7 +20,7 @@ using hysteresis::LawType;
 FitData HdrbData() {
   const hysteresis::ParallelAssembly table9 = testing::Table9ExactAssembly();
   return SelectCycles(
-      SyntheticTests(table9, {{5, 30, 50, 70, 100, 120, 140, 160, 180, 200}, 2.0, 3, 200, 0.0, 1}),
+      SyntheticTests(table9, {{5, 30, 50, 70, 100, 120, 140, 160, 180, 200}, {2.0}, 3, 200, 0.0, 1}),
       {3});
 }
 

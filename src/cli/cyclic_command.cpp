@@ -31,7 +31,6 @@ std::vector<CyclicProtocol> Protocols(const io::ModelFile& model, const CyclicOp
     throw InputError({model.path}, "no isolation section: nothing to test cyclically");
   }
   CyclicProtocol base = model.cyclic.value_or(CyclicProtocol{});
-  if (options.period) base.period = *options.period;
   if (options.cycles) base.cycles = *options.cycles;
   if (options.steps_per_cycle) base.steps_per_cycle = *options.steps_per_cycle;
   std::vector<double> amplitudes = options.amplitudes;
@@ -41,16 +40,21 @@ std::vector<CyclicProtocol> Protocols(const io::ModelFile& model, const CyclicOp
     }
     amplitudes.push_back(model.cyclic->amplitude);
   }
+  const std::vector<double> periods =
+      options.periods.empty() ? std::vector<double>{base.period} : options.periods;
   std::vector<CyclicProtocol> protocols;
-  for (const double amplitude : amplitudes) {
-    CyclicProtocol protocol = base;
-    protocol.amplitude = amplitude;
-    try {
-      protocol.Validate();
-    } catch (const InvalidParameter& error) {
-      throw InputError({"command line"}, error.violation().Describe());
+  for (const double period : periods) {
+    for (const double amplitude : amplitudes) {
+      CyclicProtocol protocol = base;
+      protocol.amplitude = amplitude;
+      protocol.period = period;
+      try {
+        protocol.Validate();
+      } catch (const InvalidParameter& error) {
+        throw InputError({"command line"}, error.violation().Describe());
+      }
+      protocols.push_back(protocol);
     }
-    protocols.push_back(protocol);
   }
   return protocols;
 }
@@ -202,7 +206,10 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
       ->add_option("-a,--amplitude", options.amplitudes,
                    "Displacement amplitude(s) u_a, comma-separated (model length unit)")
       ->delimiter(',');
-  command->add_option("-T,--period", options.period, "Period T (model time unit)");
+  command
+      ->add_option("-T,--period", options.periods,
+                   "Period(s) T, comma-separated (model time unit); one run per amplitude each")
+      ->delimiter(',');
   command->add_option("-n,--cycles", options.cycles, "Number of cycles");
   command->add_option("--steps-per-cycle", options.steps_per_cycle,
                       "Samples per cycle, a multiple of 4");
@@ -237,7 +244,7 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   if (!options.test_data.empty()) {
     std::vector<identification::CyclicTestData> tests;
     for (const Run& run : runs) {
-      tests.push_back(identification::TestFromLoop(run.result));
+      tests.push_back(identification::TestFromLoop(run.result, options.periods.size() > 1));
       if (models.size() > 1) {
         tests.back().name = std::filesystem::path(run.model->path).stem().string() + ":" +
                             tests.back().name;

@@ -17,7 +17,7 @@ namespace isolab::cli {
 struct CyclicOptions {
   std::vector<std::string> models;
   std::vector<double> amplitudes;      // overrides the files' cyclic.amplitude; one run each
-  std::optional<double> period;        // overrides cyclic.period
+  std::vector<double> periods;         // override cyclic.period; one run each
   std::optional<int> cycles;           // overrides cyclic.cycles
   std::optional<int> steps_per_cycle;  // overrides cyclic.steps_per_cycle
   std::string csv;                     // loop output; one file per run, suffixed when several

@@ -12,9 +12,9 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
-#include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/fit_spec_file.h"
+#include "isolab/io/fitted_model_file.h"
 
 namespace isolab::cli {
 namespace {
@@ -48,29 +48,22 @@ std::vector<EnergyRow> EnergyTable(const hysteresis::ParallelAssembly& model, co
 
 void WriteFittedModel(const std::string& path, const io::FitSpec& spec, const FitOptions& options,
                       const FitResult& result, const FitData& data) {
-  io::WriteTextFileAtomically(path, [&](std::ostream& out) {
-    fmt::print(out, "# Identified by isolab fit from {} (specification {}, seed {}, {} "
-               "evaluations).\n", fmt::join(options.data, ", "), spec.path, options.seed,
-               result.evaluations);
-    fmt::print(out, "# e^2 = {:.6g} % (Markou & Manolis 2016, Eq. 20)", 100 * result.error.total);
-    for (std::size_t i = 0; i < data.tests.size(); ++i) {
-      fmt::print(out, "{}{}: {:.4g} %", i == 0 ? "; per test: " : ", ", data.tests[i].name,
-                 100 * result.error.per_test[i]);
-    }
-    fmt::print(out, "\ndescription: \"Fitted to {}\"\n", fmt::join(options.data, ", "));
-    fmt::print(out, "units: {{force: {}, length: {}, time: {}}}\nisolation:\n  components:\n",
-               spec.units.force(), spec.units.length(), spec.units.time());
-    for (std::size_t c = 0; c < spec.components.size(); ++c) {
-      const auto type = spec.components[c].type;
-      const auto keys = hysteresis::ParameterKeys(type, hysteresis::ParameterForm::kMathematical);
-      fmt::print(out, "    - {{name: {}, type: {}", spec.components[c].name,
-                 hysteresis::LawName(type));
-      for (std::size_t k = 0; k < keys.size(); ++k) {
-        fmt::print(out, ", {}: {:.9g}", keys[k], result.mathematical[c][k]);
-      }
-      fmt::print(out, "}}\n");
-    }
-  });
+  io::FittedModel model;
+  model.comment.push_back(
+      fmt::format("Identified by isolab fit from {} (specification {}, seed {}, {} evaluations).",
+                  fmt::join(options.data, ", "), spec.path, options.seed, result.evaluations));
+  std::string errors =
+      fmt::format("e^2 = {:.6g} % (Markou & Manolis 2016, Eq. 20)", 100 * result.error.total);
+  for (std::size_t i = 0; i < data.tests.size(); ++i) {
+    errors += fmt::format("{}{}: {:.4g} %", i == 0 ? "; per test: " : ", ", data.tests[i].name,
+                          100 * result.error.per_test[i]);
+  }
+  model.comment.push_back(errors);
+  model.description = fmt::format("Fitted to {}", fmt::join(options.data, ", "));
+  model.units = spec.units;
+  model.components = spec.components;
+  model.mathematical = result.mathematical;
+  io::WriteFittedModel(path, model);
 }
 
 }  // namespace
@@ -91,16 +84,15 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                       "Cycles to fit, 1-based (default: every cycle after the first)");
   command->add_option("-o,--output", options.output, "Fitted model file (YAML)");
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
-  command->add_option("--length-unit", options.length_unit,
-                      "Length unit of the data (default mm)");
+  command->add_option("--length-unit", options.length_unit, "Length unit of the data (default mm)");
   command->add_flag("--json", options.json, "Print the result as JSON");
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
 }
 
 void RunFitCommand(const FitOptions& options, std::ostream& out) {
   const io::FitSpec spec = io::LoadFitSpec(options.spec);
-  auto tests = io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit},
-                                   spec.units);
+  auto tests =
+      io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, spec.units);
   FitData data;
   try {
     data = identification::SelectCycles(std::move(tests), options.cycles);
@@ -168,8 +160,8 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   }
   fmt::print(out, "e^2 = {:.4g} % over {} tests ({} evaluations, {:.1f} s)\n\n",
              100 * result.error.total, data.tests.size(), result.evaluations, result.seconds);
-  fmt::print(out, "{:<14} {:>12} {:>16} {:>16} {:>9} {:>10}\n", "test", "amplitude",
-             "W_d measured", "W_d fitted", "diff", "e^2");
+  fmt::print(out, "{:<14} {:>12} {:>16} {:>16} {:>9} {:>10}\n", "test", "amplitude", "W_d measured",
+             "W_d fitted", "diff", "e^2");
   std::size_t test_index = 0;
   for (const EnergyRow& row : energy) {
     while (data.tests[test_index].name != row.test) ++test_index;

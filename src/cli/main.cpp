@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cyclic_command.h"
+#include "diagnose_command.h"
 #include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterSynthCommand(app, synth);
   isolab::cli::FitOptions fit;
   isolab::cli::RegisterFitCommand(app, fit);
+  isolab::cli::DiagnoseOptions diagnose;
+  isolab::cli::RegisterDiagnoseCommand(app, diagnose);
 
   try {
     app.parse(argc, argv);
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
     if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
+    if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

@@ -136,7 +136,7 @@ std::vector<std::string> ModelParametrisation::FreeNames() const {
   return names;
 }
 
-std::vector<std::vector<double>> ModelParametrisation::Shapes(std::span<const double> x) const {
+std::vector<std::vector<double>> ModelParametrisation::ShapeValues(std::span<const double> x) const {
   std::vector<std::vector<double>> values = fixed_values_;
   for (std::size_t k = 0; k < free_.size(); ++k) {
     values[free_[k].component][free_[k].coordinate] = free_[k].range.At(x[k]);
@@ -146,7 +146,7 @@ std::vector<std::vector<double>> ModelParametrisation::Shapes(std::span<const do
 
 void ModelParametrisation::Basis(std::span<const double> x, const CyclicTestData& test,
                                  Eigen::MatrixXd* basis) const {
-  const auto shapes = Shapes(x);
+  const auto shapes = ShapeValues(x);
   const Eigen::Index n = static_cast<Eigen::Index>(test.displacement.size());
   basis->resize(n, amplitude_count());
   const Eigen::Map<const Eigen::VectorXd> u(test.displacement.data(), n);
@@ -205,7 +205,7 @@ void ModelParametrisation::Basis(std::span<const double> x, const CyclicTestData
 
 std::vector<std::vector<double>> ModelParametrisation::Mathematical(
     std::span<const double> x, const Eigen::VectorXd& amplitudes) const {
-  const auto shapes = Shapes(x);
+  const auto shapes = ShapeValues(x);
   std::vector<std::vector<double>> result;
   for (std::size_t i = 0; i < components_.size(); ++i) {
     const std::vector<double>& s = shapes[i];

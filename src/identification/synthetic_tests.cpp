@@ -19,9 +19,11 @@ void AddForceNoise(std::vector<CyclicTestData>* tests, double noise, unsigned se
   }
 }
 
-CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result) {
+CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result, bool name_period) {
   CyclicTestData test;
-  test.name = fmt::format("u={:g}", result.protocol.amplitude);
+  test.name = name_period ? fmt::format("u={:g}_T={:g}", result.protocol.amplitude,
+                                        result.protocol.period)
+                          : fmt::format("u={:g}", result.protocol.amplitude);
   test.time = result.loop.time;
   test.displacement = result.loop.displacement;
   test.force = result.loop.force;
@@ -32,9 +34,13 @@ CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result) {
 std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
                                            const SyntheticTestOptions& options) {
   std::vector<CyclicTestData> tests;
-  for (const double amplitude : options.amplitudes) {
-    tests.push_back(TestFromLoop(hysteresis::RunCyclicTest(
-        assembly, {amplitude, options.period, options.cycles, options.steps_per_cycle})));
+  for (const double period : options.periods) {
+    for (const double amplitude : options.amplitudes) {
+      tests.push_back(TestFromLoop(
+          hysteresis::RunCyclicTest(assembly,
+                                    {amplitude, period, options.cycles, options.steps_per_cycle}),
+          options.periods.size() > 1));
+    }
   }
   AddForceNoise(&tests, options.noise, options.seed);
   return tests;

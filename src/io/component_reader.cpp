@@ -17,11 +17,14 @@ using hysteresis::LawParameters;
 using hysteresis::LawType;
 using hysteresis::ParameterForm;
 
-// Stiffnesses k* (and Bouc-Wen's alpha), displacements u*, the slider force fs and the dashpot
-// coefficient c; Bouc-Wen's beta, gamma, delta, nu are plain numbers (beta in model units,
-// force^(1-nu)/length).
+// Stiffnesses k* (and Bouc-Wen's alpha), displacements u* and the degrading laws' slip_scale,
+// the slider force fs and the dashpot coefficient c; Bouc-Wen's beta, gamma, delta, nu and the
+// degrading laws' loss are plain numbers (beta in model units, force^(1-nu)/length).
 Dimension ParameterDimension(std::string_view key) {
-  if (key == "beta" || key == "gamma" || key == "delta" || key == "nu") return dimension::kNone;
+  if (key == "beta" || key == "gamma" || key == "delta" || key == "nu" || key == "loss") {
+    return dimension::kNone;
+  }
+  if (key == "slip_scale") return dimension::kLength;
   if (key == "fs") return dimension::kForce;
   if (key == "c") return dimension::kDampingCoefficient;
   if (key.front() == 'u') return dimension::kLength;

@@ -16,7 +16,7 @@ using identification::CoordinateRange;
 // Quantities of a shape coordinate: displacements carry a length unit, ratios none.
 double ReadCoordinate(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                       const std::string& name, const UnitSystem& units) {
-  return name.find("ratio") != std::string::npos
+  return name.find("ratio") != std::string::npos || name == "loss"
              ? reader.ReadNumber(node, path)
              : reader.ReadQuantity(node, path, dimension::kLength, units);
 }
@@ -48,7 +48,8 @@ FitSpec LoadFitSpec(const std::string& path) {
     } catch (const std::invalid_argument&) {
       reader.Fail(type_node, at + ".type",
                   fmt::format("'{}' cannot be identified (expected thm1, thm2, bhm1, bhm2, "
-                              "trilinear_elastic, elastoplastic, linear_spring or dashpot)",
+                              "trilinear_elastic, elastoplastic, degrading_bhm2, linear_spring "
+                              "or dashpot)",
                               type_name));
     }
     const int count = entry["count"] ? reader.ReadInteger(entry["count"], at + ".count") : 1;

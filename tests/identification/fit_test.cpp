@@ -55,7 +55,7 @@ TEST(CyclicData, SplitsASineHistoryIntoItsCycles) {
 
 TEST(FitError, IsZeroForTheTruthAndTheSquaredScaleErrorOtherwise) {
   const auto truth = Table9();
-  FitData data = SelectCycles(SyntheticTests(truth, {{50, 200}, 2.0, 3, 200, 0.0, 1}), {3});
+  FitData data = SelectCycles(SyntheticTests(truth, {{50, 200}, {2.0}, 3, 200, 0.0, 1}), {3});
   EXPECT_LT(ComputeFitError(truth, data).total, 1e-20);
   // Every force scaled by 1.1: each test's term is 0.1^2 / 1.1^2 of the measured norm... with
   // the model at 1/1.1 of the data: (1 - 1/1.1)^2 per test.
@@ -85,7 +85,7 @@ TEST(Fit, RecoversTheParametersOfAKnownThreeComponentModel) {
   const hysteresis::ParallelAssembly model({Law("a", LawType::kElastoplastic, truth[0]),
                                             Law("b", LawType::kElastoplastic, truth[1]),
                                             Law("c", LawType::kTrilinearElastic, truth[2])});
-  const FitData data = SelectCycles(SyntheticTests(model, {kHdrbAmplitudes, 2.0, 3, 200, 0.0, 1}),
+  const FitData data = SelectCycles(SyntheticTests(model, {kHdrbAmplitudes, {2.0}, 3, 200, 0.0, 1}),
                                     {3});
   const ModelParametrisation parametrisation(
       {{"a", LawType::kElastoplastic, {}, {}, {}},
@@ -136,7 +136,7 @@ TEST(Fit, NineComponentThm1FitsTheHdrbTestsAndSixThm2DoNot) {
   // Synthetic HDRB data: the Table 9 system at the paper's ten amplitudes, three cycles at
   // 0.5 Hz, the third fitted; noise-free.
   const FitData data =
-      SelectCycles(SyntheticTests(Table9(), {kHdrbAmplitudes, 2.0, 3, 200, 0.0, 1}), {3});
+      SelectCycles(SyntheticTests(Table9(), {kHdrbAmplitudes, {2.0}, 3, 200, 0.0, 1}), {3});
   const auto thm1_specs = Specs({{LawType::kTrilinearElastic, 3}, {LawType::kThm1, 4},
                                  {LawType::kElastoplastic, 2}});
   const auto thm2_specs = Specs({{LawType::kThm2, 6}});

@@ -80,6 +80,8 @@ class ModelParametrisation {
                                         const Eigen::VectorXd& amplitudes) const;
   // The point holding every component's starting values (the range's middle where none).
   std::vector<double> StartPoint() const;
+  // Every component's shape coordinates at x, in CoordinateNames order (fixed ones included).
+  std::vector<std::vector<double>> ShapeValues(std::span<const double> x) const;
 
   const std::vector<ComponentSpec>& components() const { return components_; }
 
@@ -89,8 +91,6 @@ class ModelParametrisation {
     int coordinate = 0;  // index into CoordinateNames(type)
     CoordinateRange range;
   };
-  std::vector<std::vector<double>> Shapes(std::span<const double> x) const;
-
   std::vector<ComponentSpec> components_;
   std::vector<std::vector<double>> fixed_values_;  // per component, NaN where free
   std::vector<Slot> free_;

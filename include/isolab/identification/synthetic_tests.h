@@ -11,8 +11,8 @@
 namespace isolab::identification {
 
 struct SyntheticTestOptions {
-  std::vector<double> amplitudes;  // one test per amplitude (length)
-  double period = 2.0;             // (time); 0.5 Hz as in HDRB qualification tests
+  std::vector<double> amplitudes;  // one test per amplitude and period (length)
+  std::vector<double> periods{2.0};  // (time); 0.5 Hz as in HDRB qualification tests
   int cycles = 3;
   int steps_per_cycle = 200;
   double noise = 0.0;    // standard deviation of the force noise, relative to the test's RMS force
@@ -23,10 +23,12 @@ struct SyntheticTestOptions {
 // from a generator seeded with `seed` (the same seed, the same noise).
 void AddForceNoise(std::vector<CyclicTestData>* tests, double noise, unsigned seed);
 
-// A test from a computed loop, named "u=<amplitude>" and split into cycles.
-CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result);
+// A test from a computed loop, named "u=<amplitude>" ("u=<amplitude>_T=<period>" when
+// `name_period`) and split into cycles.
+CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result, bool name_period = false);
 
-// Tests named "u=<amplitude>", split into cycles.
+// Tests at every amplitude for each period in turn, named as TestFromLoop names them (with the
+// period when there are several), split into cycles.
 std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
                                            const SyntheticTestOptions& options);
 

@@ -1,0 +1,51 @@
+// Detectors: each reads the discrepancy between a fitted model and the measurements (never a
+// truth) and returns the statistic that shows its effect, with the threshold that statistic must
+// reach before isolab will name the effect. Thresholds sit well above what a model that lacks
+// nothing leaves under measurement noise (the null case of tests/diagnosis measures how far).
+//
+//   rate_dependence:     partial R^2 of a global viscous term c v in the residual, after each
+//                        test's own hysteretic-shaped terms (a sign(v) and a u column) are
+//                        taken out, so a loop that is merely too thin or too soft does not count;
+//                        c must come out positive. Supporting: the change of loop energy with
+//                        test frequency at equal amplitude, measured against modelled.
+//   amplitude_dependent_dissipation:
+//                        the largest rise, from a smaller to a larger amplitude, of
+//                        ln(measured / modelled energy per cycle).
+//   large_amplitude_hardening:
+//                        the same for the secant stiffness at the peaks. Supporting: how much
+//                        more of the residual lies at |u| > 0.7 u_a on loading branches of the
+//                        larger tests than the share of samples there.
+//   cyclic_degradation:  how much more the measured loop energy falls from the first to the last
+//                        cycle of a test than the modelled one, averaged over tests. Supporting:
+//                        the same for the secant stiffness, and the change of the residual
+//                        between first and last cycle relative to noise.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "isolab/diagnosis/discrepancy.h"
+#include "isolab/diagnosis/effects.h"
+
+namespace isolab::diagnosis {
+
+struct Statistic {
+  std::string name;
+  double value = 0.0;
+};
+
+struct Evidence {
+  Effect effect = Effect::kRateDependence;
+  std::string statistic;   // what `value` measures
+  double value = 0.0;      // the deciding statistic
+  double threshold = 0.0;  // the value it must reach to support the effect
+  std::string finding;     // one sentence with the numbers, for the report
+  std::vector<Statistic> supporting;
+
+  bool Supported() const { return value >= threshold; }
+  double Strength() const { return value / threshold; }  // ranks candidates
+};
+
+Evidence Detect(Effect effect, const Discrepancy& discrepancy);
+
+}  // namespace isolab::diagnosis

@@ -1,0 +1,56 @@
+// A fitted model set against the measurements it was fitted to: the residual force, sample by
+// sample, and what an engineer reads off each loop (energy, secant stiffness at the peaks), for
+// the measured and the modelled force alike. The detectors of effects.h read only this, never a
+// "truth".
+#pragma once
+
+#include <vector>
+
+#include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/identification/fit.h"
+
+namespace isolab::diagnosis {
+
+// One cycle of one test, read off a loop.
+struct LoopMeasure {
+  double energy = 0.0;  // dissipated energy, the loop's area (force*length)
+  // Secant stiffness between the peaks, (F+ - F-) / (u+ - u-), with F and u averaged over the
+  // samples within 3 % of each peak displacement, so noise on single samples averages out.
+  double secant = 0.0;
+};
+
+struct CycleRecord {
+  int test = 0;            // index into the data's tests
+  int cycle = 0;           // 1-based within the test
+  double amplitude = 0.0;  // max |u| (length)
+  double period = 0.0;     // duration of the cycle (time)
+  LoopMeasure measured, modelled;
+};
+
+struct Discrepancy {
+  const identification::FitData* data = nullptr;
+  std::vector<std::vector<double>> model_force;  // per test, per sample
+  std::vector<std::vector<double>> velocity;     // per test: central differences of u
+  std::vector<double> force_noise;  // per test: standard deviation of the measurement noise
+  std::vector<CycleRecord> cycles;  // every fitted cycle, in test order
+
+  // The model driven through every test and its loops measured. `data` must outlive the result.
+  static Discrepancy Of(const hysteresis::ParallelAssembly& model,
+                        const identification::FitData& data);
+};
+
+// Standard deviation of a test's force noise, from its second differences: white noise of
+// variance s^2 gives second differences of variance 6 s^2, while a smooth loop sampled finely
+// gives almost none; the median absolute deviation ignores the few samples at the kinks.
+double ForceNoise(const identification::CyclicTestData& test);
+
+// The e^2 that noise alone leaves: sum over tests of (fitted samples x noise^2) / <F0, F0>.
+double NoiseFloor(const identification::FitData& data, const std::vector<double>& force_noise);
+
+// Every cycle of every test fitted (diagnosis reads first cycles against later ones).
+identification::FitData AllCycles(std::vector<identification::CyclicTestData> tests);
+
+// Fitted samples over all tests.
+long SampleCount(const identification::FitData& data);
+
+}  // namespace isolab::diagnosis

@@ -1,0 +1,24 @@
+// Writes an identified isolator as a model file (an isolation section in the paper's mathematical
+// parameters) that `isolab run`, `isolab cyclic` and `isolation: {file: ...}` read back.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "isolab/identification/parametrisation.h"
+#include "isolab/io/units.h"
+
+namespace isolab::io {
+
+struct FittedModel {
+  std::vector<std::string> comment;  // lines written as "# ..." at the top
+  std::string description;
+  UnitSystem units{"kN", "mm", "s"};
+  std::vector<identification::ComponentSpec> components;  // names and types
+  std::vector<std::vector<double>> mathematical;          // per component, ParameterKeys order
+};
+
+// Written atomically (a temporary file renamed), so a failure leaves no half-written file.
+void WriteFittedModel(const std::string& path, const FittedModel& model);
+
+}  // namespace isolab::io

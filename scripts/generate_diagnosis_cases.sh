@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Cyclic test data with hidden effects for `isolab diagnose` (issue: discrepancy workflow): every
+# truth in models/diagnosis/ (the bilinear base plus one effect, the base alone, and two effects
+# at once) driven at 10, 25, 50, 100, 150 and 200 mm, at periods 2 s and 0.5 s, three cycles of
+# 200 samples, with 1 % Gaussian force noise and a fixed seed per case, written as
+# test,time,displacement,force CSV. tests/diagnosis/hidden_effect_cases.h draws the same data in
+# process; keep the two in step.
+# Usage: scripts/generate_diagnosis_cases.sh [OUTPUT_DIR]   (default build/diagnosis)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out="${1:-build/diagnosis}"
+mkdir -p "$out"
+seed=11
+for truth in null rate_dependence amplitude_dependent_dissipation large_amplitude_hardening \
+             cyclic_degradation two_effects; do
+  build/isolab cyclic "models/diagnosis/$truth.yaml" -a 10,25,50,100,150,200 -T 2,0.5 -n 3 \
+    --steps-per-cycle 200 --test-data "$out/$truth.csv" --noise 0.01 --seed "$seed" > /dev/null
+  echo "$out/$truth.csv"
+  seed=$((seed + 1))
+done

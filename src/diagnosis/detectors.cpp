@@ -1,0 +1,292 @@
+#include "isolab/diagnosis/detectors.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace isolab::diagnosis {
+namespace {
+
+using identification::CycleSpan;
+
+constexpr double kRateThreshold = 0.05;         // partial R^2
+constexpr double kDissipationThreshold = 0.03;  // rise of ln(energy ratio)
+constexpr double kHardeningThreshold = 0.03;    // rise of ln(secant ratio)
+constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) over a test
+
+// Per test, over its fitted cycles: mean amplitude, period, and the cycle records in order.
+struct TestSummary {
+  int test = 0;
+  double amplitude = 0.0, period = 0.0;
+  double measured_energy = 0.0, modelled_energy = 0.0;
+  double measured_secant = 0.0, modelled_secant = 0.0;
+  std::vector<const CycleRecord*> cycles;
+};
+
+std::vector<TestSummary> Summaries(const Discrepancy& d) {
+  std::map<int, TestSummary> by_test;
+  for (const CycleRecord& c : d.cycles) {
+    TestSummary& s = by_test[c.test];
+    s.test = c.test;
+    s.cycles.push_back(&c);
+  }
+  std::vector<TestSummary> result;
+  for (auto& [test, s] : by_test) {
+    const double n = static_cast<double>(s.cycles.size());
+    for (const CycleRecord* c : s.cycles) {
+      s.amplitude += c->amplitude / n;
+      s.period += c->period / n;
+      s.measured_energy += c->measured.energy / n;
+      s.modelled_energy += c->modelled.energy / n;
+      s.measured_secant += c->measured.secant / n;
+      s.modelled_secant += c->modelled.secant / n;
+    }
+    result.push_back(s);
+  }
+  return result;
+}
+
+// The largest rise of y from a smaller amplitude (by more than 5 %) to a larger one, and the two
+// tests where it happens.
+struct Rise {
+  double value = 0.0;
+  const TestSummary* from = nullptr;
+  const TestSummary* to = nullptr;
+};
+template <typename Y>
+Rise LargestRise(const std::vector<TestSummary>& tests, Y y) {
+  Rise rise;
+  for (const TestSummary& low : tests) {
+    for (const TestSummary& high : tests) {
+      if (!(high.amplitude > 1.05 * low.amplitude)) continue;
+      const double a = y(low), b = y(high);
+      if (!std::isfinite(a) || !std::isfinite(b)) continue;
+      if (!rise.to || b - a > rise.value) rise = {b - a, &low, &high};
+    }
+  }
+  rise.value = std::max(rise.value, 0.0);
+  return rise;
+}
+
+double Percent(double log_ratio) { return 100.0 * (std::exp(log_ratio) - 1.0); }
+
+Evidence RateDependence(const Discrepancy& d, const std::vector<TestSummary>& tests) {
+  Evidence e;
+  e.statistic = "share of the residual explained by a viscous force c v (partial R^2)";
+  e.threshold = kRateThreshold;
+  double cross = 0.0, velocity_norm = 0.0, residual_norm = 0.0;
+  for (std::size_t i = 0; i < d.data->tests.size(); ++i) {
+    const auto& test = d.data->tests[i];
+    std::vector<std::size_t> samples;
+    double norm = 0.0;
+    for (const CycleSpan& span : d.data->fitted[i]) {
+      for (std::size_t k = span.begin; k < span.end; ++k) {
+        samples.push_back(k);
+        norm += test.force[k] * test.force[k];
+      }
+    }
+    const Eigen::Index n = static_cast<Eigen::Index>(samples.size());
+    Eigen::MatrixXd nuisance(n, 2);
+    Eigen::VectorXd r(n), v(n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const std::size_t k = samples[j];
+      const double vk = d.velocity[i][k];
+      nuisance(j, 0) = vk > 0.0 ? 1.0 : (vk < 0.0 ? -1.0 : 0.0);
+      nuisance(j, 1) = test.displacement[k];
+      r[j] = test.force[k] - d.model_force[i][k];
+      v[j] = vk;
+    }
+    // Take out what a hysteretic model could still absorb in this test: loop width and slope.
+    const Eigen::MatrixXd normal =
+        nuisance.transpose() * nuisance +
+        1e-12 * Eigen::MatrixXd::Identity(2, 2) * std::max(1.0, nuisance.squaredNorm());
+    const Eigen::LDLT<Eigen::MatrixXd> solver(normal);
+    r -= nuisance * solver.solve(nuisance.transpose() * r);
+    v -= nuisance * solver.solve(nuisance.transpose() * v);
+    const double w = norm > 0.0 ? 1.0 / norm : 1.0;  // the e^2 weights
+    cross += w * r.dot(v);
+    velocity_norm += w * v.squaredNorm();
+    residual_norm += w * r.squaredNorm();
+  }
+  const double c = velocity_norm > 0.0 ? cross / velocity_norm : 0.0;
+  e.value = c > 0.0 && residual_norm > 0.0 ? cross * cross / (velocity_norm * residual_norm) : 0.0;
+  e.finding = fmt::format(
+      "a viscous force c v with c = {:.4g} (force*time/length) explains {:.1f} % of the residual "
+      "left after each test's own loop-width and stiffness corrections",
+      c, 100.0 * e.value);
+  e.supporting.push_back({"viscous coefficient from the residual", c});
+
+  // Equal amplitude, different frequency: the loop energy's change, measured against modelled.
+  double worst = 0.0;
+  const TestSummary *slow_test = nullptr, *fast_test = nullptr;
+  for (const TestSummary& slow : tests) {
+    for (const TestSummary& fast : tests) {
+      if (std::abs(fast.amplitude / slow.amplitude - 1.0) > 0.02 ||
+          !(slow.period > 1.2 * fast.period))
+        continue;
+      const double change = std::log(fast.measured_energy / slow.measured_energy) -
+                            std::log(fast.modelled_energy / slow.modelled_energy);
+      if (std::isfinite(change) && std::abs(change) > std::abs(worst)) {
+        worst = change;
+        slow_test = &slow;
+        fast_test = &fast;
+      }
+    }
+  }
+  if (slow_test) {
+    e.supporting.push_back(
+        {"loop energy change with frequency, measured less modelled (%)", Percent(worst)});
+    e.finding += fmt::format(
+        "; at amplitude {:.4g} the loop at period {:.3g} dissipates {:+.1f} % relative to the "
+        "loop at period {:.3g} beyond what the model predicts",
+        fast_test->amplitude, fast_test->period, Percent(worst), slow_test->period);
+  }
+  return e;
+}
+
+Evidence AmplitudeDissipation(const std::vector<TestSummary>& tests) {
+  Evidence e;
+  e.statistic = "largest rise with amplitude of ln(measured / modelled energy per cycle)";
+  e.threshold = kDissipationThreshold;
+  const Rise rise = LargestRise(
+      tests, [](const TestSummary& s) { return std::log(s.measured_energy / s.modelled_energy); });
+  e.value = rise.value;
+  if (rise.to) {
+    e.finding = fmt::format(
+        "measured energy per cycle is {:+.1f} % of the model's at amplitude {:.4g} and {:+.1f} % "
+        "at {:.4g}: it grows {:.1f} % faster between them",
+        Percent(std::log(rise.from->measured_energy / rise.from->modelled_energy)),
+        rise.from->amplitude,
+        Percent(std::log(rise.to->measured_energy / rise.to->modelled_energy)), rise.to->amplitude,
+        Percent(rise.value));
+  }
+  return e;
+}
+
+Evidence Hardening(const Discrepancy& d, const std::vector<TestSummary>& tests) {
+  Evidence e;
+  e.statistic = "largest rise with amplitude of ln(measured / modelled secant stiffness)";
+  e.threshold = kHardeningThreshold;
+  const Rise rise = LargestRise(
+      tests, [](const TestSummary& s) { return std::log(s.measured_secant / s.modelled_secant); });
+  e.value = rise.value;
+  if (rise.to) {
+    e.finding = fmt::format(
+        "measured secant stiffness is {:+.1f} % of the model's at amplitude {:.4g} and {:+.1f} % "
+        "at {:.4g}",
+        Percent(std::log(rise.from->measured_secant / rise.from->modelled_secant)),
+        rise.from->amplitude,
+        Percent(std::log(rise.to->measured_secant / rise.to->modelled_secant)), rise.to->amplitude);
+  }
+  // Where the residual lies: loading branches at large displacement of the larger tests.
+  double largest = 0.0;
+  for (const TestSummary& s : tests) largest = std::max(largest, s.amplitude);
+  double residual_there = 0.0, residual_all = 0.0;
+  long samples_there = 0, samples_all = 0;
+  for (const TestSummary& s : tests) {
+    if (s.amplitude < 0.5 * largest) continue;
+    const auto& test = d.data->tests[s.test];
+    for (const CycleSpan& span : d.data->fitted[s.test]) {
+      for (std::size_t k = span.begin; k < span.end; ++k) {
+        const double u = test.displacement[k];
+        const double r2 = std::pow(test.force[k] - d.model_force[s.test][k], 2);
+        const bool there = std::abs(u) > 0.7 * s.amplitude && u * d.velocity[s.test][k] > 0.0;
+        residual_all += r2;
+        ++samples_all;
+        if (there) residual_there += r2, ++samples_there;
+      }
+    }
+  }
+  if (samples_there > 0 && residual_all > 0.0) {
+    const double concentration =
+        (residual_there / residual_all) / (static_cast<double>(samples_there) / samples_all);
+    e.supporting.push_back(
+        {"residual concentration at |u| > 0.7 u_a on loading branches (1 = uniform)",
+         concentration});
+    e.finding += fmt::format("; the residual there is {:.2f} times its average", concentration);
+  }
+  return e;
+}
+
+Evidence Degradation(const Discrepancy& d, const std::vector<TestSummary>& tests) {
+  Evidence e;
+  e.statistic = "extra fall of ln(loop energy) from first to last cycle, measured less modelled";
+  e.threshold = kDegradationThreshold;
+  double energy_fall = 0.0, secant_fall = 0.0, change_to_noise = 0.0;
+  int count = 0;
+  for (const TestSummary& s : tests) {
+    if (s.cycles.size() < 2) continue;
+    const CycleRecord& first = *s.cycles.front();
+    const CycleRecord& last = *s.cycles.back();
+    // A loop with no area (an elastic test) has no energy to lose.
+    if (!(std::min({first.measured.energy, last.measured.energy, first.modelled.energy,
+                    last.modelled.energy}) > 0.0)) {
+      continue;
+    }
+    energy_fall += std::log(last.modelled.energy / first.modelled.energy) -
+                   std::log(last.measured.energy / first.measured.energy);
+    secant_fall += std::log(last.modelled.secant / first.modelled.secant) -
+                   std::log(last.measured.secant / first.measured.secant);
+    // Residual of the last cycle against the first, sample by sample (equal-length cycles).
+    const auto& spans = d.data->fitted[s.test];
+    const CycleSpan a = spans.front(), b = spans.back();
+    const std::size_t length = std::min(a.end - a.begin, b.end - b.begin);
+    const auto& test = d.data->tests[s.test];
+    const auto& model = d.model_force[s.test];
+    double square = 0.0;
+    for (std::size_t k = 0; k < length; ++k) {
+      const double ra = test.force[a.begin + k] - model[a.begin + k];
+      const double rb = test.force[b.begin + k] - model[b.begin + k];
+      square += (rb - ra) * (rb - ra);
+    }
+    const double noise = d.force_noise[s.test];
+    if (length > 0 && noise > 0.0) {
+      change_to_noise += std::sqrt(square / length) / (std::sqrt(2.0) * noise);
+    }
+    ++count;
+  }
+  if (count == 0) {
+    e.finding = "no test has two cycles to compare";
+    return e;
+  }
+  e.value = energy_fall / count;
+  e.finding = fmt::format(
+      "from first to last cycle the measured loop energy falls {:.1f} % more than the model's and "
+      "the secant stiffness {:.1f} % more (mean over {} tests); the residual changes between "
+      "those cycles by {:.2f} times what noise explains",
+      100.0 * (1.0 - std::exp(-e.value)), 100.0 * (1.0 - std::exp(-secant_fall / count)), count,
+      change_to_noise / count);
+  e.supporting.push_back(
+      {"extra fall of ln(secant stiffness), first to last cycle", secant_fall / count});
+  e.supporting.push_back(
+      {"residual change first to last cycle / noise (1 = noise only)", change_to_noise / count});
+  return e;
+}
+
+}  // namespace
+
+Evidence Detect(Effect effect, const Discrepancy& discrepancy) {
+  const std::vector<TestSummary> tests = Summaries(discrepancy);
+  Evidence evidence;
+  switch (effect) {
+    case Effect::kRateDependence:
+      evidence = RateDependence(discrepancy, tests);
+      break;
+    case Effect::kAmplitudeDependentDissipation:
+      evidence = AmplitudeDissipation(tests);
+      break;
+    case Effect::kLargeAmplitudeHardening:
+      evidence = Hardening(discrepancy, tests);
+      break;
+    case Effect::kCyclicDegradation:
+      evidence = Degradation(discrepancy, tests);
+      break;
+  }
+  evidence.effect = effect;
+  return evidence;
+}
+
+}  // namespace isolab::diagnosis
