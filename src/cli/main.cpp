@@ -7,6 +7,7 @@
 #include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
+#include "spectrum_command.h"
 #include "synth_command.h"
 
 int main(int argc, char** argv) {
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterSynthCommand(app, synth);
   isolab::cli::FitOptions fit;
   isolab::cli::RegisterFitCommand(app, fit);
+  isolab::cli::SpectrumOptions spectrum;
+  isolab::cli::RegisterSpectrumCommand(app, spectrum);
 
   try {
     app.parse(argc, argv);
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
     if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
+    if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;
