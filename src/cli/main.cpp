@@ -8,6 +8,7 @@
 #include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
+#include "spectrum_command.h"
 #include "synth_command.h"
 
 int main(int argc, char** argv) {
@@ -25,6 +26,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterFitCommand(app, fit);
   isolab::cli::DiagnoseOptions diagnose;
   isolab::cli::RegisterDiagnoseCommand(app, diagnose);
+  isolab::cli::SpectrumOptions spectrum;
+  isolab::cli::RegisterSpectrumCommand(app, spectrum);
 
   try {
     app.parse(argc, argv);
@@ -39,6 +42,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
     if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
+    if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

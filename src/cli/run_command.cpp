@@ -12,6 +12,7 @@
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
+#include "plot_script.h"
 
 namespace isolab::cli {
 namespace {
@@ -154,9 +155,14 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   command->add_option("--atol", options.atol, "IDA absolute tolerance (replaces analysis.ida.atol)")
       ->check(CLI::PositiveNumber);
   command->add_flag("--json", options.json, "Print the summary as JSON");
+  command->add_option("--plot", options.plot,
+                      "After writing, plot with scripts/plot_result.py into DIR (default: beside "
+                      "the results file)")
+      ->expected(0, 1);
 }
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
+  if (options.plot) CheckPlotScript("plot_result.py");  // before the run, not after it
   const io::ModelFile model = io::LoadModelFile(options.model);
   const io::AnalysisSetup setup =
       io::PrepareAnalysis(model, {options.record, options.scale, options.dt, options.fixed_base});
@@ -184,6 +190,9 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     out << SummaryJson(model, analysis, setup, peaks, summary, response, output).dump(2) << "\n";
   } else {
     PrintSummary(model, analysis, setup, peaks, summary, response, output, out);
+  }
+  if (options.plot) {
+    RunPlotScript("plot_result.py", {output, "-o", PlotDirectory(*options.plot, output)}, false);
   }
   if (!summary.ok()) {
     fmt::print(stderr, "isolab: the run stopped early: {}; results up to t = {:g} are in {}\n",

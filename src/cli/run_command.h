@@ -23,6 +23,8 @@ struct RunOptions {
   std::optional<double> rtol;    // IDA relative tolerance, overriding analysis.ida.rtol
   std::optional<double> atol;    // IDA absolute tolerance, overriding analysis.ida.atol
   bool json = false;
+  std::optional<std::string> plot;  // --plot [DIR]: PNGs by scripts/plot_result.py (default DIR:
+                                    // beside the results file)
 };
 
 void RegisterRunCommand(CLI::App& app, RunOptions& options);

@@ -1,12 +1,10 @@
 #include "isolab/io/results_file.h"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
-#include <filesystem>
 #include <vector>
 
-#include "isolab/core/errors.h"
+#include "hdf5_writer.h"
 #include "isolab/io/run_analysis.h"
 
 namespace isolab::io {
@@ -14,79 +12,17 @@ namespace {
 
 using integrators::RowMatrix;
 
-// Owns an HDF5 identifier and closes it with the matching call.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw std::runtime_error("HDF5: " + what);
-  }
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  // Closes now and reports failure (a file's close flushes it: the status matters).
-  void Close(const std::string& what) {
-    const herr_t status = close_(id_);
-    id_ = -1;
-    if (status < 0) throw std::runtime_error("HDF5: " + what);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void Check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what);
-}
-
-void WriteStringAttribute(hid_t object, const std::string& name, const std::string& value) {
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
-  Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attribute(
-      H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
-      "attribute " + name);
-  Check(H5Awrite(attribute.get(), type.get(), value.empty() ? "" : value.c_str()),
-        "attribute " + name);
-}
-
-// Text of any length (attributes stop near 64 KiB): a scalar fixed-length string dataset.
-void WriteStringDataset(hid_t location, const std::string& name, const std::string& value) {
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
-  Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle dataset(H5Dcreate2(location, name.c_str(), type.get(), space.get(), H5P_DEFAULT,
-                            H5P_DEFAULT, H5P_DEFAULT),
-                 H5Dclose, "dataset " + name);
-  Check(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                 value.empty() ? "" : value.c_str()),
-        "writing " + name);
-}
-
-void WriteNumberAttribute(hid_t object, const std::string& name, double value) {
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attribute(
-      H5Acreate2(object, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-      H5Aclose, "attribute " + name);
-  Check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &value), "attribute " + name);
-}
+using hdf5::Handle;
+using hdf5::WriteNumberAttribute;
+using hdf5::WriteStringAttribute;
+using hdf5::WriteStringDataset;
 
 // A row-major rows x columns array (columns = 0 for a vector).
 void WriteDataset(hid_t location, const std::string& name, const double* data, hsize_t rows,
                   hsize_t columns, const std::string& units) {
-  const hsize_t dims[2] = {rows, columns};
-  Handle space(H5Screate_simple(columns == 0 ? 1 : 2, dims, nullptr), H5Sclose, "space " + name);
-  Handle dataset(H5Dcreate2(location, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
-                            H5P_DEFAULT, H5P_DEFAULT),
-                 H5Dclose, "dataset " + name);
-  if (rows > 0) {
-    Check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-          "writing " + name);
-  }
-  WriteStringAttribute(dataset.get(), "units", units);
+  hdf5::WriteDataset(location, name, data,
+                     columns == 0 ? std::vector<hsize_t>{rows} : std::vector<hsize_t>{rows, columns},
+                     units);
 }
 
 void WriteMatrix(hid_t location, const std::string& name, const RowMatrix& matrix, int rows,
@@ -185,26 +121,7 @@ void WriteContents(hid_t file, const RunDescription& run) {
 }  // namespace
 
 void WriteResultsFile(const std::string& path, const RunDescription& run) {
-  const std::string temporary = path + ".tmp";
-  // HDF5 prints its own error stack by default; ours are reported through the return codes, so
-  // printing is off while writing and the caller's handler is restored afterwards.
-  H5E_auto2_t handler = nullptr;
-  void* handler_data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &handler, &handler_data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  try {
-    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
-                "cannot create the file");
-    WriteContents(file.get(), run);
-    file.Close("closing (flushing) the file");
-    std::filesystem::rename(temporary, path);
-  } catch (const std::exception& error) {
-    H5Eset_auto2(H5E_DEFAULT, handler, handler_data);
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw InputError({path}, fmt::format("cannot write results ({})", error.what()));
-  }
-  H5Eset_auto2(H5E_DEFAULT, handler, handler_data);
+  hdf5::WriteFileAtomically(path, "results", [&](hid_t file) { WriteContents(file, run); });
 }
 
 }  // namespace isolab::io

@@ -1,0 +1,43 @@
+// Response spectra on disk, chosen by extension:
+//  * .csv: one row per curve and period, long format, a '#' comment line with the record, then a
+//    header row naming each column with its unit:
+//      curve,damping,ductility,alpha,period_s,D_<L>,V_<L>/s,A_<L>/s^2,A_g,fy_over_fo,um_<L>,
+//      achieved_ductility
+//    curve "elastic" (D, V, A the elastic ordinates; the last four fields empty) or
+//    "constant_ductility" (D, V, A the yield values D_y, V_y, A_y of Chopra Sec. 7.5; fy_over_fo,
+//    the peak deformation u_m and the demand achieved). "nan" marks a strength not found.
+//  * .h5 / .hdf5 (n_z damping ratios, n_T periods, n_mu ductilities):
+//      /period (n_T), /damping (n_z)
+//      /elastic/{D,V,A,time_of_peak} (n_z x n_T)
+//      /constant_ductility/ductility (n_mu), attribute alpha; /time_step (n_T);
+//      /constant_ductility/elastic_deformation (n_z x n_T): u_o of the Newmark normalisation;
+//      /constant_ductility/{strength_ratio,D_y,V_y,A_y,u_m,achieved_ductility} (n_z x n_mu x n_T)
+//    every dataset with a "units" attribute; root attributes: record, record_scale, units,
+//    gravity (1 g in the file's acceleration unit), method, isolab_version.
+// Both are written under a temporary name and renamed, so no partial file has the final name.
+#pragma once
+
+#include <string>
+
+#include "isolab/spectra/constant_ductility.h"
+#include "isolab/spectra/elastic_spectrum.h"
+
+namespace isolab::io {
+
+struct SpectrumDescription {
+  const spectra::ElasticSpectrum* elastic = nullptr;                       // required
+  const spectra::ConstantDuctilitySpectrum* constant_ductility = nullptr;  // may be null
+  std::string record;                                                      // path
+  double scale = 1.0;
+  std::string length_unit;  // of every length in the spectra; time in s
+  double gravity = 0.0;     // 1 g in length_unit/s^2
+  std::string version;
+};
+
+// True for the extensions WriteSpectrumFile knows (.csv, .h5, .hdf5).
+bool IsSpectrumFileName(const std::string& path);
+
+// Throws InputError naming the file when it cannot be written or its extension is unknown.
+void WriteSpectrumFile(const std::string& path, const SpectrumDescription& spectrum);
+
+}  // namespace isolab::io

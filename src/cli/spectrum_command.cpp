@@ -1,0 +1,389 @@
+#include "spectrum_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "isolab/core/errors.h"
+#include "isolab/io/record.h"
+#include "isolab/io/spectrum_file.h"
+#include "isolab/io/units.h"
+#include "isolab/spectra/constant_ductility.h"
+#include "isolab/spectra/elastic_spectrum.h"
+#include "plot_script.h"
+
+namespace isolab::cli {
+namespace {
+
+constexpr const char* kPlotScript = "plot_spectrum.py";
+
+double ParseNumber(const std::string& option, const std::string& text, const std::string& token) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(token, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != token.size() || !std::isfinite(value)) {
+    throw InputError({option}, fmt::format("'{}' in '{}' is not a finite number", token, text));
+  }
+  return value;
+}
+
+std::vector<std::string> Split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, separator);) {
+    const auto first = part.find_first_not_of(" \t");
+    const auto last = part.find_last_not_of(" \t");
+    parts.push_back(first == std::string::npos ? "" : part.substr(first, last - first + 1));
+  }
+  if (!text.empty() && text.back() == separator) parts.push_back("");
+  return parts;
+}
+
+std::vector<double> ParseList(const std::string& option, const std::string& text) {
+  std::vector<double> values;
+  for (const std::string& token : Split(text, ','))
+    values.push_back(ParseNumber(option, text, token));
+  if (values.empty()) throw InputError({option}, "an empty list");
+  return values;
+}
+
+// START:STOP:STEP (STOP included when the steps reach it) or a comma-separated list, in s.
+std::vector<double> ParsePeriods(const std::string& text) {
+  const std::string option = "--periods";
+  const std::string form = "(START:STOP:STEP in s, or a comma-separated list)";
+  std::vector<double> periods;
+  if (text.find(':') != std::string::npos) {
+    const std::vector<std::string> parts = Split(text, ':');
+    if (parts.size() != 3) throw InputError({option}, fmt::format("'{}' is not {}", text, form));
+    const double start = ParseNumber(option, text, parts[0]);
+    const double stop = ParseNumber(option, text, parts[1]);
+    const double step = ParseNumber(option, text, parts[2]);
+    if (!(step > 0.0)) {
+      throw InputError({option}, fmt::format("'{}': STEP = {:g} must be > 0 {}", text, step, form));
+    }
+    if (!(stop >= start)) {
+      throw InputError({option}, fmt::format("'{}': STOP = {:g} must be >= START = {:g} {}", text,
+                                             stop, start, form));
+    }
+    const double count = std::floor((stop - start) / step + 1e-9) + 1;
+    if (count > 100000) {
+      throw InputError({option},
+                       fmt::format("'{}' gives {:g} periods (at most 100000)", text, count));
+    }
+    for (int k = 0; k < static_cast<int>(count); ++k) {
+      // 12 digits: 0.05 + 2 x 0.05 prints as 0.15, not 0.15000000000000002.
+      periods.push_back(std::stod(fmt::format("{:.12g}", start + k * step)));
+    }
+  } else {
+    periods = ParseList(option, text);
+  }
+  for (const double period : periods) {
+    if (!(period > 0.0)) {
+      throw InputError({option},
+                       fmt::format("'{}': period {:g} s must be > 0 {}", text, period, form));
+    }
+  }
+  return periods;
+}
+
+struct Inputs {
+  std::vector<double> periods, damping, ductilities;
+};
+
+Inputs ParseInputs(const SpectrumOptions& options) {
+  Inputs inputs;
+  inputs.periods = ParsePeriods(options.periods);
+  inputs.damping = ParseList("--damping", options.damping);
+  for (const double zeta : inputs.damping) {
+    if (!(zeta >= 0.0 && zeta < 1.0)) {
+      throw InputError(
+          {"--damping"},
+          fmt::format("damping ratio {:g} must be in [0, 1) (e.g. 0.05 for 5 %)", zeta));
+    }
+  }
+  if (!options.ductility.empty()) {
+    inputs.ductilities = ParseList("--ductility", options.ductility);
+    for (const double mu : inputs.ductilities) {
+      if (!(mu >= 1.0)) {
+        throw InputError({"--ductility"}, fmt::format("ductility {:g} must be >= 1", mu));
+      }
+    }
+  }
+  if (!(options.alpha >= 0.0 && options.alpha < 1.0)) {
+    throw InputError({"--alpha"}, fmt::format("{:g} must be in [0, 1)", options.alpha));
+  }
+  if (options.points_per_period < 1) {
+    throw InputError({"--points-per-period"},
+                     fmt::format("{} must be >= 1", options.points_per_period));
+  }
+  if (!(options.scale > 0.0) || !std::isfinite(options.scale)) {
+    throw InputError({"--scale"}, fmt::format("{:g} must be finite and > 0", options.scale));
+  }
+  if (options.dt && !(*options.dt > 0.0 && std::isfinite(*options.dt))) {
+    throw InputError({"--dt"}, fmt::format("{:g} must be finite and > 0", *options.dt));
+  }
+  for (const std::string& output : options.outputs) {
+    if (!io::IsSpectrumFileName(output)) {
+      throw InputError({"-o"}, fmt::format("'{}': the file type is known by its extension, "
+                                           ".csv, .h5 or .hdf5",
+                                           output));
+    }
+  }
+  if (options.plot && options.outputs.empty()) {
+    throw InputError({"--plot"},
+                     "needs an output file for the plot script to read (-o OUT.csv "
+                     "or -o OUT.h5)");
+  }
+  return inputs;
+}
+
+nlohmann::json Numbers(const std::vector<double>& values) {
+  nlohmann::json json = nlohmann::json::array();
+  for (const double value : values) {
+    if (std::isnan(value)) {
+      json.push_back(nullptr);
+    } else {
+      json.push_back(value);
+    }
+  }
+  return json;
+}
+
+nlohmann::json SpectrumJson(const io::SpectrumDescription& s, const std::vector<std::string>& files,
+                            double seconds) {
+  const spectra::ElasticSpectrum& e = *s.elastic;
+  nlohmann::json json;
+  json["record"] = s.record;
+  json["scale"] = s.scale;
+  json["units"] = {{"length", s.length_unit}, {"time", "s"}, {"g", s.gravity}};
+  json["periods"] = e.periods;
+  json["elastic"] = nlohmann::json::array();
+  const std::size_t n = e.periods.size();
+  for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
+    std::vector<double> D(n), V(n), A(n), A_g(n);
+    for (std::size_t p = 0; p < n; ++p) {
+      D[p] = e.at(d, p).deformation;
+      V[p] = e.at(d, p).pseudo_velocity;
+      A[p] = e.at(d, p).pseudo_acceleration;
+      A_g[p] = A[p] / s.gravity;
+    }
+    json["elastic"].push_back({{"damping", e.damping_ratios[d]},
+                               {"D", Numbers(D)},
+                               {"V", Numbers(V)},
+                               {"A", Numbers(A)},
+                               {"A_g", Numbers(A_g)}});
+  }
+  if (s.constant_ductility != nullptr) {
+    const spectra::ConstantDuctilitySpectrum& c = *s.constant_ductility;
+    json["constant_ductility"] = nlohmann::json::array();
+    for (std::size_t d = 0; d < c.damping_ratios.size(); ++d) {
+      for (std::size_t m = 0; m < c.ductilities.size(); ++m) {
+        std::vector<double> ratio(n), D_y(n), V_y(n), A_y(n), A_y_g(n), u_m(n), achieved(n);
+        for (std::size_t p = 0; p < n; ++p) {
+          const spectra::ConstantDuctilityPoint& x = c.at(d, m, p);
+          ratio[p] = x.strength_ratio;
+          D_y[p] = x.yield_deformation;
+          V_y[p] = x.yield_pseudo_velocity;
+          A_y[p] = x.yield_pseudo_acceleration;
+          A_y_g[p] = A_y[p] / s.gravity;
+          u_m[p] = x.peak_deformation;
+          achieved[p] = x.achieved_ductility;
+        }
+        json["constant_ductility"].push_back({{"damping", c.damping_ratios[d]},
+                                              {"ductility", c.ductilities[m]},
+                                              {"alpha", c.alpha},
+                                              {"strength_ratio", Numbers(ratio)},
+                                              {"D_y", Numbers(D_y)},
+                                              {"V_y", Numbers(V_y)},
+                                              {"A_y", Numbers(A_y)},
+                                              {"A_y_g", Numbers(A_y_g)},
+                                              {"u_m", Numbers(u_m)},
+                                              {"achieved_ductility", Numbers(achieved)}});
+      }
+    }
+    json["newmark_runs"] = c.newmark_runs;
+  }
+  json["files"] = files;
+  json["wall_seconds"] = seconds;
+  return json;
+}
+
+// One table per damping ratio: the elastic D, V, A and, per target ductility, fy/fo and A_y.
+void PrintTables(const io::SpectrumDescription& s, std::ostream& out) {
+  const spectra::ElasticSpectrum& e = *s.elastic;
+  const spectra::ConstantDuctilitySpectrum* c = s.constant_ductility;
+  const std::string& L = s.length_unit;
+  for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
+    fmt::print(out, "\nzeta = {:g}{}\n", e.damping_ratios[d],
+               c != nullptr ? fmt::format(", constant ductility with alpha = {:g}", c->alpha) : "");
+    fmt::print(out, "{:>8} {:>11} {:>11} {:>11} {:>8}", "T [s]", fmt::format("D [{}]", L),
+               fmt::format("V [{}/s]", L), fmt::format("A [{}/s^2]", L), "A [g]");
+    if (c != nullptr) {
+      for (const double mu : c->ductilities) {
+        fmt::print(out, " {:>9} {:>8}", fmt::format("fy/fo@{:g}", mu), fmt::format("Ay@{:g}", mu));
+      }
+    }
+    fmt::print(out, "\n");
+    for (std::size_t p = 0; p < e.periods.size(); ++p) {
+      const spectra::SpectralOrdinate& o = e.at(d, p);
+      fmt::print(out, "{:>8.4g} {:>11.5g} {:>11.5g} {:>11.5g} {:>8.4g}", e.periods[p],
+                 o.deformation, o.pseudo_velocity, o.pseudo_acceleration,
+                 o.pseudo_acceleration / s.gravity);
+      if (c != nullptr) {
+        for (std::size_t m = 0; m < c->ductilities.size(); ++m) {
+          const spectra::ConstantDuctilityPoint& x = c->at(d, m, p);
+          fmt::print(out, " {:>9.4g} {:>8.4g}", x.strength_ratio,
+                     x.yield_pseudo_acceleration / s.gravity);
+        }
+      }
+      fmt::print(out, "\n");
+    }
+  }
+  if (c != nullptr) {
+    fmt::print(out,
+               "\nfy/fo = f_y / (k u_o); Ay [g] = w^2 u_y / g; u_m in the files; Newmark: {} "
+               "runs\n",
+               c->newmark_runs);
+  }
+}
+
+}  // namespace
+
+void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "spectrum",
+      "Elastic (exact piecewise-linear) and constant-ductility (Newmark, elastoplastic or "
+      "bilinear) response spectra of a ground-motion record");
+  command
+      ->add_option("record", options.record,
+                   "Ground-motion record (PEER AT2, Peknold AT2, CSV, columns)")
+      ->required();
+  command->add_option("--damping", options.damping,
+                      "Damping ratios, comma-separated, in [0, 1) (default 0.05)");
+  command->add_option("--periods", options.periods,
+                      "Periods in s: START:STOP:STEP or a comma-separated list "
+                      "(default 0.05:5:0.05)");
+  command->add_option("--ductility", options.ductility,
+                      "Target ductilities >= 1, comma-separated: constant-ductility spectra");
+  command->add_option("--alpha", options.alpha,
+                      "Post-yield stiffness ratio of the inelastic system, [0, 1) (0: "
+                      "elastoplastic)");
+  command->add_option("--points-per-period", options.points_per_period,
+                      "Elastic peaks sought at >= N points per period, the record's steps cut "
+                      "into sub-steps (default 100; 1: at the record's samples, as Chopra)");
+  command->add_option("--scale", options.scale, "Scale factor on the record");
+  command->add_option("--units", options.units,
+                      "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...), "
+                      "overriding its header");
+  command->add_option("--dt", options.dt, "Sampling step of a single-column record (s)");
+  command->add_option("--length-unit", options.length_unit,
+                      "Length unit of the spectra (m, cm, mm, in, ft; default m)");
+  command->add_option("-o,--output", options.outputs,
+                      "Write the spectra: OUT.csv and/or OUT.h5 (repeat -o for both)");
+  command
+      ->add_option("--plot", options.plot,
+                   "After writing, plot with scripts/plot_spectrum.py into DIR (default: "
+                   "beside the first output)")
+      ->expected(0, 1);
+  command->add_flag("--json", options.json, "Print the spectra as JSON");
+  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+}
+
+void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
+  const auto start = std::chrono::steady_clock::now();
+  const Inputs inputs = ParseInputs(options);
+  double gravity = 0.0;
+  std::optional<io::UnitSystem> units;
+  try {
+    units.emplace("N", options.length_unit, "s");
+    gravity = units->Convert(1.0, "g", io::dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({"--length-unit"}, fmt::format("'{}': {} (allowed: m, cm, mm, in, ft)",
+                                                    options.length_unit, error.what()));
+  }
+  if (options.plot) CheckPlotScript(kPlotScript);
+
+  const io::Record record = io::ReadRecord(options.record, {options.units, options.dt.value_or(0)});
+  integrators::SampledHistory ground;
+  ground.dt = record.dt;
+  try {
+    const double factor = units->Convert(options.scale, record.units, io::dimension::kAcceleration);
+    for (const double a : record.values) ground.values.push_back(a * factor);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({options.record}, fmt::format("units '{}': {}", record.units, error.what()));
+  }
+  try {
+    spectra::ValidateSpectrumInput(ground, inputs.periods, inputs.damping);
+  } catch (const InvalidParameter& error) {
+    throw InputError({options.record}, error.violation().Describe());
+  }
+
+  const spectra::ElasticSpectrum elastic = spectra::ComputeElasticSpectrum(
+      ground, inputs.periods, inputs.damping, {options.points_per_period});
+  std::optional<spectra::ConstantDuctilitySpectrum> constant_ductility;
+  if (!inputs.ductilities.empty()) {
+    spectra::ConstantDuctilityOptions inelastic;
+    inelastic.alpha = options.alpha;
+    if (!options.quiet) {
+      fmt::print(stderr,
+                 "isolab spectrum: constant ductility {} for {} periods x {} damping ratios, "
+                 "alpha = {:g}\n",
+                 options.ductility, inputs.periods.size(), inputs.damping.size(), options.alpha);
+      auto last = std::chrono::steady_clock::now();
+      inelastic.progress = [last, start](const spectra::ConstantDuctilityProgress& p) mutable {
+        const auto now = std::chrono::steady_clock::now();
+        // At most one line a second: a progress line per period would flood a terminal.
+        if (now - last < std::chrono::seconds(1) && p.done != p.total) return;
+        last = now;
+        fmt::print(stderr,
+                   "  {:>5}/{} oscillators (T = {:g} s, zeta = {:g}), {} Newmark runs, "
+                   "{:.1f} s\n",
+                   p.done, p.total, p.period, p.damping_ratio, p.newmark_runs,
+                   std::chrono::duration<double>(now - start).count());
+      };
+    }
+    constant_ductility = spectra::ComputeConstantDuctilitySpectrum(
+        ground, inputs.periods, inputs.damping, inputs.ductilities, inelastic);
+  }
+
+  io::SpectrumDescription description;
+  description.elastic = &elastic;
+  description.constant_ductility = constant_ductility ? &*constant_ductility : nullptr;
+  description.record = options.record;
+  description.scale = options.scale;
+  description.length_unit = options.length_unit;
+  description.gravity = gravity;
+  description.version = ISOLAB_VERSION;
+  for (const std::string& output : options.outputs) io::WriteSpectrumFile(output, description);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (options.json) {
+    out << SpectrumJson(description, options.outputs, seconds).dump(2) << "\n";
+  } else {
+    fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {}; scale {:g}\n", options.record,
+               record.format, record.values.size(), record.dt, record.units, options.scale);
+    PrintTables(description, out);
+    for (const std::string& output : options.outputs) fmt::print(out, "spectra: {}\n", output);
+    fmt::print(out, "{:.2f} s\n", seconds);
+  }
+
+  if (options.plot) {
+    std::vector<std::string> arguments{options.outputs.front(), "-o",
+                                       PlotDirectory(*options.plot, options.outputs.front())};
+    if (options.quiet) arguments.push_back("--quiet");
+    RunPlotScript(kPlotScript, arguments, options.quiet);
+  }
+}
+
+}  // namespace isolab::cli

@@ -1,0 +1,141 @@
+#include "isolab/io/spectrum_file.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "hdf5_writer.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
+
+namespace isolab::io {
+namespace {
+
+std::string Extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// Shortest text that reads back to the same double; "nan" for a strength not found.
+std::string Number(double value) { return std::isnan(value) ? "nan" : fmt::format("{}", value); }
+
+void WriteCsv(std::ostream& out, const SpectrumDescription& s) {
+  const std::string& L = s.length_unit;
+  fmt::print(out,
+             "# isolab {} response spectra of {} (scale {:g}); time in s, lengths in {}, "
+             "1 g = {:.6g} {}/s^2\n",
+             s.version, s.record, s.scale, L, s.gravity, L);
+  fmt::print(out,
+             "curve,damping,ductility,alpha,period_s,D_{0},V_{0}/s,A_{0}/s^2,A_g,fy_over_fo,um_{0},"
+             "achieved_ductility\n",
+             L);
+  const spectra::ElasticSpectrum& e = *s.elastic;
+  for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
+    for (std::size_t p = 0; p < e.periods.size(); ++p) {
+      const spectra::SpectralOrdinate& o = e.at(d, p);
+      fmt::print(out, "elastic,{},,,{},{},{},{},{},,,\n", Number(e.damping_ratios[d]),
+                 Number(e.periods[p]), Number(o.deformation), Number(o.pseudo_velocity),
+                 Number(o.pseudo_acceleration), Number(o.pseudo_acceleration / s.gravity));
+    }
+  }
+  if (s.constant_ductility == nullptr) return;
+  const spectra::ConstantDuctilitySpectrum& c = *s.constant_ductility;
+  for (std::size_t d = 0; d < c.damping_ratios.size(); ++d) {
+    for (std::size_t m = 0; m < c.ductilities.size(); ++m) {
+      for (std::size_t p = 0; p < c.periods.size(); ++p) {
+        const spectra::ConstantDuctilityPoint& x = c.at(d, m, p);
+        fmt::print(out, "constant_ductility,{},{},{},{},{},{},{},{},{},{},{}\n",
+                   Number(c.damping_ratios[d]), Number(c.ductilities[m]), Number(c.alpha),
+                   Number(c.periods[p]), Number(x.yield_deformation),
+                   Number(x.yield_pseudo_velocity), Number(x.yield_pseudo_acceleration),
+                   Number(x.yield_pseudo_acceleration / s.gravity), Number(x.strength_ratio),
+                   Number(x.peak_deformation), Number(x.achieved_ductility));
+      }
+    }
+  }
+}
+
+void WriteHdf5(hid_t file, const SpectrumDescription& s) {
+  using hdf5::WriteDataset;
+  const spectra::ElasticSpectrum& e = *s.elastic;
+  const std::string length = s.length_unit, velocity = length + "/s",
+                    acceleration = length + "/s^2";
+  const hsize_t nz = e.damping_ratios.size(), nt = e.periods.size();
+  WriteDataset(file, "period", e.periods.data(), {nt}, "s");
+  WriteDataset(file, "damping", e.damping_ratios.data(), {nz}, "-");
+  {
+    const hdf5::Handle group = hdf5::CreateGroup(file, "elastic");
+    std::vector<double> column(nz * nt);
+    const auto write = [&](const char* name, double spectra::SpectralOrdinate::*field,
+                           const std::string& units) {
+      for (std::size_t k = 0; k < column.size(); ++k) column[k] = e.ordinates[k].*field;
+      WriteDataset(group.get(), name, column.data(), {nz, nt}, units);
+    };
+    write("D", &spectra::SpectralOrdinate::deformation, length);
+    write("V", &spectra::SpectralOrdinate::pseudo_velocity, velocity);
+    write("A", &spectra::SpectralOrdinate::pseudo_acceleration, acceleration);
+    write("time_of_peak", &spectra::SpectralOrdinate::time_of_peak, "s");
+  }
+  if (s.constant_ductility != nullptr) {
+    const spectra::ConstantDuctilitySpectrum& c = *s.constant_ductility;
+    if (c.periods != e.periods || c.damping_ratios != e.damping_ratios) {
+      throw std::logic_error("the elastic and constant-ductility spectra have different grids");
+    }
+    const hsize_t nm = c.ductilities.size();
+    const hdf5::Handle group = hdf5::CreateGroup(file, "constant_ductility");
+    hdf5::WriteNumberAttribute(group.get(), "alpha", c.alpha);
+    WriteDataset(group.get(), "ductility", c.ductilities.data(), {nm}, "-");
+    WriteDataset(group.get(), "time_step", c.time_steps.data(), {nt}, "s");
+    WriteDataset(group.get(), "elastic_deformation", c.elastic_deformations.data(), {nz, nt},
+                 length);
+    std::vector<double> column(c.points.size());
+    const auto write = [&](const char* name, double spectra::ConstantDuctilityPoint::*field,
+                           const std::string& units) {
+      for (std::size_t k = 0; k < column.size(); ++k) column[k] = c.points[k].*field;
+      WriteDataset(group.get(), name, column.data(), {nz, nm, nt}, units);
+    };
+    write("strength_ratio", &spectra::ConstantDuctilityPoint::strength_ratio, "-");
+    write("D_y", &spectra::ConstantDuctilityPoint::yield_deformation, length);
+    write("V_y", &spectra::ConstantDuctilityPoint::yield_pseudo_velocity, velocity);
+    write("A_y", &spectra::ConstantDuctilityPoint::yield_pseudo_acceleration, acceleration);
+    write("u_m", &spectra::ConstantDuctilityPoint::peak_deformation, length);
+    write("achieved_ductility", &spectra::ConstantDuctilityPoint::achieved_ductility, "-");
+  }
+  hdf5::WriteStringAttribute(file, "isolab_version", s.version);
+  hdf5::WriteStringAttribute(file, "record", s.record);
+  hdf5::WriteNumberAttribute(file, "record_scale", s.scale);
+  hdf5::WriteStringAttribute(file, "units", fmt::format("length {}, time s", length));
+  hdf5::WriteNumberAttribute(file, "gravity", s.gravity);
+  hdf5::WriteStringAttribute(
+      file, "method",
+      "elastic: exact piecewise-linear recurrence (Nigam-Jennings; Chopra Sec. 5.2); constant "
+      "ductility: Newmark average acceleration, largest strength giving the ductility (Chopra "
+      "Sec. 7.5)");
+}
+
+}  // namespace
+
+bool IsSpectrumFileName(const std::string& path) {
+  const std::string extension = Extension(path);
+  return extension == ".csv" || extension == ".h5" || extension == ".hdf5";
+}
+
+void WriteSpectrumFile(const std::string& path, const SpectrumDescription& spectrum) {
+  const std::string extension = Extension(path);
+  if (extension == ".csv") {
+    WriteTextFileAtomically(path, [&](std::ostream& out) { WriteCsv(out, spectrum); });
+  } else if (extension == ".h5" || extension == ".hdf5") {
+    hdf5::WriteFileAtomically(path, "the spectrum", [&](hid_t file) { WriteHdf5(file, spectrum); });
+  } else {
+    throw InputError({path}, fmt::format("unknown spectrum file type '{}' (allowed: .csv, .h5, "
+                                         ".hdf5)",
+                                         extension));
+  }
+}
+
+}  // namespace isolab::io

