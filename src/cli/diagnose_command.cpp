@@ -89,10 +89,12 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   model.units = base.units;
   model.components = result.final_model.components;
   model.mathematical = result.final_model.fit.mathematical;
-  io::WriteFittedModel(context.model_file, model);
+  // Every text first, then the files: a failure while composing leaves none behind.
   const nlohmann::json json = DiagnosisJson(result, data, context);
+  const std::string markdown = DiagnosisMarkdown(result, data, context);
+  io::WriteFittedModel(context.model_file, model);
   WriteText(stem + ".json", json.dump(2) + "\n");
-  WriteText(stem + ".md", DiagnosisMarkdown(result, data, context));
+  WriteText(stem + ".md", markdown);
 
   if (options.json) {
     out << json.dump(2) << "\n";

@@ -15,6 +15,11 @@ using diagnosis::Discrepancy;
 using diagnosis::EffectName;
 using identification::FitData;
 
+// "+4.2 %" for model against measured, "-" where the measured value is zero.
+std::string Deviation(double model, double measured) {
+  return measured != 0.0 ? fmt::format("{:+.1f} %", 100 * (model / measured - 1)) : "-";
+}
+
 std::string ComponentsText(const diagnosis::FittedModel& model) {
   std::string text;
   for (std::size_t c = 0; c < model.components.size(); ++c) {
@@ -63,6 +68,7 @@ nlohmann::json CandidateJson(const Candidate& c) {
   if (c.refitted) {
     json["e2_after"] = c.e2;
     json["bic_after"] = c.bic;
+    json["bic_before"] = c.bic_current;
   }
   return json;
 }
@@ -199,21 +205,23 @@ std::string DiagnosisMarkdown(const Diagnosis& d, const FitData& data,
   }
   const double final_e2 = d.final_model.fit.error.total;
   md += fmt::format(
-      "Final model: e^2 = {:.4g} % ({:.3g} of the base's, {:.2f} x the noise floor), written to "
-      "`{}`. The search stopped because {}.\n\n",
-      100 * final_e2, final_e2 / d.base.fit.error.total, final_e2 / d.noise_floor,
+      "Final model: e^2 = {:.4g} % ({} of the base's, {} the noise floor), written to `{}`. The "
+      "search stopped because {}.\n\n",
+      100 * final_e2,
+      d.base.fit.error.total > 0 ? fmt::format("{:.3g}", final_e2 / d.base.fit.error.total) : "-",
+      d.noise_floor > 0 ? fmt::format("{:.2f} x", final_e2 / d.noise_floor) : "above",
       context.model_file, d.stop_reason);
 
   const auto candidate_table = [&](const std::vector<Candidate>& candidates) {
     std::string t =
-        "| effect | statistic | value | threshold | supported | refitted e^2 | BIC |\n"
+        "| effect | statistic | value | threshold | supported | refitted e^2 | BIC gain |\n"
         "|---|---|---|---|---|---|---|\n";
     for (const Candidate& c : candidates) {
       t += fmt::format("| {} | {} | {:.4g} | {:.3g} | {} | {} | {} |\n",
                        EffectName(c.evidence.effect), c.evidence.statistic, c.evidence.value,
                        c.evidence.threshold, c.evidence.Supported() ? "yes" : "no",
                        c.refitted ? fmt::format("{:.4g} %", 100 * c.e2) : "-",
-                       c.refitted ? fmt::format("{:.1f}", c.bic) : "-");
+                       c.refitted ? fmt::format("{:.1f}", c.bic_current - c.bic) : "-");
     }
     return t + "\n";
   };
@@ -249,13 +257,13 @@ std::string DiagnosisMarkdown(const Diagnosis& d, const FitData& data,
     const auto& b = base_rows[i];
     const auto& f = final_rows[i];
     md += fmt::format(
-        "| {} | {:.4g} | {:.3g} | {:.5g} | {:.5g} ({:+.1f} %) | {:.5g} ({:+.1f} %) | {:.4g} | "
-        "{:.4g} ({:+.1f} %) | {:.4g} ({:+.1f} %) |\n",
+        "| {} | {:.4g} | {:.3g} | {:.5g} | {:.5g} ({}) | {:.5g} ({}) | {:.4g} | {:.4g} ({}) | "
+        "{:.4g} ({}) |\n",
         b.name, b.amplitude, b.period, b.energy_measured, b.energy_model,
-        100 * (b.energy_model / b.energy_measured - 1), f.energy_model,
-        100 * (f.energy_model / f.energy_measured - 1), b.secant_measured, b.secant_model,
-        100 * (b.secant_model / b.secant_measured - 1), f.secant_model,
-        100 * (f.secant_model / f.secant_measured - 1));
+        Deviation(b.energy_model, b.energy_measured), f.energy_model,
+        Deviation(f.energy_model, f.energy_measured), b.secant_measured, b.secant_model,
+        Deviation(b.secant_model, b.secant_measured), f.secant_model,
+        Deviation(f.secant_model, f.secant_measured));
   }
   const auto base_bands = ResidualBands(base), final_bands = ResidualBands(final_fit);
   md +=

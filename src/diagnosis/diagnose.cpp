@@ -23,7 +23,11 @@ FittedModel FitModel(std::vector<ComponentSpec> components, const identification
   options.budget = budget;
   model.fit = identification::Fit(parametrisation, data, options);
   model.parameters = parametrisation.dimension() + parametrisation.amplitude_count();
-  model.bic = InformationCriterion(model.fit.error.total, SampleCount(data), model.parameters);
+  const Discrepancy residual =
+      Discrepancy::Of(parametrisation.Assembly(model.fit.point, model.fit.amplitudes), data);
+  model.effective_samples = EffectiveSamples(SampleCount(data), ResidualCorrelation(residual));
+  model.bic =
+      InformationCriterion(model.fit.error.total, model.effective_samples, model.parameters);
   // Record the fitted shape as start values, so a refit with one more component begins here.
   const auto shapes = parametrisation.ShapeValues(model.fit.point);
   for (std::size_t c = 0; c < components.size(); ++c) {
@@ -56,8 +60,8 @@ hysteresis::ParallelAssembly AssemblyOf(const FittedModel& model,
       .Assembly(model.fit.point, model.fit.amplitudes);
 }
 
-double InformationCriterion(double e2, long samples, int parameters) {
-  const double n = static_cast<double>(samples);
+double InformationCriterion(double e2, double samples, int parameters) {
+  const double n = std::max(samples, 2.0);
   return n * std::log(std::max(e2, 1e-300) / n) + parameters * std::log(n);
 }
 
@@ -122,12 +126,19 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
       candidate.refitted = true;
       candidate.e2 = refit.fit.error.total;
       candidate.bic = refit.bic;
+      candidate.bic_current = InformationCriterion(current.fit.error.total, refit.effective_samples,
+                                                   current.parameters);
       candidate.parameters = refit.parameters;
-      say(fmt::format("  + {:<32} evidence {:.3g} (threshold {:.3g}): e^2 = {:.4g} %, BIC = {:.1f}",
-                      EffectName(candidate.evidence.effect), candidate.evidence.value,
-                      candidate.evidence.threshold, 100 * refit.fit.error.total, refit.bic));
-      if (refit.bic < current.bic - options.bic_margin &&
-          (best < 0 || refit.bic < best_model.bic)) {
+      say(fmt::format(
+          "  + {:<32} evidence {:.3g} (threshold {:.3g}): e^2 = {:.4g} %, BIC gain {:.1f}",
+          EffectName(candidate.evidence.effect), candidate.evidence.value,
+          candidate.evidence.threshold, 100 * refit.fit.error.total,
+          candidate.bic_current - refit.bic));
+      // Against the current model at the refit's effective sample count; the best is the one
+      // that lowers BIC most.
+      const double gain = candidate.bic_current - refit.bic;
+      if (gain >= options.bic_margin &&
+          (best < 0 || gain > candidates[best].bic_current - candidates[best].bic)) {
         best = static_cast<int>(c);
         best_model = std::move(refit);
       }
@@ -146,7 +157,7 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
     step.evidence = candidates[best].evidence;
     step.e2_before = e2;
     step.e2_after = best_model.fit.error.total;
-    step.bic_before = current.bic;
+    step.bic_before = candidates[best].bic_current;
     step.bic_after = best_model.bic;
     step.added = best_model.components.back();
     step.added_parameters = best_model.fit.mathematical.back();

@@ -25,6 +25,7 @@ std::pair<double, double> PeakMean(const std::vector<double>& u, const std::vect
       ++count;
     }
   }
+  if (count == 0) return {NAN, NAN};  // an empty span: no peak to read
   return {u_sum / count, f_sum / count};
 }
 
@@ -83,10 +84,39 @@ identification::FitData AllCycles(std::vector<CyclicTestData> tests) {
   identification::FitData data;
   for (const CyclicTestData& test : tests) {
     if (test.cycles.empty()) throw std::invalid_argument("test '" + test.name + "' has no cycle");
+    for (const CycleSpan& span : test.cycles) {
+      if (!(span.begin + 1 < span.end && span.end <= test.displacement.size())) {
+        throw std::invalid_argument("test '" + test.name + "' has an empty or out-of-range cycle");
+      }
+    }
     data.fitted.push_back(test.cycles);
   }
   data.tests = std::move(tests);
   return data;
+}
+
+double ResidualCorrelation(const Discrepancy& d) {
+  double lagged = 0.0, square = 0.0;
+  for (std::size_t i = 0; i < d.data->tests.size(); ++i) {
+    const auto& test = d.data->tests[i];
+    double norm = 0.0, test_lagged = 0.0, test_square = 0.0;
+    for (const CycleSpan& span : d.data->fitted[i]) {
+      for (std::size_t k = span.begin; k < span.end; ++k) {
+        const double r = test.force[k] - d.model_force[i][k];
+        norm += test.force[k] * test.force[k];
+        test_square += r * r;
+        if (k > span.begin) test_lagged += r * (test.force[k - 1] - d.model_force[i][k - 1]);
+      }
+    }
+    const double w = norm > 0.0 ? 1.0 / norm : 0.0;
+    lagged += w * test_lagged;
+    square += w * test_square;
+  }
+  return square > 0.0 ? std::clamp(lagged / square, 0.0, 0.99) : 0.0;
+}
+
+double EffectiveSamples(long samples, double rho) {
+  return static_cast<double>(samples) * (1.0 - rho) / (1.0 + rho);
 }
 
 long SampleCount(const identification::FitData& data) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -134,6 +135,17 @@ std::vector<CyclicTestData> ReadCyclicTests(const std::vector<std::string>& path
     ReadFile(path, file_units, into, &tests);
     for (std::size_t i = first; i < tests.size(); ++i) {
       CyclicTestData& test = tests[i];
+      if (std::all_of(test.force.begin(), test.force.end(), [](double f) { return f == 0.0; })) {
+        throw InputError({path}, fmt::format("test '{}': the force is zero throughout (a dead "
+                                             "channel?); e^2 weighs each test by its force",
+                                             test.name));
+      }
+      if (std::adjacent_find(test.time.begin(), test.time.end(), std::greater_equal<>()) !=
+          test.time.end()) {
+        throw InputError({path}, fmt::format("test '{}': time does not increase from sample to "
+                                             "sample (two tests under one name?)",
+                                             test.name));
+      }
       if (!Reverses(test.displacement)) {
         throw InputError({path}, fmt::format("test '{}': the displacement never reverses", test.name));
       }

@@ -28,9 +28,10 @@ integrators::RunSummary RunAnalysis(const AnalysisSection& analysis, const Analy
     for (const auto& connection : setup.structure.connections()) {
       for (const auto& kernel : connection.assembly.kernels()) {
         if (!hysteresis::HasRateForm(kernel)) {
-          throw InputError({"analysis.integrator"},
-                           "ida cannot run a degrading_bhm2 component (it has no rate form "
-                           "yet); use integrator: newmark");
+          throw InputError({"integrator ida"},
+                           "cannot run a degrading_bhm2 component (the law has no rate form "
+                           "yet); run it with Newmark (analysis.integrator: newmark, or "
+                           "--integrator newmark)");
         }
       }
     }

@@ -114,6 +114,18 @@ TEST(DiagnoseCommand, BadInputIsLocatedWithExitCodeTwoAndNoReport) {
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("broken.csv:3"), std::string::npos) << run.output;
   EXPECT_FALSE(std::filesystem::exists(stem.string() + ".json"));
+
+  // A dead force channel would dominate e^2 (each test is weighed by its own force).
+  const auto dead = Scratch("dead.csv");
+  std::ofstream(dead) << "test,time,displacement,force\n"
+                         "u=1,0,0,0\nu=1,1,1,0\nu=1,2,0,0\nu=1,3,-1,0\nu=1,4,0,0\n"
+                         "u=1,5,1,0\nu=1,6,0,0\nu=1,7,-1,0\nu=1,8,0,0\nu=1,9,1,0\n";
+  run = RunIsolab("diagnose " + dead.string() + " --base " + kSource +
+                      "/models/diagnosis/base_bhm2.yaml -q --out " + stem.string(),
+                  true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("force is zero throughout"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(stem.string() + ".md"));
 }
 
 }  // namespace

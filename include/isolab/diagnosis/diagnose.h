@@ -5,10 +5,14 @@
 // threshold, (2) the refitted model lowers BIC by a decisive margin, and (3) the current model
 // still misses by more than the measurement noise explains.
 //
-// BIC = n ln(e^2 / n) + p ln n (Schwarz 1978), with n the fitted samples and p the fitted
-// parameters (shape coordinates and stiffnesses): e^2 weights each test by its own force norm,
-// which is the Gaussian likelihood when each test's noise scales with its force, as in a load
-// cell of fixed relative accuracy. A margin of 10 is "very strong" evidence (Kass & Raftery 1995).
+// BIC = n ln(e^2 / n) + p ln n (Schwarz 1978), with p the fitted parameters (shape coordinates
+// and stiffnesses). e^2 weights each test by its own force norm, which is the Gaussian
+// likelihood when each test's noise scales with its RMS force and tests have equal sample
+// counts, as in a load cell of fixed relative accuracy. n is the effective sample count of the
+// larger model's residual, n_samples (1 - rho) / (1 + rho) with rho its lag-1 autocorrelation:
+// filtered (band-limited) noise is worth far fewer independent samples than it has, and counting
+// them all would let a component that fits a little of it through. A margin of 10 is "very
+// strong" evidence (Kass & Raftery 1995).
 #pragma once
 
 #include <functional>
@@ -23,8 +27,9 @@ namespace isolab::diagnosis {
 struct FittedModel {
   std::vector<identification::ComponentSpec> components;
   identification::FitResult fit;
-  int parameters = 0;  // fitted: shape coordinates and stiffnesses
-  double bic = 0.0;
+  int parameters = 0;              // fitted: shape coordinates and stiffnesses
+  double effective_samples = 0.0;  // of its residual (EffectiveSamples)
+  double bic = 0.0;                // at its own effective sample count
 };
 
 // An effect considered at a step: its evidence and, when the evidence supported it, the refit.
@@ -32,7 +37,8 @@ struct Candidate {
   Evidence evidence;
   bool refitted = false;
   double e2 = 0.0;  // after adding the effect's component and refitting
-  double bic = 0.0;
+  // BIC of the refit, and of the model before it, both at the refit's effective sample count.
+  double bic = 0.0, bic_current = 0.0;
   int parameters = 0;
 };
 
@@ -71,7 +77,7 @@ struct DiagnoseOptions {
 Diagnosis Diagnose(std::vector<identification::ComponentSpec> base,
                    const identification::FitData& data, const DiagnoseOptions& options);
 
-double InformationCriterion(double e2, long samples, int parameters);
+double InformationCriterion(double e2, double samples, int parameters);
 
 // The fitted model as an assembly (for reports: loops, residuals).
 hysteresis::ParallelAssembly AssemblyOf(const FittedModel& model,

@@ -50,6 +50,14 @@ double NoiseFloor(const identification::FitData& data, const std::vector<double>
 // Every cycle of every test fitted (diagnosis reads first cycles against later ones).
 identification::FitData AllCycles(std::vector<identification::CyclicTestData> tests);
 
+// Lag-1 autocorrelation of the residual within the fitted cycles, each test weighted as in e^2,
+// clamped to [0, 0.99].
+double ResidualCorrelation(const Discrepancy& discrepancy);
+
+// Samples worth as many independent ones: n (1 - rho) / (1 + rho) for residuals correlated
+// as AR(1) with lag-1 correlation rho (the variance inflation of a mean).
+double EffectiveSamples(long samples, double rho);
+
 // Fitted samples over all tests.
 long SampleCount(const identification::FitData& data);
 
