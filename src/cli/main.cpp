@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "compare_command.h"
 #include "cyclic_command.h"
 #include "fit_command.h"
 #include "isolab/core/errors.h"
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterSynthCommand(app, synth);
   isolab::cli::FitOptions fit;
   isolab::cli::RegisterFitCommand(app, fit);
+  isolab::cli::CompareOptions compare;
+  isolab::cli::RegisterCompareCommand(app, compare);
 
   try {
     app.parse(argc, argv);
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
     if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
+    if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;
