@@ -38,6 +38,8 @@ target_link_libraries(isolab_klu INTERFACE ${KLU_LIBRARIES})
 isolab_require(fmt libfmt-dev)
 isolab_require(CLI11 libcli11-dev CONFIG)
 isolab_require(nlohmann_json nlohmann-json3-dev)
+# OpenMPI for `mpirun -np K isolab compare` (the command also runs without mpirun, on threads).
+isolab_require(MPI "libopenmpi-dev openmpi-bin" COMPONENTS CXX)
 if(ISOLAB_BUILD_TESTS)
   isolab_require(GTest libgtest-dev)
 endif()

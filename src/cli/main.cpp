@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "compare_command.h"
 #include "cyclic_command.h"
 #include "diagnose_command.h"
 #include "fit_command.h"
@@ -28,6 +29,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterDiagnoseCommand(app, diagnose);
   isolab::cli::SpectrumOptions spectrum;
   isolab::cli::RegisterSpectrumCommand(app, spectrum);
+  isolab::cli::CompareOptions compare;
+  isolab::cli::RegisterCompareCommand(app, compare);
 
   try {
     app.parse(argc, argv);
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
     if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
     if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
+    if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

@@ -116,36 +116,8 @@ ModelFile LoadModelFile(const std::string& path) {
   }
   model.units = ReadUnits(reader, root);
   if (root["isolation"]) {
-    const YAML::Node isolation = root["isolation"];
-    reader.RequireMap(isolation, "isolation");
-    reader.CheckKeys(isolation, "isolation", {"components", "file"});
-    if (isolation["file"]) {
-      // The isolation section of another model file (e.g. one written by isolab fit), relative
-      // to this file; in the same units, since its numbers are read in its own.
-      if (isolation["components"]) {
-        reader.Fail(isolation, "isolation", "give components or file, not both");
-      }
-      const std::string relative = reader.ReadString(isolation["file"], "isolation.file");
-      const std::filesystem::path other = std::filesystem::path(path).parent_path() / relative;
-      const ModelFile included = LoadModelFile(other.string());
-      if (included.isolation.size() == 0) {
-        reader.Fail(isolation["file"], "isolation.file",
-                    fmt::format("'{}' has no isolation section", other.string()));
-      }
-      if (included.units.force() != model.units.force() ||
-          included.units.length() != model.units.length() ||
-          included.units.time() != model.units.time()) {
-        reader.Fail(isolation["file"], "isolation.file",
-                    fmt::format("'{}' is in {} {} {}, this file in {} {} {}", other.string(),
-                                included.units.force(), included.units.length(),
-                                included.units.time(), model.units.force(), model.units.length(),
-                                model.units.time()));
-      }
-      model.isolation = included.isolation;
-    } else {
-      model.isolation = ReadAssembly(reader, reader.Require(isolation, "isolation", "components"),
-                                     "isolation.components", model.units);
-    }
+    model.isolation = ReadIsolation(reader, root["isolation"], "isolation",
+                                    std::filesystem::path(path).parent_path(), model.units);
   }
   if (root["structure"]) model.structure = ReadStructure(reader, root["structure"], model.units);
   if (root["excitation"])

@@ -1,6 +1,9 @@
 // Readers of the model file's sections, one file each; LoadModelFile (model_file.cpp) calls them.
 #pragma once
 
+#include <filesystem>
+#include <string>
+
 #include "isolab/io/model_file.h"
 #include "yaml_reader.h"
 
@@ -12,6 +15,13 @@ UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
 // A list of law components (an isolation layer, a hysteretic story).
 hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
                                           const std::string& path, const UnitSystem& units);
+
+// `{components: [...]}` or `{file: other.yaml}` (relative to `directory`, in the same `units`), at
+// key path `path` ("isolation", "variants[2].isolation").
+hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
+                                           const std::string& path,
+                                           const std::filesystem::path& directory,
+                                           const UnitSystem& units);
 
 StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
                                const UnitSystem& units);

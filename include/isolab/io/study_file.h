@@ -1,0 +1,63 @@
+// Study files (YAML) for `isolab compare`: one building, several isolator variants, a suite of
+// records at several scale factors. Paths are relative to the study file.
+//
+//   description: free text
+//   building: ../buildings/five_story_table9.yaml   # a model file with a structure section;
+//                                                   # its units are the study's
+//   variants:                                       # at least one; names are unique
+//     - {name: thm1, isolation: {file: ../paper/table9_thm1_system.yaml}}
+//     - name: bilinear                              # components in the building's units
+//       isolation: {components: [{name: b, type: bhm2, ke: 8, kh: 0.8, fs: 18}]}
+//     - {name: as_built}                            # the building's own isolation
+//     - {name: other, model: other_building.yaml}   # a whole model file instead of the building
+//     - {name: fixed, fixed_base: true}             # the building without isolation
+//   reference: thm1                                 # ratios are to this variant; default: first
+//   records: [../../ground_motions/*.at2, extra/rec.csv]   # files or globs (* ? [..] in the
+//                                                   # file name), each glob sorted by name
+//   scales: [0.5, 1.0, 1.5]                         # replace the building's ground_motion.scale
+//   output: {directory: results}                    # per-run HDF5 and summary; relative to the
+//                                                   # working directory, like a model's output
+//
+// The building's analysis section (dt, duration, integrator) applies to every run; a `model`
+// variant brings its own. Every error is an InputError "file:line:col: key path: what (allowed)".
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "isolab/io/model_file.h"
+#include "isolab/io/units.h"
+
+namespace isolab::io {
+
+struct StudyVariant {
+  std::string name;
+  ModelFile model;  // what runs: the building with this variant's isolation, or its own model
+  bool fixed_base = false;
+};
+
+struct StudyRecord {
+  std::string name;  // the file's stem, unique within a study
+  std::string path;  // as found (relative to the working directory or absolute)
+};
+
+struct StudyFile {
+  std::string path;
+  std::string description;
+  std::string building_path;
+  UnitSystem units{"kN", "mm", "s"};  // the building's: summary quantities are in these
+  std::vector<StudyVariant> variants;
+  std::size_t reference = 0;  // index into variants
+  std::vector<StudyRecord> records;
+  std::vector<double> scales;
+  std::string output_directory;  // empty: not given
+};
+
+// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types, a
+// variant or building model that does not load, a glob that matches nothing, a missing record
+// file, two records with the same name, or an unknown reference. Records are only opened when
+// a run reads them, so a record that exists but cannot be read fails its runs, not the study.
+StudyFile LoadStudyFile(const std::string& path);
+
+}  // namespace isolab::io

@@ -1,0 +1,28 @@
+// What one run of a study reports back: its status and the quantities measured. An MPI worker
+// sends it to rank 0 as bytes (Serialize), doubles bit for bit, so the summary is the same
+// whichever process ran the job.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "isolab/study/quantities.h"
+
+namespace isolab::study {
+
+struct JobResult {
+  std::size_t job = 0;
+  bool completed = false;
+  std::string message;                 // why the run failed; empty when it completed
+  QuantityValues values = NoValues();  // NaN when failed or not applicable
+  std::string file;  // the run's HDF5 results, relative to the output folder; empty: none written
+  double wall_seconds = 0.0;  // for progress only: never in a summary (machine-dependent)
+};
+
+std::vector<char> Serialize(const JobResult& result);
+// Throws std::runtime_error for a buffer that Serialize did not write.
+JobResult Deserialize(std::span<const char> bytes);
+
+}  // namespace isolab::study

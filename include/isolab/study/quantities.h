@@ -1,0 +1,56 @@
+// The response quantities a study compares, measured from one run:
+//   isolator_displacement           peak |u| of the isolation layer (length)
+//   base_shear                      peak |force into the ground| (force)
+//   story_drift_ratio               peak |drift| / height over every story with a height (%)
+//   floor_acceleration              peak |absolute acceleration| over the floors above the
+//                                   isolation (every DOF of a model without stories) (g)
+//   residual_isolator_displacement  |u| of the isolation layer at the end of the run (length)
+// Lengths and forces are in the study's units (its building's), whatever the variant's model
+// uses. A quantity a variant does not have (a fixed base has no isolator) is NaN.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "isolab/integrators/response.h"
+#include "isolab/io/analysis_setup.h"
+#include "isolab/io/units.h"
+
+namespace isolab::study {
+
+enum class Quantity {
+  kIsolatorDisplacement,
+  kBaseShear,
+  kStoryDriftRatio,
+  kFloorAcceleration,
+  kResidualIsolatorDisplacement,
+};
+inline constexpr std::size_t kQuantityCount = 5;
+
+using QuantityValues = std::array<double, kQuantityCount>;
+
+struct QuantityInfo {
+  Quantity quantity;
+  std::string_view key;    // column and dataset name
+  std::string_view label;  // short heading for the terminal
+};
+
+// Every quantity, in the order of QuantityValues.
+std::span<const QuantityInfo> Quantities();
+
+// "mm", "kN", "%", "g": the unit quantity values are in, for a study in `units`.
+std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units);
+
+// All NaN: nothing measured.
+QuantityValues NoValues();
+
+// `model_units` are the run's model's, `study_units` the study's.
+QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
+                                 const integrators::ResponseHistory& response,
+                                 const io::UnitSystem& model_units,
+                                 const io::UnitSystem& study_units);
+
+}  // namespace isolab::study

@@ -1,0 +1,187 @@
+#include "compare_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <malloc.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "isolab/core/errors.h"
+#include "isolab/io/study_file.h"
+#include "isolab/study/jobs.h"
+#include "isolab/study/mpi_scheduler.h"
+#include "isolab/study/run_job.h"
+#include "isolab/study/scheduler.h"
+#include "isolab/study/summary.h"
+#include "isolab/study/summary_file.h"
+#include "isolab/study/summary_table.h"
+#include "plot_script.h"
+
+namespace isolab::cli {
+namespace {
+
+// Each run allocates and frees its response arrays (megabytes). glibc would map and unmap each
+// from the kernel; threads sharing one address space then serialise on the page faults and TLB
+// shootdowns (15 % of the 2-thread throughput on the bundled study). Served and reused from the
+// heap instead (glibc's ceiling for the threshold is 32 MB on 64-bit).
+void KeepRunBuffersInTheHeap() {
+  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+  mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
+}
+
+std::string Count(std::size_t n, const char* noun) {
+  return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
+}
+
+std::string OutputDirectory(const CompareOptions& options, const io::StudyFile& study) {
+  if (!options.output.empty()) return options.output;
+  if (!study.output_directory.empty()) return study.output_directory;
+  return std::filesystem::path(options.study).stem().string();
+}
+
+// Every process makes the folder itself (MPI workers write their runs there too), so a folder
+// that cannot be made is bad input on every rank alike.
+void MakeDirectory(const std::string& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error || !std::filesystem::is_directory(directory)) {
+    throw InputError({directory}, fmt::format("cannot create the output folder ({})",
+                                              error ? error.message() : "not a folder"));
+  }
+}
+
+// Summary files (CSV and HDF5) and the table on `out`.
+void WriteSummary(const CompareOptions& options, const io::StudyFile& study_file,
+                  const std::vector<study::JobResult>& results, const std::string& directory,
+                  std::ostream& out) {
+  const study::Summary summary = study::BuildSummary(study::ShapeOf(study_file), results);
+  const std::filesystem::path folder(directory);
+  const std::string csv = (folder / "summary.csv").string();
+  const std::string h5 = (folder / "summary.h5").string();
+  study::WriteSummaryCsv(csv, summary);
+  study::WriteSummaryHdf5(h5, summary, options.study, ISOLAB_VERSION);
+  fmt::print(out, "== {} ==\n", options.study);
+  if (!study_file.description.empty()) fmt::print(out, "{}\n", study_file.description);
+  fmt::print(out, "\n");
+  study::PrintSummaryTable(summary, out);
+  fmt::print(out, "\nsummary: {}, {}\nruns: {}\n", csv, h5, (folder / "runs").string());
+  if (summary.failed() > 0) {
+    fmt::print(out, "{} of {} runs failed (see the summary's status and message)\n",
+               summary.failed(), summary.runs.size());
+  }
+}
+
+std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, bool mpi) {
+  if (mpi) {
+    if (options.jobs > 0 && !options.quiet && study::LaunchRank() == 0) {
+      fmt::print(stderr,
+                 "isolab compare: under mpirun each rank runs one job at a time; "
+                 "--jobs is ignored\n");
+    }
+    return study::MakeMpiScheduler();
+  }
+  const int threads =
+      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  return study::MakeThreadScheduler(std::max(threads, 1));
+}
+
+}  // namespace
+
+void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "compare",
+      "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
+      "(threads, or MPI ranks under mpirun)");
+  command->add_option("study", options.study, "Study file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", options.output,
+                      "Output folder (default: the study's output.directory, else its name)");
+  command
+      ->add_option("-j,--jobs", options.jobs,
+                   "Threads without mpirun (default: every hardware thread)")
+      ->check(CLI::PositiveNumber);
+  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  command->add_flag("--plot", options.plot,
+                    "Bar charts of the summary in <output>/plots (scripts/plot_study.py)");
+}
+
+int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
+  const bool mpi = study::LaunchedByMpirun();
+  io::StudyFile study_file;
+  std::string directory;
+  try {
+    study_file = io::LoadStudyFile(options.study);
+    if (options.plot) CheckPlotScript("plot_study.py");  // before the runs, not after
+    directory = OutputDirectory(options, study_file);
+    MakeDirectory(directory);
+  } catch (const InputError&) {
+    // Every rank reads the same input and fails alike; rank 0 alone says why.
+    if (mpi && study::LaunchRank() != 0) return 2;
+    throw;
+  }
+  const std::vector<study::Job> jobs = study::ExpandJobs(study_file);
+  KeepRunBuffersInTheHeap();
+  std::size_t failed = 0;
+  {
+    // MPI lives as long as the scheduler: the plot script below runs after MPI_Finalize.
+    const std::unique_ptr<study::Scheduler> scheduler = MakeScheduler(options, mpi);
+    const bool coordinator = scheduler->IsCoordinator();
+    if (coordinator && !options.quiet) {
+      fmt::print(stderr, "isolab compare: {} ({} x {} x {}) on {}\n", Count(jobs.size(), "run"),
+                 Count(study_file.variants.size(), "variant"),
+                 Count(study_file.records.size(), "record"),
+                 Count(study_file.scales.size(), "scale"), scheduler->Describe());
+    }
+    const study::ProgressFunction progress = [&](const study::JobResult& result, std::size_t done,
+                                                 std::size_t total) {
+      if (options.quiet) return;
+      const std::string label = study::JobLabel(study_file, jobs[result.job]);
+      if (result.completed) {
+        fmt::print(stderr, "[{}/{}] {} ... {:.3f} s\n", done, total, label, result.wall_seconds);
+      } else {
+        fmt::print(stderr, "[{}/{}] {} ... failed: {}\n", done, total, label, result.message);
+      }
+    };
+    const study::ScheduleOutcome outcome = scheduler->Run(
+        jobs.size(),
+        [&](std::size_t job) {
+          return study::RunJob(study_file, jobs[job], directory, ISOLAB_VERSION);
+        },
+        progress);
+    failed = outcome.failed;
+    // Rank 0 reports failed runs in its summary and exit code. A worker leaving with 1 would
+    // make mpirun abort the job while rank 0 may still be plotting.
+    if (!coordinator) return 0;
+
+    if (!options.quiet) {
+      fmt::print(stderr, "{} runs in {:.2f} s on {}: {:.1f} runs/s; {} failed\n", jobs.size(),
+                 outcome.wall_seconds, scheduler->Describe(),
+                 outcome.wall_seconds > 0.0
+                     ? static_cast<double>(jobs.size()) / outcome.wall_seconds
+                     : 0.0,
+                 failed);
+    }
+    WriteSummary(options, study_file, outcome.results, directory, out);
+  }
+  if (options.plot) {
+    const std::filesystem::path folder(directory);
+    try {
+      RunPlotScript("plot_study.py",
+                    {(folder / "summary.h5").string(), "-o", (folder / "plots").string()},
+                    options.quiet);
+    } catch (const std::runtime_error& error) {
+      fmt::print(stderr, "isolab compare: --plot: {}\n", error.what());
+      return 1;
+    }
+  }
+  return failed > 0 ? 1 : 0;
+}
+
+}  // namespace isolab::cli

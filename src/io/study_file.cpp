@@ -1,0 +1,255 @@
+#include "isolab/io/study_file.h"
+
+#include <fmt/format.h>
+#include <glob.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <span>
+#include <string_view>
+#include <utility>
+
+#include "model_sections.h"
+
+namespace isolab::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kStudyKeys[] = {"description", "building", "variants", "reference",
+                                           "records",     "scales",   "output"};
+constexpr std::string_view kVariantKeys[] = {"name", "isolation", "model", "fixed_base"};
+
+bool ReadFlag(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
+  const std::string text = reader.ReadString(node, path);
+  if (text == "true") return true;
+  if (text == "false") return false;
+  reader.Fail(node, path, fmt::format("'{}' is not true or false", text));
+}
+
+// Variant names become folder names of the per-run results, so they stay portable.
+void CheckName(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+               const std::string& name) {
+  const bool portable =
+      !name.empty() && name != "." && name != ".." &&
+      std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      });
+  if (!portable) {
+    reader.Fail(node, path,
+                fmt::format("'{}' (a name takes letters, digits, '_', '-' and '.')", name));
+  }
+}
+
+ModelFile LoadStructureModel(const YamlReader& reader, const YAML::Node& node,
+                             const std::string& path, const fs::path& directory) {
+  const std::string file = (directory / reader.ReadString(node, path)).lexically_normal().string();
+  ModelFile model = LoadModelFile(file);
+  if (!model.structure) {
+    reader.Fail(node, path, fmt::format("'{}' has no structure section: nothing to run", file));
+  }
+  return model;
+}
+
+// The building with `isolation` in place of its own; its stored text says so, since results
+// files keep the model's YAML as the record of what ran.
+ModelFile WithIsolation(const ModelFile& building, hysteresis::ParallelAssembly isolation,
+                        const std::string& study_path, const std::string& variant,
+                        const YAML::Node& node) {
+  ModelFile model = building;
+  model.isolation = std::move(isolation);
+  YAML::Emitter emitter;
+  emitter << YAML::Flow << node;
+  model.text += fmt::format(
+      "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
+      "{}\n",
+      study_path, variant, emitter.c_str());
+  return model;
+}
+
+StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                         const fs::path& directory, const ModelFile& building) {
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, kVariantKeys);
+  StudyVariant variant;
+  const std::string name_path = ChildPath(path, "name");
+  variant.name = reader.ReadString(reader.Require(node, path, "name"), name_path);
+  CheckName(reader, node["name"], name_path, variant.name);
+  if (node["fixed_base"]) {
+    variant.fixed_base = ReadFlag(reader, node["fixed_base"], ChildPath(path, "fixed_base"));
+  }
+  if (node["isolation"] && node["model"]) {
+    reader.Fail(node, path, "give isolation or model, not both");
+  }
+  if (node["model"]) {
+    variant.model = LoadStructureModel(reader, node["model"], ChildPath(path, "model"), directory);
+  } else if (node["isolation"]) {
+    const std::string isolation_path = ChildPath(path, "isolation");
+    if (variant.fixed_base) {
+      reader.Fail(node["fixed_base"], ChildPath(path, "fixed_base"),
+                  "a fixed-base variant has no isolation; remove one of the two");
+    }
+    const StructureSection& structure = *building.structure;
+    if (structure.kind == StructureSection::Kind::kShearBuilding &&
+        !(structure.building.base_mass > 0.0)) {
+      reader.Fail(node["isolation"], isolation_path,
+                  fmt::format("the building '{}' has no base_mass, which an isolated building "
+                              "needs",
+                              building.path));
+    }
+    variant.model = WithIsolation(
+        building,
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units),
+        reader.file(), variant.name, node["isolation"]);
+  } else {
+    variant.model = building;
+  }
+  if (variant.fixed_base) {
+    if (variant.model.structure->kind != StructureSection::Kind::kShearBuilding) {
+      reader.Fail(node["fixed_base"], ChildPath(path, "fixed_base"),
+                  "applies to a shear building only");
+    }
+    variant.model.text +=
+        fmt::format("\n# isolab compare, study {}, variant {}: run on a fixed base\n",
+                    reader.file(), variant.name);
+  }
+  return variant;
+}
+
+bool IsGlob(std::string_view pattern) {
+  return pattern.find_first_of("*?[") != std::string_view::npos;
+}
+
+// Regular files matching `pattern`, in byte order of their paths (glob(3) would sort by the
+// locale's collation, which differs between machines).
+std::vector<std::string> ExpandGlob(const std::string& pattern) {
+  glob_t matches{};
+  const int status = glob(pattern.c_str(), GLOB_NOSORT, nullptr, &matches);
+  std::vector<std::string> files;
+  if (status == 0) {
+    for (std::size_t i = 0; i < matches.gl_pathc; ++i) {
+      std::error_code error;
+      if (fs::is_regular_file(matches.gl_pathv[i], error)) files.emplace_back(matches.gl_pathv[i]);
+    }
+  }
+  globfree(&matches);
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
+                                     const fs::path& directory) {
+  reader.RequireSequence(list, "records");
+  if (list.size() == 0) reader.Fail(list, "records", "the list is empty (give files or globs)");
+  std::vector<StudyRecord> records;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = IndexPath("records", i);
+    const std::string entry = reader.ReadString(list[i], path);
+    const std::string pattern = (directory / entry).lexically_normal().string();
+    std::vector<std::string> files;
+    if (IsGlob(entry)) {
+      files = ExpandGlob(pattern);
+      if (files.empty()) reader.Fail(list[i], path, fmt::format("'{}' matches no file", pattern));
+    } else {
+      std::error_code error;
+      if (!fs::is_regular_file(pattern, error)) {
+        reader.Fail(list[i], path, fmt::format("'{}' is not a file", pattern));
+      }
+      files.push_back(pattern);
+    }
+    for (const std::string& file : files) {
+      const std::string name = fs::path(file).stem().string();
+      const auto same = std::find_if(records.begin(), records.end(),
+                                     [&](const StudyRecord& r) { return r.name == name; });
+      if (same != records.end()) {
+        reader.Fail(list[i], path,
+                    fmt::format("'{}' has the name '{}' of '{}' (record names are file stems "
+                                "and must be unique)",
+                                file, name, same->path));
+      }
+      records.push_back({name, file});
+    }
+  }
+  return records;
+}
+
+std::vector<double> ReadScales(const YamlReader& reader, const YAML::Node& list) {
+  reader.RequireSequence(list, "scales");
+  if (list.size() == 0) reader.Fail(list, "scales", "the list is empty");
+  std::vector<double> scales;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = IndexPath("scales", i);
+    const double scale = reader.ReadNumber(list[i], path);
+    if (!(scale > 0.0) || !std::isfinite(scale)) {
+      reader.Fail(list[i], path, fmt::format("{:g} (must be a finite number > 0)", scale));
+    }
+    if (std::find(scales.begin(), scales.end(), scale) != scales.end()) {
+      reader.Fail(list[i], path, fmt::format("{:g} is already in the list", scale));
+    }
+    scales.push_back(scale);
+  }
+  return scales;
+}
+
+}  // namespace
+
+StudyFile LoadStudyFile(const std::string& path) {
+  const YamlReader reader(path);
+  const YAML::Node root = reader.LoadFile();
+  reader.RequireMap(root, "");
+  reader.CheckKeys(root, "", kStudyKeys);
+  StudyFile study;
+  study.path = path;
+  const fs::path directory = fs::path(path).parent_path();
+  if (root["description"]) {
+    study.description = reader.ReadString(root["description"], "description");
+  }
+  const ModelFile building =
+      LoadStructureModel(reader, reader.Require(root, "", "building"), "building", directory);
+  study.building_path = building.path;
+  study.units = building.units;
+
+  const YAML::Node variants = reader.Require(root, "", "variants");
+  reader.RequireSequence(variants, "variants");
+  if (variants.size() == 0) reader.Fail(variants, "variants", "the list is empty");
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const std::string variant_path = IndexPath("variants", i);
+    study.variants.push_back(ReadVariant(reader, variants[i], variant_path, directory, building));
+    const std::string& name = study.variants.back().name;
+    const auto same = std::find(names.begin(), names.end(), name);
+    if (same != names.end()) {
+      reader.Fail(
+          variants[i]["name"], ChildPath(variant_path, "name"),
+          fmt::format("'{}' is already the name of variants[{}]", name, same - names.begin()));
+    }
+    names.push_back(name);
+  }
+  if (root["reference"]) {
+    const std::string reference = reader.ReadString(root["reference"], "reference");
+    const auto found = std::find(names.begin(), names.end(), reference);
+    if (found == names.end()) {
+      const std::vector<std::string_view> candidates(names.begin(), names.end());
+      const std::string_view nearest = NearestWord(reference, candidates);
+      reader.Fail(
+          root["reference"], "reference",
+          fmt::format("'{}' is not a variant{}", reference,
+                      nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest)));
+    }
+    study.reference = static_cast<std::size_t>(found - names.begin());
+  }
+  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory);
+  study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
+  if (root["output"]) {
+    const YAML::Node output = root["output"];
+    reader.RequireMap(output, "output");
+    reader.CheckKeys(output, "output", {"directory"});
+    study.output_directory =
+        reader.ReadString(reader.Require(output, "output", "directory"), "output.directory");
+  }
+  return study;
+}
+
+}  // namespace isolab::io

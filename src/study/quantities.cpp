@@ -1,0 +1,105 @@
+#include "isolab/study/quantities.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "isolab/io/response_peaks.h"
+
+namespace isolab::study {
+namespace {
+
+constexpr QuantityInfo kQuantities[] = {
+    {Quantity::kIsolatorDisplacement, "isolator_displacement", "isolator"},
+    {Quantity::kBaseShear, "base_shear", "base shear"},
+    {Quantity::kStoryDriftRatio, "story_drift_ratio", "drift"},
+    {Quantity::kFloorAcceleration, "floor_acceleration", "floor acc."},
+    {Quantity::kResidualIsolatorDisplacement, "residual_isolator_displacement", "residual"},
+};
+static_assert(std::size(kQuantities) == kQuantityCount);
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The DOFs whose absolute acceleration is a floor's: the top of each story, or every DOF of a
+// model without stories (an SDOF's mass).
+std::vector<int> FloorDofs(const io::AnalysisSetup& setup) {
+  std::vector<int> dofs;
+  const auto& connections = setup.structure.connections();
+  for (const int story : setup.layout.stories) dofs.push_back(connections[story].dof_j);
+  if (dofs.empty()) {
+    for (int dof = 0; dof < setup.structure.dofs(); ++dof) dofs.push_back(dof);
+  }
+  return dofs;
+}
+
+}  // namespace
+
+std::span<const QuantityInfo> Quantities() { return kQuantities; }
+
+std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units) {
+  switch (quantity) {
+    case Quantity::kIsolatorDisplacement:
+    case Quantity::kResidualIsolatorDisplacement:
+      return units.length();
+    case Quantity::kBaseShear:
+      return units.force();
+    case Quantity::kStoryDriftRatio:
+      return "%";
+    case Quantity::kFloorAcceleration:
+      return "g";
+  }
+  return "";
+}
+
+QuantityValues NoValues() {
+  QuantityValues values;
+  values.fill(kNaN);
+  return values;
+}
+
+QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
+                                 const integrators::ResponseHistory& response,
+                                 const io::UnitSystem& model_units,
+                                 const io::UnitSystem& study_units) {
+  const double length =
+      model_units.SiFactor(io::dimension::kLength) / study_units.SiFactor(io::dimension::kLength);
+  const double force =
+      model_units.SiFactor(io::dimension::kForce) / study_units.SiFactor(io::dimension::kForce);
+  const double g = model_units.Convert(1.0, "g", io::dimension::kAcceleration);
+  const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
+  const int rows = response.rows_written;
+
+  QuantityValues values = NoValues();
+  const auto set = [&](Quantity q, double value) { values[static_cast<std::size_t>(q)] = value; };
+  set(Quantity::kBaseShear, peaks.base_shear.value * force);
+  if (setup.layout.isolation >= 0) {
+    set(Quantity::kIsolatorDisplacement, peaks.isolator_displacement.value * length);
+    const int dof = setup.structure.connections()[setup.layout.isolation].dof_j;
+    if (rows > 0) {
+      set(Quantity::kResidualIsolatorDisplacement,
+          std::abs(response.displacement(rows - 1, dof)) * length);
+    }
+  }
+  // The largest ratio, which need not be the largest drift's when heights differ.
+  double drift_ratio = kNaN;
+  for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
+    const double height = setup.layout.story_heights[s];
+    if (!(height > 0.0)) continue;
+    if (std::isnan(drift_ratio)) drift_ratio = 0.0;
+    for (int row = 0; row < rows; ++row) {
+      drift_ratio = std::max(
+          drift_ratio, std::abs(io::StoryDrift(setup, response.displacement, row, s)) / height);
+    }
+  }
+  set(Quantity::kStoryDriftRatio, 100.0 * drift_ratio);
+  double acceleration = 0.0;
+  for (const int dof : FloorDofs(setup)) {
+    for (int row = 0; row < rows; ++row) {
+      acceleration = std::max(acceleration, std::abs(response.absolute_acceleration(row, dof)));
+    }
+  }
+  set(Quantity::kFloorAcceleration, acceleration / g);
+  return values;
+}
+
+}  // namespace isolab::study

@@ -1,0 +1,171 @@
+#include "isolab/study/summary_file.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "isolab/io/atomic_file.h"
+#include "isolab/io/hdf5_file.h"
+
+namespace isolab::study {
+namespace {
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+// Shortest decimal that reads back as the same double, so the CSV is as exact as the HDF5.
+std::string Exact(double value) { return std::isfinite(value) ? fmt::format("{}", value) : ""; }
+
+std::string StatisticStatus(std::size_t completed, std::size_t records) {
+  if (completed == records) return "completed";
+  return completed == 0 ? "failed" : "partial";
+}
+
+void WriteCsvRow(std::ostream& out, const std::vector<std::string>& fields) {
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    out << (i > 0 ? "," : "") << CsvField(fields[i]);
+  }
+  out << "\n";
+}
+
+std::vector<std::string> RowStart(const std::string& variant, const std::string& record,
+                                  double scale, const std::string& status,
+                                  const QuantityValues& values, const QuantityValues& ratios) {
+  std::vector<std::string> fields = {variant, record, fmt::format("{}", scale), status};
+  for (const double value : values) fields.push_back(Exact(value));
+  for (const double ratio : ratios) fields.push_back(Exact(ratio));
+  return fields;
+}
+
+// Quantity q of every element of `items`, in order.
+template <typename Item, typename Get>
+std::vector<double> Column(const std::vector<Item>& items, std::size_t q, Get get) {
+  std::vector<double> column;
+  column.reserve(items.size());
+  for (const Item& item : items) column.push_back(get(item)[q]);
+  return column;
+}
+
+}  // namespace
+
+void WriteSummaryCsv(const std::string& path, const Summary& summary) {
+  const StudyShape& shape = summary.shape;
+  io::WriteTextFileAtomically(path, [&](std::ostream& out) {
+    std::vector<std::string> header = {"variant", "record", "scale", "status"};
+    for (const QuantityInfo& info : Quantities()) {
+      header.push_back(
+          fmt::format("{} [{}]", info.key, shape.units[static_cast<std::size_t>(info.quantity)]));
+    }
+    for (const QuantityInfo& info : Quantities())
+      header.push_back(fmt::format("ratio {}", info.key));
+    header.push_back("message");
+    header.push_back("file");
+    WriteCsvRow(out, header);
+
+    const std::size_t R = shape.records.size(), S = shape.scales.size();
+    for (const JobResult& run : summary.runs) {
+      const std::size_t v = run.job / (R * S), r = run.job / S % R, s = run.job % S;
+      std::vector<std::string> fields =
+          RowStart(shape.variants[v], shape.records[r], shape.scales[s],
+                   run.completed ? "completed" : "failed", run.values, summary.ratios[run.job]);
+      fields.push_back(run.message);
+      fields.push_back(run.file);
+      WriteCsvRow(out, fields);
+    }
+    for (std::size_t v = 0; v < shape.variants.size(); ++v) {
+      for (std::size_t s = 0; s < S; ++s) {
+        const Statistic& statistic = summary.At(v, s);
+        const std::string status = StatisticStatus(statistic.completed, R);
+        const std::string over = statistic.completed == R
+                                     ? ""
+                                     : fmt::format("over the {} of {} records whose runs completed",
+                                                   statistic.completed, R);
+        for (const bool mean : {true, false}) {
+          std::vector<std::string> fields =
+              RowStart(shape.variants[v], mean ? "mean" : "max", shape.scales[s], status,
+                       mean ? statistic.mean : statistic.max,
+                       mean ? statistic.mean_ratio : statistic.max_ratio);
+          fields.push_back(over);
+          fields.push_back("");
+          WriteCsvRow(out, fields);
+        }
+      }
+    }
+  });
+}
+
+void WriteSummaryHdf5(const std::string& path, const Summary& summary, const std::string& study,
+                      const std::string& version) {
+  const StudyShape& shape = summary.shape;
+  const std::size_t V = shape.variants.size(), R = shape.records.size(), S = shape.scales.size();
+  const std::size_t run_dims[] = {V, R, S};
+  const std::size_t statistic_dims[] = {V, S};
+  io::Hdf5File file(path, /*reproducible=*/true);
+
+  const std::size_t v_dims[] = {V}, r_dims[] = {R}, s_dims[] = {S};
+  file.WriteStrings("variants", v_dims, shape.variants);
+  file.WriteStrings("records", r_dims, shape.records);
+  if (shape.record_files.size() == R) file.WriteStrings("record_files", r_dims, shape.record_files);
+  file.WriteDoubles("scales", s_dims, shape.scales, "");
+
+  std::vector<std::int32_t> status;
+  std::vector<std::string> messages, files;
+  for (const JobResult& run : summary.runs) {
+    status.push_back(run.completed ? 0 : 1);
+    messages.push_back(run.message);
+    files.push_back(run.file);
+  }
+  file.WriteIntegers("status", run_dims, status);
+  file.WriteAttribute("status", "meaning", "0 completed, 1 failed");
+  file.WriteStrings("message", run_dims, messages);
+  file.WriteStrings("file", run_dims, files);
+  std::vector<std::int32_t> completed;
+  for (const Statistic& statistic : summary.statistics) {
+    completed.push_back(static_cast<std::int32_t>(statistic.completed));
+  }
+  file.WriteIntegers("completed", statistic_dims, completed);
+
+  const auto values = [](const JobResult& run) -> const QuantityValues& { return run.values; };
+  const auto same = [](const QuantityValues& v) -> const QuantityValues& { return v; };
+  for (const char* group : {"runs", "ratio", "mean", "max", "mean_ratio", "max_ratio"}) {
+    file.CreateGroup(group);
+  }
+  for (const QuantityInfo& info : Quantities()) {
+    const auto q = static_cast<std::size_t>(info.quantity);
+    const std::string key(info.key);
+    const std::string& unit = shape.units[q];
+    file.WriteDoubles("runs/" + key, run_dims, Column(summary.runs, q, values), unit);
+    file.WriteDoubles("ratio/" + key, run_dims, Column(summary.ratios, q, same), "1");
+    file.WriteDoubles("mean/" + key, statistic_dims,
+                      Column(summary.statistics, q, [](const Statistic& s) { return s.mean; }),
+                      unit);
+    file.WriteDoubles("max/" + key, statistic_dims,
+                      Column(summary.statistics, q, [](const Statistic& s) { return s.max; }),
+                      unit);
+    file.WriteDoubles(
+        "mean_ratio/" + key, statistic_dims,
+        Column(summary.statistics, q, [](const Statistic& s) { return s.mean_ratio; }), "1");
+    file.WriteDoubles("max_ratio/" + key, statistic_dims,
+                      Column(summary.statistics, q, [](const Statistic& s) { return s.max_ratio; }),
+                      "1");
+  }
+  file.WriteAttribute("/", "study", study);
+  file.WriteAttribute("/", "reference", shape.variants[shape.reference]);
+  file.WriteAttribute("/", "isolab_version", version);
+  std::string units;
+  for (const QuantityInfo& info : Quantities()) {
+    units += fmt::format("{}{} {}", units.empty() ? "" : ", ", info.key,
+                         shape.units[static_cast<std::size_t>(info.quantity)]);
+  }
+  file.WriteAttribute("/", "units", units);
+  file.Commit();
+}
+
+}  // namespace isolab::study

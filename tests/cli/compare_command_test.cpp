@@ -1,0 +1,274 @@
+// `isolab compare` end to end: the summary does not depend on the number of threads or MPI
+// ranks (byte-identical CSV and HDF5), its numbers are those of `isolab run` on the same model,
+// record and scale, failed runs are reported while the others finish, progress goes to stderr,
+// and a bad study exits 2 with its location.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/run_isolab.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using isolab::testing::Outcome;
+using isolab::testing::RunIsolab;
+
+std::string StudyData(const std::string& name) {
+  return std::string(ISOLAB_TEST_DATA_DIR) + "/study/data/" + name;
+}
+std::string Source(const std::string& relative) {
+  return std::string(ISOLAB_SOURCE_DIR) + "/" + relative;
+}
+
+fs::path OutputFolder(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() / "isolab_compare_test" / name;
+  fs::remove_all(folder);
+  return folder;
+}
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << stream.rdbuf();
+  return bytes.str();
+}
+
+// A shell command's exit code and stdout (stderr too when asked).
+Outcome RunShell(const std::string& command, bool with_stderr = false) {
+  Outcome outcome;
+  FILE* pipe = popen((command + (with_stderr ? " 2>&1" : " 2>/dev/null")).c_str(), "r");
+  if (pipe == nullptr) return outcome;
+  std::array<char, 4096> buffer;
+  std::size_t n = 0;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    outcome.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return outcome;
+}
+
+bool HaveMpirun() { return RunShell("command -v mpirun").exit_code == 0; }
+
+std::string Mpirun(int ranks) {
+  // Root in containers needs the first flag; the second lets 2 ranks share fewer cores.
+  return "mpirun --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " " +
+         ISOLAB_BINARY;
+}
+
+// CSV rows as fields (the test data has no quoted commas in the columns read here).
+std::vector<std::vector<std::string>> CsvRows(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(ReadFile(path));
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> fields;
+    std::string field;
+    std::istringstream cells(line);
+    while (std::getline(cells, field, ',')) fields.push_back(field);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+const std::vector<std::string>* FindRow(const std::vector<std::vector<std::string>>& rows,
+                                        const std::string& variant, const std::string& record,
+                                        const std::string& scale) {
+  for (const auto& row : rows) {
+    if (row.size() > 3 && row[0] == variant && row[1] == record && row[2] == scale) return &row;
+  }
+  return nullptr;
+}
+
+void ExpectSameSummaries(const fs::path& a, const fs::path& b) {
+  EXPECT_EQ(ReadFile(a / "summary.csv"), ReadFile(b / "summary.csv")) << a << " vs " << b;
+  const std::string h5 = ReadFile(a / "summary.h5");
+  EXPECT_GT(h5.size(), 1000u);
+  EXPECT_TRUE(h5 == ReadFile(b / "summary.h5")) << a << " vs " << b;
+}
+
+TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
+  const fs::path one = OutputFolder("threads1"), two = OutputFolder("threads2");
+  const Outcome run1 =
+      RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j 1 -o " + one.string());
+  const Outcome run2 =
+      RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j 2 -o " + two.string());
+  ASSERT_EQ(run1.exit_code, 0) << run1.output;
+  ASSERT_EQ(run2.exit_code, 0) << run2.output;
+  ExpectSameSummaries(one, two);
+  // The table printed, up to the folders' names.
+  EXPECT_EQ(run1.output.substr(0, run1.output.find("summary: ")),
+            run2.output.substr(0, run2.output.find("summary: ")));
+  EXPECT_NE(run1.output.find("scale 1 (ratios to thm1)"), std::string::npos);
+  // 4 variants x 3 records x 2 scales, each with its results file.
+  const auto rows = CsvRows(one / "summary.csv");
+  EXPECT_EQ(rows.size(), 1u + 24u + 4u * 2u * 2u);
+  for (std::size_t i = 1; i <= 24; ++i) {
+    EXPECT_EQ(rows[i][3], "completed") << i;
+    EXPECT_TRUE(fs::exists(one / rows[i].back())) << rows[i].back();
+  }
+}
+
+TEST(CompareCommand, RunsMatchIsolabRunOnTheSameModelRecordAndScale) {
+  const fs::path folder = OutputFolder("match");
+  ASSERT_EQ(
+      RunIsolab("compare " + StudyData("small_study.yaml") + " -q -o " + folder.string()).exit_code,
+      0);
+  const auto rows = CsvRows(folder / "summary.csv");
+  const auto* row = FindRow(rows, "thm1", "pulse_tp2", "1");
+  ASSERT_NE(row, nullptr);
+  const Outcome run = RunIsolab("run " + StudyData("small_building.yaml") + " --record " +
+                                Source("ground_motions/pulse_tp2.at2") + " --scale 1 --json -o " +
+                                (folder / "run.h5").string());
+  ASSERT_EQ(run.exit_code, 0);
+  const auto json = nlohmann::json::parse(run.output);
+  // Same numbers to the last bit: the study runs exactly what `isolab run` runs.
+  EXPECT_EQ(std::stod((*row)[4]), json["peaks"]["isolator_displacement"]["value"].get<double>());
+  EXPECT_EQ(std::stod((*row)[5]), json["peaks"]["base_shear"]["value"].get<double>());
+  EXPECT_GT(std::stod((*row)[4]), 200.0);  // a real response, in mm
+  // Table 9 isolated vs fixed base under the same record: the isolation cuts the drift.
+  const auto* fixed = FindRow(rows, "fixed", "fwn_firm_seed1", "1");
+  const auto* isolated = FindRow(rows, "thm1", "fwn_firm_seed1", "1");
+  ASSERT_TRUE(fixed != nullptr && isolated != nullptr);
+  EXPECT_EQ((*fixed)[4], "");  // no isolator
+  EXPECT_GT(std::stod((*fixed)[6]), 1.5 * std::stod((*isolated)[6]));
+  // The mean row is the mean of the three records.
+  const auto* mean = FindRow(rows, "thm2", "mean", "0.5");
+  ASSERT_NE(mean, nullptr);
+  double sum = 0.0;
+  for (const char* record : {"fwn_firm_seed1", "fwn_soft_seed2", "pulse_tp2"}) {
+    sum += std::stod((*FindRow(rows, "thm2", record, "0.5"))[5]);
+  }
+  EXPECT_NEAR(std::stod((*mean)[5]), sum / 3.0, 1e-12 * sum);
+}
+
+TEST(CompareCommand, MpiRanksWriteTheSameSummaryAsOneProcess) {
+  if (!HaveMpirun()) GTEST_SKIP() << "mpirun not found (Debian: openmpi-bin); MPI not tested";
+  const fs::path local = OutputFolder("mpi_local"), mpi = OutputFolder("mpi_2");
+  ASSERT_EQ(RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j 1 -o " + local.string())
+                .exit_code,
+            0);
+  const Outcome two =
+      RunShell(Mpirun(2) + " compare " + StudyData("small_study.yaml") + " -q -o " + mpi.string());
+  ASSERT_EQ(two.exit_code, 0) << two.output;
+  ExpectSameSummaries(local, mpi);
+  EXPECT_NE(two.output.find("scale 0.5 (ratios to thm1)"), std::string::npos);
+  EXPECT_EQ(two.output.find("scale 0.5", two.output.find("scale 0.5") + 1), std::string::npos)
+      << "the table is printed once, by rank 0";
+
+  // Failures too: the same rows and messages, and exit code 1 from every rank.
+  const fs::path local_failing = OutputFolder("mpi_local_failing");
+  const fs::path mpi_failing = OutputFolder("mpi_2_failing");
+  EXPECT_EQ(
+      RunIsolab("compare " + StudyData("failing_study.yaml") + " -q -o " + local_failing.string())
+          .exit_code,
+      1);
+  EXPECT_EQ(RunShell(Mpirun(2) + " compare " + StudyData("failing_study.yaml") + " -q -o " +
+                     mpi_failing.string())
+                .exit_code,
+            1);
+  ExpectSameSummaries(local_failing, mpi_failing);
+}
+
+TEST(CompareCommand, FailedRunsAreReportedAndTheOthersFinish) {
+  const fs::path folder = OutputFolder("failing");
+  const Outcome run =
+      RunIsolab("compare " + StudyData("failing_study.yaml") + " -q -o " + folder.string());
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.output.find("4 of 6 runs failed"), std::string::npos) << run.output;
+  const auto rows = CsvRows(folder / "summary.csv");
+  const auto status = [&](const char* variant, const char* record) {
+    const auto* row = FindRow(rows, variant, record, "1");
+    return row != nullptr ? (*row)[3] : std::string("absent");
+  };
+  EXPECT_EQ(status("thm1", "pulse_tp2"), "completed");
+  EXPECT_EQ(status("fixed", "pulse_tp2"), "completed");
+  EXPECT_EQ(status("stuck", "pulse_tp2"), "failed");
+  for (const char* variant : {"thm1", "stuck", "fixed"}) {
+    EXPECT_EQ(status(variant, "bad_record_nan"), "failed") << variant;
+    EXPECT_EQ(status(variant, "mean"), std::string(variant) == "stuck" ? "failed" : "partial");
+  }
+  const std::string csv = ReadFile(folder / "summary.csv");
+  EXPECT_NE(csv.find("\"Newton did not converge at t = 2.08"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("bad_record_nan.at2:6: 'nan' is not a finite value"), std::string::npos);
+  // The run that stopped early keeps its results up to there, as `isolab run` does.
+  EXPECT_TRUE(fs::exists(folder / "runs/stuck/pulse_tp2_x1.h5"));
+  EXPECT_FALSE(fs::exists(folder / "runs/thm1/bad_record_nan_x1.h5"));
+  EXPECT_TRUE(fs::exists(folder / "summary.h5"));
+}
+
+TEST(CompareCommand, ProgressGoesToStderrUnlessQuiet) {
+  const fs::path folder = OutputFolder("progress");
+  const Outcome loud =
+      RunIsolab("compare " + StudyData("failing_study.yaml") + " -j 2 -o " + folder.string(), true);
+  std::istringstream lines(loud.output);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "isolab compare: 6 runs (3 variants x 2 records x 1 scale) on 2 threads");
+  const std::regex done(R"(\[[1-6]/6\] (thm1|stuck|fixed) / (pulse_tp2|bad_record_nan) x1 \.\.\. )"
+                        R"((\d+\.\d{3} s|failed: .+))");
+  int progress = 0;
+  while (std::getline(lines, line) && line.rfind("[", 0) == 0) {
+    EXPECT_TRUE(std::regex_match(line, done)) << line;
+    ++progress;
+  }
+  EXPECT_EQ(progress, 6);
+  EXPECT_EQ(line.rfind("6 runs in ", 0), 0u) << line;
+  EXPECT_NE(line.find(" on 2 threads: "), std::string::npos) << line;
+  EXPECT_NE(line.find("runs/s; 4 failed"), std::string::npos) << line;
+
+  const Outcome quiet =
+      RunIsolab("compare " + StudyData("failing_study.yaml") + " -q -o " + folder.string(), true);
+  EXPECT_EQ(quiet.output, "");
+}
+
+TEST(CompareCommand, BadStudyExitsTwoWithItsLocation) {
+  const fs::path folder = OutputFolder("bad");
+  const std::string expected =
+      StudyData("bad_study_key.yaml") + ":5:1: refrence: unknown key (did you mean 'reference'?)";
+  const Outcome run =
+      RunIsolab("compare " + StudyData("bad_study_key.yaml") + " -o " + folder.string(), true);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find(expected), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(folder));
+  if (!HaveMpirun()) return;
+  // Every rank finds the error; the message appears once.
+  const Outcome mpi = RunShell(
+      Mpirun(2) + " compare " + StudyData("bad_study_key.yaml") + " -o " + folder.string(), true);
+  EXPECT_NE(mpi.exit_code, 0);
+  const std::size_t first = mpi.output.find(expected);
+  EXPECT_NE(first, std::string::npos) << mpi.output;
+  EXPECT_EQ(mpi.output.find(expected, first + 1), std::string::npos) << mpi.output;
+}
+
+TEST(CompareCommand, PlotWritesBarCharts) {
+  if (RunShell("/usr/bin/python3 -c 'import matplotlib, h5py'").exit_code != 0) {
+    GTEST_SKIP() << "/usr/bin/python3 without matplotlib and h5py (Debian: python3-matplotlib "
+                    "python3-h5py); --plot not tested";
+  }
+  const fs::path folder = OutputFolder("plot");
+  const Outcome run =
+      RunIsolab("compare " + StudyData("failing_study.yaml") + " -q --plot -o " + folder.string());
+  EXPECT_EQ(run.exit_code, 1);  // the study's failed runs, not the plot
+  for (const char* name : {"study_overview.png", "study_isolator_displacement.png",
+                           "study_base_shear.png", "study_floor_acceleration.png"}) {
+    EXPECT_GT(fs::file_size(folder / "plots" / name), 10000u) << name;
+  }
+  // The CSV reads the same way.
+  EXPECT_EQ(RunShell(Source("scripts/plot_study.py") + " " + (folder / "summary.csv").string() +
+                     " -o " + (folder / "csv_plots").string())
+                .exit_code,
+            0);
+  EXPECT_TRUE(fs::exists(folder / "csv_plots" / "study_overview.png"));
+}
+
+}  // namespace

@@ -1,0 +1,41 @@
+// A JobResult crosses between MPI ranks as bytes: every field must come back, doubles bit for bit.
+#include "isolab/study/job_result.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace isolab::study {
+namespace {
+
+TEST(JobResult, RoundTripsThroughBytes) {
+  JobResult result;
+  result.job = 123456789012ULL;
+  result.completed = true;
+  result.values = {0.1 + 0.2, std::numeric_limits<double>::quiet_NaN(), -0.0,
+                   std::numeric_limits<double>::denorm_min(), 1e300};
+  result.message = "with, commas and \"quotes\"\nand a newline";
+  result.file = "runs/thm1/rec_x1.5.h5";
+  result.wall_seconds = 0.25;
+  const JobResult back = Deserialize(Serialize(result));
+  EXPECT_EQ(back.job, result.job);
+  EXPECT_EQ(back.completed, result.completed);
+  EXPECT_EQ(std::memcmp(back.values.data(), result.values.data(), sizeof(result.values)), 0);
+  EXPECT_EQ(back.message, result.message);
+  EXPECT_EQ(back.file, result.file);
+  EXPECT_EQ(back.wall_seconds, result.wall_seconds);
+}
+
+TEST(JobResult, RejectsTruncatedOrPaddedBytes) {
+  std::vector<char> bytes = Serialize(JobResult{});
+  bytes.push_back('x');
+  EXPECT_THROW(Deserialize(bytes), std::runtime_error);
+  bytes.resize(bytes.size() - 3);
+  EXPECT_THROW(Deserialize(bytes), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace isolab::study
