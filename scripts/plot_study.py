@@ -17,6 +17,8 @@ import os
 import re
 import sys
 
+from plot_common import text
+
 import matplotlib
 
 matplotlib.use("Agg")  # files only: no display on build machines
@@ -38,10 +40,6 @@ class Study:
         self.variants, self.scales, self.quantities = [], [], []
         self.reference = ""
         self.mean, self.max = {}, {}
-
-
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
 
 
 def read_hdf5(path):

@@ -20,6 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using isolab::testing::Outcome;
+using isolab::testing::RunShell;
 using isolab::testing::RunIsolab;
 
 std::string StudyData(const std::string& name) {
@@ -40,20 +41,6 @@ std::string ReadFile(const fs::path& path) {
   std::stringstream bytes;
   bytes << stream.rdbuf();
   return bytes.str();
-}
-
-// A shell command's exit code and stdout (stderr too when asked).
-Outcome RunShell(const std::string& command, bool with_stderr = false) {
-  Outcome outcome;
-  FILE* pipe = popen((command + (with_stderr ? " 2>&1" : " 2>/dev/null")).c_str(), "r");
-  if (pipe == nullptr) return outcome;
-  std::array<char, 4096> buffer;
-  std::size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    outcome.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
 }
 
 bool HaveMpirun() { return RunShell("command -v mpirun").exit_code == 0; }

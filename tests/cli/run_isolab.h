@@ -14,11 +14,10 @@ struct Outcome {
   std::string output;  // stdout, or stderr alone when asked
 };
 
-inline Outcome RunIsolab(const std::string& arguments, bool stderr_only = false) {
-  const std::string command = std::string(ISOLAB_BINARY) + " " + arguments +
-                              (stderr_only ? " 2>&1 >/dev/null" : " 2>/dev/null");
+// Runs a shell command line as written (redirections included): its exit code and stdout.
+inline Outcome RunCommandLine(const std::string& line) {
   Outcome outcome;
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen(line.c_str(), "r");
   if (pipe == nullptr) return outcome;
   std::array<char, 4096> buffer;
   std::size_t n = 0;
@@ -27,6 +26,16 @@ inline Outcome RunIsolab(const std::string& arguments, bool stderr_only = false)
   const int status = pclose(pipe);
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;
+}
+
+// A shell command's exit code and stdout (with stderr when `with_stderr`).
+inline Outcome RunShell(const std::string& command, bool with_stderr = false) {
+  return RunCommandLine(command + (with_stderr ? " 2>&1" : " 2>/dev/null"));
+}
+
+inline Outcome RunIsolab(const std::string& arguments, bool stderr_only = false) {
+  return RunCommandLine(std::string(ISOLAB_BINARY) + " " + arguments +
+                        (stderr_only ? " 2>&1 >/dev/null" : " 2>/dev/null"));
 }
 
 }  // namespace isolab::testing
