@@ -34,18 +34,25 @@ struct FrictionPendulum {
   double rate = 0.0;       // a (time/length), >= 0; 0 with mu_fast = mu_slow for constant friction
   UnitSlider slider;       // the sliding interface, yield displacement u_y
 
+  // Constant friction skips the exponentials (the update then costs what BHM2's does).
+  bool constant() const { return rate * (mu_fast - mu_slow) == 0.0; }
   double Friction(double v) const {
-    return mu_fast - (mu_fast - mu_slow) * std::exp(-rate * std::abs(v));
+    return constant() ? mu_fast : mu_fast - (mu_fast - mu_slow) * std::exp(-rate * std::abs(v));
   }
   double FrictionSlope(double v) const {
-    const double sign = v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
-    return rate * (mu_fast - mu_slow) * sign * std::exp(-rate * std::abs(v));
+    if (constant() || v == 0.0) return 0.0;
+    const double slope = rate * (mu_fast - mu_slow) * std::exp(-rate * std::abs(v));
+    return v > 0.0 ? slope : -slope;
   }
 
   void Update(const LawState& committed, const LawInput& in, LawState* trial,
               LawResponse* response) const {
     const UnitSlider::Step step = slider.Update(committed.u, committed.slider, in.u);
-    const double mu = Friction(in.v);
+    // mu and its slope share one exponential.
+    const double mu_v = FrictionSlope(in.v);
+    const double mu =
+        constant() ? mu_fast
+                   : mu_fast - std::abs(mu_v) / rate - (in.v == 0.0 ? mu_fast - mu_slow : 0.0);
     trial->u = in.u;
     trial->v = in.v;
     trial->t = in.t;
@@ -55,7 +62,7 @@ struct FrictionPendulum {
         committed.dissipated + 0.5 * (Friction(committed.v) + mu) * weight * step.z_work;
     trial->force = response->force = stiffness * in.u + mu * weight * step.z;
     response->stiffness = stiffness + mu * weight * step.dz_du;
-    response->damping = weight * step.z * FrictionSlope(in.v);
+    response->damping = weight * step.z * mu_v;
   }
 
   double StoredEnergy(const LawState& state) const { return 0.5 * stiffness * state.u * state.u; }
