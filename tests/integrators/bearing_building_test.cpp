@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "integrators/jacobian_check.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/structure/shear_building.h"
@@ -83,37 +84,7 @@ TEST_P(BearingBuilding, JacobianIsTheDerivativeOfTheResidual) {
   const structure::Structure building = Building(GetParam());
   const Excitation excitation = Shaking();
   RateFormSystem system(building, excitation);
-  const int n = system.size();
-  // Inside the stick phase every law starts in; the internal variables small and nonzero.
-  Eigen::VectorXd y(n), yp(n);
-  for (int i = 0; i < n; ++i) {
-    y[i] = 0.01 * std::sin(1.0 + i);
-    yp[i] = 0.3 * std::cos(2.0 + i);
-  }
-  const double t = 1.234, cj = 250.0;
-  const auto& pattern = system.jacobian_pattern();
-  std::vector<double> values(pattern.nonZeros());
-  system.Jacobian(t, cj, y.data(), values.data());
-  structure::SparseMatrix jacobian = pattern;
-  std::copy(values.begin(), values.end(), jacobian.valuePtr());
-  const Eigen::MatrixXd analytic(jacobian);
-  Eigen::MatrixXd numeric(n, n);
-  Eigen::VectorXd plus(n), minus(n);
-  const double h = 1e-7;
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd y1 = y, yp1 = yp;
-    y1[j] += h;
-    yp1[j] += cj * h;
-    system.Residual(t, y1.data(), yp1.data(), plus.data());
-    y1[j] -= 2 * h;
-    yp1[j] -= 2 * cj * h;
-    system.Residual(t, y1.data(), yp1.data(), minus.data());
-    numeric.col(j) = (plus - minus) / (2 * h);
-  }
-  const double scale = analytic.cwiseAbs().maxCoeff();
-  EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-6 * scale) << "analytic\n"
-                                                                      << analytic << "\nnumeric\n"
-                                                                      << numeric;
+  testing::ExpectJacobianIsTheDerivativeOfTheResidual(system);
 }
 
 TEST_P(BearingBuilding, IdaAgreesWithNewmark) {
