@@ -49,11 +49,12 @@ CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtoco
     const int in_cycle = k % per_cycle;
     const double phase = 2.0 * std::numbers::pi * in_cycle / per_cycle;
     const LawInput in{protocol.amplitude * std::sin(phase),
-                      protocol.amplitude * omega * std::cos(phase)};
+                      protocol.amplitude * omega * std::cos(phase),
+                      k * protocol.period / per_cycle};
     const AssemblyResponse total = assembly.Update(committed, in, trial, responses);
     std::swap(committed, trial);
 
-    loop.time[k] = k * protocol.period / per_cycle;
+    loop.time[k] = in.t;
     loop.displacement[k] = in.u;
     loop.force[k] = total.force;
     for (std::size_t c = 0; c < n_components; ++c) {

@@ -6,13 +6,12 @@
 #include <cmath>
 #include <string>
 
+#include "bearing_parameters.h"
 #include "isolab/core/errors.h"
+#include "rule_checker.h"
 
 namespace isolab::hysteresis {
 namespace {
-
-using ParameterArray = std::array<double, kMaxLawParameters>;
-using Keys = std::span<const std::string_view>;
 
 constexpr std::string_view kSpringKeys[] = {"k"};
 constexpr std::string_view kDashpotKeys[] = {"c"};
@@ -39,45 +38,9 @@ constexpr LawType kAllTypes[] = {
     LawType::kElastoplastic,
     LawType::kBoucWen,
     LawType::kDegradingBhm2,
-};
-
-// Checks rules in the order written and throws at the first one broken, naming the key as the
-// user wrote it.
-class RuleChecker {
- public:
-  RuleChecker(Keys keys, const ParameterArray& values) : keys_(keys), values_(values) {}
-
-  double operator()(std::string_view key) const { return values_[Index(key)]; }
-
-  void Greater(std::string_view key, double bound, std::string_view bound_text = {}) const {
-    Check(key, (*this)(key) > bound, ">", bound, bound_text);
-  }
-  void AtLeast(std::string_view key, double bound, std::string_view bound_text = {}) const {
-    Check(key, (*this)(key) >= bound, ">=", bound, bound_text);
-  }
-  void Less(std::string_view key, double bound, std::string_view bound_text = {}) const {
-    Check(key, (*this)(key) < bound, "<", bound, bound_text);
-  }
-  // A rule on a combination: "ke + kh2 > 0".
-  void Holds(std::string_view key, bool ok, std::string rule) const {
-    if (!ok) throw InvalidParameter({std::string(key), (*this)(key), std::move(rule)});
-  }
-
- private:
-  std::size_t Index(std::string_view key) const {
-    return static_cast<std::size_t>(std::find(keys_.begin(), keys_.end(), key) - keys_.begin());
-  }
-  void Check(std::string_view key, bool ok, std::string_view op, double bound,
-             std::string_view bound_text) const {
-    if (ok) return;
-    const std::string rule = bound_text.empty()
-                                 ? fmt::format("must be {} {:g}", op, bound)
-                                 : fmt::format("must be {} {} = {:g}", op, bound_text, bound);
-    throw InvalidParameter({std::string(key), (*this)(key), rule});
-  }
-
-  Keys keys_;
-  const ParameterArray& values_;
+    LawType::kFrictionPendulum,
+    LawType::kLeadRubber,
+    LawType::kHdrBearing,
 };
 
 // The breakpoint that may be omitted when the two slopes around it are equal (it then marks no
@@ -101,6 +64,7 @@ void CheckPresentAndFinite(LawType type, ParameterForm form, const ParameterArra
   const auto breakpoint = Breakpoint(type, form);
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (std::isnan(values[i])) {
+      if (BearingKeyMayBeOmitted(type, keys[i])) continue;  // ValidateBearing checks it
       if (!breakpoint || keys[i] != breakpoint->key) {
         throw InvalidParameter({std::string(keys[i]), NAN, "is required"});
       }
@@ -169,6 +133,11 @@ void ValidateMathematical(LawType type, const ParameterArray& v) {
       r.Greater("uy", 0.0);
       CheckDamage(r);
       return;
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
+      ValidateBearing(type, ParameterForm::kMathematical, v);
+      return;
   }
 }
 
@@ -220,6 +189,11 @@ void ValidateMechanical(LawType type, const ParameterArray& v) {
       r.Greater("fs", 0.0);
       CheckDamage(r);
       return;
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
+      ValidateBearing(type, ParameterForm::kMechanical, v);
+      return;
   }
 }
 
@@ -245,6 +219,10 @@ ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m)
     case LawType::kTrilinearElastic:
     case LawType::kBoucWen:
       return m;
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
+      return ConvertBearing(type, ParameterForm::kMechanical, m);
   }
   return m;
 }
@@ -272,6 +250,10 @@ ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q)
     case LawType::kTrilinearElastic:
     case LawType::kBoucWen:
       return q;
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
+      return ConvertBearing(type, ParameterForm::kMathematical, q);
   }
   return q;
 }
@@ -302,6 +284,12 @@ std::string_view LawName(LawType type) {
       return "bouc_wen";
     case LawType::kDegradingBhm2:
       return "degrading_bhm2";
+    case LawType::kFrictionPendulum:
+      return "friction_pendulum";
+    case LawType::kLeadRubber:
+      return "lead_rubber";
+    case LawType::kHdrBearing:
+      return "hdr_bearing";
   }
   return "unknown";
 }
@@ -336,11 +324,16 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
       return kBoucWenKeys;
     case LawType::kDegradingBhm2:
       return math ? Keys(kDegradingMath) : Keys(kDegradingMech);
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
+      return BearingKeys(type, form);
   }
   return {};
 }
 
 bool IsOptionalKey(LawType type, std::string_view key) {
+  if (BearingKeyMayBeOmitted(type, key)) return true;
   for (const ParameterForm form : {ParameterForm::kMathematical, ParameterForm::kMechanical}) {
     const auto breakpoint = Breakpoint(type, form);
     if (breakpoint && breakpoint->key == key) return true;
@@ -395,6 +388,10 @@ LawKernel LawParameters::Kernel() const {
       return BoucWen{q[0], q[1], q[2], q[3], q[4]};
     case LawType::kDegradingBhm2:
       return DegradingSlider{q[0] - q[1], q[2], q[1], q[3], q[4]};
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
+      return BearingKernel(type_, q);
   }
   return Dashpot{0.0};
 }

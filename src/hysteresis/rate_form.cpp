@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
+
+#include "bearing_rate_form.h"
 
 namespace isolab::hysteresis {
 namespace {
@@ -60,8 +63,8 @@ PhaseSwitch Switch(const SeriesSlider& law, const LawPhase& phase, int root, dou
   PhaseSwitch next{phase, z};
   if (root == 0) {
     if (phase.slip == 0) {
-      const int s = static_cast<int>(
-          Sign(law.ke * (u - z) - law.spring.SegmentForce(z, phase.segment)));
+      const int s =
+          static_cast<int>(Sign(law.ke * (u - z) - law.spring.SegmentForce(z, phase.segment)));
       if (s * v <= 0.0) return next;  // touched fs while already unloading: still sticks
       next.phase.slip = s;
     } else {
@@ -142,8 +145,7 @@ void Roots(const ElasticSpring& law, const LawPhase& phase, double u, double, do
   roots[0] = law.spring.SegmentMargin(u, phase.segment);
 }
 
-PhaseSwitch Switch(const ElasticSpring&, const LawPhase& phase, int, double u, double,
-                   double z) {
+PhaseSwitch Switch(const ElasticSpring&, const LawPhase& phase, int, double u, double, double z) {
   return {{phase.slip, NextSegment(phase.segment, u)}, z};
 }
 
@@ -200,14 +202,23 @@ bool HasRateForm(const LawKernel& kernel) {
   return !std::holds_alternative<DegradingSlider>(kernel);
 }
 
-bool HasInternalVariable(const LawKernel& kernel) {
-  return !std::holds_alternative<ElasticSpring>(kernel) && !std::holds_alternative<Dashpot>(kernel);
+int InternalVariableCount(const LawKernel& kernel) {
+  if (std::holds_alternative<ElasticSpring>(kernel) || std::holds_alternative<Dashpot>(kernel)) {
+    return 0;
+  }
+  if (const auto* law = std::get_if<LeadRubber>(&kernel)) return law->heating.heats() ? 2 : 1;
+  return 1;
 }
 
 int PhaseRootCount(const LawKernel& kernel) {
-  if (std::holds_alternative<SeriesSlider>(kernel) || std::holds_alternative<ParallelSlider>(kernel))
+  if (std::holds_alternative<SeriesSlider>(kernel) ||
+      std::holds_alternative<ParallelSlider>(kernel) ||
+      std::holds_alternative<FrictionPendulum>(kernel)) {
     return 2;
-  return std::holds_alternative<ElasticSpring>(kernel) ? 1 : 0;
+  }
+  return std::holds_alternative<ElasticSpring>(kernel) || std::holds_alternative<LeadRubber>(kernel)
+             ? 1
+             : 0;
 }
 
 LawPhase RestPhase(const LawKernel& kernel) {
@@ -217,8 +228,16 @@ LawPhase RestPhase(const LawKernel& kernel) {
 }
 
 RateResponse EvaluateRate(const LawKernel& kernel, const LawPhase& phase, double u, double v,
-                          double z) {
-  return std::visit([&](const auto& law) { return Evaluate(law, phase, u, v, z); }, kernel);
+                          double z, double w, double t) {
+  return std::visit(
+      [&](const auto& law) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(law)>, LeadRubber>) {
+          return Evaluate(law, phase, u, v, z, w, t);
+        } else {
+          return Evaluate(law, phase, u, v, z);
+        }
+      },
+      kernel);
 }
 
 void PhaseRoots(const LawKernel& kernel, const LawPhase& phase, double u, double v, double z,
@@ -231,16 +250,20 @@ PhaseSwitch SwitchPhase(const LawKernel& kernel, const LawPhase& phase, int root
   return std::visit([&](const auto& law) { return Switch(law, phase, root, u, v, z); }, kernel);
 }
 
-LawState RateFormState(const LawKernel& kernel, const LawPhase& phase, double u, double v,
-                       double z) {
+LawState RateFormState(const LawKernel& kernel, const LawPhase& phase, double u, double v, double z,
+                       double w, double t) {
   LawState state;
   state.u = u;
   state.v = v;
-  state.force = EvaluateRate(kernel, phase, u, v, z).force;
+  state.t = t;
+  state.force = EvaluateRate(kernel, phase, u, v, z, w, t).force;
   if (std::holds_alternative<SeriesSlider>(kernel) ||
-      std::holds_alternative<ParallelSlider>(kernel)) {
+      std::holds_alternative<ParallelSlider>(kernel) ||
+      std::holds_alternative<FrictionPendulum>(kernel) ||
+      std::holds_alternative<LeadRubber>(kernel)) {
     state.slider = z;
   }
+  if (std::holds_alternative<LeadRubber>(kernel)) state.temperature = w;
   return state;
 }
 

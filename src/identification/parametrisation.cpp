@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace isolab::identification {
 
@@ -14,8 +15,8 @@ double CoordinateRange::At(double x) const {
 }
 
 double CoordinateRange::Inverse(double value) const {
-  const double x = log ? std::log(value / low) / std::log(high / low)
-                       : (value - low) / (high - low);
+  const double x =
+      log ? std::log(value / low) / std::log(high / low) : (value - low) / (high - low);
   return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.5;
 }
 
@@ -38,9 +39,13 @@ std::vector<std::string> CoordinateNames(LawType type) {
     case LawType::kDashpot:
       return {};
     case LawType::kBoucWen:
+    case LawType::kFrictionPendulum:
+    case LawType::kLeadRubber:
+    case LawType::kHdrBearing:
       break;
   }
-  throw std::invalid_argument("Bouc-Wen components cannot be identified (yet)");
+  throw std::invalid_argument(std::string(hysteresis::LawName(type)) +
+                              " components cannot be identified (yet)");
 }
 
 namespace {
@@ -95,10 +100,9 @@ ModelParametrisation::ModelParametrisation(std::vector<ComponentSpec> components
     const auto check = [&](const auto& map, const char* what) {
       for (const auto& entry : map) {
         if (std::find(names.begin(), names.end(), entry.first) == names.end()) {
-          throw std::invalid_argument(spec.name + ": '" + entry.first +
-                                      "' is not a shape coordinate of " +
-                                      std::string(hysteresis::LawName(spec.type)) + " (" + what +
-                                      ")");
+          throw std::invalid_argument(
+              spec.name + ": '" + entry.first + "' is not a shape coordinate of " +
+              std::string(hysteresis::LawName(spec.type)) + " (" + what + ")");
         }
       }
     };
@@ -136,7 +140,8 @@ std::vector<std::string> ModelParametrisation::FreeNames() const {
   return names;
 }
 
-std::vector<std::vector<double>> ModelParametrisation::ShapeValues(std::span<const double> x) const {
+std::vector<std::vector<double>> ModelParametrisation::ShapeValues(
+    std::span<const double> x) const {
   std::vector<std::vector<double>> values = fixed_values_;
   for (std::size_t k = 0; k < free_.size(); ++k) {
     values[free_[k].component][free_[k].coordinate] = free_[k].range.At(x[k]);
@@ -198,7 +203,10 @@ void ModelParametrisation::Basis(std::span<const double> x, const CyclicTestData
         }
         break;
       case LawType::kBoucWen:
-        throw std::logic_error("Bouc-Wen has no basis");
+      case LawType::kFrictionPendulum:
+      case LawType::kLeadRubber:
+      case LawType::kHdrBearing:
+        throw std::logic_error("no basis: CoordinateNames refuses this law");
     }
   }
 }
@@ -252,9 +260,8 @@ hysteresis::ParallelAssembly ModelParametrisation::Assembly(
   for (std::size_t i = 0; i < components_.size(); ++i) {
     components.push_back(
         {components_[i].name,
-         hysteresis::LawParameters::Make(components_[i].type,
-                                         hysteresis::ParameterForm::kMathematical,
-                                         mathematical[i])});
+         hysteresis::LawParameters::Make(
+             components_[i].type, hysteresis::ParameterForm::kMathematical, mathematical[i])});
   }
   return hysteresis::ParallelAssembly(std::move(components));
 }

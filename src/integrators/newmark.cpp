@@ -127,7 +127,7 @@ class NewmarkRun {
       // Modified-initial Newton assembles its tangent at rest below, not at the trial state.
       const bool tangent_here =
           refactor && options_.newton != NewmarkOptions::Newton::kModifiedInitial;
-      structure_.Evaluate(committed_, u_trial_, v_trial_, trial_, responses_, &force_,
+      structure_.Evaluate(committed_, t0 + h, u_trial_, v_trial_, trial_, responses_, &force_,
                           connection_forces_, factors, tangent_here ? &tangent_ : nullptr);
       residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
       last_scale_ = std::max(
@@ -140,8 +140,8 @@ class NewmarkRun {
       if (iteration == options_.max_iterations) break;
       if (refactor) {
         if (options_.newton == NewmarkOptions::Newton::kModifiedInitial) {
-          structure_.Evaluate(rest_, zero_, zero_, trial_, responses_, &force_, connection_forces_,
-                              factors, &tangent_);
+          structure_.Evaluate(rest_, 0.0, zero_, zero_, trial_, responses_, &force_,
+                              connection_forces_, factors, &tangent_);
         }
         ++summary_.factorisations;
         factored_step_ = h;

@@ -6,14 +6,15 @@ using hysteresis::RateResponse;
 using structure::kGround;
 using structure::SlotOf;
 
-RateFormSystem::RateFormSystem(const structure::Structure& structure,
-                               const Excitation& excitation)
+RateFormSystem::RateFormSystem(const structure::Structure& structure, const Excitation& excitation)
     : structure_(structure), excitation_(excitation), dofs_(structure.dofs()) {
   const auto& connections = structure.connections();
   root_offsets_.push_back(0);
   for (const auto& connection : connections) {
     for (const auto& kernel : connection.assembly.kernels()) {
-      internal_index_.push_back(hysteresis::HasInternalVariable(kernel) ? internal_count_++ : -1);
+      const int count = hysteresis::InternalVariableCount(kernel);
+      internal_index_.push_back(count > 0 ? internal_count_++ : -1);
+      second_index_.push_back(count > 1 ? internal_count_++ : -1);
       root_offsets_.push_back(root_offsets_.back() + hysteresis::PhaseRootCount(kernel));
       phases_.push_back(hysteresis::RestPhase(kernel));
     }
@@ -62,6 +63,15 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure,
         add(z0 + z, i);
         add(z0 + z, v0 + i);
       }
+      const int w = second_index_[structure.law_offset(k) + l];
+      if (w < 0) continue;
+      for (const int row : {v0 + j, z0 + z, z0 + w}) add(row, z0 + w);
+      for (const int col : {j, v0 + j, z0 + z}) add(z0 + w, col);
+      if (i != kGround) {
+        add(v0 + i, z0 + w);
+        add(z0 + w, i);
+        add(z0 + w, v0 + i);
+      }
     }
   }
   pattern_.resize(size(), size());
@@ -107,6 +117,19 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure,
         t.zu_i = SlotOf(pattern_, z0 + z, i);
         t.zv_i = SlotOf(pattern_, z0 + z, v0 + i);
       }
+      const int w = second_index_[law];
+      if (w < 0) continue;
+      t.vw_j = SlotOf(pattern_, v0 + j, z0 + w);
+      t.zw = SlotOf(pattern_, z0 + z, z0 + w);
+      t.wu_j = SlotOf(pattern_, z0 + w, j);
+      t.wv_j = SlotOf(pattern_, z0 + w, v0 + j);
+      t.wz = SlotOf(pattern_, z0 + w, z0 + z);
+      t.ww = SlotOf(pattern_, z0 + w, z0 + w);
+      if (i != kGround) {
+        t.vw_i = SlotOf(pattern_, v0 + i, z0 + w);
+        t.wu_i = SlotOf(pattern_, z0 + w, i);
+        t.wv_i = SlotOf(pattern_, z0 + w, v0 + i);
+      }
     }
   }
 }
@@ -117,12 +140,12 @@ RateFormSystem::LawInput RateFormSystem::InputOf(std::size_t connection, std::si
   const double* u = y;
   const double* v = y + dofs_;
   const bool grounded = c.dof_i == kGround;
-  const int z = internal_index_[law];
+  const int z = internal_index_[law], w = second_index_[law];
   return {u[c.dof_j] - (grounded ? 0.0 : u[c.dof_i]), v[c.dof_j] - (grounded ? 0.0 : v[c.dof_i]),
-          z >= 0 ? y[2 * dofs_ + z] : 0.0};
+          z >= 0 ? y[2 * dofs_ + z] : 0.0, w >= 0 ? y[2 * dofs_ + w] : 0.0};
 }
 
-void RateFormSystem::EvaluateLaws(const double* y) {
+void RateFormSystem::EvaluateLaws(double t, const double* y) {
   velocity_ = Eigen::Map<const Eigen::VectorXd>(y + dofs_, dofs_);
   viscous_.noalias() = structure_.viscous_damping() * velocity_;
   force_ = viscous_;
@@ -133,7 +156,8 @@ void RateFormSystem::EvaluateLaws(const double* y) {
     for (std::size_t l = 0; l < kernels.size(); ++l) {
       const std::size_t law = structure_.law_offset(k) + l;
       const LawInput in = InputOf(k, law, y);
-      responses_[law] = hysteresis::EvaluateRate(kernels[l], phases_[law], in.u, in.v, in.z);
+      responses_[law] =
+          hysteresis::EvaluateRate(kernels[l], phases_[law], in.u, in.v, in.z, in.w, t);
       total += responses_[law].force;
     }
     connection_forces_[k] = total;
@@ -143,7 +167,7 @@ void RateFormSystem::EvaluateLaws(const double* y) {
 }
 
 void RateFormSystem::Residual(double t, const double* y, const double* yp, double* residual) {
-  EvaluateLaws(y);
+  EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
   const Eigen::VectorXd& m = structure_.mass();
   for (int i = 0; i < dofs_; ++i) {
@@ -151,13 +175,14 @@ void RateFormSystem::Residual(double t, const double* y, const double* yp, doubl
     residual[dofs_ + i] = m[i] * yp[dofs_ + i] + force_[i] - load_[i];
   }
   for (std::size_t law = 0; law < internal_index_.size(); ++law) {
-    const int z = internal_index_[law];
+    const int z = internal_index_[law], w = second_index_[law];
     if (z >= 0) residual[2 * dofs_ + z] = yp[2 * dofs_ + z] - responses_[law].rate;
+    if (w >= 0) residual[2 * dofs_ + w] = yp[2 * dofs_ + w] - responses_[law].w_rate;
   }
 }
 
-void RateFormSystem::Jacobian(double, double cj, const double* y, double* values) {
-  EvaluateLaws(y);
+void RateFormSystem::Jacobian(double t, double cj, const double* y, double* values) {
+  EvaluateLaws(t, y);
   std::fill(values, values + pattern_.nonZeros(), 0.0);
   const Eigen::VectorXd& m = structure_.mass();
   for (int i = 0; i < dofs_; ++i) {
@@ -179,15 +204,27 @@ void RateFormSystem::Jacobian(double, double cj, const double* y, double* values
       stiffness += r.force_u;
       damping += r.force_v;
       if (internal_index_[law] < 0) continue;
-      const InternalSlots& t = internal_slots_[law];
-      values[t.vz_j] += r.force_z;
-      values[t.zu_j] -= r.rate_u;
-      values[t.zv_j] -= r.rate_v;
-      values[t.zz] += cj - r.rate_z;
+      const InternalSlots& slots = internal_slots_[law];
+      values[slots.vz_j] += r.force_z;
+      values[slots.zu_j] -= r.rate_u;
+      values[slots.zv_j] -= r.rate_v;
+      values[slots.zz] += cj - r.rate_z;
       if (!grounded) {
-        values[t.vz_i] -= r.force_z;
-        values[t.zu_i] += r.rate_u;
-        values[t.zv_i] += r.rate_v;
+        values[slots.vz_i] -= r.force_z;
+        values[slots.zu_i] += r.rate_u;
+        values[slots.zv_i] += r.rate_v;
+      }
+      if (second_index_[law] < 0) continue;
+      values[slots.vw_j] += r.force_w;
+      values[slots.zw] -= r.rate_w;
+      values[slots.wu_j] -= r.w_rate_u;
+      values[slots.wv_j] -= r.w_rate_v;
+      values[slots.wz] -= r.w_rate_z;
+      values[slots.ww] += cj - r.w_rate_w;
+      if (!grounded) {
+        values[slots.vw_i] -= r.force_w;
+        values[slots.wu_i] += r.w_rate_u;
+        values[slots.wv_i] += r.w_rate_v;
       }
     }
     values[s.vu_jj] += stiffness;
@@ -229,8 +266,7 @@ int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
         const LawInput in = InputOf(k, law, y);
         const hysteresis::PhaseSwitch next =
             hysteresis::SwitchPhase(kernels[l], phases_[law], root, in.u, in.v, in.z);
-        const bool changed = next.phase.slip != phases_[law].slip ||
-                             next.phase.segment != phases_[law].segment;
+        const bool changed = !(next.phase == phases_[law]);
         phases_[law] = next.phase;
         if (internal_index_[law] >= 0) y[2 * dofs_ + internal_index_[law]] = next.z;
         switched += changed;
@@ -258,7 +294,7 @@ int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
 }
 
 void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp) {
-  EvaluateLaws(y);
+  EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
   const Eigen::VectorXd& m = structure_.mass();
   for (int i = 0; i < dofs_; ++i) {
@@ -266,13 +302,14 @@ void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp)
     yp[dofs_ + i] = (load_[i] - force_[i]) / m[i];
   }
   for (std::size_t law = 0; law < internal_index_.size(); ++law) {
-    const int z = internal_index_[law];
+    const int z = internal_index_[law], w = second_index_[law];
     if (z >= 0) yp[2 * dofs_ + z] = responses_[law].rate;
+    if (w >= 0) yp[2 * dofs_ + w] = responses_[law].w_rate;
   }
 }
 
 void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
-  EvaluateLaws(y);
+  EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
   rates[kInputPower] = load_.dot(velocity_);
   double damping = velocity_.dot(viscous_);
@@ -288,7 +325,7 @@ void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
 void RateFormSystem::Record(double t, const double* y, const double* energy_integrals, int row,
                             ResponseHistory* out) {
   const Eigen::VectorXd& m = structure_.mass();
-  EvaluateLaws(y);
+  EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, m, &load_);
   const double ground = excitation_.ground_acceleration.At(t);
   out->time[row] = t;
@@ -314,7 +351,8 @@ void RateFormSystem::Record(double t, const double* y, const double* energy_inte
       const LawInput in = InputOf(k, law, y);
       out->law_force(row, law) = responses_[law].force;
       e.elastic += hysteresis::StoredEnergy(
-          kernels[l], hysteresis::RateFormState(kernels[l], phases_[law], in.u, in.v, in.z));
+          kernels[l],
+          hysteresis::RateFormState(kernels[l], phases_[law], in.u, in.v, in.z, in.w, t));
     }
   }
   out->rows_written = row + 1;

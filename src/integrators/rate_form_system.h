@@ -1,9 +1,9 @@
 // A structure and its excitation as the implicit system IDA integrates, in residual form
 // F(t, y, y') = 0 with y = [u; v; z] (relative displacements, velocities, and the internal
-// variable of every law that has one, hysteresis/rate_form.h):
+// variables of every law that has them, hysteresis/rate_form.h: z, and w for a heated lead core):
 //   u' - v = 0
-//   M v' + C v + f(u, v, z) - p_eff(t) = 0
-//   z' - r(u, v, z) = 0
+//   M v' + C v + f(u, v, z, w, t) - p_eff(t) = 0
+//   z' - r(u, v, z, w) = 0,   w' - q(u, v, z, w, t) = 0
 // Each law's phase (its active smooth branch) is held here and changed only by SwitchPhases at
 // an event the integrator has located; in between the system is smooth. The Jacobian
 // dF/dy + cj dF/dy' is assembled into a fixed sparse pattern through precomputed slots, from the
@@ -47,20 +47,23 @@ class RateFormSystem {
 
  private:
   struct LawInput {
-    double u, v, z;
+    double u, v, z, w;
   };
-  // Laws' deformation, rate and internal variable read from y.
+  // Laws' deformation, rate and internal variables read from y.
   LawInput InputOf(std::size_t connection, std::size_t law, const double* y) const;
-  // Evaluates every law into responses_ and the resisting force C v + f into force_.
-  void EvaluateLaws(const double* y);
+  // Evaluates every law at t into responses_ and the resisting force C v + f into force_.
+  void EvaluateLaws(double t, const double* y);
 
   struct ConnectionSlots {
     int vu_jj = -1, vu_ii = -1, vu_ij = -1, vu_ji = -1;  // stiffness, v rows x u columns
     int vv_jj = -1, vv_ii = -1, vv_ij = -1, vv_ji = -1;  // damping, v rows x v columns
   };
   struct InternalSlots {
-    int vz_j = -1, vz_i = -1;                    // force_z, v rows x z column
+    int vz_j = -1, vz_i = -1;                                 // force_z, v rows x z column
     int zu_j = -1, zu_i = -1, zv_j = -1, zv_i = -1, zz = -1;  // z row
+    // With a second variable w: force_w (v rows), rate_w (z row), and the w row.
+    int vw_j = -1, vw_i = -1, zw = -1;
+    int wu_j = -1, wu_i = -1, wv_j = -1, wv_i = -1, wz = -1, ww = -1;
   };
 
   const structure::Structure& structure_;
@@ -68,6 +71,7 @@ class RateFormSystem {
   int dofs_ = 0;
   int internal_count_ = 0;
   std::vector<int> internal_index_;  // per law: position of z in the z block, or -1
+  std::vector<int> second_index_;    // per law: position of w in the z block, or -1
   std::vector<int> root_offsets_;    // per law, and one past the last
   std::vector<hysteresis::LawPhase> phases_;
   std::vector<hysteresis::RateResponse> responses_;

@@ -19,14 +19,28 @@ using hysteresis::ParameterForm;
 
 // Stiffnesses k* (and Bouc-Wen's alpha), displacements u* and the degrading laws' slip_scale,
 // the slider force fs and the dashpot coefficient c; Bouc-Wen's beta, gamma, delta, nu and the
-// degrading laws' loss are plain numbers (beta in model units, force^(1-nu)/length).
+// degrading laws' loss are plain numbers (beta in model units, force^(1-nu)/length). The bearing
+// presets: weights and strengths are forces, friction coefficients, damping ratios, strains and
+// E2 (1/degC) plain numbers; the lead core's heat capacity rho c is force/length^2 per degC and
+// the steel's conductivity force/time per degC (the degree is not a dimension here).
 Dimension ParameterDimension(std::string_view key) {
-  if (key == "beta" || key == "gamma" || key == "delta" || key == "nu" || key == "loss") {
+  constexpr Dimension kPressure{1, -1, -2}, kArea{0, 2, 0}, kDiffusivity{0, 2, -1},
+      kConductivity{1, 1, -3}, kSlowness{0, -1, 1};
+  if (key == "beta" || key == "gamma" || key == "delta" || key == "nu" || key == "loss" ||
+      key.starts_with("mu") || key == "damping" || key.ends_with("strain") || key == "e2") {
     return dimension::kNone;
   }
-  if (key == "slip_scale") return dimension::kLength;
-  if (key == "fs") return dimension::kForce;
+  if (key == "slip_scale" || key == "r" || key == "dy" || key == "tr" || key == "lead_diameter" ||
+      key == "lead_height" || key == "shim_thickness") {
+    return dimension::kLength;
+  }
+  if (key == "fs" || key == "w" || key == "qd") return dimension::kForce;
   if (key == "c") return dimension::kDampingCoefficient;
+  if (key == "g" || key == "lead_heat_capacity") return kPressure;
+  if (key == "area") return kArea;
+  if (key == "steel_diffusivity") return kDiffusivity;
+  if (key == "steel_conductivity") return kConductivity;
+  if (key == "a") return kSlowness;  // the friction law's rate parameter, time/length
   if (key.front() == 'u') return dimension::kLength;
   return dimension::kStiffness;
 }

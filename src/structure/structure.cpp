@@ -68,8 +68,9 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
   }
 }
 
-void Structure::Evaluate(std::span<const hysteresis::LawState> committed, const Eigen::VectorXd& u,
-                         const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
+void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double t,
+                         const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                         std::span<hysteresis::LawState> trial,
                          std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                          std::span<double> connection_forces, const TangentFactors& factors,
                          SparseMatrix* tangent) const {
@@ -87,7 +88,7 @@ void Structure::Evaluate(std::span<const hysteresis::LawState> committed, const 
     const Connection& connection = connections_[k];
     const bool grounded = connection.dof_i == kGround;
     const hysteresis::LawInput in{u[connection.dof_j] - (grounded ? 0.0 : u[connection.dof_i]),
-                                  v[connection.dof_j] - (grounded ? 0.0 : v[connection.dof_i])};
+                                  v[connection.dof_j] - (grounded ? 0.0 : v[connection.dof_i]), t};
     const std::size_t offset = law_offsets_[k];
     const std::size_t count = connection.assembly.size();
     const hysteresis::AssemblyResponse total =

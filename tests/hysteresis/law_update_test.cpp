@@ -63,10 +63,27 @@ std::vector<LawCase> Cases() {
       {"linear_spring", Math(LawType::kLinearSpring, {0.7}), 100, {0.7}},
       // Only the virgin slopes are fixed numbers; after slip every slope carries phi(kappa).
       {"degrading_bhm2", Math(LawType::kDegradingBhm2, {1, 0.2, 20, 0.4, 300}), 250, {1}},
-      {"degrading_elastoplastic",
-       Math(LawType::kDegradingBhm2, {2, 0, 5, 0.6, 40}),
-       100,
-       {2}},
+      {"degrading_elastoplastic", Math(LawType::kDegradingBhm2, {2, 0, 5, 0.6, 40}), 100, {2}},
+      // The bearing presets at v = 0 and t = 0 (mu = mu_slow; the lead core heats
+      // adiabatically), where they are rate-independent.
+      {"friction_pendulum",
+       Math(LawType::kFrictionPendulum, {1000, 2000, 1, 0.05, NAN, NAN, NAN}),
+       250,
+       {50.5, 0.5}},
+      {"friction_pendulum_mu_of_v",
+       Math(LawType::kFrictionPendulum, {1000, 2000, 2, NAN, 0.03, 0.09, 0.02}),
+       250,
+       {15.5, 0.5}},
+      {"lead_rubber",
+       Math(LawType::kLeadRubber, {60, 1, 6, NAN, NAN, NAN, NAN, NAN, NAN, NAN}),
+       250,
+       {11, 1}},
+      // Only the virgin slope is fixed: heating lowers the strength, so the pre-yield slope.
+      {"lead_rubber_heated",
+       Math(LawType::kLeadRubber, {60, 1, 6, 100, 200, 1.456e-3, NAN, NAN, NAN, NAN}),
+       250,
+       {11}},
+      {"hdr_bearing", Math(LawType::kHdrBearing, {4e-4, 331831, 150, 0.15, 1.5, NAN}), 250, {}},
   };
 }
 
@@ -214,6 +231,20 @@ TEST_P(LawUpdate, SliderStaysAdmissibleAndDissipatesFsTimesItsTravel) {
                   1e-9 * (1 + std::abs(next.response.force)))
           << where;
       EXPECT_GE(work, -1e-9 * (1 + std::abs(next.state.dissipated))) << where;
+    } else if (std::holds_alternative<FrictionPendulum>(c.kernel) ||
+               std::holds_alternative<LeadRubber>(c.kernel)) {
+      // The interface variable stays in [-1, 1]; a slider that moved sits at z = +-1 in the
+      // direction it moved, and its travel is what the state accumulates.
+      const UnitSlider& slider = std::holds_alternative<LeadRubber>(c.kernel)
+                                     ? std::get<LeadRubber>(c.kernel).slider
+                                     : std::get<FrictionPendulum>(c.kernel).slider;
+      const double z = slider.Z(u, next.state.slider);
+      EXPECT_LE(std::abs(z), 1 + 1e-9) << where;
+      if (std::abs(travel) > 1e-12) {
+        EXPECT_NEAR(z, travel > 0 ? 1 : -1, 1e-9) << where;
+      }
+      EXPECT_NEAR(next.state.accumulated_slip - state.accumulated_slip, std::abs(travel), 1e-12)
+          << where;
     } else {
       EXPECT_EQ(work, 0.0) << where;
     }

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "integrators/chopra_chapter5.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/structure/shear_building.h"
-#include "integrators/chopra_chapter5.h"
 #include "reference_data.h"
 
 namespace isolab::integrators {

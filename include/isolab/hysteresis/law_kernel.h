@@ -9,13 +9,15 @@
 #include "isolab/hysteresis/dashpot.h"
 #include "isolab/hysteresis/degrading_slider.h"
 #include "isolab/hysteresis/elastic_spring.h"
+#include "isolab/hysteresis/friction_pendulum.h"
+#include "isolab/hysteresis/lead_rubber.h"
 #include "isolab/hysteresis/parallel_slider.h"
 #include "isolab/hysteresis/series_slider.h"
 
 namespace isolab::hysteresis {
 
-using LawKernel =
-    std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen, DegradingSlider>;
+using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen,
+                               DegradingSlider, FrictionPendulum, LeadRubber>;
 
 inline void UpdateLaw(const LawKernel& kernel, const LawState& committed, const LawInput& in,
                       LawState* trial, LawResponse* response) {

@@ -14,6 +14,13 @@
 // Bouc-Wen (bouc_wen.h) takes alpha, beta, gamma, delta, nu in both forms. The degrading BHM2
 // (degrading_slider.h) takes BHM2's k0, k1, uy (ke, kh, fs) and its damage's loss, slip_scale.
 //
+// The bearing presets take the engineer's data, the same keys in both forms unless noted:
+//   friction_pendulum  w, r, uy and mu, or mu_slow, mu_fast, a   (friction_pendulum.h)
+//   lead_rubber        qd, kd and ku (mechanical) or dy (mathematical); optionally the lead
+//                      core's heating: lead_diameter, lead_height, lead_heat_capacity [, e2]
+//                      [, steel_conductivity, steel_diffusivity, shim_thickness]  (lead_rubber.h)
+//   hdr_bearing        g, area, tr, damping, strain [, yield_strain]  (hdr_bearing.h)
+//
 // Units are whatever the caller uses consistently (the paper: kN, mm).
 #pragma once
 
@@ -38,9 +45,12 @@ enum class LawType {
   kElastoplastic,
   kBoucWen,
   kDegradingBhm2,
+  kFrictionPendulum,  // friction_pendulum.h
+  kLeadRubber,        // lead_rubber.h
+  kHdrBearing,        // hdr_bearing.h: BHM2 from design data
 };
 
-inline constexpr int kMaxLawParameters = 5;
+inline constexpr int kMaxLawParameters = 10;
 
 enum class ParameterForm { kMathematical, kMechanical };
 
@@ -52,7 +62,8 @@ std::span<const LawType> AllLawTypes();
 // The parameter names of a law in one form, in the order values are passed and returned.
 std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form);
 
-// True when a law may omit this key: THM1's uyh (uc) when k1 = k2 (kh1 = kh2).
+// True when a law may omit this key: THM1's uyh (uc) when k1 = k2 (kh1 = kh2); the bearing
+// presets' alternatives, optional heating and defaulted keys.
 bool IsOptionalKey(LawType type, std::string_view key);
 
 // A validated law. The form the user gave is kept exactly and drives the kernel; the other

@@ -5,10 +5,12 @@
 
 namespace isolab::hysteresis {
 
-// What drives a law: the element's total deformation and its rate.
+// What drives a law: the element's total deformation, its rate, and the time they are reached.
 struct LawInput {
   double u = 0.0;  // deformation (length)
   double v = 0.0;  // deformation rate (length/time); only rate-dependent laws read it
+  double t = 0.0;  // time since the start of the run (time); only the lead core's heat
+                   // conduction reads it (lead_rubber.h), with the increment t - committed.t
 };
 
 // A law's state after an update. Everything a law needs to continue from here.
@@ -18,6 +20,8 @@ struct LawState {
   double force = 0.0;   // force at this state (force)
   double slider = 0.0;  // slider displacement: u_h (series form), u_s (parallel form); else 0
   double accumulated_slip = 0.0;  // total slider travel since rest (length); degrading laws
+  double t = 0.0;                 // time of this state (time); written by the laws that read time
+  double temperature = 0.0;       // lead-core temperature rise above the start (degC); lead_rubber
   // Energy dissipated since rest: slider work or dashpot work (force*length).
   double dissipated = 0.0;
 };

@@ -59,12 +59,12 @@ class Structure {
   // structure's life, so a solver analyses it once.
   const SparseMatrix& tangent_pattern() const { return pattern_; }
 
-  // Updates every law at trial (u, v) from `committed`, writes `trial` states and `responses`
-  // (law_count() each), the resisting force (connections plus C v) into `force`, each
+  // Updates every law at trial (u, v) at time t from `committed`, writes `trial` states and
+  // `responses` (law_count() each), the resisting force (connections plus C v) into `force`, each
   // connection's force into `connection_forces`, and, when `tangent` is not null, the
   // effective tangent with `factors` into its values (its pattern must be tangent_pattern()).
   // Allocates nothing.
-  void Evaluate(std::span<const hysteresis::LawState> committed, const Eigen::VectorXd& u,
+  void Evaluate(std::span<const hysteresis::LawState> committed, double t, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
                 std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                 std::span<double> connection_forces, const TangentFactors& factors,

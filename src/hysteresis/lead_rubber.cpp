@@ -1,0 +1,83 @@
+#include "isolab/hysteresis/lead_rubber.h"
+
+#include <algorithm>
+#include <numbers>
+
+namespace isolab::hysteresis {
+namespace {
+
+// Kalpakidis & Constantinou (2009)'s F(tau), the conduction through the end plates.
+double EndPlateFunction(double tau) {
+  constexpr double pi = std::numbers::pi;
+  if (tau < 0.6) {
+    const double q = tau / 4.0;
+    return 2.0 * std::sqrt(tau / pi) - (tau / pi) * (2.0 - q - q * q - 3.75 * q * q * q);
+  }
+  const double x = 4.0 * tau;
+  return 8.0 / (3.0 * pi) -
+         (1.0 - 1.0 / (12.0 * tau) + 1.0 / (6.0 * x * x) - 1.0 / (12.0 * x * x * x)) /
+             (2.0 * std::sqrt(pi * tau));
+}
+
+}  // namespace
+
+double LeadCoreHeating::ConductionRate(double t) const {
+  // h grows as t^(-1/2) towards the start, where T = 0: h T -> 0, so the start contributes 0.
+  if (!(t > 0.0) || !conducts()) return 0.0;
+  const double tau = diffusion * t;
+  return conduction * (1.0 / EndPlateFunction(tau) + shim_ratio / std::cbrt(tau));
+}
+
+double LeadCoreHeating::HalfStepDecay(double t_n, double dt) const {
+  if (!conducts() || !(dt > 0.0)) return 1.0;
+  return std::exp(-0.5 * dt * ConductionRate(t_n + 0.5 * dt));
+}
+
+void LeadRubber::Update(const LawState& committed, const LawInput& in, LawState* trial,
+                        LawResponse* response) const {
+  const UnitSlider::Step step = slider.Update(committed.u, committed.slider, in.u);
+  const double z_n = slider.Z(committed.u, committed.slider);
+  trial->u = in.u;
+  trial->v = in.v;
+  trial->t = in.t;
+  trial->slider = step.slider;
+  trial->accumulated_slip = committed.accumulated_slip + step.travel;
+  response->damping = 0.0;
+  if (!heating.heats()) {
+    trial->temperature = 0.0;
+    trial->dissipated = committed.dissipated + qd * step.travel;
+    trial->force = response->force = kd * in.u + qd * step.z;
+    response->stiffness = kd + qd * step.dz_du;
+    return;
+  }
+  const double e2 = heating.e2;
+  const double decay = heating.HalfStepDecay(committed.t, in.t - committed.t);
+  const double t_n = committed.temperature;
+  const double t_a = t_n * decay;  // after the first half step's conduction
+  const double w_a = std::exp(e2 * t_a);
+  const double strength_a = qd / w_a;
+  // After the increment's slip heats the core: w_b = w_a + E2 Qd0 travel / C, the rise taken as
+  // log1p so that many small increments add up to one large one to round-off.
+  const double growth = e2 * qd * step.travel / heating.capacity;
+  const double w_b = w_a + growth;
+  const double rise = std::log1p(growth / w_a) / e2;
+  const double t_b = t_a + rise;
+  const double t_1 = t_b * decay;
+  const double strength = decay == 1.0 ? qd / w_b : Strength(t_1);
+  const double strength_n = decay == 1.0 ? strength_a : Strength(t_n);
+  trial->temperature = t_1;
+
+  const double uy = slider.uy;
+  const double work =
+      0.5 * strength_a * uy * (step.z * step.z - z_n * z_n) + heating.capacity * rise;
+  const double stored_change = 0.5 * uy * (strength * step.z * step.z - strength_n * z_n * z_n);
+  trial->dissipated = committed.dissipated + work - stored_change;
+  trial->force = response->force = kd * in.u + strength * step.z;
+  // Slipping, d travel / d u = z = s and d T_1 / d travel = decay Qd0 / (C w_b), so the strength
+  // falls as d Qd / d u = -E2 Qd(T_1) decay Qd0 s / (C w_b); z s = 1.
+  const double softening =
+      step.travel > 0.0 ? e2 * strength * decay * qd / (heating.capacity * w_b) : 0.0;
+  response->stiffness = kd + strength * step.dz_du - softening;
+}
+
+}  // namespace isolab::hysteresis
