@@ -4,6 +4,7 @@
 #include <fmt/ostream.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -220,6 +221,9 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
                       "Gaussian force noise on --test-data, relative to each test's RMS force")
       ->check(CLI::Range(0.0, 1.0));
   command->add_option("--seed", options.seed, "Seed of the --noise generator");
+  command->add_flag("--sequential", options.sequential,
+                    "Run a model's tests one after another on one specimen, each from the state "
+                    "the previous left (a campaign); --test-data then says '# specimen: one'");
   command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
 }
 
@@ -230,8 +234,11 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
 
   std::vector<Run> runs;
   for (const io::ModelFile& model : models) {
+    // One specimen per model: its runs in order, each from the state the last one left.
+    std::vector<hysteresis::LawState> state(model.isolation.size());
     for (const CyclicProtocol& protocol : Protocols(model, options)) {
-      runs.push_back({&model, hysteresis::RunCyclicTest(model.isolation, protocol)});
+      if (!options.sequential) std::fill(state.begin(), state.end(), hysteresis::LawState{});
+      runs.push_back({&model, hysteresis::RunCyclicTest(model.isolation, protocol, state)});
     }
   }
 
@@ -251,7 +258,8 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
       }
     }
     identification::AddForceNoise(&tests, options.noise, options.seed);
-    io::WriteCyclicTests(options.test_data, tests, models.front().units);
+    io::WriteCyclicTests(options.test_data, tests, models.front().units,
+                         options.sequential && models.size() == 1);
   }
 
   if (options.json) {

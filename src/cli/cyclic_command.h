@@ -24,6 +24,7 @@ struct CyclicOptions {
   std::string test_data;  // the runs as test,time,displacement,force CSV (for isolab fit)
   double noise = 0.0;     // force noise on test_data, relative to each test's RMS force
   unsigned seed = 1;      // of that noise
+  bool sequential = false;  // a model's runs on one specimen, in order
   bool json = false;
 };
 

@@ -40,6 +40,12 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
                       "Report stem: writes OUT.md, OUT.json and OUT.model.yaml "
                       "(default: <first data file>.diagnosis)");
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the diagnosis");
+  command
+      ->add_option("--specimen", options.specimen,
+                   "sequential: the tests are one specimen in the given order, each starting "
+                   "from the state the previous left; independent: fresh specimens (default: "
+                   "the data's '# specimen:' header, else independent)")
+      ->check(CLI::IsMember({"sequential", "independent"}));
   command->add_option("--budget", options.budget, "Model evaluations per fit (default 12000)")
       ->check(CLI::Range(100L, 100000000L));
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
@@ -50,15 +56,18 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
 
 void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   const io::FitSpec base = io::LoadFitSpec(options.base);
-  auto tests =
+  io::CyclicTestSet set =
       io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
-  const identification::FitData data = diagnosis::AllCycles(std::move(tests));
+  const identification::FitData data =
+      diagnosis::AllCycles(std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
 
   diagnosis::DiagnoseOptions settings;
   settings.seed = options.seed;
   settings.budget = options.budget;
   if (!options.quiet) {
-    fmt::print(stderr, "isolab diagnose: {} tests, base {}\n", data.tests.size(), options.base);
+    fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n", data.tests.size(),
+               data.one_specimen ? "one specimen, in order" : "independent specimens",
+               options.base);
     settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
   diagnosis::Diagnosis result;

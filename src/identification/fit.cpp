@@ -18,13 +18,16 @@
 
 namespace isolab::identification {
 
-FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles) {
+FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles,
+                     bool one_specimen) {
   FitData data;
+  data.one_specimen = one_specimen;
   for (const CyclicTestData& test : tests) {
     std::vector<CycleSpan> spans;
-    if (cycles.empty()) {
-      spans.assign(test.cycles.begin() + std::min<std::size_t>(1, test.cycles.size()),
-                   test.cycles.end());
+    if (cycles.empty() && test.cycles.size() >= 2) {
+      spans.assign(test.cycles.begin() + 1, test.cycles.end());
+    } else if (cycles.empty()) {
+      spans.push_back({0, test.displacement.size()});
     } else {
       for (const int c : cycles) {
         if (c < 1 || c > static_cast<int>(test.cycles.size())) {
@@ -65,9 +68,10 @@ DataScales ScalesOf(const FitData& data) {
 
 FitError ComputeFitError(const hysteresis::ParallelAssembly& assembly, const FitData& data) {
   FitError error;
+  const auto forces = SimulateForces(assembly, data.tests, data.one_specimen);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];
-    const std::vector<double> force = SimulateForce(assembly, test);
+    const std::vector<double>& force = forces[i];
     double misfit = 0.0, norm = 0.0;
     for (const CycleSpan& span : data.fitted[i]) {
       for (std::size_t k = span.begin; k < span.end; ++k) {
@@ -86,12 +90,14 @@ AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<c
                                   const FitData& data) {
   // Normal equations of the weighted problem sum_i w_i |F0_i - B_i a|^2, w_i = 1 / |F0_i|^2.
   const int m = model.amplitude_count();
-  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m), basis;
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
   double constant = 0.0;
+  std::vector<Eigen::MatrixXd> bases;
+  model.Basis(x, data.tests, data.one_specimen, &bases);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];
-    model.Basis(x, test, &basis);
+    const Eigen::MatrixXd& basis = bases[i];
     const Eigen::Map<const Eigen::VectorXd> measured(test.force.data(),
                                                      static_cast<Eigen::Index>(test.force.size()));
     double norm = 0.0;

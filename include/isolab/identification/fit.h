@@ -1,8 +1,9 @@
 // Identification of an assembly's parameters from cyclic tests (Markou & Manolis 2016, Sec. 5):
 // minimise the paper's error
 //   e^2 = sum_i <F0_i - F_i, F0_i - F_i> / <F0_i, F0_i>
-// over tests i (F0 measured, F modelled; inner products over the fitted cycles' samples), the
-// model driven by each test's measured displacement history from rest. The search is pagmo2's
+// over tests i (F0 measured, F modelled; inner products over the fitted samples), the model
+// driven by each test's measured displacement history: from rest, or, when the tests are one
+// specimen, from the state the previous test left. The search is pagmo2's
 // CMA-ES over the shape coordinates of ModelParametrisation (the stiffness amplitudes follow from
 // a sign-constrained linear least-squares solve at every point), several islands in parallel
 // threads, each with its own seed and IPOP restarts, then pagmo's compass search from the best
@@ -19,15 +20,20 @@
 
 namespace isolab::identification {
 
-// The tests and, for each, the cycles that enter the error.
+// The tests and, for each, the spans of samples that enter the error.
 struct FitData {
   std::vector<CyclicTestData> tests;
   std::vector<std::vector<CycleSpan>> fitted;  // per test
+  bool one_specimen = false;  // tests continue one specimen, in order (cyclic_data.h)
 };
 
-// The cycles to fit: `cycles` (1-based) of every test, or, when empty, every cycle after the
-// first. Throws std::invalid_argument naming the test that lacks a requested cycle.
-FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles);
+// The samples to fit: the whole cycles `cycles` (1-based) of every test, or, when empty, every
+// whole cycle after the first (the virgin loading of a sinusoidal protocol is left out, as the
+// paper fits the third cycle) where a test has two or more whole cycles, and its whole history
+// where it has fewer (a seismic or random history). Throws std::invalid_argument naming the test
+// that lacks a requested cycle.
+FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles,
+                     bool one_specimen = false);
 
 DataScales ScalesOf(const FitData& data);
 
