@@ -19,7 +19,9 @@ constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) over
 
 // A group of half-cycles of one test at one amplitude (within kGroupWidth of the group's
 // smallest): a sinusoidal test at one amplitude is one group, a seismic history gives one group
-// per amplitude class. Means over the group's half-cycles, which are kept in time order.
+// per amplitude class. For one specimen tested in order the groups span the tests, so a loop is
+// compared with the loops at its amplitude earlier in the campaign. Means over the group's
+// half-cycles, which are kept in time order.
 constexpr double kGroupWidth = 0.10;
 
 struct TestSummary {
@@ -32,7 +34,7 @@ struct TestSummary {
 
 std::vector<TestSummary> Summaries(const Discrepancy& d) {
   std::map<int, std::vector<const CycleRecord*>> by_test;
-  for (const CycleRecord& c : d.cycles) by_test[c.test].push_back(&c);
+  for (const CycleRecord& c : d.cycles) by_test[d.data->one_specimen ? 0 : c.test].push_back(&c);
   std::vector<TestSummary> result;
   for (auto& [test, records] : by_test) {
     std::stable_sort(records.begin(), records.end(),
@@ -46,8 +48,9 @@ std::vector<TestSummary> Summaries(const Discrepancy& d) {
       TestSummary s;
       s.test = test;
       s.cycles.assign(records.begin() + first, records.begin() + last);
-      std::sort(s.cycles.begin(), s.cycles.end(),
-                [](const auto* a, const auto* b) { return a->cycle < b->cycle; });
+      std::sort(s.cycles.begin(), s.cycles.end(), [](const auto* a, const auto* b) {
+        return a->test != b->test ? a->test < b->test : a->cycle < b->cycle;
+      });
       const double n = static_cast<double>(s.cycles.size());
       for (const CycleRecord* c : s.cycles) {
         s.amplitude += c->amplitude / n;
@@ -224,15 +227,15 @@ Evidence Hardening(const Discrepancy& d, const std::vector<TestSummary>& tests) 
   long samples_there = 0, samples_all = 0;
   for (const TestSummary& s : tests) {
     if (s.amplitude < 0.5 * largest) continue;
-    const auto& test = d.data->tests[s.test];
     for (const CycleRecord* c : s.cycles) {
+      const auto& test = d.data->tests[c->test];
       const CycleSpan span = test.half_cycles[c->cycle - 1];
       // Displacements about the half-cycle's centre: its amplitude is half its range.
       const double centre = 0.5 * (test.displacement[span.begin] + test.displacement[span.end - 1]);
       for (std::size_t k = span.begin; k < span.end; ++k) {
         const double u = test.displacement[k] - centre;
-        const double r2 = std::pow(test.force[k] - d.model_force[s.test][k], 2);
-        const bool there = std::abs(u) > 0.7 * s.amplitude && u * d.velocity[s.test][k] > 0.0;
+        const double r2 = std::pow(test.force[k] - d.model_force[c->test][k], 2);
+        const bool there = std::abs(u) > 0.7 * s.amplitude && u * d.velocity[c->test][k] > 0.0;
         residual_all += r2;
         ++samples_all;
         if (there) residual_there += r2, ++samples_there;
@@ -272,18 +275,18 @@ Evidence Degradation(const Discrepancy& d, const std::vector<TestSummary>& tests
     secant_fall += std::log(last.modelled.secant / first.modelled.secant) -
                    std::log(last.measured.secant / first.measured.secant);
     // Residual of the last half-cycle against the first, sample by sample (over the shorter).
-    const auto& halves = d.data->tests[s.test].half_cycles;
-    const CycleSpan a = halves[first.cycle - 1], b = halves[last.cycle - 1];
+    const auto& test_a = d.data->tests[first.test];
+    const auto& test_b = d.data->tests[last.test];
+    const CycleSpan a = test_a.half_cycles[first.cycle - 1];
+    const CycleSpan b = test_b.half_cycles[last.cycle - 1];
     const std::size_t length = std::min(a.end - a.begin, b.end - b.begin);
-    const auto& test = d.data->tests[s.test];
-    const auto& model = d.model_force[s.test];
     double square = 0.0;
     for (std::size_t k = 0; k < length; ++k) {
-      const double ra = test.force[a.begin + k] - model[a.begin + k];
-      const double rb = test.force[b.begin + k] - model[b.begin + k];
+      const double ra = test_a.force[a.begin + k] - d.model_force[first.test][a.begin + k];
+      const double rb = test_b.force[b.begin + k] - d.model_force[last.test][b.begin + k];
       square += (rb - ra) * (rb - ra);
     }
-    const double noise = d.force_noise[s.test];
+    const double noise = 0.5 * (d.force_noise[first.test] + d.force_noise[last.test]);
     if (length > 0 && noise > 0.0) {
       change_to_noise += std::sqrt(square / length) / (std::sqrt(2.0) * noise);
     }
