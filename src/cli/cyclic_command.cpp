@@ -10,8 +10,8 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
-#include "isolab/io/atomic_file.h"
 #include "isolab/identification/synthetic_tests.h"
+#include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/model_file.h"
 
@@ -217,8 +217,9 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   command->add_option("--csv", options.csv, "Write the loop (time, u, force, force per component)");
   command->add_option("--test-data", options.test_data,
                       "Write the runs as cyclic test data (test,time,displacement,force CSV)");
-  command->add_option("--noise", options.noise,
-                      "Gaussian force noise on --test-data, relative to each test's RMS force")
+  command
+      ->add_option("--noise", options.noise,
+                   "Gaussian force noise on --test-data, relative to each test's RMS force")
       ->check(CLI::Range(0.0, 1.0));
   command->add_option("--seed", options.seed, "Seed of the --noise generator");
   command->add_flag("--sequential", options.sequential,
@@ -253,8 +254,8 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
     for (const Run& run : runs) {
       tests.push_back(identification::TestFromLoop(run.result, options.periods.size() > 1));
       if (models.size() > 1) {
-        tests.back().name = std::filesystem::path(run.model->path).stem().string() + ":" +
-                            tests.back().name;
+        tests.back().name =
+            std::filesystem::path(run.model->path).stem().string() + ":" + tests.back().name;
       }
     }
     identification::AddForceNoise(&tests, options.noise, options.seed);

@@ -58,8 +58,8 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   const io::FitSpec base = io::LoadFitSpec(options.base);
   io::CyclicTestSet set =
       io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
-  const identification::FitData data =
-      diagnosis::AllCycles(std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
+  const identification::FitData data = diagnosis::AllCycles(
+      std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
 
   diagnosis::DiagnoseOptions settings;
   settings.seed = options.seed;

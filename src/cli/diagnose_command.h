@@ -19,7 +19,7 @@ struct DiagnoseOptions {
   std::string out;                // report stem: OUT.md, OUT.json, OUT.model.yaml
   unsigned seed = 1;
   std::string specimen;  // "sequential", "independent"; empty: the data's header
-  long budget = 12000;                                // evaluations per fit
+  long budget = 12000;   // evaluations per fit
   std::string force_unit = "kN", length_unit = "mm";  // of the data, unless its header says
   bool json = false;
   bool quiet = false;

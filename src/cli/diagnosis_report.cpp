@@ -187,8 +187,8 @@ std::string DiagnosisMarkdown(const Diagnosis& d, const FitData& data,
       data.one_specimen ? "one specimen tested in this order, each test starting from the state "
                           "the previous one left"
                         : "independent specimens, each simulated from rest",
-      d.samples, context.base_file, ComponentsText(d.base),
-      100 * d.base.fit.error.total, 100 * d.noise_floor);
+      d.samples, context.base_file, ComponentsText(d.base), 100 * d.base.fit.error.total,
+      100 * d.noise_floor);
 
   md += "## Finding\n\n";
   if (d.steps.empty()) {

@@ -99,8 +99,8 @@ Rise LargestRise(const std::vector<TestSummary>& tests, Y y) {
     for (std::size_t j = 0; j < tests.size(); ++j) {
       if (!(tests[j].amplitude > 1.05 * tests[i].amplitude)) continue;
       if (!std::isfinite(means[i].value) || !std::isfinite(means[j].value)) continue;
-      const double value = means[j].value - means[i].value -
-                           2.0 * std::sqrt(means[i].variance + means[j].variance);
+      const double value =
+          means[j].value - means[i].value - 2.0 * std::sqrt(means[i].variance + means[j].variance);
       if (!rise.to || value > rise.value) rise = {value, &tests[i], &tests[j]};
     }
   }
@@ -188,9 +188,8 @@ Evidence AmplitudeDissipation(const std::vector<TestSummary>& tests) {
   Evidence e;
   e.statistic = "largest rise with amplitude of ln(measured / modelled energy per half-cycle)";
   e.threshold = kDissipationThreshold;
-  const Rise rise = LargestRise(tests, [](const CycleRecord& c) {
-    return std::log(c.measured.energy / c.modelled.energy);
-  });
+  const Rise rise = LargestRise(
+      tests, [](const CycleRecord& c) { return std::log(c.measured.energy / c.modelled.energy); });
   e.value = rise.value;
   if (rise.to) {
     e.finding = fmt::format(
@@ -208,9 +207,8 @@ Evidence Hardening(const Discrepancy& d, const std::vector<TestSummary>& tests) 
   Evidence e;
   e.statistic = "largest rise with amplitude of ln(measured / modelled secant stiffness)";
   e.threshold = kHardeningThreshold;
-  const Rise rise = LargestRise(tests, [](const CycleRecord& c) {
-    return std::log(c.measured.secant / c.modelled.secant);
-  });
+  const Rise rise = LargestRise(
+      tests, [](const CycleRecord& c) { return std::log(c.measured.secant / c.modelled.secant); });
   e.value = rise.value;
   if (rise.to) {
     e.finding = fmt::format(

@@ -109,8 +109,7 @@ double LoopEnergy(const std::vector<double>& u, const std::vector<double>& f, Cy
   return energy;
 }
 
-double HalfCycleEnergy(const std::vector<double>& u, const std::vector<double>& f,
-                       CycleSpan span) {
+double HalfCycleEnergy(const std::vector<double>& u, const std::vector<double>& f, CycleSpan span) {
   double work = 0.0;
   for (std::size_t k = span.begin + 1; k < span.end; ++k) {
     work += 0.5 * (f[k] + f[k - 1]) * (u[k] - u[k - 1]);
@@ -121,7 +120,8 @@ double HalfCycleEnergy(const std::vector<double>& u, const std::vector<double>& 
 
 double SpanAmplitude(const std::vector<double>& u, CycleSpan span) {
   double amplitude = 0.0;
-  for (std::size_t k = span.begin; k < span.end; ++k) amplitude = std::max(amplitude, std::abs(u[k]));
+  for (std::size_t k = span.begin; k < span.end; ++k)
+    amplitude = std::max(amplitude, std::abs(u[k]));
   return amplitude;
 }
 

@@ -1,5 +1,9 @@
 #include "isolab/identification/fit.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
 #include <pagmo/algorithm.hpp>
 #include <pagmo/algorithms/cmaes.hpp>
 #include <pagmo/algorithms/compass_search.hpp>
@@ -7,11 +11,6 @@
 #include <pagmo/islands/thread_island.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -236,7 +235,8 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
   pagmo::archipelago archipelago;
   for (int i = 0; i < islands; ++i) {
     states[i].population = population_size;
-    pagmo::population population{problem, static_cast<pagmo::population::size_type>(population_size),
+    pagmo::population population{problem,
+                                 static_cast<pagmo::population::size_type>(population_size),
                                  IslandSeed(options.seed, i, 1000)};
     if (i == 0) population.set_x(0, model.StartPoint());  // the given (or middle) start
     archipelago.push_back(pagmo::thread_island{}, Cmaes(IslandSeed(options.seed, i, 0)),
@@ -277,9 +277,9 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
         state.chunks_without_progress = 0;
         retired += static_cast<long>(population.get_problem().get_fevals());
         island.set_algorithm(Cmaes(IslandSeed(options.seed, i, state.restarts)));
-        island.set_population(pagmo::population{
-            problem, static_cast<pagmo::population::size_type>(state.population),
-            IslandSeed(options.seed, i, 1000 + state.restarts)});
+        island.set_population(
+            pagmo::population{problem, static_cast<pagmo::population::size_type>(state.population),
+                              IslandSeed(options.seed, i, 1000 + state.restarts)});
         state.best_f = std::min(state.best_f, f);
       }
     }
@@ -324,8 +324,7 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
   result.error = ComputeFitError(model.Assembly(best_x, result.amplitudes), data);
   result.evaluations = evaluations;
   for (const IslandState& state : states) result.restarts += state.restarts;
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.progress) options.progress({evaluations, generation, result.error.total, true});
   return result;
 }

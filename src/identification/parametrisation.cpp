@@ -14,8 +14,8 @@ double CoordinateRange::At(double x) const {
 }
 
 double CoordinateRange::Inverse(double value) const {
-  const double x = log ? std::log(value / low) / std::log(high / low)
-                       : (value - low) / (high - low);
+  const double x =
+      log ? std::log(value / low) / std::log(high / low) : (value - low) / (high - low);
   return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.5;
 }
 
@@ -103,10 +103,9 @@ ModelParametrisation::ModelParametrisation(std::vector<ComponentSpec> components
     const auto check = [&](const auto& map, const char* what) {
       for (const auto& entry : map) {
         if (std::find(names.begin(), names.end(), entry.first) == names.end()) {
-          throw std::invalid_argument(spec.name + ": '" + entry.first +
-                                      "' is not a shape coordinate of " +
-                                      std::string(hysteresis::LawName(spec.type)) + " (" + what +
-                                      ")");
+          throw std::invalid_argument(
+              spec.name + ": '" + entry.first + "' is not a shape coordinate of " +
+              std::string(hysteresis::LawName(spec.type)) + " (" + what + ")");
         }
       }
     };
@@ -144,7 +143,8 @@ std::vector<std::string> ModelParametrisation::FreeNames() const {
   return names;
 }
 
-std::vector<std::vector<double>> ModelParametrisation::ShapeValues(std::span<const double> x) const {
+std::vector<std::vector<double>> ModelParametrisation::ShapeValues(
+    std::span<const double> x) const {
   std::vector<std::vector<double>> values = fixed_values_;
   for (std::size_t k = 0; k < free_.size(); ++k) {
     values[free_[k].component][free_[k].coordinate] = free_[k].range.At(x[k]);
@@ -152,9 +152,8 @@ std::vector<std::vector<double>> ModelParametrisation::ShapeValues(std::span<con
   return values;
 }
 
-void ModelParametrisation::Basis(std::span<const double> x,
-                                 std::span<const CyclicTestData> tests, bool one_specimen,
-                                 std::vector<Eigen::MatrixXd>* bases) const {
+void ModelParametrisation::Basis(std::span<const double> x, std::span<const CyclicTestData> tests,
+                                 bool one_specimen, std::vector<Eigen::MatrixXd>* bases) const {
   const auto shapes = ShapeValues(x);
   bases->resize(tests.size());
   for (std::size_t i = 0; i < tests.size(); ++i) {
@@ -285,9 +284,8 @@ hysteresis::ParallelAssembly ModelParametrisation::Assembly(
   for (std::size_t i = 0; i < components_.size(); ++i) {
     components.push_back(
         {components_[i].name,
-         hysteresis::LawParameters::Make(components_[i].type,
-                                         hysteresis::ParameterForm::kMathematical,
-                                         mathematical[i])});
+         hysteresis::LawParameters::Make(
+             components_[i].type, hysteresis::ParameterForm::kMathematical, mathematical[i])});
   }
   return hysteresis::ParallelAssembly(std::move(components));
 }

@@ -22,9 +22,9 @@ void AddForceNoise(std::vector<CyclicTestData>* tests, double noise, unsigned se
 
 CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result, bool name_period) {
   CyclicTestData test;
-  test.name = name_period ? fmt::format("u={:g}_T={:g}", result.protocol.amplitude,
-                                        result.protocol.period)
-                          : fmt::format("u={:g}", result.protocol.amplitude);
+  test.name = name_period
+                  ? fmt::format("u={:g}_T={:g}", result.protocol.amplitude, result.protocol.period)
+                  : fmt::format("u={:g}", result.protocol.amplitude);
   test.time = result.loop.time;
   test.displacement = result.loop.displacement;
   test.force = result.loop.force;

@@ -25,7 +25,8 @@ std::string Trim(std::string text) {
 }
 
 std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return text;
 }
 
@@ -85,12 +86,14 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
     }
     const std::vector<std::string> fields = Split(line);
     if (column.empty()) {  // the header
-      for (std::size_t k = 0; k < fields.size(); ++k) column[Lower(fields[k])] = static_cast<int>(k);
+      for (std::size_t k = 0; k < fields.size(); ++k)
+        column[Lower(fields[k])] = static_cast<int>(k);
       for (const char* needed : {"time", "displacement", "force"}) {
         if (!column.count(needed)) {
           throw InputError({path, line_number},
                            fmt::format("missing column '{}' (expected test,time,displacement,"
-                                       "force; test optional)", needed));
+                                       "force; test optional)",
+                                       needed));
         }
       }
       try {
@@ -118,9 +121,8 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
       }
       return value;
     };
-    const std::string name = column.count("test")
-                                 ? field("test")
-                                 : std::filesystem::path(path).stem().string();
+    const std::string name =
+        column.count("test") ? field("test") : std::filesystem::path(path).stem().string();
     auto [it, inserted] = test_index.try_emplace(name, tests->size());
     if (inserted) tests->push_back({name, {}, {}, {}, {}, {}});
     CyclicTestData& test = (*tests)[it->second];

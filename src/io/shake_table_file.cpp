@@ -40,9 +40,8 @@ std::pair<std::string, std::string> NameAndUnit(const std::string& header) {
   const auto open = header.find_first_of("[(");
   if (open != std::string::npos) {
     const auto close = header.find_first_of("])", open);
-    const std::string unit =
-        Trim(header.substr(open + 1, close == std::string::npos ? std::string::npos
-                                                                : close - open - 1));
+    const std::string unit = Trim(
+        header.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1));
     return {Trim(header.substr(0, open)), unit};
   }
   for (const auto& [suffix, unit] : kSuffixes) {
@@ -70,6 +69,7 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
     const std::vector<std::string> fields = Split(line);
     if (header_line == 0) {
       header_line = line_number;
+      data.header_line_ = line_number;
       for (std::size_t k = 0; k < fields.size(); ++k) {
         const int column = static_cast<int>(k) + 1;
         auto [name, unit] = NameAndUnit(fields[k]);
@@ -81,11 +81,11 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
         }
         for (std::size_t j = 0; j < data.columns_.size(); ++j) {
           if (data.columns_[j].name == name) {
-            throw InputError({path, line_number, column},
-                             fmt::format("channel '{}' appears twice, in {} (column {}) and in {}: "
-                                         "which one is meant?",
-                                         name, data.columns_[j].unit, data.header_columns_[j],
-                                         unit));
+            throw InputError(
+                {path, line_number, column},
+                fmt::format("channel '{}' appears twice, in {} (column {}) and in {}: "
+                            "which one is meant?",
+                            name, data.columns_[j].unit, data.header_columns_[j], unit));
           }
         }
         if (name == "time") {
@@ -123,9 +123,9 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
       const auto [end, error] = std::from_chars(begin, fields[k].data() + fields[k].size(), value);
       if (fields[k].empty() || error != std::errc() || end != fields[k].data() + fields[k].size() ||
           !std::isfinite(value)) {
-        throw InputError({path, line_number, static_cast<int>(k) + 1},
-                         fmt::format("column '{}': '{}' is not a finite number", names[k],
-                                     fields[k]));
+        throw InputError(
+            {path, line_number, static_cast<int>(k) + 1},
+            fmt::format("column '{}': '{}' is not a finite number", names[k], fields[k]));
       }
       if (static_cast<int>(k) == time_column) {
         if (!data.time_.empty() && !(value > data.time_.back())) {
@@ -141,8 +141,8 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
   }
   if (header_line == 0) throw InputError({path}, "the file is empty (expected a header line)");
   if (data.time_.size() < 2) {
-    throw InputError({path, line_number}, fmt::format("{} samples: too short for a history",
-                                                      data.time_.size()));
+    throw InputError({path, line_number},
+                     fmt::format("{} samples: too short for a history", data.time_.size()));
   }
   return data;
 }
@@ -160,9 +160,9 @@ std::vector<double> ShakeTableData::Channel(const std::string& name, Dimension d
     try {
       factor = into.Convert(1.0, columns_[j].unit, dimension);
     } catch (const std::invalid_argument& error) {
-      throw InputError({path_, 0, header_columns_[j]},
-                       fmt::format("channel '{}' in {}: expected a {} ({})", name,
-                                   columns_[j].unit, DescribeDimension(dimension), error.what()));
+      throw InputError({path_, header_line_, header_columns_[j]},
+                       fmt::format("channel '{}' is in {}, which is not a unit of {}", name,
+                                   columns_[j].unit, DescribeDimension(dimension)));
     }
     std::vector<double> values = columns_[j].values;
     for (double& v : values) v *= factor;

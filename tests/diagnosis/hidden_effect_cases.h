@@ -22,7 +22,7 @@ struct HiddenEffectCase {
 };
 
 inline identification::SyntheticTestOptions DiagnosisProtocol(unsigned seed,
-                                                             bool one_specimen = false) {
+                                                              bool one_specimen = false) {
   identification::SyntheticTestOptions protocol{
       {10, 25, 50, 100, 150, 200}, {2.0, 0.5}, 3, 200, 0.01, seed};
   protocol.one_specimen = one_specimen;

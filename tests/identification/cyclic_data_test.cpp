@@ -93,9 +93,8 @@ hysteresis::ParallelAssembly DegradingBearing() {
   return hysteresis::ParallelAssembly(
       {{"base", LawParameters::Make(LawType::kBhm2, ParameterForm::kMathematical,
                                     std::vector<double>{1.5, 0.25, 8.0})},
-       {"degrading",
-        LawParameters::Make(LawType::kDegradingBhm2, ParameterForm::kMathematical,
-                            std::vector<double>{0.5, 0.0, 30.0, 0.6, 150.0})}});
+       {"degrading", LawParameters::Make(LawType::kDegradingBhm2, ParameterForm::kMathematical,
+                                         std::vector<double>{0.5, 0.0, 30.0, 0.6, 150.0})}});
 }
 
 TEST(OneSpecimen, AHistoryCutIntoTestsGivesTheForcesOfTheWholeHistory) {
@@ -105,7 +104,8 @@ TEST(OneSpecimen, AHistoryCutIntoTestsGivesTheForcesOfTheWholeHistory) {
   for (int k = 0; k < 3000; ++k) {
     const double t = 0.01 * k;
     whole.time.push_back(t);
-    whole.displacement.push_back(80 * std::exp(-t / 20) * std::sin(2.1 * t) + 15 * std::sin(0.3 * t));
+    whole.displacement.push_back(80 * std::exp(-t / 20) * std::sin(2.1 * t) +
+                                 15 * std::sin(0.3 * t));
   }
   const auto bearing = DegradingBearing();
   whole.force = SimulateForce(bearing, whole);

@@ -38,8 +38,8 @@ FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& 
 DataScales ScalesOf(const FitData& data);
 
 struct FitError {
-  double total = 0.0;             // the paper's e^2, the sum of per_test
-  std::vector<double> per_test;   // each test's term
+  double total = 0.0;            // the paper's e^2, the sum of per_test
+  std::vector<double> per_test;  // each test's term
 };
 
 FitError ComputeFitError(const hysteresis::ParallelAssembly& assembly, const FitData& data);
@@ -61,17 +61,17 @@ struct FitProgress {
 
 struct FitOptions {
   unsigned seed = 1;
-  long budget = 60000;  // model evaluations over all islands, CMA-ES and polish; >= 100
-  int islands = 0;      // parallel CMA-ES islands; 0: one per hardware thread (at least 2)
+  long budget = 60000;        // model evaluations over all islands, CMA-ES and polish; >= 100
+  int islands = 0;            // parallel CMA-ES islands; 0: one per hardware thread (at least 2)
   double polish_share = 0.1;  // share of the budget for the compass-search polish; [0, 1)
   std::function<void(const FitProgress&)> progress;  // called every few generations
 };
 
 struct FitResult {
-  std::vector<double> point;                      // shape point, in the unit cube
+  std::vector<double> point;  // shape point, in the unit cube
   Eigen::VectorXd amplitudes;
   std::vector<std::vector<double>> mathematical;  // per component
-  FitError error;  // of the fitted assembly, by simulation
+  FitError error;                                 // of the fitted assembly, by simulation
   long evaluations = 0;
   int restarts = 0;
   double seconds = 0.0;

@@ -11,11 +11,11 @@
 namespace isolab::identification {
 
 struct SyntheticTestOptions {
-  std::vector<double> amplitudes;  // one test per amplitude and period (length)
+  std::vector<double> amplitudes;    // one test per amplitude and period (length)
   std::vector<double> periods{2.0};  // (time); 0.5 Hz as in HDRB qualification tests
   int cycles = 3;
   int steps_per_cycle = 200;
-  double noise = 0.0;    // standard deviation of the force noise, relative to the test's RMS force
+  double noise = 0.0;  // standard deviation of the force noise, relative to the test's RMS force
   unsigned seed = 1;
   // One specimen: the tests run in order on one specimen, each from the state the previous one
   // left (a campaign whose damage accumulates); else each on a fresh specimen.

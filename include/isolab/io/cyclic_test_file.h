@@ -25,7 +25,7 @@ struct CyclicTestUnits {
 
 struct CyclicTestSet {
   std::vector<identification::CyclicTestData> tests;  // in file order
-  bool one_specimen = false;  // a file's "# specimen: one" header
+  bool one_specimen = false;                          // a file's "# specimen: one" header
 };
 
 // Throws InputError.

@@ -17,8 +17,8 @@
 namespace isolab::io {
 
 struct ShakeTableColumn {
-  std::string name;  // without its unit: "a1", "table_acceleration"
-  std::string unit;  // "m/s^2", "m", "s", "g", ...
+  std::string name;            // without its unit: "a1", "table_acceleration"
+  std::string unit;            // "m/s^2", "m", "s", "g", ...
   std::vector<double> values;  // as in the file
 };
 
@@ -42,6 +42,7 @@ class ShakeTableData {
   std::vector<double> time_;
   std::vector<ShakeTableColumn> columns_;  // every column but time
   std::vector<int> header_columns_;        // 1-based column of each entry of columns_
+  int header_line_ = 0;
 };
 
 }  // namespace isolab::io
