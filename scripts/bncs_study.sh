@@ -3,8 +3,9 @@
 # the isolator's measured history of both motions (isolab shaketable), the isolation layer fitted
 # to ICA50 as a BHM2 and as a Table 9-style THM1 assembly (isolab fit; writes the fitted files in
 # models/bncs/), LAC100 predicted with each (isolab shaketable --predict) and the plots in
-# docs/images/. With --diagnose also isolab diagnose on the ICA50 isolator history (about 15
-# minutes on a 2-core machine).
+# docs/images/. With --diagnose also isolab diagnose on the ICA50 isolator history (about 12
+# minutes on a 2-core machine; writes models/bncs/bncs_diagnosed.fitted.yaml) and the predictions
+# of the diagnosed model.
 # Usage: scripts/bncs_study.sh [--diagnose] [DATA_DIR]   (default ../shared/measured/bncs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,11 +35,20 @@ done
 python3=/usr/bin/python3
 "$python3" scripts/plot_shaketable.py loop "$out/ica50_isolator.csv" "$out/lac100_isolator.csv" \
   -o docs/images/bncs_isolator_loop.png
-"$python3" scripts/plot_shaketable.py overlay "$out/lac100_thm1_comparison.csv" \
-  -o docs/images/bncs_lac100_prediction.png \
-  --title "LAC100 predicted by the THM1 assembly fitted to ICA50"
 if [[ $diagnose == 1 ]]; then
   build/isolab diagnose "$out/ica50_isolator.csv" --base models/bncs/bhm2_spec.yaml \
     --out "$out/ica50_diagnosis" -q > "$out/ica50_diagnosis.txt"
+  cp "$out/ica50_diagnosis.model.yaml" models/bncs/bncs_diagnosed.fitted.yaml
 fi
+overlays=("$out/lac100_thm1_comparison.csv")
+if [[ -f models/bncs/bncs_diagnosed.fitted.yaml ]]; then
+  for motion in ica50 lac100; do
+    build/isolab shaketable "$out/bncs_$motion.csv" --model models/bncs/bncs_diagnosed.yaml \
+      --predict -q --results "$out/${motion}_diagnosed.h5" \
+      --comparison "$out/${motion}_diagnosed_comparison.csv" > "$out/${motion}_diagnosed_prediction.txt"
+  done
+  overlays+=("$out/lac100_diagnosed_comparison.csv")
+fi
+"$python3" scripts/plot_shaketable.py overlay "${overlays[@]}" \
+  -o docs/images/bncs_lac100_prediction.png --title "LAC100 predicted from ICA50 fits"
 head -n 20 "$out"/*_prediction.txt

@@ -4,7 +4,8 @@ cyclic-test CSV that --isolator writes, and the measured-vs-predicted overlay fr
 --comparison writes.
 
 Usage: plot_shaketable.py loop ISOLATOR.csv [MORE.csv ...] -o loop.png [--weight W]
-       plot_shaketable.py overlay COMPARISON.csv -o overlay.png [--title TEXT]
+       plot_shaketable.py overlay COMPARISON.csv [MORE.csv ...] -o overlay.png [--title TEXT]
+(each further comparison adds its prediction, labelled by its file name)
 """
 import argparse
 
@@ -35,21 +36,28 @@ def loop(args, plt, np):
 
 
 def overlay(args, plt, np):
-    data = np.genfromtxt(args.files[0], delimiter=",", names=True)
     figure, axes = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
-    t = data["time_s"]
-    axes[0].plot(t, data["isolator_displacement_measured"], "k", linewidth=0.8, label="measured")
-    axes[0].plot(t, data["isolator_displacement_predicted"], "r", linewidth=0.8, label="predicted")
+    colours = ["r", "b", "g"]
+    for i, path in enumerate(args.files):
+        data = np.genfromtxt(path, delimiter=",", names=True)
+        t = data["time_s"]
+        label = path.split("/")[-1].replace("_comparison.csv", "").replace(".csv", "")
+        if i == 0:
+            axes[0].plot(t, data["isolator_displacement_measured"], "k", linewidth=0.9,
+                         label="measured")
+            axes[1].plot(t, data["roof_acceleration_measured"] / 9806.65, "k", linewidth=0.7,
+                         label="measured")
+        colour = colours[i % len(colours)]
+        axes[0].plot(t, data["isolator_displacement_predicted"], colour, linewidth=0.7,
+                     label=f"predicted: {label}")
+        axes[1].plot(t, data["roof_acceleration_predicted"] / 9806.65, colour, linewidth=0.5,
+                     label=f"predicted: {label}")
     axes[0].set_ylabel("isolator displacement [mm]")
-    axes[1].plot(t, data["roof_acceleration_measured"] / 9806.65, "k", linewidth=0.6,
-                 label="measured")
-    axes[1].plot(t, data["roof_acceleration_predicted"] / 9806.65, "r", linewidth=0.6,
-                 label="predicted")
     axes[1].set_ylabel("roof absolute acceleration [g]")
     axes[1].set_xlabel("time [s]")
     for a in axes:
         a.grid(True, linewidth=0.3)
-        a.legend(fontsize=8, loc="upper right")
+        a.legend(fontsize=7, loc="upper right")
     axes[0].set_title(args.title or "Measured vs predicted")
     figure.tight_layout()
     figure.savefig(args.output, dpi=130)

@@ -14,6 +14,7 @@
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/fit_spec_file.h"
 #include "isolab/io/fitted_model_file.h"
+#include "specimen_option.h"
 
 namespace isolab::cli {
 namespace {
@@ -40,12 +41,7 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
                       "Report stem: writes OUT.md, OUT.json and OUT.model.yaml "
                       "(default: <first data file>.diagnosis)");
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the diagnosis");
-  command
-      ->add_option("--specimen", options.specimen,
-                   "sequential: the tests are one specimen in the given order, each starting "
-                   "from the state the previous left; independent: fresh specimens (default: "
-                   "the data's '# specimen:' header, else independent)")
-      ->check(CLI::IsMember({"sequential", "independent"}));
+  AddSpecimenOption(command, &options.specimen);
   command->add_option("--budget", options.budget, "Model evaluations per fit (default 12000)")
       ->check(CLI::Range(100L, 100000000L));
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");

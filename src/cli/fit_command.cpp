@@ -15,6 +15,7 @@
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/fit_spec_file.h"
 #include "isolab/io/fitted_model_file.h"
+#include "specimen_option.h"
 
 namespace isolab::cli {
 namespace {
@@ -88,12 +89,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
   command->add_option("--cycles", options.cycles,
                       "Whole cycles to fit, 1-based (default: every whole cycle after the first, "
                       "or the whole history of a test with fewer than two)");
-  command
-      ->add_option("--specimen", options.specimen,
-                   "sequential: the tests are one specimen in the given order, each starting "
-                   "from the state the previous left; independent: fresh specimens (default: "
-                   "the data's '# specimen:' header, else independent)")
-      ->check(CLI::IsMember({"sequential", "independent"}));
+  AddSpecimenOption(command, &options.specimen);
   command->add_option("-o,--output", options.output, "Fitted model file (YAML)");
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
   command->add_option("--length-unit", options.length_unit, "Length unit of the data (default mm)");

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "reference_data.h"
 
 namespace {
 
@@ -56,27 +57,6 @@ Matrix Read(hid_t file, const char* name) {
   H5Sclose(space);
   H5Dclose(dataset);
   return m;
-}
-
-std::vector<std::vector<double>> ReadCsvColumns(const std::string& path, int skip_columns) {
-  std::ifstream in(path);
-  std::vector<std::vector<double>> columns;
-  bool header = true;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::stringstream stream(line);
-    std::string field;
-    for (int c = 0; std::getline(stream, field, ','); ++c) {
-      if (c < skip_columns) continue;
-      if (columns.size() <= static_cast<std::size_t>(c - skip_columns)) columns.emplace_back();
-      columns[c - skip_columns].push_back(std::stod(field));
-    }
-  }
-  return columns;
 }
 
 // A four-level isolated building (base slab and three floors, 30 t each) on a BHM2 isolator under
@@ -137,14 +117,14 @@ TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack
   EXPECT_NE(json["displacement_reference"].get<std::string>().find("relative"), std::string::npos);
 
   // -sum m a over the four levels is the isolator's force, sample by sample.
-  const auto columns = ReadCsvColumns(isolator.string(), 1);  // time, displacement, force
-  ASSERT_EQ(columns.size(), 3u);
-  ASSERT_EQ(columns[2].size(), time.rows);
+  // Rows of time, displacement, force (the test-name column left out).
+  const auto rows = isolab::testing::ReadNumericCsv(isolator, 1);
+  ASSERT_EQ(rows.size(), time.rows);
   double peak = 0.0, worst = 0.0;
   for (std::size_t r = 0; r < time.rows; ++r) {
     peak = std::max(peak, std::abs(force(r, 0)));
-    worst = std::max(worst, std::abs(columns[2][r] - force(r, 0)));
-    ASSERT_NEAR(columns[1][r], u(r, 0), 1e-6 * std::abs(u(r, 0)) + 1e-9);
+    worst = std::max(worst, std::abs(rows[r][2] - force(r, 0)));
+    ASSERT_NEAR(rows[r][1], u(r, 0), 1e-6 * std::abs(u(r, 0)) + 1e-9);
   }
   EXPECT_LT(worst, 1e-5 * peak) << "peak isolator force " << peak;
 
