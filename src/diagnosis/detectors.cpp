@@ -15,7 +15,7 @@ using identification::CycleSpan;
 constexpr double kRateThreshold = 0.05;         // partial R^2
 constexpr double kDissipationThreshold = 0.03;  // rise of ln(energy ratio)
 constexpr double kHardeningThreshold = 0.03;    // rise of ln(secant ratio)
-constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) over a test
+constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) in an amplitude group
 
 // A group of half-cycles of one test at one amplitude (within kGroupWidth of the group's
 // smallest): a sinusoidal test at one amplitude is one group, a seismic history gives one group
@@ -193,7 +193,8 @@ Evidence AmplitudeDissipation(const std::vector<TestSummary>& tests) {
   e.value = rise.value;
   if (rise.to) {
     e.finding = fmt::format(
-        "measured energy per cycle is {:+.1f} % of the model's at amplitude {:.4g} and {:+.1f} % "
+        "measured energy per half-cycle is {:+.1f} % of the model's at amplitude {:.4g} and "
+        "{:+.1f} % "
         "at {:.4g}: it grows {:.1f} % faster between them, beyond twice the scatter",
         Percent(std::log(rise.from->measured_energy / rise.from->modelled_energy)),
         rise.from->amplitude,
