@@ -87,8 +87,8 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
   command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
       ->check(CLI::Range(100L, 1000000000L));
   command->add_option("--cycles", options.cycles,
-                      "Whole cycles to fit, 1-based (default: every whole cycle after the first, "
-                      "or the whole history of a test with fewer than two)");
+                      "Whole cycles to fit, 1-based, e.g. --cycles 3 as the paper fits HDRB tests "
+                      "(default: every test's whole history)");
   AddSpecimenOption(command, &options.specimen);
   command->add_option("-o,--output", options.output, "Fitted model file (YAML)");
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");

@@ -23,9 +23,7 @@ FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& 
   data.one_specimen = one_specimen;
   for (const CyclicTestData& test : tests) {
     std::vector<CycleSpan> spans;
-    if (cycles.empty() && test.cycles.size() >= 2) {
-      spans.assign(test.cycles.begin() + 1, test.cycles.end());
-    } else if (cycles.empty()) {
+    if (cycles.empty()) {
       spans.push_back({0, test.displacement.size()});
     } else {
       for (const int c : cycles) {

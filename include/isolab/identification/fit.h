@@ -27,11 +27,10 @@ struct FitData {
   bool one_specimen = false;  // tests continue one specimen, in order (cyclic_data.h)
 };
 
-// The samples to fit: the whole cycles `cycles` (1-based) of every test, or, when empty, every
-// whole cycle after the first (the virgin loading of a sinusoidal protocol is left out, as the
-// paper fits the third cycle) where a test has two or more whole cycles, and its whole history
-// where it has fewer (a seismic or random history). Throws std::invalid_argument naming the test
-// that lacks a requested cycle.
+// The samples to fit: the whole cycles `cycles` (1-based) of every test (as the paper fits the
+// third cycle of each sinusoidal test, leaving out the virgin loading), or, when empty, the whole
+// history of every test: any displacement history is test data. Throws std::invalid_argument
+// naming the test that lacks a requested cycle.
 FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles,
                      bool one_specimen = false);
 
