@@ -14,8 +14,10 @@ inline std::filesystem::path SharedPath(const std::string& relative) {
   return std::filesystem::path(ISOLAB_SOURCE_DIR) / ".." / "shared" / relative;
 }
 
-// Rows of a numeric CSV with one header line (and '#' comment lines), as doubles.
-inline std::vector<std::vector<double>> ReadNumericCsv(const std::filesystem::path& path) {
+// Rows of a numeric CSV with one header line (and '#' comment lines), as doubles; the first
+// `skip_columns` columns (e.g. a test name) are left out.
+inline std::vector<std::vector<double>> ReadNumericCsv(const std::filesystem::path& path,
+                                                       int skip_columns = 0) {
   std::ifstream in(path);
   std::vector<std::vector<double>> rows;
   bool header = true;
@@ -27,7 +29,10 @@ inline std::vector<std::vector<double>> ReadNumericCsv(const std::filesystem::pa
     }
     std::vector<double> row;
     std::stringstream fields(line);
-    for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+    int column = 0;
+    for (std::string field; std::getline(fields, field, ',');) {
+      if (column++ >= skip_columns) row.push_back(std::stod(field));
+    }
     rows.push_back(std::move(row));
   }
   return rows;

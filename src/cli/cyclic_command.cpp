@@ -4,13 +4,14 @@
 #include <fmt/ostream.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
-#include "isolab/io/atomic_file.h"
 #include "isolab/identification/synthetic_tests.h"
+#include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/model_file.h"
 
@@ -216,10 +217,14 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   command->add_option("--csv", options.csv, "Write the loop (time, u, force, force per component)");
   command->add_option("--test-data", options.test_data,
                       "Write the runs as cyclic test data (test,time,displacement,force CSV)");
-  command->add_option("--noise", options.noise,
-                      "Gaussian force noise on --test-data, relative to each test's RMS force")
+  command
+      ->add_option("--noise", options.noise,
+                   "Gaussian force noise on --test-data, relative to each test's RMS force")
       ->check(CLI::Range(0.0, 1.0));
   command->add_option("--seed", options.seed, "Seed of the --noise generator");
+  command->add_flag("--sequential", options.sequential,
+                    "Run a model's tests one after another on one specimen, each from the state "
+                    "the previous left (a campaign); --test-data then says '# specimen: one'");
   command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
 }
 
@@ -230,8 +235,11 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
 
   std::vector<Run> runs;
   for (const io::ModelFile& model : models) {
+    // One specimen per model: its runs in order, each from the state the last one left.
+    std::vector<hysteresis::LawState> state(model.isolation.size());
     for (const CyclicProtocol& protocol : Protocols(model, options)) {
-      runs.push_back({&model, hysteresis::RunCyclicTest(model.isolation, protocol)});
+      if (!options.sequential) std::fill(state.begin(), state.end(), hysteresis::LawState{});
+      runs.push_back({&model, hysteresis::RunCyclicTest(model.isolation, protocol, state)});
     }
   }
 
@@ -246,12 +254,13 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
     for (const Run& run : runs) {
       tests.push_back(identification::TestFromLoop(run.result, options.periods.size() > 1));
       if (models.size() > 1) {
-        tests.back().name = std::filesystem::path(run.model->path).stem().string() + ":" +
-                            tests.back().name;
+        tests.back().name =
+            std::filesystem::path(run.model->path).stem().string() + ":" + tests.back().name;
       }
     }
     identification::AddForceNoise(&tests, options.noise, options.seed);
-    io::WriteCyclicTests(options.test_data, tests, models.front().units);
+    io::WriteCyclicTests(options.test_data, tests, models.front().units,
+                         options.sequential && models.size() == 1);
   }
 
   if (options.json) {

@@ -21,9 +21,10 @@ struct CyclicOptions {
   std::optional<int> cycles;           // overrides cyclic.cycles
   std::optional<int> steps_per_cycle;  // overrides cyclic.steps_per_cycle
   std::string csv;                     // loop output; one file per run, suffixed when several
-  std::string test_data;  // the runs as test,time,displacement,force CSV (for isolab fit)
-  double noise = 0.0;     // force noise on test_data, relative to each test's RMS force
-  unsigned seed = 1;      // of that noise
+  std::string test_data;    // the runs as test,time,displacement,force CSV (for isolab fit)
+  double noise = 0.0;       // force noise on test_data, relative to each test's RMS force
+  unsigned seed = 1;        // of that noise
+  bool sequential = false;  // a model's runs on one specimen, in order
   bool json = false;
 };
 

@@ -14,6 +14,7 @@
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/fit_spec_file.h"
 #include "isolab/io/fitted_model_file.h"
+#include "specimen_option.h"
 
 namespace isolab::cli {
 namespace {
@@ -40,6 +41,7 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
                       "Report stem: writes OUT.md, OUT.json and OUT.model.yaml "
                       "(default: <first data file>.diagnosis)");
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the diagnosis");
+  AddSpecimenOption(command, &options.specimen);
   command->add_option("--budget", options.budget, "Model evaluations per fit (default 12000)")
       ->check(CLI::Range(100L, 100000000L));
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
@@ -50,15 +52,18 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
 
 void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   const io::FitSpec base = io::LoadFitSpec(options.base);
-  auto tests =
+  io::CyclicTestSet set =
       io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
-  const identification::FitData data = diagnosis::AllCycles(std::move(tests));
+  const identification::FitData data = diagnosis::AllCycles(
+      std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
 
   diagnosis::DiagnoseOptions settings;
   settings.seed = options.seed;
   settings.budget = options.budget;
   if (!options.quiet) {
-    fmt::print(stderr, "isolab diagnose: {} tests, base {}\n", data.tests.size(), options.base);
+    fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n", data.tests.size(),
+               data.one_specimen ? "one specimen, in order" : "independent specimens",
+               options.base);
     settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
   diagnosis::Diagnosis result;

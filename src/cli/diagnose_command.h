@@ -18,7 +18,8 @@ struct DiagnoseOptions {
   std::string base;               // --base: component types, bounds optional (fit specification)
   std::string out;                // report stem: OUT.md, OUT.json, OUT.model.yaml
   unsigned seed = 1;
-  long budget = 12000;                                // evaluations per fit
+  std::string specimen;  // "sequential", "independent"; empty: the data's header
+  long budget = 12000;   // evaluations per fit
   std::string force_unit = "kN", length_unit = "mm";  // of the data, unless its header says
   bool json = false;
   bool quiet = false;

@@ -142,6 +142,7 @@ nlohmann::json DiagnosisJson(const Diagnosis& d, const FitData& data,
   json["seed"] = context.seed;
   json["units"] = {{"force", context.units.force()}, {"length", context.units.length()}};
   json["tests"] = data.tests.size();
+  json["one_specimen"] = data.one_specimen;
   json["samples"] = d.samples;
   json["noise_floor_e2"] = d.noise_floor;
   json["base"] = ModelJson(d.base);
@@ -179,11 +180,15 @@ std::string DiagnosisMarkdown(const Diagnosis& d, const FitData& data,
   const std::string force = context.units.force(), length = context.units.length();
   std::string md = fmt::format("# isolab diagnose: {}\n\n", fmt::join(context.data_files, ", "));
   md += fmt::format(
-      "{} tests, {} samples. Base model ({}): {}.\n\n"
+      "{} tests ({}), {} samples. Base model ({}): {}.\n\n"
       "Base fit: **e^2 = {:.4g} %**. Noise floor (the e^2 that measurement noise alone leaves, "
       "estimated from the data's second differences): {:.4g} %.\n\n",
-      data.tests.size(), d.samples, context.base_file, ComponentsText(d.base),
-      100 * d.base.fit.error.total, 100 * d.noise_floor);
+      data.tests.size(),
+      data.one_specimen ? "one specimen tested in this order, each test starting from the state "
+                          "the previous one left"
+                        : "independent specimens, each simulated from rest",
+      d.samples, context.base_file, ComponentsText(d.base), 100 * d.base.fit.error.total,
+      100 * d.noise_floor);
 
   md += "## Finding\n\n";
   if (d.steps.empty()) {
@@ -248,8 +253,10 @@ std::string DiagnosisMarkdown(const Diagnosis& d, const FitData& data,
   const Discrepancy final_fit = Discrepancy::Of(diagnosis::AssemblyOf(d.final_model, data), data);
   const auto base_rows = TestRows(base), final_rows = TestRows(final_fit);
   md += fmt::format(
-      "## Loops, test by test\n\nMean over each test's cycles: energy dissipated per cycle "
-      "[{f}*{l}] and secant stiffness at the peaks [{f}/{l}], measured and modelled.\n\n"
+      "## Loops, test by test\n\nMean over each test's half-cycles between reversals "
+      "(amplitude: half the reversal-to-reversal range; period: twice the duration): energy "
+      "dissipated per half-cycle [{f}*{l}] and secant stiffness between the reversals [{f}/{l}], "
+      "measured and modelled.\n\n"
       "| test | amplitude [{l}] | period | W measured | W base | W final | K measured | K base | "
       "K final |\n|---|---|---|---|---|---|---|---|---|\n",
       fmt::arg("f", force), fmt::arg("l", length));

@@ -19,8 +19,9 @@ struct FitOptions {
   std::string spec;               // --model: component types and counts (YAML)
   unsigned seed = 1;
   long budget = 60000;
-  std::vector<int> cycles;        // 1-based; empty: every cycle after the first
-  std::string output;             // fitted model file; default: <spec stem>.fitted.yaml
+  std::vector<int> cycles;  // 1-based; empty: SelectCycles' default
+  std::string specimen;     // "sequential", "independent"; empty: the data's header
+  std::string output;       // fitted model file; default: <spec stem>.fitted.yaml
   std::string force_unit = "kN", length_unit = "mm";  // of the data, unless its header says
   bool json = false;
   bool quiet = false;

@@ -9,6 +9,7 @@
 #include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
+#include "shaketable_command.h"
 #include "spectrum_command.h"
 #include "synth_command.h"
 
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterSpectrumCommand(app, spectrum);
   isolab::cli::CompareOptions compare;
   isolab::cli::RegisterCompareCommand(app, compare);
+  isolab::cli::ShakeTableOptions shaketable;
+  isolab::cli::RegisterShakeTableCommand(app, shaketable);
 
   try {
     app.parse(argc, argv);
@@ -47,6 +50,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
     if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
     if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
+    if (app.got_subcommand("shaketable")) {
+      isolab::cli::RunShakeTableCommand(shaketable, std::cout);
+    }
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

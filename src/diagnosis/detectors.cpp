@@ -15,9 +15,15 @@ using identification::CycleSpan;
 constexpr double kRateThreshold = 0.05;         // partial R^2
 constexpr double kDissipationThreshold = 0.03;  // rise of ln(energy ratio)
 constexpr double kHardeningThreshold = 0.03;    // rise of ln(secant ratio)
-constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) over a test
+constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) in an amplitude group
 
-// Per test, over its fitted cycles: mean amplitude, period, and the cycle records in order.
+// A group of half-cycles of one test at one amplitude (within kGroupWidth of the group's
+// smallest): a sinusoidal test at one amplitude is one group, a seismic history gives one group
+// per amplitude class. For one specimen tested in order the groups span the tests, so a loop is
+// compared with the loops at its amplitude earlier in the campaign. Means over the group's
+// half-cycles, which are kept in time order.
+constexpr double kGroupWidth = 0.10;
+
 struct TestSummary {
   int test = 0;
   double amplitude = 0.0, period = 0.0;
@@ -27,30 +33,45 @@ struct TestSummary {
 };
 
 std::vector<TestSummary> Summaries(const Discrepancy& d) {
-  std::map<int, TestSummary> by_test;
-  for (const CycleRecord& c : d.cycles) {
-    TestSummary& s = by_test[c.test];
-    s.test = c.test;
-    s.cycles.push_back(&c);
-  }
+  std::map<int, std::vector<const CycleRecord*>> by_test;
+  for (const CycleRecord& c : d.cycles) by_test[d.data->one_specimen ? 0 : c.test].push_back(&c);
   std::vector<TestSummary> result;
-  for (auto& [test, s] : by_test) {
-    const double n = static_cast<double>(s.cycles.size());
-    for (const CycleRecord* c : s.cycles) {
-      s.amplitude += c->amplitude / n;
-      s.period += c->period / n;
-      s.measured_energy += c->measured.energy / n;
-      s.modelled_energy += c->modelled.energy / n;
-      s.measured_secant += c->measured.secant / n;
-      s.modelled_secant += c->modelled.secant / n;
+  for (auto& [test, records] : by_test) {
+    std::stable_sort(records.begin(), records.end(),
+                     [](const auto* a, const auto* b) { return a->amplitude < b->amplitude; });
+    for (std::size_t first = 0; first < records.size();) {
+      std::size_t last = first;
+      while (last < records.size() &&
+             records[last]->amplitude <= (1.0 + kGroupWidth) * records[first]->amplitude) {
+        ++last;
+      }
+      TestSummary s;
+      s.test = test;
+      s.cycles.assign(records.begin() + first, records.begin() + last);
+      std::sort(s.cycles.begin(), s.cycles.end(), [](const auto* a, const auto* b) {
+        return a->test != b->test ? a->test < b->test : a->cycle < b->cycle;
+      });
+      const double n = static_cast<double>(s.cycles.size());
+      for (const CycleRecord* c : s.cycles) {
+        s.amplitude += c->amplitude / n;
+        s.period += c->period / n;
+        s.measured_energy += c->measured.energy / n;
+        s.modelled_energy += c->modelled.energy / n;
+        s.measured_secant += c->measured.secant / n;
+        s.modelled_secant += c->modelled.secant / n;
+      }
+      result.push_back(std::move(s));
+      first = last;
     }
-    result.push_back(s);
   }
   return result;
 }
 
-// The largest rise of y from a smaller amplitude (by more than 5 %) to a larger one, and the two
-// tests where it happens.
+// The largest rise of y, read per half-cycle and averaged over a group, from a smaller amplitude
+// (by more than 5 %) to a larger one, less twice its standard error (from the scatter of y within
+// the two groups), and the two groups where it happens. The error term keeps the scatter of
+// small, noisy half-cycles from passing for a trend; a group of one half-cycle has no scatter to
+// judge by and is left out.
 struct Rise {
   double value = 0.0;
   const TestSummary* from = nullptr;
@@ -58,13 +79,29 @@ struct Rise {
 };
 template <typename Y>
 Rise LargestRise(const std::vector<TestSummary>& tests, Y y) {
+  struct Mean {
+    double value = NAN, variance = NAN;  // of the mean
+  };
+  std::vector<Mean> means;
+  for (const TestSummary& s : tests) {
+    double sum = 0.0, square = 0.0;
+    const double n = static_cast<double>(s.cycles.size());
+    for (const CycleRecord* c : s.cycles) sum += y(*c), square += y(*c) * y(*c);
+    Mean m;
+    if (n >= 2 && std::isfinite(sum) && std::isfinite(square)) {
+      m.value = sum / n;
+      m.variance = std::max(square / n - m.value * m.value, 0.0) * n / (n - 1) / n;
+    }
+    means.push_back(m);
+  }
   Rise rise;
-  for (const TestSummary& low : tests) {
-    for (const TestSummary& high : tests) {
-      if (!(high.amplitude > 1.05 * low.amplitude)) continue;
-      const double a = y(low), b = y(high);
-      if (!std::isfinite(a) || !std::isfinite(b)) continue;
-      if (!rise.to || b - a > rise.value) rise = {b - a, &low, &high};
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    for (std::size_t j = 0; j < tests.size(); ++j) {
+      if (!(tests[j].amplitude > 1.05 * tests[i].amplitude)) continue;
+      if (!std::isfinite(means[i].value) || !std::isfinite(means[j].value)) continue;
+      const double value =
+          means[j].value - means[i].value - 2.0 * std::sqrt(means[i].variance + means[j].variance);
+      if (!rise.to || value > rise.value) rise = {value, &tests[i], &tests[j]};
     }
   }
   rise.value = std::max(rise.value, 0.0);
@@ -149,15 +186,16 @@ Evidence RateDependence(const Discrepancy& d, const std::vector<TestSummary>& te
 
 Evidence AmplitudeDissipation(const std::vector<TestSummary>& tests) {
   Evidence e;
-  e.statistic = "largest rise with amplitude of ln(measured / modelled energy per cycle)";
+  e.statistic = "largest rise with amplitude of ln(measured / modelled energy per half-cycle)";
   e.threshold = kDissipationThreshold;
   const Rise rise = LargestRise(
-      tests, [](const TestSummary& s) { return std::log(s.measured_energy / s.modelled_energy); });
+      tests, [](const CycleRecord& c) { return std::log(c.measured.energy / c.modelled.energy); });
   e.value = rise.value;
   if (rise.to) {
     e.finding = fmt::format(
-        "measured energy per cycle is {:+.1f} % of the model's at amplitude {:.4g} and {:+.1f} % "
-        "at {:.4g}: it grows {:.1f} % faster between them",
+        "measured energy per half-cycle is {:+.1f} % of the model's at amplitude {:.4g} and "
+        "{:+.1f} % "
+        "at {:.4g}: it grows {:.1f} % faster between them, beyond twice the scatter",
         Percent(std::log(rise.from->measured_energy / rise.from->modelled_energy)),
         rise.from->amplitude,
         Percent(std::log(rise.to->measured_energy / rise.to->modelled_energy)), rise.to->amplitude,
@@ -171,7 +209,7 @@ Evidence Hardening(const Discrepancy& d, const std::vector<TestSummary>& tests) 
   e.statistic = "largest rise with amplitude of ln(measured / modelled secant stiffness)";
   e.threshold = kHardeningThreshold;
   const Rise rise = LargestRise(
-      tests, [](const TestSummary& s) { return std::log(s.measured_secant / s.modelled_secant); });
+      tests, [](const CycleRecord& c) { return std::log(c.measured.secant / c.modelled.secant); });
   e.value = rise.value;
   if (rise.to) {
     e.finding = fmt::format(
@@ -188,12 +226,15 @@ Evidence Hardening(const Discrepancy& d, const std::vector<TestSummary>& tests) 
   long samples_there = 0, samples_all = 0;
   for (const TestSummary& s : tests) {
     if (s.amplitude < 0.5 * largest) continue;
-    const auto& test = d.data->tests[s.test];
-    for (const CycleSpan& span : d.data->fitted[s.test]) {
+    for (const CycleRecord* c : s.cycles) {
+      const auto& test = d.data->tests[c->test];
+      const CycleSpan span = test.half_cycles[c->cycle - 1];
+      // Displacements about the half-cycle's centre: its amplitude is half its range.
+      const double centre = 0.5 * (test.displacement[span.begin] + test.displacement[span.end - 1]);
       for (std::size_t k = span.begin; k < span.end; ++k) {
-        const double u = test.displacement[k];
-        const double r2 = std::pow(test.force[k] - d.model_force[s.test][k], 2);
-        const bool there = std::abs(u) > 0.7 * s.amplitude && u * d.velocity[s.test][k] > 0.0;
+        const double u = test.displacement[k] - centre;
+        const double r2 = std::pow(test.force[k] - d.model_force[c->test][k], 2);
+        const bool there = std::abs(u) > 0.7 * s.amplitude && u * d.velocity[c->test][k] > 0.0;
         residual_all += r2;
         ++samples_all;
         if (there) residual_there += r2, ++samples_there;
@@ -213,7 +254,9 @@ Evidence Hardening(const Discrepancy& d, const std::vector<TestSummary>& tests) 
 
 Evidence Degradation(const Discrepancy& d, const std::vector<TestSummary>& tests) {
   Evidence e;
-  e.statistic = "extra fall of ln(loop energy) from first to last cycle, measured less modelled";
+  e.statistic =
+      "extra fall of ln(energy) from first to last half-cycle at one amplitude, measured less "
+      "modelled";
   e.threshold = kDegradationThreshold;
   double energy_fall = 0.0, secant_fall = 0.0, change_to_noise = 0.0;
   int count = 0;
@@ -230,39 +273,40 @@ Evidence Degradation(const Discrepancy& d, const std::vector<TestSummary>& tests
                    std::log(last.measured.energy / first.measured.energy);
     secant_fall += std::log(last.modelled.secant / first.modelled.secant) -
                    std::log(last.measured.secant / first.measured.secant);
-    // Residual of the last cycle against the first, sample by sample (equal-length cycles).
-    const auto& spans = d.data->fitted[s.test];
-    const CycleSpan a = spans.front(), b = spans.back();
+    // Residual of the last half-cycle against the first, sample by sample (over the shorter).
+    const auto& test_a = d.data->tests[first.test];
+    const auto& test_b = d.data->tests[last.test];
+    const CycleSpan a = test_a.half_cycles[first.cycle - 1];
+    const CycleSpan b = test_b.half_cycles[last.cycle - 1];
     const std::size_t length = std::min(a.end - a.begin, b.end - b.begin);
-    const auto& test = d.data->tests[s.test];
-    const auto& model = d.model_force[s.test];
     double square = 0.0;
     for (std::size_t k = 0; k < length; ++k) {
-      const double ra = test.force[a.begin + k] - model[a.begin + k];
-      const double rb = test.force[b.begin + k] - model[b.begin + k];
+      const double ra = test_a.force[a.begin + k] - d.model_force[first.test][a.begin + k];
+      const double rb = test_b.force[b.begin + k] - d.model_force[last.test][b.begin + k];
       square += (rb - ra) * (rb - ra);
     }
-    const double noise = d.force_noise[s.test];
+    const double noise = 0.5 * (d.force_noise[first.test] + d.force_noise[last.test]);
     if (length > 0 && noise > 0.0) {
       change_to_noise += std::sqrt(square / length) / (std::sqrt(2.0) * noise);
     }
     ++count;
   }
   if (count == 0) {
-    e.finding = "no test has two cycles to compare";
+    e.finding = "no test has two half-cycles at one amplitude to compare";
     return e;
   }
   e.value = energy_fall / count;
   e.finding = fmt::format(
-      "from first to last cycle the measured loop energy falls {:.1f} % more than the model's and "
-      "the secant stiffness {:.1f} % more (mean over {} tests); the residual changes between "
-      "those cycles by {:.2f} times what noise explains",
+      "from the first to the last half-cycle at one amplitude the measured energy falls {:.1f} % "
+      "more than the model's and the secant stiffness {:.1f} % more (mean over {} amplitude "
+      "groups); the residual changes between those half-cycles by {:.2f} times what noise "
+      "explains",
       100.0 * (1.0 - std::exp(-e.value)), 100.0 * (1.0 - std::exp(-secant_fall / count)), count,
       change_to_noise / count);
   e.supporting.push_back(
-      {"extra fall of ln(secant stiffness), first to last cycle", secant_fall / count});
-  e.supporting.push_back(
-      {"residual change first to last cycle / noise (1 = noise only)", change_to_noise / count});
+      {"extra fall of ln(secant stiffness), first to last half-cycle", secant_fall / count});
+  e.supporting.push_back({"residual change first to last half-cycle / noise (1 = noise only)",
+                          change_to_noise / count});
   return e;
 }
 

@@ -10,29 +10,32 @@ namespace {
 using identification::CycleSpan;
 using identification::CyclicTestData;
 
-// Mean displacement and force over the samples of a span within 3 % of its extreme displacement
-// on one side (sign +1: the positive peak).
-std::pair<double, double> PeakMean(const std::vector<double>& u, const std::vector<double>& f,
-                                   CycleSpan span, double sign) {
-  double extreme = 0.0;
-  for (std::size_t k = span.begin; k < span.end; ++k) extreme = std::max(extreme, sign * u[k]);
+// Mean displacement and force over the samples of a half-cycle within 3 % of its range of the
+// reversal sample `at`.
+std::pair<double, double> ReversalMean(const std::vector<double>& u, const std::vector<double>& f,
+                                       CycleSpan span, std::size_t at, double range) {
   double u_sum = 0.0, f_sum = 0.0;
   int count = 0;
   for (std::size_t k = span.begin; k < span.end; ++k) {
-    if (sign * u[k] >= 0.97 * extreme) {
+    if (std::abs(u[k] - u[at]) <= 0.03 * range) {
       u_sum += u[k];
       f_sum += f[k];
       ++count;
     }
   }
-  if (count == 0) return {NAN, NAN};  // an empty span: no peak to read
-  return {u_sum / count, f_sum / count};
+  return {u_sum / count, f_sum / count};  // count >= 1: `at` itself
 }
 
+// The half-cycle's energy (identification::HalfCycleEnergy) with the chord's end forces averaged
+// near the reversals as the secant's are: single samples there would carry their noise into it.
 LoopMeasure Measure(const std::vector<double>& u, const std::vector<double>& f, CycleSpan span) {
-  const auto [u_plus, f_plus] = PeakMean(u, f, span, 1.0);
-  const auto [u_minus, f_minus] = PeakMean(u, f, span, -1.0);
-  return {identification::LoopEnergy(u, f, span), (f_plus - f_minus) / (u_plus - u_minus)};
+  const double range = 2.0 * identification::HalfRange(u, span);
+  const auto [u_a, f_a] = ReversalMean(u, f, span, span.begin, range);
+  const auto [u_b, f_b] = ReversalMean(u, f, span, span.end - 1, range);
+  const std::size_t a = span.begin, b = span.end - 1;
+  const double chord_correction = 0.5 * (f[a] + f[b] - f_a - f_b) * (u[b] - u[a]);
+  return {identification::HalfCycleEnergy(u, f, span) + chord_correction,
+          (f_b - f_a) / (u_b - u_a)};
 }
 
 std::vector<double> CentralVelocity(const CyclicTestData& test) {
@@ -80,16 +83,15 @@ double NoiseFloor(const identification::FitData& data, const std::vector<double>
   return floor;
 }
 
-identification::FitData AllCycles(std::vector<CyclicTestData> tests) {
+identification::FitData AllCycles(std::vector<CyclicTestData> tests, bool one_specimen) {
   identification::FitData data;
+  data.one_specimen = one_specimen;
   for (const CyclicTestData& test : tests) {
-    if (test.cycles.empty()) throw std::invalid_argument("test '" + test.name + "' has no cycle");
-    for (const CycleSpan& span : test.cycles) {
-      if (!(span.begin + 1 < span.end && span.end <= test.displacement.size())) {
-        throw std::invalid_argument("test '" + test.name + "' has an empty or out-of-range cycle");
-      }
+    if (test.half_cycles.empty()) {
+      throw std::invalid_argument("test '" + test.name +
+                                  "' has no half-cycle between two reversals");
     }
-    data.fitted.push_back(test.cycles);
+    data.fitted.push_back({{0, test.displacement.size()}});
   }
   data.tests = std::move(tests);
   return data;
@@ -131,22 +133,24 @@ Discrepancy Discrepancy::Of(const hysteresis::ParallelAssembly& model,
                             const identification::FitData& data) {
   Discrepancy d;
   d.data = &data;
+  d.model_force = identification::SimulateForces(model, data.tests, data.one_specimen);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];
-    d.model_force.push_back(identification::SimulateForce(model, test));
     d.velocity.push_back(CentralVelocity(test));
     d.force_noise.push_back(ForceNoise(test));
-    for (const CycleSpan& span : data.fitted[i]) {
-      const auto where = std::find_if(test.cycles.begin(), test.cycles.end(),
-                                      [&](const CycleSpan& c) { return c.begin == span.begin; });
+    for (std::size_t h = 0; h < test.half_cycles.size(); ++h) {
+      const CycleSpan half = test.half_cycles[h];
+      const bool fitted = std::any_of(
+          data.fitted[i].begin(), data.fitted[i].end(),
+          [&](const CycleSpan& span) { return span.begin <= half.begin && half.end <= span.end; });
+      if (!fitted) continue;
       CycleRecord record;
       record.test = static_cast<int>(i);
-      record.cycle = static_cast<int>(where - test.cycles.begin()) + 1;
-      record.amplitude = identification::SpanAmplitude(test.displacement, span);
-      record.period = test.time[span.end - 1] - test.time[span.begin];
-      if (span.end < test.time.size()) record.period = test.time[span.end] - test.time[span.begin];
-      record.measured = Measure(test.displacement, test.force, span);
-      record.modelled = Measure(test.displacement, d.model_force[i], span);
+      record.cycle = static_cast<int>(h) + 1;
+      record.amplitude = identification::HalfRange(test.displacement, half);
+      record.period = 2.0 * (test.time[half.end - 1] - test.time[half.begin]);
+      record.measured = Measure(test.displacement, test.force, half);
+      record.modelled = Measure(test.displacement, d.model_force[i], half);
       d.cycles.push_back(record);
     }
   }

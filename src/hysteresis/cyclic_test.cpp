@@ -1,5 +1,6 @@
 #include "isolab/hysteresis/cyclic_test.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -25,6 +26,12 @@ void CyclicProtocol::Validate() const {
 }
 
 CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtocol& protocol) {
+  std::vector<LawState> rest(assembly.size());
+  return RunCyclicTest(assembly, protocol, rest);
+}
+
+CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtocol& protocol,
+                           std::span<LawState> state) {
   protocol.Validate();
   const std::size_t n_components = assembly.size();
   const int per_cycle = protocol.steps_per_cycle;
@@ -39,9 +46,10 @@ CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtoco
   loop.force.resize(samples);
   loop.component_force.resize(samples * n_components);
 
-  std::vector<LawState> committed(n_components), trial(n_components);
+  std::vector<LawState> committed(state.begin(), state.end()), trial(n_components);
   std::vector<LawResponse> responses(n_components);
-  std::vector<double> dissipated_at_cycle_start(n_components, 0.0);
+  std::vector<double> dissipated_at_cycle_start(n_components);
+  for (std::size_t c = 0; c < n_components; ++c) dissipated_at_cycle_start[c] = state[c].dissipated;
   CycleSummary cycle;
 
   for (int k = 0; k < samples; ++k) {
@@ -81,6 +89,7 @@ CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtoco
       cycle = CycleSummary{};
     }
   }
+  std::copy(committed.begin(), committed.end(), state.begin());
   return result;
 }
 

@@ -1,5 +1,9 @@
 #include "isolab/identification/fit.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
 #include <pagmo/algorithm.hpp>
 #include <pagmo/algorithms/cmaes.hpp>
 #include <pagmo/algorithms/compass_search.hpp>
@@ -7,24 +11,20 @@
 #include <pagmo/islands/thread_island.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
 namespace isolab::identification {
 
-FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles) {
+FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& cycles,
+                     bool one_specimen) {
   FitData data;
+  data.one_specimen = one_specimen;
   for (const CyclicTestData& test : tests) {
     std::vector<CycleSpan> spans;
     if (cycles.empty()) {
-      spans.assign(test.cycles.begin() + std::min<std::size_t>(1, test.cycles.size()),
-                   test.cycles.end());
+      spans.push_back({0, test.displacement.size()});
     } else {
       for (const int c : cycles) {
         if (c < 1 || c > static_cast<int>(test.cycles.size())) {
@@ -65,9 +65,10 @@ DataScales ScalesOf(const FitData& data) {
 
 FitError ComputeFitError(const hysteresis::ParallelAssembly& assembly, const FitData& data) {
   FitError error;
+  const auto forces = SimulateForces(assembly, data.tests, data.one_specimen);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];
-    const std::vector<double> force = SimulateForce(assembly, test);
+    const std::vector<double>& force = forces[i];
     double misfit = 0.0, norm = 0.0;
     for (const CycleSpan& span : data.fitted[i]) {
       for (std::size_t k = span.begin; k < span.end; ++k) {
@@ -86,12 +87,14 @@ AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<c
                                   const FitData& data) {
   // Normal equations of the weighted problem sum_i w_i |F0_i - B_i a|^2, w_i = 1 / |F0_i|^2.
   const int m = model.amplitude_count();
-  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m), basis;
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
   double constant = 0.0;
+  std::vector<Eigen::MatrixXd> bases;
+  model.Basis(x, data.tests, data.one_specimen, &bases);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];
-    model.Basis(x, test, &basis);
+    const Eigen::MatrixXd& basis = bases[i];
     const Eigen::Map<const Eigen::VectorXd> measured(test.force.data(),
                                                      static_cast<Eigen::Index>(test.force.size()));
     double norm = 0.0;
@@ -230,7 +233,8 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
   pagmo::archipelago archipelago;
   for (int i = 0; i < islands; ++i) {
     states[i].population = population_size;
-    pagmo::population population{problem, static_cast<pagmo::population::size_type>(population_size),
+    pagmo::population population{problem,
+                                 static_cast<pagmo::population::size_type>(population_size),
                                  IslandSeed(options.seed, i, 1000)};
     if (i == 0) population.set_x(0, model.StartPoint());  // the given (or middle) start
     archipelago.push_back(pagmo::thread_island{}, Cmaes(IslandSeed(options.seed, i, 0)),
@@ -271,9 +275,9 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
         state.chunks_without_progress = 0;
         retired += static_cast<long>(population.get_problem().get_fevals());
         island.set_algorithm(Cmaes(IslandSeed(options.seed, i, state.restarts)));
-        island.set_population(pagmo::population{
-            problem, static_cast<pagmo::population::size_type>(state.population),
-            IslandSeed(options.seed, i, 1000 + state.restarts)});
+        island.set_population(
+            pagmo::population{problem, static_cast<pagmo::population::size_type>(state.population),
+                              IslandSeed(options.seed, i, 1000 + state.restarts)});
         state.best_f = std::min(state.best_f, f);
       }
     }
@@ -318,8 +322,7 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
   result.error = ComputeFitError(model.Assembly(best_x, result.amplitudes), data);
   result.evaluations = evaluations;
   for (const IslandState& state : states) result.restarts += state.restarts;
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.progress) options.progress({evaluations, generation, result.error.total, true});
   return result;
 }

@@ -80,12 +80,20 @@ CoordinateRange DefaultRange(const std::string& name, const DataScales& s) {
 
 double Clamp(double u, double limit) { return std::clamp(u, -limit, limit); }
 
-// Force of one law with unit amplitude driven from rest through the test.
-void UnitLawForce(LawType type, std::vector<double> mathematical, const CyclicTestData& test,
-                  Eigen::Ref<Eigen::VectorXd> column) {
+// Force of one law with unit amplitude driven through the tests, into column `column` of each
+// test's basis.
+void UnitLawForce(LawType type, std::vector<double> mathematical,
+                  std::span<const CyclicTestData> tests, bool one_specimen, Eigen::Index column,
+                  std::vector<Eigen::MatrixXd>* bases) {
   const hysteresis::ParallelAssembly law = hysteresis::SingleLaw(type, std::move(mathematical));
-  const std::vector<double> force = SimulateForce(law, test);
-  column = Eigen::Map<const Eigen::VectorXd>(force.data(), static_cast<Eigen::Index>(force.size()));
+  std::vector<hysteresis::LawState> state(1);
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    if (!one_specimen) state[0] = {};
+    Eigen::MatrixXd& basis = (*bases)[i];
+    // Column-major storage: a column is contiguous.
+    SimulateForceFrom(law, tests[i], state,
+                      std::span<double>(basis.col(column).data(), basis.rows()));
+  }
 }
 
 }  // namespace
@@ -149,58 +157,82 @@ std::vector<std::vector<double>> ModelParametrisation::ShapeValues(
   return values;
 }
 
-void ModelParametrisation::Basis(std::span<const double> x, const CyclicTestData& test,
-                                 Eigen::MatrixXd* basis) const {
+void ModelParametrisation::Basis(std::span<const double> x, std::span<const CyclicTestData> tests,
+                                 bool one_specimen, std::vector<Eigen::MatrixXd>* bases) const {
   const auto shapes = ShapeValues(x);
-  const Eigen::Index n = static_cast<Eigen::Index>(test.displacement.size());
-  basis->resize(n, amplitude_count());
-  const Eigen::Map<const Eigen::VectorXd> u(test.displacement.data(), n);
-  for (std::size_t i = 0; i < components_.size(); ++i) {
-    const std::vector<double>& s = shapes[i];
-    const int a = first_amplitude_[i];
+  bases->resize(tests.size());
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    (*bases)[i].resize(static_cast<Eigen::Index>(tests[i].displacement.size()), amplitude_count());
+  }
+  const auto unit = [&](LawType type, std::vector<double> mathematical, Eigen::Index column) {
+    UnitLawForce(type, std::move(mathematical), tests, one_specimen, column, bases);
+  };
+  // Columns that are a function of each sample's displacement (and rate) alone.
+  const auto each_test = [&](auto fill) {
+    for (std::size_t i = 0; i < tests.size(); ++i) {
+      const Eigen::Index n = static_cast<Eigen::Index>(tests[i].displacement.size());
+      fill(tests[i], Eigen::Map<const Eigen::VectorXd>(tests[i].displacement.data(), n),
+           (*bases)[i]);
+    }
+  };
+  for (std::size_t c = 0; c < components_.size(); ++c) {
+    const std::vector<double>& s = shapes[c];
+    const int a = first_amplitude_[c];
     const auto clamped = [&](double limit, Eigen::Index column) {
-      for (Eigen::Index k = 0; k < n; ++k) (*basis)(k, column) = Clamp(u[k], limit);
+      each_test([&](const CyclicTestData&, const auto& u, Eigen::MatrixXd& basis) {
+        for (Eigen::Index k = 0; k < u.size(); ++k) basis(k, column) = Clamp(u[k], limit);
+      });
     };
-    switch (components_[i].type) {
+    switch (components_[c].type) {
       case LawType::kThm1:
-        UnitLawForce(LawType::kThm1, {1.0, s[0], s[1], s[2], s[2] + s[3]}, test, basis->col(a));
+        unit(LawType::kThm1, {1.0, s[0], s[1], s[2], s[2] + s[3]}, a);
         break;
       case LawType::kBhm1:
-        UnitLawForce(LawType::kBhm1, {1.0, s[0], s[1]}, test, basis->col(a));
+        unit(LawType::kBhm1, {1.0, s[0], s[1]}, a);
         break;
       case LawType::kThm2:
-        UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
+        unit(LawType::kElastoplastic, {1.0, s[0]}, a);
         clamped(s[1], a + 1);
-        basis->col(a + 2) = u - basis->col(a + 1);
+        each_test([&](const CyclicTestData&, const auto& u, Eigen::MatrixXd& basis) {
+          basis.col(a + 2) = u - basis.col(a + 1);
+        });
         break;
       case LawType::kBhm2:
-        UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
-        basis->col(a + 1) = u;
+        unit(LawType::kElastoplastic, {1.0, s[0]}, a);
+        each_test([&](const CyclicTestData&, const auto& u, Eigen::MatrixXd& basis) {
+          basis.col(a + 1) = u;
+        });
         break;
       case LawType::kElastoplastic:
-        UnitLawForce(LawType::kElastoplastic, {1.0, s[0]}, test, basis->col(a));
+        unit(LawType::kElastoplastic, {1.0, s[0]}, a);
         break;
-      case LawType::kDegradingBhm2: {
+      case LawType::kDegradingBhm2:
         // phi(kappa) x [elastoplastic, k0 = 1] and phi(kappa) u; the slip, so phi, does not
         // depend on the stiffnesses, and the second column is 2 f(k1 = 1/2) - f(k1 = 0).
-        UnitLawForce(LawType::kDegradingBhm2, {1.0, 0.0, s[0], s[1], s[2]}, test, basis->col(a));
-        UnitLawForce(LawType::kDegradingBhm2, {1.0, 0.5, s[0], s[1], s[2]}, test,
-                     basis->col(a + 1));
-        basis->col(a + 1) = 2.0 * basis->col(a + 1) - basis->col(a);
+        unit(LawType::kDegradingBhm2, {1.0, 0.0, s[0], s[1], s[2]}, a);
+        unit(LawType::kDegradingBhm2, {1.0, 0.5, s[0], s[1], s[2]}, a + 1);
+        for (Eigen::MatrixXd& basis : *bases) {
+          basis.col(a + 1) = 2.0 * basis.col(a + 1) - basis.col(a);
+        }
         break;
-      }
       case LawType::kTrilinearElastic:
         clamped(s[0], a);
-        basis->col(a + 1) = u - basis->col(a);
+        each_test([&](const CyclicTestData&, const auto& u, Eigen::MatrixXd& basis) {
+          basis.col(a + 1) = u - basis.col(a);
+        });
         break;
       case LawType::kLinearSpring:
-        basis->col(a) = u;
+        each_test([&](const CyclicTestData&, const auto& u, Eigen::MatrixXd& basis) {
+          basis.col(a) = u;
+        });
         break;
       case LawType::kDashpot:
-        for (Eigen::Index k = 0; k < n; ++k) {
-          const double dt = k > 0 ? test.time[k] - test.time[k - 1] : 0.0;
-          (*basis)(k, a) = dt > 0.0 ? (u[k] - u[k - 1]) / dt : 0.0;
-        }
+        each_test([&](const CyclicTestData& test, const auto& u, Eigen::MatrixXd& basis) {
+          for (Eigen::Index k = 0; k < u.size(); ++k) {
+            const double dt = k > 0 ? test.time[k] - test.time[k - 1] : 0.0;
+            basis(k, a) = dt > 0.0 ? (u[k] - u[k - 1]) / dt : 0.0;
+          }
+        });
         break;
       case LawType::kBoucWen:
       case LawType::kFrictionPendulum:

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -21,24 +22,26 @@ void AddForceNoise(std::vector<CyclicTestData>* tests, double noise, unsigned se
 
 CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result, bool name_period) {
   CyclicTestData test;
-  test.name = name_period ? fmt::format("u={:g}_T={:g}", result.protocol.amplitude,
-                                        result.protocol.period)
-                          : fmt::format("u={:g}", result.protocol.amplitude);
+  test.name = name_period
+                  ? fmt::format("u={:g}_T={:g}", result.protocol.amplitude, result.protocol.period)
+                  : fmt::format("u={:g}", result.protocol.amplitude);
   test.time = result.loop.time;
   test.displacement = result.loop.displacement;
   test.force = result.loop.force;
-  test.cycles = SplitCycles(test.displacement);
+  Segment(&test);
   return test;
 }
 
 std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
                                            const SyntheticTestOptions& options) {
   std::vector<CyclicTestData> tests;
+  std::vector<hysteresis::LawState> state(assembly.size());
   for (const double period : options.periods) {
     for (const double amplitude : options.amplitudes) {
+      if (!options.one_specimen) std::fill(state.begin(), state.end(), hysteresis::LawState{});
       tests.push_back(TestFromLoop(
-          hysteresis::RunCyclicTest(assembly,
-                                    {amplitude, period, options.cycles, options.steps_per_cycle}),
+          hysteresis::RunCyclicTest(
+              assembly, {amplitude, period, options.cycles, options.steps_per_cycle}, state),
           options.periods.size() > 1));
     }
   }

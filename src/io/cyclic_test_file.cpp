@@ -25,7 +25,8 @@ std::string Trim(std::string text) {
 }
 
 std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return text;
 }
 
@@ -49,8 +50,23 @@ void ReadUnitsComment(const std::string& line, CyclicTestUnits* units) {
   }
 }
 
+// "# specimen: one, in order" (or "independent").
+void ReadSpecimenComment(const std::string& path, int line_number, const std::string& line,
+                         bool* one_specimen) {
+  const auto colon = line.find(':');
+  if (Lower(line).find("specimen") == std::string::npos || colon == std::string::npos) return;
+  const std::string value = Lower(Trim(line.substr(colon + 1)));
+  if (value.rfind("one", 0) == 0) {
+    *one_specimen = true;
+  } else if (value.rfind("independent", 0) != 0) {
+    throw InputError({path, line_number},
+                     fmt::format("specimen: '{}' (expected 'one, in order' or 'independent')",
+                                 Trim(line.substr(colon + 1))));
+  }
+}
+
 void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& into,
-              std::vector<CyclicTestData>* tests) {
+              std::vector<CyclicTestData>* tests, bool* one_specimen) {
   std::ifstream in(path);
   if (!in) throw InputError({path}, "cannot open the test data");
   std::map<std::string, int> column;
@@ -62,17 +78,22 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
     line = Trim(line);
     if (line.empty()) continue;
     if (line[0] == '#') {
-      if (column.empty()) ReadUnitsComment(line, &units);
+      if (column.empty()) {
+        ReadUnitsComment(line, &units);
+        ReadSpecimenComment(path, line_number, line, one_specimen);
+      }
       continue;
     }
     const std::vector<std::string> fields = Split(line);
     if (column.empty()) {  // the header
-      for (std::size_t k = 0; k < fields.size(); ++k) column[Lower(fields[k])] = static_cast<int>(k);
+      for (std::size_t k = 0; k < fields.size(); ++k)
+        column[Lower(fields[k])] = static_cast<int>(k);
       for (const char* needed : {"time", "displacement", "force"}) {
         if (!column.count(needed)) {
           throw InputError({path, line_number},
                            fmt::format("missing column '{}' (expected test,time,displacement,"
-                                       "force; test optional)", needed));
+                                       "force; test optional)",
+                                       needed));
         }
       }
       try {
@@ -100,39 +121,34 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
       }
       return value;
     };
-    const std::string name = column.count("test")
-                                 ? field("test")
-                                 : std::filesystem::path(path).stem().string();
+    const std::string name =
+        column.count("test") ? field("test") : std::filesystem::path(path).stem().string();
     auto [it, inserted] = test_index.try_emplace(name, tests->size());
-    if (inserted) tests->push_back({name, {}, {}, {}, {}});
+    if (inserted) tests->push_back({name, {}, {}, {}, {}, {}});
     CyclicTestData& test = (*tests)[it->second];
-    test.time.push_back(number("time"));
+    const double time = number("time");
+    if (!test.time.empty() && !(time > test.time.back())) {
+      throw InputError({path, line_number},
+                       fmt::format("column 'time': {} does not increase from the previous sample "
+                                   "of test '{}' ({}); two tests under one name?",
+                                   time, name, test.time.back()));
+    }
+    test.time.push_back(time);
     test.displacement.push_back(number("displacement") * length_factor);
     test.force.push_back(number("force") * force_factor);
   }
   if (column.empty()) throw InputError({path}, "the file is empty (expected a header line)");
 }
 
-// Whether the displacement ever turns back: a test must go and come back to have a loop.
-bool Reverses(const std::vector<double>& u) {
-  int direction = 0;
-  for (std::size_t k = 1; k < u.size(); ++k) {
-    const int d = u[k] > u[k - 1] ? 1 : (u[k] < u[k - 1] ? -1 : 0);
-    if (d != 0 && direction != 0 && d != direction) return true;
-    if (d != 0) direction = d;
-  }
-  return false;
-}
-
 }  // namespace
 
-std::vector<CyclicTestData> ReadCyclicTests(const std::vector<std::string>& paths,
-                                            const CyclicTestUnits& file_units,
-                                            const UnitSystem& into) {
-  std::vector<CyclicTestData> tests;
+CyclicTestSet ReadCyclicTests(const std::vector<std::string>& paths,
+                              const CyclicTestUnits& file_units, const UnitSystem& into) {
+  CyclicTestSet set;
+  std::vector<CyclicTestData>& tests = set.tests;
   for (const std::string& path : paths) {
     const std::size_t first = tests.size();
-    ReadFile(path, file_units, into, &tests);
+    ReadFile(path, file_units, into, &tests, &set.one_specimen);
     for (std::size_t i = first; i < tests.size(); ++i) {
       CyclicTestData& test = tests[i];
       if (std::all_of(test.force.begin(), test.force.end(), [](double f) { return f == 0.0; })) {
@@ -140,31 +156,33 @@ std::vector<CyclicTestData> ReadCyclicTests(const std::vector<std::string>& path
                                              "channel?); e^2 weighs each test by its force",
                                              test.name));
       }
-      if (std::adjacent_find(test.time.begin(), test.time.end(), std::greater_equal<>()) !=
-          test.time.end()) {
-        throw InputError({path}, fmt::format("test '{}': time does not increase from sample to "
-                                             "sample (two tests under one name?)",
-                                             test.name));
-      }
-      if (!Reverses(test.displacement)) {
-        throw InputError({path}, fmt::format("test '{}': the displacement never reverses", test.name));
-      }
-      test.cycles = identification::SplitCycles(test.displacement);
-      if (test.cycles.size() < 2) {
-        throw InputError({path}, fmt::format("test '{}' has {} whole cycle{} (at least two are "
-                                             "needed: the first is not fitted)",
-                                             test.name, test.cycles.size(),
-                                             test.cycles.size() == 1 ? "" : "s"));
+      identification::Segment(&test);
+      if (test.half_cycles.empty()) {
+        throw InputError(
+            {path},
+            fmt::format("test '{}': too short to identify anything: {} samples and no half-cycle "
+                        "between two reversals (a reversal is a turn of the displacement by more "
+                        "than {:g} % of its range)",
+                        test.name, test.time.size(), 100 * identification::kReversalBand));
       }
     }
   }
-  return tests;
+  return set;
+}
+
+bool OneSpecimen(const std::string& option, bool from_files) {
+  if (option.empty()) return from_files;
+  if (option == "sequential") return true;
+  if (option == "independent") return false;
+  throw InputError({"command line"},
+                   fmt::format("--specimen {} (expected sequential or independent)", option));
 }
 
 void WriteCyclicTests(const std::string& path, const std::vector<CyclicTestData>& tests,
-                      const UnitSystem& units) {
+                      const UnitSystem& units, bool one_specimen) {
   WriteTextFileAtomically(path, [&](std::ostream& out) {
     out << fmt::format("# units: force {}, length {}\n", units.force(), units.length());
+    if (one_specimen) out << "# specimen: one, in order\n";
     out << "test,time,displacement,force\n";
     for (const CyclicTestData& test : tests) {
       for (std::size_t k = 0; k < test.time.size(); ++k) {

@@ -19,10 +19,12 @@ std::vector<identification::ComponentSpec> OneBhm2() {
   return {{"base", hysteresis::LawType::kBhm2, {}, {}, {}}};
 }
 
-Diagnosis DiagnoseCase(const HiddenEffectCase& c) {
+Diagnosis DiagnoseCase(const HiddenEffectCase& c, long budget = 12000) {
   const identification::FitData data = HiddenEffectData(c);
   DiagnoseOptions options;
   options.seed = 7;
+  options.budget = budget;
+  if (c.one_specimen) std::printf("(one specimen, tests in order)\n");
   const Diagnosis d = Diagnose(OneBhm2(), data, options);
   std::printf("%s: base e^2 = %.4g %%, noise floor %.4g %%, %zu steps, %.1f s; %s\n",
               c.file.c_str(), 100 * d.base.fit.error.total, 100 * d.noise_floor, d.steps.size(),
@@ -129,6 +131,42 @@ TEST(Diagnose, FindsCyclicDegradation) {
   const Diagnosis d = DiagnoseCase({"cyclic_degradation.yaml", 15});
   ExpectNamesOnly(d, {Effect::kCyclicDegradation});
   ExpectGapClosed(d);
+}
+
+// Campaigns on one specimen: the tests ran one after another, the degradation accumulating over
+// the campaign and the rate case's slider carrying its offset from test to test. Modelled as one
+// specimen, the diagnosis names only the right effect and ends within 1.5 x the noise floor.
+// Where the carried state matters: the truth itself, simulated from rest test by test, misses
+// every test after the first by far more than noise.
+void ExpectCarriedStateMatters(const HiddenEffectCase& c) {
+  identification::FitData data = HiddenEffectData(c);
+  const auto truth = HiddenEffectTruth(c).isolation;
+  const auto carried = identification::ComputeFitError(truth, data);
+  data.one_specimen = false;
+  const auto from_rest = identification::ComputeFitError(truth, data);
+  std::printf("%s campaign, truth e^2 per test (carried / from rest), %%:", c.file.c_str());
+  for (std::size_t i = 0; i < data.tests.size(); ++i) {
+    std::printf(" %s %.3g/%.3g", data.tests[i].name.c_str(), 100 * carried.per_test[i],
+                100 * from_rest.per_test[i]);
+  }
+  std::printf("; total %.4g / %.4g\n", 100 * carried.total, 100 * from_rest.total);
+  EXPECT_NEAR(from_rest.per_test[0], carried.per_test[0], 1e-12);  // the first test is fresh
+  EXPECT_GT(from_rest.total, 2 * carried.total);
+}
+
+void ExpectCampaignDiagnosed(const HiddenEffectCase& c, Effect effect) {
+  ExpectCarriedStateMatters(c);
+  const Diagnosis d = DiagnoseCase(c, 5000);  // a third of the default: seconds, not minutes
+  ExpectNamesOnly(d, {effect});
+  EXPECT_LE(d.final_model.fit.error.total, 1.5 * d.noise_floor);
+}
+
+TEST(Diagnose, OneSpecimenCampaignWithAccumulatingDegradation) {
+  ExpectCampaignDiagnosed({"cyclic_degradation.yaml", 21, true}, Effect::kCyclicDegradation);
+}
+
+TEST(Diagnose, OneSpecimenCampaignWithRateDependence) {
+  ExpectCampaignDiagnosed({"rate_dependence.yaml", 22, true}, Effect::kRateDependence);
 }
 
 TEST(Diagnose, FindsTwoEffectsLargerFirst) {

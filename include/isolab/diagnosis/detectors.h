@@ -8,17 +8,20 @@
 //                        taken out, so a loop that is merely too thin or too soft does not count;
 //                        c must come out positive. Supporting: the change of loop energy with
 //                        test frequency at equal amplitude, measured against modelled.
+// The loop statistics read half-cycles between reversals (discrepancy.h), grouped by test and
+// amplitude (across the tests of one specimen tested in order):
 //   amplitude_dependent_dissipation:
-//                        the largest rise, from a smaller to a larger amplitude, of
-//                        ln(measured / modelled energy per cycle).
+//                        the largest rise, from a smaller to a larger amplitude group, of the
+//                        mean ln(measured / modelled energy per half-cycle), less twice its
+//                        standard error.
 //   large_amplitude_hardening:
-//                        the same for the secant stiffness at the peaks. Supporting: how much
-//                        more of the residual lies at |u| > 0.7 u_a on loading branches of the
-//                        larger tests than the share of samples there.
-//   cyclic_degradation:  how much more the measured loop energy falls from the first to the last
-//                        cycle of a test than the modelled one, averaged over tests. Supporting:
-//                        the same for the secant stiffness, and the change of the residual
-//                        between first and last cycle relative to noise.
+//                        the same for the secant stiffness between reversals. Supporting: how
+//                        much more of the residual lies at |u| > 0.7 u_a on loading branches of
+//                        the larger half-cycles than the share of samples there.
+//   cyclic_degradation:  how much more the measured energy falls from the first to the last
+//                        half-cycle of an amplitude group than the modelled one, averaged over
+//                        groups. Supporting: the same for the secant stiffness, and the change
+//                        of the residual between those half-cycles relative to noise.
 #pragma once
 
 #include <string>

@@ -1,7 +1,8 @@
 // A fitted model set against the measurements it was fitted to: the residual force, sample by
-// sample, and what an engineer reads off each loop (energy, secant stiffness at the peaks), for
-// the measured and the modelled force alike. The detectors of effects.h read only this, never a
-// "truth".
+// sample, and what an engineer reads off each half-cycle between reversals (energy, secant
+// stiffness between its reversal points), for the measured and the modelled force alike, so the
+// statistics mean the same on a sinusoidal protocol and on a seismic history. The detectors of
+// effects.h read only this, never a "truth".
 #pragma once
 
 #include <vector>
@@ -11,19 +12,22 @@
 
 namespace isolab::diagnosis {
 
-// One cycle of one test, read off a loop.
+// One half-cycle of one test, read off its force path.
 struct LoopMeasure {
-  double energy = 0.0;  // dissipated energy, the loop's area (force*length)
-  // Secant stiffness between the peaks, (F+ - F-) / (u+ - u-), with F and u averaged over the
-  // samples within 3 % of each peak displacement, so noise on single samples averages out.
+  // Dissipated energy, the area between the path and the chord of its reversal points
+  // (identification::HalfCycleEnergy; half a symmetric loop's area) (force*length).
+  double energy = 0.0;
+  // Secant stiffness between the reversal points, (F_B - F_A) / (u_B - u_A), with F and u
+  // averaged over the samples within 3 % of the half-cycle's range of each reversal, so noise on
+  // single samples averages out.
   double secant = 0.0;
 };
 
 struct CycleRecord {
   int test = 0;            // index into the data's tests
-  int cycle = 0;           // 1-based within the test
-  double amplitude = 0.0;  // max |u| (length)
-  double period = 0.0;     // duration of the cycle (time)
+  int cycle = 0;           // 1-based half-cycle within the test
+  double amplitude = 0.0;  // half the reversal-to-reversal range (length)
+  double period = 0.0;     // twice the half-cycle's duration (time)
   LoopMeasure measured, modelled;
 };
 
@@ -32,7 +36,7 @@ struct Discrepancy {
   std::vector<std::vector<double>> model_force;  // per test, per sample
   std::vector<std::vector<double>> velocity;     // per test: central differences of u
   std::vector<double> force_noise;  // per test: standard deviation of the measurement noise
-  std::vector<CycleRecord> cycles;  // every fitted cycle, in test order
+  std::vector<CycleRecord> cycles;  // every half-cycle within the fitted spans, in test order
 
   // The model driven through every test and its loops measured. `data` must outlive the result.
   static Discrepancy Of(const hysteresis::ParallelAssembly& model,
@@ -47,8 +51,11 @@ double ForceNoise(const identification::CyclicTestData& test);
 // The e^2 that noise alone leaves: sum over tests of (fitted samples x noise^2) / <F0, F0>.
 double NoiseFloor(const identification::FitData& data, const std::vector<double>& force_noise);
 
-// Every cycle of every test fitted (diagnosis reads first cycles against later ones).
-identification::FitData AllCycles(std::vector<identification::CyclicTestData> tests);
+// Every sample of every test fitted (diagnosis reads early half-cycles against later ones), the
+// tests independent specimens or one specimen in order. Throws std::invalid_argument for a test
+// without a half-cycle between reversals.
+identification::FitData AllCycles(std::vector<identification::CyclicTestData> tests,
+                                  bool one_specimen = false);
 
 // Lag-1 autocorrelation of the residual within the fitted cycles, each test weighted as in e^2,
 // clamped to [0, 0.99].

@@ -2,6 +2,7 @@
 // the protocol of the paper's Table 7 and of bearing qualification tests.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "isolab/hysteresis/parallel_assembly.h"
@@ -45,5 +46,11 @@ struct CyclicResult {
 };
 
 CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtocol& protocol);
+
+// The same test on a specimen with a history: it starts from `state` (one LawState per
+// component, e.g. what an earlier test left) and leaves in it the state after the last sample, so
+// tests run one after another on one specimen. Energies per cycle count from the start state.
+CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtocol& protocol,
+                           std::span<LawState> state);
 
 }  // namespace isolab::hysteresis

@@ -69,9 +69,11 @@ class ModelParametrisation {
   int amplitude_count() const { return static_cast<int>(nonnegative_.size()); }
   const std::vector<bool>& nonnegative() const { return nonnegative_; }
 
-  // Basis forces of every amplitude at shape point x (in [0, 1]^dimension()), one column per
-  // amplitude, one row per sample of the test (the laws driven from rest through it).
-  void Basis(std::span<const double> x, const CyclicTestData& test, Eigen::MatrixXd* basis) const;
+  // Basis forces of every amplitude at shape point x (in [0, 1]^dimension()), one matrix per
+  // test with one column per amplitude and one row per sample: the laws driven through the tests,
+  // each from rest, or, for one specimen, in order with their state carried from test to test.
+  void Basis(std::span<const double> x, std::span<const CyclicTestData> tests, bool one_specimen,
+             std::vector<Eigen::MatrixXd>* bases) const;
 
   // Mathematical parameters (ParameterKeys order) of every component at x with `amplitudes`.
   std::vector<std::vector<double>> Mathematical(std::span<const double> x,

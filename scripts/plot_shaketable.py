@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""Plots for `isolab shaketable`: the isolator's measured force-displacement loop from the
+cyclic-test CSV that --isolator writes, and the measured-vs-predicted overlay from the CSV that
+--comparison writes.
+
+Usage: plot_shaketable.py loop ISOLATOR.csv [MORE.csv ...] -o loop.png [--weight W]
+       plot_shaketable.py overlay COMPARISON.csv [MORE.csv ...] -o overlay.png [--title TEXT]
+(each further comparison adds its prediction, labelled by its file name)
+"""
+import argparse
+
+from plot_common import import_modules
+
+
+def read_isolator(np, path):
+    with open(path, encoding="utf-8") as handle:
+        lines = [line for line in handle if not line.startswith("#")]
+    header = lines[0].strip().split(",")
+    values = np.array([[float(x) for x in line.split(",")[1:]] for line in lines[1:]])
+    return (values[:, header.index("displacement") - 1], values[:, header.index("force") - 1])
+
+
+def loop(args, plt, np):
+    figure, axes = plt.subplots(figsize=(6.5, 4.8))
+    for path in args.files:
+        u, f = read_isolator(np, path)
+        scale = 1.0 / args.weight if args.weight else 1.0
+        axes.plot(u, f * scale, linewidth=0.5, label=path.split("/")[-1].replace(".csv", ""))
+    axes.set_xlabel("isolator displacement (base slab relative to the table) [mm]")
+    axes.set_ylabel("isolator force / weight" if args.weight else "isolator force [kN]")
+    axes.grid(True, linewidth=0.3)
+    axes.legend(fontsize=8)
+    axes.set_title(args.title or "Measured isolator loop: -sum of mass x absolute acceleration")
+    figure.tight_layout()
+    figure.savefig(args.output, dpi=130)
+
+
+def overlay(args, plt, np):
+    figure, axes = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
+    colours = ["r", "b", "g"]
+    for i, path in enumerate(args.files):
+        data = np.genfromtxt(path, delimiter=",", names=True)
+        t = data["time_s"]
+        label = path.split("/")[-1].replace("_comparison.csv", "").replace(".csv", "")
+        if i == 0:
+            axes[0].plot(t, data["isolator_displacement_measured"], "k", linewidth=0.9,
+                         label="measured")
+            axes[1].plot(t, data["roof_acceleration_measured"] / 9806.65, "k", linewidth=0.7,
+                         label="measured")
+        colour = colours[i % len(colours)]
+        axes[0].plot(t, data["isolator_displacement_predicted"], colour, linewidth=0.7,
+                     label=f"predicted: {label}")
+        axes[1].plot(t, data["roof_acceleration_predicted"] / 9806.65, colour, linewidth=0.5,
+                     label=f"predicted: {label}")
+    axes[0].set_ylabel("isolator displacement [mm]")
+    axes[1].set_ylabel("roof absolute acceleration [g]")
+    axes[1].set_xlabel("time [s]")
+    for a in axes:
+        a.grid(True, linewidth=0.3)
+        a.legend(fontsize=7, loc="upper right")
+    axes[0].set_title(args.title or "Measured vs predicted")
+    figure.tight_layout()
+    figure.savefig(args.output, dpi=130)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("kind", choices=["loop", "overlay"])
+    parser.add_argument("files", nargs="+")
+    parser.add_argument("-o", "--output", required=True)
+    parser.add_argument("--weight", type=float, default=0.0,
+                        help="divide the force by this weight (kN)")
+    parser.add_argument("--title", default="")
+    args = parser.parse_args()
+    _, plt, np = import_modules()
+    (loop if args.kind == "loop" else overlay)(args, plt, np)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,213 @@
+// `isolab shaketable` end to end:
+//  * a building whose truth is known: isolab's own run of an isolated shear building written out
+//    as shake-table data (floor channels shuffled, units mixed, displacements relative to the
+//    ground). The isolator history the command derives from floor masses and absolute
+//    accelerations must be the run's own isolator force (equilibrium of the Newmark solution),
+//    the levels and the displacement reference must be found from the data, and --predict must
+//    reproduce the measurements it was made from;
+//  * the bundled BNCS excerpt (tests/cli/data/bncs, MIT): channel 6 is the isolation slab in
+//    ICA50 and the displacements are relative to the table, as established independently
+//    (docs/bncs.md), and a BHM2 fitted to its isolator history has a post-yield period near the
+//    2.6 s (0.38 Hz) of the slab displacement's spectral peak over the whole record;
+//  * bad data: a located error, exit code 2, nothing written.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "cli/run_isolab.h"
+#include "reference_data.h"
+
+namespace {
+
+using isolab::testing::RunIsolab;
+
+const std::string kSource = ISOLAB_SOURCE_DIR;
+
+std::filesystem::path Scratch(const std::string& name) {
+  const auto directory = std::filesystem::temp_directory_path() / "isolab_shaketable_test";
+  std::filesystem::create_directories(directory);
+  const auto path = directory / name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+struct Matrix {
+  std::vector<double> values;
+  std::size_t rows = 0, columns = 1;
+  double operator()(std::size_t r, std::size_t c) const { return values[r * columns + c]; }
+};
+
+Matrix Read(hid_t file, const char* name) {
+  Matrix m;
+  const hid_t dataset = H5Dopen2(file, name, H5P_DEFAULT);
+  const hid_t space = H5Dget_space(dataset);
+  hsize_t dims[2] = {0, 1};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  m.rows = dims[0];
+  m.columns = H5Sget_simple_extent_ndims(space) > 1 ? dims[1] : 1;
+  m.values.resize(m.rows * m.columns);
+  H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.values.data());
+  H5Sclose(space);
+  H5Dclose(dataset);
+  return m;
+}
+
+// A four-level isolated building (base slab and three floors, 30 t each) on a BHM2 isolator under
+// isolab's filtered white noise.
+std::string WriteBuilding() {
+  const auto model = Scratch("building.yaml");
+  std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
+                          "structure:\n  type: shear_building\n  base_mass: 30 t\n"
+                          "  stories: {count: 3, mass: 30 t, stiffness: 60 kN/mm}\n"
+                          "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
+                          "isolation:\n  components:\n"
+                          "    - {type: bhm2, k0: 3, k1: 0.4, uy: 5}\n"
+                          "excitation:\n  ground_motion: {file: " +
+                              kSource +
+                              "/ground_motions/fwn_firm_seed1.at2}\n"
+                              "analysis: {dt: 0.01}\n";
+  return model.string();
+}
+
+TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack) {
+  const std::string model = WriteBuilding();
+  const auto results = Scratch("truth.h5");
+  const auto run = RunIsolab("run " + model + " -o " + results.string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const hid_t file = H5Fopen(results.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const Matrix time = Read(file, "time"), u = Read(file, "displacement");
+  const Matrix a = Read(file, "absolute_acceleration"), rel = Read(file, "acceleration");
+  const Matrix force = Read(file, "isolator/force");
+  H5Fclose(file);
+
+  // The "measurements": roof first (channel 1 = roof ... channel 4 = slab), accelerations in
+  // mm/s^2 written in brackets, displacements in metres by suffix, the table in m/s^2.
+  const auto data = Scratch("building_shaketable.csv");
+  {
+    std::ofstream out(data);
+    out << "# a building isolab ran\ntime_s,table_acceleration_m_s2,table_displacement_m";
+    for (int c = 1; c <= 4; ++c) out << ",a" << c << " [mm/s^2]";
+    for (int c = 1; c <= 4; ++c) out << ",d" << c << "_m";
+    out << "\n";
+    out.precision(12);
+    for (std::size_t r = 0; r < time.rows; ++r) {
+      out << time(r, 0) << "," << (a(r, 0) - rel(r, 0)) / 1000 << ",0";
+      for (int level = 3; level >= 0; --level) out << "," << a(r, level);
+      for (int level = 3; level >= 0; --level) out << "," << u(r, level) / 1000;
+      out << "\n";
+    }
+  }
+  const auto isolator = Scratch("isolator.csv");
+  const auto comparison = Scratch("comparison.csv");
+  const auto shake =
+      RunIsolab("shaketable " + data.string() + " --model " + model + " --isolator " +
+                isolator.string() + " --predict --results " + Scratch("predicted.h5").string() +
+                " --comparison " + comparison.string() + " --offsets none --json -q");
+  ASSERT_EQ(shake.exit_code, 0) << shake.output;
+  const auto json = nlohmann::json::parse(shake.output);
+  EXPECT_EQ(json["levels"], nlohmann::json::array({4, 3, 2, 1}));
+  EXPECT_NE(json["displacement_reference"].get<std::string>().find("relative"), std::string::npos);
+
+  // -sum m a over the four levels is the isolator's force, sample by sample.
+  // Rows of time, displacement, force (the test-name column left out).
+  const auto rows = isolab::testing::ReadNumericCsv(isolator, 1);
+  ASSERT_EQ(rows.size(), time.rows);
+  double peak = 0.0, worst = 0.0;
+  for (std::size_t r = 0; r < time.rows; ++r) {
+    peak = std::max(peak, std::abs(force(r, 0)));
+    worst = std::max(worst, std::abs(rows[r][2] - force(r, 0)));
+    ASSERT_NEAR(rows[r][1], u(r, 0), 1e-6 * std::abs(u(r, 0)) + 1e-9);
+  }
+  EXPECT_LT(worst, 1e-5 * peak) << "peak isolator force " << peak;
+
+  // The model predicts the record it made: ratios 1, NRMSE near zero.
+  for (const auto& row : json["comparison"]) {
+    EXPECT_NEAR(row["predicted"].get<double>() / row["measured"].get<double>(), 1.0, 1e-4)
+        << row["quantity"];
+  }
+  EXPECT_LT(json["nrmse"]["isolator_displacement"].get<double>(), 1e-4);
+  EXPECT_LT(json["nrmse"]["roof_acceleration"].get<double>(), 1e-4);
+  EXPECT_TRUE(std::filesystem::exists(comparison));
+}
+
+TEST(ShakeTableCommand, BncsExcerptSlabChannelReferenceAndIsolationPeriod) {
+  const std::string data =
+      std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/bncs/bncs_ica50_excerpt.csv";
+  ASSERT_TRUE(std::filesystem::exists(data)) << data;  // bundled: a missing excerpt fails
+  const auto isolator = Scratch("bncs_isolator.csv");
+  const auto shake =
+      RunIsolab("shaketable " + data + " --model " + kSource +
+                "/models/bncs/bncs.yaml --isolator " + isolator.string() + " --json -q");
+  ASSERT_EQ(shake.exit_code, 0) << shake.output;
+  const auto json = nlohmann::json::parse(shake.output);
+  EXPECT_EQ(json["levels"], nlohmann::json::array({6, 5, 4, 3, 2, 1}));
+  EXPECT_NE(json["displacement_reference"].get<std::string>().find("relative"), std::string::npos);
+  const auto fit = RunIsolab("fit " + isolator.string() + " --model " + kSource +
+                             "/models/bncs/bhm2_spec.yaml --budget 1500 --json -q -o " +
+                             Scratch("bncs_bhm2.yaml").string());
+  ASSERT_EQ(fit.exit_code, 0) << fit.output;
+  const auto fitted = nlohmann::json::parse(fit.output);
+  const double k1 = fitted["components"][0]["parameters"]["k1"].get<double>();  // kN/mm
+  const double mass = 6 * 0.1;  // six levels of 100 t, in kN s^2/mm
+  const double period = 2 * std::numbers::pi * std::sqrt(mass / k1);
+  std::printf("BNCS excerpt: BHM2 e^2 = %.3g %%, k1 = %.4g kN/mm, post-yield period %.3g s\n",
+              100 * fitted["e2"].get<double>(), k1, period);
+  EXPECT_NEAR(period, 2.6, 0.3);
+  EXPECT_LT(fitted["e2"].get<double>(), 0.06);
+}
+
+TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
+  const std::string model = WriteBuilding();
+  const std::string header =
+      "time_s,table_acceleration_m_s2,table_displacement_m,a1_m_s2,a2_m_s2,a3_m_s2,a4_m_s2,"
+      "d1_m,d2_m,d3_m,d4_m\n";
+  std::string rows;
+  for (int k = 0; k < 400; ++k) {
+    const double t = 0.01 * k, s = std::sin(2 * t);
+    rows += std::to_string(t) + ",0.1,0";
+    for (int c = 0; c < 4; ++c) rows += "," + std::to_string(-s);
+    for (int c = 0; c < 4; ++c) rows += "," + std::to_string(0.01 * (c + 1) * s);
+    rows += "\n";
+  }
+  struct Case {
+    std::string name, text, message;
+  };
+  const std::string nan_rows = header + "0,0,0,0,0,0,0,0,0,0,0\n0.01,0,0,nan,0,0,0,0,0,0,0\n";
+  const Case cases[] = {
+      {"missing.csv",
+       "time_s,table_acceleration_m_s2,table_displacement_m,a1_m_s2\n0,0,0,0\n1,0,0,0\n",
+       "no channel 'd1' (the file has: table_acceleration, table_displacement, a1)"},
+      {"no_unit.csv", "time_s,table_acceleration,table_displacement_m\n0,0,0\n",
+       "no_unit.csv:1:2: column 'table_acceleration' has no unit"},
+      {"twice.csv", "time_s,a1_m_s2,a1 [g]\n0,0,0\n", "twice.csv:1:3: channel 'a1' appears twice"},
+      {"wrong_dimension.csv",
+       "time_s,table_acceleration_m,table_displacement_m,a1_m_s2\n0,0,0,0\n1,0,0,0\n",
+       "wrong_dimension.csv:1:2: channel 'table_acceleration' is in m, which is not a unit of"},
+      {"nan.csv", nan_rows, "nan.csv:3:4: column 'a1': 'nan' is not a finite number"},
+      {"time.csv", header + rows.substr(0, rows.find('\n') + 1) + rows,
+       "time.csv:3:1: time 0 does not increase"},
+      {"short.csv", header + rows.substr(0, rows.find('\n') + 1),
+       "short.csv:2: 1 samples: too short"},
+  };
+  for (const Case& c : cases) {
+    const auto path = Scratch(c.name);
+    std::ofstream(path) << c.text;
+    const auto isolator = Scratch("bad_isolator.csv");
+    const auto run = RunIsolab("shaketable " + path.string() + " --model " + model +
+                                   " --isolator " + isolator.string() + " -q",
+                               true);
+    EXPECT_EQ(run.exit_code, 2) << c.name << ": " << run.output;
+    EXPECT_NE(run.output.find(c.message), std::string::npos) << c.name << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(isolator)) << c.name;
+  }
+}
+
+}  // namespace
