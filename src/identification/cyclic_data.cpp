@@ -70,7 +70,9 @@ void SimulateForceFrom(const hysteresis::ParallelAssembly& assembly, const Cycli
   for (std::size_t k = 0; k < force.size(); ++k) {
     const double dt = k > 0 ? test.time[k] - test.time[k - 1] : 0.0;
     const double v = dt > 0.0 ? (test.displacement[k] - test.displacement[k - 1]) / dt : 0.0;
-    force[k] = assembly.Update(committed, {test.displacement[k], v}, trial, responses).force;
+    // The test's own clock drives the laws that read time (the lead core's heat conduction).
+    force[k] =
+        assembly.Update(committed, {test.displacement[k], v, test.time[k]}, trial, responses).force;
     std::swap(committed, trial);
   }
   std::copy(committed.begin(), committed.end(), state.begin());
