@@ -53,8 +53,7 @@ class Result:
                 self.isolator_force = g["force"][:]
                 self.force_unit = units_of(g["force"])
                 self.component_force = g["component_force"][:]
-                names = text(g.attrs.get("component_names", ""))
-                self.component_names = names.split(",") if names else []
+                self.component_names = [text(n) for n in g["component_force"].attrs["columns"]]
             self.stories = 0
             if "story" in f:
                 self.drift = f["story/drift"][:]

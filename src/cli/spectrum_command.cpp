@@ -283,18 +283,18 @@ void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
                       "into sub-steps (default 100; 1: at the record's samples, as Chopra)");
   command->add_option("--scale", options.scale, "Scale factor on the record");
   command->add_option("--units", options.units,
-                      "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...), "
-                      "overriding its header");
-  command->add_option("--dt", options.dt, "Sampling step of a single-column record (s)");
+                      "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...); must "
+                      "agree with its header when the header names one");
+  command->add_option("--dt", options.dt,
+                      "Sampling step of a single-column record (s); must agree with the file's "
+                      "when it gives one");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of the spectra (m, cm, mm, in, ft; default m)");
   command->add_option("-o,--output", options.outputs,
                       "Write the spectra: OUT.csv and/or OUT.h5 (repeat -o for both)");
-  command
-      ->add_option("--plot", options.plot,
-                   "After writing, plot with scripts/plot_spectrum.py into DIR (default: "
-                   "beside the first output)")
-      ->expected(0, 1);
+  command->add_flag("--plot{}", options.plot,
+                    "After writing, plot with plot_spectrum.py; --plot=DIR puts the PNGs in DIR "
+                    "(default: beside the first output)");
   command->add_flag("--json", options.json, "Print the spectra as JSON");
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
 }
@@ -313,7 +313,8 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   }
   if (options.plot) CheckPlotScript(kPlotScript);
 
-  const io::Record record = io::ReadRecord(options.record, {options.units, options.dt.value_or(0)});
+  const io::Record record =
+      io::ReadRecord(options.record, {options.units, options.dt.value_or(0), "--units", "--dt"});
   integrators::SampledHistory ground;
   ground.dt = record.dt;
   try {
@@ -360,7 +361,11 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   description.elastic = &elastic;
   description.constant_ductility = constant_ductility ? &*constant_ductility : nullptr;
   description.record = options.record;
+  description.record_units = record.units;
+  description.record_units_source = record.units_source;
   description.scale = options.scale;
+  description.pga = record.Peak() * std::abs(units->Convert(options.scale, record.units,
+                                                            io::dimension::kAcceleration));
   description.length_unit = options.length_unit;
   description.gravity = gravity;
   description.version = ISOLAB_VERSION;
@@ -371,8 +376,9 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   if (options.json) {
     out << SpectrumJson(description, options.outputs, seconds).dump(2) << "\n";
   } else {
-    fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {}; scale {:g}\n", options.record,
-               record.format, record.values.size(), record.dt, record.units, options.scale);
+    fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {} from {}; scale {:g}: PGA {:.4g} g\n",
+               options.record, record.format, record.values.size(), record.dt, record.units,
+               record.units_source, options.scale, description.pga / gravity);
     PrintTables(description, out);
     for (const std::string& output : options.outputs) fmt::print(out, "spectra: {}\n", output);
     fmt::print(out, "{:.2f} s\n", seconds);

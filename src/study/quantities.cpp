@@ -74,10 +74,9 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
   set(Quantity::kBaseShear, peaks.base_shear.value * force);
   if (setup.layout.isolation >= 0) {
     set(Quantity::kIsolatorDisplacement, peaks.isolator_displacement.value * length);
-    const int dof = setup.structure.connections()[setup.layout.isolation].dof_j;
     if (rows > 0) {
       set(Quantity::kResidualIsolatorDisplacement,
-          std::abs(response.displacement(rows - 1, dof)) * length);
+          std::abs(peaks.residual_isolator_displacement) * length);
     }
   }
   // The largest ratio, which need not be the largest drift's when heights differ.

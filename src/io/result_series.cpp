@@ -1,0 +1,100 @@
+#include "result_series.h"
+
+#include <fmt/format.h>
+
+#include "isolab/io/run_analysis.h"
+
+namespace isolab::io {
+namespace {
+
+using integrators::RowMatrix;
+
+// A matrix of the response: row r, column c.
+Series Matrix(std::string name, std::string units, std::vector<std::string> columns,
+              const RowMatrix& matrix) {
+  return {std::move(name), std::move(units), std::move(columns),
+          [&matrix](int row, std::size_t column) { return matrix(row, column); }};
+}
+
+}  // namespace
+
+std::vector<Series> ResultSeries(const RunDescription& run) {
+  const auto& r = *run.response;
+  const AnalysisSetup& setup = *run.setup;
+  const UnitSystem& units = run.model->units;
+  const std::string length = DescribeUnits(units, dimension::kLength);
+  const std::string force = DescribeUnits(units, dimension::kForce);
+  const std::string velocity = DescribeUnits(units, dimension::kVelocity);
+  const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
+  const std::string energy = fmt::format("{}*{}", units.force(), units.length());
+  const auto& connections = setup.structure.connections();
+  const std::vector<std::string>& dofs = setup.layout.dof_names;
+
+  std::vector<Series> series;
+  series.push_back({"time", units.time(), {}, [&r](int row, std::size_t) { return r.time[row]; }});
+  if (!setup.record.path.empty()) {
+    series.push_back({"ground_acceleration", acceleration, {}, [&r, &setup](int row, std::size_t) {
+                        return setup.excitation.ground_acceleration.At(r.time[row]);
+                      }});
+  }
+  series.push_back(Matrix("displacement", length, dofs, r.displacement));
+  series.push_back(Matrix("velocity", velocity, dofs, r.velocity));
+  series.push_back(Matrix("acceleration", acceleration, dofs, r.acceleration));
+  series.push_back(Matrix("absolute_acceleration", acceleration, dofs, r.absolute_acceleration));
+  std::vector<std::string> connection_names;
+  for (const auto& connection : connections) connection_names.push_back(connection.name);
+  series.push_back(Matrix("connection_force", force, connection_names, r.connection_force));
+
+  if (setup.layout.isolation >= 0) {
+    const int k = setup.layout.isolation;
+    const int dof = connections[k].dof_j;
+    series.push_back({"isolator/displacement", length, {}, [&r, dof](int row, std::size_t) {
+                        return r.displacement(row, dof);
+                      }});
+    series.push_back({"isolator/force", force, {}, [&r, k](int row, std::size_t) {
+                        return r.connection_force(row, k);
+                      }});
+    std::vector<std::string> components;
+    for (const auto& component : connections[k].assembly.components()) {
+      components.push_back(component.name);
+    }
+    const std::size_t first = setup.structure.law_offset(k);
+    series.push_back({"isolator/component_force", force, components,
+                      [&r, first](int row, std::size_t c) { return r.law_force(row, first + c); }});
+  }
+  if (!setup.layout.stories.empty()) {
+    std::vector<std::string> stories;
+    bool heights = false;
+    for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
+      stories.push_back(connections[setup.layout.stories[s]].name);
+      heights = heights || setup.layout.story_heights[s] > 0.0;
+    }
+    series.push_back({"story/drift", length, stories, [&r, &setup](int row, std::size_t s) {
+                        return StoryDrift(setup, r.displacement, row, s);
+                      }});
+    if (heights) {
+      series.push_back({"story/drift_ratio", "%", stories, [&r, &setup](int row, std::size_t s) {
+                          const double height = setup.layout.story_heights[s];
+                          return height > 0.0
+                                     ? 100.0 * StoryDrift(setup, r.displacement, row, s) / height
+                                     : std::numeric_limits<double>::quiet_NaN();
+                        }});
+    }
+    series.push_back({"story/shear", force, stories, [&r, &setup](int row, std::size_t s) {
+                        return r.connection_force(row, setup.layout.stories[s]);
+                      }});
+  }
+  const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
+    series.push_back({fmt::format("energy/{}", name), energy, {}, [&r, term](int row, std::size_t) {
+                        return r.energies[row].*term;
+                      }});
+  };
+  energy_term("input", &integrators::Energies::input);
+  energy_term("kinetic", &integrators::Energies::kinetic);
+  energy_term("damping", &integrators::Energies::damping);
+  energy_term("elastic", &integrators::Energies::elastic);
+  energy_term("hysteretic", &integrators::Energies::hysteretic);
+  return series;
+}
+
+}  // namespace isolab::io
