@@ -43,9 +43,9 @@ void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, s
   if (!setup.record.path.empty()) {
     const io::AppliedRecord& r = setup.record;
     fmt::print(
-        out, "record: {} ({}, in {} from {}, dt = {:g} s), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
-        r.path, r.format, r.units, r.units_source, r.dt, r.scale, r.pga / g, r.pga,
-        io::DescribeUnits(u, io::dimension::kAcceleration));
+        out, "record: {} ({}, dt = {:g} s, in {} from {}), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
+        r.path, r.format, r.dt, r.units, r.units_source == "header" ? "its header" : r.units_source,
+        r.scale, r.pga / g, r.pga, io::DescribeUnits(u, io::dimension::kAcceleration));
   }
   const double tonnes = m.total_mass * u.SiFactor(io::dimension::kMass) / 1000.0;
   fmt::print(out, "model: total weight {:.5g} {} ({:.5g} t)", m.total_weight, u.force(), tonnes);
@@ -60,7 +60,7 @@ void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, s
                io::DescribeUnits(u, io::dimension::kStiffness));
   }
   fmt::print(out,
-             "\ndt = {:g} {}, {} steps ({:g} {} of excitation, then {:g} {} of free "
+             "\ndt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
              "vibration), {} dofs\n\n",
              setup.grid.dt, u.time(), setup.grid.steps, setup.excitation_end, u.time(),
              setup.free_vibration, u.time(), setup.structure.dofs());
@@ -99,10 +99,10 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
     fmt::print(out, "{:<34} {:>12.5g} {:<8} ", "residual isolator displacement",
                peaks.residual_isolator_displacement, length);
     if (setup.free_vibration > 0.0) {
-      fmt::print(out, "after {:g} {} of free vibration (still swinging +-{:.3g} {}); ",
+      fmt::print(out, "after {:.4g} {} of free vibration (still swinging +-{:.3g} {})",
                  setup.free_vibration, time, peaks.residual_oscillation, length);
     }
-    fmt::print(out, "{:.5g} {} when the excitation ended\n",
+    fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
                peaks.isolator_displacement_at_excitation_end, length);
     const io::ModelSummary& m = setup.summary;
     if (m.isolated && peaks.isolator_displacement.value > 0.0) {
@@ -308,9 +308,10 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   PrintWarnings(setup.summary.warnings);
   integrators::ResponseHistory response;
   const integrators::RunSummary summary = io::RunAnalysis(analysis, setup, &response);
-  const io::RunDescription run{&model, &setup, &analysis, &response, &summary, ISOLAB_VERSION};
-  io::WriteResultsFile(output, run);
   const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
+  const io::RunDescription run{&model,   &setup, &analysis,     &response,
+                               &summary, &peaks, ISOLAB_VERSION};
+  io::WriteResultsFile(output, run);
   const std::vector<std::string> warnings = io::RunWarnings(run);
   if (options.json) {
     out << SummaryJson(model, analysis, setup, peaks, summary, response, warnings, output).dump(2)

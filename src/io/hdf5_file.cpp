@@ -191,7 +191,15 @@ void Hdf5File::WriteStrings(const std::string& name, const std::vector<std::size
 }
 
 void Hdf5File::WriteText(const std::string& name, const std::string& value) {
-  WriteStrings(name, {}, std::span<const std::string>(&value, 1));
+  // Fixed length, UTF-8: one string needs no global heap (much cheaper to write than a
+  // variable-length one), and h5py's .asstr() reads either.
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  impl_->Check(type.get(), "string type");
+  impl_->Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
+  impl_->Check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string encoding");
+  impl_->Check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "string padding");
+  const std::string padded = value.empty() ? std::string(1, '\0') : value;
+  impl_->Write(name, {}, type.get(), padded.data(), 1, "");
 }
 
 void Hdf5File::WriteAttribute(const std::string& object, const std::string& name,
@@ -232,9 +240,9 @@ Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns
                                     const std::string& units, std::size_t expected_rows) {
   const Impl& s = *impl_;
   const std::size_t width = std::max<std::size_t>(columns, 1);
-  // Chunks of at most 64 KiB, and no longer than the history expected.
+  // Chunks of at most 1 MiB (HDF5's default chunk cache) and no longer than the history expected.
   const std::size_t chunk_rows =
-      std::max<std::size_t>(1, std::min(expected_rows, (std::size_t{1} << 13) / width));
+      std::max<std::size_t>(1, std::min(expected_rows, (std::size_t{1} << 17) / width));
   const int rank = columns == 0 ? 1 : 2;
   const hsize_t initial[2] = {0, columns};
   const hsize_t maximum[2] = {H5S_UNLIMITED, columns};

@@ -2,18 +2,27 @@
 
 #include <fmt/format.h>
 
-#include "isolab/io/run_analysis.h"
+#include <algorithm>
+#include <limits>
 
 namespace isolab::io {
 namespace {
 
 using integrators::RowMatrix;
 
-// A matrix of the response: row r, column c.
+// Rows of a row-major response matrix, copied whole.
 Series Matrix(std::string name, std::string units, std::vector<std::string> columns,
               const RowMatrix& matrix) {
-  return {std::move(name), std::move(units), std::move(columns),
-          [&matrix](int row, std::size_t column) { return matrix(row, column); }};
+  return {std::move(name), std::move(units), std::move(columns), [&matrix](int row, double* out) {
+            std::copy_n(matrix.row(row).data(), matrix.cols(), out);
+          }};
+}
+
+// One value per row.
+template <typename Value>
+Series Vector(std::string name, std::string units, Value value) {
+  return {
+      std::move(name), std::move(units), {}, [value](int row, double* out) { *out = value(row); }};
 }
 
 }  // namespace
@@ -31,11 +40,11 @@ std::vector<Series> ResultSeries(const RunDescription& run) {
   const std::vector<std::string>& dofs = setup.layout.dof_names;
 
   std::vector<Series> series;
-  series.push_back({"time", units.time(), {}, [&r](int row, std::size_t) { return r.time[row]; }});
+  series.push_back(Vector("time", units.time(), [&r](int row) { return r.time[row]; }));
   if (!setup.record.path.empty()) {
-    series.push_back({"ground_acceleration", acceleration, {}, [&r, &setup](int row, std::size_t) {
-                        return setup.excitation.ground_acceleration.At(r.time[row]);
-                      }});
+    series.push_back(Vector("ground_acceleration", acceleration, [&r, &setup](int row) {
+      return setup.excitation.ground_acceleration.At(r.time[row]);
+    }));
   }
   series.push_back(Matrix("displacement", length, dofs, r.displacement));
   series.push_back(Matrix("velocity", velocity, dofs, r.velocity));
@@ -48,19 +57,19 @@ std::vector<Series> ResultSeries(const RunDescription& run) {
   if (setup.layout.isolation >= 0) {
     const int k = setup.layout.isolation;
     const int dof = connections[k].dof_j;
-    series.push_back({"isolator/displacement", length, {}, [&r, dof](int row, std::size_t) {
-                        return r.displacement(row, dof);
-                      }});
-    series.push_back({"isolator/force", force, {}, [&r, k](int row, std::size_t) {
-                        return r.connection_force(row, k);
-                      }});
+    series.push_back(Vector("isolator/displacement", length,
+                            [&r, dof](int row) { return r.displacement(row, dof); }));
+    series.push_back(
+        Vector("isolator/force", force, [&r, k](int row) { return r.connection_force(row, k); }));
     std::vector<std::string> components;
     for (const auto& component : connections[k].assembly.components()) {
       components.push_back(component.name);
     }
     const std::size_t first = setup.structure.law_offset(k);
     series.push_back({"isolator/component_force", force, components,
-                      [&r, first](int row, std::size_t c) { return r.law_force(row, first + c); }});
+                      [&r, first, count = components.size()](int row, double* out) {
+                        std::copy_n(r.law_force.row(row).data() + first, count, out);
+                      }});
   }
   if (!setup.layout.stories.empty()) {
     std::vector<std::string> stories;
@@ -69,25 +78,31 @@ std::vector<Series> ResultSeries(const RunDescription& run) {
       stories.push_back(connections[setup.layout.stories[s]].name);
       heights = heights || setup.layout.story_heights[s] > 0.0;
     }
-    series.push_back({"story/drift", length, stories, [&r, &setup](int row, std::size_t s) {
-                        return StoryDrift(setup, r.displacement, row, s);
+    series.push_back({"story/drift", length, stories, [&r, &setup](int row, double* out) {
+                        for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
+                          out[s] = StoryDrift(setup, r.displacement, row, s);
+                        }
                       }});
     if (heights) {
-      series.push_back({"story/drift_ratio", "%", stories, [&r, &setup](int row, std::size_t s) {
-                          const double height = setup.layout.story_heights[s];
-                          return height > 0.0
-                                     ? 100.0 * StoryDrift(setup, r.displacement, row, s) / height
-                                     : std::numeric_limits<double>::quiet_NaN();
+      series.push_back({"story/drift_ratio", "%", stories, [&r, &setup](int row, double* out) {
+                          for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
+                            const double height = setup.layout.story_heights[s];
+                            out[s] =
+                                height > 0.0
+                                    ? 100.0 * StoryDrift(setup, r.displacement, row, s) / height
+                                    : std::numeric_limits<double>::quiet_NaN();
+                          }
                         }});
     }
-    series.push_back({"story/shear", force, stories, [&r, &setup](int row, std::size_t s) {
-                        return r.connection_force(row, setup.layout.stories[s]);
+    series.push_back({"story/shear", force, stories, [&r, &setup](int row, double* out) {
+                        for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
+                          out[s] = r.connection_force(row, setup.layout.stories[s]);
+                        }
                       }});
   }
   const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
-    series.push_back({fmt::format("energy/{}", name), energy, {}, [&r, term](int row, std::size_t) {
-                        return r.energies[row].*term;
-                      }});
+    series.push_back(Vector(fmt::format("energy/{}", name), energy,
+                            [&r, term](int row) { return r.energies[row].*term; }));
   };
   energy_term("input", &integrators::Energies::input);
   energy_term("kinetic", &integrators::Energies::kinetic);

@@ -15,7 +15,8 @@ struct Series {
   std::string name;                  // "time", "displacement", "isolator/force", ...
   std::string units;                 // "" for none
   std::vector<std::string> columns;  // empty: a vector (one value per row)
-  std::function<double(int row, std::size_t column)> value;
+  // Writes the width() values of output row `row` to `out`.
+  std::function<void(int row, double* out)> fill;
 
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };

@@ -5,7 +5,6 @@
 
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/csv.h"
-#include "isolab/io/response_peaks.h"
 #include "isolab/io/run_analysis.h"
 #include "result_series.h"
 
@@ -32,7 +31,7 @@ void WriteComments(std::ostream& out, const RunDescription& run) {
   fmt::print(out, "# excitation ends at {:g} {}, then free vibration for {:g} {}\n",
              setup.excitation_end, units.time(), setup.free_vibration, units.time());
   if (setup.layout.isolation >= 0) {
-    const ResponsePeaks peaks = ComputePeaks(setup, *run.response);
+    const ResponsePeaks& peaks = *run.peaks;
     fmt::print(out, "# residual isolator displacement: {:.6g} {} (still oscillating +-{:.3g})\n",
                peaks.residual_isolator_displacement, units.length(), peaks.residual_oscillation);
   }
@@ -58,10 +57,13 @@ void WriteResultsCsv(const std::string& path, const RunDescription& run) {
       }
     }
     out << CsvLine(fields);
+    std::vector<double> values;
     for (int row = 0; row < run.response->rows_written; ++row) {
       fields.clear();
       for (const Series& s : series) {
-        for (std::size_t c = 0; c < s.width(); ++c) fields.push_back(ExactNumber(s.value(row, c)));
+        values.resize(s.width());
+        s.fill(row, values.data());
+        for (const double value : values) fields.push_back(ExactNumber(value));
       }
       out << CsvLine(fields);
     }

@@ -8,7 +8,6 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
-#include "isolab/io/response_peaks.h"
 #include "result_series.h"
 
 namespace isolab::io {
@@ -44,9 +43,8 @@ void WriteResultsFile(const std::string& path, const RunDescription& run) {
 
 std::vector<std::string> RunWarnings(const RunDescription& run) {
   std::vector<std::string> warnings = run.setup->summary.warnings;
-  const ResponsePeaks peaks = ComputePeaks(*run.setup, *run.response);
   const std::string bearing =
-      IsolatorDisplacementWarning(peaks.isolator_displacement.value, run.model->units);
+      IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.model->units);
   if (!bearing.empty()) warnings.push_back(bearing);
   return warnings;
 }

@@ -46,7 +46,9 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
     const std::filesystem::path file = std::filesystem::path(output_directory) / name;
     std::error_code ignored;  // a folder that cannot be made shows as the file's write error
     std::filesystem::create_directories(file.parent_path(), ignored);
-    const io::RunDescription run{&model, &setup, &model.analysis, &response, &summary, version};
+    const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
+    const io::RunDescription run{&model,   &setup, &model.analysis, &response,
+                                 &summary, &peaks, version};
     io::WriteResultsFile(file.string(), run);
     result.file = name;
     result.warnings = io::RunWarnings(run);

@@ -1,11 +1,12 @@
 // isolab's one HDF5 writer: results of runs, spectra and study summaries all go through it, so
 // every file reads the same way from Python (h5py) or any HDF5 tool:
 //  * numbers as float64 or int64 datasets, each with a "units" attribute where it has units;
-//  * text as variable-length UTF-8 strings (h5py returns str for attributes, and for datasets
-//    through .asstr()), never fixed-length byte strings;
+//  * text as UTF-8 strings (h5py returns str for attributes, and for datasets through
+//    .asstr()): variable-length in attributes and string arrays, fixed-length for a single text;
 //  * column names of a 2-D dataset as a "columns" attribute (an array of strings);
-//  * time histories as chunked datasets whose first dimension grows as rows are appended
-//    (Rows), so a run can stream its output instead of holding it all in memory.
+//  * numbers written whole (WriteDoubles: contiguous, the cheapest), or as chunked datasets whose
+//    first dimension grows as rows are appended (Rows), so a run can stream its output instead
+//    of holding it all in memory.
 // Objects carry no creation or modification times: the same contents give the same bytes.
 // The file is an AtomicFile (atomic_file.h): written under a unique temporary name beside the
 // target and renamed by Commit(); destroyed without Commit, nothing is left. HDF5's own headers
@@ -43,7 +44,8 @@ class Hdf5File {
                      std::span<const std::int64_t> data, const std::string& units = "");
   void WriteStrings(const std::string& name, const std::vector<std::size_t>& dims,
                     std::span<const std::string> values);
-  // A scalar string dataset, for text of any length (attributes stop near 64 KiB).
+  // A scalar string dataset, for text of any length (attributes stop near 64 KiB); UTF-8, fixed
+  // length.
   void WriteText(const std::string& name, const std::string& value);
 
   // Attributes of `object` ("/" for the file, or a dataset or group name).

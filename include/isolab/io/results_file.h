@@ -33,6 +33,7 @@
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
+#include "isolab/io/response_peaks.h"
 
 namespace isolab::io {
 
@@ -42,6 +43,7 @@ struct RunDescription {
   const AnalysisSection* analysis = nullptr;
   const integrators::ResponseHistory* response = nullptr;
   const integrators::RunSummary* summary = nullptr;
+  const ResponsePeaks* peaks = nullptr;  // ComputePeaks(*setup, *response)
   std::string version;
 };
 
