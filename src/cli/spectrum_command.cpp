@@ -163,8 +163,10 @@ nlohmann::json SpectrumJson(const io::SpectrumDescription& s, const std::vector<
                             double seconds) {
   const spectra::ElasticSpectrum& e = *s.elastic;
   nlohmann::json json;
-  json["record"] = s.record;
-  json["scale"] = s.scale;
+  json["record"] = s.record.path;
+  json["scale"] = s.record.scale;
+  json["record_units"] = s.record.units;
+  json["pga_g"] = s.record.pga / s.gravity;
   json["units"] = {{"length", s.length_unit}, {"time", "s"}, {"g", s.gravity}};
   json["periods"] = e.periods;
   json["elastic"] = nlohmann::json::array();
@@ -360,12 +362,14 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   io::SpectrumDescription description;
   description.elastic = &elastic;
   description.constant_ductility = constant_ductility ? &*constant_ductility : nullptr;
-  description.record = options.record;
-  description.record_units = record.units;
-  description.record_units_source = record.units_source;
-  description.scale = options.scale;
-  description.pga = record.Peak() * std::abs(units->Convert(options.scale, record.units,
-                                                            io::dimension::kAcceleration));
+  description.record = {options.record,
+                        record.format,
+                        record.units,
+                        record.units_source,
+                        record.dt,
+                        options.scale,
+                        record.Peak() * std::abs(units->Convert(options.scale, record.units,
+                                                                io::dimension::kAcceleration))};
   description.length_unit = options.length_unit;
   description.gravity = gravity;
   description.version = ISOLAB_VERSION;
@@ -378,7 +382,7 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   } else {
     fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {} from {}; scale {:g}: PGA {:.4g} g\n",
                options.record, record.format, record.values.size(), record.dt, record.units,
-               record.units_source, options.scale, description.pga / gravity);
+               record.units_source, options.scale, description.record.pga / gravity);
     PrintTables(description, out);
     for (const std::string& output : options.outputs) fmt::print(out, "spectra: {}\n", output);
     fmt::print(out, "{:.2f} s\n", seconds);

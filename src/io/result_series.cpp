@@ -78,21 +78,28 @@ std::vector<Series> ResultSeries(const RunDescription& run) {
       stories.push_back(connections[setup.layout.stories[s]].name);
       heights = heights || setup.layout.story_heights[s] > 0.0;
     }
-    series.push_back({"story/drift", length, stories, [&r, &setup](int row, double* out) {
-                        for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-                          out[s] = StoryDrift(setup, r.displacement, row, s);
-                        }
-                      }});
+    // Each story's drift times a factor: 1 for the drift, 100 / height for its ratio (%).
+    const auto drifts = [&](std::string name, std::string units, std::vector<double> factors) {
+      std::vector<std::pair<int, int>> floors;  // (below, above); kGround: -1
+      for (const int k : setup.layout.stories)
+        floors.emplace_back(connections[k].dof_i, connections[k].dof_j);
+      return Series{std::move(name), std::move(units), stories,
+                    [&r, floors, factors](int row, double* out) {
+                      const double* u = r.displacement.row(row).data();
+                      for (std::size_t s = 0; s < floors.size(); ++s) {
+                        const double below = floors[s].first >= 0 ? u[floors[s].first] : 0.0;
+                        out[s] = factors[s] * (u[floors[s].second] - below);
+                      }
+                    }};
+    };
+    series.push_back(drifts("story/drift", length, std::vector<double>(stories.size(), 1.0)));
     if (heights) {
-      series.push_back({"story/drift_ratio", "%", stories, [&r, &setup](int row, double* out) {
-                          for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-                            const double height = setup.layout.story_heights[s];
-                            out[s] =
-                                height > 0.0
-                                    ? 100.0 * StoryDrift(setup, r.displacement, row, s) / height
-                                    : std::numeric_limits<double>::quiet_NaN();
-                          }
-                        }});
+      std::vector<double> per_height;
+      for (const double height : setup.layout.story_heights) {
+        per_height.push_back(height > 0.0 ? 100.0 / height
+                                          : std::numeric_limits<double>::quiet_NaN());
+      }
+      series.push_back(drifts("story/drift_ratio", "%", per_height));
     }
     series.push_back({"story/shear", force, stories, [&r, &setup](int row, double* out) {
                         for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {

@@ -5,6 +5,7 @@
 
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/run_analysis.h"
+#include "record_attributes.h"
 #include "result_series.h"
 
 namespace isolab::io {
@@ -54,7 +55,6 @@ void WriteRunAttributes(Hdf5File& file, const RunDescription& run) {
   const AnalysisSetup& setup = *run.setup;
   const integrators::RunSummary& summary = *run.summary;
   const UnitSystem& units = run.model->units;
-  const AppliedRecord& record = setup.record;
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
   const auto integer = [&](const char* name, long value) {
     file.WriteIntegerAttribute("/", name, value);
@@ -64,14 +64,7 @@ void WriteRunAttributes(Hdf5File& file, const RunDescription& run) {
   file.WriteAttribute(
       "/", "units",
       fmt::format("force {}, length {}, time {}", units.force(), units.length(), units.time()));
-  file.WriteAttribute("/", "record", record.path);
-  file.WriteAttribute("/", "record_format", record.format);
-  file.WriteAttribute("/", "record_units", record.units);
-  file.WriteAttribute("/", "record_units_source", record.units_source);
-  file.WriteAttribute("/", "record_dt", record.dt);
-  file.WriteAttribute("/", "record_scale", record.scale);
-  file.WriteAttribute("/", "record_pga", record.pga);
-  file.WriteAttribute("/", "record_pga_g", record.pga / g);
+  WriteRecordAttributes(file, setup.record, g);
   file.WriteAttribute("/", "integrator", DescribeIntegrator(*run.analysis, setup.grid.dt));
   file.WriteAttribute("/", "dt", setup.grid.dt);
   integer("steps", summary.steps);

@@ -11,6 +11,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/hdf5_file.h"
+#include "record_attributes.h"
 
 namespace isolab::io {
 namespace {
@@ -29,8 +30,8 @@ void WriteCsv(std::ostream& out, const SpectrumDescription& s) {
   fmt::print(out,
              "# isolab {} response spectra of {} (units {} from {}, scale {:g}, PGA {:.4g} g); "
              "time in s, lengths in {}, 1 g = {:.6g} {}/s^2\n",
-             s.version, s.record, s.record_units, s.record_units_source, s.scale, s.pga / s.gravity,
-             L, s.gravity, L);
+             s.version, s.record.path, s.record.units, s.record.units_source, s.record.scale,
+             s.record.pga / s.gravity, L, s.gravity, L);
   fmt::print(out,
              "curve,damping,ductility,alpha,period_s,D_{0},V_{0}/s,A_{0}/s^2,A_g,fy_over_fo,um_{0},"
              "achieved_ductility\n",
@@ -108,12 +109,7 @@ void WriteHdf5(const std::string& path, const SpectrumDescription& s) {
     write("achieved_ductility", &spectra::ConstantDuctilityPoint::achieved_ductility, "1");
   }
   file.WriteAttribute("/", "isolab_version", s.version);
-  file.WriteAttribute("/", "record", s.record);
-  file.WriteAttribute("/", "record_units", s.record_units);
-  file.WriteAttribute("/", "record_units_source", s.record_units_source);
-  file.WriteAttribute("/", "record_scale", s.scale);
-  file.WriteAttribute("/", "record_pga", s.pga);
-  file.WriteAttribute("/", "record_pga_g", s.pga / s.gravity);
+  WriteRecordAttributes(file, s.record, s.gravity);
   file.WriteAttribute("/", "units", fmt::format("length {}, time s", length));
   file.WriteAttribute("/", "gravity", s.gravity);
   file.WriteAttribute(

@@ -18,6 +18,7 @@
 #include "isolab/integrators/response.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/model_summary.h"
+#include "isolab/io/record.h"
 #include "isolab/structure/structure.h"
 
 namespace isolab::io {
@@ -41,17 +42,6 @@ struct StructureLayout {
   std::vector<int> stories;            // connection of each story, bottom to top
   std::vector<double> story_heights;   // (length), 0 where not given
   std::vector<std::string> dof_names;  // "base", "floor 1", ...; an SDOF's "mass"
-};
-
-// The ground motion as applied.
-struct AppliedRecord {
-  std::string path;          // empty without a ground motion
-  std::string format;        // record.h
-  std::string units;         // of the file's values
-  std::string units_source;  // "header", or who gave them
-  double dt = 0.0;           // (s) the file's step
-  double scale = 1.0;
-  double pga = 0.0;  // peak |a_g| of the scaled record (model acceleration unit)
 };
 
 struct AnalysisSetup {

@@ -38,6 +38,18 @@ struct Record {
   double Peak() const;
 };
 
+// A record as an analysis applied it: the file, what it was read as, the scale and the scaled
+// record's PGA, for printing and for every results file.
+struct AppliedRecord {
+  std::string path;          // empty without a ground motion
+  std::string format;        // as Record::format
+  std::string units;         // of the file's values
+  std::string units_source;  // "header", or who gave them
+  double dt = 0.0;           // (s) the file's step
+  double scale = 1.0;
+  double pga = 0.0;  // peak |a_g| of the scaled record, in the analysis' acceleration unit
+};
+
 // Throws InputError (file:line: what) for unreadable, malformed, empty or non-finite records,
 // unknown units, and units or a step that disagree with the file's own.
 Record ReadRecord(const std::string& path, const RecordOptions& options = {});

@@ -20,6 +20,7 @@
 
 #include <string>
 
+#include "isolab/io/record.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
 
@@ -28,11 +29,7 @@ namespace isolab::io {
 struct SpectrumDescription {
   const spectra::ElasticSpectrum* elastic = nullptr;                       // required
   const spectra::ConstantDuctilitySpectrum* constant_ductility = nullptr;  // may be null
-  std::string record;                                                      // path
-  std::string record_units;                                                // of the file's values
-  std::string record_units_source;  // "header" or who gave them
-  double scale = 1.0;
-  double pga = 0.0;         // of the scaled record, length_unit/s^2
+  AppliedRecord record;     // its pga in length_unit/s^2
   std::string length_unit;  // of every length in the spectra; time in s
   double gravity = 0.0;     // 1 g in length_unit/s^2
   std::string version;
