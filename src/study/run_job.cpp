@@ -54,7 +54,7 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
     result.warnings = io::RunWarnings(run);
     if (summary.ok()) {
       result.completed = true;
-      result.values = MeasureQuantities(setup, response, model.units, study.units);
+      result.values = MeasureQuantities(setup, response, peaks, model.units, study.units);
     } else {
       result.message = summary.message;
     }

@@ -19,6 +19,7 @@
 
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
+#include "isolab/io/response_peaks.h"
 #include "isolab/io/units.h"
 
 namespace isolab::study {
@@ -49,10 +50,11 @@ std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units);
 // All NaN: nothing measured.
 QuantityValues NoValues();
 
-// `model_units` are the run's model's, `study_units` the study's.
+// `model_units` are the run's model's, `study_units` the study's; `peaks` are the run's
+// (io::ComputePeaks).
 QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
-                                 const io::UnitSystem& model_units,
+                                 const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
                                  const io::UnitSystem& study_units);
 
 }  // namespace isolab::study
