@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
 #include "isolab/io/record.h"
 #include "isolab/io/spectrum_file.h"
 #include "isolab/io/units.h"
@@ -138,6 +139,7 @@ Inputs ParseInputs(const SpectrumOptions& options) {
                                            ".csv, .h5 or .hdf5",
                                            output));
     }
+    io::CheckOutputPath(output);  // before a long constant-ductility scan, not after it
   }
   if (options.plot && options.outputs.empty()) {
     throw InputError({"--plot"},

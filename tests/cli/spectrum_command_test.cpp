@@ -149,6 +149,13 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
     EXPECT_FALSE(std::filesystem::exists(output)) << c.arguments;
     EXPECT_TRUE(isolab::testing::LeftoverTemporaries(output).empty()) << c.arguments;
   }
+  // An output folder that does not exist is refused before the spectra are computed.
+  const auto missing = RunIsolab("spectrum " + kBundled + " --ductility 2 -q -o " +
+                                     (output.parent_path() / "no_such_folder" / "x.csv").string(),
+                                 true);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.output.find("no_such_folder' does not exist"), std::string::npos)
+      << missing.output;
   // --plot without a file for the script to read.
   const auto no_output = RunIsolab("spectrum " + kBundled + " --plot", true);
   EXPECT_EQ(no_output.exit_code, 2);
