@@ -17,7 +17,7 @@ namespace isolab::cli {
 // The script's path beside the executable (the first candidate that exists; else the first).
 std::string PlotScriptPath(const std::string& script_name);
 
-// The directory for a --plot [DIR]: DIR when given, else the one holding `output_file` ("." for
+// The directory for a --plot[=DIR]: DIR when given, else the one holding `output_file` ("." for
 // a bare file name).
 std::string PlotDirectory(const std::string& requested, const std::string& output_file);
 

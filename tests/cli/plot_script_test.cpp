@@ -56,7 +56,7 @@ TEST(PlotScript, IsolatedBuildingRunWritesEveryPlot) {
                 result.string() + " --plot=" + (directory / "plots").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output.front(), '{');  // the script's messages stay off stdout
-  for (const char* name : {"hysteresis", "histories", "envelopes", "energy"}) {
+  for (const char* name : {"overview", "hysteresis", "histories", "envelopes", "energy"}) {
     ExpectPng(directory / "plots" / (std::string("five_story_") + name + ".png"));
   }
 }
