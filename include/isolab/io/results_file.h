@@ -29,6 +29,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
