@@ -239,7 +239,7 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
   command->add_option("--free-vibration", options.free_vibration,
                       "Free vibration after the excitation: auto (5 x the longest period; the "
-                      "default), a time (model unit), or 0");
+                      "default), a time in s, or 0");
   command
       ->add_option("--trial-displacement", options.trial_displacement,
                    "Isolator displacement (model length unit) for the isolated period printed "

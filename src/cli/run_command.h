@@ -22,7 +22,7 @@ struct RunOptions {
   std::optional<double> record_dt;  // the record's sampling step (s), for a single column
   std::optional<double> scale;
   std::optional<double> dt;                  // analysis step (model time unit)
-  std::string free_vibration;                // "auto" or a time (model unit); empty: the model's
+  std::string free_vibration;                // "auto" or a time (s); empty: the model's
   std::optional<double> trial_displacement;  // (model length) for the isolated period
   std::string output;  // .h5/.hdf5 or .csv; default: the model's output.file or <model stem>.h5
   bool fixed_base = false;
