@@ -115,6 +115,7 @@ struct Hdf5File::Impl {
   }
 
   void WithObject(const std::string& object, const std::function<void(hid_t)>& write) const {
+    if (object == "/") return write(file);  // a file's attributes are its root group's
     Handle handle(H5Oopen(file, object.c_str(), H5P_DEFAULT), H5Oclose);
     Check(handle.get(), "object " + object);
     write(handle.get());

@@ -13,9 +13,10 @@ using integrators::RowMatrix;
 // Rows of a row-major response matrix, copied whole.
 Series Matrix(std::string name, std::string units, std::vector<std::string> columns,
               const RowMatrix& matrix) {
-  return {std::move(name), std::move(units), std::move(columns), [&matrix](int row, double* out) {
-            std::copy_n(matrix.row(row).data(), matrix.cols(), out);
-          }};
+  return {
+      std::move(name), std::move(units), std::move(columns),
+      [&matrix](int row, double* out) { std::copy_n(matrix.row(row).data(), matrix.cols(), out); },
+      matrix.data()};
 }
 
 // One value per row.

@@ -17,6 +17,9 @@ struct Series {
   std::vector<std::string> columns;  // empty: a vector (one value per row)
   // Writes the width() values of output row `row` to `out`.
   std::function<void(int row, double* out)> fill;
+  // The rows themselves, row-major, when they are stored so (a response matrix): writers may
+  // read them from here instead of copying them through `fill`.
+  const double* rows = nullptr;
 
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };

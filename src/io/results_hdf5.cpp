@@ -27,11 +27,15 @@ void CreateGroups(Hdf5File& file, const std::vector<Series>& series) {
 // `buffer` is reused from series to series.
 void WriteSeries(Hdf5File& file, const Series& s, int rows, std::vector<double>* buffer) {
   const std::size_t width = s.width(), count = static_cast<std::size_t>(rows) * width;
-  if (buffer->size() < count) buffer->resize(count);
-  for (int r = 0; r < rows; ++r) s.fill(r, buffer->data() + r * width);
+  const double* values = s.rows;
+  if (values == nullptr) {
+    if (buffer->size() < count) buffer->resize(count);
+    for (int r = 0; r < rows; ++r) s.fill(r, buffer->data() + r * width);
+    values = buffer->data();
+  }
   std::vector<std::size_t> dims = {static_cast<std::size_t>(rows)};
   if (!s.columns.empty()) dims.push_back(width);
-  file.WriteDoubles(s.name, dims, std::span<const double>(buffer->data(), count), s.units);
+  file.WriteDoubles(s.name, dims, std::span<const double>(values, count), s.units);
   if (!s.columns.empty()) file.WriteStringsAttribute(s.name, "columns", s.columns);
 }
 
