@@ -4,6 +4,8 @@
     scripts/plot_result.py RESULT.h5 [-o DIR] [-q]
 
 writes, named after the result file's stem:
+    <stem>_overview.png    the isolator's loop and its displacement history, the free vibration
+                           after the excitation shaded (isolated models only)
     <stem>_hysteresis.png  isolator force against isolator displacement: total and each component
     <stem>_histories.png   displacement and absolute acceleration of the isolator (base) and roof
     <stem>_envelopes.png   peaks over height: displacement, story drift, absolute acceleration,
@@ -53,8 +55,7 @@ class Result:
                 self.isolator_force = g["force"][:]
                 self.force_unit = units_of(g["force"])
                 self.component_force = g["component_force"][:]
-                names = text(g.attrs.get("component_names", ""))
-                self.component_names = names.split(",") if names else []
+                self.component_names = [text(n) for n in g["component_force"].attrs["columns"]]
             self.stories = 0
             if "story" in f:
                 self.drift = f["story/drift"][:]
@@ -64,6 +65,8 @@ class Result:
             self.energy = {name: f["energy/" + name][:]
                            for name in ("input", "kinetic", "damping", "elastic", "hysteretic")}
             self.energy_unit = units_of(f["energy/input"])
+            self.excitation_end = float(f.attrs.get("excitation_end", self.time[-1]))
+            self.residual = float(f.attrs.get("residual_isolator_displacement", math.nan))
             self.title = os.path.basename(text(f.attrs.get("model_file", path)))
             record = text(f.attrs.get("record", ""))
             if record:
@@ -75,6 +78,34 @@ class Result:
         self.base_dof = 0 if (self.isolated and dofs == self.stories + 1 and self.stories) else None
         self.roof_dof = dofs - 1
         self.ground_acceleration = self.absolute_acceleration[:, 0] - self.relative_acceleration[:, 0]
+
+
+def plot_overview(plt, np, r, path):
+    """The isolator's loop beside its displacement history: the run at a glance."""
+    fig, (loop, history) = plt.subplots(1, 2, figsize=(11, 3.8),
+                                        gridspec_kw={"width_ratios": [1, 1.6]})
+    loop.plot(r.isolator_displacement, r.isolator_force, lw=0.7, color="C0")
+    loop.set_xlabel(f"isolator displacement [{r.length}]")
+    loop.set_ylabel(f"isolator force [{r.force_unit}]")
+    loop.set_title("isolator hysteresis", fontsize=10)
+    history.plot(r.time, r.isolator_displacement, lw=0.7, color="C0")
+    if r.excitation_end < r.time[-1]:
+        history.axvspan(r.excitation_end, r.time[-1], color="0.9", zorder=0,
+                        label="free vibration")
+    if not math.isnan(r.residual):
+        history.axhline(r.residual, color="C3", lw=0.8, ls="--",
+                        label=f"residual {r.residual:.3g} {r.length}")
+    history.legend(fontsize=8, loc="upper right")
+    history.set_xlabel(f"time [{r.time_unit}]")
+    history.set_ylabel(f"isolator displacement [{r.length}]")
+    history.set_title("isolator displacement", fontsize=10)
+    for ax in (loop, history):
+        ax.axhline(0, color="0.7", lw=0.5)
+        ax.tick_params(labelsize=8)
+    fig.suptitle(r.title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def plot_hysteresis(plt, np, r, path):
@@ -200,6 +231,7 @@ def main():
     r = Result(h5py, np, args.result)
     plots = []
     if r.isolated:
+        plots.append(("overview", plot_overview))
         plots.append(("hysteresis", plot_hysteresis))
     plots.append(("histories", plot_histories))
     if r.stories:

@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsundials-dev libsuitesparse-dev libyaml-cpp-dev libhdf5-dev
   libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  libpagmo-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-h5py
+  libpagmo-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-h5py python3-pandas
 )
 
 missing=()

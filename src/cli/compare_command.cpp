@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "free_vibration_option.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/study_file.h"
 #include "isolab/study/jobs.h"
@@ -109,7 +110,10 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
       ->check(CLI::PositiveNumber);
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command->add_flag("--plot", options.plot,
-                    "Bar charts of the summary in <output>/plots (scripts/plot_study.py)");
+                    "Bar charts of the summary in <output>/plots (plot_study.py)");
+  command->add_option("--free-vibration", options.free_vibration,
+                      "Free vibration after each record, where the residual displacement is "
+                      "read: auto (5 x the longest period; the default), a time in s, or 0");
 }
 
 int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
@@ -118,6 +122,9 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   std::string directory;
   try {
     study_file = io::LoadStudyFile(options.study);
+    if (!options.free_vibration.empty()) {
+      study_file.free_vibration = ParseFreeVibration(options.free_vibration, study_file.units);
+    }
     if (options.plot) CheckPlotScript("plot_study.py");  // before the runs, not after
     directory = OutputDirectory(options, study_file);
     MakeDirectory(directory);
@@ -167,6 +174,12 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
                      ? static_cast<double>(jobs.size()) / outcome.wall_seconds
                      : 0.0,
                  failed);
+    }
+    for (const study::JobResult& result : outcome.results) {
+      for (const std::string& warning : result.warnings) {
+        fmt::print(stderr, "isolab compare: warning: {}: {}\n",
+                   study::JobLabel(study_file, jobs[result.job]), warning);
+      }
     }
     WriteSummary(options, study_file, outcome.results, directory, out);
   }

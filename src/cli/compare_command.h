@@ -15,10 +15,11 @@ namespace isolab::cli {
 
 struct CompareOptions {
   std::string study;
-  std::string output;  // folder; default: the study's output.directory, else its file stem
-  int jobs = 0;        // threads without mpirun; 0: every hardware thread
-  bool quiet = false;  // no progress on stderr
-  bool plot = false;   // bar charts by scripts/plot_study.py after the summary
+  std::string output;          // folder; default: the study's output.directory, else its file stem
+  int jobs = 0;                // threads without mpirun; 0: every hardware thread
+  bool quiet = false;          // no progress on stderr
+  bool plot = false;           // bar charts by scripts/plot_study.py after the summary
+  std::string free_vibration;  // "auto" or a time (s) after each record; empty: the study's
 };
 
 void RegisterCompareCommand(CLI::App& app, CompareOptions& options);

@@ -62,7 +62,8 @@ Outcome Spawn(const std::string& python, const std::vector<std::string>& argumen
   std::cout.flush();
   std::fflush(stdout);
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, python.c_str(), &actions, nullptr, argv.data(), environ);
+  // posix_spawnp: a name without a slash ("python3.11") is looked up on PATH.
+  const int spawned = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(pipe_fds[1]);
   if (spawned != 0) {
@@ -105,7 +106,17 @@ std::string Tail(const std::string& text, std::size_t max_lines = 12) {
 }  // namespace
 
 std::string PlotScriptPath(const std::string& script_name) {
-  return (std::filesystem::path(ISOLAB_SOURCE_DIR) / "scripts" / script_name).string();
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path bin = error ? std::filesystem::path(".") : executable.parent_path();
+  const std::filesystem::path candidates[] = {
+      bin / ".." / "share" / "isolab" / "scripts" / script_name,  // installed
+      bin / "scripts" / script_name,                              // build tree
+  };
+  for (const auto& candidate : candidates) {
+    if (std::filesystem::exists(candidate, error)) return candidate.lexically_normal().string();
+  }
+  return candidates[0].lexically_normal().string();
 }
 
 std::string PlotDirectory(const std::string& requested, const std::string& output_file) {
@@ -117,8 +128,9 @@ std::string PlotDirectory(const std::string& requested, const std::string& outpu
 void CheckPlotScript(const std::string& script_name) {
   const std::string script = PlotScriptPath(script_name);
   if (!std::filesystem::exists(script)) {
-    throw InputError({"--plot"}, fmt::format("the plot script {} is missing (isolab looks for it "
-                                             "in the source tree it was built from)",
+    throw InputError({"--plot"}, fmt::format("the plot script {} is missing (isolab looks for "
+                                             "it in ../share/isolab/scripts and scripts beside "
+                                             "its executable; cmake --install puts it there)",
                                              script));
   }
   const std::string python = Python();

@@ -4,11 +4,15 @@
 #include <fmt/ostream.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "free_vibration_option.h"
+#include "isolab/core/errors.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
+#include "isolab/io/model_summary.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
@@ -21,22 +25,56 @@ nlohmann::json PeakJson(const io::Peak& peak) {
   return {{"value", peak.value}, {"time", peak.time}, {"index", peak.index}};
 }
 
+std::string Join(const std::vector<double>& values, std::size_t count, const char* format) {
+  std::string text;
+  for (std::size_t i = 0; i < std::min(count, values.size()); ++i) {
+    text += (i > 0 ? ", " : "") + fmt::format(fmt::runtime(format), values[i]);
+  }
+  return text;
+}
+
+// The record as applied and the model summary, before the run: what the engineer checks first.
+void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, std::ostream& out) {
+  const io::UnitSystem& u = model.units;
+  const io::ModelSummary& m = setup.summary;
+  const double g = u.Convert(1.0, "g", io::dimension::kAcceleration);
+  fmt::print(out, "== {} ==\n", model.path);
+  if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
+  if (!setup.record.path.empty()) {
+    const io::AppliedRecord& r = setup.record;
+    fmt::print(
+        out, "record: {} ({}, dt = {:g} s, in {} from {}), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
+        r.path, r.format, r.dt, r.units, r.units_source == "header" ? "its header" : r.units_source,
+        r.scale, r.pga / g, r.pga, io::DescribeUnits(u, io::dimension::kAcceleration));
+  }
+  const double tonnes = m.total_mass * u.SiFactor(io::dimension::kMass) / 1000.0;
+  fmt::print(out, "model: total weight {:.5g} {} ({:.5g} t)", m.total_weight, u.force(), tonnes);
+  if (!m.fixed_base_periods.empty()) {
+    fmt::print(out, "; fixed-base periods {} {}{}", Join(m.fixed_base_periods, 3, "{:.4g}"),
+               u.time(), m.fixed_base_periods.size() > 3 ? ", ..." : "");
+  }
+  if (m.isolated) {
+    fmt::print(out, "; {} {:.4g} {} at {:g} {} (secant stiffness {:.4g} {})",
+               setup.layout.stories.empty() ? "period" : "isolated period", m.isolated_period,
+               u.time(), m.trial_displacement, u.length(), m.secant_stiffness,
+               io::DescribeUnits(u, io::dimension::kStiffness));
+  }
+  fmt::print(out,
+             "\ndt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
+             "vibration), {} dofs\n\n",
+             setup.grid.dt, u.time(), setup.grid.steps, setup.excitation_end, u.time(),
+             setup.free_vibration, u.time(), setup.structure.dofs());
+}
+
 void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysis,
-                  const io::AnalysisSetup& setup,
-                  const io::ResponsePeaks& peaks, const integrators::RunSummary& summary,
+                  const io::AnalysisSetup& setup, const io::ResponsePeaks& peaks,
+                  const integrators::RunSummary& summary,
                   const integrators::ResponseHistory& response, const std::string& output,
                   std::ostream& out) {
   const io::UnitSystem& u = model.units;
   const std::string length = u.length(), force = u.force(), time = u.time();
   const std::string acceleration = io::DescribeUnits(u, io::dimension::kAcceleration);
   const double g = u.Convert(1.0, "g", io::dimension::kAcceleration);
-  fmt::print(out, "== {} ==\n", model.path);
-  if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
-  if (!setup.record_path.empty()) {
-    fmt::print(out, "record: {} (scale {:g})\n", setup.record_path, setup.scale);
-  }
-  fmt::print(out, "dt = {:g} {}, {} steps, {} dofs\n\n", setup.grid.dt, time, setup.grid.steps,
-             setup.structure.dofs());
   const auto line = [&](const char* what, const io::Peak& peak, const std::string& unit,
                         const std::string& extra = "") {
     fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {}{}\n", what, peak.value, unit,
@@ -57,6 +95,26 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
   }
   line("peak roof absolute acceleration", peaks.roof_absolute_acceleration, acceleration,
        fmt::format(" ({:.3g} g)", peaks.roof_absolute_acceleration.value / g));
+  if (setup.layout.isolation >= 0) {
+    fmt::print(out, "{:<34} {:>12.5g} {:<8} ", "residual isolator displacement",
+               peaks.residual_isolator_displacement, length);
+    if (setup.free_vibration > 0.0) {
+      fmt::print(out, "after {:.4g} {} of free vibration (still swinging +-{:.3g} {})",
+                 setup.free_vibration, time, peaks.residual_oscillation, length);
+    }
+    fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
+               peaks.isolator_displacement_at_excitation_end, length);
+    const io::ModelSummary& m = setup.summary;
+    if (m.isolated && peaks.isolator_displacement.value > 0.0) {
+      const double k = io::SecantStiffness(model.isolation, peaks.isolator_displacement.value);
+      if (k > 0.0) {
+        fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
+                   "period at the peak displacement",
+                   2.0 * std::numbers::pi * std::sqrt(m.total_mass / k), time, k,
+                   io::DescribeUnits(u, io::dimension::kStiffness));
+      }
+    }
+  }
   if (response.rows_written > 0) {
     const integrators::Energies& e = response.energies[response.rows_written - 1];
     const double input = e.input != 0.0 ? e.input : 1.0;
@@ -78,26 +136,43 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
     fmt::print(out,
                "Newton: {} iterations (at most {} in a step), {} factorisations, {} step cuts; "
                "{:.3f} s\n",
-               summary.newton_iterations, summary.max_iterations_in_a_step,
-               summary.factorisations, summary.step_cuts, summary.wall_seconds);
+               summary.newton_iterations, summary.max_iterations_in_a_step, summary.factorisations,
+               summary.step_cuts, summary.wall_seconds);
   }
   fmt::print(out, "results: {}\n", output);
 }
 
 nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection& analysis,
-                           const io::AnalysisSetup& setup,
-                           const io::ResponsePeaks& peaks, const integrators::RunSummary& summary,
+                           const io::AnalysisSetup& setup, const io::ResponsePeaks& peaks,
+                           const integrators::RunSummary& summary,
                            const integrators::ResponseHistory& response,
-                           const std::string& output) {
+                           const std::vector<std::string>& warnings, const std::string& output) {
+  const io::AppliedRecord& r = setup.record;
+  const io::ModelSummary& m = setup.summary;
+  const double g = model.units.Convert(1.0, "g", io::dimension::kAcceleration);
   nlohmann::json json;
   json["model"] = model.path;
-  json["record"] = setup.record_path;
-  json["scale"] = setup.scale;
+  json["record"] = r.path;
+  json["scale"] = r.scale;
+  json["record_units"] = r.units;
+  json["record_units_source"] = r.units_source;
+  json["record_dt"] = r.dt;
+  json["pga"] = r.pga;
+  json["pga_g"] = r.pga / g;
   json["dt"] = setup.grid.dt;
   json["steps"] = setup.grid.steps;
+  json["excitation_end"] = setup.excitation_end;
+  json["free_vibration"] = setup.free_vibration;
   json["units"] = {{"force", model.units.force()},
                    {"length", model.units.length()},
                    {"time", model.units.time()}};
+  json["model_summary"] = {{"total_mass", m.total_mass},
+                           {"total_weight", m.total_weight},
+                           {"fixed_base_periods", m.fixed_base_periods},
+                           {"trial_displacement", m.trial_displacement},
+                           {"secant_stiffness", m.secant_stiffness},
+                           {"isolated_period", m.isolated_period}};
+  json["warnings"] = warnings;
   json["termination"] = summary.ok() ? "completed" : "failed";
   json["message"] = summary.message;
   json["peaks"] = {{"isolator_displacement", PeakJson(peaks.isolator_displacement)},
@@ -107,6 +182,11 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection
                    {"roof_absolute_acceleration", PeakJson(peaks.roof_absolute_acceleration)},
                    {"story_drift", PeakJson(peaks.story_drift)},
                    {"story_drift_ratio", peaks.story_drift_ratio}};
+  if (setup.layout.isolation >= 0) {
+    json["residual_isolator_displacement"] = peaks.residual_isolator_displacement;
+    json["residual_oscillation"] = peaks.residual_oscillation;
+    json["isolator_displacement_at_excitation_end"] = peaks.isolator_displacement_at_excitation_end;
+  }
   if (response.rows_written > 0) {
     const integrators::Energies& e = response.energies[response.rows_written - 1];
     json["energy"] = {{"input", e.input},
@@ -134,6 +214,10 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection
   return json;
 }
 
+void PrintWarnings(const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings) fmt::print(stderr, "isolab: warning: {}\n", warning);
+}
+
 }  // namespace
 
 void RegisterRunCommand(CLI::App& app, RunOptions& options) {
@@ -142,36 +226,74 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   command->add_option("model", options.model, "Model file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--record", options.record, "Ground-motion record replacing the model's");
+  command->add_option("--record", options.record,
+                      "Ground-motion record replacing the model's (the model's units, dt and "
+                      "scale do not apply to it)");
+  command->add_option("--units", options.units,
+                      "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...); must "
+                      "agree with its header when the header names one");
+  command->add_option("--record-dt", options.record_dt,
+                      "The record's sampling step (s), for a single-column record; must agree "
+                      "with the file's when it gives one");
   command->add_option("--scale", options.scale, "Scale factor of the ground motion");
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
-  command->add_option("-o,--output", options.output, "HDF5 results file");
+  command->add_option("--free-vibration", options.free_vibration,
+                      "Free vibration after the excitation: auto (5 x the longest period; the "
+                      "default), a time in s, or 0");
+  command
+      ->add_option("--trial-displacement", options.trial_displacement,
+                   "Isolator displacement (model length unit) for the isolated period printed "
+                   "before the run (default 0.1 m)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("-o,--output", options.output,
+                      "Results file: .h5/.hdf5 (HDF5) or .csv (time histories)");
   command->add_flag("--fixed-base", options.fixed_base, "Analyse the building without isolation");
-  command->add_option("--integrator", options.integrator,
-                      "newmark or ida (replaces the model's analysis.integrator)")
+  command
+      ->add_option("--integrator", options.integrator,
+                   "newmark or ida (replaces the model's analysis.integrator)")
       ->check(CLI::IsMember({"newmark", "ida"}));
   command->add_option("--rtol", options.rtol, "IDA relative tolerance (replaces analysis.ida.rtol)")
       ->check(CLI::Range(1e-14, 0.09));
   command->add_option("--atol", options.atol, "IDA absolute tolerance (replaces analysis.ida.atol)")
       ->check(CLI::PositiveNumber);
   command->add_flag("--json", options.json, "Print the summary as JSON");
-  command->add_option("--plot", options.plot,
-                      "After writing, plot with scripts/plot_result.py into DIR (default: beside "
-                      "the results file)")
-      ->expected(0, 1);
+  command->add_flag("--plot{}", options.plot,
+                    "After writing, plot with plot_result.py; --plot=DIR puts the PNGs in DIR "
+                    "(default: beside the results file)");
 }
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
-  if (options.plot) CheckPlotScript("plot_result.py");  // before the run, not after it
   const io::ModelFile model = io::LoadModelFile(options.model);
-  const io::AnalysisSetup setup =
-      io::PrepareAnalysis(model, {options.record, options.scale, options.dt, options.fixed_base});
   std::string output = options.output;
   if (output.empty()) {
     output = !model.output_file.empty()
                  ? model.output_file
                  : std::filesystem::path(options.model).stem().string() + ".h5";
   }
+  // Everything that can be refused is refused before the run, not after it.
+  io::CheckResultsPath(output);
+  if (options.plot) {
+    if (std::filesystem::path(output).extension() == ".csv") {
+      throw InputError({"--plot"},
+                       "the plot script reads HDF5 results: write them with -o "
+                       "OUT.h5");
+    }
+    CheckPlotScript("plot_result.py");
+  }
+  io::RunOverrides overrides;
+  overrides.record = options.record;
+  overrides.record_units = options.units;
+  if (options.record_dt) {
+    overrides.record_dt = model.units.Convert(*options.record_dt, "s", io::dimension::kTime);
+  }
+  overrides.scale = options.scale;
+  overrides.dt = options.dt;
+  overrides.fixed_base = options.fixed_base;
+  overrides.trial_displacement = options.trial_displacement;
+  if (!options.free_vibration.empty()) {
+    overrides.free_vibration = ParseFreeVibration(options.free_vibration, model.units);
+  }
+  const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
 
   io::AnalysisSection analysis = model.analysis;
   if (options.integrator == "ida") analysis.integrator = io::AnalysisSection::Integrator::kIda;
@@ -181,16 +303,25 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
   if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
 
+  if (!options.json) PrintPreamble(model, setup, out);
+  out.flush();
+  PrintWarnings(setup.summary.warnings);
   integrators::ResponseHistory response;
   const integrators::RunSummary summary = io::RunAnalysis(analysis, setup, &response);
-  io::WriteResultsFile(output,
-                       {&model, &setup, &analysis, &response, &summary, ISOLAB_VERSION});
   const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
+  const io::RunDescription run{&model,   &setup, &analysis,     &response,
+                               &summary, &peaks, ISOLAB_VERSION};
+  io::WriteResultsFile(output, run);
+  const std::vector<std::string> warnings = io::RunWarnings(run);
   if (options.json) {
-    out << SummaryJson(model, analysis, setup, peaks, summary, response, output).dump(2) << "\n";
+    out << SummaryJson(model, analysis, setup, peaks, summary, response, warnings, output).dump(2)
+        << "\n";
   } else {
     PrintSummary(model, analysis, setup, peaks, summary, response, output, out);
   }
+  // After the run: what the response itself shows (the model's warnings were printed before).
+  PrintWarnings(
+      {warnings.begin() + static_cast<long>(setup.summary.warnings.size()), warnings.end()});
   if (options.plot) {
     RunPlotScript("plot_result.py", {output, "-o", PlotDirectory(*options.plot, output)}, false);
   }

@@ -1,5 +1,8 @@
-// `isolab run`: a time-history analysis of a model file's structure under its excitation, with a
-// summary of peaks, energy balance and integrator statistics, and the full response in HDF5.
+// `isolab run`: a time-history analysis of a model file's structure under its excitation. Before
+// the run it prints the record as applied (units, scale, PGA) and the model summary (weight,
+// periods) with warnings about implausible values; after it, the peaks, the residual isolator
+// displacement after free vibration, the energy balance and integrator statistics; the full
+// response goes to HDF5 or CSV (results_file.h).
 #pragma once
 
 #include <optional>
@@ -14,17 +17,21 @@ namespace isolab::cli {
 
 struct RunOptions {
   std::string model;
-  std::string record;  // overrides the model's ground motion file
+  std::string record;  // replaces the model's ground motion file (and its units, dt and scale)
+  std::string units;   // the record's acceleration unit; must agree with its header if it has one
+  std::optional<double> record_dt;  // the record's sampling step (s), for a single column
   std::optional<double> scale;
-  std::optional<double> dt;
-  std::string output;  // HDF5 path; default: the model's output.file or <model stem>.h5
+  std::optional<double> dt;                  // analysis step (model time unit)
+  std::string free_vibration;                // "auto" or a time (s); empty: the model's
+  std::optional<double> trial_displacement;  // (model length) for the isolated period
+  std::string output;  // .h5/.hdf5 or .csv; default: the model's output.file or <model stem>.h5
   bool fixed_base = false;
-  std::string integrator;        // "newmark" or "ida"; empty: the model's analysis.integrator
-  std::optional<double> rtol;    // IDA relative tolerance, overriding analysis.ida.rtol
-  std::optional<double> atol;    // IDA absolute tolerance, overriding analysis.ida.atol
+  std::string integrator;      // "newmark" or "ida"; empty: the model's analysis.integrator
+  std::optional<double> rtol;  // IDA relative tolerance, overriding analysis.ida.rtol
+  std::optional<double> atol;  // IDA absolute tolerance, overriding analysis.ida.atol
   bool json = false;
-  std::optional<std::string> plot;  // --plot [DIR]: PNGs by scripts/plot_result.py (default DIR:
-                                    // beside the results file)
+  std::optional<std::string> plot;  // --plot[=DIR]: PNGs by plot_result.py (default DIR: beside
+                                    // the results file); needs HDF5 results
 };
 
 void RegisterRunCommand(CLI::App& app, RunOptions& options);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
 #include "isolab/io/record.h"
 #include "isolab/io/spectrum_file.h"
 #include "isolab/io/units.h"
@@ -138,6 +139,7 @@ Inputs ParseInputs(const SpectrumOptions& options) {
                                            ".csv, .h5 or .hdf5",
                                            output));
     }
+    io::CheckOutputPath(output);  // before a long constant-ductility scan, not after it
   }
   if (options.plot && options.outputs.empty()) {
     throw InputError({"--plot"},
@@ -163,8 +165,10 @@ nlohmann::json SpectrumJson(const io::SpectrumDescription& s, const std::vector<
                             double seconds) {
   const spectra::ElasticSpectrum& e = *s.elastic;
   nlohmann::json json;
-  json["record"] = s.record;
-  json["scale"] = s.scale;
+  json["record"] = s.record.path;
+  json["scale"] = s.record.scale;
+  json["record_units"] = s.record.units;
+  json["pga_g"] = s.record.pga / s.gravity;
   json["units"] = {{"length", s.length_unit}, {"time", "s"}, {"g", s.gravity}};
   json["periods"] = e.periods;
   json["elastic"] = nlohmann::json::array();
@@ -283,18 +287,18 @@ void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
                       "into sub-steps (default 100; 1: at the record's samples, as Chopra)");
   command->add_option("--scale", options.scale, "Scale factor on the record");
   command->add_option("--units", options.units,
-                      "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...), "
-                      "overriding its header");
-  command->add_option("--dt", options.dt, "Sampling step of a single-column record (s)");
+                      "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...); must "
+                      "agree with its header when the header names one");
+  command->add_option("--dt", options.dt,
+                      "Sampling step of a single-column record (s); must agree with the file's "
+                      "when it gives one");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of the spectra (m, cm, mm, in, ft; default m)");
   command->add_option("-o,--output", options.outputs,
                       "Write the spectra: OUT.csv and/or OUT.h5 (repeat -o for both)");
-  command
-      ->add_option("--plot", options.plot,
-                   "After writing, plot with scripts/plot_spectrum.py into DIR (default: "
-                   "beside the first output)")
-      ->expected(0, 1);
+  command->add_flag("--plot{}", options.plot,
+                    "After writing, plot with plot_spectrum.py; --plot=DIR puts the PNGs in DIR "
+                    "(default: beside the first output)");
   command->add_flag("--json", options.json, "Print the spectra as JSON");
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
 }
@@ -313,7 +317,8 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   }
   if (options.plot) CheckPlotScript(kPlotScript);
 
-  const io::Record record = io::ReadRecord(options.record, {options.units, options.dt.value_or(0)});
+  const io::Record record =
+      io::ReadRecord(options.record, {options.units, options.dt.value_or(0), "--units", "--dt"});
   integrators::SampledHistory ground;
   ground.dt = record.dt;
   try {
@@ -359,8 +364,14 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   io::SpectrumDescription description;
   description.elastic = &elastic;
   description.constant_ductility = constant_ductility ? &*constant_ductility : nullptr;
-  description.record = options.record;
-  description.scale = options.scale;
+  description.record = {options.record,
+                        record.format,
+                        record.units,
+                        record.units_source,
+                        record.dt,
+                        options.scale,
+                        record.Peak() * std::abs(units->Convert(options.scale, record.units,
+                                                                io::dimension::kAcceleration))};
   description.length_unit = options.length_unit;
   description.gravity = gravity;
   description.version = ISOLAB_VERSION;
@@ -371,8 +382,9 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   if (options.json) {
     out << SpectrumJson(description, options.outputs, seconds).dump(2) << "\n";
   } else {
-    fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {}; scale {:g}\n", options.record,
-               record.format, record.values.size(), record.dt, record.units, options.scale);
+    fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {} from {}; scale {:g}: PGA {:.4g} g\n",
+               options.record, record.format, record.values.size(), record.dt, record.units,
+               record.units_source, options.scale, description.record.pga / gravity);
     PrintTables(description, out);
     for (const std::string& output : options.outputs) fmt::print(out, "spectra: {}\n", output);
     fmt::print(out, "{:.2f} s\n", seconds);

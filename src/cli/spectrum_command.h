@@ -22,11 +22,11 @@ struct SpectrumOptions {
   double alpha = 0.0;                   // post-yield stiffness ratio of the inelastic SDOF
   int points_per_period = 100;          // elastic peak sought at >= this many points a period
   double scale = 1.0;                   // on the record's values
-  std::string units;                    // the record's acceleration unit (overrides its header)
+  std::string units;                    // the record's acceleration unit (agrees with its header)
   std::optional<double> dt;             // sampling step of a single-column record (s)
   std::string length_unit = "m";        // of the spectra's lengths; time in s
   std::vector<std::string> outputs;     // .csv and/or .h5 files
-  std::optional<std::string> plot;      // --plot [DIR]: PNGs by scripts/plot_spectrum.py
+  std::optional<std::string> plot;      // --plot[=DIR]: PNGs by plot_spectrum.py
   bool json = false;
   bool quiet = false;
 };

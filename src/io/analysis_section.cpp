@@ -80,11 +80,23 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
   return section;
 }
 
+FreeVibration ReadFreeVibration(const YamlReader& reader, const YAML::Node& node,
+                                const std::string& path, const UnitSystem& units) {
+  if (node.IsScalar() && node.Scalar() == "auto") return {};
+  const double duration = reader.ReadQuantity(node, path, dimension::kTime, units);
+  if (!(duration >= 0.0)) {
+    reader.Fail(node, path,
+                fmt::format("{:g} (must be auto, or a time >= 0; 0 for none)", duration));
+  }
+  return {false, duration};
+}
+
 AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
                              const UnitSystem& units) {
   const std::string path = "analysis";
   reader.RequireMap(node, path);
-  reader.CheckKeys(node, path, {"dt", "duration", "integrator", "newmark", "ida"});
+  reader.CheckKeys(node, path,
+                   {"dt", "duration", "free_vibration", "integrator", "newmark", "ida"});
   AnalysisSection section;
   if (node["dt"]) {
     section.dt = reader.ReadQuantity(node["dt"], "analysis.dt", dimension::kTime, units);
@@ -98,6 +110,15 @@ AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
       reader.Fail(node["duration"], "analysis.duration",
                   fmt::format("{:g} (must be > 0)", section.duration));
     }
+  }
+  if (node["free_vibration"]) {
+    const YAML::Node free = node["free_vibration"];
+    if (node["duration"]) {
+      reader.Fail(free, "analysis.free_vibration",
+                  "give duration (the whole run) or free_vibration (after the excitation), not "
+                  "both");
+    }
+    section.free_vibration = ReadFreeVibration(reader, free, "analysis.free_vibration", units);
   }
   if (node["integrator"]) {
     const std::string integrator = reader.ReadString(node["integrator"], "analysis.integrator");

@@ -4,14 +4,17 @@
 #include <hdf5.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <functional>
-#include <vector>
+#include <optional>
+#include <type_traits>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
 
 namespace isolab::io {
 namespace {
+
+static_assert(std::is_same_v<hid_t, std::int64_t>, "Rows keeps a hid_t as std::int64_t");
 
 // Closes an HDF5 identifier with its matching call at the end of a scope.
 class Handle {
@@ -23,37 +26,47 @@ class Handle {
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
   hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
 
  private:
   hid_t id_;
   herr_t (*close_)(hid_t);
 };
 
-std::vector<hsize_t> Dimensions(std::span<const std::size_t> dims) {
-  return std::vector<hsize_t>(dims.begin(), dims.end());
-}
-
-std::size_t Product(std::span<const std::size_t> dims) {
+std::size_t Product(const std::vector<std::size_t>& dims) {
   std::size_t n = 1;
   for (const std::size_t d : dims) n *= d;
   return n;
 }
 
+// Variable-length UTF-8 strings: h5py reads them as str, not bytes.
+hid_t Utf8StringType() {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  if (type >= 0 && (H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0)) {
+    H5Tclose(type);
+    return -1;
+  }
+  return type;
+}
+
+std::vector<const char*> Pointers(std::span<const std::string> values) {
+  std::vector<const char*> pointers;
+  pointers.reserve(values.size());
+  for (const std::string& value : values) pointers.push_back(value.c_str());
+  return pointers;
+}
+
 }  // namespace
 
 struct Hdf5File::Impl {
-  std::string path;
-  std::string temporary;
+  std::optional<AtomicFile> output;
   hid_t file = -1;
-  hid_t file_create = -1;    // track-times setting of the root group
-  hid_t object_create = -1;  // datasets
-  hid_t group_create = -1;   // groups
+  hid_t dataset_create = -1;  // no timestamps
+  hid_t group_create = -1;
   H5E_auto2_t saved_handler = nullptr;
   void* saved_handler_data = nullptr;
 
   [[noreturn]] void Fail(const std::string& what) const {
-    throw InputError({path}, fmt::format("cannot write ({})", what));
+    throw InputError({output->path()}, fmt::format("cannot write ({})", what));
   }
   void Check(herr_t status, const std::string& what) const {
     if (status < 0) Fail(what);
@@ -62,19 +75,19 @@ struct Hdf5File::Impl {
     if (id < 0) Fail(what);
   }
 
-  hid_t Space(std::span<const std::size_t> dims) const {
+  hid_t Space(const std::vector<std::size_t>& dims) const {
     if (dims.empty()) return H5Screate(H5S_SCALAR);
-    const std::vector<hsize_t> d = Dimensions(dims);
+    const std::vector<hsize_t> d(dims.begin(), dims.end());
     return H5Screate_simple(static_cast<int>(d.size()), d.data(), nullptr);
   }
 
-  void Write(const std::string& name, std::span<const std::size_t> dims, hid_t type,
+  void Write(const std::string& name, const std::vector<std::size_t>& dims, hid_t type,
              const void* data, std::size_t count, const std::string& units) const {
     if (Product(dims) != count) Fail(fmt::format("{}: {} values for its dimensions", name, count));
     Handle space(Space(dims), H5Sclose);
     Check(space.get(), "space of " + name);
     Handle dataset(
-        H5Dcreate2(file, name.c_str(), type, space.get(), H5P_DEFAULT, object_create, H5P_DEFAULT),
+        H5Dcreate2(file, name.c_str(), type, space.get(), H5P_DEFAULT, dataset_create, H5P_DEFAULT),
         H5Dclose);
     Check(dataset.get(), "dataset " + name);
     if (count > 0) {
@@ -83,27 +96,33 @@ struct Hdf5File::Impl {
     if (!units.empty()) WriteStringAttribute(dataset.get(), "units", units);
   }
 
-  void WriteStringAttribute(hid_t object, const std::string& name, const std::string& value) const {
-    Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-    Check(type.get(), "string type");
-    Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
-    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Handle attribute(
-        H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-        H5Aclose);
+  void WriteAttributeData(hid_t object, const std::string& name, hid_t type,
+                          const std::vector<std::size_t>& dims, const void* data) const {
+    // HDF5 refuses zero-sized attributes: an empty array is a null dataspace.
+    Handle space(Product(dims) == 0 ? H5Screate(H5S_NULL) : Space(dims), H5Sclose);
+    Check(space.get(), "space of attribute " + name);
+    Handle attribute(H5Acreate2(object, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                     H5Aclose);
     Check(attribute.get(), "attribute " + name);
-    Check(H5Awrite(attribute.get(), type.get(), value.empty() ? "" : value.c_str()),
-          "attribute " + name);
+    if (Product(dims) > 0) Check(H5Awrite(attribute.get(), type, data), "attribute " + name);
+  }
+
+  void WriteStringAttribute(hid_t object, const std::string& name, const std::string& value) const {
+    Handle type(Utf8StringType(), H5Tclose);
+    Check(type.get(), "string type");
+    const char* pointer = value.c_str();
+    WriteAttributeData(object, name, type.get(), {}, &pointer);
   }
 
   void WithObject(const std::string& object, const std::function<void(hid_t)>& write) const {
+    if (object == "/") return write(file);  // a file's attributes are its root group's
     Handle handle(H5Oopen(file, object.c_str(), H5P_DEFAULT), H5Oclose);
     Check(handle.get(), "object " + object);
     write(handle.get());
   }
 
   void Close() {
-    for (hid_t* plist : {&file_create, &object_create, &group_create}) {
+    for (hid_t* plist : {&dataset_create, &group_create}) {
       if (*plist >= 0) H5Pclose(*plist);
       *plist = -1;
     }
@@ -112,41 +131,39 @@ struct Hdf5File::Impl {
   }
 };
 
-Hdf5File::Hdf5File(std::string path, bool reproducible) : impl_(std::make_unique<Impl>()) {
+Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
-  s.path = std::move(path);
-  s.temporary = s.path + ".tmp";
-  // HDF5 prints its error stack by default; errors here are reported through return codes.
+  s.output.emplace(std::move(path));
+  // HDF5 prints its error stack by default; errors here are reported through return codes. (The
+  // setting is per thread in the thread-safe library Debian ships.)
   H5Eget_auto2(H5E_DEFAULT, &s.saved_handler, &s.saved_handler_data);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  s.file_create = H5Pcreate(H5P_FILE_CREATE);
-  s.object_create = H5Pcreate(H5P_DATASET_CREATE);
-  s.group_create = H5Pcreate(H5P_GROUP_CREATE);
-  if (s.file_create < 0 || s.object_create < 0 || s.group_create < 0) {
-    s.Close();
-    H5Eset_auto2(H5E_DEFAULT, s.saved_handler, s.saved_handler_data);
-    s.Fail("property lists");
-  }
-  if (reproducible) {
-    for (const hid_t plist : {s.file_create, s.object_create, s.group_create}) {
-      H5Pset_obj_track_times(plist, false);
+  try {
+    Handle file_create(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+    Handle file_access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    s.dataset_create = H5Pcreate(H5P_DATASET_CREATE);
+    s.group_create = H5Pcreate(H5P_GROUP_CREATE);
+    for (const hid_t plist :
+         {file_create.get(), file_access.get(), s.dataset_create, s.group_create}) {
+      s.Check(plist, "property lists");
     }
-  }
-  s.file = H5Fcreate(s.temporary.c_str(), H5F_ACC_TRUNC, s.file_create, H5P_DEFAULT);
-  if (s.file < 0) {
+    for (const hid_t plist : {file_create.get(), s.dataset_create, s.group_create}) {
+      s.Check(H5Pset_obj_track_times(plist, false), "property lists");
+    }
+    // Closing with objects still open is an error (Commit's check), not a silent deferral.
+    s.Check(H5Pset_fclose_degree(file_access.get(), H5F_CLOSE_SEMI), "property lists");
+    s.file = H5Fcreate(s.output->temporary_path().c_str(), H5F_ACC_TRUNC, file_create.get(),
+                       file_access.get());
+    s.Check(s.file, "cannot create the file");
+  } catch (...) {
     s.Close();
     H5Eset_auto2(H5E_DEFAULT, s.saved_handler, s.saved_handler_data);
-    s.Fail("cannot create the file");
+    throw;
   }
 }
 
 Hdf5File::~Hdf5File() {
-  const bool committed = impl_->file < 0;
   impl_->Close();
-  if (!committed) {
-    std::error_code ignored;
-    std::filesystem::remove(impl_->temporary, ignored);
-  }
   H5Eset_auto2(H5E_DEFAULT, impl_->saved_handler, impl_->saved_handler_data);
 }
 
@@ -156,31 +173,34 @@ void Hdf5File::CreateGroup(const std::string& name) {
   impl_->Check(group.get(), "group " + name);
 }
 
-void Hdf5File::WriteDoubles(const std::string& name, std::span<const std::size_t> dims,
+void Hdf5File::WriteDoubles(const std::string& name, const std::vector<std::size_t>& dims,
                             std::span<const double> data, const std::string& units) {
   impl_->Write(name, dims, H5T_NATIVE_DOUBLE, data.data(), data.size(), units);
 }
 
-void Hdf5File::WriteIntegers(const std::string& name, std::span<const std::size_t> dims,
-                             std::span<const std::int32_t> data) {
-  impl_->Write(name, dims, H5T_NATIVE_INT32, data.data(), data.size(), "");
+void Hdf5File::WriteIntegers(const std::string& name, const std::vector<std::size_t>& dims,
+                             std::span<const std::int64_t> data, const std::string& units) {
+  impl_->Write(name, dims, H5T_NATIVE_INT64, data.data(), data.size(), units);
 }
 
-void Hdf5File::WriteStrings(const std::string& name, std::span<const std::size_t> dims,
+void Hdf5File::WriteStrings(const std::string& name, const std::vector<std::size_t>& dims,
                             std::span<const std::string> values) {
-  std::size_t width = 1;
-  for (const std::string& value : values) width = std::max(width, value.size());
-  // Padded with NULs rather than NUL-terminated, so a value as long as the field keeps its last
-  // character.
-  std::vector<char> buffer(width * values.size(), '\0');
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    std::copy(values[i].begin(), values[i].end(), buffer.data() + i * width);
-  }
+  Handle type(Utf8StringType(), H5Tclose);
+  impl_->Check(type.get(), "string type");
+  const std::vector<const char*> pointers = Pointers(values);
+  impl_->Write(name, dims, type.get(), pointers.data(), pointers.size(), "");
+}
+
+void Hdf5File::WriteText(const std::string& name, const std::string& value) {
+  // Fixed length, UTF-8: one string needs no global heap (much cheaper to write than a
+  // variable-length one), and h5py's .asstr() reads either.
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   impl_->Check(type.get(), "string type");
-  impl_->Check(H5Tset_size(type.get(), width), "string size");
+  impl_->Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
+  impl_->Check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string encoding");
   impl_->Check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "string padding");
-  impl_->Write(name, dims, type.get(), buffer.data(), values.size(), "");
+  const std::string padded = value.empty() ? std::string(1, '\0') : value;
+  impl_->Write(name, {}, type.get(), padded.data(), 1, "");
 }
 
 void Hdf5File::WriteAttribute(const std::string& object, const std::string& name,
@@ -190,31 +210,113 @@ void Hdf5File::WriteAttribute(const std::string& object, const std::string& name
 
 void Hdf5File::WriteAttribute(const std::string& object, const std::string& name, double value) {
   impl_->WithObject(object, [&](hid_t id) {
-    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Handle attribute(
-        H5Acreate2(id, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-        H5Aclose);
-    impl_->Check(attribute.get(), "attribute " + name);
-    impl_->Check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &value), "attribute " + name);
+    impl_->WriteAttributeData(id, name, H5T_NATIVE_DOUBLE, {}, &value);
   });
+}
+
+void Hdf5File::WriteIntegerAttribute(const std::string& object, const std::string& name,
+                                     std::int64_t value) {
+  impl_->WithObject(
+      object, [&](hid_t id) { impl_->WriteAttributeData(id, name, H5T_NATIVE_INT64, {}, &value); });
+}
+
+void Hdf5File::WriteStringsAttribute(const std::string& object, const std::string& name,
+                                     std::span<const std::string> values) {
+  impl_->WithObject(object, [&](hid_t id) {
+    Handle type(Utf8StringType(), H5Tclose);
+    impl_->Check(type.get(), "string type");
+    const std::vector<const char*> pointers = Pointers(values);
+    impl_->WriteAttributeData(id, name, type.get(), {values.size()}, pointers.data());
+  });
+}
+
+void Hdf5File::WriteDoublesAttribute(const std::string& object, const std::string& name,
+                                     std::span<const double> values) {
+  impl_->WithObject(object, [&](hid_t id) {
+    impl_->WriteAttributeData(id, name, H5T_NATIVE_DOUBLE, {values.size()}, values.data());
+  });
+}
+
+Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns,
+                                    const std::string& units, std::size_t expected_rows) {
+  const Impl& s = *impl_;
+  const std::size_t width = std::max<std::size_t>(columns, 1);
+  // Chunks of at most 1 MiB (HDF5's default chunk cache) and no longer than the history expected.
+  const std::size_t chunk_rows =
+      std::max<std::size_t>(1, std::min(expected_rows, (std::size_t{1} << 17) / width));
+  const int rank = columns == 0 ? 1 : 2;
+  const hsize_t initial[2] = {0, columns};
+  const hsize_t maximum[2] = {H5S_UNLIMITED, columns};
+  const hsize_t chunk[2] = {chunk_rows, columns};
+  Handle space(H5Screate_simple(rank, initial, maximum), H5Sclose);
+  s.Check(space.get(), "space of " + name);
+  Handle create(H5Pcopy(s.dataset_create), H5Pclose);
+  s.Check(create.get(), "property list of " + name);
+  s.Check(H5Pset_chunk(create.get(), rank, chunk), "chunks of " + name);
+  const hid_t dataset = H5Dcreate2(s.file, name.c_str(), H5T_NATIVE_DOUBLE, space.get(),
+                                   H5P_DEFAULT, create.get(), H5P_DEFAULT);
+  s.Check(dataset, "dataset " + name);
+  Rows rows(impl_.get(), dataset, name, columns);
+  if (!units.empty()) s.WriteStringAttribute(dataset, "units", units);
+  return rows;
 }
 
 void Hdf5File::Commit() {
   Impl& s = *impl_;
+  // Only the file itself may be open: an open dataset would keep the file from closing.
+  if (H5Fget_obj_count(s.file, H5F_OBJ_ALL | H5F_OBJ_LOCAL) > 1) {
+    s.Fail("objects still open at commit (a Rows outlived its writer)");
+  }
+  for (hid_t* plist : {&s.dataset_create, &s.group_create}) {
+    H5Pclose(*plist);
+    *plist = -1;
+  }
   const herr_t status = H5Fclose(s.file);
   s.file = -1;
-  if (status < 0) {
-    std::error_code ignored;
-    std::filesystem::remove(s.temporary, ignored);
-    s.Fail("closing (flushing) the file");
+  s.Check(status, "closing (flushing) the file");
+  s.output->Commit();
+}
+
+Hdf5File::Rows::Rows(const Hdf5File::Impl* file, std::int64_t dataset, std::string name,
+                     std::size_t columns)
+    : file_(file), dataset_(dataset), name_(std::move(name)), columns_(columns) {}
+
+Hdf5File::Rows::Rows(Rows&& other) noexcept
+    : file_(other.file_),
+      dataset_(other.dataset_),
+      name_(std::move(other.name_)),
+      columns_(other.columns_),
+      rows_(other.rows_) {
+  other.dataset_ = -1;
+}
+
+Hdf5File::Rows::~Rows() {
+  if (dataset_ >= 0) H5Dclose(dataset_);
+}
+
+void Hdf5File::Rows::Append(std::span<const double> values) {
+  if (values.empty()) return;
+  const std::size_t width = std::max<std::size_t>(columns_, 1);
+  if (values.size() % width != 0) {
+    file_->Fail(fmt::format("{}: {} values are not whole rows of {}", name_, values.size(), width));
   }
-  std::error_code error;
-  std::filesystem::rename(s.temporary, s.path, error);
-  if (error) {
-    const std::string why = error.message();
-    std::filesystem::remove(s.temporary, error);
-    s.Fail(fmt::format("renaming {}: {}", s.temporary, why));
-  }
+  const hsize_t added = values.size() / width;
+  const int rank = columns_ == 0 ? 1 : 2;
+  const hsize_t extent[2] = {rows_ + added, columns_};
+  file_->Check(H5Dset_extent(dataset_, extent), "extending " + name_);
+  Handle file_space(H5Dget_space(dataset_), H5Sclose);
+  file_->Check(file_space.get(), "space of " + name_);
+  const hsize_t start[2] = {rows_, 0};
+  const hsize_t count[2] = {added, columns_};
+  file_->Check(
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+      "selecting rows of " + name_);
+  Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+  file_->Check(memory_space.get(), "memory space of " + name_);
+  file_->Check(H5Dwrite(dataset_, H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(),
+                        H5P_DEFAULT, values.data()),
+               "writing " + name_);
+  rows_ += added;
 }
 
 }  // namespace isolab::io

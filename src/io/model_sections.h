@@ -27,6 +27,9 @@ StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
                                const UnitSystem& units);
 ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
                                  const UnitSystem& units);
+// `auto` or a time >= 0 (analysis.free_vibration, a study's free_vibration).
+FreeVibration ReadFreeVibration(const YamlReader& reader, const YAML::Node& node,
+                                const std::string& path, const UnitSystem& units);
 AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
                              const UnitSystem& units);
 

@@ -11,8 +11,10 @@
 #include <fstream>
 #include <optional>
 #include <regex>
+#include <stdexcept>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/units.h"
 
 namespace isolab::io {
 namespace {
@@ -145,6 +147,65 @@ std::optional<Layout> PeerLayout(const std::string& path, const std::vector<std:
   return layout;
 }
 
+// Size of an acceleration unit in m/s^2; InputError naming who gave it when it is none.
+double AccelerationSi(const std::string& path, const std::string& unit, const std::string& who) {
+  try {
+    return UnitSystem("N", "m", "s").Convert(1.0, unit, dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(
+        {path}, fmt::format("{}: {} (g, m/s^2, cm/s^2, mm/s^2, in/s^2, gal)", who, error.what()));
+  }
+}
+
+// The units the values are in: the header's, or the ones given where the header names none. A
+// header and a given unit that disagree are refused (a gal record read as m/s^2 is 100 times too
+// strong).
+std::string UnitsOf(const std::string& path, const std::string& header_units,
+                    const RecordOptions& options, std::string* source) {
+  if (!options.units.empty()) {
+    const double given = AccelerationSi(path, options.units, options.units_given_by);
+    if (!header_units.empty()) {
+      const double declared = AccelerationSi(path, header_units, "the header");
+      if (std::abs(given - declared) > 1e-9 * declared) {
+        throw InputError(
+            {path},
+            fmt::format("its header gives the units as {} but {} gives {}: they disagree "
+                        "(a factor of {:.4g}); remove the units given or correct the record",
+                        header_units, options.units_given_by, options.units, given / declared));
+      }
+      *source = "header";
+      return header_units;
+    }
+    *source = options.units_given_by;
+    return options.units;
+  }
+  if (header_units.empty()) {
+    throw InputError({path},
+                     "the record's units are not in its header: give them (g, m/s^2, "
+                     "cm/s^2, in/s^2)");
+  }
+  *source = "header";
+  return header_units;
+}
+
+// The sampling step: the file's, or the one given where the file has none; both and different is
+// an error.
+double StepOf(const std::string& path, double file_dt, const std::string& file_says,
+              const RecordOptions& options) {
+  if (file_dt > 0.0) {
+    if (options.dt > 0.0 && std::abs(options.dt - file_dt) > 1e-6 * file_dt) {
+      throw InputError({path}, fmt::format("{} a step of {:g} s but {} gives {:g} s: they "
+                                           "disagree; remove the step given or correct the record",
+                                           file_says, file_dt, options.dt_given_by, options.dt));
+    }
+    return file_dt;
+  }
+  if (!(options.dt > 0.0)) {
+    throw InputError({path}, "the sampling step is unknown: give dt for a single-column record");
+  }
+  return options.dt;
+}
+
 }  // namespace
 
 Record ReadRecord(const std::string& path, const RecordOptions& options) {
@@ -202,42 +263,41 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   }
   if (numbers.empty()) throw InputError({path}, "the record has no samples");
 
+  double file_dt = layout->dt;  // the step the file declares (header) or shows (times)
   if (layout->two_columns) {
     const double t0 = numbers[0];
     for (std::size_t k = 0; k < numbers.size() / 2; ++k)
       record.values.push_back(numbers[2 * k + 1]);
     if (record.values.size() < 2) throw InputError({path}, "the record has fewer than two samples");
-    record.dt = (numbers[numbers.size() - 2] - t0) / static_cast<double>(record.values.size() - 1);
+    file_dt = (numbers[numbers.size() - 2] - t0) / static_cast<double>(record.values.size() - 1);
     for (std::size_t k = 1; k < record.values.size(); ++k) {
-      const double expected = t0 + k * record.dt;
+      const double expected = t0 + k * file_dt;
       // Printed times are rounded (0.00333 at 300 Hz): a hundredth of a step is uniform enough.
-      if (std::abs(numbers[2 * k] - expected) > 1e-2 * record.dt) {
+      if (std::abs(numbers[2 * k] - expected) > 1e-2 * file_dt) {
         throw InputError({path}, fmt::format("time {} of sample {} breaks the uniform step {}; "
                                              "resample the record to a constant step",
-                                             numbers[2 * k], k + 1, record.dt));
+                                             numbers[2 * k], k + 1, file_dt));
       }
     }
     if (t0 != 0.0) throw InputError({path}, fmt::format("the record starts at t = {}, not 0", t0));
   } else {
     record.values = std::move(numbers);
-    record.dt = layout->dt > 0.0 ? layout->dt : options.dt;
-    if (!(record.dt > 0.0)) {
-      throw InputError({path}, "the sampling step is unknown: give dt for a single-column record");
-    }
   }
+  record.dt =
+      StepOf(path, file_dt, layout->two_columns ? "its times give" : "its header gives", options);
   if (layout->points && static_cast<long>(record.values.size()) != *layout->points) {
     throw InputError({path, last_data_line},
                      fmt::format("the header declares {} points but the file holds {}",
                                  *layout->points, record.values.size()));
   }
-
-  record.units = options.units.empty() ? UnitsFromHeader(header) : options.units;
-  if (record.units.empty()) {
-    throw InputError({path},
-                     "the record's units are not in its header: give them (g, m/s^2, "
-                     "cm/s^2, in/s^2)");
-  }
+  record.units = UnitsOf(path, UnitsFromHeader(header), options, &record.units_source);
   return record;
+}
+
+double Record::Peak() const {
+  double peak = 0.0;
+  for (const double value : values) peak = std::max(peak, std::abs(value));
+  return peak;
 }
 
 }  // namespace isolab::io

@@ -1,5 +1,6 @@
 #include "isolab/io/response_peaks.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace isolab::io {
@@ -33,6 +34,20 @@ ResponsePeaks ComputePeaks(const AnalysisSetup& setup, const integrators::Respon
         Consider(&peaks.first_story_shear, r.connection_force(row, setup.layout.stories[s]), t);
       const double drift = StoryDrift(setup, r.displacement, row, s);
       Consider(&peaks.story_drift, drift, t, static_cast<int>(s));
+    }
+  }
+  if (setup.layout.isolation >= 0 && r.rows_written > 0) {
+    const int dof = connections[setup.layout.isolation].dof_j;
+    const int last = r.rows_written - 1;
+    double low = r.displacement(last, dof), high = low;
+    for (int row = last; row >= 0 && r.time[row] >= r.time[last] - setup.residual_window; --row) {
+      low = std::min(low, r.displacement(row, dof));
+      high = std::max(high, r.displacement(row, dof));
+    }
+    peaks.residual_isolator_displacement = 0.5 * (low + high);
+    peaks.residual_oscillation = 0.5 * (high - low);
+    for (int row = 0; row <= last && r.time[row] <= setup.excitation_end * (1 + 1e-12); ++row) {
+      peaks.isolator_displacement_at_excitation_end = r.displacement(row, dof);
     }
   }
   if (peaks.story_drift.index >= 0) {

@@ -8,9 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "hdf5_writer.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
+#include "isolab/io/hdf5_file.h"
+#include "record_attributes.h"
 
 namespace isolab::io {
 namespace {
@@ -27,9 +28,10 @@ std::string Number(double value) { return std::isnan(value) ? "nan" : fmt::forma
 void WriteCsv(std::ostream& out, const SpectrumDescription& s) {
   const std::string& L = s.length_unit;
   fmt::print(out,
-             "# isolab {} response spectra of {} (scale {:g}); time in s, lengths in {}, "
-             "1 g = {:.6g} {}/s^2\n",
-             s.version, s.record, s.scale, L, s.gravity, L);
+             "# isolab {} response spectra of {} (units {} from {}, scale {:g}, PGA {:.4g} g); "
+             "time in s, lengths in {}, 1 g = {:.6g} {}/s^2\n",
+             s.version, s.record.path, s.record.units, s.record.units_source, s.record.scale,
+             s.record.pga / s.gravity, L, s.gravity, L);
   fmt::print(out,
              "curve,damping,ductility,alpha,period_s,D_{0},V_{0}/s,A_{0}/s^2,A_g,fy_over_fo,um_{0},"
              "achieved_ductility\n",
@@ -60,21 +62,21 @@ void WriteCsv(std::ostream& out, const SpectrumDescription& s) {
   }
 }
 
-void WriteHdf5(hid_t file, const SpectrumDescription& s) {
-  using hdf5::WriteDataset;
+void WriteHdf5(const std::string& path, const SpectrumDescription& s) {
+  Hdf5File file(path);
   const spectra::ElasticSpectrum& e = *s.elastic;
   const std::string length = s.length_unit, velocity = length + "/s",
                     acceleration = length + "/s^2";
-  const hsize_t nz = e.damping_ratios.size(), nt = e.periods.size();
-  WriteDataset(file, "period", e.periods.data(), {nt}, "s");
-  WriteDataset(file, "damping", e.damping_ratios.data(), {nz}, "-");
+  const std::size_t nz = e.damping_ratios.size(), nt = e.periods.size();
+  file.WriteDoubles("period", {nt}, e.periods, "s");
+  file.WriteDoubles("damping", {nz}, e.damping_ratios, "1");
   {
-    const hdf5::Handle group = hdf5::CreateGroup(file, "elastic");
+    file.CreateGroup("elastic");
     std::vector<double> column(nz * nt);
     const auto write = [&](const char* name, double spectra::SpectralOrdinate::*field,
                            const std::string& units) {
       for (std::size_t k = 0; k < column.size(); ++k) column[k] = e.ordinates[k].*field;
-      WriteDataset(group.get(), name, column.data(), {nz, nt}, units);
+      file.WriteDoubles(fmt::format("elastic/{}", name), {nz, nt}, column, units);
     };
     write("D", &spectra::SpectralOrdinate::deformation, length);
     write("V", &spectra::SpectralOrdinate::pseudo_velocity, velocity);
@@ -86,36 +88,36 @@ void WriteHdf5(hid_t file, const SpectrumDescription& s) {
     if (c.periods != e.periods || c.damping_ratios != e.damping_ratios) {
       throw std::logic_error("the elastic and constant-ductility spectra have different grids");
     }
-    const hsize_t nm = c.ductilities.size();
-    const hdf5::Handle group = hdf5::CreateGroup(file, "constant_ductility");
-    hdf5::WriteNumberAttribute(group.get(), "alpha", c.alpha);
-    WriteDataset(group.get(), "ductility", c.ductilities.data(), {nm}, "-");
-    WriteDataset(group.get(), "time_step", c.time_steps.data(), {nt}, "s");
-    WriteDataset(group.get(), "elastic_deformation", c.elastic_deformations.data(), {nz, nt},
-                 length);
+    const std::size_t nm = c.ductilities.size();
+    file.CreateGroup("constant_ductility");
+    file.WriteAttribute("constant_ductility", "alpha", c.alpha);
+    file.WriteDoubles("constant_ductility/ductility", {nm}, c.ductilities, "1");
+    file.WriteDoubles("constant_ductility/time_step", {nt}, c.time_steps, "s");
+    file.WriteDoubles("constant_ductility/elastic_deformation", {nz, nt}, c.elastic_deformations,
+                      length);
     std::vector<double> column(c.points.size());
     const auto write = [&](const char* name, double spectra::ConstantDuctilityPoint::*field,
                            const std::string& units) {
       for (std::size_t k = 0; k < column.size(); ++k) column[k] = c.points[k].*field;
-      WriteDataset(group.get(), name, column.data(), {nz, nm, nt}, units);
+      file.WriteDoubles(fmt::format("constant_ductility/{}", name), {nz, nm, nt}, column, units);
     };
-    write("strength_ratio", &spectra::ConstantDuctilityPoint::strength_ratio, "-");
+    write("strength_ratio", &spectra::ConstantDuctilityPoint::strength_ratio, "1");
     write("D_y", &spectra::ConstantDuctilityPoint::yield_deformation, length);
     write("V_y", &spectra::ConstantDuctilityPoint::yield_pseudo_velocity, velocity);
     write("A_y", &spectra::ConstantDuctilityPoint::yield_pseudo_acceleration, acceleration);
     write("u_m", &spectra::ConstantDuctilityPoint::peak_deformation, length);
-    write("achieved_ductility", &spectra::ConstantDuctilityPoint::achieved_ductility, "-");
+    write("achieved_ductility", &spectra::ConstantDuctilityPoint::achieved_ductility, "1");
   }
-  hdf5::WriteStringAttribute(file, "isolab_version", s.version);
-  hdf5::WriteStringAttribute(file, "record", s.record);
-  hdf5::WriteNumberAttribute(file, "record_scale", s.scale);
-  hdf5::WriteStringAttribute(file, "units", fmt::format("length {}, time s", length));
-  hdf5::WriteNumberAttribute(file, "gravity", s.gravity);
-  hdf5::WriteStringAttribute(
-      file, "method",
+  file.WriteAttribute("/", "isolab_version", s.version);
+  WriteRecordAttributes(file, s.record, s.gravity);
+  file.WriteAttribute("/", "units", fmt::format("length {}, time s", length));
+  file.WriteAttribute("/", "gravity", s.gravity);
+  file.WriteAttribute(
+      "/", "method",
       "elastic: exact piecewise-linear recurrence (Nigam-Jennings; Chopra Sec. 5.2); constant "
       "ductility: Newmark average acceleration, largest strength giving the ductility (Chopra "
       "Sec. 7.5)");
+  file.Commit();
 }
 
 }  // namespace
@@ -130,7 +132,7 @@ void WriteSpectrumFile(const std::string& path, const SpectrumDescription& spect
   if (extension == ".csv") {
     WriteTextFileAtomically(path, [&](std::ostream& out) { WriteCsv(out, spectrum); });
   } else if (extension == ".h5" || extension == ".hdf5") {
-    hdf5::WriteFileAtomically(path, "the spectrum", [&](hid_t file) { WriteHdf5(file, spectrum); });
+    WriteHdf5(path, spectrum);
   } else {
     throw InputError({path}, fmt::format("unknown spectrum file type '{}' (allowed: .csv, .h5, "
                                          ".hdf5)",

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view kStudyKeys[] = {"description", "building", "variants", "reference",
-                                           "records",     "scales",   "output"};
+                                           "records",     "scales",   "output",   "free_vibration"};
 constexpr std::string_view kVariantKeys[] = {"name", "isolation", "model", "fixed_base"};
 
 bool ReadFlag(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
@@ -139,14 +139,49 @@ std::vector<std::string> ExpandGlob(const std::string& pattern) {
   return files;
 }
 
+// A record entry's {file, units, dt, scale}, or a plain file name or glob.
+StudyRecord ReadRecordEntry(const YamlReader& reader, const YAML::Node& node,
+                            const std::string& path, const UnitSystem& units) {
+  StudyRecord given;
+  given.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
+  if (!node.IsMap()) {
+    given.path = reader.ReadString(node, path);
+    return given;
+  }
+  reader.CheckKeys(node, path, {"file", "units", "dt", "scale"});
+  given.path = reader.ReadString(reader.Require(node, path, "file"), ChildPath(path, "file"));
+  if (node["units"]) {
+    given.units = reader.ReadString(node["units"], ChildPath(path, "units"));
+    try {
+      units.Convert(1.0, given.units, dimension::kAcceleration);
+    } catch (const std::invalid_argument& error) {
+      reader.Fail(node["units"], ChildPath(path, "units"),
+                  fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
+    }
+  }
+  if (node["dt"]) {
+    given.dt = reader.ReadQuantity(node["dt"], ChildPath(path, "dt"), dimension::kTime, units);
+    if (!(given.dt > 0.0)) reader.Fail(node["dt"], ChildPath(path, "dt"), "must be > 0");
+  }
+  if (node["scale"]) {
+    given.scale = reader.ReadNumber(node["scale"], ChildPath(path, "scale"));
+    if (!(given.scale > 0.0) || !std::isfinite(given.scale)) {
+      reader.Fail(node["scale"], ChildPath(path, "scale"),
+                  fmt::format("{:g} (must be a finite number > 0)", given.scale));
+    }
+  }
+  return given;
+}
+
 std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
-                                     const fs::path& directory) {
+                                     const fs::path& directory, const UnitSystem& units) {
   reader.RequireSequence(list, "records");
   if (list.size() == 0) reader.Fail(list, "records", "the list is empty (give files or globs)");
   std::vector<StudyRecord> records;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = IndexPath("records", i);
-    const std::string entry = reader.ReadString(list[i], path);
+    const StudyRecord given = ReadRecordEntry(reader, list[i], path, units);
+    const std::string& entry = given.path;
     const std::string pattern = (directory / entry).lexically_normal().string();
     std::vector<std::string> files;
     if (IsGlob(entry)) {
@@ -169,7 +204,10 @@ std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node&
                                 "and must be unique)",
                                 file, name, same->path));
       }
-      records.push_back({name, file});
+      StudyRecord record = given;
+      record.name = name;
+      record.path = file;
+      records.push_back(std::move(record));
     }
   }
   return records;
@@ -240,8 +278,12 @@ StudyFile LoadStudyFile(const std::string& path) {
     }
     study.reference = static_cast<std::size_t>(found - names.begin());
   }
-  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory);
+  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory, study.units);
   study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
+  if (root["free_vibration"]) {
+    study.free_vibration =
+        ReadFreeVibration(reader, root["free_vibration"], "free_vibration", study.units);
+  }
   if (root["output"]) {
     const YAML::Node output = root["output"];
     reader.RequireMap(output, "output");

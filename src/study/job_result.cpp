@@ -60,8 +60,12 @@ std::vector<char> Serialize(const JobResult& result) {
   Put(&bytes, static_cast<std::uint8_t>(result.completed ? 1 : 0));
   for (const double value : result.values) Put(&bytes, value);
   Put(&bytes, result.wall_seconds);
+  Put(&bytes, result.pga);
   PutString(&bytes, result.message);
   PutString(&bytes, result.file);
+  PutString(&bytes, result.record_units);
+  Put(&bytes, static_cast<std::uint64_t>(result.warnings.size()));
+  for (const std::string& warning : result.warnings) PutString(&bytes, warning);
   return bytes;
 }
 
@@ -72,8 +76,12 @@ JobResult Deserialize(std::span<const char> bytes) {
   result.completed = reader.Get<std::uint8_t>() != 0;
   for (double& value : result.values) value = reader.Get<double>();
   result.wall_seconds = reader.Get<double>();
+  result.pga = reader.Get<double>();
   result.message = reader.GetString();
   result.file = reader.GetString();
+  result.record_units = reader.GetString();
+  const auto warnings = reader.Get<std::uint64_t>();
+  for (std::uint64_t k = 0; k < warnings; ++k) result.warnings.push_back(reader.GetString());
   if (!reader.AtEnd()) throw std::runtime_error("job result with trailing bytes");
   return result;
 }

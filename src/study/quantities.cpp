@@ -4,8 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "isolab/io/response_peaks.h"
-
 namespace isolab::study {
 namespace {
 
@@ -59,14 +57,13 @@ QuantityValues NoValues() {
 
 QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
-                                 const io::UnitSystem& model_units,
+                                 const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
                                  const io::UnitSystem& study_units) {
   const double length =
       model_units.SiFactor(io::dimension::kLength) / study_units.SiFactor(io::dimension::kLength);
   const double force =
       model_units.SiFactor(io::dimension::kForce) / study_units.SiFactor(io::dimension::kForce);
   const double g = model_units.Convert(1.0, "g", io::dimension::kAcceleration);
-  const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
   const int rows = response.rows_written;
 
   QuantityValues values = NoValues();
@@ -74,10 +71,9 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
   set(Quantity::kBaseShear, peaks.base_shear.value * force);
   if (setup.layout.isolation >= 0) {
     set(Quantity::kIsolatorDisplacement, peaks.isolator_displacement.value * length);
-    const int dof = setup.structure.connections()[setup.layout.isolation].dof_j;
     if (rows > 0) {
       set(Quantity::kResidualIsolatorDisplacement,
-          std::abs(response.displacement(rows - 1, dof)) * length);
+          std::abs(peaks.residual_isolator_displacement) * length);
     }
   }
   // The largest ratio, which need not be the largest drift's when heights differ.

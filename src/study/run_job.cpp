@@ -18,20 +18,43 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
   const io::StudyVariant& variant = study.variants[job.variant];
   const io::ModelFile& model = variant.model;
   try {
-    const io::AnalysisSetup setup = io::PrepareAnalysis(
-        model, {study.records[job.record].path, study.scales[job.scale], {}, variant.fixed_base});
+    const io::StudyRecord& record = study.records[job.record];
+    io::RunOverrides overrides;
+    overrides.record = record.path;
+    overrides.record_units = record.units;
+    if (record.dt > 0.0) {
+      // The study gives dt in its building's time unit; a `model` variant may use another.
+      overrides.record_dt = model.units.Convert(
+          record.dt * study.units.SiFactor(io::dimension::kTime), "s", io::dimension::kTime);
+    }
+    overrides.units_given_by = record.entry + ".units";
+    overrides.dt_given_by = record.entry + ".dt";
+    overrides.scale = record.scale * study.scales[job.scale];
+    overrides.fixed_base = variant.fixed_base;
+    if (study.free_vibration) {
+      io::FreeVibration free = *study.free_vibration;  // in the study's time unit
+      free.duration = model.units.Convert(
+          free.duration * study.units.SiFactor(io::dimension::kTime), "s", io::dimension::kTime);
+      overrides.free_vibration = free;
+    }
+    const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
+    result.record_units = setup.record.units;
+    result.pga = setup.record.pga / model.units.Convert(1.0, "g", io::dimension::kAcceleration);
     integrators::ResponseHistory response;
     const integrators::RunSummary summary = io::RunAnalysis(model.analysis, setup, &response);
     const std::string name = RunFileName(study, job);
     const std::filesystem::path file = std::filesystem::path(output_directory) / name;
     std::error_code ignored;  // a folder that cannot be made shows as the file's write error
     std::filesystem::create_directories(file.parent_path(), ignored);
-    io::WriteResultsFile(file.string(),
-                         {&model, &setup, &model.analysis, &response, &summary, version});
+    const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
+    const io::RunDescription run{&model,   &setup, &model.analysis, &response,
+                                 &summary, &peaks, version};
+    io::WriteResultsFile(file.string(), run);
     result.file = name;
+    result.warnings = io::RunWarnings(run);
     if (summary.ok()) {
       result.completed = true;
-      result.values = MeasureQuantities(setup, response, model.units, study.units);
+      result.values = MeasureQuantities(setup, response, peaks, model.units, study.units);
     } else {
       result.message = summary.message;
     }

@@ -8,20 +8,13 @@
 #include <vector>
 
 #include "isolab/io/atomic_file.h"
+#include "isolab/io/csv.h"
 #include "isolab/io/hdf5_file.h"
 
 namespace isolab::study {
 namespace {
 
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
-// Shortest decimal that reads back as the same double, so the CSV is as exact as the HDF5.
-std::string Exact(double value) { return std::isfinite(value) ? fmt::format("{}", value) : ""; }
+using io::ExactNumber;
 
 std::string StatisticStatus(std::size_t completed, std::size_t records) {
   if (completed == records) return "completed";
@@ -29,18 +22,21 @@ std::string StatisticStatus(std::size_t completed, std::size_t records) {
 }
 
 void WriteCsvRow(std::ostream& out, const std::vector<std::string>& fields) {
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    out << (i > 0 ? "," : "") << CsvField(fields[i]);
-  }
-  out << "\n";
+  out << io::CsvLine(fields);
+}
+
+std::string JoinWarnings(const std::vector<std::string>& warnings) {
+  std::string text;
+  for (const std::string& warning : warnings) text += (text.empty() ? "" : "; ") + warning;
+  return text;
 }
 
 std::vector<std::string> RowStart(const std::string& variant, const std::string& record,
                                   double scale, const std::string& status,
                                   const QuantityValues& values, const QuantityValues& ratios) {
   std::vector<std::string> fields = {variant, record, fmt::format("{}", scale), status};
-  for (const double value : values) fields.push_back(Exact(value));
-  for (const double ratio : ratios) fields.push_back(Exact(ratio));
+  for (const double value : values) fields.push_back(ExactNumber(value));
+  for (const double ratio : ratios) fields.push_back(ExactNumber(ratio));
   return fields;
 }
 
@@ -65,8 +61,9 @@ void WriteSummaryCsv(const std::string& path, const Summary& summary) {
     }
     for (const QuantityInfo& info : Quantities())
       header.push_back(fmt::format("ratio {}", info.key));
-    header.push_back("message");
-    header.push_back("file");
+    for (const char* name : {"message", "file", "record_units", "pga_g", "warnings"}) {
+      header.push_back(name);
+    }
     WriteCsvRow(out, header);
 
     const std::size_t R = shape.records.size(), S = shape.scales.size();
@@ -77,6 +74,9 @@ void WriteSummaryCsv(const std::string& path, const Summary& summary) {
                    run.completed ? "completed" : "failed", run.values, summary.ratios[run.job]);
       fields.push_back(run.message);
       fields.push_back(run.file);
+      fields.push_back(run.record_units);
+      fields.push_back(ExactNumber(run.pga));
+      fields.push_back(JoinWarnings(run.warnings));
       WriteCsvRow(out, fields);
     }
     for (std::size_t v = 0; v < shape.variants.size(); ++v) {
@@ -93,7 +93,7 @@ void WriteSummaryCsv(const std::string& path, const Summary& summary) {
                        mean ? statistic.mean : statistic.max,
                        mean ? statistic.mean_ratio : statistic.max_ratio);
           fields.push_back(over);
-          fields.push_back("");
+          fields.resize(header.size());
           WriteCsvRow(out, fields);
         }
       }
@@ -105,30 +105,36 @@ void WriteSummaryHdf5(const std::string& path, const Summary& summary, const std
                       const std::string& version) {
   const StudyShape& shape = summary.shape;
   const std::size_t V = shape.variants.size(), R = shape.records.size(), S = shape.scales.size();
-  const std::size_t run_dims[] = {V, R, S};
-  const std::size_t statistic_dims[] = {V, S};
-  io::Hdf5File file(path, /*reproducible=*/true);
+  const std::vector<std::size_t> run_dims = {V, R, S};
+  const std::vector<std::size_t> statistic_dims = {V, S};
+  io::Hdf5File file(path);
 
-  const std::size_t v_dims[] = {V}, r_dims[] = {R}, s_dims[] = {S};
-  file.WriteStrings("variants", v_dims, shape.variants);
-  file.WriteStrings("records", r_dims, shape.records);
-  if (shape.record_files.size() == R) file.WriteStrings("record_files", r_dims, shape.record_files);
-  file.WriteDoubles("scales", s_dims, shape.scales, "");
+  file.WriteStrings("variants", {V}, shape.variants);
+  file.WriteStrings("records", {R}, shape.records);
+  if (shape.record_files.size() == R) file.WriteStrings("record_files", {R}, shape.record_files);
+  file.WriteDoubles("scales", {S}, shape.scales, "");
 
-  std::vector<std::int32_t> status;
-  std::vector<std::string> messages, files;
+  std::vector<std::int64_t> status;
+  std::vector<std::string> messages, files, record_units, warnings;
+  std::vector<double> pga;
   for (const JobResult& run : summary.runs) {
     status.push_back(run.completed ? 0 : 1);
     messages.push_back(run.message);
     files.push_back(run.file);
+    record_units.push_back(run.record_units);
+    pga.push_back(run.pga);
+    warnings.push_back(JoinWarnings(run.warnings));
   }
   file.WriteIntegers("status", run_dims, status);
   file.WriteAttribute("status", "meaning", "0 completed, 1 failed");
   file.WriteStrings("message", run_dims, messages);
   file.WriteStrings("file", run_dims, files);
-  std::vector<std::int32_t> completed;
+  file.WriteStrings("record_units", run_dims, record_units);
+  file.WriteDoubles("pga", run_dims, pga, "g");
+  file.WriteStrings("warnings", run_dims, warnings);
+  std::vector<std::int64_t> completed;
   for (const Statistic& statistic : summary.statistics) {
-    completed.push_back(static_cast<std::int32_t>(statistic.completed));
+    completed.push_back(static_cast<std::int64_t>(statistic.completed));
   }
   file.WriteIntegers("completed", statistic_dims, completed);
 

@@ -4,6 +4,7 @@
 // and a bad study exits 2 with its location.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -20,8 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using isolab::testing::Outcome;
-using isolab::testing::RunShell;
 using isolab::testing::RunIsolab;
+using isolab::testing::RunShell;
 
 std::string StudyData(const std::string& name) {
   return std::string(ISOLAB_TEST_DATA_DIR) + "/study/data/" + name;
@@ -191,6 +192,45 @@ TEST(CompareCommand, FailedRunsAreReportedAndTheOthersFinish) {
   EXPECT_TRUE(fs::exists(folder / "runs/stuck/pulse_tp2_x1.h5"));
   EXPECT_FALSE(fs::exists(folder / "runs/thm1/bad_record_nan_x1.h5"));
   EXPECT_TRUE(fs::exists(folder / "summary.h5"));
+}
+
+TEST(CompareCommand, RecordEntriesGiveScaleAndUnitsAndAConflictFailsItsRuns) {
+  const fs::path folder = OutputFolder("entries");
+  const Outcome run =
+      RunIsolab("compare " + StudyData("record_entries_study.yaml") + " -q -o " + folder.string());
+  EXPECT_EQ(run.exit_code, 1);  // the run whose units disagree failed; the others finished
+  const auto rows = CsvRows(folder / "summary.csv");
+  const auto& header = rows[0];
+  const auto column = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const auto* pulse = FindRow(rows, "thm1", "pulse_tp2", "0.5");
+  const auto* gal = FindRow(rows, "thm1", "pulse_tp2_gal", "0.5");
+  const auto* fwn = FindRow(rows, "thm1", "fwn_firm_seed1", "0.5");
+  ASSERT_TRUE(pulse != nullptr && gal != nullptr && fwn != nullptr);
+  const auto run_json = [&](const std::string& record, const char* scale) {
+    const Outcome single =
+        RunIsolab("run " + StudyData("small_building.yaml") + " --record " + record + " --scale " +
+                  scale + " --json -o " + (folder / "run.h5").string());
+    EXPECT_EQ(single.exit_code, 0);
+    return nlohmann::json::parse(single.output);
+  };
+  // The entry's scale 2 times the study's 0.5: pulse_tp2 at 1.
+  const auto full = run_json(Source("ground_motions/pulse_tp2.at2"), "1");
+  EXPECT_EQ(std::stod((*pulse)[4]), full["peaks"]["isolator_displacement"]["value"].get<double>());
+  EXPECT_EQ(std::stod((*pulse)[column("pga_g")]), full["pga_g"].get<double>());
+  EXPECT_EQ((*pulse)[column("record_units")], "g");
+  // The same motion stored in cm/s^2, read by its header: pulse_tp2 at 0.5.
+  const auto half = run_json(Source("ground_motions/pulse_tp2.at2"), "0.5");
+  const double expected = half["peaks"]["isolator_displacement"]["value"].get<double>();
+  EXPECT_NEAR(std::stod((*gal)[4]), expected, 1e-8 * expected);
+  EXPECT_EQ((*gal)[column("record_units")], "cm/s^2");
+  // Units that disagree with the record's header: refused, naming both, the run failed.
+  EXPECT_EQ((*fwn)[3], "failed");
+  const std::string csv = ReadFile(folder / "summary.csv");
+  EXPECT_NE(csv.find("fwn_firm_seed1.at2: its header gives the units as g but "), std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("records[2].units gives gal"), std::string::npos) << csv;
 }
 
 TEST(CompareCommand, ProgressGoesToStderrUnlessQuiet) {

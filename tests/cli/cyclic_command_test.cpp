@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "leftover_temporaries.h"
 #include "paper_tables.h"
 
 namespace {
@@ -76,7 +77,7 @@ TEST(CyclicCommand, WritesTheLoopToCsvAtomically) {
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, 401);
-  EXPECT_FALSE(std::filesystem::exists(csv.string() + ".tmp"));
+  EXPECT_TRUE(isolab::testing::LeftoverTemporaries(csv).empty());
 }
 
 TEST(CyclicCommand, BadModelFilesExitWithCodeTwoAndALocatedMessage) {

@@ -53,10 +53,10 @@ TEST(PlotScript, IsolatedBuildingRunWritesEveryPlot) {
   const auto result = directory / "five_story.h5";
   const auto run =
       RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") + " --json -o " +
-                result.string() + " --plot " + (directory / "plots").string());
+                result.string() + " --plot=" + (directory / "plots").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output.front(), '{');  // the script's messages stay off stdout
-  for (const char* name : {"hysteresis", "histories", "envelopes", "energy"}) {
+  for (const char* name : {"overview", "hysteresis", "histories", "envelopes", "energy"}) {
     ExpectPng(directory / "plots" / (std::string("five_story_") + name + ".png"));
   }
 }
@@ -81,12 +81,38 @@ TEST(PlotScript, SpectrumPlotsFromCsvAndHdf5) {
     const auto output = directory / (std::string("fwn") + extension);
     const auto run = RunIsolab("spectrum " + Source("ground_motions/fwn_firm_seed1.at2") +
                                " --periods 0.1:2:0.1 --damping 0.02,0.05 --ductility 2,4 -q -o " +
-                               output.string() + " --plot " + (directory / extension).string());
+                               output.string() + " --plot=" + (directory / extension).string());
     ASSERT_EQ(run.exit_code, 0) << run.output;
     for (const char* name : {"D", "A", "strength"}) {
       ExpectPng(directory / extension / (std::string("fwn_") + name + ".png"));
     }
   }
+}
+
+TEST(PlotScript, PlotDoesNotTakeTheNextArgument) {
+  // `--plot MODEL` once read MODEL as the plot folder; --plot takes a folder only as --plot=DIR.
+  REQUIRE_PLOTTING();
+  const auto directory = FreshDirectory("next_argument");
+  const auto result = directory / "sdof.h5";
+  const auto run = RunIsolab("run --plot " + std::string(ISOLAB_TEST_DATA_DIR) +
+                             "/cli/data/run_base.yaml -o " + result.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ExpectPng(directory / "sdof_hysteresis.png");
+}
+
+TEST(PlotScript, IsolabPythonMayBeANameOnThePath) {
+  // ISOLAB_PYTHON=<name> is looked up on PATH, as a shell would.
+  REQUIRE_PLOTTING();
+  const auto directory = FreshDirectory("python_by_name");
+  std::filesystem::create_directories(directory / "bin");
+  std::filesystem::create_symlink("/usr/bin/python3", directory / "bin" / "isolab-test-python");
+  const auto result = directory / "sdof.h5";
+  const auto run = isolab::testing::RunCommandLine(
+      "PATH=" + (directory / "bin").string() + ":$PATH ISOLAB_PYTHON=isolab-test-python " +
+      ISOLAB_BINARY + " run " + std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/run_base.yaml -o " +
+      result.string() + " --plot 2>&1");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ExpectPng(directory / "sdof_energy.png");
 }
 
 TEST(PlotScript, MissingPythonStopsBeforeTheRun) {

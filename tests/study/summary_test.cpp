@@ -13,6 +13,7 @@
 
 #include "isolab/study/summary_file.h"
 #include "isolab/study/summary_table.h"
+#include "leftover_temporaries.h"
 
 namespace isolab::study {
 namespace {
@@ -108,7 +109,11 @@ std::string ReadText(const std::filesystem::path& path) {
 }
 
 TEST(SummaryFile, CsvHoldsExactValuesStatusAndQuotedMessages) {
-  const Summary summary = BuildSummary(Shape(), Results());
+  std::vector<JobResult> results = Results();
+  results[2].record_units = "cm/s^2";
+  results[2].pga = 0.35;
+  results[2].warnings = {"PGA, check units", "too long"};
+  const Summary summary = BuildSummary(Shape(), results);
   const auto path = std::filesystem::temp_directory_path() / "isolab_summary_test.csv";
   WriteSummaryCsv(path.string(), summary);
   const std::string csv = ReadText(path);
@@ -119,21 +124,24 @@ TEST(SummaryFile, CsvHoldsExactValuesStatusAndQuotedMessages) {
             "variant,record,scale,status,isolator_displacement [mm],base_shear [kN],"
             "story_drift_ratio [%],floor_acceleration [g],residual_isolator_displacement [mm],"
             "ratio isolator_displacement,ratio base_shear,ratio story_drift_ratio,"
-            "ratio floor_acceleration,ratio residual_isolator_displacement,message,file");
+            "ratio floor_acceleration,ratio residual_isolator_displacement,message,file,"
+            "record_units,pga_g,warnings");
   std::vector<std::string> rows;
   while (std::getline(lines, line)) rows.push_back(line);
   ASSERT_EQ(rows.size(), 6u + 3u * 2u);
-  EXPECT_EQ(rows[0], "ref,r1,1,completed,100,200,0.1,0.2,4,1,1,1,1,1,,runs/x.h5");
-  EXPECT_EQ(rows[2], "other,r1,1,completed,150,100,0.2,0.1,2,1.5,0.5,2,0.5,0.5,,runs/x.h5");
+  EXPECT_EQ(rows[0], "ref,r1,1,completed,100,200,0.1,0.2,4,1,1,1,1,1,,runs/x.h5,,,");
+  EXPECT_EQ(rows[2],
+            "other,r1,1,completed,150,100,0.2,0.1,2,1.5,0.5,2,0.5,0.5,,runs/x.h5,cm/s^2,0.35,"
+            "\"PGA, check units; too long\"");
   EXPECT_EQ(rows[3],
             "other,r2,1,failed,,,,,,,,,,,\"Newton did not converge at t = 1 s, \"\"step\"\" "
-            "100\",");
-  EXPECT_EQ(rows[6], "ref,mean,1,completed,200,300,0.2,0.30000000000000004,2,1,1,1,1,1,,");
+            "100\",,,,");
+  EXPECT_EQ(rows[6], "ref,mean,1,completed,200,300,0.2,0.30000000000000004,2,1,1,1,1,1,,,,,");
   EXPECT_EQ(rows[9],
             "other,max,1,partial,150,100,0.2,0.1,2,0.5,0.25,0.6666666666666667,0.25,0.5,"
-            "over the 1 of 2 records whose runs completed,");
+            "over the 1 of 2 records whose runs completed,,,,");
   EXPECT_EQ(rows[10].rfind("fixed,mean,1,completed,,550,0.7,1,,,", 0), 0u) << rows[10];
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  EXPECT_TRUE(isolab::testing::LeftoverTemporaries(path).empty());
 }
 
 TEST(SummaryTable, PrintsRunsStatisticsAndFailures) {

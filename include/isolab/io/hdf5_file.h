@@ -1,7 +1,16 @@
-// A small writer of HDF5 files for tables and summaries: datasets of doubles, integers and
-// strings with a "units" attribute, groups, attributes. The file appears whole or not at all: it
-// is written under "<path>.tmp" and renamed by Commit(); destroyed without Commit, the temporary
-// file is removed. HDF5's own headers stay inside io.
+// isolab's one HDF5 writer: results of runs, spectra and study summaries all go through it, so
+// every file reads the same way from Python (h5py) or any HDF5 tool:
+//  * numbers as float64 or int64 datasets, each with a "units" attribute where it has units;
+//  * text as UTF-8 strings (h5py returns str for attributes, and for datasets through
+//    .asstr()): variable-length in attributes and string arrays, fixed-length for a single text;
+//  * column names of a 2-D dataset as a "columns" attribute (an array of strings);
+//  * numbers written whole (WriteDoubles: contiguous, the cheapest), or as chunked datasets whose
+//    first dimension grows as rows are appended (Rows), so a run can stream its output instead
+//    of holding it all in memory.
+// Objects carry no creation or modification times: the same contents give the same bytes.
+// The file is an AtomicFile (atomic_file.h): written under a unique temporary name beside the
+// target and renamed by Commit(); destroyed without Commit, nothing is left. HDF5's own headers
+// stay inside io.
 #pragma once
 
 #include <cstddef>
@@ -9,39 +18,82 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace isolab::io {
 
 class Hdf5File {
  public:
-  // `reproducible`: objects carry no creation or modification times, so the same contents give
-  // the same bytes (a summary can then be compared file to file). Throws InputError when the
-  // file cannot be created.
-  Hdf5File(std::string path, bool reproducible);
+  class Rows;
+
+  // Throws InputError when the path cannot be an output (atomic_file.h) or the file cannot be
+  // created.
+  explicit Hdf5File(std::string path);
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
 
   // Names are paths from the root ("mean/base_shear"); groups must be created before use.
   void CreateGroup(const std::string& name);
-  // Row-major data with dimensions `dims` (product = data.size()); empty units: no attribute.
-  void WriteDoubles(const std::string& name, std::span<const std::size_t> dims,
+
+  // Row-major data with dimensions `dims` (product = data.size(); {} for a scalar). Empty units:
+  // no "units" attribute.
+  void WriteDoubles(const std::string& name, const std::vector<std::size_t>& dims,
                     std::span<const double> data, const std::string& units);
-  void WriteIntegers(const std::string& name, std::span<const std::size_t> dims,
-                     std::span<const std::int32_t> data);
-  // Fixed-length strings, as long as the longest value.
-  void WriteStrings(const std::string& name, std::span<const std::size_t> dims,
+  void WriteIntegers(const std::string& name, const std::vector<std::size_t>& dims,
+                     std::span<const std::int64_t> data, const std::string& units = "");
+  void WriteStrings(const std::string& name, const std::vector<std::size_t>& dims,
                     std::span<const std::string> values);
-  // Attributes of the object `object` ("/" for the file, or a dataset or group name).
+  // A scalar string dataset, for text of any length (attributes stop near 64 KiB); UTF-8, fixed
+  // length.
+  void WriteText(const std::string& name, const std::string& value);
+
+  // Attributes of `object` ("/" for the file, or a dataset or group name).
   void WriteAttribute(const std::string& object, const std::string& name, const std::string& value);
   void WriteAttribute(const std::string& object, const std::string& name, double value);
+  void WriteIntegerAttribute(const std::string& object, const std::string& name,
+                             std::int64_t value);
+  void WriteStringsAttribute(const std::string& object, const std::string& name,
+                             std::span<const std::string> values);
+  void WriteDoublesAttribute(const std::string& object, const std::string& name,
+                             std::span<const double> values);
 
-  // Closes (flushes) the file and renames it to its final path. Throws InputError on failure.
+  // A float64 dataset of `columns` columns (0: a vector) whose rows are appended. Expected rows
+  // size its chunks (no more than needed for short histories); more may be appended.
+  Rows CreateRows(const std::string& name, std::size_t columns, const std::string& units,
+                  std::size_t expected_rows);
+
+  // Closes (flushes) the file and renames it to its path. Every Rows must be gone by then.
+  // Throws InputError on failure.
   void Commit();
 
  private:
   struct Impl;  // HDF5 identifiers
   std::unique_ptr<Impl> impl_;
+};
+
+// An extendable dataset of rows; appending writes through to the file.
+class Hdf5File::Rows {
+ public:
+  ~Rows();
+  Rows(Rows&& other) noexcept;
+  Rows(const Rows&) = delete;
+  Rows& operator=(const Rows&) = delete;
+  Rows& operator=(Rows&&) = delete;
+
+  // Whole rows, row-major: values.size() is a multiple of the column count (1 for a vector).
+  void Append(std::span<const double> values);
+  std::size_t rows() const { return rows_; }
+
+ private:
+  friend class Hdf5File;
+  Rows(const Hdf5File::Impl* file, std::int64_t dataset, std::string name, std::size_t columns);
+
+  const Hdf5File::Impl* file_;
+  std::int64_t dataset_;  // an HDF5 hid_t
+  std::string name_;
+  std::size_t columns_;  // 0: a vector
+  std::size_t rows_ = 0;
 };
 
 }  // namespace isolab::io

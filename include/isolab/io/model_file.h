@@ -15,6 +15,7 @@
 //     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}
 //     forces: [{dof: 0, dt: 0.1, values: [...]}]
 //   analysis: {dt: 0.005, duration: 30, integrator: newmark,   # or ida
+//              free_vibration: auto,                         # or a time, 0 for none
 //              newmark: {beta: 0.25, gamma: 0.5, newton: full, ...},
 //              ida: {rtol: 1e-6, atol: 1e-9, max_step: 0.01, max_steps: 100000}}
 //   output: {file: results.h5}
@@ -63,10 +64,18 @@ struct ExcitationSection {
   std::vector<ForceSection> forces;
 };
 
+// How long the structure vibrates freely after the excitation ends, so that the residual
+// displacement is read where the structure comes to rest, not while it still swings.
+struct FreeVibration {
+  bool automatic = true;  // five times the structure's longest period (analysis_setup.h)
+  double duration = 0.0;  // (time) when not automatic; 0: none
+};
+
 struct AnalysisSection {
   enum class Integrator { kNewmark, kIda };
   double dt = 0.0;        // 0: the record's step (IDA: its output step)
-  double duration = 0.0;  // 0: the excitation's duration
+  double duration = 0.0;  // 0: the excitation's duration, then the free vibration
+  FreeVibration free_vibration;
   Integrator integrator = Integrator::kNewmark;
   integrators::NewmarkOptions newmark;
   integrators::IdaOptions ida;

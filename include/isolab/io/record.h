@@ -5,6 +5,11 @@
 //  * CSV with a header line: time,value (units in parentheses in the header, "acc (g)") or value;
 //  * whitespace columns without a header: time value, or one value per line (needs dt).
 // Samples are taken to be at t = 0, dt, 2 dt, ... Every error names the file and line.
+//
+// Units and step given by the caller (a model, a study, the command line) never silently
+// override what the file itself declares: when both exist and disagree, the record is refused
+// with both named. They are needed where the file is silent (a header without units, a single
+// column without a step).
 #pragma once
 
 #include <string>
@@ -14,19 +19,39 @@ namespace isolab::io {
 
 struct RecordOptions {
   std::string units;  // "g", "m/s^2", "cm/s^2", "in/s^2", ...; empty: from the file's header
-  double dt = 0.0;    // sampling step for single-column files without a header (time)
+  double dt = 0.0;    // sampling step (s), for files that do not give it; 0: not given
+  // Who gave units and dt, for messages: "--units", "excitation.ground_motion.units in m.yaml".
+  std::string units_given_by = "the units given";
+  std::string dt_given_by = "the dt given";
 };
 
 struct Record {
   std::string path;
-  std::string format;       // "PEER AT2", "Peknold AT2", "CSV", "two-column", "single-column"
-  std::string description;  // header text, if any
-  std::string units;        // of the values
-  double dt = 0.0;          // (s)
+  std::string format;        // "PEER AT2", "Peknold AT2", "CSV", "two-column", "single-column"
+  std::string description;   // header text, if any
+  std::string units;         // of the values
+  std::string units_source;  // "header", or RecordOptions::units_given_by
+  double dt = 0.0;           // (s)
   std::vector<double> values;
+
+  // Peak absolute value (in `units`).
+  double Peak() const;
 };
 
-// Throws InputError (file:line: what) for unreadable, malformed, empty or non-finite records.
+// A record as an analysis applied it: the file, what it was read as, the scale and the scaled
+// record's PGA, for printing and for every results file.
+struct AppliedRecord {
+  std::string path;          // empty without a ground motion
+  std::string format;        // as Record::format
+  std::string units;         // of the file's values
+  std::string units_source;  // "header", or who gave them
+  double dt = 0.0;           // (s) the file's step
+  double scale = 1.0;
+  double pga = 0.0;  // peak |a_g| of the scaled record, in the analysis' acceleration unit
+};
+
+// Throws InputError (file:line: what) for unreadable, malformed, empty or non-finite records,
+// unknown units, and units or a step that disagree with the file's own.
 Record ReadRecord(const std::string& path, const RecordOptions& options = {});
 
 }  // namespace isolab::io

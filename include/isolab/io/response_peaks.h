@@ -1,5 +1,11 @@
 // The peaks an engineer reads first from a run: isolator displacement and force, base shear,
-// roof absolute acceleration, story drift.
+// roof absolute acceleration, story drift; and where the isolator comes to rest.
+//
+// The residual isolator displacement is read after the free vibration that follows the
+// excitation (analysis_setup.h): the middle of the isolator's range over the last
+// `residual_window` of the run. A structure at rest gives its final displacement; a bearing that
+// still swings elastically about an offset (a bilinear isolator below yield is undamped) gives
+// that offset, and half the range says how much it still swings.
 #pragma once
 
 #include "isolab/integrators/response.h"
@@ -21,6 +27,10 @@ struct ResponsePeaks {
   Peak roof_absolute_acceleration;  // top DOF
   Peak story_drift;                 // largest story drift; index = story (0-based)
   double story_drift_ratio = 0.0;   // that drift / its story height (0 without heights)
+  // Isolator only (0 without isolation), signed:
+  double residual_isolator_displacement = 0.0;  // the middle of the range over the window
+  double residual_oscillation = 0.0;            // half that range
+  double isolator_displacement_at_excitation_end = 0.0;
 };
 
 ResponsePeaks ComputePeaks(const AnalysisSetup& setup,

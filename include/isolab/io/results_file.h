@@ -1,25 +1,40 @@
-// HDF5 results of a time-history run. Layout (n = output rows):
-//   /time                                    (n)
-//   /displacement /velocity /acceleration    (n x dofs), relative to the ground
-//   /absolute_acceleration                   (n x dofs)
-//   /connection_force                        (n x connections)
-//   /isolator/displacement /isolator/force   (n), /isolator/component_force (n x components)
-//   /story/drift /story/shear                (n x stories)
-//   /energy/{input,kinetic,damping,elastic,hysteretic}  (n)
-//   /model_yaml                              the model file's text (a string dataset)
-// Every numeric dataset has a "units" attribute; the root's attributes give the record and its
-// scale, the integrator options, the run summary and the isolab version. Story shear and base
-// shear are the connections' (spring) forces; the superstructure's viscous forces are not in them.
-// The file is written under a temporary name and renamed, so no partial file ever has the final
-// name. A run that failed keeps its rows up to the failure, with termination = "failed" and the
-// message.
+// Results of a time-history run, in the format the file's extension names:
+//
+// .h5 / .hdf5 (docs/results.md has every dataset with its shape, units and meaning; n = output
+// rows; every numeric dataset has a "units" attribute, every 2-D one a "columns" attribute
+// naming its columns):
+//   /time (n), /ground_acceleration (n, with a record)
+//   /displacement /velocity /acceleration (n x dofs), relative to the ground; columns "base",
+//     "floor 1", ... (an SDOF: "mass")
+//   /absolute_acceleration (n x dofs)
+//   /connection_force (n x connections): columns "isolation", the stories' names
+//   /isolator/displacement /isolator/force (n), /isolator/component_force (n x components)
+//   /story/drift /story/drift_ratio (%) /story/shear (n x stories), /story/height (stories)
+//   /energy/{input,kinetic,damping,elastic,hysteretic} (n)
+//   /model_summary/...: total mass and weight, fixed-base periods, isolated period at the
+//     trial displacement, the record's PGA (model_summary.h)
+//   /model_yaml: the model file's text
+//   attributes of /: the record (path, format, units and where they came from, step, scale,
+//     PGA), the units, the integrator and its counts (integers), termination and message, the
+//     energy balance error, the excitation's end, the free vibration, the residual isolator
+//     displacement, warnings, the isolab version.
+// .csv: the same time histories as columns named "<series>[/<column>] [<units>]", e.g.
+//   "time [s]", "displacement/floor 1 [mm]", "isolator/component_force/c1 [kN]", after '#'
+//   comment lines with the model, the record (units, scale, PGA), the summary and the warnings
+//   (pandas: read_csv(path, comment="#")).
+//
+// Story shear and base shear are the connections' (spring) forces; the superstructure's viscous
+// forces are not in them. A run that failed keeps its rows up to the failure, with termination
+// "failed" and the message. Files are written atomically (atomic_file.h).
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
+#include "isolab/io/response_peaks.h"
 
 namespace isolab::io {
 
@@ -29,10 +44,18 @@ struct RunDescription {
   const AnalysisSection* analysis = nullptr;
   const integrators::ResponseHistory* response = nullptr;
   const integrators::RunSummary* summary = nullptr;
+  const ResponsePeaks* peaks = nullptr;  // ComputePeaks(*setup, *response)
   std::string version;
 };
 
-// Throws InputError when the file cannot be written.
+// Throws InputError({path}, ...) when the extension is not .h5, .hdf5 or .csv, or the path cannot
+// be an output (atomic_file.h). Commands call it before the analysis.
+void CheckResultsPath(const std::string& path);
+
+// Throws InputError when the file cannot be written (or CheckResultsPath fails).
 void WriteResultsFile(const std::string& path, const RunDescription& run);
+
+// Every warning about the model and the run (model_summary.h), for printing and the files.
+std::vector<std::string> RunWarnings(const RunDescription& run);
 
 }  // namespace isolab::io

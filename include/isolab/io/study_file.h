@@ -12,17 +12,24 @@
 //     - {name: other, model: other_building.yaml}   # a whole model file instead of the building
 //     - {name: fixed, fixed_base: true}             # the building without isolation
 //   reference: thm1                                 # ratios are to this variant; default: first
-//   records: [../../ground_motions/*.at2, extra/rec.csv]   # files or globs (* ? [..] in the
-//                                                   # file name), each glob sorted by name
+//   records:                                        # files or globs (* ? [..] in the file
+//     - ../../ground_motions/*.at2                  # name), each glob sorted by name; units
+//     - {file: extra/rec.txt, units: gal, dt: 0.01, scale: 1.2}   # and step from each file's
+//                                                   # header, else from its entry (never the
+//                                                   # building's ground_motion); an entry's
+//                                                   # scale multiplies every study scale
 //   scales: [0.5, 1.0, 1.5]                         # replace the building's ground_motion.scale
 //   output: {directory: results}                    # per-run HDF5 and summary; relative to the
 //                                                   # working directory, like a model's output
+//   free_vibration: auto                            # after each record (or a time, 0 for none);
+//                                                   # default: each model's analysis section
 //
 // The building's analysis section (dt, duration, integrator) applies to every run; a `model`
 // variant brings its own. Every error is an InputError "file:line:col: key path: what (allowed)".
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,8 +45,12 @@ struct StudyVariant {
 };
 
 struct StudyRecord {
-  std::string name;  // the file's stem, unique within a study
-  std::string path;  // as found (relative to the working directory or absolute)
+  std::string name;    // the file's stem, unique within a study
+  std::string path;    // as found (relative to the working directory or absolute)
+  std::string units;   // given by its entry; empty: from the file's header
+  double dt = 0.0;     // (the building's time unit) given by its entry; 0: from the file
+  double scale = 1.0;  // multiplies the study's scales
+  std::string entry;   // "study.yaml:12:5: records[2]", for messages about what it gives
 };
 
 struct StudyFile {
@@ -51,7 +62,8 @@ struct StudyFile {
   std::size_t reference = 0;  // index into variants
   std::vector<StudyRecord> records;
   std::vector<double> scales;
-  std::string output_directory;  // empty: not given
+  std::string output_directory;                 // empty: not given
+  std::optional<FreeVibration> free_vibration;  // (the building's time unit); empty: the models'
 };
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types, a

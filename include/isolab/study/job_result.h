@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ struct JobResult {
   std::string message;                 // why the run failed; empty when it completed
   QuantityValues values = NoValues();  // NaN when failed or not applicable
   std::string file;  // the run's HDF5 results, relative to the output folder; empty: none written
+  std::string record_units;  // the record's units as read ("g", "cm/s^2"); empty: not read
+  double pga = std::numeric_limits<double>::quiet_NaN();  // of the scaled record (g)
+  std::vector<std::string> warnings;                      // implausible values (model_summary.h)
   double wall_seconds = 0.0;  // for progress only: never in a summary (machine-dependent)
 };
 

@@ -4,7 +4,9 @@
 //   story_drift_ratio               peak |drift| / height over every story with a height (%)
 //   floor_acceleration              peak |absolute acceleration| over the floors above the
 //                                   isolation (every DOF of a model without stories) (g)
-//   residual_isolator_displacement  |u| of the isolation layer at the end of the run (length)
+//   residual_isolator_displacement  |u| of the isolation layer where it comes to rest after the
+//                                   free vibration that follows the record (response_peaks.h)
+//                                   (length)
 // Lengths and forces are in the study's units (its building's), whatever the variant's model
 // uses. A quantity a variant does not have (a fixed base has no isolator) is NaN.
 #pragma once
@@ -17,6 +19,7 @@
 
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
+#include "isolab/io/response_peaks.h"
 #include "isolab/io/units.h"
 
 namespace isolab::study {
@@ -47,10 +50,11 @@ std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units);
 // All NaN: nothing measured.
 QuantityValues NoValues();
 
-// `model_units` are the run's model's, `study_units` the study's.
+// `model_units` are the run's model's, `study_units` the study's; `peaks` are the run's
+// (io::ComputePeaks).
 QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
-                                 const io::UnitSystem& model_units,
+                                 const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
                                  const io::UnitSystem& study_units);
 
 }  // namespace isolab::study

@@ -1,0 +1,33 @@
+# cmake --install: the isolab executable, the plot scripts it runs (share/isolab/scripts, which
+# --plot finds relative to the executable), the public headers, the libraries and a CMake package
+# (find_package(isolab); targets isolab::<area>). tests/install/ builds a consumer against it.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(isolab_libraries core hysteresis structure integrators spectra identification diagnosis io
+                     study)
+set(isolab_library_targets isolab_klu)  # KLU's include path and libraries travel with io
+foreach(area ${isolab_libraries})
+  set_target_properties(isolab_${area} PROPERTIES EXPORT_NAME ${area})
+  list(APPEND isolab_library_targets isolab_${area})
+endforeach()
+set_target_properties(isolab_klu PROPERTIES EXPORT_NAME klu)
+
+install(TARGETS isolab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS ${isolab_library_targets} EXPORT isolabTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/isolab DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+file(GLOB isolab_installed_scripts ${PROJECT_SOURCE_DIR}/scripts/plot_*.py)
+install(PROGRAMS ${isolab_installed_scripts} DESTINATION ${CMAKE_INSTALL_DATADIR}/isolab/scripts)
+
+install(EXPORT isolabTargets NAMESPACE isolab::
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/isolab)
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/isolabConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/isolabConfig.cmake
+                              INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/isolab)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/isolabConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/isolabConfig.cmake
+              ${PROJECT_BINARY_DIR}/isolabConfigVersion.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/isolab)

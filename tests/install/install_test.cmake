@@ -1,0 +1,34 @@
+# cmake --install into a fresh prefix, then a consumer project built against it with
+# find_package(isolab), and the installed executable's --plot finding its scripts beside it.
+# Arguments: BUILD_DIR, SOURCE_DIR, WORK_DIR, LAUNCHER (a compiler launcher such as ccache, or
+# empty). --plot needs Debian's python3-matplotlib and python3-h5py (scripts/setup.sh).
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "failed (${status}): ${ARGN}\n${out}")
+  endif()
+  message(STATUS "${out}")
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+
+set(launcher)
+if(LAUNCHER)
+  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
+endif()
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install/consumer -B ${WORK_DIR}/consumer
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} ${launcher})
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
+run(${WORK_DIR}/consumer/isolab_consumer ${SOURCE_DIR}/models/paper/table7_thm1_hard.yaml)
+
+# The installed executable: its version, and --plot with the scripts from share/isolab/scripts
+# (the build tree's copies are not beside it).
+run(${prefix}/bin/isolab --version)
+file(MAKE_DIRECTORY ${WORK_DIR}/run)
+run(${prefix}/bin/isolab run ${SOURCE_DIR}/tests/cli/data/run_base.yaml
+    -o ${WORK_DIR}/run/sdof.h5 --free-vibration 0 --plot)
+if(NOT EXISTS ${WORK_DIR}/run/sdof_hysteresis.png)
+  message(FATAL_ERROR "the installed isolab --plot wrote no sdof_hysteresis.png")
+endif()

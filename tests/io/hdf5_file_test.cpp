@@ -1,0 +1,140 @@
+// The one HDF5 writer: UTF-8 strings h5py reads as str, int64 integers, and Rows, the chunked
+// datasets a run will stream its histories into, read back through the HDF5 C API.
+#include "isolab/io/hdf5_file.h"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "isolab/core/errors.h"
+#include "leftover_temporaries.h"
+
+namespace isolab::io {
+namespace {
+
+std::filesystem::path FreshFile(const std::string& name) {
+  const auto folder = std::filesystem::temp_directory_path() / "isolab_hdf5_file_test";
+  std::filesystem::create_directories(folder);
+  std::filesystem::remove(folder / name);
+  return folder / name;
+}
+
+std::vector<hsize_t> Dimensions(hid_t dataset) {
+  const hid_t space = H5Dget_space(dataset);
+  std::vector<hsize_t> dims(H5Sget_simple_extent_ndims(space));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  H5Sclose(space);
+  return dims;
+}
+
+TEST(Hdf5File, RowsGrowAsTheyAreAppended) {
+  const auto path = FreshFile("rows.h5");
+  {
+    Hdf5File file(path.string());
+    file.CreateGroup("history");
+    {
+      Hdf5File::Rows matrix = file.CreateRows("history/matrix", 3, "mm", 2);
+      Hdf5File::Rows vector = file.CreateRows("history/vector", 0, "s", 0);
+      matrix.Append(std::vector<double>{1, 2, 3});
+      matrix.Append(std::vector<double>{4, 5, 6, 7, 8, 9, 10, 11, 12});
+      EXPECT_EQ(matrix.rows(), 4u);
+      for (int k = 0; k < 5; ++k) vector.Append(std::vector<double>{0.5 * k});
+      EXPECT_THROW(matrix.Append(std::vector<double>{1, 2}), InputError);  // not whole rows
+      // Commit with a Rows still open would leave the file open: refused.
+      EXPECT_THROW(file.Commit(), InputError);
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));  // the failed commit wrote nothing
+  EXPECT_TRUE(testing::LeftoverTemporaries(path).empty());
+
+  {
+    Hdf5File file(path.string());
+    file.CreateGroup("history");
+    {
+      Hdf5File::Rows matrix = file.CreateRows("history/matrix", 3, "mm", 2);
+      matrix.Append(std::vector<double>{1, 2, 3});
+      matrix.Append(std::vector<double>{4, 5, 6, 7, 8, 9, 10, 11, 12});
+    }
+    file.Commit();
+  }
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t dataset = H5Dopen2(file, "history/matrix", H5P_DEFAULT);
+  EXPECT_EQ(Dimensions(dataset), (std::vector<hsize_t>{4, 3}));
+  const hid_t create = H5Dget_create_plist(dataset);
+  EXPECT_EQ(H5Pget_layout(create), H5D_CHUNKED);
+  H5Pclose(create);
+  std::vector<double> values(12);
+  H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  EXPECT_EQ(values, (std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+  H5Dclose(dataset);
+  H5Fclose(file);
+}
+
+TEST(Hdf5File, TextIsUtf8AndIntegersAreIntegers) {
+  const auto path = FreshFile("types.h5");
+  {
+    Hdf5File file(path.string());
+    const std::vector<std::string> names = {"base", "floor 1", "étage 2"};
+    file.WriteStrings("names", {names.size()}, names);
+    file.WriteIntegers("counts", {2}, std::vector<std::int64_t>{3, 5'000'000'000});
+    file.WriteText("text", "units: {force: kN}\n");
+    file.WriteAttribute("/", "record", "El Centro");
+    file.WriteIntegerAttribute("/", "steps", 6000);
+    file.WriteStringsAttribute("names", "columns", names);
+    file.WriteStringsAttribute("/", "none", {});  // an empty list is written, not refused
+    file.Commit();
+  }
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t names = H5Dopen2(file, "names", H5P_DEFAULT);
+  const hid_t type = H5Dget_type(names);
+  EXPECT_GT(H5Tis_variable_str(type), 0);
+  EXPECT_EQ(H5Tget_cset(type), H5T_CSET_UTF8);
+  std::vector<char*> read(3);
+  H5Dread(names, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, read.data());
+  EXPECT_STREQ(read[2], "étage 2");
+  const hid_t space = H5Dget_space(names);
+  H5Dvlen_reclaim(type, space, H5P_DEFAULT, read.data());
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Dclose(names);
+
+  const hid_t counts = H5Dopen2(file, "counts", H5P_DEFAULT);
+  const hid_t count_type = H5Dget_type(counts);
+  EXPECT_EQ(H5Tget_class(count_type), H5T_INTEGER);
+  EXPECT_EQ(H5Tget_size(count_type), 8u);
+  std::int64_t values[2];
+  H5Dread(counts, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values);
+  EXPECT_EQ(values[1], 5'000'000'000);
+  H5Tclose(count_type);
+  H5Dclose(counts);
+
+  const hid_t text = H5Dopen2(file, "text", H5P_DEFAULT);
+  const hid_t text_type = H5Dget_type(text);
+  EXPECT_EQ(H5Tget_cset(text_type), H5T_CSET_UTF8);
+  std::string value(H5Tget_size(text_type), '\0');
+  H5Dread(text, text_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data());
+  EXPECT_EQ(value, "units: {force: kN}\n");
+  H5Tclose(text_type);
+  H5Dclose(text);
+
+  const hid_t steps = H5Aopen(file, "steps", H5P_DEFAULT);
+  const hid_t steps_type = H5Aget_type(steps);
+  EXPECT_EQ(H5Tget_class(steps_type), H5T_INTEGER);
+  H5Tclose(steps_type);
+  H5Aclose(steps);
+  const hid_t record = H5Aopen(file, "record", H5P_DEFAULT);
+  const hid_t record_type = H5Aget_type(record);
+  EXPECT_GT(H5Tis_variable_str(record_type), 0);
+  EXPECT_EQ(H5Tget_cset(record_type), H5T_CSET_UTF8);
+  H5Tclose(record_type);
+  H5Aclose(record);
+  H5Fclose(file);
+}
+
+}  // namespace
+}  // namespace isolab::io
