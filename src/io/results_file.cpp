@@ -113,6 +113,8 @@ void WriteContents(hid_t file, const RunDescription& run) {
   WriteStringAttribute(file, "integrator", DescribeIntegrator(*run.analysis, setup.grid.dt));
   WriteNumberAttribute(file, "ida_steps", static_cast<double>(summary.ida_steps));
   WriteNumberAttribute(file, "events", static_cast<double>(summary.events));
+  WriteNumberAttribute(file, "newton_iterations", static_cast<double>(summary.newton_iterations));
+  WriteNumberAttribute(file, "solves_per_step", summary.SolvesPerStep());
   WriteStringAttribute(file, "termination", summary.ok() ? "completed" : "failed");
   WriteStringAttribute(file, "message", summary.message);
   WriteNumberAttribute(file, "energy_balance_error", summary.energy_balance_error);

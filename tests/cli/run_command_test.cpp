@@ -70,6 +70,16 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   for (const char* attribute : {"record", "integrator", "isolab_version", "units"}) {
     EXPECT_GT(H5Aexists(file, attribute), 0) << attribute;
   }
+  // Solves per step: Newton iterations over completed steps, the same in JSON and the file.
+  const double solves = json["newton"]["solves_per_step"].get<double>();
+  EXPECT_DOUBLE_EQ(solves, json["newton"]["iterations"].get<double>() /
+                               json["steps_completed"].get<double>());
+  double attribute_solves = 0.0;
+  const hid_t attribute = H5Aopen(file, "solves_per_step", H5P_DEFAULT);
+  ASSERT_GE(attribute, 0);
+  H5Aread(attribute, H5T_NATIVE_DOUBLE, &attribute_solves);
+  H5Aclose(attribute);
+  EXPECT_EQ(attribute_solves, solves);
   H5Fclose(file);
 }
 
