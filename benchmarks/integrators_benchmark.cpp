@@ -1,15 +1,23 @@
 // Cost per Newmark-Newton step (full Newton, KLU), all output recorded:
 //  * an SDOF on one THM1 isolator, 10,000 steps (target <= 0.2 us per step);
-//  * the five-story building on the nine-component Table 9 isolator (target <= 1 us per step);
+//  * the five-story building on the nine-component Table 9 isolator (target <= 1 us per step),
+//    and the same arithmetic written by hand for that one model (newmark_floor.h), the floor
+//    the general code is measured against;
 //  * an isolated shear building of 5 to 1000 stories (Rayleigh damping keeps the tangent sparse),
-//    for the growth of the cost with size;
+//    on the Table 9 isolator and on a linear isolator that never yields, for the growth of the
+//    cost with size;
+//  * the set-up of such a building (masses, connections, Rayleigh damping from two modes);
 //  * the same five-story building on IDA at rtol 1e-4, 1e-6 and 1e-8 (60 s of record, output at
 //    0.01 s), with its internal steps and events per second of record.
-// Counter "per_step" is seconds per step. The excitation is isolab's seeded filtered noise.
+// Counters: "per_step" is seconds per step, "solves_per_step" linear solves (Newton
+// iterations) per step. The excitation is isolab's seeded filtered noise.
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "isolab/hysteresis/law_parameters.h"
@@ -18,6 +26,7 @@
 #include "isolab/io/model_file.h"
 #include "isolab/io/synthetic_motion.h"
 #include "isolab/structure/shear_building.h"
+#include "newmark_floor.h"
 
 namespace isolab::integrators {
 namespace {
@@ -41,20 +50,23 @@ ParallelAssembly Single(LawType type, std::vector<double> math) {
   return hysteresis::SingleLaw(type, std::move(math));
 }
 
-void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps) {
-  const Excitation excitation = Noise();
-  ResponseHistory response;
-  long iterations = 0;
-  for (auto _ : state) {
-    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, {}, &response);
-    if (!summary.ok()) state.SkipWithError(summary.message.c_str());
-    iterations += summary.newton_iterations;
-  }
+void CountSteps(benchmark::State& state, int steps, long solves) {
   state.counters["per_step"] =
       benchmark::Counter(static_cast<double>(state.iterations()) * steps,
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["newton_per_step"] =
-      static_cast<double>(iterations) / (state.iterations() * steps);
+  state.counters["solves_per_step"] = static_cast<double>(solves) / (state.iterations() * steps);
+}
+
+void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps) {
+  const Excitation excitation = Noise();
+  ResponseHistory response;
+  long solves = 0;
+  for (auto _ : state) {
+    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, {}, &response);
+    if (!summary.ok()) state.SkipWithError(summary.message.c_str());
+    solves += summary.newton_iterations;
+  }
+  CountSteps(state, steps, solves);
 }
 
 void BM_SdofThm1(benchmark::State& state) {
@@ -82,14 +94,87 @@ ParallelAssembly Table9() {
       .isolation;
 }
 
+// A linear spring and a dashpot: 2.5 s and 10 % damping on the whole building's mass.
+ParallelAssembly LinearIsolator(int stories) {
+  const double mass = 0.025 * (stories + 1), w = 2.0 * std::numbers::pi / 2.5;
+  using hysteresis::LawParameters, hysteresis::ParameterForm;
+  const auto law = [](LawType type, double value) {
+    return LawParameters::Make(type, ParameterForm::kMathematical, std::vector<double>{value});
+  };
+  return ParallelAssembly({{"spring", law(LawType::kLinearSpring, w * w * mass)},
+                           {"dashpot", law(LawType::kDashpot, 2.0 * 0.1 * w * mass)}});
+}
+
 void BM_FiveStoryTable9(benchmark::State& state) {
   RunSteps(state, IsolatedBuilding(5, Table9()), 6000);
+}
+
+// The hand-written floor on the same model, record and step; its response must be RunNewmark's.
+void BM_FiveStoryTable9Floor(benchmark::State& state) {
+  constexpr int kSteps = 6000;
+  const structure::Structure building = IsolatedBuilding(5, Table9());
+  const auto& connections = building.connections();
+  std::array<hysteresis::SeriesSlider, 9> isolator;
+  for (int c = 0; c < 9; ++c) {
+    isolator[c] = std::get<hysteresis::SeriesSlider>(connections[0].assembly.kernels()[c]);
+  }
+  std::array<hysteresis::ElasticSpring, 5> stories;
+  for (int s = 0; s < 5; ++s) {
+    stories[s] = std::get<hysteresis::ElasticSpring>(connections[s + 1].assembly.kernels()[0]);
+  }
+  using Floor = benchmarks::NewmarkFloor<5, 9>;
+  Floor::Vector mass;
+  Floor::Matrix damping;
+  const Eigen::MatrixXd c = Eigen::MatrixXd(building.viscous_damping());
+  for (int i = 0; i < Floor::kDofs; ++i) {
+    mass[i] = building.mass()[i];
+    for (int j = 0; j < Floor::kDofs; ++j) damping[i][j] = c(i, j);
+  }
+  Floor floor(mass, damping, isolator, stories);
+  const Excitation excitation = Noise();
+  Floor::Output output;
+  long solves = floor.Run(excitation.ground_acceleration, 0.01, kSteps, &output);
+
+  ResponseHistory response;
+  const RunSummary summary = RunNewmark(building, excitation, {0.01, kSteps}, {}, &response);
+  const double peak = response.displacement.cwiseAbs().maxCoeff();
+  for (int row = 0; row <= kSteps; ++row) {
+    for (int i = 0; i < Floor::kDofs; ++i) {
+      if (std::abs(output.displacement[row * Floor::kDofs + i] - response.displacement(row, i)) >
+          1e-9 * peak) {
+        state.SkipWithError("the floor's response differs from RunNewmark's");
+        return;
+      }
+    }
+  }
+  if (solves != summary.newton_iterations) {
+    state.SkipWithError("the floor makes a different number of solves than RunNewmark");
+    return;
+  }
+  solves = 0;
+  for (auto _ : state) solves += floor.Run(excitation.ground_acceleration, 0.01, kSteps, &output);
+  CountSteps(state, kSteps, solves);
 }
 
 void BM_StoriesTable9(benchmark::State& state) {
   const int stories = static_cast<int>(state.range(0));
   // A cost benchmark, not a design: the same bearing under every height.
   RunSteps(state, IsolatedBuilding(stories, Table9()), 2000);
+}
+
+// Without yielding, every step's equations are linear: one solve per step is the ideal.
+void BM_StoriesLinearIsolator(benchmark::State& state) {
+  const int stories = static_cast<int>(state.range(0));
+  RunSteps(state, IsolatedBuilding(stories, LinearIsolator(stories)), 10000);
+}
+
+// Building the structure: masses, connections, the sparse pattern and Rayleigh damping.
+void BM_SetUpRayleighBuilding(benchmark::State& state) {
+  const int stories = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const structure::Structure building = IsolatedBuilding(stories, LinearIsolator(stories));
+    benchmark::DoNotOptimize(building.viscous_damping().nonZeros());
+  }
 }
 
 void BM_FiveStoryTable9Ida(benchmark::State& state) {
@@ -110,6 +195,7 @@ void BM_FiveStoryTable9Ida(benchmark::State& state) {
 
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryTable9Floor)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Ida)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesTable9)
     ->Arg(5)
@@ -119,6 +205,8 @@ BENCHMARK(BM_StoriesTable9)
     ->Arg(500)
     ->Arg(1000)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StoriesLinearIsolator)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SetUpRayleighBuilding)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace isolab::integrators

@@ -134,10 +134,11 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
                summary.error_test_failures, summary.wall_seconds);
   } else {
     fmt::print(out,
-               "Newton: {} iterations (at most {} in a step), {} factorisations, {} step cuts; "
-               "{:.3f} s\n",
-               summary.newton_iterations, summary.max_iterations_in_a_step, summary.factorisations,
-               summary.step_cuts, summary.wall_seconds);
+               "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
+               "factorisations, {} step cuts; {:.3f} s\n",
+               summary.newton_iterations, summary.SolvesPerStep(),
+               summary.max_iterations_in_a_step,
+               summary.factorisations, summary.step_cuts, summary.wall_seconds);
   }
   fmt::print(out, "results: {}\n", output);
 }
@@ -204,6 +205,7 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection
                    {"error_test_failures", summary.error_test_failures}};
   } else {
     json["newton"] = {{"iterations", summary.newton_iterations},
+                      {"solves_per_step", summary.SolvesPerStep()},
                       {"max_iterations_in_a_step", summary.max_iterations_in_a_step},
                       {"factorisations", summary.factorisations},
                       {"step_cuts", summary.step_cuts}};

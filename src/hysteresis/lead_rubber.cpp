@@ -35,12 +35,13 @@ double LeadCoreHeating::HalfStepDecay(double t_n, double dt) const {
 
 void LeadRubber::Update(const LawState& committed, const LawInput& in, LawState* trial,
                         LawResponse* response) const {
-  const UnitSlider::Step step = slider.Update(committed.u, committed.slider, in.u);
+  const UnitSlider::Step step = slider.Update(committed.u, committed.slider, committed.slip, in.u);
   const double z_n = slider.Z(committed.u, committed.slider);
   trial->u = in.u;
   trial->v = in.v;
   trial->t = in.t;
   trial->slider = step.slider;
+  trial->slip = step.slip;
   trial->accumulated_slip = committed.accumulated_slip + step.travel;
   response->damping = 0.0;
   if (!heating.heats()) {
@@ -74,9 +75,10 @@ void LeadRubber::Update(const LawState& committed, const LawInput& in, LawState*
   trial->dissipated = committed.dissipated + work - stored_change;
   trial->force = response->force = kd * in.u + strength * step.z;
   // Slipping, d travel / d u = z = s and d T_1 / d travel = decay Qd0 / (C w_b), so the strength
-  // falls as d Qd / d u = -E2 Qd(T_1) decay Qd0 s / (C w_b); z s = 1.
+  // falls as d Qd / d u = -E2 Qd(T_1) decay Qd0 s / (C w_b); z s = 1. Decided by the phase, not
+  // the travel, so that a slip going on from no increment has its slip-side tangent.
   const double softening =
-      step.travel > 0.0 ? e2 * strength * decay * qd / (heating.capacity * w_b) : 0.0;
+      step.slip != 0 ? e2 * strength * decay * qd / (heating.capacity * w_b) : 0.0;
   response->stiffness = kd + strength * step.dz_du - softening;
 }
 

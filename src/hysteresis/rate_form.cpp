@@ -262,6 +262,7 @@ LawState RateFormState(const LawKernel& kernel, const LawPhase& phase, double u,
       std::holds_alternative<FrictionPendulum>(kernel) ||
       std::holds_alternative<LeadRubber>(kernel)) {
     state.slider = z;
+    state.slip = phase.slip;
   }
   if (std::holds_alternative<LeadRubber>(kernel)) state.temperature = w;
   return state;

@@ -73,6 +73,7 @@ void WriteRunAttributes(Hdf5File& file, const RunDescription& run) {
   file.WriteAttribute("/", "dt", setup.grid.dt);
   integer("steps", summary.steps);
   integer("newton_iterations", summary.newton_iterations);
+  file.WriteAttribute("/", "solves_per_step", summary.SolvesPerStep());
   integer("max_iterations_in_a_step", summary.max_iterations_in_a_step);
   integer("factorisations", summary.factorisations);
   integer("step_cuts", summary.step_cuts);

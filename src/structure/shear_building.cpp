@@ -1,9 +1,12 @@
 #include "isolab/structure/shear_building.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "isolab/structure/tridiagonal_pencil.h"
 
 namespace isolab::structure {
 namespace {
@@ -18,17 +21,31 @@ Eigen::VectorXd FloorMasses(const std::vector<Story>& stories) {
   return mass;
 }
 
-// Tridiagonal stiffness of the fixed-base superstructure with initial story stiffnesses.
-SparseMatrix StoryStiffness(const std::vector<Story>& stories) {
+// Tridiagonal stiffness of the fixed-base superstructure with initial story stiffnesses: story i
+// joins floor i to floor i - 1 (to the ground for i = 0).
+TridiagonalPencil StoryPencil(const std::vector<Story>& stories) {
   const int n = static_cast<int>(stories.size());
-  std::vector<Eigen::Triplet<double>> entries;
+  TridiagonalPencil pencil{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(std::max(n - 1, 0)),
+                           FloorMasses(stories)};
   for (int i = 0; i < n; ++i) {
     const double k = InitialStiffness(stories[i].assembly);
-    entries.emplace_back(i, i, k);
+    pencil.diagonal[i] += k;
     if (i > 0) {
-      entries.emplace_back(i - 1, i - 1, k);
-      entries.emplace_back(i - 1, i, -k);
-      entries.emplace_back(i, i - 1, -k);
+      pencil.diagonal[i - 1] += k;
+      pencil.off_diagonal[i - 1] = -k;
+    }
+  }
+  return pencil;
+}
+
+SparseMatrix StoryStiffness(const TridiagonalPencil& pencil) {
+  const Eigen::Index n = pencil.diagonal.size();
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, pencil.diagonal[i]);
+    if (i > 0) {
+      entries.emplace_back(i - 1, i, pencil.off_diagonal[i - 1]);
+      entries.emplace_back(i, i - 1, pencil.off_diagonal[i - 1]);
     }
   }
   SparseMatrix k(n, n);
@@ -46,8 +63,8 @@ SparseMatrix SuperstructureDampingMatrix(const std::vector<Story>& stories,
         "damping: modal damping couples every floor (a dense matrix); with more than " +
         std::to_string(kMaxModalDampingStories) + " stories use rayleigh");
   }
-  const Modes modes = FixedBaseModes(stories);
-  const Eigen::VectorXd mass = FloorMasses(stories);
+  const TridiagonalPencil pencil = StoryPencil(stories);
+  const Eigen::VectorXd& mass = pencil.mass;
 
   if (damping.kind == SuperstructureDamping::Kind::kRayleigh) {
     const int m1 = damping.rayleigh_modes[0], m2 = damping.rayleigh_modes[1];
@@ -55,7 +72,9 @@ SparseMatrix SuperstructureDampingMatrix(const std::vector<Story>& stories,
       throw std::invalid_argument("damping.modes: two different modes between 1 and " +
                                   std::to_string(n));
     }
-    const double w1 = modes.circular_frequencies[m1 - 1], w2 = modes.circular_frequencies[m2 - 1];
+    // Two frequencies, each by bisection in O(n): no dense eigensolution of every mode.
+    const double w1 = std::sqrt(std::max(pencil.Eigenvalue(m1), 0.0));
+    const double w2 = std::sqrt(std::max(pencil.Eigenvalue(m2), 0.0));
     const double z1 = damping.rayleigh_ratios[0], z2 = damping.rayleigh_ratios[1];
     // zeta(w) = a0 / (2 w) + a1 w / 2 through both points.
     const double a1 = 2.0 * (z2 * w2 - z1 * w1) / (w2 * w2 - w1 * w1);
@@ -69,10 +88,11 @@ SparseMatrix SuperstructureDampingMatrix(const std::vector<Story>& stories,
     SparseMatrix m(n, n);
     m.reserve(Eigen::VectorXi::Constant(n, 1));
     for (int i = 0; i < n; ++i) m.insert(i, i) = mass[i];
-    return a0 * m + a1 * StoryStiffness(stories);
+    return a0 * m + a1 * StoryStiffness(pencil);
   }
 
-  // Modal: C = M Phi diag(2 zeta_n w_n) Phi^T M with mass-normalised Phi.
+  // Modal: C = M Phi diag(2 zeta_n w_n) Phi^T M with mass-normalised Phi, which needs every mode.
+  const Modes modes = FixedBaseModes(stories);
   const auto& ratios = damping.modal_ratios;
   if (ratios.size() != 1 && ratios.size() != static_cast<std::size_t>(n)) {
     throw std::invalid_argument("damping.ratios: give one ratio or one per mode (" +
@@ -95,10 +115,10 @@ double InitialStiffness(const hysteresis::ParallelAssembly& assembly) {
 }
 
 Modes FixedBaseModes(const std::vector<Story>& stories) {
-  const Eigen::MatrixXd k = Eigen::MatrixXd(StoryStiffness(stories));
-  const Eigen::VectorXd mass = FloorMasses(stories);
+  const TridiagonalPencil pencil = StoryPencil(stories);
+  const Eigen::VectorXd& mass = pencil.mass;
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      k, Eigen::MatrixXd(mass.asDiagonal()));
+      Eigen::MatrixXd(StoryStiffness(pencil)), Eigen::MatrixXd(mass.asDiagonal()));
   if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis failed");
   Modes modes;
   modes.circular_frequencies = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();

@@ -167,6 +167,16 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   EXPECT_NEAR(NumberAttribute(file, "record_pga_g").second, 0.6 * 0.35, 1e-9);
   EXPECT_EQ(Utf8Attribute(file, "/", "record_units"), "g");
   EXPECT_EQ(Utf8Attribute(file, "/", "record_units_source"), "header");
+  // Solves per step: Newton iterations over completed steps, the same in JSON and the file.
+  const double solves = json["newton"]["solves_per_step"].get<double>();
+  EXPECT_DOUBLE_EQ(solves, json["newton"]["iterations"].get<double>() /
+                               json["steps_completed"].get<double>());
+  double attribute_solves = 0.0;
+  const hid_t attribute = H5Aopen(file, "solves_per_step", H5P_DEFAULT);
+  ASSERT_GE(attribute, 0);
+  H5Aread(attribute, H5T_NATIVE_DOUBLE, &attribute_solves);
+  H5Aclose(attribute);
+  EXPECT_EQ(attribute_solves, solves);
   H5Fclose(file);
 }
 

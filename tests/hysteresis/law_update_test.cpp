@@ -185,6 +185,42 @@ TEST_P(LawUpdate, TangentIsTheDerivativeOfTheUpdateInEveryPhase) {
   }
 }
 
+// Newton's predictor evaluates a law at no increment from its committed state. After a slipping
+// increment that point is a corner of the update (slip on one side, stick on the other); the
+// tangent there must be the one-sided derivative on the side the motion came from, so a slip
+// that goes on starts on the slip tangent, whatever the round-off in the stick test.
+TEST_P(LawUpdate, AtNoIncrementTheTangentIsTheDerivativeOfContinuedMotion) {
+  const LawCase& c = GetParam();
+  const double h = 1e-4 * c.scale;
+  int checked = 0, slipping = 0;
+  LawState committed;
+  for (const double u : Path(c.scale, 97)) {
+    const Step step = Trial(c.kernel, committed, u);
+    const double direction = u >= committed.u ? 1.0 : -1.0;
+    const bool slipped = step.state.slider != committed.slider;
+    committed = step.state;
+    const double at = Trial(c.kernel, committed, u).response.force;
+    const double one = Trial(c.kernel, committed, u + direction * h).response.force;
+    const double two = Trial(c.kernel, committed, u + 2 * direction * h).response.force;
+    const double near = (one - at) / (direction * h), far = (two - one) / (direction * h);
+    const double size = std::max({1.0, std::abs(near), std::abs(far)});
+    if (std::abs(near - far) >= 1e-5 * size) continue;  // a breakpoint within 2h ahead
+    EXPECT_NEAR(Trial(c.kernel, committed, u).response.stiffness, near, 1e-5 * size)
+        << c.name << " at u = " << u << (slipped ? " after a slipping increment" : "");
+    ++checked;
+    slipping += slipped;
+  }
+  EXPECT_GT(checked, 500);
+  const bool has_slider = std::holds_alternative<SeriesSlider>(c.kernel) ||
+                          std::holds_alternative<ParallelSlider>(c.kernel) ||
+                          std::holds_alternative<DegradingSlider>(c.kernel) ||
+                          std::holds_alternative<FrictionPendulum>(c.kernel) ||
+                          std::holds_alternative<LeadRubber>(c.kernel);
+  if (has_slider) {
+    EXPECT_GT(slipping, 100) << c.name << ": too few corners after a slip";
+  }
+}
+
 // The slider's own laws, checked on the kernel's parts rather than its update formula: the
 // slider force never exceeds fs; a slider that moved carries +-fs in the direction it moved; its
 // work is fs times its travel.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "integrators/chopra_chapter5.h"
@@ -134,6 +135,61 @@ TEST(Newmark, EnergyBalancesForAHystereticSdofUnderAPulse) {
   const Energies& end = response.energies.back();
   EXPECT_GT(end.hysteretic, 0.1 * end.input);
   EXPECT_LT(summary.energy_balance_error, 1e-3);
+}
+
+// Sampled finely enough that every analysis step of `dt` sees the exact load.
+Excitation SampledForce(double dt, int steps, const std::function<double(double)>& force) {
+  Excitation excitation;
+  AppliedForce applied{0, {dt, {}}};
+  for (int i = 0; i <= steps; ++i) applied.force.values.push_back(force(i * dt));
+  excitation.forces.push_back(applied);
+  return excitation;
+}
+
+TEST(Newmark, AContinuedSlipTakesOneSolvePerStep) {
+  // While an elastoplastic spring slips, the step's equations are linear (tangent 0), so one
+  // solve from a predictor on the slip tangent ends the step; only steps where the phase changes
+  // (stick to slip, or a reversal) need more. The phases are read from the response: the law's
+  // force is exactly +-fs while it slips.
+  const double uy = 0.75, fy = kStiffness * uy, dt = 0.01;
+  const int steps = 1000;
+  const auto sdof =
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, uy}));
+  const Excitation harmonic = SampledForce(
+      dt, steps, [](double t) { return 10.0 * std::sin(2.0 * std::numbers::pi * t / 1.3); });
+  RunSummary summary;
+  const auto response = Simulate(sdof, harmonic, {dt, steps}, NewmarkOptions{}, &summary);
+  int continued_slips = 0, phase_changes = 0;
+  for (int k = 1; k <= steps; ++k) {
+    const bool slips = std::abs(response.law_force(k, 0)) == fy;
+    const bool slipped = std::abs(response.law_force(k - 1, 0)) == fy;
+    continued_slips += slips && slipped;
+    phase_changes += slips != slipped;
+  }
+  EXPECT_GT(continued_slips, 300);
+  EXPECT_LE(summary.newton_iterations, steps + 2 * phase_changes)
+      << continued_slips << " continued-slip steps, " << phase_changes << " phase changes";
+}
+
+TEST(Newmark, ReachesRoundOffInOneSolveWhereTheForceToleranceCannotBeMet) {
+  // A linear SDOF with a 10 s period under a constant force at a fine step: the displacements
+  // are large next to the forces, and rounding u alone leaves a residual of eps (4 m / h^2) u,
+  // far above force_tolerance times the force scale. The equations are linear, so one solve per
+  // step reaches the round-off floor; the response is the closed form u_st (1 - cos w t).
+  const double m = 1.0, w = 2.0 * std::numbers::pi / 10.0, k = m * w * w, p0 = 1.0;
+  const double dt = 1e-4;
+  const int steps = 20000;
+  const auto sdof = structure::BuildSdof(m, 0.0, Single(LawType::kLinearSpring, {k}));
+  RunSummary summary;
+  const auto response = Simulate(sdof, SampledForce(dt, steps, [&](double) { return p0; }),
+                                 {dt, steps}, NewmarkOptions{}, &summary);
+  EXPECT_EQ(summary.newton_iterations, steps);
+  const double u_static = p0 / k;
+  for (int i = 0; i <= steps; i += 100) {
+    EXPECT_NEAR(response.displacement(i, 0), u_static * (1.0 - std::cos(w * i * dt)),
+                1e-9 * u_static)
+        << "t = " << i * dt;
+  }
 }
 
 TEST(Newmark, CutsAStepThatDoesNotConvergeAndReportsAFailureWithTime) {

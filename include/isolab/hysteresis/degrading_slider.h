@@ -8,16 +8,18 @@
 // The undamaged part is BHM2 exactly (so loss = 0 is BHM2), yielding at uy = fs / kp whatever
 // the damage; both strength and stiffness scale by phi, which never recovers.
 //
-// Exact update: the slider moves as in BHM2 (closed form in the end displacement) and kappa
-// grows by its travel, so phi follows exactly. Energy dissipated = work - stored energy, with the
-// work over the slip integrated in closed form (phi is an exponential in kappa, and u moves
-// with u_s), so work = stored + dissipated holds to round-off for any increment. The tangent in
-// slip, phi kh + phi' (s fs + kh u) s, may be negative: the element softens while it slips.
+// Exact update: the slider moves as in BHM2 (closed form in the end displacement, the stick or
+// slip decision of slip_direction.h) and kappa grows by its travel, so phi follows exactly. Energy
+// dissipated = work - stored energy, with the work over the slip integrated in closed form (phi is
+// an exponential in kappa, and u moves with u_s), so work = stored + dissipated holds to round-off
+// for any increment. The tangent in slip, phi kh + phi' (s fs + kh u) s, may be negative: the
+// element softens while it slips.
 #pragma once
 
 #include <cmath>
 
 #include "isolab/hysteresis/law_state.h"
+#include "isolab/hysteresis/slip_direction.h"
 
 namespace isolab::hysteresis {
 
@@ -35,10 +37,12 @@ struct DegradingSlider {
     const double us = committed.slider;
     const double kappa0 = committed.accumulated_slip;
     const double branch_force = kp * (in.u - us);
+    const int slip = SlipDirection(committed.slip, in.u - committed.u, branch_force, kp, fs);
     trial->u = in.u;
     trial->v = in.v;
+    trial->slip = slip;
     response->damping = 0.0;
-    if (std::abs(branch_force) <= fs) {
+    if (slip == 0) {
       const double phi = Factor(kappa0);
       trial->slider = us;
       trial->accumulated_slip = kappa0;
@@ -47,7 +51,7 @@ struct DegradingSlider {
       response->stiffness = phi * (kp + kh);
       return;
     }
-    const double s = branch_force >= 0.0 ? 1.0 : -1.0;
+    const double s = slip;
     const double us_new = in.u - s * fs / kp;
     const double kappa1 = kappa0 + std::abs(us_new - us);
     const double phi = Factor(kappa1);

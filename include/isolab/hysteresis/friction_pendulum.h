@@ -47,7 +47,8 @@ struct FrictionPendulum {
 
   void Update(const LawState& committed, const LawInput& in, LawState* trial,
               LawResponse* response) const {
-    const UnitSlider::Step step = slider.Update(committed.u, committed.slider, in.u);
+    const UnitSlider::Step step =
+        slider.Update(committed.u, committed.slider, committed.slip, in.u);
     // mu and its slope share one exponential.
     const double mu_v = FrictionSlope(in.v);
     const double mu =
@@ -57,6 +58,7 @@ struct FrictionPendulum {
     trial->v = in.v;
     trial->t = in.t;
     trial->slider = step.slider;
+    trial->slip = step.slip;
     trial->accumulated_slip = committed.accumulated_slip + step.travel;
     trial->dissipated =
         committed.dissipated + 0.5 * (Friction(committed.v) + mu) * weight * step.z_work;

@@ -22,6 +22,9 @@ struct LawState {
   double accumulated_slip = 0.0;  // total slider travel since rest (length); degrading laws
   double t = 0.0;                 // time of this state (time); written by the laws that read time
   double temperature = 0.0;       // lead-core temperature rise above the start (degC); lead_rubber
+  // Direction the slider slipped in to reach this state (+1, -1), or 0 if it stuck or the law has
+  // no slider: the phase the next increment starts from (slip_direction.h).
+  int slip = 0;
   // Energy dissipated since rest: slider work or dashpot work (force*length).
   double dissipated = 0.0;
 };

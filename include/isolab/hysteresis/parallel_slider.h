@@ -5,13 +5,15 @@
 // BHM2 (kh1 = kh2) is the same kernel.
 //
 // Exact update: the elastoplastic branch sticks while |kp (u - u_s,n)| <= fs, else the slider
-// moves to u_s = u - s fs / kp; the spring g depends on u alone. Both are closed forms in the end
-// displacement, so one call equals any number of sub-increments.
+// moves to u_s = u - s fs / kp; a slider that slipped into the committed state goes on slipping
+// for s du >= 0 (slip_direction.h). The spring g depends on u alone. Both are closed forms in the
+// end displacement, so one call equals any number of sub-increments.
 #pragma once
 
 #include <cmath>
 
 #include "isolab/hysteresis/law_state.h"
+#include "isolab/hysteresis/slip_direction.h"
 #include "isolab/hysteresis/trilinear_spring.h"
 
 namespace isolab::hysteresis {
@@ -25,17 +27,19 @@ struct ParallelSlider {
               LawResponse* response) const {
     const double us = committed.slider;
     const double branch_force = kp * (in.u - us);
+    const int slip = SlipDirection(committed.slip, in.u - committed.u, branch_force, kp, fs);
     trial->u = in.u;
     trial->v = in.v;
+    trial->slip = slip;
     response->damping = 0.0;
-    if (fs > 0.0 && std::abs(branch_force) <= fs) {
+    if (slip == 0) {
       trial->slider = us;
       trial->dissipated = committed.dissipated;
       trial->force = response->force = branch_force + spring.Force(in.u);
       response->stiffness = kp + spring.Stiffness(in.u);
       return;
     }
-    const double direction = branch_force >= 0.0 ? 1.0 : -1.0;
+    const double direction = slip;
     const double us_new = in.u - direction * fs / kp;
     trial->slider = us_new;
     trial->dissipated = committed.dissipated + fs * std::abs(us_new - us);

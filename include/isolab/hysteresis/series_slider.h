@@ -7,14 +7,17 @@
 //
 // Exact update: the slider sticks while |ke (u - u_h,n) - g(u_h,n)| <= fs; otherwise it slips in
 // the direction s of that force until ke (u - u_h) - g(u_h) = s fs, i.e. ke u_h + g(u_h) =
-// ke u - s fs, solved segment by segment (TrilinearSpring::SolveInSeries). Over a monotone
-// increment the slider sticks, then slips one way, and the end state depends only on the end
-// displacement, so one call equals any number of sub-increments.
+// ke u - s fs, solved segment by segment (TrilinearSpring::SolveInSeries). A slider that slipped
+// into the committed state goes on slipping for s du >= 0 (slip_direction.h: the decision and the
+// tangent at that corner). Over a monotone increment the slider sticks, then slips one way, and
+// the end state depends only on the end displacement, so one call equals any number of
+// sub-increments.
 #pragma once
 
 #include <cmath>
 
 #include "isolab/hysteresis/law_state.h"
+#include "isolab/hysteresis/slip_direction.h"
 #include "isolab/hysteresis/trilinear_spring.h"
 
 namespace isolab::hysteresis {
@@ -28,17 +31,19 @@ struct SeriesSlider {
               LawResponse* response) const {
     const double uh = committed.slider;
     const double slider_force = ke * (in.u - uh) - spring.Force(uh);
+    const int slip = SlipDirection(committed.slip, in.u - committed.u, slider_force, ke, fs);
     trial->u = in.u;
     trial->v = in.v;
+    trial->slip = slip;
     response->damping = 0.0;
-    if (fs > 0.0 && std::abs(slider_force) <= fs) {
+    if (slip == 0) {
       trial->slider = uh;
       trial->dissipated = committed.dissipated;
       trial->force = response->force = ke * (in.u - uh);
       response->stiffness = ke;
       return;
     }
-    const double direction = slider_force >= 0.0 ? 1.0 : -1.0;
+    const double direction = slip;
     double kh = 0.0;
     const double uh_new = spring.SolveInSeries(ke, ke * in.u - direction * fs, &kh);
     trial->slider = uh_new;

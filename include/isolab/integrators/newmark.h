@@ -3,8 +3,12 @@
 //   R(u) = p_eff(t+h) - M a(u) - f(u, v(u)),   a = (u - u_n)/(beta h^2) - v_n/(beta h) - (1/(2
 //   beta) - 1) a_n, v = gamma/(beta h) (u - u_n) + (1 - gamma/beta) v_n + h (1 - gamma/(2 beta))
 //   a_n, K_eff = K_t + gamma/(beta h) C_t + M/(beta h^2),
-// with the tangent assembled into a fixed sparse pattern and factorised by KLU. A step that does
-// not converge is reverted and cut in halves, recursively, up to max_step_cuts levels.
+// with the tangent assembled into a fixed sparse pattern and factorised by KLU. Newton stops when
+// the residual is within force_tolerance of the step's force scale, when a correction is within
+// displacement_tolerance, or when the residual is at the round-off of its own evaluation,
+// 2 eps || |K_eff| |u| ||_inf (only reached where the force tolerance is out of floating-point
+// reach: tall, flexible buildings, very fine steps). A step that does not converge is reverted
+// and cut in halves, recursively, up to max_step_cuts levels.
 #pragma once
 
 #include "isolab/integrators/excitation.h"

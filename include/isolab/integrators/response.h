@@ -47,7 +47,7 @@ struct RunSummary {
   Termination termination = Termination::kCompleted;
   std::string message;         // why a failed run stopped
   int steps = 0;               // analysis steps completed
-  long newton_iterations = 0;  // over all steps and sub-steps
+  long newton_iterations = 0;  // over all steps and sub-steps; one linear solve each
   int max_iterations_in_a_step = 0;
   int step_cuts = 0;  // halvings performed
   long factorisations = 0;
@@ -61,6 +61,8 @@ struct RunSummary {
   double wall_seconds = 0.0;
 
   bool ok() const { return termination == Termination::kCompleted; }
+  // Newmark: linear solves per completed step (1 is the least a step can take; 0 before any).
+  double SolvesPerStep() const { return steps > 0 ? double(newton_iterations) / steps : 0.0; }
 };
 
 }  // namespace isolab::integrators

@@ -40,7 +40,9 @@ struct ShearBuilding {
   SuperstructureDamping damping;
 };
 
-// Undamped modes of the fixed-base superstructure with initial story stiffnesses.
+// Undamped modes of the fixed-base superstructure with initial story stiffnesses, every one, from
+// a dense eigensolution (O(stories^3)): set-up calls it only for modal damping, which needs every
+// mode; Rayleigh damping takes its two frequencies by bisection (tridiagonal_pencil.h).
 struct Modes {
   Eigen::VectorXd periods;  // ascending modes (time)
   Eigen::VectorXd circular_frequencies;
