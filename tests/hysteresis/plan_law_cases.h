@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -63,6 +64,24 @@ inline std::vector<PlanLawCase> PlanLawCases() {
        Math(LawType::kLeadRubber, {60, 1, 6, 100, 200, 1.456e-3, 0.05, 14.1, 60, no}), 250},
       {"hdr_bearing", Math(LawType::kHdrBearing, {4e-4, 331831, 150, 0.15, 1.5, no}), 250},
   };
+}
+
+// A Lissajous figure (3:2) from the origin whose size grows and then shrinks over 6 s: loading
+// that is never proportional, both components reversing at different times, sharp turns at the
+// figure's tips.
+struct PlanPathPoint {
+  Vec2 u, v;
+};
+inline constexpr double kLissajousDuration = 6.0;
+inline PlanPathPoint Lissajous(double scale, double t) {
+  constexpr double pi = std::numbers::pi;
+  const double s = t / kLissajousDuration;
+  const double a = scale * (1.3 * std::sin(pi * s) + 0.1 * s);
+  const double da = scale * (1.3 * pi * std::cos(pi * s) + 0.1);
+  const double p = 2 * pi * 3 * s, q = 2 * pi * 2 * s + 0.5;
+  const Vec2 shape{std::sin(p), std::sin(q)};
+  const Vec2 shape_rate{2 * pi * 3 * std::cos(p), 2 * pi * 2 * std::cos(q)};
+  return {a * shape, (1.0 / kLissajousDuration) * (da * shape + a * shape_rate)};
 }
 
 }  // namespace isolab::hysteresis::testing

@@ -115,23 +115,16 @@ TEST_P(PlanLawUpdate, ReducesToItsOneDirectionLawAlongAnyLine) {
   }
 }
 
-// A Lissajous figure (3:2) from rest whose size grows and then shrinks: loading that is never
-// proportional, both components reversing at different times, sharp turns at the figure's tips.
 struct PlanSample {
   Vec2 u, v;
   double t;
 };
 std::vector<PlanSample> CurvedPath(double scale, int steps) {
-  const double duration = 6.0;
   std::vector<PlanSample> path;
   for (int k = 0; k <= steps; ++k) {
-    const double s = static_cast<double>(k) / steps;
-    const double a = scale * (1.3 * std::sin(kPi * s) + 0.1 * s);
-    const double da = scale * (1.3 * kPi * std::cos(kPi * s) + 0.1);
-    const double p = 2 * kPi * 3 * s, q = 2 * kPi * 2 * s + 0.5;
-    const Vec2 shape{std::sin(p), std::sin(q)};
-    const Vec2 shape_rate{2 * kPi * 3 * std::cos(p), 2 * kPi * 2 * std::cos(q)};
-    path.push_back({a * shape, (1.0 / duration) * (da * shape + a * shape_rate), duration * s});
+    const double t = testing::kLissajousDuration * k / steps;
+    const testing::PlanPathPoint at = testing::Lissajous(scale, t);
+    path.push_back({at.u, at.v, t});
   }
   return path;
 }

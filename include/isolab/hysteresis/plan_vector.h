@@ -9,6 +9,7 @@ namespace isolab::hysteresis {
 
 struct Vec2 {
   double x = 0.0, y = 0.0;
+  bool operator==(const Vec2&) const = default;
 };
 
 inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }

@@ -49,13 +49,18 @@ inline Mat2 RadialStiffnessDerivative(const TrilinearSpring& g, Vec2 x, int segm
 
 inline double RadialEnergy(const TrilinearSpring& g, Vec2 x) { return g.Energy(Norm(x)); }
 
+// Solves ke x + g(x) = rhs for x with g on `segment`'s branch, continued beyond the segment (for
+// the rate forms, which stay on a branch until an event switches it). The solution is along rhs.
+inline Vec2 SolveRadialSegmentInSeries(const TrilinearSpring& g, double ke, Vec2 rhs, int segment) {
+  if (segment == 0) return rhs / (ke + g.kh1);
+  return ((1.0 - (g.kh1 - g.kh2) * g.uc / Norm(rhs)) / (ke + g.kh2)) * rhs;
+}
+
 // Solves ke x + g(x) = rhs for x (the spring in series with a spring ke, loaded by rhs). The
 // solution is radial along rhs, so it is the 1-D solution (TrilinearSpring::SolveInSeries) at
 // |rhs|: unique when ke + kh1 > 0 and ke + kh2 > 0.
 inline Vec2 SolveRadialInSeries(const TrilinearSpring& g, double ke, Vec2 rhs) {
-  const double r = Norm(rhs);
-  if (r <= (ke + g.kh1) * g.uc) return rhs / (ke + g.kh1);
-  return ((1.0 - (g.kh1 - g.kh2) * g.uc / r) / (ke + g.kh2)) * rhs;
+  return SolveRadialSegmentInSeries(g, ke, rhs, Norm(rhs) <= (ke + g.kh1) * g.uc ? 0 : 1);
 }
 
 }  // namespace isolab::hysteresis
