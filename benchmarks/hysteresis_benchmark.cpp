@@ -1,7 +1,7 @@
 // Cost of one component update, per law and in the nine-component Table 9 assembly, along a
 // cyclic displacement history that keeps every law switching phases (yield, reversal,
-// breakpoints). Counter "per_component" (seconds per component update) is the figure to compare;
-// target
+// breakpoints); then the same for the coupled bidirectional laws on a plan orbit (BM_PlanLaw).
+// Counter "per_component" (seconds per component update) is the figure to compare; target
 // <= 10 ns.
 #include <benchmark/benchmark.h>
 
@@ -12,6 +12,7 @@
 
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/hysteresis/plan_assembly.h"
 #include "isolab/io/model_file.h"
 
 namespace isolab::hysteresis {
@@ -76,6 +77,7 @@ BENCHMARK_CAPTURE(BM_Law, thm1, LawType::kThm1, {1.0, 0.2, 0.45, 20.0, 120.0});
 BENCHMARK_CAPTURE(BM_Law, thm2, LawType::kThm2, {1.0, 0.2, 0.45, 20.0, 120.0});
 BENCHMARK_CAPTURE(BM_Law, trilinear_elastic, LawType::kTrilinearElastic, {0.28, 0.49, 64.8});
 BENCHMARK_CAPTURE(BM_Law, elastoplastic, LawType::kElastoplastic, {3.2, 0.6});
+BENCHMARK_CAPTURE(BM_Law, bouc_wen, LawType::kBoucWen, {1.0, 0.05, 0.5, 0.5, 1.0});
 // The bearing presets (kN, mm, s), against bhm2 above (the target: within 2x of it).
 constexpr double kNo = NAN;
 BENCHMARK_CAPTURE(BM_Law, friction_pendulum, LawType::kFrictionPendulum,
@@ -91,6 +93,88 @@ BENCHMARK_CAPTURE(BM_Law, lead_rubber_conduction, LawType::kLeadRubber,
 BENCHMARK_CAPTURE(BM_Law, hdr_bearing, LawType::kHdrBearing, {4e-4, 231875, 100, 0.09, 1.5, kNo});
 BENCHMARK(BM_Table9Assembly);
 BENCHMARK(BM_Table10Assembly);
+
+// ---- The coupled bidirectional laws (plan_assembly.h), against the 1-D cases above. ----
+
+// The 1-D history's amplitudes on a plan orbit: x as in 1-D, y at 0.7 of it and 1.5 times the
+// frequency, so the path is never a line (the slider's direction turns every step) and reverses.
+std::vector<PlanLawInput> PlanHistory() {
+  const std::vector<LawInput> line = History();
+  std::vector<PlanLawInput> history(line.size());
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const double phase = 2.0 * std::numbers::pi * 3.0 * k / line.size();
+    const double amplitude = 200.0 - 160.0 * k / line.size();
+    const double w = 2.0 * std::numbers::pi;
+    history[k] = {{line[k].u, 0.7 * amplitude * std::sin(1.5 * phase + 0.4)},
+                  {line[k].v, 0.7 * amplitude * 1.5 * w * std::cos(1.5 * phase + 0.4)},
+                  line[k].t};
+  }
+  return history;
+}
+
+void RunPlanAssembly(benchmark::State& state, const PlanAssembly& assembly) {
+  const std::vector<PlanLawInput> history = PlanHistory();
+  std::vector<PlanLawState> committed(assembly.size()), trial(assembly.size());
+  std::vector<PlanLawResponse> responses(assembly.size());
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const PlanResponse total = assembly.Update(committed, history[k], trial, responses);
+    benchmark::DoNotOptimize(total);
+    std::swap(committed, trial);
+    k = (k + 1) & (history.size() - 1);
+  }
+  state.counters["per_component"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * assembly.size()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_PlanLaw(benchmark::State& state, LawType type, std::vector<double> math) {
+  RunPlanAssembly(
+      state, PlanAssembly({{"law", LawParameters::Make(type, ParameterForm::kMathematical, math),
+                            std::nullopt}}));
+}
+
+// A pair of 1-D laws: costs two 1-D updates.
+void BM_UncoupledBhm2Pair(benchmark::State& state) {
+  const LawParameters bhm2 = LawParameters::Make(LawType::kBhm2, ParameterForm::kMathematical,
+                                                 std::vector<double>{1.0, 0.2, 20.0});
+  RunPlanAssembly(state, PlanAssembly({{"pair", bhm2, bhm2}}));
+}
+
+// The nine THM1 components of Table 9, each coupled.
+void BM_PlanTable9Assembly(benchmark::State& state) {
+  const io::ModelFile model =
+      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml");
+  std::vector<PlanComponent> components;
+  for (const Component& c : model.isolation.components()) {
+    components.push_back({c.name, c.parameters, std::nullopt});
+  }
+  RunPlanAssembly(state, PlanAssembly(std::move(components)));
+}
+
+BENCHMARK_CAPTURE(BM_PlanLaw, linear_spring, LawType::kLinearSpring, {0.7});
+BENCHMARK_CAPTURE(BM_PlanLaw, dashpot, LawType::kDashpot, {0.02});
+BENCHMARK_CAPTURE(BM_PlanLaw, bhm1, LawType::kBhm1, {1.0, 0.2, 20.0});
+BENCHMARK_CAPTURE(BM_PlanLaw, bhm2, LawType::kBhm2, {1.0, 0.2, 20.0});
+BENCHMARK_CAPTURE(BM_PlanLaw, thm1, LawType::kThm1, {1.0, 0.2, 0.45, 20.0, 120.0});
+BENCHMARK_CAPTURE(BM_PlanLaw, thm2, LawType::kThm2, {1.0, 0.2, 0.45, 20.0, 120.0});
+BENCHMARK_CAPTURE(BM_PlanLaw, trilinear_elastic, LawType::kTrilinearElastic, {0.28, 0.49, 64.8});
+BENCHMARK_CAPTURE(BM_PlanLaw, elastoplastic, LawType::kElastoplastic, {3.2, 0.6});
+BENCHMARK_CAPTURE(BM_PlanLaw, bouc_wen, LawType::kBoucWen, {1.0, 0.05, 0.5, 0.5, 1.0});
+BENCHMARK_CAPTURE(BM_PlanLaw, friction_pendulum, LawType::kFrictionPendulum,
+                  {1471, 4338, 0.5, 0.06, kNo, kNo, kNo});
+BENCHMARK_CAPTURE(BM_PlanLaw, friction_pendulum_mu_of_v, LawType::kFrictionPendulum,
+                  {1471, 4338, 0.5, kNo, 0.03, 0.07, 0.02});
+BENCHMARK_CAPTURE(BM_PlanLaw, lead_rubber, LawType::kLeadRubber,
+                  {88, 0.34, 25, kNo, kNo, kNo, kNo, kNo, kNo, kNo});
+BENCHMARK_CAPTURE(BM_PlanLaw, lead_rubber_adiabatic, LawType::kLeadRubber,
+                  {88, 0.34, 25, 106, 200, 1.456e-3, kNo, kNo, kNo, kNo});
+BENCHMARK_CAPTURE(BM_PlanLaw, lead_rubber_conduction, LawType::kLeadRubber,
+                  {88, 0.34, 25, 106, 200, 1.456e-3, 0.05, 14.1, 27, kNo});
+BENCHMARK_CAPTURE(BM_PlanLaw, hdr_bearing, LawType::kHdrBearing,
+                  {4e-4, 231875, 100, 0.09, 1.5, kNo});
+BENCHMARK(BM_UncoupledBhm2Pair);
+BENCHMARK(BM_PlanTable9Assembly);
 
 }  // namespace
 }  // namespace isolab::hysteresis

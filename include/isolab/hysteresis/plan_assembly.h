@@ -1,0 +1,75 @@
+// Isolator laws acting in parallel on one horizontal deformation in plan (parallel_assembly.h for
+// one direction): a bearing, or an isolator position of a plan model. The force is the sum of the
+// components' force vectors; laws are stored by value in one flat array of a closed variant
+// (plan_law_kernel.h), dispatched with no virtual call; the assembly holds no state. Callers own
+// the committed and trial state arrays (one PlanLawState per component) and commit by swapping.
+//
+// For a structure in plan (issue #15, part B): an isolator at plan position (x_i, y_i) under a
+// rigid floor with dofs q = (u_x, u_y, theta) about the floor's reference point deforms by
+//   u = T q,   T = [1 0 -(y_i - y_0); 0 1 (x_i - x_0)]   (relative to the ground, or to the floor
+// below with T for each), so the structure adds T^T f to its force vector and T^T (K + c_d D) T,
+// with K = stiffness and D = damping of PlanResponse, to its tangent. Every entry of that 3x3 (or,
+// between two floors, 6x6) block sits at a position fixed for the run: precompute its slots in the
+// sparse pattern once (as structure.cpp does with SlotOf) and write through them each iteration.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "isolab/hysteresis/plan_law_kernel.h"
+
+namespace isolab::hysteresis {
+
+// One component: a coupled law (law_y empty), or an uncoupled pair, `law` along x and law_y
+// along y.
+struct PlanComponent {
+  std::string name;
+  LawParameters law;
+  std::optional<LawParameters> law_y;
+};
+
+// Sums over components of PlanLawResponse.
+struct PlanResponse {
+  Vec2 force;
+  Mat2 stiffness;
+  Mat2 damping;
+};
+
+class PlanAssembly {
+ public:
+  PlanAssembly() = default;
+  // Throws std::invalid_argument for a coupled component whose law has no coupled form
+  // (HasCoupledForm).
+  explicit PlanAssembly(std::vector<PlanComponent> components);
+
+  std::size_t size() const { return kernels_.size(); }
+  const std::vector<PlanComponent>& components() const { return components_; }
+  const std::vector<PlanLawKernel>& kernels() const { return kernels_; }
+
+  // Trial of every component at `in` from `committed`, writing `trial` and per-component
+  // `responses` (each of size()); returns the sums. Allocates nothing.
+  PlanResponse Update(std::span<const PlanLawState> committed, const PlanLawInput& in,
+                      std::span<PlanLawState> trial, std::span<PlanLawResponse> responses) const {
+    PlanResponse total;
+    for (std::size_t i = 0; i < kernels_.size(); ++i) {
+      UpdatePlanLaw(kernels_[i], committed[i], in, &trial[i], &responses[i]);
+      total.force = total.force + responses[i].force;
+      total.stiffness = total.stiffness + responses[i].stiffness;
+      total.damping = total.damping + responses[i].damping;
+    }
+    return total;
+  }
+
+  // Recoverable energy, and dissipated energy (all of it, and the dashpots' part), summed.
+  double StoredEnergy(std::span<const PlanLawState> states) const;
+  double DissipatedEnergy(std::span<const PlanLawState> states) const;
+  double ViscousEnergy(std::span<const PlanLawState> states) const;
+
+ private:
+  std::vector<PlanComponent> components_;
+  std::vector<PlanLawKernel> kernels_;
+};
+
+}  // namespace isolab::hysteresis

@@ -1,0 +1,50 @@
+// THM1 kernel in two directions (series form; series_slider.h for one): a spring ke in series
+// with [a rigid-plastic slider of circular (isotropic) strength fs, in parallel with the spring g
+// driven by the slider displacement x = u_h (radial_spring.h)]:
+//   u = u_e + x,   f = ke (u - x) = f_s + g(x),   |f_s| <= fs,
+// the slider moving only along its force, dx = lambda f_s / fs with lambda >= 0 (associative
+// flow on the circle). BHM1 (kh1 = kh2), the elastoplastic element (kh1 = kh2 = 0) and, with
+// fs = 0, a spring ke in series with g are the same kernel, as in 1-D.
+//
+// Return map (backward Euler, the closest-point projection): from the committed x_n the slider
+// sticks while the trial slider force f_s* = ke (u - x_n) - g(x_n) lies in the circle; otherwise
+// x = x_n + xi solves
+//   R(xi) = ke (x_n + xi) + g(x_n + xi) + fs xi / |xi| - ke u = 0,
+// the stationarity of the strictly convex ke |u - x|^2 / 2 + G(|x|) + fs |x - x_n| (G the
+// spring's energy; convex because ke + kh1 > 0 and ke + kh2 > 0), so the solution is unique.
+// With g linear inside the increment (BHM1, or g on its inner segment at both ends) it is the
+// radial return, xi = (|f_s*| - fs) / (ke + kh1) f_s* / |f_s*|; with g beyond uc the secant
+// depends on |x| and R = 0 is solved by Newton on xi, started from the better of two closed
+// forms (the radial return at the secant of x_n, and x = (ke + g)^-1 (ke u - fs f_s*/|f_s*|)),
+// with backtracking on |R|; along a line through the origin (motion along one axis, in any
+// direction) the second start is the 1-D kernel's exact solution, so the 1-D law is reproduced
+// to round-off. The Jacobian of R is ke I + B with B = Dg(x) + (fs / |xi|) (I - n n^T), n =
+// xi / |xi|, positive definite, and the consistent tangent is
+//   d f / d u = ke B (ke I + B)^-1,
+// the exact derivative of the computed update (symmetric; 1-D: ke kh / (ke + kh)). The force is
+// written fs n + g(x), as in 1-D free of the cancellation in ke (u - x) when ke >> kh; the
+// dissipation is fs |xi|, the slider's work. If Newton fails (it has not been seen to), the force
+// is NaN and the integrator cuts the step.
+#pragma once
+
+#include "isolab/hysteresis/plan_law_state.h"
+#include "isolab/hysteresis/series_slider.h"
+
+namespace isolab::hysteresis {
+
+struct PlanSeriesSlider {
+  SeriesSlider law;  // ke, fs and g, as the 1-D kernel of the same law has them
+
+  // The one stick test of the family (slip starts when the trial slider force leaves the circle).
+  bool Sticks(Vec2 trial_slider_force) const {
+    return law.fs > 0.0 && Norm(trial_slider_force) <= law.fs;
+  }
+
+  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+              PlanLawResponse* response) const;
+
+  // Recoverable energy: the spring ke (|f|^2 / 2 ke) plus g.
+  double StoredEnergy(const PlanLawState& state) const;
+};
+
+}  // namespace isolab::hysteresis

@@ -1,0 +1,121 @@
+#include "isolab/hysteresis/plan_series_slider.h"
+
+#include <cmath>
+
+#include "isolab/hysteresis/radial_spring.h"
+
+namespace isolab::hysteresis {
+namespace {
+
+constexpr int kMaxIterations = 50;
+constexpr int kMaxHalvings = 40;
+
+// The slip equation of the header, R(xi) = fs xi / |xi| - f_s(x_n + xi), with the slider force
+// f_s(x) = ke (u - x) - g(x), and its Jacobian ke I + B.
+struct SlipEquation {
+  const SeriesSlider& law;
+  Vec2 xn, u;
+
+  Vec2 SliderForce(Vec2 x) const { return law.ke * (u - x) - RadialForce(law.spring, x); }
+  Vec2 Residual(Vec2 xi) const { return (law.fs / Norm(xi)) * xi - SliderForce(xn + xi); }
+  // B = Dg(x) + (fs / |xi|) (I - n n^T).
+  Mat2 SliderStiffness(Vec2 xi) const {
+    const double m = Norm(xi);
+    return RadialStiffness(law.spring, xn + xi) + (law.fs / m) * NormalProjector(xi / m);
+  }
+};
+
+// g_r(r) / r at r = |x|: the stiffness of g along x, exact for the radial return while g is linear.
+double Secant(const TrilinearSpring& g, Vec2 x) {
+  const double r = Norm(x);
+  return r <= g.uc ? g.kh1 : g.kh2 + (g.kh1 - g.kh2) * g.uc / r;
+}
+
+// The slip increment xi (fs > 0, the trial slider force outside the circle), or NaN if Newton
+// fails.
+Vec2 SolveSlip(const SlipEquation& eq, Vec2 trial_force) {
+  const SeriesSlider& law = eq.law;
+  const double trial_norm = Norm(trial_force);
+  const Vec2 n0 = trial_force / trial_norm;
+  // Start 1: the radial return with g's secant at x_n, exact while g stays on one linear piece.
+  Vec2 xi = ((trial_norm - law.fs) / (law.ke + Secant(law.spring, eq.xn))) * n0;
+  Vec2 residual = eq.Residual(xi);
+  // Start 2: the slider force fs n0 exactly, x from the radial series solve: exact whenever x_n,
+  // u and n0 lie on one line through the origin (motion along one axis).
+  const Vec2 xi_line = SolveRadialInSeries(law.spring, law.ke, law.ke * eq.u - law.fs * n0) - eq.xn;
+  if (Norm(xi_line) > 0.0) {
+    const Vec2 residual_line = eq.Residual(xi_line);
+    if (Norm(residual_line) < Norm(residual)) {
+      xi = xi_line;
+      residual = residual_line;
+    }
+  }
+  const double length_scale = Norm(eq.u) + Norm(eq.xn);
+  const double force_scale = law.fs + law.ke * length_scale + Norm(RadialForce(law.spring, eq.xn));
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    const Vec2 step = -Solve(law.ke * Identity() + eq.SliderStiffness(xi), residual);
+    if (!std::isfinite(Norm(step))) break;
+    if (Norm(step) <= 1e-13 * (length_scale + Norm(xi))) return xi + step;
+    // Backtracking on |R|: the Newton step is a descent direction of |R|^2 (J is nonsingular).
+    double fraction = 1.0;
+    bool decreased = false;
+    for (int halving = 0; halving < kMaxHalvings && !decreased; ++halving, fraction *= 0.5) {
+      const Vec2 candidate = xi + fraction * step;
+      if (!(Norm(candidate) > 0.0)) continue;
+      const Vec2 candidate_residual = eq.Residual(candidate);
+      if (Norm(candidate_residual) < Norm(residual)) {
+        xi = candidate;
+        residual = candidate_residual;
+        decreased = true;
+      }
+    }
+    // No decrease at all: |R| is at its round-off floor, or the iteration is lost.
+    if (!decreased) return Norm(residual) <= 1e-10 * force_scale ? xi : Vec2{NAN, NAN};
+  }
+  return {NAN, NAN};
+}
+
+}  // namespace
+
+void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput& in,
+                              PlanLawState* trial, PlanLawResponse* response) const {
+  const double ke = law.ke, fs = law.fs;
+  const Vec2 xn = Slider(committed);
+  const Vec2 trial_force = ke * (in.u - xn) - RadialForce(law.spring, xn);
+  CoupledState next = Carried(committed);
+  response->damping = {};
+  if (Sticks(trial_force)) {
+    next.force = ke * (in.u - xn);
+    response->force = next.force;
+    response->stiffness = Identity(ke);
+    Store(in, next, trial);
+    return;
+  }
+  Mat2 slider_stiffness;  // B of the header
+  Vec2 x;
+  if (fs == 0.0) {  // no slider: ke in series with g, x from the radial series solve
+    x = SolveRadialInSeries(law.spring, ke, ke * in.u);
+    slider_stiffness = RadialStiffness(law.spring, x);
+    next.force = RadialForce(law.spring, x);
+  } else {
+    const SlipEquation eq{law, xn, in.u};
+    const Vec2 xi = SolveSlip(eq, trial_force);
+    const double travel = Norm(xi);
+    x = xn + xi;
+    slider_stiffness = eq.SliderStiffness(xi);
+    next.force = (fs / travel) * xi + RadialForce(law.spring, x);
+    next.dissipated += fs * travel;
+    next.accumulated_slip += travel;
+  }
+  next.slider = x;
+  response->force = next.force;
+  response->stiffness = ke * (slider_stiffness * Inverse(Identity(ke) + slider_stiffness));
+  Store(in, next, trial);
+}
+
+double PlanSeriesSlider::StoredEnergy(const PlanLawState& state) const {
+  const Vec2 f = Force(state);
+  return 0.5 * Dot(f, f) / law.ke + RadialEnergy(law.spring, Slider(state));
+}
+
+}  // namespace isolab::hysteresis
