@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "model_sections.h"
@@ -53,6 +54,7 @@ std::vector<std::string_view> AllowedComponentKeys(LawType type) {
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
     }
   }
+  if (type == LawType::kFrictionPendulum) keys.push_back("period");
   return keys;
 }
 
@@ -82,6 +84,26 @@ ParameterForm DetectForm(const YamlReader& reader, const YAML::Node& node, const
   return mech_key.empty() ? ParameterForm::kMathematical : ParameterForm::kMechanical;
 }
 
+// A friction pendulum may give its pendulum period T instead of its radius: engineers specify
+// either, and R = g T^2 / (4 pi^2) with g in the model's units.
+void ReadPendulumPeriod(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                        const UnitSystem& units, std::span<const std::string_view> keys,
+                        std::vector<double>& values) {
+  const YAML::Node period = node["period"];
+  if (!period.IsDefined()) return;
+  const std::string period_path = ChildPath(path, "period");
+  if (node["r"].IsDefined()) {
+    reader.Fail(period, period_path, "give the radius r or the period, not both");
+  }
+  const double t = reader.ReadQuantity(period, period_path, dimension::kTime, units);
+  if (!(t > 0.0) || !std::isfinite(t)) {
+    reader.Fail(period, period_path, fmt::format("{} (must be > 0)", t));
+  }
+  const double g = units.Convert(1.0, "g", dimension::kAcceleration);
+  const auto r = std::find(keys.begin(), keys.end(), "r");
+  values[r - keys.begin()] = g * t * t / (4.0 * std::numbers::pi * std::numbers::pi);
+}
+
 Component ReadComponent(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                         std::size_t index, const UnitSystem& units) {
   reader.RequireMap(node, path);
@@ -109,6 +131,8 @@ Component ReadComponent(const YamlReader& reader, const YAML::Node& node, const 
           reader.ReadQuantity(value, ChildPath(path, keys[i]), ParameterDimension(keys[i]), units);
     }
   }
+
+  if (*type == LawType::kFrictionPendulum) ReadPendulumPeriod(reader, node, path, units, keys, values);
 
   std::string name = fmt::format("c{}", index + 1);
   if (node["name"].IsDefined()) name = reader.ReadString(node["name"], ChildPath(path, "name"));

@@ -346,8 +346,11 @@ TEST_P(PlanLawUpdate, TrialIsAPureFunctionOfCommittedStateAndInput) {
   PlanLawState committed;
   for (const PlanSample& s : CurvedPath(c.scale, 300)) {
     PlanLawState garbage, other;
-    garbage.x = garbage.y = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
-    other.x = other.y = {1, 2, 3, 4, 5, 6, 7, 8};
+    garbage.x = garbage.y = {.u = NAN, .v = NAN, .force = NAN, .slider = NAN,
+                             .accumulated_slip = NAN, .t = NAN, .temperature = NAN, .slip = -1,
+                             .dissipated = NAN};
+    other.x = other.y = {.u = 1, .v = 2, .force = 3, .slider = 4, .accumulated_slip = 5, .t = 6,
+                         .temperature = 7, .slip = 1, .dissipated = 8};
     PlanLawResponse r1, r2;
     UpdatePlanLaw(kernel, committed, {s.u, s.v, s.t}, &garbage, &r1);
     UpdatePlanLaw(kernel, committed, {s.u, s.v, s.t}, &other, &r2);
@@ -359,6 +362,7 @@ TEST_P(PlanLawUpdate, TrialIsAPureFunctionOfCommittedStateAndInput) {
       EXPECT_EQ(a.accumulated_slip, b.accumulated_slip);
       EXPECT_EQ(a.t, b.t);
       EXPECT_EQ(a.temperature, b.temperature);
+      EXPECT_EQ(a.slip, b.slip);
       EXPECT_EQ(a.dissipated, b.dissipated);
     }
     EXPECT_EQ(r1.force.x, r2.force.x);

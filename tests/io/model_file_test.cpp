@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "isolab/core/errors.h"
@@ -76,6 +78,20 @@ TEST(ModelFile, ReadsMechanicalFormAndUnits) {
   EXPECT_NEAR(math[4], 120.0, 1e-12);
   EXPECT_EQ(model.isolation.components()[1].name, "damper");
   EXPECT_FALSE(model.cyclic.has_value());
+}
+
+// R = g T^2 / (4 pi^2): 4 s with g = 9806.65 mm/s^2 is 3974.5 mm, a pendulum period the
+// law's own post-slip stiffness W/R then gives back: 2 pi sqrt(m / (W/R)) with m = W/g.
+TEST(ModelFile, FrictionPendulumTakesItsPeriodInsteadOfItsRadius) {
+  const ModelFile model = LoadModelFile(DataFile("good_pendulum_period.yaml"));
+  const auto values = model.isolation.components()[0].parameters.Values(
+      hysteresis::ParameterForm::kMechanical);
+  const double radius = values[1];
+  EXPECT_NEAR(radius, 9806.65 * 16.0 / (4.0 * std::numbers::pi * std::numbers::pi), 1e-9);
+  const double mass = 1471.0 / 9806.65, post_slip_stiffness = 1471.0 / radius;
+  EXPECT_NEAR(2.0 * std::numbers::pi * std::sqrt(mass / post_slip_stiffness), 4.0, 1e-12);
+  ExpectError("bad_pendulum_radius_and_period.yaml", ":5:70:",
+              "isolation.components[0].period: give the radius r or the period, not both");
 }
 
 }  // namespace
