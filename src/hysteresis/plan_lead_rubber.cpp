@@ -11,10 +11,11 @@ void PlanLeadRubber::Update(const PlanLawState& committed, const PlanLawInput& i
                             PlanLawState* trial, PlanLawResponse* response) const {
   const PlanUnitSlider core{law.slider};
   const Vec2 u_n = Displacement(committed);
-  const PlanUnitSlider::Step step = core.Update(u_n, Slider(committed), in.u);
+  const PlanUnitSlider::Step step = core.Update(Slipping(committed), u_n, Slider(committed), in.u);
   const Vec2 z_n = core.Z(u_n, Slider(committed));
   CoupledState next;
   next.slider = step.slider;
+  next.slipping = step.slipping;
   next.accumulated_slip = committed.x.accumulated_slip + step.travel;
   response->damping = {};
   const LeadCoreHeating& heating = law.heating;

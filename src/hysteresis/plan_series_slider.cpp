@@ -91,6 +91,7 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
     Store(in, next, trial);
     return;
   }
+  next.slipping = true;  // recorded for the state's contract; this kernel's test does not read it
   Mat2 slider_stiffness;  // B of the header
   Vec2 x;
   if (fs == 0.0) {  // no slider: ke in series with g, x from the radial series solve

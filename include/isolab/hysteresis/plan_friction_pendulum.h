@@ -25,7 +25,7 @@ struct PlanFrictionPendulum {
               PlanLawResponse* response) const {
     const PlanUnitSlider interface { law.slider };
     const PlanUnitSlider::Step step =
-        interface.Update(Displacement(committed), Slider(committed), in.u);
+        interface.Update(Slipping(committed), Displacement(committed), Slider(committed), in.u);
     const double speed = Norm(in.v);
     // mu and its slope share one exponential, as in 1-D.
     const double mu_v = law.FrictionSlope(speed);
@@ -35,6 +35,7 @@ struct PlanFrictionPendulum {
     const double w = law.weight;
     CoupledState next;
     next.slider = step.slider;
+    next.slipping = step.slipping;
     next.accumulated_slip = committed.x.accumulated_slip + step.travel;
     next.dissipated = committed.x.dissipated +
                       0.5 * (law.Friction(Norm(Velocity(committed))) + mu) * w * step.z_work;

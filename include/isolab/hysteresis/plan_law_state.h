@@ -5,7 +5,8 @@
 // A plan state is the pair of one-direction states along x and y. An uncoupled pair of 1-D laws
 // (uncoupled_pair.h) keeps each direction's LawState whole. A coupled law keeps its vectors as
 // the pair's components (u, v, force, slider: x.u = u_x, y.u = u_y, ...), its scalars in x
-// (dissipated energy, accumulated slip, lead-core temperature; y's stay 0) and the time in both.
+// (dissipated energy, accumulated slip, lead-core temperature, and x.slip = 1 while its slider
+// slips, 0 while it sticks; y's stay 0) and the time in both.
 // So a coupled law moving along x has exactly the state its 1-D law would have in x.
 #pragma once
 
@@ -38,6 +39,8 @@ inline Vec2 Force(const PlanLawState& s) { return {s.x.force, s.y.force}; }
 inline Vec2 Slider(const PlanLawState& s) { return {s.x.slider, s.y.slider}; }
 // Energy dissipated since rest, both directions.
 inline double Dissipated(const PlanLawState& s) { return s.x.dissipated + s.y.dissipated; }
+// A coupled law's committed phase: its slider slipped to reach this state.
+inline bool Slipping(const PlanLawState& s) { return s.x.slip != 0; }
 
 // What a coupled law writes after an update; Store puts it in the layout above, every field
 // written, so a trial never carries anything over from the array it was swapped from.
@@ -47,6 +50,7 @@ struct CoupledState {
   double dissipated = 0.0;
   double accumulated_slip = 0.0;
   double temperature = 0.0;
+  bool slipping = false;  // the slider slipped over the increment (plan_slip_decision.h)
 };
 
 // A coupled law's state before its update changes anything: the committed slider and energies.
@@ -67,6 +71,7 @@ inline void Store(const PlanLawInput& in, const CoupledState& c, PlanLawState* s
           .accumulated_slip = c.accumulated_slip,
           .t = in.t,
           .temperature = c.temperature,
+          .slip = c.slipping ? 1 : 0,
           .dissipated = c.dissipated};
   s->y = {.u = in.u.y,
           .v = in.v.y,
@@ -75,6 +80,7 @@ inline void Store(const PlanLawInput& in, const CoupledState& c, PlanLawState* s
           .accumulated_slip = 0.0,
           .t = in.t,
           .temperature = 0.0,
+          .slip = 0,
           .dissipated = 0.0};
 }
 

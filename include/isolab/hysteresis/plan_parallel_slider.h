@@ -14,8 +14,11 @@
 // times the travel.
 #pragma once
 
+#include <algorithm>
+
 #include "isolab/hysteresis/parallel_slider.h"
 #include "isolab/hysteresis/plan_law_state.h"
+#include "isolab/hysteresis/plan_slip_decision.h"
 #include "isolab/hysteresis/radial_spring.h"
 
 namespace isolab::hysteresis {
@@ -23,9 +26,13 @@ namespace isolab::hysteresis {
 struct PlanParallelSlider {
   ParallelSlider law;  // kp, fs and g, as the 1-D kernel of the same law has them
 
-  // The one stick test of the family.
-  bool Sticks(Vec2 trial_branch_force) const {
-    return law.fs > 0.0 && Norm(trial_branch_force) <= law.fs;
+  // The one stick test of the family (plan_slip_decision.h): the branch force if it stuck is
+  // kp (u - u_s,n); committed on the circle, it was kp (u_n - u_s,n).
+  bool Sticks(const PlanLawState& committed, Vec2 u, Vec2 trial_branch_force) const {
+    if (!(law.fs > 0.0)) return false;
+    const Vec2 u_n = Displacement(committed);
+    return !PlanSlips(Slipping(committed), u_n - Slider(committed), u - u_n,
+                      Norm(trial_branch_force) / law.fs);
   }
 
   void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
@@ -36,14 +43,16 @@ struct PlanParallelSlider {
     const Mat2 dg = RadialStiffness(law.spring, in.u);
     CoupledState next = Carried(committed);
     response->damping = {};
-    if (Sticks(branch)) {
+    if (Sticks(committed, in.u, branch)) {
       next.force = branch + g;
       response->stiffness = Identity(law.kp) + dg;
     } else {
       const double trial_norm = Norm(branch);
       // fs = 0 with b* = 0: no branch force and no direction; the slider follows u.
       const Vec2 n = trial_norm > 0.0 ? branch / trial_norm : Vec2{};
-      const double travel = (trial_norm - law.fs) / law.kp;
+      // Not below 0: a continuing slip decided by the phase may start a round-off inside.
+      const double travel = std::max(0.0, (trial_norm - law.fs) / law.kp);
+      next.slipping = true;
       next.slider = in.u - (law.fs / law.kp) * n;
       next.dissipated += law.fs * travel;
       next.accumulated_slip += travel;

@@ -9,6 +9,9 @@
 // the origin it is the 1-D slider.
 #pragma once
 
+#include <algorithm>
+
+#include "isolab/hysteresis/plan_slip_decision.h"
 #include "isolab/hysteresis/plan_vector.h"
 #include "isolab/hysteresis/unit_slider.h"
 
@@ -26,18 +29,20 @@ struct PlanUnitSlider {
     // travel (|z| = 1 while slipping); exact when sticking and for a straight increment whose
     // slip keeps its direction, which is every increment along a line.
     double z_work = 0.0;
+    bool slipping = false;
   };
 
   Vec2 Z(Vec2 u, Vec2 slider_position) const { return (u - slider_position) / slider.uy; }
 
-  // The one stick test of the bearing laws.
-  Step Update(Vec2 u_n, Vec2 slider_n, Vec2 u) const {
+  // The one stick test of the bearing laws (plan_slip_decision.h): z_n is the committed slider
+  // force's direction.
+  Step Update(bool committed_slipping, Vec2 u_n, Vec2 slider_n, Vec2 u) const {
     const double uy = slider.uy;
     const Vec2 z_n = Z(u_n, slider_n);
     const Vec2 trial = Z(u, slider_n);
     const double trial_norm = Norm(trial);
     Step step;
-    if (trial_norm <= 1.0) {
+    if (!PlanSlips(committed_slipping, z_n, u - u_n, trial_norm)) {
       step.z = trial;
       step.dz_du = Identity(1.0 / uy);
       step.slider = slider_n;
@@ -45,7 +50,9 @@ struct PlanUnitSlider {
       step.z = trial / trial_norm;
       step.dz_du = (1.0 / (uy * trial_norm)) * NormalProjector(step.z);
       step.slider = u - uy * step.z;
-      step.travel = uy * (trial_norm - 1.0);
+      // Not below 0: a continuing slip decided by the phase may start a round-off inside.
+      step.travel = std::max(0.0, uy * (trial_norm - 1.0));
+      step.slipping = true;
     }
     step.z_work = 0.5 * uy * (Dot(step.z, step.z) - Dot(z_n, z_n)) + step.travel;
     return step;

@@ -1,0 +1,32 @@
+// The stick-or-slip decision of a circular slider over an increment, shared by the plan kernels
+// whose return map is closed form (plan_parallel_slider.h, plan_unit_slider.h): the 2-D form of
+// slip_direction.h, and for the same reason.
+//
+// A slider that slipped to reach its committed state sits on its circle, so Newton's predictor
+// (du = 0) recomputes a trial force whose norm equals the strength up to round-off, and a bare
+// |trial| <= strength decides stick or slip by the sign of that round-off: half the continuing
+// slips would start on the elastic tangent and need a second solve. The committed phase is known
+// (PlanLawState's x.slip), so:
+//   * committed slipping along n and n . du >= 0: the slip goes on, exactly, since then
+//     |trial|^2 = strength^2 + 2 strength k n . du + k^2 |du|^2 >= strength^2;
+//   * otherwise the kernel's own test |trial| <= strength.
+// The tangent at du = 0 is then the slip side's, the phase of the step before (slip_direction.h
+// explains why both one-sided derivatives are exact). The series-form kernel
+// (plan_series_slider.h) keeps its own test: its slip solve has no closed form at zero travel.
+#pragma once
+
+#include "isolab/hysteresis/plan_vector.h"
+
+namespace isolab::hysteresis {
+
+//   committed_slipping  the committed state's phase (Slipping(state))
+//   committed_direction any positive multiple of the committed slider force's direction
+//   du                  increment of the driving deformation from the committed state
+//   trial_norm          |trial slider force| / strength if it stuck over the increment
+inline bool PlanSlips(bool committed_slipping, Vec2 committed_direction, Vec2 du,
+                      double trial_norm) {
+  if (committed_slipping && Dot(committed_direction, du) >= 0.0) return true;
+  return trial_norm > 1.0;
+}
+
+}  // namespace isolab::hysteresis
