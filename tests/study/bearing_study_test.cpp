@@ -19,7 +19,10 @@ io::StudyFile BearingStudy() {
 integrators::ResponseHistory RunVariant(const io::StudyVariant& variant,
                                         const io::StudyRecord& record, io::AnalysisSection analysis,
                                         integrators::RunSummary* summary) {
-  const io::AnalysisSetup setup = io::PrepareAnalysis(variant.model, {record.path, 0.75, {}});
+  io::RunOverrides overrides;
+  overrides.record = record.path;
+  overrides.scale = 0.75;
+  const io::AnalysisSetup setup = io::PrepareAnalysis(variant.model, overrides);
   integrators::ResponseHistory response;
   *summary = io::RunAnalysis(analysis, setup, &response);
   return response;
