@@ -498,3 +498,17 @@ TEST(RunCommand, OutputOptionsChooseWhatIsWrittenNotWhatIsComputed) {
     EXPECT_FALSE(std::filesystem::exists(refused)) << c.file;
   }
 }
+
+// isolab's start-up loads neither MPI nor pagmo (nor their dependencies): only fit, diagnose and
+// compare need them, and the front hands those to isolab-commands (src/cli/main.cpp).
+TEST(RunCommand, TheFrontLinksNeitherMpiNorPagmo) {
+  const auto libraries = isolab::testing::RunShell(std::string("ldd ") + ISOLAB_BINARY);
+  ASSERT_EQ(libraries.exit_code, 0);
+  for (const char* heavy : {"libmpi", "libpagmo", "libtbb", "libboost"}) {
+    EXPECT_EQ(libraries.output.find(heavy), std::string::npos) << heavy << "\n" << libraries.output;
+  }
+  // And the commands that need them still run through it.
+  const auto fit = RunIsolab("fit --help");
+  EXPECT_EQ(fit.exit_code, 0);
+  EXPECT_NE(fit.output.find("Identify an isolator model's parameters"), std::string::npos);
+}
