@@ -31,6 +31,40 @@ Series Vector(std::string name, std::string units, Value value) {
 
 }  // namespace
 
+std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks) {
+  std::vector<NamedPeak> named;
+  if (setup.layout.isolation >= 0) {
+    named.push_back({"isolator_displacement", &peaks.isolator_displacement, dimension::kLength});
+    named.push_back({"isolator_force", &peaks.isolator_force, dimension::kForce});
+  }
+  named.push_back({"base_shear", &peaks.base_shear, dimension::kForce});
+  named.push_back(
+      {"roof_absolute_acceleration", &peaks.roof_absolute_acceleration, dimension::kAcceleration});
+  if (!setup.layout.stories.empty()) {
+    named.push_back({"first_story_shear", &peaks.first_story_shear, dimension::kForce});
+    named.push_back({"story_drift", &peaks.story_drift, dimension::kLength});
+  }
+  return named;
+}
+
+std::vector<std::string> RecordedQuantities(const OutputSelection& selection) {
+  std::vector<std::string> quantities;
+  for (const std::string_view name : kQuantityNames) {
+    if (selection.Records(name)) quantities.emplace_back(name);
+  }
+  return quantities;
+}
+
+std::vector<std::string> RecordedLevels(const OutputSelection& selection,
+                                        const AnalysisSetup& setup) {
+  std::vector<std::string> levels;
+  if (selection.summary_only) return levels;
+  for (const int dof : SelectedDofs(selection, setup, "output.levels")) {
+    levels.push_back(setup.layout.dof_names[dof]);
+  }
+  return levels;
+}
+
 std::vector<Series> ResultSeries(const ModelFile& model, const AnalysisSetup& setup,
                                  const OutputSelection& selection, const std::string& levels_key) {
   std::vector<Series> series;

@@ -12,6 +12,7 @@
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/output_selection.h"
+#include "isolab/io/response_peaks.h"
 
 namespace isolab::io {
 
@@ -24,6 +25,22 @@ struct Series {
 
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };
+
+// A peak as the files name it ("isolator_displacement": /peaks/<name> in HDF5, a '#' line in CSV).
+struct NamedPeak {
+  const char* name;
+  const Peak* peak;
+  Dimension dimension;
+};
+// The peaks that apply to the run's structure (isolator ones with isolation, story ones for a
+// building), in file order.
+std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks);
+
+// What a selection writes, for the files' description of it: the quantities' names and the
+// selected levels' DOF names (both empty when it is summary-only).
+std::vector<std::string> RecordedQuantities(const OutputSelection& selection);
+std::vector<std::string> RecordedLevels(const OutputSelection& selection,
+                                        const AnalysisSetup& setup);
 
 // The series `selection` records of a run of `setup`, in file order (layout in results_file.h);
 // none when it is summary-only. Throws InputError({levels_key}, ...) for a level the structure

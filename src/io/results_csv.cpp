@@ -46,31 +46,14 @@ void WriteComments(std::ostream& out, const RunDescription& run) {
   if (selection.summary_only) {
     fmt::print(out, "# output: summary only (no histories)\n");
   } else {
-    std::vector<std::string_view> quantities;
-    for (const std::string_view name : kQuantityNames) {
-      if (selection.Records(name)) quantities.push_back(name);
-    }
-    std::vector<std::string> levels;
-    for (const int dof : SelectedDofs(selection, setup, "output.levels")) {
-      levels.push_back(setup.layout.dof_names[dof]);
-    }
     fmt::print(out, "# output: every {} steps; quantities: {}; levels: {}\n", selection.every,
-               fmt::join(quantities, ", "), fmt::join(levels, ", "));
+               fmt::join(RecordedQuantities(selection), ", "),
+               fmt::join(RecordedLevels(selection, setup), ", "));
   }
   const ResponsePeaks& peaks = *run.peaks;
-  const auto peak = [&](const char* name, const Peak& p, Dimension dimension) {
-    fmt::print(out, "# peak {}: {:.6g} {} at t = {:g} {}\n", name, p.value,
-               DescribeUnits(units, dimension), p.time, units.time());
-  };
-  if (setup.layout.isolation >= 0) {
-    peak("isolator displacement", peaks.isolator_displacement, dimension::kLength);
-    peak("isolator force", peaks.isolator_force, dimension::kForce);
-  }
-  peak("base shear", peaks.base_shear, dimension::kForce);
-  peak("roof absolute acceleration", peaks.roof_absolute_acceleration, dimension::kAcceleration);
-  if (!setup.layout.stories.empty()) {
-    peak("first-story shear", peaks.first_story_shear, dimension::kForce);
-    peak("story drift", peaks.story_drift, dimension::kLength);
+  for (const NamedPeak& p : FilePeaks(setup, peaks)) {
+    fmt::print(out, "# peak {}: {:.6g} {} at t = {:g} {}\n", p.name, p.peak->value,
+               DescribeUnits(units, p.dimension), p.peak->time, units.time());
   }
   const integrators::Energies& e = peaks.energies;
   fmt::print(out,

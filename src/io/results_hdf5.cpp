@@ -92,22 +92,14 @@ void WritePeaks(Hdf5File& file, const RunDescription& run) {
   const ResponsePeaks& peaks = *run.peaks;
   const UnitSystem& units = run.model->units;
   file.CreateGroup("peaks");
-  const auto peak = [&](const char* name, const Peak& p, Dimension dimension) {
-    const std::string path = fmt::format("peaks/{}", name);
-    file.WriteDoubles(path, {}, std::span<const double>(&p.value, 1),
-                      DescribeUnits(units, dimension));
-    file.WriteAttribute(path, "time", p.time);
-    if (p.index >= 0) file.WriteIntegerAttribute(path, "index", p.index);
-  };
-  if (setup.layout.isolation >= 0) {
-    peak("isolator_displacement", peaks.isolator_displacement, dimension::kLength);
-    peak("isolator_force", peaks.isolator_force, dimension::kForce);
+  for (const NamedPeak& p : FilePeaks(setup, peaks)) {
+    const std::string path = fmt::format("peaks/{}", p.name);
+    file.WriteDoubles(path, {}, std::span<const double>(&p.peak->value, 1),
+                      DescribeUnits(units, p.dimension));
+    file.WriteAttribute(path, "time", p.peak->time);
+    if (p.peak->index >= 0) file.WriteIntegerAttribute(path, "index", p.peak->index);
   }
-  peak("base_shear", peaks.base_shear, dimension::kForce);
-  peak("roof_absolute_acceleration", peaks.roof_absolute_acceleration, dimension::kAcceleration);
   if (!setup.layout.stories.empty()) {
-    peak("first_story_shear", peaks.first_story_shear, dimension::kForce);
-    peak("story_drift", peaks.story_drift, dimension::kLength);
     file.WriteAttribute("peaks/story_drift", "ratio", peaks.story_drift_ratio);
   }
   file.CreateGroup("final_energy");
@@ -128,18 +120,8 @@ void WriteSelectionAttributes(Hdf5File& file, const RunDescription& run) {
   const OutputSelection& selection = run.selection;
   file.WriteIntegerAttribute("/", "output_every", selection.every);
   file.WriteIntegerAttribute("/", "summary_only", selection.summary_only ? 1 : 0);
-  std::vector<std::string> quantities;
-  for (const std::string_view name : kQuantityNames) {
-    if (selection.Records(name)) quantities.emplace_back(name);
-  }
-  file.WriteStringsAttribute("/", "output_quantities", quantities);
-  std::vector<std::string> levels;
-  if (!selection.summary_only) {
-    for (const int dof : SelectedDofs(selection, *run.setup, "output.levels")) {
-      levels.push_back(run.setup->layout.dof_names[dof]);
-    }
-  }
-  file.WriteStringsAttribute("/", "output_levels", levels);
+  file.WriteStringsAttribute("/", "output_quantities", RecordedQuantities(selection));
+  file.WriteStringsAttribute("/", "output_levels", RecordedLevels(selection, *run.setup));
 }
 
 class Hdf5Sink final : public ResultsWriter::Sink {
