@@ -66,7 +66,7 @@ std::vector<std::string> RecordedLevels(const OutputSelection& selection,
 }
 
 std::vector<Series> ResultSeries(const ModelFile& model, const AnalysisSetup& setup,
-                                 const OutputSelection& selection, const std::string& levels_key) {
+                                 const OutputSelection& selection) {
   std::vector<Series> series;
   if (selection.summary_only) return series;
   const UnitSystem& units = model.units;
@@ -78,7 +78,7 @@ std::vector<Series> ResultSeries(const ModelFile& model, const AnalysisSetup& se
   const auto& connections = setup.structure.connections();
 
   // The selected levels: their DOFs, and the connections and stories just below them.
-  const std::vector<int> dofs = SelectedDofs(selection, setup, levels_key);
+  const std::vector<int> dofs = SelectedDofs(selection, setup, "output.levels");
   const auto chosen = [&dofs](int dof) {
     return std::binary_search(dofs.begin(), dofs.end(), dof);
   };

@@ -43,9 +43,9 @@ std::vector<std::string> RecordedLevels(const OutputSelection& selection,
                                         const AnalysisSetup& setup);
 
 // The series `selection` records of a run of `setup`, in file order (layout in results_file.h);
-// none when it is summary-only. Throws InputError({levels_key}, ...) for a level the structure
-// does not have.
+// none when it is summary-only. Throws InputError({"output.levels"}, ...) for a level the
+// structure does not have.
 std::vector<Series> ResultSeries(const ModelFile& model, const AnalysisSetup& setup,
-                                 const OutputSelection& selection, const std::string& levels_key);
+                                 const OutputSelection& selection);
 
 }  // namespace isolab::io

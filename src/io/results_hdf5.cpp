@@ -1,7 +1,6 @@
 // The HDF5 results layout (results_file.h, docs/results.md).
 #include <fmt/format.h>
 
-#include <optional>
 #include <set>
 
 #include "isolab/io/hdf5_file.h"

@@ -1,17 +1,16 @@
 #include "isolab/io/results_writer.h"
 
 #include <algorithm>
-#include <filesystem>
 
 #include "results_sink.h"
 
 namespace isolab::io {
 
 ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
-                             std::size_t buffer_rows, const std::string& levels_key)
+                             std::size_t buffer_rows)
     : run_(run) {
   CheckResultsPath(path);
-  series_ = ResultSeries(*run.model, *run.setup, run.selection, levels_key);
+  series_ = ResultSeries(*run.model, *run.setup, run.selection);
   std::size_t width = 0;
   for (const Series& s : series_) width += s.width();
   buffer_rows_ = buffer_rows > 0 ? buffer_rows

@@ -24,9 +24,8 @@ class ResultsWriter final : public integrators::ResponseObserver {
 
   // Creates `path` (its extension chooses the format, results_file.h) under a temporary name for
   // the run `run` describes (its summary and peaks are not read), recording run.selection.
-  // Throws InputError for a bad path or a level the structure does not have (named `levels_key`).
-  ResultsWriter(const std::string& path, const RunDescription& run, std::size_t buffer_rows = 0,
-                const std::string& levels_key = "output.levels");
+  // Throws InputError for a bad path or a level the structure does not have.
+  ResultsWriter(const std::string& path, const RunDescription& run, std::size_t buffer_rows = 0);
   ~ResultsWriter() override;
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
