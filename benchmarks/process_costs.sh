@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Whole-process costs of `isolab run` (docs/benchmarks.md, "Process costs"): start-up
 # (`isolab --version`, shared libraries), a one-step run, the set-up of a 1000-story building and
-# the memory peak of a 1000-story run of 10,000 steps. Times are medians of REPEAT runs (default
+# the memory peak of a 1000-story run of 10,000 steps (no free vibration after the record), with
+# summary-only output, every 10th step and every step written. Times are medians of REPEAT runs (default
 # 9), wall and CPU (user + system; less sensitive to other load). Run by hand on a quiet
 # machine; never in CI.
 #   benchmarks/process_costs.sh [ISOLAB] [REPEAT]
@@ -54,8 +55,15 @@ echo "isolab: $isolab ($("$isolab" --version))"
 echo "isolab --version:                  $(median_ms "$isolab" --version)"
 echo "shared libraries (ldd):            $(ldd "$isolab" | wc -l)"
 echo "shared libraries loaded (--version): $(LD_DEBUG=libs "$isolab" --version 2>&1 | grep -c 'calling init:')"
-echo "one-step run, five-story Table 9:  $(median_ms "$isolab" run "$work/five_story_one_step.yaml" -o "$work/one.h5")"
-echo "one-step run, 1000 stories:        $(median_ms "$isolab" run "$work/stories_1000_one_step.yaml" -o "$work/one.h5") (set-up)"
-/usr/bin/time -v "$isolab" run "$work/stories_1000.yaml" -o "$work/run.h5" >"$work/run.txt" 2>"$work/time.txt"
-echo "1000 stories, 10,000 steps:        $(grep -o 'Newton: .*' "$work/run.txt")"
-echo "  wall $(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$work/time.txt"), peak RSS $(awk '/Maximum resident set size/ { printf "%.0f MiB", $6 / 1024 }' "$work/time.txt"), results $(du -m "$work/run.h5" | cut -f1) MB"
+echo "one-step run, five-story Table 9:  $(median_ms "$isolab" run "$work/five_story_one_step.yaml" --free-vibration 0 -o "$work/one.h5")"
+echo "one-step run, 1000 stories:        $(median_ms "$isolab" run "$work/stories_1000_one_step.yaml" --free-vibration 0 -o "$work/one.h5") (set-up)"
+peak() {  # peak resident memory of a command
+  /usr/bin/time -v "$@" >"$work/run.txt" 2>"$work/time.txt"
+  echo "wall $(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$work/time.txt"), peak RSS $(awk '/Maximum resident set size/ { printf "%.1f MiB", $6 / 1024 }' "$work/time.txt")"
+}
+echo "isolab --version:                  $(peak "$isolab" --version)"
+for output in --summary-only "--every 10" ""; do
+  rm -f "$work/run.h5"
+  echo "1000 stories, 10,000 steps, ${output:-every step}: $(peak "$isolab" run "$work/stories_1000.yaml" --free-vibration 0 -o "$work/run.h5" $output)"
+  echo "  $(grep -o 'Newton: .*' "$work/run.txt"), results $(du -m "$work/run.h5" | cut -f1) MB"
+done

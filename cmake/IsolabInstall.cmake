@@ -14,6 +14,8 @@ endforeach()
 set_target_properties(isolab_klu PROPERTIES EXPORT_NAME klu)
 
 install(TARGETS isolab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The front (bin/isolab) starts it for fit, diagnose and compare (src/cli/main.cpp).
+install(TARGETS isolab_commands RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/isolab)
 install(TARGETS ${isolab_library_targets} EXPORT isolabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -1,19 +1,74 @@
 // isolab: time-history analysis of base-isolated structures. Exit codes: 0 success, 1 a failure
 // inside isolab, 2 bad input (file, option, parameter), with a message saying where and why.
-#include <CLI/CLI.hpp>
-#include <iostream>
+//
+// Two executables from this file. `isolab`, the front, runs the commands that need no more than
+// the solver and its files (run, cyclic, synth, spectrum, shaketable) and starts without MPI,
+// pagmo and their dependencies. `fit`, `diagnose` and `compare` need them: the front replaces
+// itself (execv, same process, arguments and environment, so mpirun's ranks stay ranks) with
+// `isolab-commands`, built with ISOLAB_ALL_COMMANDS, which has every command
+// (libexec/isolab/isolab-commands beside bin/, or in the build tree).
+#include <unistd.h>
 
-#include "compare_command.h"
+#include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string_view>
+#include <utility>
+
 #include "cyclic_command.h"
-#include "diagnose_command.h"
-#include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
 #include "shaketable_command.h"
 #include "spectrum_command.h"
 #include "synth_command.h"
+#ifdef ISOLAB_ALL_COMMANDS
+#include "compare_command.h"
+#include "diagnose_command.h"
+#include "fit_command.h"
+#else
+#include "beside_executable.h"
+#endif
+
+namespace {
+
+#ifndef ISOLAB_ALL_COMMANDS
+// The commands isolab-commands runs, with what `isolab --help` says of them (their own
+// descriptions, which isolab-commands prints with their options).
+constexpr std::pair<std::string_view, std::string_view> kHeavyCommands[] = {
+    {"fit", "Identify an isolator model's parameters from cyclic tests (CMA-ES)"},
+    {"diagnose",
+     "Fit a base isolator model to cyclic tests, name the effects it lacks, add them and refit"},
+    {"compare",
+     "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
+     "(threads, or MPI ranks under mpirun)"},
+};
+
+// Runs isolab-commands in place of this process when argv names one of its commands; returns
+// only when it does not, or when the executable cannot be started (exit code 1 then).
+void HandOverHeavyCommand(int argc, char** argv) {
+  if (argc < 2) return;
+  for (const auto& [name, help] : kHeavyCommands) {
+    if (argv[1] != name) continue;
+    const std::string path = isolab::cli::BesideExecutable("libexec/isolab/isolab-commands",
+                                                           "libexec/isolab/isolab-commands");
+    // Its plot scripts are found from the front's folder, not from libexec (beside_executable.h).
+    setenv(isolab::cli::kFrontDirectoryVariable, isolab::cli::ExecutableDirectory().c_str(), 1);
+    execv(path.c_str(), argv);
+    std::cerr << "isolab: internal error: cannot start " << path << " for '" << name << "' ("
+              << std::strerror(errno) << "); reinstall isolab\n";
+    std::exit(1);
+  }
+}
+#endif
+
+}  // namespace
 
 int main(int argc, char** argv) {
+#ifndef ISOLAB_ALL_COMMANDS
+  HandOverHeavyCommand(argc, argv);
+#endif
   CLI::App app{"isolab: time-history solver for base-isolated structures"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("isolab ") + ISOLAB_VERSION);
@@ -24,14 +79,23 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterRunCommand(app, run);
   isolab::cli::SynthOptions synth;
   isolab::cli::RegisterSynthCommand(app, synth);
+#ifdef ISOLAB_ALL_COMMANDS
   isolab::cli::FitOptions fit;
   isolab::cli::RegisterFitCommand(app, fit);
   isolab::cli::DiagnoseOptions diagnose;
   isolab::cli::RegisterDiagnoseCommand(app, diagnose);
+#else
+  // Listed by --help; never parsed here (HandOverHeavyCommand took them).
+  for (const auto& [name, help] : kHeavyCommands) {
+    app.add_subcommand(std::string(name), std::string(help))->allow_extras();
+  }
+#endif
   isolab::cli::SpectrumOptions spectrum;
   isolab::cli::RegisterSpectrumCommand(app, spectrum);
+#ifdef ISOLAB_ALL_COMMANDS
   isolab::cli::CompareOptions compare;
   isolab::cli::RegisterCompareCommand(app, compare);
+#endif
   isolab::cli::ShakeTableOptions shaketable;
   isolab::cli::RegisterShakeTableCommand(app, shaketable);
 
@@ -46,10 +110,14 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
     if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
+#ifdef ISOLAB_ALL_COMMANDS
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
     if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
+#endif
     if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
+#ifdef ISOLAB_ALL_COMMANDS
     if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
+#endif
     if (app.got_subcommand("shaketable")) {
       isolab::cli::RunShakeTableCommand(shaketable, std::cout);
     }

@@ -14,6 +14,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "beside_executable.h"
 #include "isolab/core/errors.h"
 
 extern char** environ;
@@ -106,17 +107,7 @@ std::string Tail(const std::string& text, std::size_t max_lines = 12) {
 }  // namespace
 
 std::string PlotScriptPath(const std::string& script_name) {
-  std::error_code error;
-  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-  const std::filesystem::path bin = error ? std::filesystem::path(".") : executable.parent_path();
-  const std::filesystem::path candidates[] = {
-      bin / ".." / "share" / "isolab" / "scripts" / script_name,  // installed
-      bin / "scripts" / script_name,                              // build tree
-  };
-  for (const auto& candidate : candidates) {
-    if (std::filesystem::exists(candidate, error)) return candidate.lexically_normal().string();
-  }
-  return candidates[0].lexically_normal().string();
+  return BesideExecutable("share/isolab/scripts/" + script_name, "scripts/" + script_name);
 }
 
 std::string PlotDirectory(const std::string& requested, const std::string& output_file) {

@@ -68,8 +68,7 @@ void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, s
 
 void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysis,
                   const io::AnalysisSetup& setup, const io::ResponsePeaks& peaks,
-                  const integrators::RunSummary& summary,
-                  const integrators::ResponseHistory& response, const std::string& output,
+                  const integrators::RunSummary& summary, const std::string& output,
                   std::ostream& out) {
   const io::UnitSystem& u = model.units;
   const std::string length = u.length(), force = u.force(), time = u.time();
@@ -115,8 +114,8 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
       }
     }
   }
-  if (response.rows_written > 0) {
-    const integrators::Energies& e = response.energies[response.rows_written - 1];
+  if (peaks.rows > 0) {
+    const integrators::Energies& e = peaks.energies;
     const double input = e.input != 0.0 ? e.input : 1.0;
     fmt::print(out,
                "\nenergy at the end [{}*{}]: input {:.5g} = kinetic {:.3g} + damping {:.5g} "
@@ -136,8 +135,7 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
     fmt::print(out,
                "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
                "factorisations, {} step cuts; {:.3f} s\n",
-               summary.newton_iterations, summary.SolvesPerStep(),
-               summary.max_iterations_in_a_step,
+               summary.newton_iterations, summary.SolvesPerStep(), summary.max_iterations_in_a_step,
                summary.factorisations, summary.step_cuts, summary.wall_seconds);
   }
   fmt::print(out, "results: {}\n", output);
@@ -146,7 +144,6 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
 nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection& analysis,
                            const io::AnalysisSetup& setup, const io::ResponsePeaks& peaks,
                            const integrators::RunSummary& summary,
-                           const integrators::ResponseHistory& response,
                            const std::vector<std::string>& warnings, const std::string& output) {
   const io::AppliedRecord& r = setup.record;
   const io::ModelSummary& m = setup.summary;
@@ -188,8 +185,8 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection
     json["residual_oscillation"] = peaks.residual_oscillation;
     json["isolator_displacement_at_excitation_end"] = peaks.isolator_displacement_at_excitation_end;
   }
-  if (response.rows_written > 0) {
-    const integrators::Energies& e = response.energies[response.rows_written - 1];
+  if (peaks.rows > 0) {
+    const integrators::Energies& e = peaks.energies;
     json["energy"] = {{"input", e.input},
                       {"kinetic", e.kinetic},
                       {"damping", e.damping},
@@ -214,6 +211,39 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection
   json["wall_seconds"] = summary.wall_seconds;
   json["results"] = output;
   return json;
+}
+
+// The model's output selection with the command line's options over it, checked before the run.
+io::OutputSelection ChooseOutput(const io::ModelFile& model, const RunOptions& options,
+                                 const io::AnalysisSetup& setup) {
+  io::OutputSelection selection = model.output;
+  if (options.every) selection.every = *options.every;
+  if (options.summary_only) selection.summary_only = true;
+  if (!options.quantities.empty()) {
+    selection.quantities.clear();
+    for (const std::string& name : options.quantities) {
+      const std::string error = io::UnknownQuantity(name);
+      if (!error.empty()) throw InputError({"--quantities"}, error);
+      selection.quantities.push_back(name);
+    }
+  }
+  std::string levels_key = "output.levels";
+  if (!options.levels.empty()) {
+    selection.levels.clear();
+    for (const std::string& text : options.levels) {
+      const std::optional<int> level = io::ParseLevel(text);
+      if (!level) {
+        throw InputError({"--levels"}, fmt::format("'{}' is not a level (0 for the base, k for "
+                                                   "floor k, or roof)",
+                                                   text));
+      }
+      selection.levels.push_back(*level);
+    }
+    levels_key = "--levels";
+  }
+  // --fixed-base takes the base away: a level may exist in the model and not in this run.
+  io::SelectedDofs(selection, setup, levels_key);
+  return selection;
 }
 
 void PrintWarnings(const std::vector<std::string>& warnings) {
@@ -249,6 +279,24 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
       ->check(CLI::PositiveNumber);
   command->add_option("-o,--output", options.output,
                       "Results file: .h5/.hdf5 (HDF5) or .csv (time histories)");
+  command
+      ->add_option("--every", options.every,
+                   "Write every N-th analysis step (replaces output.every; peaks and energies "
+                   "still see every step)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--quantities", options.quantities,
+                   "Histories to write, comma-separated (replaces output.quantities): "
+                   "displacement, velocity, acceleration, absolute_acceleration, "
+                   "connection_force, isolator, story, energy")
+      ->delimiter(',');
+  command
+      ->add_option("--levels", options.levels,
+                   "Levels to write, comma-separated (replaces output.levels): 0 the base, k "
+                   "floor k, roof")
+      ->delimiter(',');
+  command->add_flag("--summary-only", options.summary_only,
+                    "Write peaks and energies only, no histories (replaces output.summary_only)");
   command->add_flag("--fixed-base", options.fixed_base, "Analyse the building without isolation");
   command
       ->add_option("--integrator", options.integrator,
@@ -304,22 +352,20 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
   if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
+  const io::OutputSelection selection = ChooseOutput(model, options, setup);
 
   if (!options.json) PrintPreamble(model, setup, out);
   out.flush();
   PrintWarnings(setup.summary.warnings);
-  integrators::ResponseHistory response;
-  const integrators::RunSummary summary = io::RunAnalysis(analysis, setup, &response);
-  const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
-  const io::RunDescription run{&model,   &setup, &analysis,     &response,
-                               &summary, &peaks, ISOLAB_VERSION};
-  io::WriteResultsFile(output, run);
-  const std::vector<std::string> warnings = io::RunWarnings(run);
+  const io::RecordedRun run =
+      io::RunAndRecord(model, analysis, setup, selection, output, ISOLAB_VERSION);
+  const io::ResponsePeaks& peaks = run.peaks;
+  const integrators::RunSummary& summary = run.summary;
+  const std::vector<std::string>& warnings = run.warnings;
   if (options.json) {
-    out << SummaryJson(model, analysis, setup, peaks, summary, response, warnings, output).dump(2)
-        << "\n";
+    out << SummaryJson(model, analysis, setup, peaks, summary, warnings, output).dump(2) << "\n";
   } else {
-    PrintSummary(model, analysis, setup, peaks, summary, response, output, out);
+    PrintSummary(model, analysis, setup, peaks, summary, output, out);
   }
   // After the run: what the response itself shows (the model's warnings were printed before).
   PrintWarnings(

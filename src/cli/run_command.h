@@ -1,13 +1,16 @@
 // `isolab run`: a time-history analysis of a model file's structure under its excitation. Before
 // the run it prints the record as applied (units, scale, PGA) and the model summary (weight,
 // periods) with warnings about implausible values; after it, the peaks, the residual isolator
-// displacement after free vibration, the energy balance and integrator statistics; the full
-// response goes to HDF5 or CSV (results_file.h).
+// displacement after free vibration, the energy balance and integrator statistics; the response
+// goes to HDF5 or CSV as it is computed (results_writer.h), thinned as the model's `output:`
+// section and the options --every, --quantities, --levels and --summary-only ask
+// (output_selection.h).
 #pragma once
 
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -25,6 +28,10 @@ struct RunOptions {
   std::string free_vibration;                // "auto" or a time (s); empty: the model's
   std::optional<double> trial_displacement;  // (model length) for the isolated period
   std::string output;  // .h5/.hdf5 or .csv; default: the model's output.file or <model stem>.h5
+  std::optional<int> every;             // output every N steps, overriding output.every
+  std::vector<std::string> quantities;  // overriding output.quantities
+  std::vector<std::string> levels;      // "0", "3", "roof", ...; overriding output.levels
+  bool summary_only = false;            // overriding output.summary_only (when set)
   bool fixed_base = false;
   std::string integrator;      // "newmark" or "ida"; empty: the model's analysis.integrator
   std::optional<double> rtol;  // IDA relative tolerance, overriding analysis.ida.rtol

@@ -180,8 +180,9 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
          PeakAbs(predicted_roof)},
     };
     const io::ResponsePeaks peaks = io::ComputePeaks(*prepared, response);
-    io::WriteResultsFile(results_path, {&model, &*prepared, &model.analysis, &response, &summary,
-                                        &peaks, ISOLAB_VERSION});
+    io::WriteResultsFile(
+        results_path, {&model, &*prepared, &model.analysis, &summary, &peaks, ISOLAB_VERSION, {}},
+        response);
   }
   const double nrmse_u = options.predict ? Nrmse(m.displacement.front(), predicted_u) : 0.0;
   const double nrmse_roof = options.predict ? Nrmse(m.acceleration.back(), predicted_roof) : 0.0;

@@ -140,10 +140,14 @@ class IdaRun {
     }
   }
 
-  void Record(int row, ResponseHistory* out) {
+  // Hands the state at grid step `step` to the observer; returns its energies.
+  Energies Record(int step, ResponseObserver& observer) {
     double t = t_;
-    if (row > 0) Check(IDAGetQuad(ida_.get(), &t, energy_.get()), "IDAGetQuad");
-    system_.Record(t_, N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(energy_.get()), row, out);
+    if (step > 0) Check(IDAGetQuad(ida_.get(), &t, energy_.get()), "IDAGetQuad");
+    const ResponseRow row =
+        system_.Record(step, t_, N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(energy_.get()));
+    observer.Observe(row);
+    return row.energies;
   }
 
   // IDA's counters restart with IDAReInit (the linear solver's only at its next solve), so they
@@ -252,8 +256,7 @@ class IdaRun {
     Of(user_data).system_.EnergyRates(t, N_VGetArrayPointer(y), N_VGetArrayPointer(rates));
     return 0;
   }
-  static void KeepMessage(int, const char*, const char* function, char* message,
-                          void* user_data) {
+  static void KeepMessage(int, const char*, const char* function, char* message, void* user_data) {
     Of(user_data).last_message_ = fmt::format("{}: {}", function, message);
   }
 
@@ -276,25 +279,22 @@ class IdaRun {
 }  // namespace
 
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
-                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
+                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   IdaRun run(structure, excitation, options, &summary);
   const int every = std::max(grid.output_every, 1);
   const int rows = grid.steps / every + 1;
-  response->Resize(rows, structure.dofs(), static_cast<int>(structure.connections().size()),
-                   static_cast<int>(structure.law_count()));
-  run.Record(0, response);
+  run.Record(0, observer);
   double max_input = 0.0, max_balance = 0.0;
   for (int row = 1; row < rows; ++row) {
     if (!run.AdvanceTo(row * every * grid.dt)) {
       summary.termination = RunSummary::Termination::kFailed;
       break;
     }
-    run.Record(row, response);
+    const Energies e = run.Record(row * every, observer);
     summary.steps = row * every;
-    const Energies& e = response->energies[row];
     max_input = std::max(max_input, std::abs(e.input));
     max_balance = std::max(max_balance, std::abs(e.Balance()));
   }
@@ -303,6 +303,14 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
+}
+
+RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
+  HistoryRecorder recorder(response, grid, structure.dofs(),
+                           static_cast<int>(structure.connections().size()),
+                           static_cast<int>(structure.law_count()));
+  return RunIda(structure, excitation, grid, options, recorder);
 }
 
 }  // namespace isolab::integrators

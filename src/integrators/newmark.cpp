@@ -31,18 +31,6 @@ void NewmarkOptions::Validate() const {
   }
 }
 
-void ResponseHistory::Resize(int rows, int dofs, int connections, int laws) {
-  time.assign(rows, 0.0);
-  displacement.setZero(rows, dofs);
-  velocity.setZero(rows, dofs);
-  acceleration.setZero(rows, dofs);
-  absolute_acceleration.setZero(rows, dofs);
-  connection_force.setZero(rows, connections);
-  law_force.setZero(rows, laws);
-  energies.assign(rows, Energies{});
-  rows_written = 0;
-}
-
 namespace {
 
 using Eigen::VectorXd;
@@ -82,11 +70,12 @@ class NewmarkRun {
         trial_(structure.law_count()),
         rest_(structure.law_count()),
         responses_(structure.law_count()),
-        connection_forces_(structure.connections().size()) {
+        connection_forces_(structure.connections().size()),
+        law_forces_(structure.law_count()) {
     const int n = structure.dofs();
     for (VectorXd* x :
          {&u_, &v_, &a_, &u_trial_, &v_trial_, &a_trial_, &load_, &load_trial_, &force_, &residual_,
-          &correction_, &viscous_, &viscous_trial_, &zero_, &roundoff_}) {
+          &correction_, &viscous_, &viscous_trial_, &zero_, &roundoff_, &absolute_acceleration_}) {
       x->setZero(n);
     }
     excitation_.EffectiveLoad(0.0, structure_.mass(), &load_);
@@ -107,20 +96,15 @@ class NewmarkRun {
     return Advance(t0, 0.5 * h, level + 1, step) && Advance(t0 + 0.5 * h, 0.5 * h, level + 1, step);
   }
 
-  void Record(double t, int row, ResponseHistory* out) const {
-    out->time[row] = t;
-    out->displacement.row(row) = u_.transpose();
-    out->velocity.row(row) = v_.transpose();
-    out->acceleration.row(row) = a_.transpose();
-    out->absolute_acceleration.row(row) =
-        (a_.array() + excitation_.ground_acceleration.At(t)).matrix().transpose();
-    for (std::size_t k = 0; k < connection_forces_.size(); ++k) {
-      out->connection_force(row, k) = connection_forces_[k];
-    }
-    for (std::size_t k = 0; k < responses_.size(); ++k)
-      out->law_force(row, k) = responses_[k].force;
-    out->energies[row] = energies_;
-    out->rows_written = row + 1;
+  // Hands the committed state at grid step `step` (time t) to the observer.
+  void Record(int step, double t, ResponseObserver& observer) {
+    absolute_acceleration_ = a_.array() + excitation_.ground_acceleration.At(t);
+    for (std::size_t k = 0; k < responses_.size(); ++k) law_forces_[k] = responses_[k].force;
+    const auto view = [](const VectorXd& x) {
+      return std::span<const double>(x.data(), static_cast<std::size_t>(x.size()));
+    };
+    observer.Observe({step, t, view(u_), view(v_), view(a_), view(absolute_acceleration_),
+                      connection_forces_, law_forces_, energies_});
   }
 
   const Energies& energies() const { return energies_; }
@@ -230,9 +214,9 @@ class NewmarkRun {
   KluSolver solver_;
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;
-  std::vector<double> connection_forces_;
+  std::vector<double> connection_forces_, law_forces_;
   VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
-      correction_, viscous_, viscous_trial_, zero_, roundoff_;
+      correction_, viscous_, viscous_trial_, zero_, roundoff_, absolute_acceleration_;
   Energies energies_;
   double viscous_energy_ = 0.0;
   double factored_step_ = 0.0;  // step size of the current modified-Newton factorisation
@@ -243,16 +227,12 @@ class NewmarkRun {
 
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
-                      ResponseHistory* response) {
+                      ResponseObserver& observer) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   NewmarkRun run(structure, excitation, options, &summary);
-  const int every = std::max(grid.output_every, 1);
-  response->Resize(grid.steps / every + 1, structure.dofs(),
-                   static_cast<int>(structure.connections().size()),
-                   static_cast<int>(structure.law_count()));
-  run.Record(0.0, 0, response);
+  run.Record(0, 0.0, observer);
   double max_input = 0.0, max_balance = 0.0;
   for (int step = 1; step <= grid.steps; ++step) {
     const double t0 = (step - 1) * grid.dt;
@@ -260,7 +240,7 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
       summary.termination = RunSummary::Termination::kFailed;
       break;
     }
-    if (step % every == 0) run.Record(step * grid.dt, step / every, response);
+    run.Record(step, step * grid.dt, observer);
     summary.steps = step;
     max_input = std::max(max_input, std::abs(run.energies().input));
     max_balance = std::max(max_balance, std::abs(run.energies().Balance()));
@@ -269,6 +249,15 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
+}
+
+RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseHistory* response) {
+  HistoryRecorder recorder(response, grid, structure.dofs(),
+                           static_cast<int>(structure.connections().size()),
+                           static_cast<int>(structure.law_count()));
+  return RunNewmark(structure, excitation, grid, options, recorder);
 }
 
 }  // namespace isolab::integrators

@@ -21,6 +21,9 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure, const Exci
   }
   responses_.resize(phases_.size());
   connection_forces_.resize(connections.size());
+  law_forces_.resize(phases_.size());
+  acceleration_.setZero(dofs_);
+  absolute_acceleration_.setZero(dofs_);
   load_.setZero(dofs_);
   force_.setZero(dofs_);
   viscous_.setZero(dofs_);
@@ -322,21 +325,15 @@ void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
   rates[kHystereticPower] = hysteretic;
 }
 
-void RateFormSystem::Record(double t, const double* y, const double* energy_integrals, int row,
-                            ResponseHistory* out) {
+ResponseRow RateFormSystem::Record(int step, double t, const double* y,
+                                   const double* energy_integrals) {
   const Eigen::VectorXd& m = structure_.mass();
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, m, &load_);
   const double ground = excitation_.ground_acceleration.At(t);
-  out->time[row] = t;
-  for (int i = 0; i < dofs_; ++i) {
-    const double a = (load_[i] - force_[i]) / m[i];
-    out->displacement(row, i) = y[i];
-    out->velocity(row, i) = y[dofs_ + i];
-    out->acceleration(row, i) = a;
-    out->absolute_acceleration(row, i) = a + ground;
-  }
-  Energies& e = out->energies[row];
+  acceleration_ = (load_ - force_).cwiseQuotient(m);
+  absolute_acceleration_ = acceleration_.array() + ground;
+  Energies e;
   e.input = energy_integrals[kInputPower];
   e.damping = energy_integrals[kDampingPower];
   e.hysteretic = energy_integrals[kHystereticPower];
@@ -344,18 +341,26 @@ void RateFormSystem::Record(double t, const double* y, const double* energy_inte
   e.elastic = 0.0;
   const auto& connections = structure_.connections();
   for (std::size_t k = 0; k < connections.size(); ++k) {
-    out->connection_force(row, k) = connection_forces_[k];
     const auto& kernels = connections[k].assembly.kernels();
     for (std::size_t l = 0; l < kernels.size(); ++l) {
       const std::size_t law = structure_.law_offset(k) + l;
       const LawInput in = InputOf(k, law, y);
-      out->law_force(row, law) = responses_[law].force;
+      law_forces_[law] = responses_[law].force;
       e.elastic += hysteresis::StoredEnergy(
           kernels[l],
           hysteresis::RateFormState(kernels[l], phases_[law], in.u, in.v, in.z, in.w, t));
     }
   }
-  out->rows_written = row + 1;
+  const std::size_t n = static_cast<std::size_t>(dofs_);
+  return {step,
+          t,
+          {y, n},
+          {y + dofs_, n},
+          {acceleration_.data(), n},
+          {absolute_acceleration_.data(), n},
+          connection_forces_,
+          law_forces_,
+          e};
 }
 
 }  // namespace isolab::integrators

@@ -41,9 +41,9 @@ class RateFormSystem {
   // y' consistent with y at t under the current phases (M is diagonal, so v' is explicit).
   void ConsistentDerivative(double t, const double* y, double* yp);
   void EnergyRates(double t, const double* y, double* rates);
-  // Writes output row `row` from the state at t and the energies integrated so far.
-  void Record(double t, const double* y, const double* energy_integrals, int row,
-              ResponseHistory* out);
+  // The response at grid step `step` (time t) from the state y and the energies integrated so
+  // far, viewing y and this system's buffers (valid until the next call).
+  ResponseRow Record(int step, double t, const double* y, const double* energy_integrals);
 
  private:
   struct LawInput {
@@ -75,8 +75,8 @@ class RateFormSystem {
   std::vector<int> root_offsets_;    // per law, and one past the last
   std::vector<hysteresis::LawPhase> phases_;
   std::vector<hysteresis::RateResponse> responses_;
-  std::vector<double> connection_forces_;
-  Eigen::VectorXd load_, force_, viscous_, velocity_;
+  std::vector<double> connection_forces_, law_forces_;
+  Eigen::VectorXd load_, force_, viscous_, velocity_, acceleration_, absolute_acceleration_;
 
   structure::SparseMatrix pattern_;
   std::vector<int> uu_slots_, uv_slots_, mass_slots_, damping_slots_;

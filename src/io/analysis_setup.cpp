@@ -50,8 +50,16 @@ structure::Structure BuildStructure(const ModelFile& model, bool fixed_base,
 
 double StoryDrift(const AnalysisSetup& setup, const integrators::RowMatrix& displacement, int row,
                   std::size_t story) {
+  return StoryDrift(setup,
+                    std::span<const double>(displacement.row(row).data(),
+                                            static_cast<std::size_t>(displacement.cols())),
+                    story);
+}
+
+double StoryDrift(const AnalysisSetup& setup, std::span<const double> displacement,
+                  std::size_t story) {
   const structure::Connection& c = setup.structure.connections()[setup.layout.stories[story]];
-  return displacement(row, c.dof_j) - (c.dof_i >= 0 ? displacement(row, c.dof_i) : 0.0);
+  return displacement[c.dof_j] - (c.dof_i >= 0 ? displacement[c.dof_i] : 0.0);
 }
 
 namespace {

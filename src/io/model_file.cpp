@@ -89,6 +89,18 @@ void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const Mo
     }
     dofs = static_cast<int>(model.structure->building.stories.size()) + (isolated ? 1 : 0);
   }
+  const YAML::Node levels = root["output"] ? root["output"]["levels"] : YAML::Node();
+  const bool has_level_zero =
+      model.structure->kind == StructureSection::Kind::kSdof || model.isolation.size() > 0;
+  for (std::size_t i = 0; i < model.output.levels.size(); ++i) {
+    const int level = model.output.levels[i];
+    const int highest = has_level_zero ? dofs - 1 : dofs;
+    if (level != kRoofLevel && (level > highest || (!has_level_zero && level == 0))) {
+      reader.Fail(levels[i], IndexPath("output.levels", i),
+                  fmt::format("{} (the structure's levels are {} to {}, or roof)", level,
+                              has_level_zero ? 0 : 1, highest));
+    }
+  }
   const YAML::Node forces = root["excitation"] ? root["excitation"]["forces"] : YAML::Node();
   for (std::size_t i = 0; i < model.excitation.forces.size(); ++i) {
     const int dof = model.excitation.forces[i].dof;
@@ -97,6 +109,51 @@ void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const Mo
           forces[i]["dof"], IndexPath("excitation.forces", i) + ".dof",
           fmt::format("{} (the structure's degrees of freedom are 0 to {})", dof, dofs - 1));
     }
+  }
+}
+
+// The output section: the results file and what goes into it (output_selection.h).
+void ReadOutput(const YamlReader& reader, const YAML::Node& output, ModelFile* model) {
+  reader.RequireMap(output, "output");
+  reader.CheckKeys(output, "output", {"file", "every", "quantities", "levels", "summary_only"});
+  OutputSelection& selection = model->output;
+  if (output["file"]) model->output_file = reader.ReadString(output["file"], "output.file");
+  if (output["every"]) {
+    selection.every = reader.ReadInteger(output["every"], "output.every");
+    if (selection.every < 1) {
+      reader.Fail(output["every"], "output.every",
+                  fmt::format("{} (expected a whole number of steps >= 1)", selection.every));
+    }
+  }
+  if (output["quantities"]) {
+    const YAML::Node list = output["quantities"];
+    reader.RequireSequence(list, "output.quantities");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = IndexPath("output.quantities", i);
+      const std::string name = reader.ReadString(list[i], path);
+      const std::string error = UnknownQuantity(name);
+      if (!error.empty()) reader.Fail(list[i], path, error);
+      selection.quantities.push_back(name);
+    }
+  }
+  if (output["levels"]) {
+    const YAML::Node list = output["levels"];
+    reader.RequireSequence(list, "output.levels");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = IndexPath("output.levels", i);
+      const std::optional<int> level = ParseLevel(reader.ReadString(list[i], path));
+      if (!level)
+        reader.Fail(list[i], path, "expected a level: 0 for the base, k for floor k, or roof");
+      selection.levels.push_back(*level);
+    }
+  }
+  if (output["summary_only"]) {
+    const YAML::Node flag = output["summary_only"];
+    bool value = false;
+    if (!flag.IsScalar() || !YAML::convert<bool>::decode(flag, value)) {
+      reader.Fail(flag, "output.summary_only", "expected true or false");
+    }
+    selection.summary_only = value;
   }
 }
 
@@ -123,12 +180,7 @@ ModelFile LoadModelFile(const std::string& path) {
   if (root["excitation"])
     model.excitation = ReadExcitation(reader, root["excitation"], model.units);
   if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], model.units);
-  if (root["output"]) {
-    reader.RequireMap(root["output"], "output");
-    reader.CheckKeys(root["output"], "output", {"file"});
-    model.output_file =
-        reader.ReadString(reader.Require(root["output"], "output", "file"), "output.file");
-  }
+  if (root["output"]) ReadOutput(reader, root["output"], &model);
   if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);
   if (!model.structure && model.isolation.size() == 0) {
     reader.Fail(root, "", "missing key 'isolation' (a model needs isolation, structure, or both)");

@@ -8,85 +8,146 @@
 namespace isolab::io {
 namespace {
 
-using integrators::RowMatrix;
+using integrators::ResponseRow;
+using RowValues = std::span<const double> ResponseRow::*;
 
-// Rows of a row-major response matrix, copied whole.
-Series Matrix(std::string name, std::string units, std::vector<std::string> columns,
-              const RowMatrix& matrix) {
-  return {
-      std::move(name), std::move(units), std::move(columns),
-      [&matrix](int row, double* out) { std::copy_n(matrix.row(row).data(), matrix.cols(), out); },
-      matrix.data()};
+// The chosen columns of one of the row's per-DOF or per-connection arrays.
+Series Columns(std::string name, std::string units, std::vector<std::string> columns,
+               RowValues values, std::vector<int> chosen) {
+  return {std::move(name), std::move(units), std::move(columns),
+          [values, chosen = std::move(chosen)](const ResponseRow& row, double* out) {
+            const std::span<const double> all = row.*values;
+            for (std::size_t c = 0; c < chosen.size(); ++c) out[c] = all[chosen[c]];
+          }};
 }
 
 // One value per row.
 template <typename Value>
 Series Vector(std::string name, std::string units, Value value) {
-  return {
-      std::move(name), std::move(units), {}, [value](int row, double* out) { *out = value(row); }};
+  return {std::move(name), std::move(units), {}, [value](const ResponseRow& row, double* out) {
+            *out = value(row);
+          }};
 }
 
 }  // namespace
 
-std::vector<Series> ResultSeries(const RunDescription& run) {
-  const auto& r = *run.response;
-  const AnalysisSetup& setup = *run.setup;
-  const UnitSystem& units = run.model->units;
+std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks) {
+  std::vector<NamedPeak> named;
+  if (setup.layout.isolation >= 0) {
+    named.push_back({"isolator_displacement", &peaks.isolator_displacement, dimension::kLength});
+    named.push_back({"isolator_force", &peaks.isolator_force, dimension::kForce});
+  }
+  named.push_back({"base_shear", &peaks.base_shear, dimension::kForce});
+  named.push_back(
+      {"roof_absolute_acceleration", &peaks.roof_absolute_acceleration, dimension::kAcceleration});
+  if (!setup.layout.stories.empty()) {
+    named.push_back({"first_story_shear", &peaks.first_story_shear, dimension::kForce});
+    named.push_back({"story_drift", &peaks.story_drift, dimension::kLength});
+  }
+  return named;
+}
+
+std::vector<std::string> RecordedQuantities(const OutputSelection& selection) {
+  std::vector<std::string> quantities;
+  for (const std::string_view name : kQuantityNames) {
+    if (selection.Records(name)) quantities.emplace_back(name);
+  }
+  return quantities;
+}
+
+std::vector<std::string> RecordedLevels(const OutputSelection& selection,
+                                        const AnalysisSetup& setup) {
+  std::vector<std::string> levels;
+  if (selection.summary_only) return levels;
+  for (const int dof : SelectedDofs(selection, setup, "output.levels")) {
+    levels.push_back(setup.layout.dof_names[dof]);
+  }
+  return levels;
+}
+
+std::vector<Series> ResultSeries(const ModelFile& model, const AnalysisSetup& setup,
+                                 const OutputSelection& selection) {
+  std::vector<Series> series;
+  if (selection.summary_only) return series;
+  const UnitSystem& units = model.units;
   const std::string length = DescribeUnits(units, dimension::kLength);
   const std::string force = DescribeUnits(units, dimension::kForce);
   const std::string velocity = DescribeUnits(units, dimension::kVelocity);
   const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
   const std::string energy = fmt::format("{}*{}", units.force(), units.length());
   const auto& connections = setup.structure.connections();
-  const std::vector<std::string>& dofs = setup.layout.dof_names;
 
-  std::vector<Series> series;
-  series.push_back(Vector("time", units.time(), [&r](int row) { return r.time[row]; }));
+  // The selected levels: their DOFs, and the connections and stories just below them.
+  const std::vector<int> dofs = SelectedDofs(selection, setup, "output.levels");
+  const auto chosen = [&dofs](int dof) {
+    return std::binary_search(dofs.begin(), dofs.end(), dof);
+  };
+  std::vector<std::string> dof_names;
+  for (const int dof : dofs) dof_names.push_back(setup.layout.dof_names[dof]);
+  std::vector<int> chosen_connections;
+  std::vector<std::string> connection_names;
+  for (std::size_t k = 0; k < connections.size(); ++k) {
+    if (!chosen(connections[k].dof_j)) continue;
+    chosen_connections.push_back(static_cast<int>(k));
+    connection_names.push_back(connections[k].name);
+  }
+  std::vector<std::size_t> stories;  // indices into setup.layout.stories
+  std::vector<std::string> story_names;
+  for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
+    const auto& story = connections[setup.layout.stories[s]];
+    if (!chosen(story.dof_j)) continue;
+    stories.push_back(s);
+    story_names.push_back(story.name);
+  }
+
+  series.push_back(Vector("time", units.time(), [](const ResponseRow& row) { return row.time; }));
   if (!setup.record.path.empty()) {
-    series.push_back(Vector("ground_acceleration", acceleration, [&r, &setup](int row) {
-      return setup.excitation.ground_acceleration.At(r.time[row]);
+    series.push_back(Vector("ground_acceleration", acceleration, [&setup](const ResponseRow& row) {
+      return setup.excitation.ground_acceleration.At(row.time);
     }));
   }
-  series.push_back(Matrix("displacement", length, dofs, r.displacement));
-  series.push_back(Matrix("velocity", velocity, dofs, r.velocity));
-  series.push_back(Matrix("acceleration", acceleration, dofs, r.acceleration));
-  series.push_back(Matrix("absolute_acceleration", acceleration, dofs, r.absolute_acceleration));
-  std::vector<std::string> connection_names;
-  for (const auto& connection : connections) connection_names.push_back(connection.name);
-  series.push_back(Matrix("connection_force", force, connection_names, r.connection_force));
+  const auto per_dof = [&](const char* name, const std::string& units, RowValues values) {
+    if (selection.Records(name)) series.push_back(Columns(name, units, dof_names, values, dofs));
+  };
+  per_dof("displacement", length, &ResponseRow::displacement);
+  per_dof("velocity", velocity, &ResponseRow::velocity);
+  per_dof("acceleration", acceleration, &ResponseRow::acceleration);
+  per_dof("absolute_acceleration", acceleration, &ResponseRow::absolute_acceleration);
+  if (selection.Records("connection_force") && !chosen_connections.empty()) {
+    series.push_back(Columns("connection_force", force, connection_names,
+                             &ResponseRow::connection_force, chosen_connections));
+  }
 
-  if (setup.layout.isolation >= 0) {
+  if (setup.layout.isolation >= 0 && selection.Records("isolator")) {
     const int k = setup.layout.isolation;
     const int dof = connections[k].dof_j;
     series.push_back(Vector("isolator/displacement", length,
-                            [&r, dof](int row) { return r.displacement(row, dof); }));
-    series.push_back(
-        Vector("isolator/force", force, [&r, k](int row) { return r.connection_force(row, k); }));
+                            [dof](const ResponseRow& row) { return row.displacement[dof]; }));
+    series.push_back(Vector("isolator/force", force,
+                            [k](const ResponseRow& row) { return row.connection_force[k]; }));
     std::vector<std::string> components;
     for (const auto& component : connections[k].assembly.components()) {
       components.push_back(component.name);
     }
     const std::size_t first = setup.structure.law_offset(k);
     series.push_back({"isolator/component_force", force, components,
-                      [&r, first, count = components.size()](int row, double* out) {
-                        std::copy_n(r.law_force.row(row).data() + first, count, out);
+                      [first, count = components.size()](const ResponseRow& row, double* out) {
+                        std::copy_n(row.law_force.data() + first, count, out);
                       }});
   }
-  if (!setup.layout.stories.empty()) {
-    std::vector<std::string> stories;
+  if (!stories.empty() && selection.Records("story")) {
     bool heights = false;
-    for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-      stories.push_back(connections[setup.layout.stories[s]].name);
-      heights = heights || setup.layout.story_heights[s] > 0.0;
+    for (const std::size_t s : stories) heights = heights || setup.layout.story_heights[s] > 0.0;
+    std::vector<std::pair<int, int>> floors;  // (below, above); kGround: -1
+    for (const std::size_t s : stories) {
+      const auto& story = connections[setup.layout.stories[s]];
+      floors.emplace_back(story.dof_i, story.dof_j);
     }
     // Each story's drift times a factor: 1 for the drift, 100 / height for its ratio (%).
     const auto drifts = [&](std::string name, std::string units, std::vector<double> factors) {
-      std::vector<std::pair<int, int>> floors;  // (below, above); kGround: -1
-      for (const int k : setup.layout.stories)
-        floors.emplace_back(connections[k].dof_i, connections[k].dof_j);
-      return Series{std::move(name), std::move(units), stories,
-                    [&r, floors, factors](int row, double* out) {
-                      const double* u = r.displacement.row(row).data();
+      return Series{std::move(name), std::move(units), story_names,
+                    [floors, factors](const ResponseRow& row, double* out) {
+                      const double* u = row.displacement.data();
                       for (std::size_t s = 0; s < floors.size(); ++s) {
                         const double below = floors[s].first >= 0 ? u[floors[s].first] : 0.0;
                         out[s] = factors[s] * (u[floors[s].second] - below);
@@ -96,27 +157,29 @@ std::vector<Series> ResultSeries(const RunDescription& run) {
     series.push_back(drifts("story/drift", length, std::vector<double>(stories.size(), 1.0)));
     if (heights) {
       std::vector<double> per_height;
-      for (const double height : setup.layout.story_heights) {
+      for (const std::size_t s : stories) {
+        const double height = setup.layout.story_heights[s];
         per_height.push_back(height > 0.0 ? 100.0 / height
                                           : std::numeric_limits<double>::quiet_NaN());
       }
       series.push_back(drifts("story/drift_ratio", "%", per_height));
     }
-    series.push_back({"story/shear", force, stories, [&r, &setup](int row, double* out) {
-                        for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-                          out[s] = r.connection_force(row, setup.layout.stories[s]);
-                        }
-                      }});
+    std::vector<int> story_connections;
+    for (const std::size_t s : stories) story_connections.push_back(setup.layout.stories[s]);
+    series.push_back(Columns("story/shear", force, story_names, &ResponseRow::connection_force,
+                             story_connections));
   }
-  const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
-    series.push_back(Vector(fmt::format("energy/{}", name), energy,
-                            [&r, term](int row) { return r.energies[row].*term; }));
-  };
-  energy_term("input", &integrators::Energies::input);
-  energy_term("kinetic", &integrators::Energies::kinetic);
-  energy_term("damping", &integrators::Energies::damping);
-  energy_term("elastic", &integrators::Energies::elastic);
-  energy_term("hysteretic", &integrators::Energies::hysteretic);
+  if (selection.Records("energy")) {
+    const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
+      series.push_back(Vector(fmt::format("energy/{}", name), energy,
+                              [term](const ResponseRow& row) { return row.energies.*term; }));
+    };
+    energy_term("input", &integrators::Energies::input);
+    energy_term("kinetic", &integrators::Energies::kinetic);
+    energy_term("damping", &integrators::Energies::damping);
+    energy_term("elastic", &integrators::Energies::elastic);
+    energy_term("hysteretic", &integrators::Energies::hysteretic);
+  }
   return series;
 }
 

@@ -1,13 +1,18 @@
 // The time histories of a run, described once for every results format (HDF5 datasets, CSV
 // columns): each series has a name (its HDF5 path), units, column names (none for a vector) and
-// its values row by row. Private to io: results_file.h is the interface.
+// fills its values for one row of the response. Private to io: results_file.h and
+// results_writer.h are the interface.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "isolab/io/results_file.h"
+#include "isolab/integrators/response.h"
+#include "isolab/io/analysis_setup.h"
+#include "isolab/io/model_file.h"
+#include "isolab/io/output_selection.h"
+#include "isolab/io/response_peaks.h"
 
 namespace isolab::io {
 
@@ -15,20 +20,32 @@ struct Series {
   std::string name;                  // "time", "displacement", "isolator/force", ...
   std::string units;                 // "" for none
   std::vector<std::string> columns;  // empty: a vector (one value per row)
-  // Writes the width() values of output row `row` to `out`.
-  std::function<void(int row, double* out)> fill;
-  // The rows themselves, row-major, when they are stored so (a response matrix): writers may
-  // read them from here instead of copying them through `fill`.
-  const double* rows = nullptr;
+  // Writes the width() values of `row` to `out`.
+  std::function<void(const integrators::ResponseRow& row, double* out)> fill;
 
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };
 
-// Every series of a run's results, in file order (layout in results_file.h).
-std::vector<Series> ResultSeries(const RunDescription& run);
+// A peak as the files name it ("isolator_displacement": /peaks/<name> in HDF5, a '#' line in CSV).
+struct NamedPeak {
+  const char* name;
+  const Peak* peak;
+  Dimension dimension;
+};
+// The peaks that apply to the run's structure (isolator ones with isolation, story ones for a
+// building), in file order.
+std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks);
 
-// The two formats (results_file.h); WriteResultsFile chooses.
-void WriteResultsHdf5(const std::string& path, const RunDescription& run);
-void WriteResultsCsv(const std::string& path, const RunDescription& run);
+// What a selection writes, for the files' description of it: the quantities' names and the
+// selected levels' DOF names (both empty when it is summary-only).
+std::vector<std::string> RecordedQuantities(const OutputSelection& selection);
+std::vector<std::string> RecordedLevels(const OutputSelection& selection,
+                                        const AnalysisSetup& setup);
+
+// The series `selection` records of a run of `setup`, in file order (layout in results_file.h);
+// none when it is summary-only. Throws InputError({"output.levels"}, ...) for a level the
+// structure does not have.
+std::vector<Series> ResultSeries(const ModelFile& model, const AnalysisSetup& setup,
+                                 const OutputSelection& selection);
 
 }  // namespace isolab::io

@@ -8,7 +8,8 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
-#include "result_series.h"
+#include "isolab/io/results_writer.h"
+#include "results_sink.h"
 
 namespace isolab::io {
 namespace {
@@ -33,12 +34,15 @@ void CheckResultsPath(const std::string& path) {
   CheckOutputPath(path);
 }
 
-void WriteResultsFile(const std::string& path, const RunDescription& run) {
-  if (FormatOf(path) == Format::kCsv) {
-    WriteResultsCsv(path, run);
-  } else {
-    WriteResultsHdf5(path, run);
-  }
+bool IsCsvPath(const std::string& path) { return FormatOf(path) == Format::kCsv; }
+
+void WriteResultsFile(const std::string& path, const RunDescription& run,
+                      const integrators::ResponseHistory& history) {
+  RunDescription rows_as_they_are = run;
+  rows_as_they_are.selection.every = history.output_every;
+  ResultsWriter writer(path, rows_as_they_are);
+  for (int row = 0; row < history.rows_written; ++row) writer.Observe(history.Row(row));
+  writer.Finish(*run.summary, *run.peaks);
 }
 
 std::vector<std::string> RunWarnings(const RunDescription& run) {

@@ -6,13 +6,13 @@
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/run_analysis.h"
 #include "record_attributes.h"
-#include "result_series.h"
+#include "results_sink.h"
 
 namespace isolab::io {
 namespace {
 
-// Every group a series name needs ("isolator" for "isolator/force"), created once.
-void CreateGroups(Hdf5File& file, const std::vector<Series>& series) {
+// Every group a series name needs ("isolator" for "isolator/force"), created once; returns them.
+std::set<std::string> CreateGroups(Hdf5File& file, const std::vector<Series>& series) {
   std::set<std::string> groups;
   for (const Series& s : series) {
     const std::size_t slash = s.name.rfind('/');
@@ -20,23 +20,7 @@ void CreateGroups(Hdf5File& file, const std::vector<Series>& series) {
       file.CreateGroup(s.name.substr(0, slash));
     }
   }
-}
-
-// A whole history at once: contiguous, the cheapest to write. (A run that streams its output
-// would append the same rows through Hdf5File::Rows instead.)
-// `buffer` is reused from series to series.
-void WriteSeries(Hdf5File& file, const Series& s, int rows, std::vector<double>* buffer) {
-  const std::size_t width = s.width(), count = static_cast<std::size_t>(rows) * width;
-  const double* values = s.rows;
-  if (values == nullptr) {
-    if (buffer->size() < count) buffer->resize(count);
-    for (int r = 0; r < rows; ++r) s.fill(r, buffer->data() + r * width);
-    values = buffer->data();
-  }
-  std::vector<std::size_t> dims = {static_cast<std::size_t>(rows)};
-  if (!s.columns.empty()) dims.push_back(width);
-  file.WriteDoubles(s.name, dims, std::span<const double>(values, count), s.units);
-  if (!s.columns.empty()) file.WriteStringsAttribute(s.name, "columns", s.columns);
+  return groups;
 }
 
 void WriteModelSummary(Hdf5File& file, const ModelSummary& m, const UnitSystem& units) {
@@ -101,24 +85,92 @@ void WriteRunAttributes(Hdf5File& file, const RunDescription& run) {
   file.WriteAttribute("/", "warnings", warnings);
 }
 
+// Each peak as a scalar with its units, time and (where it has one) index.
+void WritePeaks(Hdf5File& file, const RunDescription& run) {
+  const AnalysisSetup& setup = *run.setup;
+  const ResponsePeaks& peaks = *run.peaks;
+  const UnitSystem& units = run.model->units;
+  file.CreateGroup("peaks");
+  for (const NamedPeak& p : FilePeaks(setup, peaks)) {
+    const std::string path = fmt::format("peaks/{}", p.name);
+    file.WriteDoubles(path, {}, std::span<const double>(&p.peak->value, 1),
+                      DescribeUnits(units, p.dimension));
+    file.WriteAttribute(path, "time", p.peak->time);
+    if (p.peak->index >= 0) file.WriteIntegerAttribute(path, "index", p.peak->index);
+  }
+  if (!setup.layout.stories.empty()) {
+    file.WriteAttribute("peaks/story_drift", "ratio", peaks.story_drift_ratio);
+  }
+  file.CreateGroup("final_energy");
+  const std::string energy = fmt::format("{}*{}", units.force(), units.length());
+  const auto term = [&](const char* name, double value) {
+    file.WriteDoubles(fmt::format("final_energy/{}", name), {}, std::span<const double>(&value, 1),
+                      energy);
+  };
+  term("input", peaks.energies.input);
+  term("kinetic", peaks.energies.kinetic);
+  term("damping", peaks.energies.damping);
+  term("elastic", peaks.energies.elastic);
+  term("hysteretic", peaks.energies.hysteretic);
+}
+
+// What the histories hold: every how many steps, which quantities and levels.
+void WriteSelectionAttributes(Hdf5File& file, const RunDescription& run) {
+  const OutputSelection& selection = run.selection;
+  file.WriteIntegerAttribute("/", "output_every", selection.every);
+  file.WriteIntegerAttribute("/", "summary_only", selection.summary_only ? 1 : 0);
+  file.WriteStringsAttribute("/", "output_quantities", RecordedQuantities(selection));
+  file.WriteStringsAttribute("/", "output_levels", RecordedLevels(selection, *run.setup));
+}
+
+class Hdf5Sink final : public ResultsWriter::Sink {
+ public:
+  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t expected_rows)
+      : file_(path) {
+    groups_ = CreateGroups(file_, series);
+    for (const Series& s : series) {
+      widths_.push_back(s.width());
+      rows_.push_back(file_.CreateRows(s.name, s.columns.size(), s.units, expected_rows));
+      if (!s.columns.empty()) file_.WriteStringsAttribute(s.name, "columns", s.columns);
+    }
+  }
+
+  void Write(std::span<const std::vector<double>> blocks, std::size_t rows) override {
+    for (std::size_t s = 0; s < rows_.size(); ++s) {
+      rows_[s].Append(std::span<const double>(blocks[s].data(), rows * widths_[s]));
+    }
+  }
+
+  void Finish(const RunDescription& run) override {
+    rows_.clear();  // every dataset closed before the commit
+    const AnalysisSetup& setup = *run.setup;
+    if (!setup.layout.stories.empty()) {
+      if (!groups_.contains("story")) file_.CreateGroup("story");
+      file_.WriteDoubles("story/height", {setup.layout.story_heights.size()},
+                         setup.layout.story_heights,
+                         DescribeUnits(run.model->units, dimension::kLength));
+    }
+    WriteModelSummary(file_, setup.summary, run.model->units);
+    WritePeaks(file_, run);
+    file_.WriteText("model_yaml", run.model->text);
+    WriteRunAttributes(file_, run);
+    WriteSelectionAttributes(file_, run);
+    file_.Commit();
+  }
+
+ private:
+  Hdf5File file_;
+  std::set<std::string> groups_;
+  std::vector<std::size_t> widths_;
+  std::vector<Hdf5File::Rows> rows_;
+};
+
 }  // namespace
 
-void WriteResultsHdf5(const std::string& path, const RunDescription& run) {
-  Hdf5File file(path);
-  const std::vector<Series> series = ResultSeries(run);
-  CreateGroups(file, series);
-  std::vector<double> buffer;
-  for (const Series& s : series) WriteSeries(file, s, run.response->rows_written, &buffer);
-  const AnalysisSetup& setup = *run.setup;
-  if (!setup.layout.stories.empty()) {
-    file.WriteDoubles("story/height", {setup.layout.story_heights.size()},
-                      setup.layout.story_heights,
-                      DescribeUnits(run.model->units, dimension::kLength));
-  }
-  WriteModelSummary(file, setup.summary, run.model->units);
-  file.WriteText("model_yaml", run.model->text);
-  WriteRunAttributes(file, run);
-  file.Commit();
+std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
+                                                  const std::vector<Series>& series,
+                                                  std::size_t expected_rows) {
+  return std::make_unique<Hdf5Sink>(path, series, expected_rows);
 }
 
 }  // namespace isolab::io

@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/rate_form.h"
+#include "isolab/io/results_file.h"
+#include "isolab/io/results_writer.h"
 
 namespace isolab::io {
 namespace {
@@ -23,7 +27,7 @@ std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
 }  // namespace
 
 integrators::RunSummary RunAnalysis(const AnalysisSection& analysis, const AnalysisSetup& setup,
-                                    integrators::ResponseHistory* response) {
+                                    integrators::ResponseObserver& observer) {
   if (analysis.integrator == AnalysisSection::Integrator::kIda) {
     for (const auto& connection : setup.structure.connections()) {
       for (const auto& kernel : connection.assembly.kernels()) {
@@ -36,10 +40,37 @@ integrators::RunSummary RunAnalysis(const AnalysisSection& analysis, const Analy
       }
     }
     return integrators::RunIda(setup.structure, setup.excitation, setup.grid, analysis.ida,
-                               response);
+                               observer);
   }
   return integrators::RunNewmark(setup.structure, setup.excitation, setup.grid, analysis.newmark,
-                                 response);
+                                 observer);
+}
+
+integrators::RunSummary RunAnalysis(const AnalysisSection& analysis, const AnalysisSetup& setup,
+                                    integrators::ResponseHistory* response) {
+  integrators::HistoryRecorder recorder(response, setup.grid, setup.structure.dofs(),
+                                        static_cast<int>(setup.structure.connections().size()),
+                                        static_cast<int>(setup.structure.law_count()));
+  return RunAnalysis(analysis, setup, recorder);
+}
+
+RecordedRun RunAndRecord(const ModelFile& model, const AnalysisSection& analysis,
+                         const AnalysisSetup& setup, const OutputSelection& selection,
+                         const std::string& results_path, const std::string& version,
+                         std::size_t buffer_rows) {
+  RecordedRun result;
+  RunDescription run{&model, &setup, &analysis, &result.summary, &result.peaks, version, selection};
+  PeakTracker tracker(setup);
+  std::optional<ResultsWriter> writer;
+  if (!results_path.empty()) writer.emplace(results_path, run, buffer_rows);
+  std::vector<integrators::ResponseObserver*> list = {&tracker};
+  if (writer) list.push_back(&*writer);
+  integrators::ObserverList observers(std::move(list));
+  result.summary = RunAnalysis(analysis, setup, observers);
+  result.peaks = tracker.Peaks();
+  if (writer) writer->Finish(result.summary, result.peaks);
+  result.warnings = RunWarnings(run);
+  return result;
 }
 
 std::string DescribeIntegrator(const AnalysisSection& analysis, double dt) {

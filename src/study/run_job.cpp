@@ -47,9 +47,8 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
     std::error_code ignored;  // a folder that cannot be made shows as the file's write error
     std::filesystem::create_directories(file.parent_path(), ignored);
     const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
-    const io::RunDescription run{&model,   &setup, &model.analysis, &response,
-                                 &summary, &peaks, version};
-    io::WriteResultsFile(file.string(), run);
+    const io::RunDescription run{&model, &setup, &model.analysis, &summary, &peaks, version, {}};
+    io::WriteResultsFile(file.string(), run, response);
     result.file = name;
     result.warnings = io::RunWarnings(run);
     if (summary.ok()) {

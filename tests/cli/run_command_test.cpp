@@ -169,8 +169,8 @@ TEST(RunCommand, IsolatedBuildingWritesTheFullResponse) {
   EXPECT_EQ(Utf8Attribute(file, "/", "record_units_source"), "header");
   // Solves per step: Newton iterations over completed steps, the same in JSON and the file.
   const double solves = json["newton"]["solves_per_step"].get<double>();
-  EXPECT_DOUBLE_EQ(solves, json["newton"]["iterations"].get<double>() /
-                               json["steps_completed"].get<double>());
+  EXPECT_DOUBLE_EQ(
+      solves, json["newton"]["iterations"].get<double>() / json["steps_completed"].get<double>());
   double attribute_solves = 0.0;
   const hid_t attribute = H5Aopen(file, "solves_per_step", H5P_DEFAULT);
   ASSERT_GE(attribute, 0);
@@ -436,3 +436,79 @@ TEST(RunCommand, CsvExportHasNamedUnitTaggedColumns) {
 }
 
 }  // namespace
+
+// The command line's output options replace the model's output section: every 10th step of the
+// roof's displacement and the isolator, the peaks of every step (those of the full run), and the
+// selection recorded in the file's attributes; a bad selection is refused before the run.
+TEST(RunCommand, OutputOptionsChooseWhatIsWrittenNotWhatIsComputed) {
+  const std::string model = Source("models/buildings/five_story_table9.yaml");
+  const auto full_output = TemporaryFile("full.h5");
+  const auto full = RunJson("run " + model + " -o " + full_output.string());
+  const auto output = TemporaryFile("thinned.h5");
+  const auto thinned = RunJson("run " + model + " -o " + output.string() +
+                               " --every 10 --quantities displacement,isolator --levels roof");
+  ASSERT_FALSE(full.empty());
+  ASSERT_FALSE(thinned.empty());
+  EXPECT_EQ(thinned["peaks"], full["peaks"]);
+  EXPECT_EQ(thinned["residual_isolator_displacement"], full["residual_isolator_displacement"]);
+  EXPECT_EQ(thinned["energy"], full["energy"]);
+
+  const int steps = full["steps"].get<int>();
+  const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hsize_t rows = steps / 10 + 1;
+  EXPECT_EQ(Dimensions(file, "displacement"), (std::vector<hsize_t>{rows, 1}));
+  EXPECT_EQ(Columns(file, "displacement"), std::vector<std::string>{"floor 5"});
+  EXPECT_EQ(Dimensions(file, "isolator/displacement"), std::vector<hsize_t>{rows});
+  EXPECT_TRUE(Dimensions(file, "velocity").empty());
+  EXPECT_TRUE(Dimensions(file, "story/drift").empty());
+  EXPECT_EQ(NumberAttribute(file, "output_every"), std::make_pair(H5T_INTEGER, 10.0));
+  EXPECT_EQ(NumberAttribute(file, "summary_only"), std::make_pair(H5T_INTEGER, 0.0));
+  // Row k of the thinned file is row 10 k of the full one.
+  const hid_t full_file = H5Fopen(full_output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(full_file, 0);
+  const std::vector<double> u = Doubles(file, "displacement");
+  const std::vector<double> u_full = Doubles(full_file, "displacement");
+  ASSERT_EQ(u.size(), rows);
+  for (hsize_t k = 0; k < rows; ++k) ASSERT_EQ(u[k], u_full[10 * k * 6 + 5]) << k;
+  H5Fclose(full_file);
+  H5Fclose(file);
+
+  const auto summary = TemporaryFile("summary.h5");
+  EXPECT_EQ(RunJson("run " + model + " --summary-only -o " + summary.string())["peaks"],
+            full["peaks"]);
+  const hid_t summary_file = H5Fopen(summary.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(summary_file, 0);
+  EXPECT_TRUE(Dimensions(summary_file, "time").empty());
+  EXPECT_EQ(Doubles(summary_file, "peaks/isolator_displacement"),
+            std::vector<double>{PeakIsolatorDisplacement(full)});
+  H5Fclose(summary_file);
+
+  const BadInput bad[] = {
+      {"--levels 6", "--levels: level 6 is not in the structure (its levels are 0 to 5, or roof)"},
+      {"--levels top", "--levels: 'top' is not a level"},
+      {"--quantities displacment", "unknown quantity 'displacment'; did you mean 'displacement'?"},
+      {"--every 0", "--every"},
+  };
+  for (const BadInput& c : bad) {
+    const auto refused = TemporaryFile("refused.h5");
+    const auto run = RunIsolab("run " + model + " " + c.file + " -o " + refused.string(), true);
+    EXPECT_EQ(run.exit_code, 2) << c.file << ": " << run.output;
+    EXPECT_NE(run.output.find(c.message), std::string::npos) << c.file << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(refused)) << c.file;
+  }
+}
+
+// isolab's start-up loads neither MPI nor pagmo (nor their dependencies): only fit, diagnose and
+// compare need them, and the front hands those to isolab-commands (src/cli/main.cpp).
+TEST(RunCommand, TheFrontLinksNeitherMpiNorPagmo) {
+  const auto libraries = isolab::testing::RunShell(std::string("ldd ") + ISOLAB_BINARY);
+  ASSERT_EQ(libraries.exit_code, 0);
+  for (const char* heavy : {"libmpi", "libpagmo", "libtbb", "libboost"}) {
+    EXPECT_EQ(libraries.output.find(heavy), std::string::npos) << heavy << "\n" << libraries.output;
+  }
+  // And the commands that need them still run through it.
+  const auto fit = RunIsolab("fit --help");
+  EXPECT_EQ(fit.exit_code, 0);
+  EXPECT_NE(fit.output.find("Identify an isolator model's parameters"), std::string::npos);
+}

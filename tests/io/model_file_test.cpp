@@ -61,6 +61,31 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_non_scalar_key.yaml", ":4:52:", "a key must be a plain name");
 }
 
+TEST(ModelFile, BadOutputSelectionIsLocated) {
+  ExpectError("bad_output_every.yaml",
+              ":9:31:", "output.every: 0 (expected a whole number of steps >= 1)");
+  ExpectError("bad_output_quantity.yaml", ":9:37:",
+              "output.quantities[1]: unknown quantity 'velocty'; did you mean 'velocity'?");
+  ExpectError("bad_output_level.yaml",
+              ":9:28:", "output.levels[2]: 4 (the structure's levels are 0 to 3, or roof)");
+  ExpectError("bad_output_level_name.yaml", ":9:19:",
+              "output.levels[0]: expected a level: 0 for the base, k for floor k, or roof");
+  ExpectError("bad_output_key.yaml", ":9:10:", "output.evry: unknown key (did you mean 'every'?)");
+  ExpectError("bad_output_summary_only.yaml",
+              ":9:24:", "output.summary_only: expected true or false");
+}
+
+TEST(ModelFile, ReadsTheOutputSelection) {
+  const ModelFile model = LoadModelFile(DataFile("output_selection.yaml"));
+  EXPECT_EQ(model.output_file, "out.h5");
+  EXPECT_EQ(model.output.every, 20);
+  EXPECT_EQ(model.output.quantities, (std::vector<std::string>{"isolator", "energy"}));
+  EXPECT_EQ(model.output.levels, (std::vector<int>{0, 2, kRoofLevel}));
+  EXPECT_FALSE(model.output.summary_only);
+  EXPECT_TRUE(model.output.Records("energy"));
+  EXPECT_FALSE(model.output.Records("velocity"));
+}
+
 TEST(ModelFile, MissingFileIsAnInputError) {
   EXPECT_NE(ErrorOf("no_such_file.yaml").find("cannot open"), std::string::npos);
 }

@@ -30,7 +30,11 @@ struct IdaOptions {
 
 // Runs from rest over the grid; a failure of IDA (error test or nonlinear solver failing
 // repeatedly, too much work) stops the run with the call, the SUNDIALS flag name and the time,
-// keeping the rows written so far. RunSummary.steps counts output intervals completed.
+// keeping the rows observed so far. RunSummary.steps counts grid steps completed (whole output
+// intervals). The observer sees the state at rest and at every output time.
+RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer);
+// The same, keeping every output row in memory.
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response);
 

@@ -44,6 +44,12 @@ struct NewmarkOptions {
   void Validate() const;
 };
 
+// Runs from rest over the grid, handing the observer the state at rest and after every step (the
+// grid's output_every is for the observer to apply).
+RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseObserver& observer);
+// The same, keeping every output_every-th step in memory.
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response);

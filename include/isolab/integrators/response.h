@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,40 @@ struct TimeGrid {
   int output_every = 1;
 };
 
+// The response at one instant of the grid, as an integrator hands it to a ResponseObserver: views
+// into the integrator's own storage, valid only during the call.
+struct ResponseRow {
+  int step = 0;  // on the grid: 0 at rest, then every completed step of dt
+  double time = 0.0;
+  std::span<const double> displacement, velocity, acceleration;  // per DOF, relative
+  std::span<const double> absolute_acceleration;                 // per DOF
+  std::span<const double> connection_force;                      // per connection
+  std::span<const double> law_force;                             // per law component
+  Energies energies;
+};
+
+// Sees the response as the integrator advances: Newmark calls it at rest and after every step,
+// IDA at rest and at every output time of its grid (TimeGrid.output_every). What to keep (peaks,
+// every N-th row, a file) is the observer's business, so a run need not hold its history.
+class ResponseObserver {
+ public:
+  virtual ~ResponseObserver() = default;
+  virtual void Observe(const ResponseRow& row) = 0;
+};
+
+// Passes every row to each of several observers, in order.
+class ObserverList final : public ResponseObserver {
+ public:
+  explicit ObserverList(std::vector<ResponseObserver*> observers)
+      : observers_(std::move(observers)) {}
+  void Observe(const ResponseRow& row) override {
+    for (ResponseObserver* observer : observers_) observer->Observe(row);
+  }
+
+ private:
+  std::vector<ResponseObserver*> observers_;
+};
+
 // One row per output time; columns per degree of freedom, connection or law component.
 struct ResponseHistory {
   std::vector<double> time;
@@ -38,8 +73,23 @@ struct ResponseHistory {
   RowMatrix law_force;                             // each law component's force
   std::vector<Energies> energies;
   int rows_written = 0;  // < time.size() when the run stopped early
+  int output_every = 1;  // grid steps between rows
 
   void Resize(int rows, int dofs, int connections, int laws);
+  // Row `row` (< rows_written) as an integrator hands it out, viewing this history's storage.
+  ResponseRow Row(int row) const;
+};
+
+// Keeps every grid.output_every-th step in a ResponseHistory, sized for the whole grid: the
+// in-memory path of RunNewmark and RunIda.
+class HistoryRecorder final : public ResponseObserver {
+ public:
+  HistoryRecorder(ResponseHistory* history, const TimeGrid& grid, int dofs, int connections,
+                  int laws);
+  void Observe(const ResponseRow& row) override;
+
+ private:
+  ResponseHistory& history_;
 };
 
 struct RunSummary {

@@ -61,6 +61,9 @@ struct AnalysisSetup {
 // Drift of story `story` (bottom = 0) at output row `row`: its top floor less its bottom floor.
 double StoryDrift(const AnalysisSetup& setup, const integrators::RowMatrix& displacement, int row,
                   std::size_t story);
+// The same from one row's displacements.
+double StoryDrift(const AnalysisSetup& setup, std::span<const double> displacement,
+                  std::size_t story);
 
 // Automatic free vibration: kAutomaticFreeVibrationPeriods x the model's longest period.
 inline constexpr double kAutomaticFreeVibrationPeriods = 5.0;

@@ -18,7 +18,8 @@
 //              free_vibration: auto,                         # or a time, 0 for none
 //              newmark: {beta: 0.25, gamma: 0.5, newton: full, ...},
 //              ida: {rtol: 1e-6, atol: 1e-9, max_step: 0.01, max_steps: 100000}}
-//   output: {file: results.h5}
+//   output: {file: results.h5, every: 1, quantities: [...], levels: [...], summary_only: false}
+//                                                    # what is recorded: output_selection.h
 //   cyclic: {amplitude: 200, period: 1, cycles: 2, steps_per_cycle: 400}  # for `isolab cyclic`
 //
 // Every error is an InputError "file:line:col: key path: what (what was allowed)".
@@ -32,6 +33,7 @@
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
+#include "isolab/io/output_selection.h"
 #include "isolab/io/units.h"
 #include "isolab/structure/shear_building.h"
 
@@ -91,6 +93,7 @@ struct ModelFile {
   ExcitationSection excitation;
   AnalysisSection analysis;
   std::string output_file;  // empty: not given
+  OutputSelection output;
   std::optional<hysteresis::CyclicProtocol> cyclic;
 };
 

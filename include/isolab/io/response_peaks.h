@@ -6,7 +6,13 @@
 // `residual_window` of the run. A structure at rest gives its final displacement; a bearing that
 // still swings elastically about an offset (a bilinear isolator below yield is undamped) gives
 // that offset, and half the range says how much it still swings.
+//
+// A PeakTracker sees every step of a run (it is a ResponseObserver), whatever the results file
+// keeps, and holds no history: only the isolator's displacements within the residual window.
 #pragma once
+
+#include <deque>
+#include <utility>
 
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
@@ -31,8 +37,25 @@ struct ResponsePeaks {
   double residual_isolator_displacement = 0.0;  // the middle of the range over the window
   double residual_oscillation = 0.0;            // half that range
   double isolator_displacement_at_excitation_end = 0.0;
+  integrators::Energies energies;  // at the last row seen (zero before any)
+  int rows = 0;                    // rows seen
 };
 
+class PeakTracker final : public integrators::ResponseObserver {
+ public:
+  explicit PeakTracker(const AnalysisSetup& setup) : setup_(setup) {}
+  void Observe(const integrators::ResponseRow& row) override;
+  // The peaks of the rows seen so far.
+  ResponsePeaks Peaks() const;
+
+ private:
+  const AnalysisSetup& setup_;
+  ResponsePeaks peaks_;
+  // (time, isolator displacement) of the rows within residual_window of the latest one.
+  std::deque<std::pair<double, double>> window_;
+};
+
+// The peaks of a history's rows (a PeakTracker fed with them).
 ResponsePeaks ComputePeaks(const AnalysisSetup& setup,
                            const integrators::ResponseHistory& response);
 
