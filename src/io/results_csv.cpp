@@ -6,7 +6,7 @@
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/csv.h"
 #include "isolab/io/run_analysis.h"
-#include "result_series.h"
+#include "results_writers.h"
 
 namespace isolab::io {
 namespace {

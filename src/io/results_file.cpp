@@ -8,7 +8,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
-#include "result_series.h"
+#include "results_writers.h"
 
 namespace isolab::io {
 namespace {

@@ -6,7 +6,7 @@
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/run_analysis.h"
 #include "record_attributes.h"
-#include "result_series.h"
+#include "results_writers.h"
 
 namespace isolab::io {
 namespace {

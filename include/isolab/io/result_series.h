@@ -1,6 +1,6 @@
 // The time histories of a run, described once for every results format (HDF5 datasets, CSV
-// columns): each series has a name (its HDF5 path), units, column names (none for a vector) and
-// its values row by row. Private to io: results_file.h is the interface.
+// columns, the Python module's arrays): each series has a name (its HDF5 path), units, column
+// names (none for a vector) and its values row by row.
 #pragma once
 
 #include <functional>
@@ -24,11 +24,8 @@ struct Series {
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };
 
-// Every series of a run's results, in file order (layout in results_file.h).
+// Every series of a run's results, in file order (layout in results_file.h). The series refer to
+// `run`'s response and setup, which must outlive them.
 std::vector<Series> ResultSeries(const RunDescription& run);
-
-// The two formats (results_file.h); WriteResultsFile chooses.
-void WriteResultsHdf5(const std::string& path, const RunDescription& run);
-void WriteResultsCsv(const std::string& path, const RunDescription& run);
 
 }  // namespace isolab::io
