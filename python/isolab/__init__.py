@@ -13,10 +13,12 @@ names the file, line, key and what was allowed. A run that stops early raises Ru
 partial result attached. Runs release the GIL: a thread pool of runs uses every core.
 """
 
-from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _cyclic, _run, _spectrum
+import os
 
-__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "load_model",
+from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
+from ._isolab import _cyclic, _fit, _run, _spectrum
+
+__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "fit", "load_model",
            "run", "spectrum", "__version__"]
 
 
@@ -92,6 +94,26 @@ def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
     return _spectrum(record, as_list(periods) or _default_periods(), as_list(damping),
                      as_list(ductility), alpha, points_per_period, scale, units, record_dt,
                      length_unit)
+
+
+def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit="kN",
+        length_unit="mm", quiet=False):
+    """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES).
+
+    data: a cyclic-test CSV file or a list of them; model: the specification (component types
+    and counts, YAML). seed, budget, cycles (1-based, a number or a list), specimen
+    ("sequential" or "independent"), force_unit, length_unit and quiet are the command line's
+    --seed, --budget, --cycles, --specimen, --force-unit, --length-unit and -q; progress goes to
+    stderr unless quiet.
+
+    Returns a dict as `isolab fit --json`: "e2", "e2_per_test", "components" (name, type and the
+    mathematical parameters), "evaluations", "restarts", "seconds", "seed", "one_specimen".
+    """
+    data = [str(data)] if isinstance(data, (str, os.PathLike)) else [str(d) for d in data]
+    cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
+                                                         else [cycles])]
+    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit, length_unit,
+                quiet)
 
 
 def _to_pandas(result):

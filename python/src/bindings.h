@@ -16,5 +16,7 @@ void BindRun(pybind11::module_& module);
 void BindCyclic(pybind11::module_& module);
 // spectrum.
 void BindSpectrum(pybind11::module_& module);
+// fit.
+void BindFit(pybind11::module_& module);
 
 }  // namespace isolab::python

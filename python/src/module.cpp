@@ -8,4 +8,5 @@ PYBIND11_MODULE(_isolab, module) {
   isolab::python::BindRun(module);
   isolab::python::BindCyclic(module);
   isolab::python::BindSpectrum(module);
+  isolab::python::BindFit(module);
 }
