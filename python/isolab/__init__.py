@@ -16,9 +16,9 @@ partial result attached. Runs release the GIL: a thread pool of runs uses every 
 import os
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _cyclic, _fit, _run, _spectrum
+from ._isolab import _cyclic, _diagnose, _fit, _run, _spectrum
 
-__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "fit", "load_model",
+__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "diagnose", "fit", "load_model",
            "run", "spectrum", "__version__"]
 
 
@@ -109,11 +109,33 @@ def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_
     Returns a dict as `isolab fit --json`: "e2", "e2_per_test", "components" (name, type and the
     mathematical parameters), "evaluations", "restarts", "seconds", "seed", "one_specimen".
     """
-    data = [str(data)] if isinstance(data, (str, os.PathLike)) else [str(d) for d in data]
+    data = _paths(data)
     cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
                                                          else [cycles])]
     return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit, length_unit,
                 quiet)
+
+
+def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit="kN",
+             length_unit="mm", quiet=False):
+    """`isolab diagnose`: which physical effect a base model misses, from cyclic tests.
+
+    data: a cyclic-test CSV file or a list of them; base: the base specification (YAML). seed,
+    budget (per fit), specimen, force_unit, length_unit and quiet are the command line's options;
+    progress goes to stderr unless quiet.
+
+    Returns a dict with the JSON report's numbers: "effects" (the effects added, or ["none"]),
+    "steps" (each effect with its evidence, e^2 and BIC before and after, the component added),
+    "base" and "final" (e2, bic, components), "noise_floor_e2", "stop_reason", "samples".
+    The report files (.md, .json, .model.yaml) stay with the command line.
+    """
+    return _diagnose(_paths(data), str(base), seed, budget, specimen or "", force_unit,
+                     length_unit, quiet)
+
+
+def _paths(data):
+    """One path or a list of them, as a list of str."""
+    return [str(data)] if isinstance(data, (str, os.PathLike)) else [str(d) for d in data]
 
 
 def _to_pandas(result):

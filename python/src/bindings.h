@@ -18,5 +18,7 @@ void BindCyclic(pybind11::module_& module);
 void BindSpectrum(pybind11::module_& module);
 // fit.
 void BindFit(pybind11::module_& module);
+// diagnose.
+void BindDiagnose(pybind11::module_& module);
 
 }  // namespace isolab::python

@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "bindings.h"
+#include "component_list.h"
 #include "isolab/core/errors.h"
-#include "isolab/hysteresis/law_parameters.h"
 #include "isolab/identification/fit.h"
 #include "isolab/identification/parametrisation.h"
 #include "isolab/io/cyclic_test_file.h"
@@ -58,19 +58,7 @@ py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path,
     per_test[py::str(fit_data.tests[i].name)] = result.error.per_test[i];
   }
   json["e2_per_test"] = per_test;
-  py::list components;
-  for (std::size_t c = 0; c < spec.components.size(); ++c) {
-    const auto type = spec.components[c].type;
-    const auto keys = hysteresis::ParameterKeys(type, hysteresis::ParameterForm::kMathematical);
-    py::dict parameters;
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      parameters[py::str(std::string(keys[k]))] = result.mathematical[c][k];
-    }
-    components.append(py::dict(py::arg("name") = spec.components[c].name,
-                               py::arg("type") = std::string(hysteresis::LawName(type)),
-                               py::arg("parameters") = parameters));
-  }
-  json["components"] = components;
+  json["components"] = ComponentList(spec.components, result.mathematical);
   json["units"] =
       py::dict(py::arg("force") = spec.units.force(), py::arg("length") = spec.units.length());
   json["evaluations"] = result.evaluations;

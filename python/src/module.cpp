@@ -9,4 +9,5 @@ PYBIND11_MODULE(_isolab, module) {
   isolab::python::BindCyclic(module);
   isolab::python::BindSpectrum(module);
   isolab::python::BindFit(module);
+  isolab::python::BindDiagnose(module);
 }
