@@ -136,6 +136,14 @@ py::dict Summary(const RunResult& r) {
   return summary;
 }
 
+// {series name: its field}, e.g. the units of every series.
+template <typename Field>
+py::dict BySeries(const RunResult& r, Field io::Series::*field) {
+  py::dict values;
+  for (const io::Series& s : r.series) values[py::str(s.name)] = s.*field;
+  return values;
+}
+
 }  // namespace
 
 void BindRun(py::module_& module) {
@@ -151,19 +159,9 @@ void BindRun(py::module_& module) {
                                return names;
                              })
       .def_property_readonly("units",
-                             [](const RunResult& r) {
-                               py::dict units;
-                               for (const io::Series& s : r.series)
-                                 units[py::str(s.name)] = s.units;
-                               return units;
-                             })
+                             [](const RunResult& r) { return BySeries(r, &io::Series::units); })
       .def_property_readonly("columns",
-                             [](const RunResult& r) {
-                               py::dict columns;
-                               for (const io::Series& s : r.series)
-                                 columns[py::str(s.name)] = s.columns;
-                               return columns;
-                             })
+                             [](const RunResult& r) { return BySeries(r, &io::Series::columns); })
       .def("__getitem__", [](const std::shared_ptr<RunResult>& r,
                              const std::string& name) { return SeriesArray(r, r->Find(name)); })
       .def("__contains__",
