@@ -18,8 +18,8 @@ import os
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
 from ._isolab import _cyclic, _diagnose, _fit, _run, _spectrum
 
-__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "diagnose", "fit", "load_model",
-           "run", "spectrum", "__version__"]
+__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "diagnose",
+           "fit", "load_model", "run", "spectrum", "__version__"]
 
 
 def _model(model):
