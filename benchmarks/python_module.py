@@ -73,7 +73,8 @@ def main():
                   f"{times[name][1] * 1e3:8.1f} ms")
         integrator = statistics.median(
             isolab.run(model).summary["wall_seconds"] for _ in range(options.repeat))
-        print(f"  {'the integrator alone (summary wall_seconds)':<42} wall {integrator * 1e3:8.1f} ms")
+        name = "the integrator alone (summary wall_seconds)"
+        print(f"  {name:<42} wall {integrator * 1e3:8.1f} ms")
         for what, index in (("wall", 0), ("CPU", 1)):
             print(f"  python / executable, the same work from a file to a file ({what}): "
                   f"{times[rows[1][0]][index] / times[rows[0][0]][index]:.3f}")
