@@ -46,3 +46,11 @@ endif()
 if(ISOLAB_BUILD_BENCHMARKS)
   isolab_require(benchmark libbenchmark-dev)
 endif()
+if(ISOLAB_BUILD_PYTHON)
+  # Debian's Python, whose numpy, pandas and pytest come from Debian packages: another python3
+  # earlier on PATH (pyenv, conda) would build a module that Debian's Python cannot import.
+  set(Python_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "The Python the isolab module is built for")
+  isolab_require(Python python3-dev 3.11 COMPONENTS Interpreter Development.Module)
+  set(PYBIND11_FINDPYTHON ON)  # pybind11 uses that Python (FindPython), not FindPythonInterp
+  isolab_require(pybind11 pybind11-dev CONFIG)
+endif()

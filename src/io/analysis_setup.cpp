@@ -70,7 +70,9 @@ GroundMotionSection ChooseGroundMotion(const ModelFile& model, const RunOverride
                                        std::string* units_given_by, std::string* dt_given_by) {
   GroundMotionSection motion;
   const std::string in_model = fmt::format(" in {}", model.path);
-  if (!overrides.record.empty()) {
+  if (overrides.record_data) {
+    motion.file = overrides.record_data->path;
+  } else if (!overrides.record.empty()) {
     motion.file = overrides.record;
   } else {
     motion = *model.excitation.ground_motion;
@@ -133,7 +135,8 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
   const int dof_shift = (overrides.fixed_base && model.isolation.size() > 0) ? -1 : 0;
 
   const ExcitationSection& excitation = model.excitation;
-  const bool has_record = excitation.ground_motion || !overrides.record.empty();
+  const bool has_record =
+      excitation.ground_motion || !overrides.record.empty() || overrides.record_data;
   if (!has_record && (!overrides.record_units.empty() || overrides.record_dt)) {
     throw InputError({overrides.units_given_by},
                      fmt::format("the record's units or step are given, but {} has no ground "
@@ -148,7 +151,9 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
     // Records keep their step in seconds; the model gives a single column's dt in its own unit.
     const double dt_seconds = motion.dt * model.units.SiFactor(dimension::kTime);
     const Record record =
-        ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
+        overrides.record_data
+            ? *overrides.record_data
+            : ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
     double to_model = 0.0;
     try {
       to_model = model.units.Convert(motion.scale, record.units, dimension::kAcceleration);

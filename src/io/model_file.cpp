@@ -160,9 +160,14 @@ void ReadOutput(const YamlReader& reader, const YAML::Node& output, ModelFile* m
 }  // namespace
 
 ModelFile LoadModelFile(const std::string& path) {
+  return LoadModelText(YamlReader(path).ReadText(), path);
+}
+
+ModelFile LoadModelText(const std::string& text, const std::string& path) {
   const YamlReader reader(path);
   ModelFile model;
-  const YAML::Node root = reader.LoadFile(&model.text);
+  model.text = text;
+  const YAML::Node root = reader.LoadText(text);
   reader.RequireMap(root, "");
   reader.CheckKeys(root, "",
                    {"description", "units", "isolation", "structure", "excitation", "analysis",

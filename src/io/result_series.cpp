@@ -1,4 +1,4 @@
-#include "result_series.h"
+#include "isolab/io/result_series.h"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "isolab/io/results_writer.h"
-#include "result_series.h"
+#include "isolab/io/result_series.h"
 
 namespace isolab::io {
 

@@ -64,11 +64,18 @@ std::string_view NearestWord(std::string_view word, std::span<const std::string_
 }
 
 YAML::Node YamlReader::LoadFile(std::string* text) const {
+  const std::string content = ReadText();
+  if (text != nullptr) *text = content;
+  return LoadText(content);
+}
+
+std::string YamlReader::ReadText() const {
   std::ifstream stream(file_);
   if (!stream) throw InputError({file_}, fmt::format("cannot open ({})", std::strerror(errno)));
-  const std::string content((std::istreambuf_iterator<char>(stream)),
-                            std::istreambuf_iterator<char>());
-  if (text != nullptr) *text = content;
+  return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+}
+
+YAML::Node YamlReader::LoadText(const std::string& content) const {
   try {
     YAML::Node root = YAML::Load(content);
     if (!root.IsDefined() || root.IsNull()) throw InputError({file_, 1, 1}, "the file is empty");

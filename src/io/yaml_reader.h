@@ -23,6 +23,10 @@ class YamlReader {
   // Parses the file, keeping its text in `text` when given; throws InputError for an unreadable
   // file or a syntax error.
   YAML::Node LoadFile(std::string* text = nullptr) const;
+  // The file's text; throws InputError when it cannot be read.
+  std::string ReadText() const;
+  // Parses `text` as if it were the file's content (a model built in memory).
+  YAML::Node LoadText(const std::string& text) const;
 
   SourceLocation Locate(const YAML::Node& node) const;
   [[noreturn]] void Fail(const YAML::Node& node, const std::string& path,

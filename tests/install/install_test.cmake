@@ -1,7 +1,10 @@
 # cmake --install into a fresh prefix, then a consumer project built against it with
 # find_package(isolab), and the installed executable's --plot finding its scripts beside it.
+# With PYTHON (the Python the module was built for) and PYTHON_DIR (where it is installed, relative
+# to the prefix), the installed Python module runs a model from outside the build tree.
 # Arguments: BUILD_DIR, SOURCE_DIR, WORK_DIR, LAUNCHER (a compiler launcher such as ccache, or
-# empty). --plot needs Debian's python3-matplotlib and python3-h5py (scripts/setup.sh).
+# empty), PYTHON, PYTHON_DIR. --plot needs Debian's python3-matplotlib and python3-h5py
+# (scripts/setup.sh).
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
   if(NOT status EQUAL 0)
@@ -33,4 +36,12 @@ run(${prefix}/bin/isolab run ${SOURCE_DIR}/tests/cli/data/run_base.yaml
     -o ${WORK_DIR}/run/sdof.h5 --free-vibration 0 --plot)
 if(NOT EXISTS ${WORK_DIR}/run/sdof_hysteresis.png)
   message(FATAL_ERROR "the installed isolab --plot wrote no sdof_hysteresis.png")
+endif()
+
+if(PYTHON)
+  # Lines, not "; ": run() passes its arguments on as a list, which a semicolon would split.
+  run(${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c "import isolab, sys
+assert isolab.__file__.startswith(sys.argv[1]), isolab.__file__
+print('installed module:', isolab.run(sys.argv[2]).peaks['isolator_displacement'])"
+      ${prefix} ${SOURCE_DIR}/tests/cli/data/run_base.yaml)
 endif()

@@ -24,7 +24,10 @@
 namespace isolab::io {
 
 struct RunOverrides {
-  std::string record;        // replaces excitation.ground_motion.file (relative to the cwd)
+  std::string record;  // replaces excitation.ground_motion.file (relative to the cwd)
+  // A record already in memory (e.g. a numpy array from Python) replacing the model's; `record`
+  // is ignored when it is given, and its units and step are its own.
+  std::optional<Record> record_data;
   std::string record_units;  // the record's units (must agree with its header, if it has any)
   std::optional<double> record_dt;         // the record's sampling step (model time unit)
   std::string units_given_by = "--units";  // who gives record_units and record_dt, for messages

@@ -101,4 +101,8 @@ struct ModelFile {
 // units, and parameters that break a law's or a section's rules.
 ModelFile LoadModelFile(const std::string& path);
 
+// The same from a model's text (a model built in memory, e.g. from Python): `path` names it in
+// messages, and files it names relative to themselves are found beside `path`.
+ModelFile LoadModelText(const std::string& text, const std::string& path);
+
 }  // namespace isolab::io

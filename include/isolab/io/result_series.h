@@ -1,7 +1,7 @@
 // The time histories of a run, described once for every results format (HDF5 datasets, CSV
 // columns): each series has a name (its HDF5 path), units, column names (none for a vector) and
-// fills its values for one row of the response. Private to io: results_file.h and
-// results_writer.h are the interface.
+// fills its values for one row of the response. The files' writers (results_file.h,
+// results_writer.h) and the Python module's arrays use it.
 #pragma once
 
 #include <functional>

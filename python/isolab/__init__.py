@@ -1,0 +1,169 @@
+"""isolab from Python: time-history analysis of base-isolated structures.
+
+    import isolab
+    model = isolab.load_model("models/buildings/five_story_table9.yaml")
+    model.set("excitation.ground_motion.scale", 0.4)
+    result = isolab.run(model)
+    result["isolator/displacement"]          # numpy array, in result.units[...]
+    result.to_pandas()                      # when pandas is installed
+
+Models are read and checked by the same reader as model files, whether loaded from a file or
+built from dicts (Model.from_dict); bad input raises InputError (a ValueError) whose message
+names the file, line, key and what was allowed. A run that stops early raises RunError with the
+partial result attached. Runs release the GIL: a thread pool of runs uses every core.
+"""
+
+import os
+
+from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
+from ._isolab import _cyclic, _diagnose, _fit, _run, _spectrum
+
+__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "diagnose",
+           "fit", "load_model", "run", "spectrum", "__version__"]
+
+
+def _model(model):
+    """A Model, or the model file a path names."""
+    return model if isinstance(model, Model) else load_model(str(model))
+
+
+def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
+        free_vibration=None, fixed_base=False, trial_displacement=None, integrator=None,
+        rtol=None, atol=None, check=True):
+    """Time-history analysis: `isolab run` with its options as keyword arguments.
+
+    model: a Model or a model file's path. record: a record file replacing the model's, or a
+    numpy array of ground accelerations (then record_dt, its step in s, and units, e.g. "g" or
+    "m/s^2", are required). scale, dt (the analysis step, model time unit), free_vibration
+    ("auto" or a time in s), fixed_base, trial_displacement, integrator ("newmark" or "ida"),
+    rtol and atol are the command line's --scale, --dt, --free-vibration, --fixed-base,
+    --trial-displacement, --integrator, --rtol and --atol.
+
+    Returns a Result. A run that stops early raises RunError (its .result holds the rows up to
+    the failure) unless check=False.
+    """
+    result = _run(_model(model), record, units=units, record_dt=record_dt, scale=scale, dt=dt,
+                  free_vibration=free_vibration, fixed_base=fixed_base,
+                  trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
+                  atol=atol)
+    if check and not result.ok:
+        error = RunError(f"the run stopped early: {result.message}")
+        error.result = result
+        raise error
+    return result
+
+
+def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=None):
+    """`isolab cyclic` on one model at one amplitude: u(t) = u_a sin(2 pi t / T) imposed on its
+    isolation assembly, from rest.
+
+    amplitude, period, cycles and steps_per_cycle replace the model's cyclic section (the command
+    line's -a, -T, -n and --steps-per-cycle; model units). For several amplitudes, call it once
+    per amplitude. Returns a CyclicResult: the loop (time, displacement, force, component_force)
+    and, per cycle, the dissipated energy, peak force and each component's slider at +u_a.
+    """
+    return _cyclic(_model(model), amplitude, period=period, cycles=cycles,
+                   steps_per_cycle=steps_per_cycle)
+
+
+def _default_periods():
+    """The command line's default --periods 0.05:5:0.05, the same 100 numbers."""
+    return [float(f"{0.05 + k * 0.05:.12g}") for k in range(100)]
+
+
+def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
+             points_per_period=100, scale=1.0, units=None, record_dt=None, length_unit="m"):
+    """`isolab spectrum`: elastic (and, given ductility, constant-ductility) response spectra.
+
+    record: a record file, or a numpy array of accelerations (then record_dt in s and units are
+    required). periods (s; default the command line's 0.05 to 5 by 0.05), damping and ductility
+    (a number or a list), alpha, points_per_period, scale, units, record_dt and length_unit are the
+    command line's --periods, --damping, --ductility, --alpha, --points-per-period, --scale,
+    --units, --dt and --length-unit.
+
+    Returns a dict named as the HDF5 spectrum file: "period", "damping", "elastic" {"D", "V",
+    "A", "time_of_peak"} (damping x period arrays, lengths in length_unit, time in s) and, with
+    ductility, "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "u_m",
+    "achieved_ductility" (damping x ductility x period), ...}; "record" and "units".
+    """
+    def as_list(value):
+        if value is None:
+            return []
+        return [float(v) for v in (value if hasattr(value, "__len__") else [value])]
+
+    return _spectrum(record, as_list(periods) or _default_periods(), as_list(damping),
+                     as_list(ductility), alpha, points_per_period, scale, units, record_dt,
+                     length_unit)
+
+
+def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit="kN",
+        length_unit="mm", quiet=False):
+    """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES).
+
+    data: a cyclic-test CSV file or a list of them; model: the specification (component types
+    and counts, YAML). seed, budget, cycles (1-based, a number or a list), specimen
+    ("sequential" or "independent"), force_unit, length_unit and quiet are the command line's
+    --seed, --budget, --cycles, --specimen, --force-unit, --length-unit and -q; progress goes to
+    stderr unless quiet.
+
+    Returns a dict as `isolab fit --json`: "e2", "e2_per_test", "components" (name, type and the
+    mathematical parameters), "evaluations", "restarts", "seconds", "seed", "one_specimen".
+    """
+    data = _paths(data)
+    cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
+                                                         else [cycles])]
+    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit, length_unit,
+                quiet)
+
+
+def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit="kN",
+             length_unit="mm", quiet=False):
+    """`isolab diagnose`: which physical effect a base model misses, from cyclic tests.
+
+    data: a cyclic-test CSV file or a list of them; base: the base specification (YAML). seed,
+    budget (per fit), specimen, force_unit, length_unit and quiet are the command line's options;
+    progress goes to stderr unless quiet.
+
+    Returns a dict with the JSON report's numbers: "effects" (the effects added, or ["none"]),
+    "steps" (each effect with its evidence, e^2 and BIC before and after, the component added),
+    "base" and "final" (e2, bic, components), "noise_floor_e2", "stop_reason", "samples".
+    The report files (.md, .json, .model.yaml) stay with the command line.
+    """
+    return _diagnose(_paths(data), str(base), seed, budget, specimen or "", force_unit,
+                     length_unit, quiet)
+
+
+def _paths(data):
+    """One path or a list of them, as a list of str."""
+    return [str(data)] if isinstance(data, (str, os.PathLike)) else [str(d) for d in data]
+
+
+def _to_pandas(result):
+    """The time histories as a pandas DataFrame indexed by time.
+
+    Columns are "<series>" or "<series>/<column>" as in the CSV results ("displacement/base",
+    "isolator/force"); their units are in df.attrs["units"]. Needs pandas.
+    """
+    try:
+        import pandas
+    except ImportError as error:
+        raise ImportError("Result.to_pandas() needs pandas (Debian: python3-pandas)") from error
+    columns, units = {}, {}
+    for name in result.names:
+        if name == "time":
+            continue
+        values = result[name]
+        if values.ndim == 1:
+            columns[name] = values
+            units[name] = result.units[name]
+        else:
+            for i, column in enumerate(result.columns[name]):
+                columns[f"{name}/{column}"] = values[:, i]
+                units[f"{name}/{column}"] = result.units[name]
+    frame = pandas.DataFrame(columns, index=pandas.Index(result["time"], name="time"))
+    frame.attrs["units"] = units
+    return frame
+
+
+Result.to_pandas = _to_pandas
+Model.run = run

@@ -1,0 +1,273 @@
+// isolab.run and its Result: a model's time-history analysis, with the response as numpy arrays
+// that view the result's own storage (no copy) wherever it is stored so.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <memory>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/analysis_setup.h"
+#include "isolab/io/response_peaks.h"
+#include "isolab/io/result_series.h"
+#include "isolab/io/results_file.h"
+#include "isolab/io/run_analysis.h"
+#include "model.h"
+#include "record_argument.h"
+
+namespace py = pybind11;
+
+namespace isolab::python {
+namespace {
+
+// Everything a run made, in one place that does not move: the series refer into it.
+struct RunResult {
+  io::ModelFile model;
+  io::AnalysisSection analysis;
+  io::AnalysisSetup setup;
+  integrators::ResponseHistory response;
+  integrators::RunSummary summary;
+  io::ResponsePeaks peaks;
+  std::vector<io::Series> series;
+  std::vector<std::string> warnings;
+
+  io::RunDescription Description() const {
+    return {&model, &setup, &analysis, &summary, &peaks, ISOLAB_VERSION, {}};
+  }
+  const io::Series& Find(const std::string& name) const {
+    for (const io::Series& s : series) {
+      if (s.name == name) return s;
+    }
+    throw py::key_error(name);
+  }
+};
+
+struct RunOptions {
+  io::RunOverrides overrides;
+  std::optional<std::string> integrator;
+  std::optional<double> rtol, atol;
+};
+
+std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
+  io::AnalysisSection analysis = model.file().analysis;
+  if (options.integrator == "ida") analysis.integrator = io::AnalysisSection::Integrator::kIda;
+  if (options.integrator == "newmark") {
+    analysis.integrator = io::AnalysisSection::Integrator::kNewmark;
+  }
+  if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
+  if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
+  std::shared_ptr<RunResult> result;
+  {
+    py::gil_scoped_release release;  // a thread pool of runs scales
+    result = std::make_shared<RunResult>(model.file(), analysis,
+                                         io::PrepareAnalysis(model.file(), options.overrides));
+    result->summary = io::RunAnalysis(analysis, result->setup, &result->response);
+    result->peaks = io::ComputePeaks(result->setup, result->response);
+  }
+  result->series = io::ResultSeries(result->model, result->setup, io::OutputSelection{});
+  result->warnings = io::RunWarnings(result->Description());
+  return result;
+}
+
+// The history's own row-major storage of a series that is one of its matrices (or its time)
+// whole, so the array can view it; nullptr for a series computed from the rows.
+const double* StoredRows(const integrators::ResponseHistory& h, const io::Series& series) {
+  const auto whole = [&](const integrators::RowMatrix& m) {
+    return m.cols() == static_cast<Eigen::Index>(series.width()) ? m.data() : nullptr;
+  };
+  if (series.name == "time") return h.time.data();
+  if (series.name == "displacement") return whole(h.displacement);
+  if (series.name == "velocity") return whole(h.velocity);
+  if (series.name == "acceleration") return whole(h.acceleration);
+  if (series.name == "absolute_acceleration") return whole(h.absolute_acceleration);
+  if (series.name == "connection_force") return whole(h.connection_force);
+  return nullptr;
+}
+
+// The values of a series over the rows written: a read-only view of the result's storage when
+// the history stores the series as it is, else computed into a new array.
+py::array SeriesArray(const std::shared_ptr<RunResult>& result, const io::Series& series) {
+  const integrators::ResponseHistory& history = result->response;
+  const py::ssize_t rows = history.rows_written;
+  const py::ssize_t width = series.columns.empty() ? 0 : py::ssize_t(series.width());
+  if (const double* stored = StoredRows(history, series)) {
+    return View(py::cast(result), stored, rows, width);
+  }
+  std::vector<py::ssize_t> shape = {rows};
+  if (width > 0) shape.push_back(width);
+  py::array array = py::array_t<double>(shape);
+  double* out = static_cast<double*>(array.mutable_data());
+  for (py::ssize_t row = 0; row < rows; ++row) {
+    series.fill(history.Row(static_cast<int>(row)),
+                out + row * std::max<py::ssize_t>(width, 1));
+  }
+  MakeReadOnly(array);
+  return array;
+}
+
+py::dict PeakDict(const io::Peak& peak) {
+  return py::dict(py::arg("value") = peak.value, py::arg("time") = peak.time,
+                  py::arg("index") = peak.index);
+}
+
+py::dict Peaks(const RunResult& r) {
+  py::dict peaks;
+  peaks["isolator_displacement"] = PeakDict(r.peaks.isolator_displacement);
+  peaks["isolator_force"] = PeakDict(r.peaks.isolator_force);
+  peaks["base_shear"] = PeakDict(r.peaks.base_shear);
+  peaks["first_story_shear"] = PeakDict(r.peaks.first_story_shear);
+  peaks["roof_absolute_acceleration"] = PeakDict(r.peaks.roof_absolute_acceleration);
+  peaks["story_drift"] = PeakDict(r.peaks.story_drift);
+  peaks["story_drift_ratio"] = r.peaks.story_drift_ratio;
+  if (r.setup.layout.isolation >= 0) {
+    peaks["residual_isolator_displacement"] = r.peaks.residual_isolator_displacement;
+    peaks["residual_oscillation"] = r.peaks.residual_oscillation;
+    peaks["isolator_displacement_at_excitation_end"] =
+        r.peaks.isolator_displacement_at_excitation_end;
+  }
+  return peaks;
+}
+
+py::dict Summary(const RunResult& r) {
+  const integrators::RunSummary& s = r.summary;
+  py::dict summary;
+  summary["termination"] = s.ok() ? "completed" : "failed";
+  summary["message"] = s.message;
+  summary["integrator"] = io::DescribeIntegrator(r.analysis, r.setup.grid.dt);
+  summary["dt"] = r.setup.grid.dt;
+  summary["steps"] = r.setup.grid.steps;
+  summary["steps_completed"] = s.steps;
+  summary["excitation_end"] = r.setup.excitation_end;
+  summary["free_vibration"] = r.setup.free_vibration;
+  summary["energy_balance_error"] = s.energy_balance_error;
+  summary["newton_iterations"] = s.newton_iterations;
+  summary["step_cuts"] = s.step_cuts;
+  summary["factorisations"] = s.factorisations;
+  summary["ida_steps"] = s.ida_steps;
+  summary["events"] = s.events;
+  summary["wall_seconds"] = s.wall_seconds;
+  const io::AppliedRecord& record = r.setup.record;
+  summary["record"] = py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
+                               py::arg("units") = record.units, py::arg("dt") = record.dt,
+                               py::arg("scale") = record.scale, py::arg("pga") = record.pga);
+  return summary;
+}
+
+// {series name: its field}, e.g. the units of every series.
+template <typename Field>
+py::dict BySeries(const RunResult& r, Field io::Series::*field) {
+  py::dict values;
+  for (const io::Series& s : r.series) values[py::str(s.name)] = s.*field;
+  return values;
+}
+
+}  // namespace
+
+void BindRun(py::module_& module) {
+  py::class_<RunResult, std::shared_ptr<RunResult>>(
+      module, "Result",
+      "A run's response: result['displacement'] is a numpy array (rows: output times; columns: "
+      "result.columns[name]) in result.units[name]. Response matrices are views of the result, "
+      "not copies; every array is read-only.")
+      .def_property_readonly("names",
+                             [](const RunResult& r) {
+                               std::vector<std::string> names;
+                               for (const io::Series& s : r.series) names.push_back(s.name);
+                               return names;
+                             })
+      .def_property_readonly("units",
+                             [](const RunResult& r) { return BySeries(r, &io::Series::units); })
+      .def_property_readonly("columns",
+                             [](const RunResult& r) { return BySeries(r, &io::Series::columns); })
+      .def("__getitem__", [](const std::shared_ptr<RunResult>& r,
+                             const std::string& name) { return SeriesArray(r, r->Find(name)); })
+      .def("__contains__",
+           [](const RunResult& r, const std::string& name) {
+             for (const io::Series& s : r.series) {
+               if (s.name == name) return true;
+             }
+             return false;
+           })
+      .def_property_readonly("ok", [](const RunResult& r) { return r.summary.ok(); })
+      .def_property_readonly("message", [](const RunResult& r) { return r.summary.message; })
+      .def_property_readonly("peaks", &Peaks, "The peaks `isolab run --json` prints")
+      .def_property_readonly("summary", &Summary,
+                             "Termination, integrator, step, counts, energy balance, the record")
+      .def_property_readonly("warnings", [](const RunResult& r) { return r.warnings; })
+      .def_property_readonly("model_units",
+                             [](const RunResult& r) {
+                               const io::UnitSystem& u = r.model.units;
+                               return py::dict(py::arg("force") = u.force(),
+                                               py::arg("length") = u.length(),
+                                               py::arg("time") = u.time());
+                             })
+      .def(
+          "save",
+          [](const RunResult& r, const std::filesystem::path& path) {
+            io::WriteResultsFile(path.string(), r.Description(), r.response);
+          },
+          py::arg("path"),
+          "Writes the results file `isolab run -o path` writes (.h5/.hdf5 or .csv)");
+
+  module.def(
+      "_run",
+      [](const Model& model, const py::object& record, const std::optional<std::string>& units,
+         std::optional<double> record_dt, std::optional<double> scale, std::optional<double> dt,
+         const py::object& free_vibration, bool fixed_base,
+         std::optional<double> trial_displacement, const std::optional<std::string>& integrator,
+         std::optional<double> rtol, std::optional<double> atol) {
+        RunOptions options;
+        io::RunOverrides& o = options.overrides;
+        if (!record.is_none()) {
+          if (IsRecordFile(record)) {
+            o.record = py::str(record).cast<std::string>();
+            if (units) o.record_units = *units;
+            if (record_dt) {
+              o.record_dt = model.file().units.Convert(*record_dt, "s", io::dimension::kTime);
+            }
+          } else {
+            o.record_data = ArrayRecord(record, record_dt, units);
+          }
+        } else if (units || record_dt) {
+          if (units) o.record_units = *units;
+          if (record_dt) {
+            o.record_dt = model.file().units.Convert(*record_dt, "s", io::dimension::kTime);
+          }
+        }
+        o.units_given_by = "units";
+        o.dt_given_by = "record_dt";
+        o.scale = scale;
+        o.dt = dt;
+        o.fixed_base = fixed_base;
+        o.trial_displacement = trial_displacement;
+        if (!free_vibration.is_none()) {
+          if (py::isinstance<py::str>(free_vibration) &&
+              free_vibration.cast<std::string>() == "auto") {
+            o.free_vibration = io::FreeVibration{};
+          } else {
+            const double seconds = free_vibration.cast<double>();
+            if (!(seconds >= 0.0)) {
+              throw InputError({"free_vibration"}, "must be 'auto' or a time in s >= 0");
+            }
+            o.free_vibration = io::FreeVibration{
+                false, model.file().units.Convert(seconds, "s", io::dimension::kTime)};
+          }
+        }
+        if (integrator && *integrator != "newmark" && *integrator != "ida") {
+          throw InputError({"integrator"}, "'" + *integrator + "' (newmark or ida)");
+        }
+        options.integrator = integrator;
+        options.rtol = rtol;
+        options.atol = atol;
+        return Run(model, options);
+      },
+      py::arg("model"), py::arg("record") = py::none(), py::arg("units") = py::none(),
+      py::arg("record_dt") = py::none(), py::arg("scale") = py::none(), py::arg("dt") = py::none(),
+      py::arg("free_vibration") = py::none(), py::arg("fixed_base") = false,
+      py::arg("trial_displacement") = py::none(), py::arg("integrator") = py::none(),
+      py::arg("rtol") = py::none(), py::arg("atol") = py::none());
+}
+
+}  // namespace isolab::python

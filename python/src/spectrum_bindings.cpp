@@ -1,0 +1,144 @@
+// isolab.spectrum: `isolab spectrum` (elastic and constant-ductility response spectra of a
+// record) with the command line's options as keyword arguments; the spectra as numpy arrays
+// named as in the HDF5 spectrum file (io/spectrum_file.h).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+
+#include "bindings.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/record.h"
+#include "isolab/io/units.h"
+#include "isolab/spectra/constant_ductility.h"
+#include "isolab/spectra/elastic_spectrum.h"
+#include "record_argument.h"
+
+namespace py = pybind11;
+
+namespace isolab::python {
+namespace {
+
+// values[d * per_damping + i] as a (damping x per_damping) array, through `field`.
+template <typename Item, typename Field>
+py::array_t<double> Table(const std::vector<Item>& values, std::size_t rows, std::size_t columns,
+                          Field field) {
+  py::array_t<double> array({rows, columns});
+  auto out = array.mutable_unchecked<2>();
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < columns; ++c) out(r, c) = field(values[r * columns + c]);
+  }
+  return array;
+}
+
+py::dict Spectrum(const py::object& record_argument, const std::vector<double>& periods,
+                  const std::vector<double>& damping, const std::vector<double>& ductility,
+                  double alpha, int points_per_period, double scale,
+                  const std::optional<std::string>& units, std::optional<double> record_dt,
+                  const std::string& length_unit) {
+  for (const double zeta : damping) {
+    if (!(zeta >= 0.0 && zeta < 1.0)) {
+      throw InputError({"damping"}, "damping ratios must be in [0, 1) (e.g. 0.05 for 5 %)");
+    }
+  }
+  for (const double mu : ductility) {
+    if (!(mu >= 1.0)) throw InputError({"ductility"}, "ductilities must be >= 1");
+  }
+  if (!(alpha >= 0.0 && alpha < 1.0)) throw InputError({"alpha"}, "must be in [0, 1)");
+  if (points_per_period < 1) throw InputError({"points_per_period"}, "must be >= 1");
+  if (!(scale > 0.0) || !std::isfinite(scale)) {
+    throw InputError({"scale"}, "must be finite and > 0");
+  }
+  std::optional<io::UnitSystem> system;
+  try {
+    system.emplace("N", length_unit, "s");
+  } catch (const std::invalid_argument& error) {
+    throw InputError({"length_unit"}, std::string(error.what()) + " (m, cm, mm, in, ft)");
+  }
+  const io::Record record =
+      IsRecordFile(record_argument)
+          ? io::ReadRecord(py::str(record_argument).cast<std::string>(),
+                           {units.value_or(""), record_dt.value_or(0.0), "units", "record_dt"})
+          : ArrayRecord(record_argument, record_dt, units);
+  integrators::SampledHistory ground;
+  ground.dt = record.dt;
+  double factor = 0.0;
+  try {
+    factor = system->Convert(scale, record.units, io::dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({record.path}, "units '" + record.units + "': " + error.what());
+  }
+  for (const double a : record.values) ground.values.push_back(a * factor);
+  try {
+    spectra::ValidateSpectrumInput(ground, periods, damping);
+  } catch (const InvalidParameter& error) {
+    throw InputError({record.path}, error.violation().Describe());
+  }
+
+  py::dict result;
+  result["period"] = py::array_t<double>(periods.size(), periods.data());
+  result["damping"] = py::array_t<double>(damping.size(), damping.data());
+  result["units"] = py::dict(py::arg("length") = length_unit, py::arg("time") = "s");
+  result["record"] =
+      py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
+               py::arg("units") = record.units, py::arg("dt") = record.dt, py::arg("scale") = scale,
+               py::arg("pga") = record.Peak() * std::abs(factor));
+  std::optional<spectra::ElasticSpectrum> elastic;
+  std::optional<spectra::ConstantDuctilitySpectrum> inelastic;
+  {
+    py::gil_scoped_release release;
+    elastic = spectra::ComputeElasticSpectrum(ground, periods, damping, {points_per_period});
+    if (!ductility.empty()) {
+      spectra::ConstantDuctilityOptions options;
+      options.alpha = alpha;
+      inelastic =
+          spectra::ComputeConstantDuctilitySpectrum(ground, periods, damping, ductility, options);
+    }
+  }
+  const std::size_t nz = damping.size(), nt = periods.size();
+  using spectra::SpectralOrdinate;
+  result["elastic"] = py::dict(
+      py::arg("D") = Table(elastic->ordinates, nz, nt,
+                           [](const SpectralOrdinate& o) { return o.deformation; }),
+      py::arg("V") = Table(elastic->ordinates, nz, nt,
+                           [](const SpectralOrdinate& o) { return o.pseudo_velocity; }),
+      py::arg("A") = Table(elastic->ordinates, nz, nt,
+                           [](const SpectralOrdinate& o) { return o.pseudo_acceleration; }),
+      py::arg("time_of_peak") = Table(elastic->ordinates, nz, nt,
+                                      [](const SpectralOrdinate& o) { return o.time_of_peak; }));
+  if (inelastic) {
+    // (damping x ductility) rows of periods, reshaped to (n_z, n_mu, n_T) as in the HDF5 file.
+    const std::size_t nm = ductility.size();
+    using spectra::ConstantDuctilityPoint;
+    const auto cube = [&](double (*field)(const ConstantDuctilityPoint&)) {
+      return Table(inelastic->points, nz * nm, nt, field)
+          .reshape(std::vector<py::ssize_t>{py::ssize_t(nz), py::ssize_t(nm), py::ssize_t(nt)});
+    };
+    result["constant_ductility"] = py::dict(
+        py::arg("ductility") = py::array_t<double>(nm, ductility.data()), py::arg("alpha") = alpha,
+        py::arg("time_step") = py::array_t<double>(nt, inelastic->time_steps.data()),
+        py::arg("elastic_deformation") =
+            Table(inelastic->elastic_deformations, nz, nt, [](double u) { return u; }),
+        py::arg("strength_ratio") =
+            cube([](const ConstantDuctilityPoint& p) { return p.strength_ratio; }),
+        py::arg("D_y") = cube([](const ConstantDuctilityPoint& p) { return p.yield_deformation; }),
+        py::arg("V_y") =
+            cube([](const ConstantDuctilityPoint& p) { return p.yield_pseudo_velocity; }),
+        py::arg("A_y") =
+            cube([](const ConstantDuctilityPoint& p) { return p.yield_pseudo_acceleration; }),
+        py::arg("u_m") = cube([](const ConstantDuctilityPoint& p) { return p.peak_deformation; }),
+        py::arg("achieved_ductility") =
+            cube([](const ConstantDuctilityPoint& p) { return p.achieved_ductility; }));
+  }
+  return result;
+}
+
+}  // namespace
+
+void BindSpectrum(py::module_& module) {
+  module.def("_spectrum", &Spectrum, py::arg("record"), py::arg("periods"), py::arg("damping"),
+             py::arg("ductility"), py::arg("alpha"), py::arg("points_per_period"), py::arg("scale"),
+             py::arg("units"), py::arg("record_dt"), py::arg("length_unit"));
+}
+
+}  // namespace isolab::python

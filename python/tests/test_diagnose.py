@@ -1,0 +1,34 @@
+"""isolab.diagnose against the command line's JSON report, on tests generated from a known
+truth (a degrading bearing) that it must name."""
+
+import pytest
+
+import isolab
+
+TRUTH = "models/diagnosis/cyclic_degradation.yaml"
+BASE = "models/diagnosis/base_bhm2.yaml"
+
+
+def test_diagnose_equals_the_command_line(repo, tmp_path, isolab_cli):
+    data = tmp_path / "tests.csv"
+    isolab_cli("cyclic", TRUTH, "-a", "25,100,200", "-T", 2, "-n", 3, "--steps-per-cycle", 100,
+               "--noise", 0.01, "--seed", 15, "--test-data", data)
+    cli = isolab_cli.json("diagnose", data, "--base", BASE, "--budget", 1500, "-q",
+                          "--out", tmp_path / "report")
+    mine = isolab.diagnose(data, repo / BASE, budget=1500, quiet=True)
+    assert mine["effects"] == cli["effects"] == ["cyclic_degradation"]  # the data's truth
+    assert mine["stop_reason"] == cli["stop_reason"]
+    assert mine["noise_floor_e2"] == pytest.approx(cli["noise_floor_e2"], rel=1e-9)
+    for which in ("base", "final"):
+        assert mine[which]["e2"] == pytest.approx(cli[which]["e2"], rel=1e-9)
+        for a, b in zip(mine[which]["components"], cli[which]["components"]):
+            assert a["parameters"] == pytest.approx(b["parameters"], rel=1e-9, abs=1e-12)
+    for a, b in zip(mine["steps"], cli["steps"]):
+        assert a["evidence"]["value"] == pytest.approx(b["evidence"]["value"], rel=1e-9)
+        assert a["e2_after"] == pytest.approx(b["e2_after"], rel=1e-9)
+        assert a["added"]["parameters"] == pytest.approx(b["added"]["parameters"], rel=1e-9)
+
+
+def test_diagnose_bad_input(repo, tmp_path):
+    with pytest.raises(isolab.InputError, match="no_such.csv"):
+        isolab.diagnose(tmp_path / "no_such.csv", repo / BASE, quiet=True)

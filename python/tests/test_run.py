@@ -1,0 +1,147 @@
+"""isolab.run against the command line (same numbers to round-off), a closed form, and the GIL."""
+
+import math
+import sys
+import threading
+import time
+
+import h5py
+import numpy as np
+import pytest
+
+import isolab
+
+FIVE_STORY = "models/buildings/five_story_table9.yaml"
+
+
+@pytest.fixture(scope="module")
+def five_story_scaled():
+    """The five-story model at a smaller scale and a coarser output, for a quick run."""
+    return {"scale": 0.3, "free_vibration": 2.0}
+
+
+def test_run_equals_the_command_line(repo, tmp_path, isolab_cli, five_story_scaled):
+    h5 = tmp_path / "cli.h5"
+    cli = isolab_cli.json("run", FIVE_STORY, "--scale", 0.3, "--free-vibration", 2, "-o", h5)
+    result = isolab.run(repo / FIVE_STORY, **five_story_scaled)
+    with h5py.File(h5) as f:
+        compared = 0
+        for name in result.names:
+            assert name in f, name
+            np.testing.assert_allclose(result[name], f[name][...], rtol=1e-12, atol=0, err_msg=name)
+            assert result.units[name] == f[name].attrs["units"], name
+            compared += 1
+        assert compared >= 15
+        columns = [c.decode() if isinstance(c, bytes) else c
+                   for c in f["displacement"].attrs["columns"]]
+        floors = [f"floor {i}" for i in range(1, 6)]
+        assert result.columns["displacement"] == columns == ["base"] + floors
+    for key in ("isolator_displacement", "base_shear", "roof_absolute_acceleration", "story_drift"):
+        assert result.peaks[key]["value"] == pytest.approx(cli["peaks"][key]["value"], rel=1e-12)
+        assert result.peaks[key]["time"] == cli["peaks"][key]["time"]
+    assert result.peaks["residual_isolator_displacement"] == pytest.approx(
+        cli["residual_isolator_displacement"], rel=1e-12)
+    assert result.summary["integrator"] == cli["integrator"]
+    assert result.summary["newton_iterations"] == cli["newton"]["iterations"]
+    assert result.warnings == cli["warnings"]
+
+
+def test_save_writes_the_command_lines_file(repo, tmp_path, isolab_cli, five_story_scaled):
+    isolab_cli("run", FIVE_STORY, "--scale", 0.3, "--free-vibration", 2, "-o", tmp_path / "cli.csv")
+    result = isolab.run(repo / FIVE_STORY, **five_story_scaled)
+    result.save(tmp_path / "py.csv")
+    cli = [l for l in (tmp_path / "cli.csv").read_text().splitlines() if "wall" not in l]
+    py = [l for l in (tmp_path / "py.csv").read_text().splitlines() if "wall" not in l]
+    assert len(py) == len(cli) and py[-1] == cli[-1] and py[-100] == cli[-100]
+
+
+def test_arrays_are_read_only_views_with_names_and_units(repo, five_story_scaled):
+    result = isolab.run(repo / FIVE_STORY, **five_story_scaled)
+    displacement = result["displacement"]
+    assert displacement.shape == (len(result["time"]), 6)
+    assert np.shares_memory(displacement, result["displacement"])  # a view, not a copy
+    assert displacement.base is not None and not displacement.flags.writeable
+    with pytest.raises(ValueError):
+        displacement[0, 0] = 1.0
+    assert result.units["displacement"] == "mm"
+    assert result.units["isolator/force"] == "kN"
+    del result  # the arrays keep the result alive
+    assert np.isfinite(displacement).all() and displacement[:, 0].max() > 1.0
+
+
+def test_to_pandas(repo, five_story_scaled):
+    result = isolab.run(repo / FIVE_STORY, **five_story_scaled)
+    frame = result.to_pandas()
+    assert frame.index.name == "time"
+    np.testing.assert_array_equal(frame["displacement/floor 5"].to_numpy(),
+                                  result["displacement"][:, 5])
+    np.testing.assert_array_equal(frame["isolator/force"].to_numpy(), result["isolator/force"])
+    assert frame.attrs["units"]["story/drift/story1"] == "mm"
+
+
+def test_array_record_against_the_closed_form():
+    # A linear SDOF (m = 10 t, k = 400 kN/m, 5 %) under a ground acceleration stepping to 1 m/s^2
+    # at t = 0: u(t) = -(a/w^2) [1 - exp(-z w t) (cos wd t + z/sqrt(1-z^2) sin wd t)] (Chopra 4.3).
+    model = isolab.Model.from_dict({
+        "units": {"force": "kN", "length": "m", "time": "s"},
+        "structure": {"type": "sdof", "mass": 10.0, "damping": {"ratio": 0.05}},
+        "isolation": {"components": [{"name": "spring", "type": "linear_spring", "k": 400.0}]},
+    })
+    dt, a = 0.001, 1.0
+    result = model.run(np.full(2001, a), record_dt=dt, units="m/s^2", free_vibration=0)
+    t = result["time"]
+    w, z = math.sqrt(40.0), 0.05
+    wd = w * math.sqrt(1 - z * z)
+    exact = -(a / w**2) * (1 - np.exp(-z * w * t) * (np.cos(wd * t) + z / math.sqrt(1 - z * z) *
+                                                      np.sin(wd * t)))
+    assert t[-1] == pytest.approx(2.0)
+    # Newmark's period error, (w dt)^2 / 12, leaves about 1e-5 of the peak.
+    np.testing.assert_allclose(result["displacement"][:, 0], exact,
+                               atol=3e-5 * np.abs(exact).max())
+    assert result.summary["record"]["path"] == "<array>"
+
+
+def test_bad_run_input_raises_input_error(repo):
+    with pytest.raises(isolab.InputError, match="record_dt"):
+        isolab.run(repo / FIVE_STORY, np.zeros(10), units="g")
+    with pytest.raises(isolab.InputError, match="units"):
+        isolab.run(repo / FIVE_STORY, np.zeros(10), record_dt=0.01)
+    with pytest.raises(isolab.InputError, match="coarser than the record"):
+        isolab.run(repo / FIVE_STORY, dt=0.05)
+    with pytest.raises(isolab.InputError, match="no_such.at2"):
+        isolab.run(repo / FIVE_STORY, "no_such.at2")
+    with pytest.raises(isolab.InputError, match="integrator"):
+        isolab.run(repo / FIVE_STORY, integrator="rk4")
+
+
+def test_a_failed_run_raises_run_error_with_the_partial_result(repo):
+    model = isolab.load_model(repo / FIVE_STORY)
+    model.set("analysis.newmark", {"max_iterations": 1, "max_step_cuts": 0})
+    with pytest.raises(isolab.RunError, match="stopped early") as error:
+        isolab.run(model, scale=0.3, free_vibration=0)
+    partial = error.value.result
+    assert not partial.ok and 0 < len(partial["time"]) < 5000
+    assert not isolab.run(model, scale=0.3, free_vibration=0, check=False).ok
+
+
+def test_runs_release_the_gil(repo):
+    # With a switch interval of 100 s the interpreter never takes the GIL from a thread: this
+    # thread runs only when the run's thread lets it go. A run that keeps the GIL leaves count at
+    # 0 (this thread waits in start() until the run's thread ends); a run that releases it lets
+    # this thread count, a millisecond at a time, until the run ends.
+    model = isolab.load_model(repo / FIVE_STORY)
+    results = []
+    worker = threading.Thread(target=lambda: results.append(isolab.run(model)))
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(100.0)
+    try:
+        worker.start()
+        count = 0
+        while worker.is_alive():
+            count += 1
+            time.sleep(0.001)  # lets the run's thread take the GIL back when it is done
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert results[0].ok
+    assert count >= 2, count

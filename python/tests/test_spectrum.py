@@ -1,0 +1,46 @@
+"""isolab.spectrum against the command line's HDF5 spectra and the closed form of a sine."""
+
+import math
+
+import h5py
+import numpy as np
+import pytest
+
+import isolab
+
+PULSE = "ground_motions/pulse_tp2.at2"
+
+
+def test_spectrum_equals_the_command_line(repo, tmp_path, isolab_cli):
+    h5 = tmp_path / "spectrum.h5"
+    isolab_cli("spectrum", PULSE, "--periods", "0.2,0.5,1,2,3", "--damping", "0,0.05",
+               "--ductility", "2,4", "--scale", 0.5, "-o", h5, "-q")
+    mine = isolab.spectrum(repo / PULSE, periods=[0.2, 0.5, 1, 2, 3], damping=[0, 0.05],
+                           ductility=[2, 4], scale=0.5)
+    with h5py.File(h5) as f:
+        np.testing.assert_array_equal(mine["period"], f["period"][...])
+        for name in ("D", "V", "A", "time_of_peak"):
+            np.testing.assert_allclose(mine["elastic"][name], f["elastic"][name][...], rtol=1e-12)
+        for name in ("strength_ratio", "D_y", "A_y", "u_m", "achieved_ductility"):
+            np.testing.assert_allclose(mine["constant_ductility"][name],
+                                       f["constant_ductility"][name][...], rtol=1e-12)
+        assert mine["record"]["pga"] == pytest.approx(f.attrs["record_pga"], rel=1e-12)
+
+
+def test_undamped_sine_at_resonance_against_the_closed_form():
+    # a_g = a0 sin(w t) on an undamped SDOF of the same w: u(t) = a0 / (2 w^2) (sin wt - wt cos wt)
+    # (Chopra Eq. 3.1.13); its peak over 5 periods is at the last |cos| extreme, close to
+    # a0 / (2 w^2) * w t_end.
+    dt, w, a0 = 0.001, 2 * math.pi, 1.0
+    t = np.arange(0, 5.0 + dt / 2, dt)
+    result = isolab.spectrum(a0 * np.sin(w * t), record_dt=dt, units="m/s^2", periods=[1.0],
+                             damping=0.0)
+    exact = np.abs(a0 / (2 * w**2) * (np.sin(w * t) - w * t * np.cos(w * t))).max()
+    assert result["elastic"]["D"][0, 0] == pytest.approx(exact, rel=1e-4)
+
+
+def test_spectrum_bad_input():
+    with pytest.raises(isolab.InputError, match="damping"):
+        isolab.spectrum(np.ones(100), record_dt=0.01, units="g", damping=1.5)
+    with pytest.raises(isolab.InputError, match="record_dt"):
+        isolab.spectrum(np.ones(100), units="g")
