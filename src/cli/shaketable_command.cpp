@@ -136,7 +136,10 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     integrators::ResponseHistory response;
     integrators::RunSummary summary;
     try {
-      prepared.emplace(io::PrepareAnalysis(model, {record_path, 1.0, std::nullopt, false}));
+      io::RunOverrides overrides;
+      overrides.record = record_path;
+      overrides.scale = 1.0;
+      prepared.emplace(io::PrepareAnalysis(model, overrides));
       const io::AnalysisSetup& setup = *prepared;
       if (setup.layout.isolation < 0) {
         throw InputError({options.model}, "--predict needs an isolation layer in the model");
@@ -175,8 +178,9 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
         {"peak roof absolute acceleration", acceleration, PeakAbs(m.acceleration.back()),
          PeakAbs(predicted_roof)},
     };
-    io::WriteResultsFile(
-        results_path, {&model, &*prepared, &model.analysis, &response, &summary, ISOLAB_VERSION});
+    const io::ResponsePeaks peaks = io::ComputePeaks(*prepared, response);
+    io::WriteResultsFile(results_path, {&model, &*prepared, &model.analysis, &response, &summary,
+                                        &peaks, ISOLAB_VERSION});
   }
   const double nrmse_u = options.predict ? Nrmse(m.displacement.front(), predicted_u) : 0.0;
   const double nrmse_roof = options.predict ? Nrmse(m.acceleration.back(), predicted_roof) : 0.0;

@@ -346,8 +346,8 @@ TEST_P(PlanLawUpdate, TrialIsAPureFunctionOfCommittedStateAndInput) {
   PlanLawState committed;
   for (const PlanSample& s : CurvedPath(c.scale, 300)) {
     PlanLawState garbage, other;
-    garbage.x = garbage.y = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
-    other.x = other.y = {1, 2, 3, 4, 5, 6, 7, 8};
+    garbage.x = garbage.y = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, 7, NAN};
+    other.x = other.y = {1, 2, 3, 4, 5, 6, 7, -1, 9};
     PlanLawResponse r1, r2;
     UpdatePlanLaw(kernel, committed, {s.u, s.v, s.t}, &garbage, &r1);
     UpdatePlanLaw(kernel, committed, {s.u, s.v, s.t}, &other, &r2);
