@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
+#include "blow_up.h"
 #include "rate_form_system.h"
 
 namespace isolab::integrators {
@@ -297,6 +298,11 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
     const Energies& e = response->energies[row];
     max_input = std::max(max_input, std::abs(e.input));
     max_balance = std::max(max_balance, std::abs(e.Balance()));
+    if (std::string why = DescribeBlowUp(e, max_input); !why.empty()) {
+      summary.termination = RunSummary::Termination::kFailed;
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", response->time[row], why);
+      break;
+    }
   }
   run.CollectStatistics();
   summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;

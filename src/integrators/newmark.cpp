@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "isolab/core/errors.h"
+#include "blow_up.h"
 #include "klu_solver.h"
 
 namespace isolab::integrators {
@@ -264,6 +265,11 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
     summary.steps = step;
     max_input = std::max(max_input, std::abs(run.energies().input));
     max_balance = std::max(max_balance, std::abs(run.energies().Balance()));
+    if (std::string why = DescribeBlowUp(run.energies(), max_input); !why.empty()) {
+      summary.termination = RunSummary::Termination::kFailed;
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", step * grid.dt, why);
+      break;
+    }
   }
   summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;
   summary.wall_seconds =
