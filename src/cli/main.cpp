@@ -6,6 +6,7 @@
 #include "compare_command.h"
 #include "cyclic_command.h"
 #include "diagnose_command.h"
+#include "finite_options.h"
 #include "fit_command.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterCompareCommand(app, compare);
   isolab::cli::ShakeTableOptions shaketable;
   isolab::cli::RegisterShakeTableCommand(app, shaketable);
+  isolab::cli::RequireFiniteNumbers(app);
 
   try {
     app.parse(argc, argv);

@@ -13,8 +13,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "isolab/core/errors.h"
 #include "blow_up.h"
+#include "isolab/core/errors.h"
 #include "rate_form_system.h"
 
 namespace isolab::integrators {

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "isolab/core/errors.h"
 #include "blow_up.h"
+#include "isolab/core/errors.h"
 #include "klu_solver.h"
 
 namespace isolab::integrators {

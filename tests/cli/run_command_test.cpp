@@ -471,17 +471,36 @@ TEST(RunCommand, BlowUpsExitOneUnderBothIntegratorsAndValidRunsStayPassive) {
         << integrator << ": " << run.output;
     EXPECT_GT(KineticToInputRatio(output), 10.0) << integrator;
   }
-  const auto huge = RunIsolab("run " + Data("run_base.yaml") + " --scale 1e300 -o " +
-                                  output.string(),
-                              true);
+  const auto huge =
+      RunIsolab("run " + Data("run_base.yaml") + " --scale 1e300 -o " + output.string(), true);
   EXPECT_EQ(huge.exit_code, 1) << huge.output;
   EXPECT_NE(huge.output.find("blow-up at t = "), std::string::npos) << huge.output;
   EXPECT_NE(huge.output.find("the response is not finite"), std::string::npos) << huge.output;
-  const auto json = RunIsolab("run " + Data("blow_up_negative_stiffness.yaml") + " --json -o " +
-                              output.string());
+  const auto json =
+      RunIsolab("run " + Data("blow_up_negative_stiffness.yaml") + " --json -o " + output.string());
   EXPECT_EQ(json.exit_code, 1);
   EXPECT_EQ(nlohmann::json::parse(json.output)["termination"], "failed");
 
   ASSERT_EQ(RunIsolab("run " + Data("run_base.yaml") + " -o " + output.string()).exit_code, 0);
   EXPECT_LE(KineticToInputRatio(output), 1.0 + 1e-3);
+}
+
+// Issue #18 item 6: `--scale nan`, `--scale inf` and `--rtol nan` used to be read (a range check
+// lets NaN through): every floating-point option now refuses them, exit 2, naming the option.
+TEST(RunCommand, NonFiniteNumbersOnTheCommandLineExitTwo) {
+  const auto output = TemporaryFile("non_finite.h5");
+  const std::pair<const char*, const char*> cases[] = {
+      {"--scale nan", "--scale: 'nan' is not a finite number"},
+      {"--scale inf", "--scale: 'inf' is not a finite number"},
+      {"--scale 1e999", "--scale: '1e999' is out of range"},
+      {"--rtol nan", "--rtol: 'nan' is not a finite number"},
+      {"--trial-displacement NaN", "--trial-displacement: 'NaN' is not a finite number"},
+  };
+  for (const auto& [option, message] : cases) {
+    const auto run =
+        RunIsolab("run " + Data("run_base.yaml") + " " + option + " -o " + output.string(), true);
+    EXPECT_EQ(run.exit_code, 2) << option << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << option << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output)) << option;
+  }
 }

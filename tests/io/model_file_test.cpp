@@ -55,7 +55,13 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_cyclic_steps.yaml",
               ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
   ExpectError("bad_empty.yaml", ":1:1:", "the file is empty");
-  ExpectError("bad_nan_value.yaml", ":4:69:", "isolation.components[0].uyh: NaN is not a value");
+  ExpectError("bad_nan_value.yaml",
+              ":4:69:", "isolation.components[0].uyh: '.nan' is not a finite number");
+  // Issue #18 item 6: NaN and infinity spelled without YAML's dot used to be read as numbers.
+  ExpectError("bad_plain_nan_value.yaml",
+              ":4:42:", "isolation.components[0].k1: 'nan' is not a finite number");
+  ExpectError("bad_plain_inf_value.yaml",
+              ":4:69:", "isolation.components[0].uyh: 'inf' is not a finite number");
   ExpectError("bad_non_scalar_key.yaml", ":4:52:", "a key must be a plain name");
 }
 
