@@ -84,5 +84,18 @@ TEST(ModelFile, ReadsMechanicalFormAndUnits) {
   EXPECT_FALSE(model.cyclic.has_value());
 }
 
+// Issue #18 item 2: a model whose isolation `file` names itself, or A -> B -> A, recursed until
+// the stack overflowed. The file that closes the cycle is refused at its `file` key, naming the
+// chain; the same file spelled another way ("./a.yaml") is still the same file.
+TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {
+  ExpectError("bad_include_self.yaml", ":3:19:", "isolation.file: the files include each other: ");
+  const std::string message = ErrorOf("bad_include_cycle_a.yaml");
+  EXPECT_EQ(message.rfind(DataFile("bad_include_cycle_b.yaml") + ":3:19:", 0), 0u) << message;
+  EXPECT_NE(
+      message.find("bad_include_cycle_a.yaml -> " + DataFile("bad_include_cycle_b.yaml") + " -> "),
+      std::string::npos)
+      << message;
+}
+
 }  // namespace
 }  // namespace isolab::io
