@@ -247,6 +247,9 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
        "bad_unknown_integrator.yaml:8:34: analysis.integrator: 'rk4' is not an integrator "
        "(expected newmark or ida)"},
       {"bad_ida_rtol.yaml", "bad_ida_rtol.yaml:11:15: analysis.ida.rtol = 0 (must be in (0, 0.1))"},
+      // Issue #18 item 3: halving was recursive and unbounded (a stack overflow waiting).
+      {"bad_max_step_cuts.yaml",
+       "bad_max_step_cuts.yaml:11:28: analysis.newmark.max_step_cuts = 1e+08 (must be in [0, 20])"},
   };
   for (const BadInput& c : cases) {
     const auto output = TemporaryFile("bad.h5");
