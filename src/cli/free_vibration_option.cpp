@@ -6,19 +6,14 @@
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
 
 namespace isolab::cli {
 
 io::FreeVibration ParseFreeVibration(const std::string& text, const io::UnitSystem& units) {
   if (text == "auto") return {};
-  double seconds = -1.0;
-  std::size_t used = 0;
-  try {
-    seconds = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(seconds) || seconds < 0.0) {
+  const double seconds = ParseFiniteNumber(text).value_or(-1.0);
+  if (seconds < 0.0) {
     throw InputError({"--free-vibration"},
                      fmt::format("'{}' (expected auto, or a time in s >= 0; 0 for none)", text));
   }

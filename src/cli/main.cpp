@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "cyclic_command.h"
+#include "finite_options.h"
 #include "isolab/core/errors.h"
 #include "run_command.h"
 #include "shaketable_command.h"
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
 #endif
   isolab::cli::ShakeTableOptions shaketable;
   isolab::cli::RegisterShakeTableCommand(app, shaketable);
+  isolab::cli::RequireFiniteNumbers(app);
 
   try {
     app.parse(argc, argv);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/record.h"
 #include "isolab/io/spectrum_file.h"
@@ -25,17 +26,10 @@ namespace {
 constexpr const char* kPlotScript = "plot_spectrum.py";
 
 double ParseNumber(const std::string& option, const std::string& text, const std::string& token) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(token, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != token.size() || !std::isfinite(value)) {
-    throw InputError({option}, fmt::format("'{}' in '{}' is not a finite number", token, text));
-  }
-  return value;
+  std::string problem;
+  const std::optional<double> value = ParseFiniteNumber(token, &problem);
+  if (!value) throw InputError({option}, fmt::format("{} (in '{}')", problem, text));
+  return *value;
 }
 
 std::vector<std::string> Split(const std::string& text, char separator) {

@@ -13,6 +13,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "blow_up.h"
 #include "isolab/core/errors.h"
 #include "rate_form_system.h"
 
@@ -297,6 +298,11 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
     summary.steps = row * every;
     max_input = std::max(max_input, std::abs(e.input));
     max_balance = std::max(max_balance, std::abs(e.Balance()));
+    if (std::string why = DescribeBlowUp(e, max_input); !why.empty()) {
+      summary.termination = RunSummary::Termination::kFailed;
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", response->time[row], why);
+      break;
+    }
   }
   run.CollectStatistics();
   summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;

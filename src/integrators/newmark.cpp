@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "blow_up.h"
 #include "isolab/core/errors.h"
 #include "klu_solver.h"
 
@@ -26,8 +27,9 @@ void NewmarkOptions::Validate() const {
   if (max_iterations < 1) {
     throw InvalidParameter({"max_iterations", double(max_iterations), "must be >= 1"});
   }
-  if (max_step_cuts < 0) {
-    throw InvalidParameter({"max_step_cuts", double(max_step_cuts), "must be >= 0"});
+  if (max_step_cuts < 0 || max_step_cuts > kMaxStepCuts) {
+    throw InvalidParameter(
+        {"max_step_cuts", double(max_step_cuts), fmt::format("must be in [0, {}]", kMaxStepCuts)});
   }
 }
 
@@ -72,6 +74,7 @@ class NewmarkRun {
         responses_(structure.law_count()),
         connection_forces_(structure.connections().size()),
         law_forces_(structure.law_count()) {
+    pending_levels_.reserve(options.max_step_cuts + 1);
     const int n = structure.dofs();
     for (VectorXd* x :
          {&u_, &v_, &a_, &u_trial_, &v_trial_, &a_trial_, &load_, &load_trial_, &force_, &residual_,
@@ -82,18 +85,31 @@ class NewmarkRun {
     a_ = load_.cwiseQuotient(structure_.mass());  // at rest, M a0 = p_eff(0)
   }
 
-  // Advances from t0 by h, cutting the step in halves while Newton fails.
-  bool Advance(double t0, double h, int level, int step) {
-    if (TryStep(t0, h)) return true;
-    if (level >= options_.max_step_cuts) {
-      summary_.message = fmt::format(
-          "Newton did not converge at t = {:.6g} (step {}) after {} iterations, residual {:.3g} "
-          "against force scale {:.3g}, with the step cut {} times to {:.3g}",
-          t0 + h, step, options_.max_iterations, last_residual_, last_scale_, level, h);
-      return false;
+  // Advances from t0 by h, cutting a sub-step in halves while Newton fails on it. The sub-steps
+  // still to take are a stack of halving levels (the one on top is next in time): a failed one
+  // is replaced by its two halves, so the stack never holds more than max_step_cuts + 1.
+  bool Advance(double t0, double h, int step) {
+    double t = t0;
+    pending_levels_.assign(1, 0);
+    while (!pending_levels_.empty()) {
+      const int level = pending_levels_.back();
+      pending_levels_.pop_back();
+      const double size = std::ldexp(h, -level);
+      if (TryStep(t, size)) {
+        t += size;
+        continue;
+      }
+      if (level >= options_.max_step_cuts) {
+        summary_.message = fmt::format(
+            "Newton did not converge at t = {:.6g} (step {}) after {} iterations, residual {:.3g} "
+            "against force scale {:.3g}, with the step cut {} times to {:.3g}",
+            t + size, step, options_.max_iterations, last_residual_, last_scale_, level, size);
+        return false;
+      }
+      ++summary_.step_cuts;
+      pending_levels_.insert(pending_levels_.end(), 2, level + 1);
     }
-    ++summary_.step_cuts;
-    return Advance(t0, 0.5 * h, level + 1, step) && Advance(t0 + 0.5 * h, 0.5 * h, level + 1, step);
+    return true;
   }
 
   // Hands the committed state at grid step `step` (time t) to the observer.
@@ -215,6 +231,7 @@ class NewmarkRun {
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;
   std::vector<double> connection_forces_, law_forces_;
+  std::vector<int> pending_levels_;  // halving levels of the sub-steps Advance has still to take
   VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
       correction_, viscous_, viscous_trial_, zero_, roundoff_, absolute_acceleration_;
   Energies energies_;
@@ -236,7 +253,7 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
   double max_input = 0.0, max_balance = 0.0;
   for (int step = 1; step <= grid.steps; ++step) {
     const double t0 = (step - 1) * grid.dt;
-    if (!run.Advance(t0, grid.dt, 0, step)) {
+    if (!run.Advance(t0, grid.dt, step)) {
       summary.termination = RunSummary::Termination::kFailed;
       break;
     }
@@ -244,6 +261,11 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
     summary.steps = step;
     max_input = std::max(max_input, std::abs(run.energies().input));
     max_balance = std::max(max_balance, std::abs(run.energies().Balance()));
+    if (std::string why = DescribeBlowUp(run.energies(), max_input); !why.empty()) {
+      summary.termination = RunSummary::Termination::kFailed;
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", step * grid.dt, why);
+      break;
+    }
   }
   summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;
   summary.wall_seconds =

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
 #include "isolab/io/atomic_file.h"
 
 namespace isolab::io {
@@ -112,14 +113,11 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
       return fields[k];
     };
     const auto number = [&](const char* name) {
-      const std::string& text = field(name);
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(value)) {
-        throw InputError({path, line_number},
-                         fmt::format("column '{}': '{}' is not a finite number", name, text));
-      }
-      return value;
+      std::string problem;
+      const std::optional<double> value = ParseFiniteNumber(field(name), &problem);
+      if (!value)
+        throw InputError({path, line_number}, fmt::format("column '{}': {}", name, problem));
+      return *value;
     };
     const std::string name =
         column.count("test") ? field("test") : std::filesystem::path(path).stem().string();

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
 #include "isolab/io/units.h"
 
 namespace isolab::io {
@@ -49,17 +50,10 @@ void ParseNumbers(const std::string& path, int line_number, const std::string& l
            line[end] != ',')
       ++end;
     const std::string token = line.substr(i, end - i);
-    double value = 0.0;
-    const char* begin = token.data();
-    if (*begin == '+') ++begin;
-    const auto [last, error] = std::from_chars(begin, token.data() + token.size(), value);
-    if (error != std::errc() || last != token.data() + token.size()) {
-      throw InputError({path, line_number}, fmt::format("'{}' is not a number", token));
-    }
-    if (!std::isfinite(value)) {
-      throw InputError({path, line_number}, fmt::format("'{}' is not a finite value", token));
-    }
-    out->push_back(value);
+    std::string problem;
+    const std::optional<double> value = ParseFiniteNumber(token, &problem);
+    if (!value) throw InputError({path, line_number}, problem);
+    out->push_back(*value);
     i = end;
   }
 }
@@ -98,14 +92,10 @@ std::string UnitsFromHeader(const std::string& header) {
 double HeaderNumber(const std::string& path, std::size_t line, std::string text) {
   std::replace(text.begin(), text.end(), 'D', 'E');
   std::replace(text.begin(), text.end(), 'd', 'E');
-  double value = 0.0;
-  const char* begin = text.data() + (!text.empty() && text[0] == '+' ? 1 : 0);
-  const auto [last, error] = std::from_chars(begin, text.data() + text.size(), value);
-  if (error != std::errc() || last != text.data() + text.size() || !std::isfinite(value)) {
-    throw InputError({path, static_cast<int>(line + 1)},
-                     fmt::format("'{}' in the header is not a number", text));
-  }
-  return value;
+  std::string problem;
+  const std::optional<double> value = ParseFiniteNumber(text, &problem);
+  if (!value) throw InputError({path, static_cast<int>(line + 1)}, problem + " (in the header)");
+  return *value;
 }
 
 struct Layout {

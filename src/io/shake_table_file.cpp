@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
 
 namespace isolab::io {
 namespace {
@@ -118,15 +119,13 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
     }
     std::size_t channel = 0;
     for (std::size_t k = 0; k < fields.size(); ++k) {
-      double value = 0.0;
-      const char* begin = fields[k].data() + (!fields[k].empty() && fields[k][0] == '+');
-      const auto [end, error] = std::from_chars(begin, fields[k].data() + fields[k].size(), value);
-      if (fields[k].empty() || error != std::errc() || end != fields[k].data() + fields[k].size() ||
-          !std::isfinite(value)) {
-        throw InputError(
-            {path, line_number, static_cast<int>(k) + 1},
-            fmt::format("column '{}': '{}' is not a finite number", names[k], fields[k]));
+      std::string problem;
+      const std::optional<double> parsed = ParseFiniteNumber(fields[k], &problem);
+      if (!parsed) {
+        throw InputError({path, line_number, static_cast<int>(k) + 1},
+                         fmt::format("column '{}': {}", names[k], problem));
       }
+      const double value = *parsed;
       if (static_cast<int>(k) == time_column) {
         if (!data.time_.empty() && !(value > data.time_.back())) {
           throw InputError({path, line_number, static_cast<int>(k) + 1},

@@ -147,6 +147,9 @@ double UnitSystem::Parse(std::string_view text, Dimension expected) const {
   if (error != std::errc() || last == begin) {
     throw std::invalid_argument(fmt::format("'{}' is not a number with a unit", text));
   }
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument(fmt::format("'{}' is not a finite number", text));
+  }
   std::string_view unit(last, static_cast<std::size_t>(end - last));
   while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
   if (unit.empty()) return value;  // a bare number is in the model's units

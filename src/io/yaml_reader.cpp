@@ -130,20 +130,10 @@ void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path,
 
 double YamlReader::ReadNumber(const YAML::Node& node, const std::string& path) const {
   if (!node.IsScalar()) Fail(node, path, "expected a number");
-  const std::string text = node.Scalar();
-  // YAML's spellings of infinity are numbers (laws reject them by rule); NaN never is a value.
-  if (text == ".nan" || text == ".NaN" || text == ".NAN") Fail(node, path, "NaN is not a value");
-  if (text == ".inf" || text == ".Inf" || text == "+.inf") return INFINITY;
-  if (text == "-.inf" || text == "-.Inf") return -INFINITY;
-  double value = 0.0;
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  if (!text.empty() && *begin == '+') ++begin;
-  const auto [last, error] = std::from_chars(begin, end, value);
-  if (error != std::errc() || last != end) {
-    Fail(node, path, fmt::format("'{}' is not a number", text));
-  }
-  return value;
+  std::string problem;
+  const std::optional<double> value = ParseFiniteNumber(node.Scalar(), &problem);
+  if (!value) Fail(node, path, problem);
+  return *value;
 }
 
 double YamlReader::ReadQuantity(const YAML::Node& node, const std::string& path,

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
 #include "isolab/io/units.h"
 
 namespace isolab::io {

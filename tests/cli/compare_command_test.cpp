@@ -187,7 +187,7 @@ TEST(CompareCommand, FailedRunsAreReportedAndTheOthersFinish) {
   }
   const std::string csv = ReadFile(folder / "summary.csv");
   EXPECT_NE(csv.find("\"Newton did not converge at t = 2.08"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("bad_record_nan.at2:6: 'nan' is not a finite value"), std::string::npos);
+  EXPECT_NE(csv.find("bad_record_nan.at2:6: 'nan' is not a finite number"), std::string::npos);
   // The run that stopped early keeps its results up to there, as `isolab run` does.
   EXPECT_TRUE(fs::exists(folder / "runs/stuck/pulse_tp2_x1.h5"));
   EXPECT_FALSE(fs::exists(folder / "runs/thm1/bad_record_nan_x1.h5"));
@@ -299,3 +299,27 @@ TEST(CompareCommand, PlotWritesBarCharts) {
 }
 
 }  // namespace
+
+// Issue #18 item 5: a run that blew up (a negative-stiffness isolation layer, 4.4 m in 4 s) was
+// "completed" and entered its variant's means. It is now a failed run, its message says why, and
+// the means it would have entered are marked failed with no numbers.
+TEST(CompareCommand, ABlownUpRunFailsAndStaysOutOfTheMeans) {
+  const fs::path folder = OutputFolder("blow_up");
+  const Outcome run =
+      RunIsolab("compare " + StudyData("blow_up_study.yaml") + " -q -o " + folder.string());
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.output.find("1 of 2 runs failed"), std::string::npos) << run.output;
+  const auto rows = CsvRows(folder / "summary.csv");
+  const auto* blown = FindRow(rows, "softening", "pulse_tp2", "1");
+  ASSERT_NE(blown, nullptr);
+  EXPECT_EQ((*blown)[3], "failed");
+  EXPECT_EQ((*blown)[4], "");  // no peak isolator displacement from a divergent run
+  const auto* mean = FindRow(rows, "softening", "mean", "1");
+  ASSERT_NE(mean, nullptr);
+  EXPECT_EQ((*mean)[3], "failed");
+  EXPECT_EQ((*mean)[4], "");
+  const auto* reference = FindRow(rows, "thm1", "mean", "1");
+  ASSERT_NE(reference, nullptr);
+  EXPECT_EQ((*reference)[3], "completed");
+  EXPECT_NE(ReadFile(folder / "summary.csv").find("blow-up at t = "), std::string::npos);
+}

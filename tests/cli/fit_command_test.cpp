@@ -122,7 +122,7 @@ TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
   };
   const Case cases[] = {
       {"bad_missing_column.csv", "bad_missing_column.csv:1: missing column 'force'"},
-      {"bad_not_a_number.csv", "bad_not_a_number.csv:3: column 'force': 'abc' is not a finite"},
+      {"bad_not_a_number.csv", "bad_not_a_number.csv:3: column 'force': 'abc' is not a number"},
       {"bad_never_reverses.csv", "test 'ramp': too short to identify anything"},
       {"bad_one_reversal.csv", "test 'once': too short to identify anything: 5 samples"},
       {"bad_time_repeats.csv", "bad_time_repeats.csv:5: column 'time': 2 does not increase"},

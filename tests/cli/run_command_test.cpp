@@ -241,12 +241,15 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
       {"bad_negative_mass.yaml", "structure.mass: -0.0317 (must be > 0)"},
       {"bad_zero_dt.yaml", "analysis.dt: 0 (must be > 0)"},
       {"bad_unreadable_record.yaml", "missing_record.at2: cannot open"},
-      {"bad_nan_record.yaml", "bad_record_nan.at2:6: 'nan' is not a finite value"},
+      {"bad_nan_record.yaml", "bad_record_nan.at2:6: 'nan' is not a finite number"},
       {"bad_empty_record.yaml", "bad_record_empty.txt: the record is empty"},
       {"bad_unknown_integrator.yaml",
        "bad_unknown_integrator.yaml:8:34: analysis.integrator: 'rk4' is not an integrator "
        "(expected newmark or ida)"},
       {"bad_ida_rtol.yaml", "bad_ida_rtol.yaml:11:15: analysis.ida.rtol = 0 (must be in (0, 0.1))"},
+      // Issue #18 item 3: halving was recursive and unbounded (a stack overflow waiting).
+      {"bad_max_step_cuts.yaml",
+       "bad_max_step_cuts.yaml:11:28: analysis.newmark.max_step_cuts = 1e+08 (must be in [0, 20])"},
   };
   for (const BadInput& c : cases) {
     const auto output = TemporaryFile("bad.h5");
@@ -511,4 +514,72 @@ TEST(RunCommand, TheFrontLinksNeitherMpiNorPagmo) {
   const auto fit = RunIsolab("fit --help");
   EXPECT_EQ(fit.exit_code, 0);
   EXPECT_NE(fit.output.find("Identify an isolator model's parameters"), std::string::npos);
+}
+
+namespace {
+
+// Largest kinetic energy over the largest |input energy| so far, over a results file's rows. A
+// passive structure cannot exceed 1 (kinetic = input - elastic - damping - hysteretic, each of
+// the last three >= 0), up to the balance error.
+double KineticToInputRatio(const std::filesystem::path& results) {
+  const hid_t file = H5Fopen(results.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const std::vector<double> kinetic = Doubles(file, "energy/kinetic");
+  const std::vector<double> input = Doubles(file, "energy/input");
+  H5Fclose(file);
+  double ratio = 0.0, max_input = 0.0;
+  for (std::size_t k = 0; k < std::min(kinetic.size(), input.size()); ++k) {
+    max_input = std::max(max_input, std::abs(input[k]));
+    if (max_input > 0.0) ratio = std::max(ratio, kinetic[k] / max_input);
+  }
+  return ratio;
+}
+
+}  // namespace
+
+// Issue #18 item 5: a divergent run used to exit 0 "completed" (peaks of 1e92 mm, NaN energies
+// printed as a balance error of 0). Both integrators now stop it with exit 1 and say why; the
+// results written up to there show the energy the model created, which a valid run never does.
+TEST(RunCommand, BlowUpsExitOneUnderBothIntegratorsAndValidRunsStayPassive) {
+  const auto output = TemporaryFile("blow_up.h5");
+  for (const char* integrator : {"newmark", "ida"}) {
+    const auto run = RunIsolab("run " + Data("blow_up_negative_stiffness.yaml") + " --integrator " +
+                                   integrator + " -o " + output.string(),
+                               true);
+    EXPECT_EQ(run.exit_code, 1) << integrator << ": " << run.output;
+    EXPECT_NE(run.output.find("the run stopped early: blow-up at t = "), std::string::npos)
+        << integrator << ": " << run.output;
+    EXPECT_GT(KineticToInputRatio(output), 10.0) << integrator;
+  }
+  const auto huge =
+      RunIsolab("run " + Data("run_base.yaml") + " --scale 1e300 -o " + output.string(), true);
+  EXPECT_EQ(huge.exit_code, 1) << huge.output;
+  EXPECT_NE(huge.output.find("blow-up at t = "), std::string::npos) << huge.output;
+  EXPECT_NE(huge.output.find("the response is not finite"), std::string::npos) << huge.output;
+  const auto json =
+      RunIsolab("run " + Data("blow_up_negative_stiffness.yaml") + " --json -o " + output.string());
+  EXPECT_EQ(json.exit_code, 1);
+  EXPECT_EQ(nlohmann::json::parse(json.output)["termination"], "failed");
+
+  ASSERT_EQ(RunIsolab("run " + Data("run_base.yaml") + " -o " + output.string()).exit_code, 0);
+  EXPECT_LE(KineticToInputRatio(output), 1.0 + 1e-3);
+}
+
+// Issue #18 item 6: `--scale nan`, `--scale inf` and `--rtol nan` used to be read (a range check
+// lets NaN through): every floating-point option now refuses them, exit 2, naming the option.
+TEST(RunCommand, NonFiniteNumbersOnTheCommandLineExitTwo) {
+  const auto output = TemporaryFile("non_finite.h5");
+  const std::pair<const char*, const char*> cases[] = {
+      {"--scale nan", "--scale: 'nan' is not a finite number"},
+      {"--scale inf", "--scale: 'inf' is not a finite number"},
+      {"--scale 1e999", "--scale: '1e999' is out of range"},
+      {"--rtol nan", "--rtol: 'nan' is not a finite number"},
+      {"--trial-displacement NaN", "--trial-displacement: 'NaN' is not a finite number"},
+  };
+  for (const auto& [option, message] : cases) {
+    const auto run =
+        RunIsolab("run " + Data("run_base.yaml") + " " + option + " -o " + output.string(), true);
+    EXPECT_EQ(run.exit_code, 2) << option << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << option << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output)) << option;
+  }
 }

@@ -57,7 +57,13 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_cyclic_steps.yaml",
               ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
   ExpectError("bad_empty.yaml", ":1:1:", "the file is empty");
-  ExpectError("bad_nan_value.yaml", ":4:69:", "isolation.components[0].uyh: NaN is not a value");
+  ExpectError("bad_nan_value.yaml",
+              ":4:69:", "isolation.components[0].uyh: '.nan' is not a finite number");
+  // Issue #18 item 6: NaN and infinity spelled without YAML's dot used to be read as numbers.
+  ExpectError("bad_plain_nan_value.yaml",
+              ":4:42:", "isolation.components[0].k1: 'nan' is not a finite number");
+  ExpectError("bad_plain_inf_value.yaml",
+              ":4:69:", "isolation.components[0].uyh: 'inf' is not a finite number");
   ExpectError("bad_non_scalar_key.yaml", ":4:52:", "a key must be a plain name");
 }
 
@@ -117,6 +123,19 @@ TEST(ModelFile, FrictionPendulumTakesItsPeriodInsteadOfItsRadius) {
   EXPECT_NEAR(2.0 * std::numbers::pi * std::sqrt(mass / post_slip_stiffness), 4.0, 1e-12);
   ExpectError("bad_pendulum_radius_and_period.yaml", ":5:70:",
               "isolation.components[0].period: give the radius r or the period, not both");
+}
+
+// Issue #18 item 2: a model whose isolation `file` names itself, or A -> B -> A, recursed until
+// the stack overflowed. The file that closes the cycle is refused at its `file` key, naming the
+// chain; the same file spelled another way ("./a.yaml") is still the same file.
+TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {
+  ExpectError("bad_include_self.yaml", ":3:19:", "isolation.file: the files include each other: ");
+  const std::string message = ErrorOf("bad_include_cycle_a.yaml");
+  EXPECT_EQ(message.rfind(DataFile("bad_include_cycle_b.yaml") + ":3:19:", 0), 0u) << message;
+  EXPECT_NE(
+      message.find("bad_include_cycle_a.yaml -> " + DataFile("bad_include_cycle_b.yaml") + " -> "),
+      std::string::npos)
+      << message;
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 // displacement_tolerance, or when the residual is at the round-off of its own evaluation,
 // 2 eps || |K_eff| |u| ||_inf (only reached where the force tolerance is out of floating-point
 // reach: tall, flexible buildings, very fine steps). A step that does not converge is reverted
-// and cut in halves, recursively, up to max_step_cuts levels.
+// and cut in halves (each half cut again if it fails), up to max_step_cuts levels.
 #pragma once
 
 #include "isolab/integrators/excitation.h"
@@ -31,7 +31,10 @@ struct NewmarkOptions {
   double force_tolerance = 1e-10;         // residual norm / force scale of the step; (0, 1)
   double displacement_tolerance = 1e-12;  // correction norm / displacement scale; (0, 1)
   int max_iterations = 30;                // Newton iterations per attempt, >= 1
-  int max_step_cuts = 8;                  // levels of halving a step that does not converge, >= 0
+  // Levels of halving a step that does not converge, in [0, kMaxStepCuts]: a step may take up to
+  // 2^(max_step_cuts + 1) attempts, so the bound keeps a failing run's time finite.
+  int max_step_cuts = 8;
+  static constexpr int kMaxStepCuts = 20;
 
   static NewmarkOptions AverageAcceleration() { return {}; }
   static NewmarkOptions LinearAcceleration() {

@@ -1,0 +1,40 @@
+// The one number reader (issue #18 item 6): finite decimal numbers are read exactly as written,
+// every spelling of NaN and infinity that from_chars, strtod or YAML would accept is refused.
+#include "isolab/core/number.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace isolab {
+namespace {
+
+TEST(ParseFiniteNumber, ReadsFiniteDecimalNumbersExactly) {
+  EXPECT_EQ(ParseFiniteNumber("2"), 2.0);
+  EXPECT_EQ(ParseFiniteNumber("-1.5e-3"), -1.5e-3);
+  EXPECT_EQ(ParseFiniteNumber("+4"), 4.0);
+  EXPECT_EQ(ParseFiniteNumber("0.1"), 0.1);  // the double nearest 0.1, as the compiler reads it
+  EXPECT_EQ(ParseFiniteNumber("1.7976931348623157e308"), 1.7976931348623157e308);
+}
+
+TEST(ParseFiniteNumber, RefusesNonFiniteSpellingsSayingWhy) {
+  for (const char* text : {"nan", "NaN", "-nan", "+nan", "nan(0x1)", "inf", "-inf", "+INF",
+                           "infinity", "-Infinity", ".nan", ".NaN", ".inf", "-.inf", "+.Inf"}) {
+    std::string problem;
+    EXPECT_FALSE(ParseFiniteNumber(text, &problem)) << text;
+    EXPECT_EQ(problem, std::string("'") + text + "' is not a finite number") << text;
+  }
+}
+
+TEST(ParseFiniteNumber, RefusesOverflowAndNonNumbers) {
+  std::string problem;
+  EXPECT_FALSE(ParseFiniteNumber("1e999", &problem));
+  EXPECT_EQ(problem, "'1e999' is out of range");
+  for (const char* text : {"", " 1", "1 ", "1,5", "0x10", "+-1", "++1", "1e", "stiff", "nanny"}) {
+    EXPECT_FALSE(ParseFiniteNumber(text, &problem)) << text;
+    EXPECT_EQ(problem, std::string("'") + text + "' is not a number") << text;
+  }
+}
+
+}  // namespace
+}  // namespace isolab
