@@ -67,10 +67,24 @@ double MaxAbs(const Eigen::MatrixBase<Derived>& x) {
 // residuals after one solve at 1000 stories reach half that floor; twice it leaves a margin.
 constexpr double kRoundoffFloorFactor = 2.0;
 
+// What differs between a one-direction structure and a plan structure (plan_structure.h): how
+// many force columns a step writes, and which dofs the ground acceleration moves.
+std::size_t ForceColumns(const structure::Structure& s) { return s.connections().size(); }
+std::size_t ForceColumns(const structure::PlanStructure& s) { return s.force_columns(); }
+void AddGroundAcceleration(const Excitation& excitation, double t,
+                           Eigen::Ref<Eigen::RowVectorXd> acceleration) {
+  acceleration.array() += excitation.ground_acceleration.At(t);
+}
+void AddGroundAcceleration(const PlanExcitation& excitation, double t,
+                           Eigen::Ref<Eigen::RowVectorXd> acceleration) {
+  excitation.AddGroundAcceleration(t, acceleration);
+}
+
 // One run's working state; every vector is sized once, so a step allocates nothing.
+template <class Structure, class Excitation>
 class NewmarkRun {
  public:
-  NewmarkRun(const structure::Structure& structure, const Excitation& excitation,
+  NewmarkRun(const Structure& structure, const Excitation& excitation,
              const NewmarkOptions& options, RunSummary* summary)
       : structure_(structure),
         excitation_(excitation),
@@ -82,7 +96,7 @@ class NewmarkRun {
         trial_(structure.law_count()),
         rest_(structure.law_count()),
         responses_(structure.law_count()),
-        connection_forces_(structure.connections().size()) {
+        connection_forces_(ForceColumns(structure)) {
     const int n = structure.dofs();
     for (VectorXd* x :
          {&u_, &v_, &a_, &u_trial_, &v_trial_, &a_trial_, &load_, &load_trial_, &force_, &residual_,
@@ -112,8 +126,8 @@ class NewmarkRun {
     out->displacement.row(row) = u_.transpose();
     out->velocity.row(row) = v_.transpose();
     out->acceleration.row(row) = a_.transpose();
-    out->absolute_acceleration.row(row) =
-        (a_.array() + excitation_.ground_acceleration.At(t)).matrix().transpose();
+    out->absolute_acceleration.row(row) = a_.transpose();
+    AddGroundAcceleration(excitation_, t, out->absolute_acceleration.row(row));
     for (std::size_t k = 0; k < connection_forces_.size(); ++k) {
       out->connection_force(row, k) = connection_forces_[k];
     }
@@ -222,7 +236,7 @@ class NewmarkRun {
     energies_.damping = viscous_energy_ + structure_.DashpotEnergy(committed_);
   }
 
-  const structure::Structure& structure_;
+  const Structure& structure_;
   const Excitation& excitation_;
   const NewmarkOptions& options_;
   RunSummary& summary_;
@@ -239,18 +253,16 @@ class NewmarkRun {
   double last_residual_ = 0.0, last_scale_ = 0.0;
 };
 
-}  // namespace
-
-RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
-                      const TimeGrid& grid, const NewmarkOptions& options,
-                      ResponseHistory* response) {
+template <class Structure, class Excitation>
+RunSummary Run(const Structure& structure, const Excitation& excitation, const TimeGrid& grid,
+               const NewmarkOptions& options, ResponseHistory* response) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
-  NewmarkRun run(structure, excitation, options, &summary);
+  NewmarkRun<Structure, Excitation> run(structure, excitation, options, &summary);
   const int every = std::max(grid.output_every, 1);
   response->Resize(grid.steps / every + 1, structure.dofs(),
-                   static_cast<int>(structure.connections().size()),
+                   static_cast<int>(ForceColumns(structure)),
                    static_cast<int>(structure.law_count()));
   run.Record(0.0, 0, response);
   double max_input = 0.0, max_balance = 0.0;
@@ -269,6 +281,20 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
+}
+
+}  // namespace
+
+RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseHistory* response) {
+  return Run(structure, excitation, grid, options, response);
+}
+
+RunSummary RunNewmark(const structure::PlanStructure& structure, const PlanExcitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseHistory* response) {
+  return Run(structure, excitation, grid, options, response);
 }
 
 }  // namespace isolab::integrators
