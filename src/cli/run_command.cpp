@@ -13,9 +13,11 @@
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/model_summary.h"
+#include "isolab/io/plan_model_file.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
+#include "plan_run_command.h"
 #include "plot_script.h"
 
 namespace isolab::cli {
@@ -136,8 +138,7 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
     fmt::print(out,
                "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
                "factorisations, {} step cuts; {:.3f} s\n",
-               summary.newton_iterations, summary.SolvesPerStep(),
-               summary.max_iterations_in_a_step,
+               summary.newton_iterations, summary.SolvesPerStep(), summary.max_iterations_in_a_step,
                summary.factorisations, summary.step_cuts, summary.wall_seconds);
   }
   fmt::print(out, "results: {}\n", output);
@@ -265,6 +266,7 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
 }
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
+  if (io::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
   const io::ModelFile model = io::LoadModelFile(options.model);
   std::string output = options.output;
   if (output.empty()) {

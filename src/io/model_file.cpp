@@ -107,6 +107,11 @@ ModelFile LoadModelFile(const std::string& path) {
   ModelFile model;
   const YAML::Node root = reader.LoadFile(&model.text);
   reader.RequireMap(root, "");
+  if (root["plan"]) {
+    reader.Fail(root["plan"], "plan",
+                "a plan model (plan_model_file.h): `isolab run` analyses it; this command takes "
+                "one-direction models");
+  }
   reader.CheckKeys(root, "",
                    {"description", "units", "isolation", "structure", "excitation", "analysis",
                     "output", "cyclic"});

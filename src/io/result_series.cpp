@@ -6,27 +6,6 @@
 #include <limits>
 
 namespace isolab::io {
-namespace {
-
-using integrators::RowMatrix;
-
-// Rows of a row-major response matrix, copied whole.
-Series Matrix(std::string name, std::string units, std::vector<std::string> columns,
-              const RowMatrix& matrix) {
-  return {
-      std::move(name), std::move(units), std::move(columns),
-      [&matrix](int row, double* out) { std::copy_n(matrix.row(row).data(), matrix.cols(), out); },
-      matrix.data()};
-}
-
-// One value per row.
-template <typename Value>
-Series Vector(std::string name, std::string units, Value value) {
-  return {
-      std::move(name), std::move(units), {}, [value](int row, double* out) { *out = value(row); }};
-}
-
-}  // namespace
 
 std::vector<Series> ResultSeries(const RunDescription& run) {
   const auto& r = *run.response;

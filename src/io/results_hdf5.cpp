@@ -103,12 +103,15 @@ void WriteRunAttributes(Hdf5File& file, const RunDescription& run) {
 
 }  // namespace
 
-void WriteResultsHdf5(const std::string& path, const RunDescription& run) {
-  Hdf5File file(path);
-  const std::vector<Series> series = ResultSeries(run);
+void WriteSeriesHdf5(Hdf5File& file, const std::vector<Series>& series, int rows) {
   CreateGroups(file, series);
   std::vector<double> buffer;
-  for (const Series& s : series) WriteSeries(file, s, run.response->rows_written, &buffer);
+  for (const Series& s : series) WriteSeries(file, s, rows, &buffer);
+}
+
+void WriteResultsHdf5(const std::string& path, const RunDescription& run) {
+  Hdf5File file(path);
+  WriteSeriesHdf5(file, ResultSeries(run), run.response->rows_written);
   const AnalysisSetup& setup = *run.setup;
   if (!setup.layout.stories.empty()) {
     file.WriteDoubles("story/height", {setup.layout.story_heights.size()},
