@@ -63,8 +63,9 @@ void CountSteps(benchmark::State& state, int steps, long solves) {
   state.counters["solves_per_step"] = static_cast<double>(solves) / (state.iterations() * steps);
 }
 
-void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps) {
-  const Excitation excitation = Noise();
+template <class S, class E = Excitation>
+void RunSteps(benchmark::State& state, const S& structure, int steps,
+              const E& excitation = Noise()) {
   ResponseHistory response;
   long solves = 0;
   for (auto _ : state) {
@@ -211,18 +212,6 @@ PlanExcitation PlanNoise() {
   return excitation;
 }
 
-void RunPlanSteps(benchmark::State& state, const structure::PlanStructure& structure, int steps) {
-  const PlanExcitation excitation = PlanNoise();
-  ResponseHistory response;
-  long solves = 0;
-  for (auto _ : state) {
-    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, {}, &response);
-    if (!summary.ok()) state.SkipWithError(summary.message.c_str());
-    solves += summary.newton_iterations;
-  }
-  CountSteps(state, steps, solves);
-}
-
 // The bundled plan model (models/plan/five_story_table9_plan.yaml): 18 dofs, 4 bearings of 9
 // components each; range(0) = 1 makes every bearing an uncoupled pair.
 void BM_PlanFiveStoryTable9(benchmark::State& state) {
@@ -237,7 +226,7 @@ void BM_PlanFiveStoryTable9(benchmark::State& state) {
       site.assembly = hysteresis::PlanAssembly(std::move(pairs));
     }
   }
-  RunPlanSteps(state, structure::BuildPlanBuilding(building), 6000);
+  RunSteps(state, structure::BuildPlanBuilding(building), 6000, PlanNoise());
 }
 
 // `stories` floors of 100 t on a 24 m x 16 m plan, 5 % eccentric, stories of 304 kN/mm, four
@@ -270,7 +259,7 @@ void BM_PlanStoriesLinearIsolators(benchmark::State& state) {
     building.isolators.push_back({"corner", {x, y}, isolator});
   }
   building.damping = {true, {0.4, 0.1}, {0.02, 0.02}};
-  RunPlanSteps(state, structure::BuildPlanBuilding(building), 10000);
+  RunSteps(state, structure::BuildPlanBuilding(building), 10000, PlanNoise());
 }
 
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);

@@ -153,8 +153,7 @@ void WritePlanResults(const std::string& path, const PlanModelFile& model,
   WriteComponentAttributes(file, "record_h1", setup.h1, g);
   if (!setup.h2.path.empty()) WriteComponentAttributes(file, "record_h2", setup.h2, g);
   file.WriteAttribute("/", "incidence_angle", setup.angle);
-  AnalysisSection analysis = model.analysis;
-  file.WriteAttribute("/", "integrator", DescribeIntegrator(analysis, setup.grid.dt));
+  file.WriteAttribute("/", "integrator", DescribeIntegrator(model.analysis, setup.grid.dt));
   file.WriteAttribute("/", "dt", setup.grid.dt);
   file.WriteIntegerAttribute("/", "steps", summary.steps);
   file.WriteIntegerAttribute("/", "newton_iterations", summary.newton_iterations);

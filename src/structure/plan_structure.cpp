@@ -58,10 +58,10 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
     law_offsets_.push_back(law_offsets_.back() + 2 * isolator.assembly.size());
   }
 
-  // The pattern: mass diagonal, every member's terms pairwise, every isolator's floor block and
-  // the viscous damping; fixed for the structure's life.
+  // The pattern: mass diagonal and viscous damping, every member's terms pairwise, every
+  // isolator's floor block; fixed for the structure's life.
   std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < n; ++i) entries.emplace_back(i, i, 0.0);
+  ConstantTerms::AppendEntries(n, viscous_damping_, &entries);
   for (const PlanMember& member : members_) {
     for (const int a : member.dofs) {
       for (const int b : member.dofs) {
@@ -75,16 +75,11 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
       for (int b = 0; b < 3; ++b) entries.emplace_back(first + a, first + b, 0.0);
     }
   }
-  for (int col = 0; col < viscous_damping_.outerSize(); ++col) {
-    for (SparseMatrix::InnerIterator it(viscous_damping_, col); it; ++it) {
-      entries.emplace_back(it.row(), it.col(), 0.0);
-    }
-  }
   pattern_.resize(n, n);
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
 
-  for (int i = 0; i < n; ++i) mass_slots_.push_back(SlotOf(pattern_, i, i));
+  constant_terms_ = ConstantTerms(n, viscous_damping_, pattern_);
   for (const PlanMember& member : members_) {
     for (const int a : member.dofs) {
       for (const int b : member.dofs) {
@@ -96,11 +91,6 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
     const int first = kPlanDofsPerFloor * isolator.floor;
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) isolator_slots_.push_back(SlotOf(pattern_, first + a, first + b));
-    }
-  }
-  for (int col = 0; col < viscous_damping_.outerSize(); ++col) {
-    for (SparseMatrix::InnerIterator it(viscous_damping_, col); it; ++it) {
-      damping_slots_.push_back(SlotOf(pattern_, static_cast<int>(it.row()), col));
     }
   }
 }
@@ -118,16 +108,8 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
                              std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                              std::span<double> connection_forces, const TangentFactors& factors,
                              SparseMatrix* tangent) const {
-  force->noalias() = viscous_damping_ * v;
+  constant_terms_.Start(mass_, viscous_damping_, v, factors, force, tangent);
   double* values = tangent ? tangent->valuePtr() : nullptr;
-  if (values) {
-    std::fill(values, values + tangent->nonZeros(), 0.0);
-    for (int i = 0; i < dofs(); ++i) values[mass_slots_[i]] += factors.mass * mass_[i];
-    const double* c = viscous_damping_.valuePtr();
-    for (std::size_t k = 0; k < damping_slots_.size(); ++k) {
-      values[damping_slots_[k]] += factors.damping * c[k];
-    }
-  }
 
   for (std::size_t k = 0; k < members_.size(); ++k) {
     const PlanMember& member = members_[k];

@@ -102,8 +102,7 @@ class PlanStructure {
   std::vector<std::size_t> law_offsets_;     // members, then isolators, then the end
   std::vector<char> member_law_is_dashpot_;  // per law state of the members
   SparseMatrix pattern_;
-  std::vector<int> mass_slots_;
-  std::vector<int> damping_slots_;
+  ConstantTerms constant_terms_;
   // Member k's slots: kMaxTerms^2 from k * kMaxTerms^2, row-major over its terms (-1 if absent).
   std::vector<int> member_slots_;
   // Isolator i's 3x3 block, row-major, from 9 i.
