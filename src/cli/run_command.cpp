@@ -138,7 +138,8 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
     fmt::print(out,
                "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
                "factorisations, {} step cuts; {:.3f} s\n",
-               summary.newton_iterations, summary.SolvesPerStep(), summary.max_iterations_in_a_step,
+               summary.newton_iterations, summary.SolvesPerStep(),
+               summary.max_iterations_in_a_step,
                summary.factorisations, summary.step_cuts, summary.wall_seconds);
   }
   fmt::print(out, "results: {}\n", output);

@@ -109,8 +109,8 @@ ModelFile LoadModelFile(const std::string& path) {
   reader.RequireMap(root, "");
   if (root["plan"]) {
     reader.Fail(root["plan"], "plan",
-                "a plan model (plan_model_file.h): `isolab run` analyses it; this command takes "
-                "one-direction models");
+                "a plan model: `isolab run` analyses it (docs/bidirectional.md); this command "
+                "takes one-direction models");
   }
   reader.CheckKeys(root, "",
                    {"description", "units", "isolation", "structure", "excitation", "analysis",

@@ -121,8 +121,11 @@ PlanPeaks ComputePlanPeaks(const PlanAnalysisSetup& setup,
   const structure::PlanStructure& s = setup.structure;
   const std::size_t isolators = s.isolators().size();
   PlanPeaks peaks;
-  peaks.isolator_resultant.resize(isolators);
-  peaks.floor_rotation.resize(s.floors());
+  // Indices set before any peak: a response that stays at rest still names its isolators.
+  for (std::size_t i = 0; i < isolators; ++i) {
+    peaks.isolator_resultant.push_back({0.0, 0.0, static_cast<int>(i)});
+  }
+  for (int f = 0; f < s.floors(); ++f) peaks.floor_rotation.push_back({0.0, 0.0, f});
   const auto consider = [](Peak* peak, double value, double t, int index) {
     if (std::abs(value) > peak->value) *peak = {std::abs(value), t, index};
   };
@@ -152,16 +155,6 @@ PlanPeaks ComputePlanPeaks(const PlanAnalysisSetup& setup,
     peaks.torsional_amplification = peaks.largest_resultant.value / peaks.centre_resultant.value;
   }
   return peaks;
-}
-
-std::vector<std::string> PlanDofNames(const PlanModelFile& model) {
-  std::vector<std::string> names;
-  const auto add = [&](const std::string& floor) {
-    for (const char* dof : {"ux", "uy", "theta"}) names.push_back(floor + "." + dof);
-  };
-  add("base");
-  for (const structure::PlanStory& story : model.building.stories) add(story.name);
-  return names;
 }
 
 }  // namespace isolab::io

@@ -64,9 +64,6 @@ struct PlanPeaks {
 PlanPeaks ComputePlanPeaks(const PlanAnalysisSetup& setup,
                            const integrators::ResponseHistory& response);
 
-// Names of the dofs' columns: "base.ux", "base.uy", "base.theta", "<story>.ux", ...
-std::vector<std::string> PlanDofNames(const PlanModelFile& model);
-
 // Throws InputError unless `path` can be a plan run's results file (.h5 or .hdf5; atomic_file.h).
 void CheckPlanResultsPath(const std::string& path);
 

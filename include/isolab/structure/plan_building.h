@@ -53,12 +53,9 @@ struct PlanBuilding {
   PlanDamping damping;
 };
 
-// Throws std::invalid_argument naming the field at fault (no isolators, a mass or inertia <= 0,
-// Rayleigh periods equal or ratios giving a negative coefficient).
+// Story s gives members 3 s, 3 s + 1, 3 s + 2, named "<story>.x", ".y", ".torsion". Throws
+// std::invalid_argument naming the field at fault (no isolators, a mass or inertia <= 0, Rayleigh
+// periods equal or ratios giving a negative coefficient).
 PlanStructure BuildPlanBuilding(const PlanBuilding& building);
-
-// Names of a plan structure's members for story s: "<story>.x", ".y", ".torsion", at member
-// indices 3 s, 3 s + 1, 3 s + 2.
-inline constexpr int kMembersPerStory = 3;
 
 }  // namespace isolab::structure
