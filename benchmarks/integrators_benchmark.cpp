@@ -9,6 +9,10 @@
 //  * the set-up of such a building (masses, connections, Rayleigh damping from two modes);
 //  * the same five-story building on IDA at rtol 1e-4, 1e-6 and 1e-8 (60 s of record, output at
 //    0.01 s), with its internal steps and events per second of record.
+//  * plan models (issue #15): the five-story Table 9 building in plan on four coupled (and
+//    uncoupled) Table 9 bearings under two components, against the one-direction five-story
+//    model above (target within 5x), and a plan building of 5 to 1000 stories on four linear
+//    isolators (target: linear in stories).
 // Counters: "per_step" is seconds per step, "solves_per_step" linear solves (Newton
 // iterations) per step. The excitation is isolab's seeded filtered noise.
 #include <benchmark/benchmark.h>
@@ -24,7 +28,9 @@
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/io/model_file.h"
+#include "isolab/io/plan_model_file.h"
 #include "isolab/io/synthetic_motion.h"
+#include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 #include "newmark_floor.h"
 
@@ -57,8 +63,9 @@ void CountSteps(benchmark::State& state, int steps, long solves) {
   state.counters["solves_per_step"] = static_cast<double>(solves) / (state.iterations() * steps);
 }
 
-void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps) {
-  const Excitation excitation = Noise();
+template <class S, class E = Excitation>
+void RunSteps(benchmark::State& state, const S& structure, int steps,
+              const E& excitation = Noise()) {
   ResponseHistory response;
   long solves = 0;
   for (auto _ : state) {
@@ -193,7 +200,75 @@ void BM_FiveStoryTable9Ida(benchmark::State& state) {
   state.counters["events_per_s"] = static_cast<double>(summary.events) / 60.0;
 }
 
+// H1: Noise() along x; H2: the same generator with another seed along y.
+PlanExcitation PlanNoise() {
+  io::FilteredNoiseSpec spec;
+  spec.duration = 100.0;
+  spec.pga = 0.30;
+  spec.seed = 2;
+  const io::Record record = io::FilteredNoiseRecord(spec);
+  PlanExcitation excitation{Noise().ground_acceleration, {record.dt, {}}};
+  for (const double a : record.values) excitation.y.values.push_back(a * 9806.65);
+  return excitation;
+}
+
+// The bundled plan model (models/plan/five_story_table9_plan.yaml): 18 dofs, 4 bearings of 9
+// components each; range(0) = 1 makes every bearing an uncoupled pair.
+void BM_PlanFiveStoryTable9(benchmark::State& state) {
+  structure::PlanBuilding building =
+      io::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                            "/models/plan/five_story_table9_plan.yaml")
+          .building;
+  if (state.range(0) == 1) {
+    for (structure::PlanIsolatorSite& site : building.isolators) {
+      std::vector<hysteresis::PlanComponent> pairs = site.assembly.components();
+      for (hysteresis::PlanComponent& c : pairs) c.law_y = c.law;
+      site.assembly = hysteresis::PlanAssembly(std::move(pairs));
+    }
+  }
+  RunSteps(state, structure::BuildPlanBuilding(building), 6000, PlanNoise());
+}
+
+// `stories` floors of 100 t on a 24 m x 16 m plan, 5 % eccentric, stories of 304 kN/mm, four
+// corner isolators that never yield (spring and dashpot: 2.5 s, 10 % on the whole mass).
+void BM_PlanStoriesLinearIsolators(benchmark::State& state) {
+  const int stories = static_cast<int>(state.range(0));
+  const double mass = 0.1, w = 2.0 * std::numbers::pi / 2.5;
+  const double inertia = mass * (24000.0 * 24000.0 + 16000.0 * 16000.0) / 12.0;
+  const double share = 0.25 * mass * (stories + 1);
+  using hysteresis::LawParameters, hysteresis::ParameterForm;
+  const auto law = [](LawType type, double value) {
+    return LawParameters::Make(type, ParameterForm::kMathematical, std::vector<double>{value});
+  };
+  const hysteresis::PlanAssembly isolator(
+      {{"spring", law(LawType::kLinearSpring, w * w * share), std::nullopt},
+       {"dashpot", law(LawType::kDashpot, 2.0 * 0.1 * w * share), std::nullopt}});
+  structure::PlanBuilding building;
+  building.base = {mass, inertia, {13200.0, 8000.0}};
+  for (int s = 0; s < stories; ++s) {
+    building.stories.push_back({"story",
+                                {mass, inertia, {13200.0, 8000.0}},
+                                3200.0,
+                                {12000.0, 8000.0},
+                                Single(LawType::kLinearSpring, {304.0}),
+                                Single(LawType::kLinearSpring, {304.0}),
+                                Single(LawType::kLinearSpring, {6.3232e10})});
+  }
+  for (const auto& [x, y] :
+       {std::pair{0.0, 0.0}, {24000.0, 0.0}, {0.0, 16000.0}, {24000.0, 16000.0}}) {
+    building.isolators.push_back({"corner", {x, y}, isolator});
+  }
+  building.damping = {true, {0.4, 0.1}, {0.02, 0.02}};
+  RunSteps(state, structure::BuildPlanBuilding(building), 10000, PlanNoise());
+}
+
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanFiveStoryTable9)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanStoriesLinearIsolators)
+    ->Arg(5)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Floor)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Ida)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);

@@ -13,9 +13,11 @@
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/model_summary.h"
+#include "isolab/io/plan_model_file.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
+#include "plan_run_command.h"
 #include "plot_script.h"
 
 namespace isolab::cli {
@@ -313,6 +315,7 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
 }
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
+  if (io::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
   const io::ModelFile model = io::LoadModelFile(options.model);
   std::string output = options.output;
   if (output.empty()) {

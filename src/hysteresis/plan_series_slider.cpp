@@ -18,10 +18,31 @@ struct SlipEquation {
 
   Vec2 SliderForce(Vec2 x) const { return law.ke * (u - x) - RadialForce(law.spring, x); }
   Vec2 Residual(Vec2 xi) const { return (law.fs / Norm(xi)) * xi - SliderForce(xn + xi); }
-  // B = Dg(x) + (fs / |xi|) (I - n n^T).
-  Mat2 SliderStiffness(Vec2 xi) const {
+  // The slip's linearisation: B = Dg(x) + c t t^T (c = fs / |xi|, t normal to xi) and
+  // (ke I + B)^-1 by Sherman-Morrison on A = ke I + Dg(x): A^-1 - c w w^T / (1 + c t.w),
+  // w = A^-1 t. Inverting ke I + B whole cancels catastrophically when the slip is of round-off
+  // size (c ~ 1e17: a trial a unit in the last place outside the circle, as every Newmark
+  // predictor from a slipping state is); this form has no cancellation and tends to its limit.
+  struct Linearisation {
+    Mat2 dg, inverse;  // Dg(x), (ke I + B)^-1
+    Vec2 t, w;
+    double c = 0.0;
+    // ke B (ke I + B)^-1, with c t t^T (ke I + B)^-1 = c / (1 + c t.w) t w^T: no cancellation
+    // for ke >> Dg either (ke I - ke^2 (ke I + B)^-1 would lose the digits of Dg).
+    Mat2 Tangent(double ke) const {
+      return ke * (dg * inverse + (c / (1.0 + c * Dot(t, w))) * Outer(t, w));
+    }
+  };
+  Linearisation Linearise(Vec2 xi) const {
     const double m = Norm(xi);
-    return RadialStiffness(law.spring, xn + xi) + (law.fs / m) * NormalProjector(xi / m);
+    Linearisation l;
+    l.dg = RadialStiffness(law.spring, xn + xi);
+    const Mat2 a_inverse = Inverse(law.ke * Identity() + l.dg);
+    l.t = Perpendicular(xi / m);
+    l.w = a_inverse * l.t;
+    l.c = law.fs / m;
+    l.inverse = a_inverse - (l.c / (1.0 + l.c * Dot(l.t, l.w))) * Outer(l.w, l.w);
+    return l;
   }
 };
 
@@ -53,9 +74,15 @@ Vec2 SolveSlip(const SlipEquation& eq, Vec2 trial_force) {
   const double length_scale = Norm(eq.u) + Norm(eq.xn);
   const double force_scale = law.fs + law.ke * length_scale + Norm(RadialForce(law.spring, eq.xn));
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    const Vec2 step = -Solve(law.ke * Identity() + eq.SliderStiffness(xi), residual);
+    const Vec2 step = -(eq.Linearise(xi).inverse * residual);
     if (!std::isfinite(Norm(step))) break;
-    if (Norm(step) <= 1e-13 * (length_scale + Norm(xi))) return xi + step;
+    if (Norm(step) <= 1e-13 * (length_scale + Norm(xi))) {
+      // A trial force a unit in the last place outside the circle (a zero increment from a
+      // slipping state, every Newmark predictor) has a slip of round-off size that this last
+      // step may cancel exactly; the slip is not zero (the trial is outside), so keep xi.
+      const Vec2 converged = xi + step;
+      return Norm(converged) > 0.0 ? converged : xi;
+    }
     // Backtracking on |R|: the Newton step is a descent direction of |R|^2 (J is nonsingular).
     double fraction = 1.0;
     bool decreased = false;
@@ -96,21 +123,21 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
   Vec2 x;
   if (fs == 0.0) {  // no slider: ke in series with g, x from the radial series solve
     x = SolveRadialInSeries(law.spring, ke, ke * in.u);
-    slider_stiffness = RadialStiffness(law.spring, x);
+    const Mat2 dg = RadialStiffness(law.spring, x);
+    response->stiffness = ke * (dg * Inverse(Identity(ke) + dg));
     next.force = RadialForce(law.spring, x);
   } else {
     const SlipEquation eq{law, xn, in.u};
     const Vec2 xi = SolveSlip(eq, trial_force);
     const double travel = Norm(xi);
     x = xn + xi;
-    slider_stiffness = eq.SliderStiffness(xi);
+    response->stiffness = eq.Linearise(xi).Tangent(ke);
     next.force = (fs / travel) * xi + RadialForce(law.spring, x);
     next.dissipated += fs * travel;
     next.accumulated_slip += travel;
   }
   next.slider = x;
   response->force = next.force;
-  response->stiffness = ke * (slider_stiffness * Inverse(Identity(ke) + slider_stiffness));
   Store(in, next, trial);
 }
 

@@ -57,10 +57,24 @@ double MaxAbs(const Eigen::MatrixBase<Derived>& x) {
 // residuals after one solve at 1000 stories reach half that floor; twice it leaves a margin.
 constexpr double kRoundoffFloorFactor = 2.0;
 
+// What differs between a one-direction structure and a plan structure (plan_structure.h): how
+// many force columns a step writes, and which dofs the ground acceleration moves.
+std::size_t ForceColumns(const structure::Structure& s) { return s.connections().size(); }
+std::size_t ForceColumns(const structure::PlanStructure& s) { return s.force_columns(); }
+void AddGroundAcceleration(const Excitation& excitation, double t,
+                           Eigen::Ref<Eigen::VectorXd> acceleration) {
+  acceleration.array() += excitation.ground_acceleration.At(t);
+}
+void AddGroundAcceleration(const PlanExcitation& excitation, double t,
+                           Eigen::Ref<Eigen::VectorXd> acceleration) {
+  excitation.AddGroundAcceleration(t, acceleration);
+}
+
 // One run's working state; every vector is sized once, so a step allocates nothing.
+template <class Structure, class Excitation>
 class NewmarkRun {
  public:
-  NewmarkRun(const structure::Structure& structure, const Excitation& excitation,
+  NewmarkRun(const Structure& structure, const Excitation& excitation,
              const NewmarkOptions& options, RunSummary* summary)
       : structure_(structure),
         excitation_(excitation),
@@ -72,7 +86,7 @@ class NewmarkRun {
         trial_(structure.law_count()),
         rest_(structure.law_count()),
         responses_(structure.law_count()),
-        connection_forces_(structure.connections().size()),
+        connection_forces_(ForceColumns(structure)),
         law_forces_(structure.law_count()) {
     pending_levels_.reserve(options.max_step_cuts + 1);
     const int n = structure.dofs();
@@ -114,7 +128,8 @@ class NewmarkRun {
 
   // Hands the committed state at grid step `step` (time t) to the observer.
   void Record(int step, double t, ResponseObserver& observer) {
-    absolute_acceleration_ = a_.array() + excitation_.ground_acceleration.At(t);
+    absolute_acceleration_ = a_;
+    AddGroundAcceleration(excitation_, t, absolute_acceleration_);
     for (std::size_t k = 0; k < responses_.size(); ++k) law_forces_[k] = responses_[k].force;
     const auto view = [](const VectorXd& x) {
       return std::span<const double>(x.data(), static_cast<std::size_t>(x.size()));
@@ -222,7 +237,7 @@ class NewmarkRun {
     energies_.damping = viscous_energy_ + structure_.DashpotEnergy(committed_);
   }
 
-  const structure::Structure& structure_;
+  const Structure& structure_;
   const Excitation& excitation_;
   const NewmarkOptions& options_;
   RunSummary& summary_;
@@ -240,15 +255,13 @@ class NewmarkRun {
   double last_residual_ = 0.0, last_scale_ = 0.0;
 };
 
-}  // namespace
-
-RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
-                      const TimeGrid& grid, const NewmarkOptions& options,
-                      ResponseObserver& observer) {
+template <class Structure, class Excitation>
+RunSummary Run(const Structure& structure, const Excitation& excitation, const TimeGrid& grid,
+               const NewmarkOptions& options, ResponseObserver& observer) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
-  NewmarkRun run(structure, excitation, options, &summary);
+  NewmarkRun<Structure, Excitation> run(structure, excitation, options, &summary);
   run.Record(0, 0.0, observer);
   double max_input = 0.0, max_balance = 0.0;
   for (int step = 1; step <= grid.steps; ++step) {
@@ -273,13 +286,30 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
   return summary;
 }
 
+}  // namespace
+
+RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseObserver& observer) {
+  return Run(structure, excitation, grid, options, observer);
+}
+
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response) {
   HistoryRecorder recorder(response, grid, structure.dofs(),
-                           static_cast<int>(structure.connections().size()),
+                           static_cast<int>(ForceColumns(structure)),
                            static_cast<int>(structure.law_count()));
-  return RunNewmark(structure, excitation, grid, options, recorder);
+  return Run(structure, excitation, grid, options, recorder);
+}
+
+RunSummary RunNewmark(const structure::PlanStructure& structure, const PlanExcitation& excitation,
+                      const TimeGrid& grid, const NewmarkOptions& options,
+                      ResponseHistory* response) {
+  HistoryRecorder recorder(response, grid, structure.dofs(),
+                           static_cast<int>(ForceColumns(structure)),
+                           static_cast<int>(structure.law_count()));
+  return Run(structure, excitation, grid, options, recorder);
 }
 
 }  // namespace isolab::integrators

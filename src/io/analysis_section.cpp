@@ -22,6 +22,30 @@ void ValidateAt(const YamlReader& reader, const YAML::Node& node, const std::str
 
 }  // namespace
 
+GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& motion,
+                                     const std::string& motion_path, const UnitSystem& units) {
+  reader.RequireMap(motion, motion_path);
+  reader.CheckKeys(motion, motion_path, {"file", "units", "scale", "dt"});
+  GroundMotionSection ground;
+  ground.file =
+      reader.ReadString(reader.Require(motion, motion_path, "file"), motion_path + ".file");
+  if (motion["units"]) {
+    ground.units = reader.ReadString(motion["units"], motion_path + ".units");
+    try {
+      units.Convert(1.0, ground.units, dimension::kAcceleration);
+    } catch (const std::invalid_argument& error) {
+      reader.Fail(motion["units"], motion_path + ".units",
+                  fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
+    }
+  }
+  if (motion["scale"]) ground.scale = reader.ReadNumber(motion["scale"], motion_path + ".scale");
+  if (motion["dt"]) {
+    ground.dt = reader.ReadQuantity(motion["dt"], motion_path + ".dt", dimension::kTime, units);
+    if (!(ground.dt > 0.0)) reader.Fail(motion["dt"], motion_path + ".dt", "must be > 0");
+  }
+  return ground;
+}
+
 ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
                                  const UnitSystem& units) {
   const std::string path = "excitation";
@@ -29,28 +53,8 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
   reader.CheckKeys(node, path, {"ground_motion", "forces"});
   ExcitationSection section;
   if (node["ground_motion"]) {
-    const YAML::Node motion = node["ground_motion"];
-    const std::string motion_path = "excitation.ground_motion";
-    reader.RequireMap(motion, motion_path);
-    reader.CheckKeys(motion, motion_path, {"file", "units", "scale", "dt"});
-    GroundMotionSection ground;
-    ground.file =
-        reader.ReadString(reader.Require(motion, motion_path, "file"), motion_path + ".file");
-    if (motion["units"]) {
-      ground.units = reader.ReadString(motion["units"], motion_path + ".units");
-      try {
-        units.Convert(1.0, ground.units, dimension::kAcceleration);
-      } catch (const std::invalid_argument& error) {
-        reader.Fail(motion["units"], motion_path + ".units",
-                    fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
-      }
-    }
-    if (motion["scale"]) ground.scale = reader.ReadNumber(motion["scale"], motion_path + ".scale");
-    if (motion["dt"]) {
-      ground.dt = reader.ReadQuantity(motion["dt"], motion_path + ".dt", dimension::kTime, units);
-      if (!(ground.dt > 0.0)) reader.Fail(motion["dt"], motion_path + ".dt", "must be > 0");
-    }
-    section.ground_motion = ground;
+    section.ground_motion =
+        ReadGroundMotion(reader, node["ground_motion"], "excitation.ground_motion", units);
   }
   if (node["forces"]) {
     const YAML::Node list = node["forces"];

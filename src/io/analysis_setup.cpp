@@ -120,6 +120,31 @@ double FreeVibrationLength(const AnalysisSection& analysis, const RunOverrides& 
 
 }  // namespace
 
+AppliedRecord ApplyRecord(const GroundMotionSection& motion, const std::string& units_given_by,
+                          const std::string& dt_given_by, const UnitSystem& units,
+                          integrators::SampledHistory* acceleration, const Record* data) {
+  // Records keep their step in seconds; the model gives a single column's dt in its own unit.
+  const double dt_seconds = motion.dt * units.SiFactor(dimension::kTime);
+  const Record record =
+      data ? *data : ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
+  double to_model = 0.0;
+  try {
+    to_model = units.Convert(motion.scale, record.units, dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({motion.file}, error.what());
+  }
+  acceleration->dt = units.Convert(record.dt, "s", dimension::kTime);
+  acceleration->values.clear();
+  for (const double a : record.values) acceleration->values.push_back(a * to_model);
+  return {motion.file,
+          record.format,
+          record.units,
+          record.units_source,
+          record.dt,
+          motion.scale,
+          record.Peak() * std::abs(to_model)};
+}
+
 AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overrides) {
   if (!model.structure) {
     throw InputError({model.path}, "no structure section: nothing to analyse in time");
@@ -148,29 +173,10 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
     std::string units_given_by, dt_given_by;
     const GroundMotionSection motion =
         ChooseGroundMotion(model, overrides, &units_given_by, &dt_given_by);
-    // Records keep their step in seconds; the model gives a single column's dt in its own unit.
-    const double dt_seconds = motion.dt * model.units.SiFactor(dimension::kTime);
-    const Record record =
-        overrides.record_data
-            ? *overrides.record_data
-            : ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
-    double to_model = 0.0;
-    try {
-      to_model = model.units.Convert(motion.scale, record.units, dimension::kAcceleration);
-    } catch (const std::invalid_argument& error) {
-      throw InputError({motion.file}, error.what());
-    }
-    setup.excitation.ground_acceleration.dt = model.units.Convert(record.dt, "s", dimension::kTime);
-    for (const double a : record.values)
-      setup.excitation.ground_acceleration.values.push_back(a * to_model);
+    setup.record = ApplyRecord(motion, units_given_by, dt_given_by, model.units,
+                               &setup.excitation.ground_acceleration,
+                               overrides.record_data ? &*overrides.record_data : nullptr);
     record_dt = setup.excitation.ground_acceleration.dt;
-    setup.record = {motion.file,
-                    record.format,
-                    record.units,
-                    record.units_source,
-                    record.dt,
-                    motion.scale,
-                    record.Peak() * std::abs(to_model)};
   }
   for (const ForceSection& force : excitation.forces) {
     const int dof = force.dof + dof_shift;

@@ -169,6 +169,11 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   model.text = text;
   const YAML::Node root = reader.LoadText(text);
   reader.RequireMap(root, "");
+  if (root["plan"]) {
+    reader.Fail(root["plan"], "plan",
+                "a plan model: `isolab run` analyses it (docs/bidirectional.md); this command "
+                "takes one-direction models");
+  }
   reader.CheckKeys(root, "",
                    {"description", "units", "isolation", "structure", "excitation", "analysis",
                     "output", "cyclic"});

@@ -9,6 +9,11 @@
 
 namespace isolab::io {
 
+// The number or quantity at `map[key]`, required, finite and > 0; a damping ratio in [0, 1).
+double ReadPositive(const YamlReader& reader, const YAML::Node& map, const std::string& path,
+                    std::string_view key, Dimension dimension, const UnitSystem& units);
+double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::string& path);
+
 // The required `units` section of a model (or fit specification) file.
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
 
@@ -25,6 +30,9 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
 
 StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
                                const UnitSystem& units);
+// `{file, units, scale, dt}` at key path `path`.
+GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& node,
+                                     const std::string& path, const UnitSystem& units);
 ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
                                  const UnitSystem& units);
 // `auto` or a time >= 0 (analysis.free_vibration, a study's free_vibration).

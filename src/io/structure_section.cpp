@@ -4,7 +4,6 @@
 #include "model_sections.h"
 
 namespace isolab::io {
-namespace {
 
 double ReadPositive(const YamlReader& reader, const YAML::Node& map, const std::string& path,
                     std::string_view key, Dimension dimension, const UnitSystem& units) {
@@ -24,6 +23,8 @@ double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::st
   }
   return ratio;
 }
+
+namespace {
 
 structure::Story ReadStory(const YamlReader& reader, const YAML::Node& node,
                            const std::string& path, const UnitSystem& units, std::size_t index) {

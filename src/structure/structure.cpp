@@ -10,6 +10,41 @@ int SlotOf(const SparseMatrix& matrix, int row, int col) {
   throw std::logic_error("sparse pattern lacks an entry it was built with");
 }
 
+void ConstantTerms::AppendEntries(int dofs, const SparseMatrix& damping,
+                                  std::vector<Eigen::Triplet<double>>* entries) {
+  for (int i = 0; i < dofs; ++i) entries->emplace_back(i, i, 0.0);
+  for (int col = 0; col < damping.outerSize(); ++col) {
+    for (SparseMatrix::InnerIterator it(damping, col); it; ++it) {
+      entries->emplace_back(it.row(), it.col(), 0.0);
+    }
+  }
+}
+
+ConstantTerms::ConstantTerms(int dofs, const SparseMatrix& damping, const SparseMatrix& pattern) {
+  for (int i = 0; i < dofs; ++i) mass_slots_.push_back(SlotOf(pattern, i, i));
+  for (int col = 0; col < damping.outerSize(); ++col) {
+    for (SparseMatrix::InnerIterator it(damping, col); it; ++it) {
+      damping_slots_.push_back(SlotOf(pattern, static_cast<int>(it.row()), col));
+    }
+  }
+}
+
+void ConstantTerms::Start(const Eigen::VectorXd& mass, const SparseMatrix& damping,
+                          const Eigen::VectorXd& v, const TangentFactors& factors,
+                          Eigen::VectorXd* force, SparseMatrix* tangent) const {
+  force->noalias() = damping * v;
+  if (tangent == nullptr) return;
+  double* values = tangent->valuePtr();
+  std::fill(values, values + tangent->nonZeros(), 0.0);
+  for (std::size_t i = 0; i < mass_slots_.size(); ++i) {
+    values[mass_slots_[i]] += factors.mass * mass[i];
+  }
+  const double* c = damping.valuePtr();
+  for (std::size_t k = 0; k < damping_slots_.size(); ++k) {
+    values[damping_slots_[k]] += factors.damping * c[k];
+  }
+}
+
 Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
                      SparseMatrix viscous_damping)
     : mass_(std::move(mass)),
@@ -35,22 +70,17 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
   }
 
   std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < n; ++i) entries.emplace_back(i, i, 0.0);
+  ConstantTerms::AppendEntries(n, viscous_damping_, &entries);
   for (const Connection& connection : connections_) {
     if (connection.dof_i == kGround) continue;
     entries.emplace_back(connection.dof_i, connection.dof_j, 0.0);
     entries.emplace_back(connection.dof_j, connection.dof_i, 0.0);
   }
-  for (int col = 0; col < viscous_damping_.outerSize(); ++col) {
-    for (SparseMatrix::InnerIterator it(viscous_damping_, col); it; ++it) {
-      entries.emplace_back(it.row(), it.col(), 0.0);
-    }
-  }
   pattern_.resize(n, n);
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
 
-  for (int i = 0; i < n; ++i) mass_slots_.push_back(SlotOf(pattern_, i, i));
+  constant_terms_ = ConstantTerms(n, viscous_damping_, pattern_);
   for (const Connection& connection : connections_) {
     ConnectionSlots slots;
     slots.jj = SlotOf(pattern_, connection.dof_j, connection.dof_j);
@@ -61,11 +91,6 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
     }
     connection_slots_.push_back(slots);
   }
-  for (int col = 0; col < viscous_damping_.outerSize(); ++col) {
-    for (SparseMatrix::InnerIterator it(viscous_damping_, col); it; ++it) {
-      damping_slots_.push_back(SlotOf(pattern_, static_cast<int>(it.row()), col));
-    }
-  }
 }
 
 void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double t,
@@ -74,16 +99,8 @@ void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double
                          std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                          std::span<double> connection_forces, const TangentFactors& factors,
                          SparseMatrix* tangent) const {
-  force->noalias() = viscous_damping_ * v;
+  constant_terms_.Start(mass_, viscous_damping_, v, factors, force, tangent);
   double* values = tangent ? tangent->valuePtr() : nullptr;
-  if (values) {
-    std::fill(values, values + tangent->nonZeros(), 0.0);
-    for (int i = 0; i < dofs(); ++i) values[mass_slots_[i]] += factors.mass * mass_[i];
-    const double* c = viscous_damping_.valuePtr();
-    for (std::size_t k = 0; k < damping_slots_.size(); ++k) {
-      values[damping_slots_[k]] += factors.damping * c[k];
-    }
-  }
   for (std::size_t k = 0; k < connections_.size(); ++k) {
     const Connection& connection = connections_[k];
     const bool grounded = connection.dof_i == kGround;

@@ -346,11 +346,24 @@ TEST_P(PlanLawUpdate, TrialIsAPureFunctionOfCommittedStateAndInput) {
   PlanLawState committed;
   for (const PlanSample& s : CurvedPath(c.scale, 300)) {
     PlanLawState garbage, other;
-    garbage.x = garbage.y = {.u = NAN, .v = NAN, .force = NAN, .slider = NAN,
-                             .accumulated_slip = NAN, .t = NAN, .temperature = NAN, .slip = -1,
+    garbage.x = garbage.y = {.u = NAN,
+                             .v = NAN,
+                             .force = NAN,
+                             .slider = NAN,
+                             .accumulated_slip = NAN,
+                             .t = NAN,
+                             .temperature = NAN,
+                             .slip = -1,
                              .dissipated = NAN};
-    other.x = other.y = {.u = 1, .v = 2, .force = 3, .slider = 4, .accumulated_slip = 5, .t = 6,
-                         .temperature = 7, .slip = 1, .dissipated = 8};
+    other.x = other.y = {.u = 1,
+                         .v = 2,
+                         .force = 3,
+                         .slider = 4,
+                         .accumulated_slip = 5,
+                         .t = 6,
+                         .temperature = 7,
+                         .slip = 1,
+                         .dissipated = 8};
     PlanLawResponse r1, r2;
     UpdatePlanLaw(kernel, committed, {s.u, s.v, s.t}, &garbage, &r1);
     UpdatePlanLaw(kernel, committed, {s.u, s.v, s.t}, &other, &r2);
@@ -438,6 +451,56 @@ TEST(PlanSeriesSliderReturnMap, ConvergesFromAnyStateToAnyTrial) {
     }
     EXPECT_GT(tried, 900) << c.name;
   }
+}
+
+// A Newmark step's predictor repeats the committed displacement: from a slipping state the trial
+// force is then the committed force recomputed, which round-off puts on, inside or a unit in the
+// last place outside the circle. Inside, the slider sticks (tangent ke I); outside, the slip is
+// of round-off size and the tangent must be the limit of the consistent one, ke t t^T for an
+// elastic-perfectly-plastic slider (t normal to the force: no stiffness along the slip, ke
+// across it), not NaN. The first state is the Table 9 bearing's c9 component as a plan model's
+// Newmark run met it (trial norm fs + 1 ulp); the others come from loading in five directions.
+TEST(PlanSeriesSliderReturnMap, ZeroIncrementFromASlippingStateKeepsItsForce) {
+  const double values[] = {67.445070, 0.0, 0.0, 0.041, NAN};  // Table 9, c9: k0, k1, k2, uy, uyh
+  const LawParameters law =
+      LawParameters::Make(LawType::kThm1, ParameterForm::kMathematical, values);
+  const PlanLawKernel kernel = CoupledKernel(law);
+  const double ke = 67.445070;
+  std::vector<PlanLawState> states(1);
+  states[0].x = {
+      .u = 0.063757881268043437, .force = 1.4625261445496993, .slider = 0.042073180747313026};
+  states[0].y = {
+      .u = -0.10736519010074427, .force = -2.3468304282687598, .slider = -0.072569015550569438};
+  for (const double angle : {0.3, 1.0, 2.2, 4.0, 5.5}) {
+    const Vec2 direction{std::cos(angle), std::sin(angle)};
+    PlanLawState committed, trial;
+    PlanLawResponse response;
+    // Into slip along `direction`, then a curved increment, so the slider is off the line.
+    for (const Vec2 u : {0.2 * direction, 0.2 * direction + 0.03 * Perpendicular(direction)}) {
+      UpdatePlanLaw(kernel, committed, {u, {}, 0.0}, &trial, &response);
+      committed = trial;
+    }
+    states.push_back(committed);
+  }
+  int slipping = 0;
+  for (const PlanLawState& committed : states) {
+    PlanLawState trial;
+    PlanLawResponse response;
+    UpdatePlanLaw(kernel, committed, {Displacement(committed), {}, 0.0}, &trial, &response);
+    const Vec2 f = Force(committed);
+    ASSERT_NEAR(Norm(f), ke * 0.041, 1e-12);  // on the circle
+    EXPECT_NEAR(response.force.x, f.x, 1e-12);
+    EXPECT_NEAR(response.force.y, f.y, 1e-12);
+    const Vec2 t = Perpendicular(f / Norm(f));
+    const bool sticks = response.stiffness.xx == ke && response.stiffness.xy == 0.0;
+    const Mat2 expected = sticks ? Identity(ke) : ke * Outer(t, t);
+    slipping += !sticks;
+    EXPECT_NEAR(response.stiffness.xx, expected.xx, 1e-9 * ke);
+    EXPECT_NEAR(response.stiffness.xy, expected.xy, 1e-9 * ke);
+    EXPECT_NEAR(response.stiffness.yx, expected.yx, 1e-9 * ke);
+    EXPECT_NEAR(response.stiffness.yy, expected.yy, 1e-9 * ke);
+  }
+  EXPECT_GE(slipping, 1);  // the c9 state at least
 }
 
 }  // namespace

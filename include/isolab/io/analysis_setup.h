@@ -71,6 +71,14 @@ double StoryDrift(const AnalysisSetup& setup, std::span<const double> displaceme
 // Automatic free vibration: kAutomaticFreeVibrationPeriods x the model's longest period.
 inline constexpr double kAutomaticFreeVibrationPeriods = 5.0;
 
+// Reads the record `motion` names (its file resolved already), or takes `data` when given (a
+// record already in memory), into `acceleration` in the model's `units`, scaled; returns it as
+// applied. Throws InputError as ReadRecord does, and for units that are not an acceleration.
+AppliedRecord ApplyRecord(const GroundMotionSection& motion, const std::string& units_given_by,
+                          const std::string& dt_given_by, const UnitSystem& units,
+                          integrators::SampledHistory* acceleration,
+                          const Record* data = nullptr);
+
 // Throws InputError (naming the file, or "command line") for records that cannot be read or whose
 // units or step disagree with what is given, a dt coarser than the record's, or a structure
 // without what the analysis needs.

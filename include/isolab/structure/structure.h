@@ -39,6 +39,29 @@ struct TangentFactors {
   double damping = 0.0;
 };
 
+// The part of the effective tangent and of the resisting force that does not depend on the state,
+// written through slots precomputed in a fixed tangent pattern: factors.mass M on the diagonal,
+// factors.damping C, and C v. Structure and PlanStructure (plan_structure.h) share it.
+class ConstantTerms {
+ public:
+  // The pattern entries the terms need: the diagonal and every stored entry of `damping`.
+  static void AppendEntries(int dofs, const SparseMatrix& damping,
+                            std::vector<Eigen::Triplet<double>>* entries);
+
+  ConstantTerms() = default;
+  // `damping` compressed; `pattern` holds AppendEntries' entries.
+  ConstantTerms(int dofs, const SparseMatrix& damping, const SparseMatrix& pattern);
+
+  // force = C v; when `tangent` is not null, its values zeroed, then the mass and damping terms
+  // added. Allocates nothing.
+  void Start(const Eigen::VectorXd& mass, const SparseMatrix& damping, const Eigen::VectorXd& v,
+             const TangentFactors& factors, Eigen::VectorXd* force, SparseMatrix* tangent) const;
+
+ private:
+  std::vector<int> mass_slots_;
+  std::vector<int> damping_slots_;  // one per stored entry of the damping matrix
+};
+
 class Structure {
  public:
   // `viscous_damping` is dofs x dofs (may be empty of entries).
@@ -88,9 +111,8 @@ class Structure {
   std::vector<std::size_t> law_offsets_;
   std::vector<char> law_is_dashpot_;
   SparseMatrix pattern_;
-  std::vector<int> mass_slots_;
+  ConstantTerms constant_terms_;
   std::vector<ConnectionSlots> connection_slots_;
-  std::vector<int> damping_slots_;  // one per stored entry of viscous_damping_
 };
 
 }  // namespace isolab::structure

@@ -1,0 +1,169 @@
+#include "plan_run_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "free_vibration_option.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/model_summary.h"
+#include "isolab/io/plan_analysis.h"
+
+namespace isolab::cli {
+namespace {
+
+void RefuseOneDirectionOptions(const RunOptions& options) {
+  const auto refuse = [](bool given, const char* option) {
+    if (given) {
+      throw InputError({option},
+                       "does not apply to a plan model (its records are the model's h1 and h2)");
+    }
+  };
+  refuse(!options.record.empty(), "--record");
+  refuse(!options.units.empty(), "--units");
+  refuse(options.record_dt.has_value(), "--record-dt");
+  refuse(options.fixed_base, "--fixed-base");
+  refuse(options.rtol.has_value(), "--rtol");
+  refuse(options.atol.has_value(), "--atol");
+  refuse(options.plot.has_value(), "--plot");
+  if (options.integrator == "ida") {
+    throw InputError({"--integrator"}, "IDA does not run plan models yet; use newmark");
+  }
+}
+
+void PrintPreamble(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
+                   std::ostream& out) {
+  const io::UnitSystem& u = model.units;
+  const double g = u.Convert(1.0, "g", io::dimension::kAcceleration);
+  fmt::print(out, "== {} (plan model) ==\n", model.path);
+  if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
+  for (const auto& [key, r] : {std::pair{"H1", &setup.h1}, std::pair{"H2", &setup.h2}}) {
+    if (r->path.empty()) continue;
+    fmt::print(out, "record {}: {} ({}, dt = {:g} s, in {}), scale {:g}: PGA {:.4g} g\n", key,
+               r->path, r->format, r->dt, r->units, r->scale, r->pga / g);
+  }
+  fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", setup.angle, setup.angle + 90.0);
+  fmt::print(out,
+             "model: {} floors, {} isolators, total mass {:.5g} ({:.5g} t); isolated period "
+             "{:.4g} {} at {:g} {} along x\n",
+             setup.structure.floors(), setup.structure.isolators().size(), setup.total_mass,
+             setup.total_mass * u.SiFactor(io::dimension::kMass) / 1000.0, setup.isolated_period,
+             u.time(), setup.trial_displacement, u.length());
+  fmt::print(out,
+             "dt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
+             "vibration), {} dofs\n\n",
+             setup.grid.dt, u.time(), setup.grid.steps, setup.excitation_end, u.time(),
+             setup.free_vibration, u.time(), setup.structure.dofs());
+}
+
+void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
+                  const io::PlanPeaks& peaks, const integrators::RunSummary& summary,
+                  const integrators::ResponseHistory& response, const std::string& output,
+                  std::ostream& out) {
+  const io::UnitSystem& u = model.units;
+  const auto& isolators = setup.structure.isolators();
+  fmt::print(out, "peak resultant isolator displacement [{}]:\n", u.length());
+  for (std::size_t i = 0; i < isolators.size(); ++i) {
+    const io::Peak& p = peaks.isolator_resultant[i];
+    fmt::print(out, "  {:<24} {:>12.5g} at t = {:.4g} {}\n", isolators[i].name, p.value, p.time,
+               u.time());
+  }
+  fmt::print(out, "  {:<24} {:>12.5g} at t = {:.4g} {}\n", "(base centre of mass)",
+             peaks.centre_resultant.value, peaks.centre_resultant.time, u.time());
+  fmt::print(out, "torsional amplification {:.4g} ({} over the base's centre of mass)\n",
+             peaks.torsional_amplification, isolators[peaks.largest_resultant.index].name);
+  double rotation = 0.0;
+  int floor = 0;
+  for (const io::Peak& p : peaks.floor_rotation) {
+    if (p.value > rotation) rotation = p.value, floor = p.index;
+  }
+  fmt::print(out, "peak floor rotation {:.4g} rad ({})\n", rotation,
+             floor == 0 ? std::string("base") : model.building.stories[floor - 1].name);
+  fmt::print(out, "peak base shear (resultant) {:.5g} {} at t = {:.4g} {}\n",
+             peaks.base_shear.value, u.force(), peaks.base_shear.time, u.time());
+  if (response.rows_written > 0) {
+    const integrators::Energies& e = response.energies[response.rows_written - 1];
+    fmt::print(out,
+               "\nenergy at the end [{}*{}]: input {:.5g} = kinetic {:.3g} + damping {:.5g} + "
+               "elastic {:.3g} + hysteretic {:.5g}\n",
+               u.force(), u.length(), e.input, e.kinetic, e.damping, e.elastic, e.hysteretic);
+  }
+  fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
+             summary.energy_balance_error);
+  fmt::print(out,
+             "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
+             "factorisations, {} step cuts; {:.3f} s\n",
+             summary.newton_iterations, summary.SolvesPerStep(), summary.max_iterations_in_a_step,
+             summary.factorisations, summary.step_cuts, summary.wall_seconds);
+  fmt::print(out, "results: {}\n", output);
+}
+
+nlohmann::json SummaryJson(const io::PlanAnalysisSetup& setup, const io::PlanPeaks& peaks,
+                           const integrators::RunSummary& summary, const std::string& output) {
+  nlohmann::json json;
+  nlohmann::json isolators = nlohmann::json::object();
+  for (std::size_t i = 0; i < setup.structure.isolators().size(); ++i) {
+    isolators[setup.structure.isolators()[i].name] = {
+        {"peak_resultant", peaks.isolator_resultant[i].value},
+        {"time", peaks.isolator_resultant[i].time}};
+  }
+  json["isolators"] = isolators;
+  json["peak_centre_resultant"] = peaks.centre_resultant.value;
+  json["torsional_amplification"] = peaks.torsional_amplification;
+  std::vector<double> rotations;
+  for (const io::Peak& p : peaks.floor_rotation) rotations.push_back(p.value);
+  json["peak_floor_rotation"] = rotations;
+  json["peak_base_shear"] = peaks.base_shear.value;
+  json["termination"] = summary.ok() ? "completed" : "failed";
+  json["message"] = summary.message;
+  json["energy_balance_error"] = summary.energy_balance_error;
+  json["steps_completed"] = summary.steps;
+  json["results"] = output;
+  return json;
+}
+
+}  // namespace
+
+int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
+  RefuseOneDirectionOptions(options);
+  const io::PlanModelFile model = io::LoadPlanModelFile(options.model);
+  std::string output = options.output;
+  if (output.empty()) {
+    output = !model.output_file.empty()
+                 ? model.output_file
+                 : std::filesystem::path(options.model).stem().string() + ".h5";
+  }
+  io::CheckPlanResultsPath(output);
+  io::PlanOverrides overrides;
+  overrides.scale = options.scale;
+  overrides.dt = options.dt;
+  overrides.trial_displacement = options.trial_displacement;
+  if (!options.free_vibration.empty()) {
+    overrides.free_vibration = ParseFreeVibration(options.free_vibration, model.units);
+  }
+  const io::PlanAnalysisSetup setup = io::PreparePlanAnalysis(model, overrides);
+  if (!options.json) PrintPreamble(model, setup, out);
+  out.flush();
+  integrators::ResponseHistory response;
+  const integrators::RunSummary summary = io::RunPlanAnalysis(model, setup, &response);
+  const io::PlanPeaks peaks = io::ComputePlanPeaks(setup, response);
+  io::WritePlanResults(output, model, setup, response, summary, peaks, ISOLAB_VERSION);
+  if (options.json) {
+    out << SummaryJson(setup, peaks, summary, output).dump(2) << "\n";
+  } else {
+    PrintSummary(model, setup, peaks, summary, response, output, out);
+  }
+  const std::string bearing =
+      io::IsolatorDisplacementWarning(peaks.largest_resultant.value, model.units);
+  if (!bearing.empty()) fmt::print(stderr, "isolab: warning: {}\n", bearing);
+  if (!summary.ok()) {
+    fmt::print(stderr, "isolab: the run stopped early: {}; results up to t = {:g} are in {}\n",
+               summary.message, summary.steps * setup.grid.dt, output);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace isolab::cli

@@ -1,0 +1,145 @@
+// `isolab run` on a plan model, end to end: the bundled Table 9 building in plan, reduced to a
+// symmetric building on uncoupled bearings under H1 alone, gives the one-direction model's own
+// `isolab run` peaks (the reader, the set-up and the results path included); the full example
+// writes its HDF5 layout (docs/results.md) whose datasets agree with each other and with the
+// printed summary; one-direction options are refused.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/run_isolab.h"
+
+namespace isolab::testing {
+namespace {
+
+const std::string kRoot = ISOLAB_SOURCE_DIR;
+const std::string kPlan = kRoot + "/models/plan/five_story_table9_plan.yaml";
+
+std::string Read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void Replace(std::string* text, const std::string& what, const std::string& with) {
+  const std::size_t at = text->find(what);
+  ASSERT_NE(at, std::string::npos) << what;
+  text->replace(at, what.size(), with);
+}
+
+std::vector<double> Doubles(const std::string& path, const char* name) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  std::vector<double> values;
+  if (file >= 0 && H5Lexists(file, name, H5P_DEFAULT) > 0) {
+    const hid_t dataset = H5Dopen2(file, name, H5P_DEFAULT);
+    const hid_t space = H5Dget_space(dataset);
+    values.resize(H5Sget_simple_extent_npoints(space));
+    H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Sclose(space);
+    H5Dclose(dataset);
+  }
+  if (file >= 0) H5Fclose(file);
+  return values;
+}
+
+TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeaks) {
+  std::string text = Read(kPlan);
+  Replace(&text, "      components: &table9",
+          "      coupling: uncoupled\n      components: &table9");
+  for (int i = 0; i < 3; ++i) {
+    Replace(&text, "components: *table9}", "coupling: uncoupled, components: *table9 }");
+  }
+  Replace(&text, "base: {mass: 100 t, centre_of_mass: [13200, 8000]}",
+          "base: {mass: 100 t, centre_of_mass: [12000, 8000]}");
+  Replace(&text, "    centre_of_mass: [13200, 8000]\n", "    centre_of_mass: [12000, 8000]\n");
+  Replace(&text, "    h2: {file: ../../ground_motions/h2_fwn_firm_seed3.at2, scale: 0.6}\n", "");
+  Replace(&text, "../../ground_motions/", kRoot + "/ground_motions/");
+  // The one-direction model's Rayleigh damping is on its first two fixed-base modes: the plan
+  // model's on those periods, to the last digit.
+  const std::string folder = ::testing::TempDir();
+  const Outcome one = RunIsolab(
+      "run " + kRoot + "/models/buildings/five_story_table9.yaml --json -o " + folder + "one.h5");
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  const auto o = nlohmann::json::parse(one.output);
+  const auto& periods = o["model_summary"]["fixed_base_periods"];
+  Replace(&text, "periods: [0.4004, 0.1372]",
+          "periods: [" + periods[0].dump() + ", " + periods[1].dump() + "]");
+  const std::string model = folder + "symmetric_plan.yaml";
+  std::ofstream(model) << text;
+  const Outcome plan = RunIsolab("run " + model + " --json -o " + folder + "plan.h5");
+  ASSERT_EQ(plan.exit_code, 0) << plan.output;
+  const auto p = nlohmann::json::parse(plan.output);
+  const double expected = o["peaks"]["isolator_displacement"]["value"];
+  ASSERT_GT(expected, 100.0);
+  for (const auto& [name, isolator] : p["isolators"].items()) {
+    EXPECT_NEAR(isolator["peak_resultant"].get<double>(), expected, 1e-9 * expected) << name;
+  }
+  EXPECT_NEAR(p["peak_centre_resultant"].get<double>(), expected, 1e-9 * expected);
+  EXPECT_NEAR(p["torsional_amplification"].get<double>(), 1.0, 1e-12);
+  // Four bearings, each the one-direction model's tributary bearing: four times its base shear.
+  EXPECT_NEAR(p["peak_base_shear"].get<double>(),
+              4.0 * o["peaks"]["base_shear"]["value"].get<double>(), 1e-8 * 4.0 * expected);
+  EXPECT_NEAR(p["energy_balance_error"].get<double>(), o["energy_balance_error"].get<double>(),
+              1e-9);
+}
+
+TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
+  const std::string output = ::testing::TempDir() + "five_story_table9_plan.h5";
+  const Outcome run = RunIsolab("run " + kPlan + " --json -o " + output);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto summary = nlohmann::json::parse(run.output);
+  EXPECT_LT(summary["energy_balance_error"].get<double>(), 1e-3);
+  const std::vector<double> time = Doubles(output, "time");
+  const std::vector<double> resultant = Doubles(output, "isolator/resultant");
+  const std::vector<double> displacement = Doubles(output, "isolator/displacement");
+  const std::vector<double> peaks = Doubles(output, "isolator/peak_resultant");
+  ASSERT_EQ(peaks.size(), 4u);
+  ASSERT_EQ(resultant.size(), 4 * time.size());
+  ASSERT_EQ(displacement.size(), 8 * time.size());
+  for (std::size_t i = 0; i < 4; ++i) {
+    double peak = 0.0;
+    for (std::size_t row = 0; row < time.size(); ++row) {
+      const double r = resultant[4 * row + i];
+      EXPECT_NEAR(r, std::hypot(displacement[8 * row + 2 * i], displacement[8 * row + 2 * i + 1]),
+                  1e-12 * (1.0 + r));
+      peak = std::max(peak, r);
+    }
+    EXPECT_DOUBLE_EQ(peaks[i], peak);
+  }
+  // The eccentric building twists: the corner farthest from the centre of stiffness on the side
+  // of the centre of mass moves most (ne or se), more than the base's centre of mass.
+  const double amplification = summary["torsional_amplification"];
+  EXPECT_GT(amplification, 1.01);
+  EXPECT_DOUBLE_EQ(*std::max_element(peaks.begin(), peaks.end()),
+                   amplification * summary["peak_centre_resultant"].get<double>());
+  EXPECT_EQ(Doubles(output, "floor/rotation").size(), 6 * time.size());
+  EXPECT_EQ(Doubles(output, "floor/displacement").size(), 12 * time.size());
+  EXPECT_EQ(Doubles(output, "energy/hysteretic").size(), time.size());
+}
+
+TEST(PlanRunCommand, RefusesOneDirectionOptionsAndCsv) {
+  const std::string out = " -o " + ::testing::TempDir() + "x.h5";
+  const Outcome record = RunIsolab(
+      "run " + kPlan + " --record " + kRoot + "/ground_motions/pulse_tp2.at2" + out, true);
+  EXPECT_EQ(record.exit_code, 2);
+  EXPECT_NE(record.output.find("--record: does not apply to a plan model"), std::string::npos)
+      << record.output;
+  const Outcome ida = RunIsolab("run " + kPlan + " --integrator ida" + out, true);
+  EXPECT_EQ(ida.exit_code, 2);
+  EXPECT_NE(ida.output.find("IDA does not run plan models yet"), std::string::npos) << ida.output;
+  const Outcome csv = RunIsolab("run " + kPlan + " -o " + ::testing::TempDir() + "x.csv", true);
+  EXPECT_EQ(csv.exit_code, 2);
+  EXPECT_NE(csv.output.find("HDF5 only"), std::string::npos) << csv.output;
+}
+
+}  // namespace
+}  // namespace isolab::testing
