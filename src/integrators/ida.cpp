@@ -300,7 +300,7 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
     max_balance = std::max(max_balance, std::abs(e.Balance()));
     if (std::string why = DescribeBlowUp(e, max_input); !why.empty()) {
       summary.termination = RunSummary::Termination::kFailed;
-      summary.message = fmt::format("blow-up at t = {:.6g}: {}", response->time[row], why);
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", row * every * grid.dt, why);
       break;
     }
   }
