@@ -12,6 +12,7 @@
 #include "isolab/io/plan_analysis.h"
 #include "isolab/io/run_analysis.h"
 #include "isolab/io/result_series.h"
+#include "isolab/io/results_file.h"
 
 namespace isolab::io {
 namespace {
