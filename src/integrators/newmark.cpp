@@ -286,6 +286,17 @@ RunSummary Run(const Structure& structure, const Excitation& excitation, const T
   return summary;
 }
 
+// A run kept whole in memory (every output_every-th step), for library callers.
+template <class Structure, class Excitation>
+RunSummary RunRecorded(const Structure& structure, const Excitation& excitation,
+                       const TimeGrid& grid, const NewmarkOptions& options,
+                       ResponseHistory* response) {
+  HistoryRecorder recorder(response, grid, structure.dofs(),
+                           static_cast<int>(ForceColumns(structure)),
+                           static_cast<int>(structure.law_count()));
+  return Run(structure, excitation, grid, options, recorder);
+}
+
 }  // namespace
 
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
@@ -297,19 +308,13 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response) {
-  HistoryRecorder recorder(response, grid, structure.dofs(),
-                           static_cast<int>(ForceColumns(structure)),
-                           static_cast<int>(structure.law_count()));
-  return Run(structure, excitation, grid, options, recorder);
+  return RunRecorded(structure, excitation, grid, options, response);
 }
 
 RunSummary RunNewmark(const structure::PlanStructure& structure, const PlanExcitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response) {
-  HistoryRecorder recorder(response, grid, structure.dofs(),
-                           static_cast<int>(ForceColumns(structure)),
-                           static_cast<int>(structure.law_count()));
-  return Run(structure, excitation, grid, options, recorder);
+  return RunRecorded(structure, excitation, grid, options, response);
 }
 
 }  // namespace isolab::integrators
