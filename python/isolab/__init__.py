@@ -16,10 +16,10 @@ partial result attached. Runs release the GIL: a thread pool of runs uses every 
 import os
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _cyclic, _diagnose, _fit, _run, _spectrum
+from ._isolab import _compare, _cyclic, _diagnose, _fit, _run, _spectrum
 
-__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "cyclic", "diagnose",
-           "fit", "load_model", "run", "spectrum", "__version__"]
+__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "compare", "cyclic",
+           "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
 
 
 def _model(model):
@@ -131,6 +131,27 @@ def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit="kN"
     """
     return _diagnose(_paths(data), str(base), seed, budget, specimen or "", force_unit,
                      length_unit, quiet)
+
+
+def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):
+    """`isolab compare`: a study's isolator variants under its records and scale factors.
+
+    study: the study file (YAML). output (the folder; default the study's output.directory, else
+    its file name's stem), jobs (threads; 0: every hardware thread), quiet and free_vibration
+    ("auto" or a time in s) are the command line's -o, -j, -q and --free-vibration; progress goes
+    to stderr unless quiet. Runs on local threads, the GIL released (MPI stays with the command
+    line under mpirun).
+
+    Writes what the command line writes: runs/<variant>/<record>_x<scale>.h5 and summary.csv and
+    summary.h5 in the output folder. Returns a dict: "runs" (one row per run in job order:
+    variant, record, scale, completed, message, file, record_units, pga and each quantity with
+    its "ratio <quantity>" to the reference variant) and "statistics" (one row per variant and
+    scale: completed and "mean <q>", "max <q>", "mean_ratio <q>", "max_ratio <q>"), both columns
+    of equal length for pandas.DataFrame; "units" per quantity, "reference", "failed" (runs that
+    failed; their quantities are NaN) and "output" (the folder).
+    """
+    return _compare(str(study), "" if output is None else str(output), jobs, quiet,
+                    None if free_vibration is None else str(free_vibration))
 
 
 def _paths(data):

@@ -20,5 +20,7 @@ void BindSpectrum(pybind11::module_& module);
 void BindFit(pybind11::module_& module);
 // diagnose.
 void BindDiagnose(pybind11::module_& module);
+// compare.
+void BindCompare(pybind11::module_& module);
 
 }  // namespace isolab::python

@@ -10,4 +10,5 @@ PYBIND11_MODULE(_isolab, module) {
   isolab::python::BindSpectrum(module);
   isolab::python::BindFit(module);
   isolab::python::BindDiagnose(module);
+  isolab::python::BindCompare(module);
 }

@@ -10,6 +10,7 @@
 #include "bindings.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/analysis_setup.h"
+#include "isolab/io/free_vibration_text.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/result_series.h"
 #include "isolab/io/results_file.h"
@@ -100,16 +101,17 @@ py::array SeriesArray(const std::shared_ptr<RunResult>& result, const io::Series
   py::array array = py::array_t<double>(shape);
   double* out = static_cast<double*>(array.mutable_data());
   for (py::ssize_t row = 0; row < rows; ++row) {
-    series.fill(history.Row(static_cast<int>(row)),
-                out + row * std::max<py::ssize_t>(width, 1));
+    series.fill(history.Row(static_cast<int>(row)), out + row * std::max<py::ssize_t>(width, 1));
   }
   MakeReadOnly(array);
   return array;
 }
 
+// "index" (the DOF or story, from 0) only where the peak has one, as the command line's JSON.
 py::dict PeakDict(const io::Peak& peak) {
-  return py::dict(py::arg("value") = peak.value, py::arg("time") = peak.time,
-                  py::arg("index") = peak.index);
+  py::dict dict(py::arg("value") = peak.value, py::arg("time") = peak.time);
+  if (peak.index >= 0) dict["index"] = peak.index;
+  return dict;
 }
 
 py::dict Peaks(const RunResult& r) {
@@ -243,17 +245,9 @@ void BindRun(py::module_& module) {
         o.fixed_base = fixed_base;
         o.trial_displacement = trial_displacement;
         if (!free_vibration.is_none()) {
-          if (py::isinstance<py::str>(free_vibration) &&
-              free_vibration.cast<std::string>() == "auto") {
-            o.free_vibration = io::FreeVibration{};
-          } else {
-            const double seconds = free_vibration.cast<double>();
-            if (!(seconds >= 0.0)) {
-              throw InputError({"free_vibration"}, "must be 'auto' or a time in s >= 0");
-            }
-            o.free_vibration = io::FreeVibration{
-                false, model.file().units.Convert(seconds, "s", io::dimension::kTime)};
-          }
+          // "auto" or a number, read as the command line reads --free-vibration.
+          o.free_vibration =
+              io::ParseFreeVibration(py::str(free_vibration), model.file().units, "free_vibration");
         }
         if (integrator && *integrator != "newmark" && *integrator != "ida") {
           throw InputError({"integrator"}, "'" + *integrator + "' (newmark or ida)");

@@ -12,11 +12,12 @@
 #include <thread>
 #include <vector>
 
-#include "free_vibration_option.h"
 #include "isolab/core/errors.h"
+#include "isolab/io/free_vibration_text.h"
 #include "isolab/io/study_file.h"
 #include "isolab/study/jobs.h"
 #include "isolab/study/mpi_scheduler.h"
+#include "isolab/study/output_folder.h"
 #include "isolab/study/run_job.h"
 #include "isolab/study/scheduler.h"
 #include "isolab/study/summary.h"
@@ -38,23 +39,6 @@ void KeepRunBuffersInTheHeap() {
 
 std::string Count(std::size_t n, const char* noun) {
   return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
-}
-
-std::string OutputDirectory(const CompareOptions& options, const io::StudyFile& study) {
-  if (!options.output.empty()) return options.output;
-  if (!study.output_directory.empty()) return study.output_directory;
-  return std::filesystem::path(options.study).stem().string();
-}
-
-// Every process makes the folder itself (MPI workers write their runs there too), so a folder
-// that cannot be made is bad input on every rank alike.
-void MakeDirectory(const std::string& directory) {
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error || !std::filesystem::is_directory(directory)) {
-    throw InputError({directory}, fmt::format("cannot create the output folder ({})",
-                                              error ? error.message() : "not a folder"));
-  }
 }
 
 // Summary files (CSV and HDF5) and the table on `out`.
@@ -123,11 +107,11 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   try {
     study_file = io::LoadStudyFile(options.study);
     if (!options.free_vibration.empty()) {
-      study_file.free_vibration = ParseFreeVibration(options.free_vibration, study_file.units);
+      study_file.free_vibration =
+          io::ParseFreeVibration(options.free_vibration, study_file.units, "--free-vibration");
     }
     if (options.plot) CheckPlotScript("plot_study.py");  // before the runs, not after
-    directory = OutputDirectory(options, study_file);
-    MakeDirectory(directory);
+    directory = study::PrepareOutputFolder(options.output, options.study, study_file);
   } catch (const InputError&) {
     // Every rank reads the same input and fails alike; rank 0 alone says why.
     if (mpi && study::LaunchRank() != 0) return 2;
@@ -149,12 +133,8 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
     const study::ProgressFunction progress = [&](const study::JobResult& result, std::size_t done,
                                                  std::size_t total) {
       if (options.quiet) return;
-      const std::string label = study::JobLabel(study_file, jobs[result.job]);
-      if (result.completed) {
-        fmt::print(stderr, "[{}/{}] {} ... {:.3f} s\n", done, total, label, result.wall_seconds);
-      } else {
-        fmt::print(stderr, "[{}/{}] {} ... failed: {}\n", done, total, label, result.message);
-      }
+      fmt::print(stderr, "{}\n",
+                 study::JobProgressLine(study_file, jobs[result.job], result, done, total));
     };
     const study::ScheduleOutcome outcome = scheduler->Run(
         jobs.size(),

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "free_vibration_option.h"
 #include "isolab/core/errors.h"
+#include "isolab/io/free_vibration_text.h"
 #include "isolab/io/model_summary.h"
 #include "isolab/io/plan_analysis.h"
 
@@ -141,7 +141,8 @@ int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   overrides.dt = options.dt;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {
-    overrides.free_vibration = ParseFreeVibration(options.free_vibration, model.units);
+    overrides.free_vibration =
+        io::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
   }
   const io::PlanAnalysisSetup setup = io::PreparePlanAnalysis(model, overrides);
   if (!options.json) PrintPreamble(model, setup, out);

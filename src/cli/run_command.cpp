@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "free_vibration_option.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/analysis_setup.h"
+#include "isolab/io/free_vibration_text.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/model_summary.h"
 #include "isolab/io/plan_model_file.h"
@@ -23,8 +23,11 @@
 namespace isolab::cli {
 namespace {
 
+// "index" (the DOF or story, from 0) only where the peak has one, as in the HDF5 results.
 nlohmann::json PeakJson(const io::Peak& peak) {
-  return {{"value", peak.value}, {"time", peak.time}, {"index", peak.index}};
+  nlohmann::json json = {{"value", peak.value}, {"time", peak.time}};
+  if (peak.index >= 0) json["index"] = peak.index;
+  return json;
 }
 
 std::string Join(const std::vector<double>& values, std::size_t count, const char* format) {
@@ -344,7 +347,8 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   overrides.fixed_base = options.fixed_base;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {
-    overrides.free_vibration = ParseFreeVibration(options.free_vibration, model.units);
+    overrides.free_vibration =
+        io::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
   }
   const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
 

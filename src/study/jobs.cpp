@@ -28,6 +28,14 @@ std::string JobLabel(const io::StudyFile& study, const Job& job) {
                      study.records[job.record].name, ScaleName(study.scales[job.scale]));
 }
 
+std::string JobProgressLine(const io::StudyFile& study, const Job& job, const JobResult& result,
+                            std::size_t done, std::size_t total) {
+  const std::string label = JobLabel(study, job);
+  if (result.completed)
+    return fmt::format("[{}/{}] {} ... {:.3f} s", done, total, label, result.wall_seconds);
+  return fmt::format("[{}/{}] {} ... failed: {}", done, total, label, result.message);
+}
+
 std::string RunFileName(const io::StudyFile& study, const Job& job) {
   return (std::filesystem::path("runs") / study.variants[job.variant].name /
           fmt::format("{}_x{}.h5", study.records[job.record].name,

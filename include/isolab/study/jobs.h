@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "isolab/io/study_file.h"
+#include "isolab/study/job_result.h"
 
 namespace isolab::study {
 
@@ -24,6 +25,11 @@ std::string ScaleName(double scale);
 
 // "thm1 / fwn_firm_seed1 x1.5", for progress lines.
 std::string JobLabel(const io::StudyFile& study, const Job& job);
+
+// "[3/12] thm1 / fwn_firm_seed1 x1.5 ... 0.412 s" or "... failed: <message>": the progress line
+// of a finished job, `done` of `total`.
+std::string JobProgressLine(const io::StudyFile& study, const Job& job, const JobResult& result,
+                            std::size_t done, std::size_t total);
 
 // "runs/<variant>/<record>_x<scale>.h5": where the run's results go, relative to the output
 // folder (summaries name it so, and stay valid when the folder moves).

@@ -1,0 +1,71 @@
+"""isolab.compare against `isolab compare`: the same summary, to the last bit."""
+
+import csv
+import math
+
+import numpy as np
+import pytest
+
+import isolab
+
+SMALL = "tests/study/data/small_study.yaml"
+FAILING = "tests/study/data/failing_study.yaml"
+
+
+def read_summary(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def number(text):
+    return math.nan if text == "" else float(text)
+
+
+def test_the_summary_equals_the_command_lines(repo, tmp_path, isolab_cli, monkeypatch):
+    # From the repository, as the command line runs, so both summaries name the same study path.
+    monkeypatch.chdir(repo)
+    isolab_cli("compare", SMALL, "-q", "-j", "1", "-o", tmp_path / "cli")
+    result = isolab.compare(SMALL, output=tmp_path / "py", jobs=2, quiet=True)
+    rows = read_summary(tmp_path / "cli" / "summary.csv")
+    runs = [row for row in rows if row["record"] not in ("mean", "max")]
+    assert len(runs) == len(result["runs"]["variant"]) == 4 * 3 * 2
+    quantities = list(result["units"])
+    assert "isolator_displacement" in quantities and "base_shear" in quantities
+    for i, row in enumerate(runs):
+        assert result["runs"]["variant"][i] == row["variant"]
+        assert result["runs"]["record"][i] == row["record"]
+        assert result["runs"]["scale"][i] == float(row["scale"])
+        assert bool(result["runs"]["completed"][i]) == (row["status"] == "completed")
+        for key in quantities:
+            column = f"{key} [{result['units'][key]}]"
+            np.testing.assert_equal(result["runs"][key][i], number(row[column]), err_msg=column)
+            np.testing.assert_equal(result["runs"][f"ratio {key}"][i],
+                                    number(row[f"ratio {key}"]))
+    means = [row for row in rows if row["record"] == "mean"]
+    assert len(means) == len(result["statistics"]["variant"]) == 4 * 2
+    for i, row in enumerate(means):
+        assert result["statistics"]["variant"][i] == row["variant"]
+        key = "isolator_displacement"
+        np.testing.assert_equal(result["statistics"][f"mean {key}"][i],
+                                number(row[f"{key} [{result['units'][key]}]"]))
+    # The same files as the command line's: the HDF5 summary is byte for byte the same.
+    assert (tmp_path / "py" / "summary.h5").read_bytes() == \
+        (tmp_path / "cli" / "summary.h5").read_bytes()
+    assert result["failed"] == 0 and result["reference"] == "thm1"
+
+
+def test_failed_runs_are_reported_with_nan_quantities(repo, tmp_path):
+    result = isolab.compare(repo / FAILING, output=tmp_path, jobs=1, quiet=True)
+    runs = result["runs"]
+    assert result["failed"] == sum(not c for c in runs["completed"]) > 0
+    for completed, message, value in zip(runs["completed"], runs["message"],
+                                         runs["base_shear"]):
+        assert completed == (message == "")
+        assert completed or math.isnan(value)
+
+
+def test_bad_input_raises_input_error_with_its_location(repo, tmp_path):
+    with pytest.raises(isolab.InputError, match=r"bad_study_key.yaml:5:1: refrence: unknown key"):
+        isolab.compare(repo / "tests/study/data/bad_study_key.yaml", output=tmp_path)
+    with pytest.raises(isolab.InputError, match="free_vibration"):
+        isolab.compare(repo / SMALL, output=tmp_path, free_vibration="soon")
