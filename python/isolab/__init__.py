@@ -22,6 +22,13 @@ __all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "compare
            "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
 
 
+def _as_list(value):
+    """None, a number or a sequence of numbers, as a list of floats."""
+    if value is None:
+        return []
+    return [float(v) for v in (value if hasattr(value, "__len__") else [value])]
+
+
 def _model(model):
     """A Model, or the model file a path names."""
     return model if isinstance(model, Model) else load_model(str(model))
@@ -53,17 +60,26 @@ def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
     return result
 
 
-def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=None):
-    """`isolab cyclic` on one model at one amplitude: u(t) = u_a sin(2 pi t / T) imposed on its
-    isolation assembly, from rest.
+def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=None,
+           sequential=False, test_data=None, noise=0.0, seed=1):
+    """`isolab cyclic` on one model: u(t) = u_a sin(2 pi t / T) imposed on its isolation
+    assembly.
 
-    amplitude, period, cycles and steps_per_cycle replace the model's cyclic section (the command
-    line's -a, -T, -n and --steps-per-cycle; model units). For several amplitudes, call it once
-    per amplitude. Returns a CyclicResult: the loop (time, displacement, force, component_force)
-    and, per cycle, the dissipated energy, peak force and each component's slider at +u_a.
+    amplitude and period (a number or a list), cycles and steps_per_cycle replace the model's
+    cyclic section (the command line's -a, -T, -n and --steps-per-cycle; model units). sequential
+    runs the tests one after another on one specimen, each from the state the last one left
+    (--sequential); otherwise each starts from rest. test_data writes the loops as cyclic test
+    data for fit and diagnose (--test-data), with Gaussian force noise relative to each test's RMS
+    force (--noise) from seed (--seed).
+
+    Returns a CyclicResult (the loop: time, displacement, force, component_force; per cycle the
+    dissipated energy, peak force and each component's slider at +u_a), or a list of them, periods
+    outer and amplitudes inner, when amplitude or period is a list.
     """
-    return _cyclic(_model(model), amplitude, period=period, cycles=cycles,
-                   steps_per_cycle=steps_per_cycle)
+    runs = _cyclic(_model(model), _as_list(amplitude), _as_list(period), cycles, steps_per_cycle,
+                   sequential, "" if test_data is None else str(test_data), noise, seed)
+    several = hasattr(amplitude, "__len__") or hasattr(period, "__len__")
+    return runs if several else runs[0]
 
 
 def _default_periods():
@@ -86,13 +102,8 @@ def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
     ductility, "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "u_m",
     "achieved_ductility" (damping x ductility x period), ...}; "record" and "units".
     """
-    def as_list(value):
-        if value is None:
-            return []
-        return [float(v) for v in (value if hasattr(value, "__len__") else [value])]
-
-    return _spectrum(record, as_list(periods) or _default_periods(), as_list(damping),
-                     as_list(ductility), alpha, points_per_period, scale, units, record_dt,
+    return _spectrum(record, _as_list(periods) or _default_periods(), _as_list(damping),
+                     _as_list(ductility), alpha, points_per_period, scale, units, record_dt,
                      length_unit)
 
 

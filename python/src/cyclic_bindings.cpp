@@ -1,4 +1,4 @@
-// isolab.cyclic: `isolab cyclic` on one model at one amplitude, the loop as numpy views.
+// isolab.cyclic: `isolab cyclic` on one model, each loop as numpy views.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -9,6 +9,9 @@
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/law_parameters.h"
+#include "isolab/identification/synthetic_tests.h"
+#include "isolab/io/cyclic_campaign.h"
+#include "isolab/io/cyclic_test_file.h"
 #include "model.h"
 
 namespace py = pybind11;
@@ -22,32 +25,34 @@ struct CyclicRun {
   io::UnitSystem units;
 };
 
-std::shared_ptr<CyclicRun> Cyclic(const Model& model, std::optional<double> amplitude,
-                                  std::optional<double> period, std::optional<int> cycles,
-                                  std::optional<int> steps_per_cycle) {
+// One result per period and amplitude (periods outer), as `isolab cyclic` runs them; with
+// `test_data`, the loops also written as cyclic test data (noise and seed as --noise, --seed).
+std::vector<std::shared_ptr<CyclicRun>> Cyclic(
+    const Model& model, const std::vector<double>& amplitudes, const std::vector<double>& periods,
+    std::optional<int> cycles, std::optional<int> steps_per_cycle, bool sequential,
+    const std::string& test_data, double noise, unsigned seed) {
   const io::ModelFile& file = model.file();
-  if (file.isolation.size() == 0) {
-    throw InputError({file.path}, "no isolation section: nothing to test cyclically");
+  if (!(noise >= 0.0 && noise <= 1.0)) throw InputError({"noise"}, "must be in [0, 1]");
+  io::CyclicRequest request{amplitudes, periods,  cycles,      steps_per_cycle,
+                            sequential, "cyclic", "amplitude="};
+  std::vector<hysteresis::CyclicResult> loops;
+  {
+    py::gil_scoped_release release;
+    loops = io::RunCyclicCampaign(file, request);
   }
-  hysteresis::CyclicProtocol protocol = file.cyclic.value_or(hysteresis::CyclicProtocol{});
-  if (!amplitude && !file.cyclic) {
-    throw InputError({file.path}, "no amplitude: give amplitude= or a 'cyclic:' section");
+  if (!test_data.empty()) {
+    std::vector<identification::CyclicTestData> tests =
+        io::TestsFromLoops(loops, periods.size() > 1);
+    identification::AddForceNoise(&tests, noise, seed);
+    io::WriteCyclicTests(test_data, tests, file.units, sequential);
   }
-  if (amplitude) protocol.amplitude = *amplitude;
-  if (period) protocol.period = *period;
-  if (cycles) protocol.cycles = *cycles;
-  if (steps_per_cycle) protocol.steps_per_cycle = *steps_per_cycle;
-  try {
-    protocol.Validate();
-  } catch (const InvalidParameter& error) {
-    throw InputError({"cyclic"}, error.violation().Describe());
+  std::vector<std::string> components;
+  for (const auto& component : file.isolation.components()) components.push_back(component.name);
+  std::vector<std::shared_ptr<CyclicRun>> runs;
+  for (hysteresis::CyclicResult& loop : loops) {
+    runs.push_back(std::make_shared<CyclicRun>(CyclicRun{std::move(loop), components, file.units}));
   }
-  auto run = std::make_shared<CyclicRun>(CyclicRun{{}, {}, file.units});
-  for (const auto& component : file.isolation.components())
-    run->components.push_back(component.name);
-  py::gil_scoped_release release;
-  run->result = hysteresis::RunCyclicTest(file.isolation, protocol);
-  return run;
+  return runs;
 }
 
 }  // namespace
@@ -113,9 +118,9 @@ void BindCyclic(py::module_& module) {
             return cycles;
           },
           "Per cycle, as `isolab cyclic --json`: cycle, dissipated, peak_force, components");
-  module.def("_cyclic", &Cyclic, py::arg("model"), py::arg("amplitude") = py::none(),
-             py::arg("period") = py::none(), py::arg("cycles") = py::none(),
-             py::arg("steps_per_cycle") = py::none());
+  module.def("_cyclic", &Cyclic, py::arg("model"), py::arg("amplitudes"), py::arg("periods"),
+             py::arg("cycles"), py::arg("steps_per_cycle"), py::arg("sequential"),
+             py::arg("test_data"), py::arg("noise"), py::arg("seed"));
 }
 
 }  // namespace isolab::python

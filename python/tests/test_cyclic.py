@@ -50,3 +50,25 @@ def test_cyclic_needs_an_amplitude(repo):
         isolab.cyclic(isolab.Model.from_dict(BILINEAR))
     with pytest.raises(isolab.InputError, match="steps_per_cycle"):
         isolab.cyclic(repo / TABLE9, 100, steps_per_cycle=6)
+
+
+DEGRADING = "models/diagnosis/cyclic_degradation.yaml"
+
+
+def test_a_sequential_campaign_writes_the_command_lines_test_data(repo, tmp_path, isolab_cli,
+                                                                   monkeypatch):
+    monkeypatch.chdir(repo)
+    options = ["-a", "50,100,150", "-T", "1,2", "-n", "2", "--noise", "0.01", "--seed", "7"]
+    isolab_cli("cyclic", DEGRADING, *options, "--sequential", "--test-data", tmp_path / "cli.csv")
+    runs = isolab.cyclic(DEGRADING, [50, 100, 150], period=[1, 2], cycles=2, sequential=True,
+                         test_data=tmp_path / "py.csv", noise=0.01, seed=7)
+    assert (tmp_path / "py.csv").read_text() == (tmp_path / "cli.csv").read_text()
+    assert "# specimen: one" in (tmp_path / "py.csv").read_text()
+    assert [(r.protocol["period"], r.protocol["amplitude"]) for r in runs] == \
+        [(t, a) for t in (1.0, 2.0) for a in (50.0, 100.0, 150.0)]
+    # One specimen: a scragged bearing dissipates less in its second test at 50 mm than a
+    # fresh one does in its first (the test at T = 2 follows the three at T = 1).
+    fresh = isolab.cyclic(DEGRADING, 50, period=2, cycles=2)
+    assert runs[3].cycles[0]["dissipated"] < 0.99 * fresh.cycles[0]["dissipated"]
+    assert isolab.cyclic(DEGRADING, [50], period=2, cycles=2)[0].cycles[0]["dissipated"] == \
+        fresh.cycles[0]["dissipated"]

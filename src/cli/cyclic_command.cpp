@@ -12,6 +12,7 @@
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/atomic_file.h"
+#include "isolab/io/cyclic_campaign.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/model_file.h"
 
@@ -26,39 +27,6 @@ struct Run {
   const io::ModelFile* model;
   CyclicResult result;
 };
-
-std::vector<CyclicProtocol> Protocols(const io::ModelFile& model, const CyclicOptions& options) {
-  if (model.isolation.size() == 0) {
-    throw InputError({model.path}, "no isolation section: nothing to test cyclically");
-  }
-  CyclicProtocol base = model.cyclic.value_or(CyclicProtocol{});
-  if (options.cycles) base.cycles = *options.cycles;
-  if (options.steps_per_cycle) base.steps_per_cycle = *options.steps_per_cycle;
-  std::vector<double> amplitudes = options.amplitudes;
-  if (amplitudes.empty()) {
-    if (!model.cyclic) {
-      throw InputError({model.path}, "no amplitude: give --amplitude or a 'cyclic:' section");
-    }
-    amplitudes.push_back(model.cyclic->amplitude);
-  }
-  const std::vector<double> periods =
-      options.periods.empty() ? std::vector<double>{base.period} : options.periods;
-  std::vector<CyclicProtocol> protocols;
-  for (const double period : periods) {
-    for (const double amplitude : amplitudes) {
-      CyclicProtocol protocol = base;
-      protocol.amplitude = amplitude;
-      protocol.period = period;
-      try {
-        protocol.Validate();
-      } catch (const InvalidParameter& error) {
-        throw InputError({"command line"}, error.violation().Describe());
-      }
-      protocols.push_back(protocol);
-    }
-  }
-  return protocols;
-}
 
 std::string ParameterText(const hysteresis::LawParameters& parameters, ParameterForm form) {
   const auto keys = hysteresis::ParameterKeys(parameters.type(), form);
@@ -233,13 +201,16 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   models.reserve(options.models.size());
   for (const std::string& path : options.models) models.push_back(io::LoadModelFile(path));
 
+  io::CyclicRequest request;
+  request.amplitudes = options.amplitudes;
+  request.periods = options.periods;
+  request.cycles = options.cycles;
+  request.steps_per_cycle = options.steps_per_cycle;
+  request.sequential = options.sequential;
   std::vector<Run> runs;
   for (const io::ModelFile& model : models) {
-    // One specimen per model: its runs in order, each from the state the last one left.
-    std::vector<hysteresis::LawState> state(model.isolation.size());
-    for (const CyclicProtocol& protocol : Protocols(model, options)) {
-      if (!options.sequential) std::fill(state.begin(), state.end(), hysteresis::LawState{});
-      runs.push_back({&model, hysteresis::RunCyclicTest(model.isolation, protocol, state)});
+    for (hysteresis::CyclicResult& result : io::RunCyclicCampaign(model, request)) {
+      runs.push_back({&model, std::move(result)});
     }
   }
 
@@ -250,12 +221,14 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   }
 
   if (!options.test_data.empty()) {
-    std::vector<identification::CyclicTestData> tests;
-    for (const Run& run : runs) {
-      tests.push_back(identification::TestFromLoop(run.result, options.periods.size() > 1));
-      if (models.size() > 1) {
-        tests.back().name =
-            std::filesystem::path(run.model->path).stem().string() + ":" + tests.back().name;
+    std::vector<hysteresis::CyclicResult> loops;
+    for (const Run& run : runs) loops.push_back(run.result);
+    std::vector<identification::CyclicTestData> tests =
+        io::TestsFromLoops(loops, options.periods.size() > 1);
+    if (models.size() > 1) {
+      for (std::size_t i = 0; i < runs.size(); ++i) {
+        tests[i].name =
+            std::filesystem::path(runs[i].model->path).stem().string() + ":" + tests[i].name;
       }
     }
     identification::AddForceNoise(&tests, options.noise, options.seed);
