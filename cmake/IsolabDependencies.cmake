@@ -14,6 +14,29 @@ endfunction()
 isolab_require(Eigen3 libeigen3-dev NO_MODULE)
 isolab_require(yaml-cpp libyaml-cpp-dev)
 isolab_require(HDF5 libhdf5-dev COMPONENTS C)
+# isolab_hdf5: HDF5 for isolab_io, linked statically into the executables that set the target
+# property ISOLAB_STATIC_HDF5 (the isolab front and its helper) and shared everywhere else.
+# Debian's shared libhdf5_serial pulls in libcurl, TLS, Kerberos and LDAP for its remote-file
+# drivers, which isolab never uses: loading them costs about 10 ms of every start-up (two thirds
+# of `isolab --version`). The static libhdf5.a of the same package pulls in only what the code
+# calls. It is not position-independent, so shared objects (the Python module) keep the shared
+# library.
+# (isolab_require finds packages inside a function: HDF5's variables stay there, its target not.)
+get_target_property(isolab_hdf5_libraries HDF5::HDF5 INTERFACE_LINK_LIBRARIES)
+get_target_property(isolab_hdf5_include_dirs HDF5::HDF5 INTERFACE_INCLUDE_DIRECTORIES)
+list(GET isolab_hdf5_libraries 0 isolab_hdf5_shared)
+string(REGEX REPLACE "\\.so$" ".a" isolab_hdf5_static "${isolab_hdf5_shared}")
+if(NOT EXISTS "${isolab_hdf5_static}")
+  message(FATAL_ERROR "isolab needs HDF5's static library ${isolab_hdf5_static} "
+                      "(Debian package libhdf5-dev)")
+endif()
+set(isolab_hdf5_static_libraries ${isolab_hdf5_libraries})
+list(REMOVE_AT isolab_hdf5_static_libraries 0)
+list(PREPEND isolab_hdf5_static_libraries ${isolab_hdf5_static})
+add_library(isolab_hdf5 INTERFACE)
+target_include_directories(isolab_hdf5 SYSTEM INTERFACE ${isolab_hdf5_include_dirs})
+target_link_libraries(isolab_hdf5 INTERFACE
+  "$<IF:$<BOOL:$<TARGET_PROPERTY:ISOLAB_STATIC_HDF5>>,${isolab_hdf5_static_libraries},HDF5::HDF5>")
 isolab_require(SUNDIALS libsundials-dev)
 isolab_require(pagmo libpagmo-dev)
 

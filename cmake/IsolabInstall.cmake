@@ -6,12 +6,14 @@ include(CMakePackageConfigHelpers)
 
 set(isolab_libraries core hysteresis structure integrators spectra identification diagnosis io
                      study)
-set(isolab_library_targets isolab_klu)  # KLU's include path and libraries travel with io
+# KLU's and HDF5's include paths and libraries travel with io.
+set(isolab_library_targets isolab_klu isolab_hdf5)
 foreach(area ${isolab_libraries})
   set_target_properties(isolab_${area} PROPERTIES EXPORT_NAME ${area})
   list(APPEND isolab_library_targets isolab_${area})
 endforeach()
 set_target_properties(isolab_klu PROPERTIES EXPORT_NAME klu)
+set_target_properties(isolab_hdf5 PROPERTIES EXPORT_NAME hdf5)
 
 install(TARGETS isolab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The front (bin/isolab) starts it for fit, diagnose and compare (src/cli/main.cpp).
