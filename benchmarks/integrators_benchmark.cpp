@@ -116,8 +116,10 @@ void BM_FiveStoryTable9(benchmark::State& state) {
   RunSteps(state, IsolatedBuilding(5, Table9()), 6000);
 }
 
-// The hand-written floor on the same model, record and step; its response must be RunNewmark's.
-void BM_FiveStoryTable9Floor(benchmark::State& state) {
+// The hand-written floor on the same model, record and step, factorising with `Solver`
+// (newmark_floor.h); its response must be RunNewmark's.
+template <template <int> class Solver>
+void FiveStoryTable9Floor(benchmark::State& state) {
   constexpr int kSteps = 6000;
   const structure::Structure building = IsolatedBuilding(5, Table9());
   const auto& connections = building.connections();
@@ -129,9 +131,9 @@ void BM_FiveStoryTable9Floor(benchmark::State& state) {
   for (int s = 0; s < 5; ++s) {
     stories[s] = std::get<hysteresis::ElasticSpring>(connections[s + 1].assembly.kernels()[0]);
   }
-  using Floor = benchmarks::NewmarkFloor<5, 9>;
-  Floor::Vector mass;
-  Floor::Matrix damping;
+  using Floor = benchmarks::NewmarkFloor<5, 9, Solver>;
+  typename Floor::Vector mass;
+  typename Floor::Matrix damping;
   const Eigen::MatrixXd c = Eigen::MatrixXd(building.viscous_damping());
   for (int i = 0; i < Floor::kDofs; ++i) {
     mass[i] = building.mass()[i];
@@ -139,7 +141,7 @@ void BM_FiveStoryTable9Floor(benchmark::State& state) {
   }
   Floor floor(mass, damping, isolator, stories);
   const Excitation excitation = Noise();
-  Floor::Output output;
+  typename Floor::Output output;
   long solves = floor.Run(excitation.ground_acceleration, 0.01, kSteps, &output);
 
   ResponseHistory response;
@@ -161,6 +163,16 @@ void BM_FiveStoryTable9Floor(benchmark::State& state) {
   solves = 0;
   for (auto _ : state) solves += floor.Run(excitation.ground_acceleration, 0.01, kSteps, &output);
   CountSteps(state, kSteps, solves);
+}
+
+// The floor as written by hand: a dense LDL^T of the 6 x 6 tangent.
+void BM_FiveStoryTable9Floor(benchmark::State& state) {
+  FiveStoryTable9Floor<benchmarks::DenseLdlt>(state);
+}
+
+// The floor with RunNewmark's KLU: what is left between the two is the cost of generality.
+void BM_FiveStoryTable9FloorKlu(benchmark::State& state) {
+  FiveStoryTable9Floor<benchmarks::KluDense>(state);
 }
 
 void BM_StoriesTable9(benchmark::State& state) {
@@ -271,6 +283,7 @@ BENCHMARK(BM_PlanStoriesLinearIsolators)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Floor)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryTable9FloorKlu)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Ida)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesTable9)
     ->Arg(5)

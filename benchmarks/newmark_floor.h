@@ -4,7 +4,7 @@
 // convergence tests (force scale, displacement, round-off floor), energies and recorded outputs;
 // what is gone is what a general code pays for generality: the law variant and assembly loop, the
 // sparse pattern with its index arrays, KLU's general sparse LU (a dense LDL^T of the small
-// symmetric tangent here) and dynamically sized vectors. Its per-step time is the bound
+// symmetric tangent here, or KLU itself with the KluDense solver) and dynamically sized vectors. Its per-step time is the bound
 // integrators_benchmark compares RunNewmark with; its results must equal RunNewmark's.
 #pragma once
 
@@ -14,13 +14,88 @@
 #include <limits>
 #include <vector>
 
+#include <klu.h>
+
 #include "isolab/hysteresis/elastic_spring.h"
 #include "isolab/hysteresis/series_slider.h"
 #include "isolab/integrators/excitation.h"
 
 namespace isolab::benchmarks {
 
-template <int kStories, int kComponents>
+// In-place LDL^T of the symmetric tangent and the solve K x = b (b overwritten by x): the floor's
+// own factorisation, for fixed-size dense matrices.
+template <int kDofs>
+struct DenseLdlt {
+  using Vector = std::array<double, kDofs>;
+  using Matrix = std::array<Vector, kDofs>;
+
+  void FactorAndSolve(Matrix* matrix, Vector* b) {
+    Matrix& k = *matrix;
+    for (int j = 0; j < kDofs; ++j) {
+      for (int p = 0; p < j; ++p) k[j][j] -= k[j][p] * k[j][p] * k[p][p];
+      for (int i = j + 1; i < kDofs; ++i) {
+        for (int p = 0; p < j; ++p) k[i][j] -= k[i][p] * k[j][p] * k[p][p];
+        k[i][j] /= k[j][j];
+      }
+    }
+    Vector& x = *b;
+    for (int i = 1; i < kDofs; ++i) {
+      for (int p = 0; p < i; ++p) x[i] -= k[i][p] * x[p];
+    }
+    for (int i = 0; i < kDofs; ++i) x[i] /= k[i][i];
+    for (int i = kDofs - 2; i >= 0; --i) {
+      for (int p = i + 1; p < kDofs; ++p) x[i] -= k[p][i] * x[p];
+    }
+  }
+};
+
+// KLU on every entry of the matrix, used as RunNewmark uses it (src/integrators/klu_solver.cpp):
+// analysed once, refactored with the pivots of the first factorisation while its reciprocal
+// condition number stays above 1e-12, then solved. With it the floor differs from RunNewmark
+// only in what generality costs, not in the sparse LU the design prescribes.
+template <int kDofs>
+class KluDense {
+ public:
+  using Vector = std::array<double, kDofs>;
+  using Matrix = std::array<Vector, kDofs>;
+
+  KluDense() {
+    klu_defaults(&common_);
+    for (int j = 0; j <= kDofs; ++j) columns_[j] = j * kDofs;
+    for (int k = 0; k < kDofs * kDofs; ++k) rows_[k] = k % kDofs;
+    symbolic_ = klu_analyze(kDofs, columns_.data(), rows_.data(), &common_);
+  }
+  ~KluDense() {
+    if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
+    klu_free_symbolic(&symbolic_, &common_);
+  }
+  KluDense(const KluDense&) = delete;
+  KluDense& operator=(const KluDense&) = delete;
+
+  void FactorAndSolve(Matrix* matrix, Vector* b) {
+    for (int j = 0; j < kDofs; ++j) {
+      for (int i = 0; i < kDofs; ++i) values_[j * kDofs + i] = (*matrix)[i][j];
+    }
+    if (numeric_ == nullptr ||
+        !(klu_refactor(columns_.data(), rows_.data(), values_.data(), symbolic_, numeric_,
+                       &common_) &&
+          klu_rcond(symbolic_, numeric_, &common_) && common_.rcond > 1e-12)) {
+      if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
+      numeric_ = klu_factor(columns_.data(), rows_.data(), values_.data(), symbolic_, &common_);
+    }
+    klu_solve(symbolic_, numeric_, kDofs, 1, b->data(), &common_);
+  }
+
+ private:
+  klu_common common_;
+  klu_symbolic* symbolic_ = nullptr;
+  klu_numeric* numeric_ = nullptr;
+  std::array<int, kDofs + 1> columns_;
+  std::array<int, kDofs * kDofs> rows_;
+  std::array<double, kDofs * kDofs> values_;
+};
+
+template <int kStories, int kComponents, template <int> class Solver = DenseLdlt>
 class NewmarkFloor {
  public:
   static constexpr int kDofs = kStories + 1;  // the base, then the floors bottom to top
@@ -69,7 +144,7 @@ class NewmarkFloor {
           Commit(u, v, a, step * h, step, ground, out);
           break;
         }
-        FactorAndSolve(&tangent, &residual_);
+        solver_.FactorAndSolve(&tangent, &residual_);
         ++solves;
         double correction = 0.0, size = 0.0;
         for (int i = 0; i < kDofs; ++i) {
@@ -157,26 +232,6 @@ class NewmarkFloor {
     return std::numeric_limits<double>::epsilon() * largest;
   }
 
-  // In-place LDL^T of the symmetric tangent and the solve K x = b (b overwritten by x).
-  static void FactorAndSolve(Matrix* matrix, Vector* b) {
-    Matrix& k = *matrix;
-    for (int j = 0; j < kDofs; ++j) {
-      for (int p = 0; p < j; ++p) k[j][j] -= k[j][p] * k[j][p] * k[p][p];
-      for (int i = j + 1; i < kDofs; ++i) {
-        for (int p = 0; p < j; ++p) k[i][j] -= k[i][p] * k[j][p] * k[p][p];
-        k[i][j] /= k[j][j];
-      }
-    }
-    Vector& x = *b;
-    for (int i = 1; i < kDofs; ++i) {
-      for (int p = 0; p < i; ++p) x[i] -= k[i][p] * x[p];
-    }
-    for (int i = 0; i < kDofs; ++i) x[i] /= k[i][i];
-    for (int i = kDofs - 2; i >= 0; --i) {
-      for (int p = i + 1; p < kDofs; ++p) x[i] -= k[p][i] * x[p];
-    }
-  }
-
   void Commit(const Vector& u, const Vector& v, const Vector& a, double t, int row,
               const integrators::SampledHistory& ground, Output* out) {
     Vector viscous{};
@@ -219,6 +274,7 @@ class NewmarkFloor {
     std::copy(energies, energies + 5, out->energies.begin() + row * 5);
   }
 
+  Solver<kDofs> solver_;
   Vector mass_;
   Matrix damping_;
   std::array<hysteresis::SeriesSlider, kComponents> isolator_;
