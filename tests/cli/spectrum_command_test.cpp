@@ -169,4 +169,22 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(txt));
 }
 
+TEST(SpectrumCommand, RecordWithA20kBHeaderLineExitsTwoAtOnce) {
+  // std::regex spent 12 s on this header line and then read the record (exit 0); a 200 kB line
+  // of letters overflowed its stack (exit 139). Both are now a located exit 2.
+  const auto directory = std::filesystem::path(::testing::TempDir()) /
+                         "spectrum_command_test_RecordWithA20kBHeaderLineExitsTwoAtOnce";
+  std::filesystem::create_directories(directory);
+  const auto record = directory / "long_header.at2";
+  std::ofstream(record) << "PEER NGA STRONG MOTION DATABASE RECORD\nNPTS= "
+                        << std::string(20000, '9') << "\nACCELERATION TIME SERIES IN UNITS OF G\n"
+                        << "NPTS=      3, DT=   .0100 SEC,\n  1.0  -2.0  3.0\n";
+  const auto run = RunIsolab("spectrum " + record.string() + " --periods 1 -q", true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("long_header.at2:2: a line of 20006 characters where the record's "
+                            "header is sought"),
+            std::string::npos)
+      << run.output;
+}
+
 }  // namespace
