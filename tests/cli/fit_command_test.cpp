@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -20,17 +21,6 @@ std::string Data(const std::string& name) {
 
 std::filesystem::path TemporaryFile(const std::string& name) {
   const auto directory = std::filesystem::temp_directory_path() / "isolab_fit_test";
-  std::filesystem::create_directories(directory);
-  const auto path = directory / name;
-  std::filesystem::remove(path);
-  return path;
-}
-
-// A file in a directory of the running test's own (ctest runs the tests in parallel).
-std::filesystem::path OwnFile(const std::string& name) {
-  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto directory = std::filesystem::path(::testing::TempDir()) /
-                         (std::string("fit_command_test_") + test->name());
   std::filesystem::create_directories(directory);
   const auto path = directory / name;
   std::filesystem::remove(path);
@@ -162,7 +152,7 @@ TEST(FitCommand, AModelIsolabWouldRefuseIsNotWritten) {
   // A linear spring's data (F = 0.5 u) need only the trilinear spring (k1 = k2 = 0.5): the
   // elastoplastic components get k0 = 0, which isolab cyclic refuses (k0 must be > 0). The fit
   // used to write that model and exit 0.
-  const auto output = OwnFile("linear_spring.fitted.yaml");
+  const auto output = isolab::testing::OwnTestFile("linear_spring.fitted.yaml");
   const auto run =
       RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
                     " --budget 300 -q -o " + output.string(),
@@ -197,9 +187,9 @@ TEST(FitCommand, BadSpecificationsAreLocatedBeforeTheFit) {
       {"{type: elastoplastic, count: 999999999}",
        "spec.yaml:3:34: components[0].count: 999999999 (must be 1 to 100"},
   };
-  const auto output = OwnFile("bad_spec.fitted.yaml");
+  const auto output = isolab::testing::OwnTestFile("bad_spec.fitted.yaml");
   for (const Case& c : cases) {
-    const auto spec = OwnFile("spec.yaml");
+    const auto spec = isolab::testing::OwnTestFile("spec.yaml");
     std::ofstream(spec) << "units: {force: kN, length: mm}\ncomponents:\n  - " << c.component
                         << "\n";
     const auto run = RunIsolab("fit " + Data("linear_spring.csv") + " --model " + spec.string() +

@@ -12,6 +12,7 @@
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
+#include "own_test_file.h"
 #include "reference_data.h"
 
 namespace {
@@ -172,10 +173,7 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
 TEST(SpectrumCommand, RecordWithA20kBHeaderLineExitsTwoAtOnce) {
   // std::regex spent 12 s on this header line and then read the record (exit 0); a 200 kB line
   // of letters overflowed its stack (exit 139). Both are now a located exit 2.
-  const auto directory = std::filesystem::path(::testing::TempDir()) /
-                         "spectrum_command_test_RecordWithA20kBHeaderLineExitsTwoAtOnce";
-  std::filesystem::create_directories(directory);
-  const auto record = directory / "long_header.at2";
+  const auto record = isolab::testing::OwnTestFile("long_header.at2");
   std::ofstream(record) << "PEER NGA STRONG MOTION DATABASE RECORD\nNPTS= "
                         << std::string(20000, '9') << "\nACCELERATION TIME SERIES IN UNITS OF G\n"
                         << "NPTS=      3, DT=   .0100 SEC,\n  1.0  -2.0  3.0\n";

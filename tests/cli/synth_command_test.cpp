@@ -10,23 +10,13 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
 using isolab::testing::RunIsolab;
 
 const std::string kSource = ISOLAB_SOURCE_DIR;
-
-// A file in a directory of the running test's own (ctest runs the tests in parallel).
-std::filesystem::path OwnFile(const std::string& name) {
-  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto directory = std::filesystem::path(::testing::TempDir()) /
-                         (std::string("synth_command_test_") + test->name());
-  std::filesystem::create_directories(directory);
-  const auto path = directory / name;
-  std::filesystem::remove(path);
-  return path;
-}
 
 std::string Contents(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -45,7 +35,7 @@ TEST(SynthCommand, RegeneratesTheBundledRecordsByteForByte) {
       {"pulse_tp2.at2", "pulse --pulse-period 2.0 --pgv 0.8 --oscillations 2"},
   };
   for (const auto& record : bundled) {
-    const auto output = OwnFile(record.file);
+    const auto output = isolab::testing::OwnTestFile(record.file);
     const auto run = RunIsolab("synth " + record.arguments + " -o " + output.string());
     ASSERT_EQ(run.exit_code, 0) << record.file;
     EXPECT_EQ(Contents(output), Contents(kSource + "/ground_motions/" + record.file))
@@ -57,7 +47,7 @@ TEST(SynthCommand, ThreeDigitExponentsAreReadBackByRun) {
   // 1000 s of noise: the envelope's decay exp(-0.25 (t - 12)) takes the tail below 1e-99 g, whose
   // exponents ran into the value before them ("-7.0912242E-99-4.6249845E-100") and made the file
   // unreadable to isolab itself.
-  const auto record = OwnFile("long_tail.at2");
+  const auto record = isolab::testing::OwnTestFile("long_tail.at2");
   const auto synth =
       RunIsolab("synth noise --seed 4 --pga 0.3 --duration 1000 -o " + record.string());
   ASSERT_EQ(synth.exit_code, 0);
@@ -90,7 +80,7 @@ TEST(SynthCommand, OptionsOutOfRangeExitTwoAndWriteNothing) {
       {"pulse --pgv 0", "--pgv: 0 (must be > 0)"},
       {"pulse --oscillations 1", "--oscillations: 1 (must be > 1)"},
   };
-  const auto output = OwnFile("bad.at2");
+  const auto output = isolab::testing::OwnTestFile("bad.at2");
   for (const auto& c : cases) {
     const auto run = RunIsolab("synth " + c.arguments + " -o " + output.string(), true);
     EXPECT_EQ(run.exit_code, 2) << c.arguments << "\n" << run.output;

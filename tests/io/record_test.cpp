@@ -9,6 +9,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/io/units.h"
+#include "own_test_file.h"
 #include "reference_data.h"
 
 namespace isolab::io {
@@ -30,11 +31,7 @@ std::string ErrorOf(const std::string& path, const RecordOptions& options = {}) 
 
 // A record written into a directory of the test's own, its second line `long_line`.
 std::string RecordWithLine(const std::string& name, const std::string& long_line) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path directory =
-      std::filesystem::path(::testing::TempDir()) / (std::string("record_test_") + info->name());
-  std::filesystem::create_directories(directory);
-  const std::filesystem::path path = directory / name;
+  const std::filesystem::path path = testing::OwnTestFile(name);
   std::ofstream(path) << "PEER NGA STRONG MOTION DATABASE RECORD\n"
                       << long_line << "\n"
                       << "ACCELERATION TIME SERIES IN UNITS OF G\n"
