@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <stdexcept>
@@ -23,6 +24,11 @@ namespace isolab::io {
 namespace {
 
 std::vector<std::string> Lines(const std::string& path) {
+  // A directory opens as a stream on Linux and reads as an empty file.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw InputError({path}, "is a directory, not a record");
+  }
   std::ifstream in(path);
   if (!in) throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
   std::vector<std::string> lines;

@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <unordered_map>
@@ -108,9 +109,18 @@ YAML::Node YamlReader::LoadFile(std::string* text) const {
 }
 
 std::string YamlReader::ReadText() const {
+  // A directory opens as a stream on Linux and throws from its first read.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(file_, ignored)) {
+    throw InputError({file_}, "is a directory, not a file");
+  }
   std::ifstream stream(file_);
   if (!stream) throw InputError({file_}, fmt::format("cannot open ({})", std::strerror(errno)));
-  return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  try {
+    return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  } catch (const std::ios_base::failure& error) {
+    throw InputError({file_}, fmt::format("cannot read ({})", error.what()));
+  }
 }
 
 YAML::Node YamlReader::LoadText(const std::string& content) const {

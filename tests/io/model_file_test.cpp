@@ -149,5 +149,14 @@ TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {
       << message;
 }
 
+TEST(ModelFile, ADirectoryIsAnInputErrorNotACrash) {
+  // The fuzz target for study files found it: a directory opened as a stream and its first read
+  // threw ios_base::failure, reported as "internal error" with exit code 1.
+  EXPECT_NE(ErrorOf("bad_include_directory.yaml").find(": is a directory, not a file"),
+            std::string::npos)
+      << ErrorOf("bad_include_directory.yaml");
+  EXPECT_THROW(LoadModelFile(std::string(ISOLAB_TEST_DATA_DIR) + "/io/data"), InputError);
+}
+
 }  // namespace
 }  // namespace isolab::io

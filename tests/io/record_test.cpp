@@ -156,6 +156,8 @@ TEST(ReadRecord, BadRecordsNameFileLineAndProblem) {
   EXPECT_NE(ErrorOf(DataFile("bad_record_uneven.txt"), {"g", 0}).find("uniform step"),
             std::string::npos);
   EXPECT_NE(ErrorOf(DataFile("no_such_record.at2")).find("cannot open"), std::string::npos);
+  // A directory used to read as an empty record.
+  EXPECT_NE(ErrorOf(DataFile("")).find("is a directory, not a record"), std::string::npos);
 }
 
 TEST(ReadRecord, LongHeaderLinesAreALocatedErrorNotACrash) {
