@@ -9,13 +9,18 @@
 
 namespace isolab::testing {
 
-// <TempDir>/<Suite>_<Test>/<name>, its directory created and any earlier file of that name gone.
-inline std::filesystem::path OwnTestFile(const std::string& name) {
+// <TempDir>/<Suite>_<Test>, created.
+inline std::filesystem::path OwnTestDirectory() {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
   const auto directory = std::filesystem::path(::testing::TempDir()) /
                          (std::string(test->test_suite_name()) + "_" + test->name());
   std::filesystem::create_directories(directory);
-  const auto path = directory / name;
+  return directory;
+}
+
+// <TempDir>/<Suite>_<Test>/<name>, any earlier file of that name gone.
+inline std::filesystem::path OwnTestFile(const std::string& name) {
+  const auto path = OwnTestDirectory() / name;
   std::filesystem::remove(path);
   return path;
 }

@@ -171,8 +171,8 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
 }
 
 TEST(SpectrumCommand, RecordWithA20kBHeaderLineExitsTwoAtOnce) {
-  // std::regex spent 12 s on this header line and then read the record (exit 0); a 200 kB line
-  // of letters overflowed its stack (exit 139). Both are now a located exit 2.
+  // std::regex spent 12 s on this header line and then read the record (exit 0); now it is a
+  // located exit 2 at once.
   const auto record = isolab::testing::OwnTestFile("long_header.at2");
   std::ofstream(record) << "PEER NGA STRONG MOTION DATABASE RECORD\nNPTS= "
                         << std::string(20000, '9') << "\nACCELERATION TIME SERIES IN UNITS OF G\n"
