@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "diagnosis_report.h"
+#include "fit_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/diagnose.h"
 #include "isolab/io/atomic_file.h"
@@ -57,6 +58,14 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   const identification::FitData data = diagnosis::AllCycles(
       std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
 
+  try {
+    RequireMoreSamplesThanParameters(
+        data, identification::ModelParametrisation(base.components, identification::ScalesOf(data)),
+        options.base);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({options.base}, error.what());
+  }
+
   diagnosis::DiagnoseOptions settings;
   settings.seed = options.seed;
   settings.budget = options.budget;
@@ -91,6 +100,7 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
       "Effects added: {}; e^2 = {:.6g} % (base {:.6g} %).", effects.empty() ? "none" : effects,
       100 * result.final_model.fit.error.total, 100 * result.base.fit.error.total));
   model.description = fmt::format("Diagnosed from {}", fmt::join(options.data, ", "));
+  model.specification = options.base;
   model.units = base.units;
   model.components = result.final_model.components;
   model.mathematical = result.final_model.fit.mathematical;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "fit_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
 #include "isolab/io/cyclic_test_file.h"
@@ -66,6 +67,7 @@ void WriteFittedModel(const std::string& path, const io::FitSpec& spec, const Fi
   }
   model.comment.push_back(errors);
   model.description = fmt::format("Fitted to {}", fmt::join(options.data, ", "));
+  model.specification = spec.path;
   model.units = spec.units;
   model.components = spec.components;
   model.mathematical = result.mathematical;
@@ -114,6 +116,7 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   } catch (const std::invalid_argument& error) {
     throw InputError({spec.path}, error.what());
   }
+  RequireMoreSamplesThanParameters(data, *model, spec.path);
 
   identification::FitOptions fit;
   fit.seed = options.seed;

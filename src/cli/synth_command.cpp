@@ -1,8 +1,46 @@
 #include "synth_command.h"
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 
+#include "isolab/core/errors.h"
+
 namespace isolab::cli {
+namespace {
+
+// Ten million samples (1e5 s at the 0.01 s step): more is no earthquake record, and the samples
+// are counted in an int.
+constexpr double kMaxDuration = 1e5;
+
+void Require(bool ok, const char* option, double value, const std::string& rule) {
+  if (!ok) throw InputError({option}, fmt::format("{:g} ({})", value, rule));
+}
+
+// Every option of the kind asked for, before anything is generated: out of range, the filters or
+// the scaling produce NaN samples (a zero duration, a zero pulse period) or no motion at all.
+void CheckNoise(const io::FilteredNoiseSpec& s) {
+  Require(s.pga > 0, "--pga", s.pga, "must be > 0");
+  Require(s.duration > 0 && s.duration <= kMaxDuration, "--duration", s.duration,
+          fmt::format("must be > 0 and at most {:g} s", kMaxDuration));
+  // RK4 integrates the site filter at dt: a quarter of the sampling rate keeps w dt < 1.6.
+  const double highest = 0.25 / s.dt;
+  Require(s.site_frequency > 0 && s.site_frequency <= highest, "--site-frequency", s.site_frequency,
+          fmt::format("must be > 0 and at most {:g} Hz", highest));
+  Require(s.site_damping > 0 && s.site_damping <= 1, "--site-damping", s.site_damping,
+          "must be in (0, 1]");
+  Require(s.strong_end >= s.rise_end, "--strong-end", s.strong_end,
+          fmt::format("must be >= the envelope's rise time, {:g} s", s.rise_end));
+}
+
+void CheckPulse(const io::PulseSpec& s) {
+  Require(s.period >= 10 * s.dt, "--pulse-period", s.period,
+          fmt::format("must be >= {:g} s, ten samples", 10 * s.dt));
+  Require(s.pgv > 0, "--pgv", s.pgv, "must be > 0");
+  Require(s.oscillations > 1, "--oscillations", s.oscillations, "must be > 1");
+}
+
+}  // namespace
 
 void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   CLI::App* command = app.add_subcommand("synth", "Write a seeded synthetic ground motion (AT2)");
@@ -10,20 +48,27 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
       ->check(CLI::IsMember({"noise", "pulse"}));
   command->add_option("-o,--output", o.output, "AT2 file to write")->required();
   command->add_option("--seed", o.noise.seed, "noise: random seed");
-  command->add_option("--pga", o.noise.pga, "noise: peak ground acceleration (g)");
-  command->add_option("--duration", o.noise.duration, "noise: duration (s)");
-  command->add_option("--site-frequency", o.noise.site_frequency, "noise: Kanai-Tajimi fg (Hz)");
-  command->add_option("--site-damping", o.noise.site_damping, "noise: Kanai-Tajimi zg");
-  command->add_option("--strong-end", o.noise.strong_end, "noise: end of the strong phase t2 (s)");
-  command->add_option("--pulse-period", o.pulse.period, "pulse: Tp (s)");
-  command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s)");
+  command->add_option("--pga", o.noise.pga, "noise: peak ground acceleration (g), > 0");
+  command->add_option("--duration", o.noise.duration, "noise: duration (s), > 0");
+  command->add_option("--site-frequency", o.noise.site_frequency,
+                      "noise: Kanai-Tajimi fg (Hz), up to a quarter of the sampling rate");
+  command->add_option("--site-damping", o.noise.site_damping, "noise: Kanai-Tajimi zg, (0, 1]");
+  command->add_option("--strong-end", o.noise.strong_end,
+                      "noise: end of the strong phase t2 (s), >= the 2 s rise");
+  command->add_option("--pulse-period", o.pulse.period, "pulse: Tp (s), ten samples or more");
+  command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s), > 0");
   command->add_option("--oscillations", o.pulse.oscillations, "pulse: gamma (> 1)");
   command->add_option("--phase", o.pulse.phase, "pulse: nu (rad)");
 }
 
 void RunSynthCommand(const SynthOptions& o) {
-  io::WriteAt2(o.kind == "pulse" ? io::PulseRecord(o.pulse) : io::FilteredNoiseRecord(o.noise),
-               o.output);
+  if (o.kind == "pulse") {
+    CheckPulse(o.pulse);
+    io::WriteAt2(io::PulseRecord(o.pulse), o.output);
+  } else {
+    CheckNoise(o.noise);
+    io::WriteAt2(io::FilteredNoiseRecord(o.noise), o.output);
+  }
 }
 
 }  // namespace isolab::cli

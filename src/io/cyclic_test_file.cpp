@@ -73,7 +73,8 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
   std::map<std::string, int> column;
   std::map<std::string, std::size_t> test_index;
   double force_factor = 1.0, length_factor = 1.0;
-  int line_number = 0;
+  int line_number = 0, header_line = 0;
+  const std::size_t tests_before = tests->size();
   for (std::string line; std::getline(in, line);) {
     ++line_number;
     line = Trim(line);
@@ -87,6 +88,7 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
     }
     const std::vector<std::string> fields = Split(line);
     if (column.empty()) {  // the header
+      header_line = line_number;
       for (std::size_t k = 0; k < fields.size(); ++k)
         column[Lower(fields[k])] = static_cast<int>(k);
       for (const char* needed : {"time", "displacement", "force"}) {
@@ -136,6 +138,17 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
     test.force.push_back(number("force") * force_factor);
   }
   if (column.empty()) throw InputError({path}, "the file is empty (expected a header line)");
+  if (tests->size() == tests_before) {
+    throw InputError({path, header_line},
+                     "a header and no samples: nothing to identify (expected rows of "
+                     "test,time,displacement,force after it)");
+  }
+}
+
+// The range a channel spans: a constant one carries nothing to identify.
+double RangeOf(const std::vector<double>& values) {
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return *high - *low;
 }
 
 }  // namespace
@@ -149,10 +162,16 @@ CyclicTestSet ReadCyclicTests(const std::vector<std::string>& paths,
     ReadFile(path, file_units, into, &tests, &set.one_specimen);
     for (std::size_t i = first; i < tests.size(); ++i) {
       CyclicTestData& test = tests[i];
-      if (std::all_of(test.force.begin(), test.force.end(), [](double f) { return f == 0.0; })) {
-        throw InputError({path}, fmt::format("test '{}': the force is zero throughout (a dead "
-                                             "channel?); e^2 weighs each test by its force",
-                                             test.name));
+      if (RangeOf(test.force) == 0.0) {
+        throw InputError({path}, fmt::format("test '{}': the force is {:g} throughout (a dead "
+                                             "channel?): nothing to identify, and e^2 weighs each "
+                                             "test by its force's variation",
+                                             test.name, test.force.front()));
+      }
+      if (RangeOf(test.displacement) == 0.0) {
+        throw InputError({path}, fmt::format("test '{}': the displacement is {:g} throughout: "
+                                             "nothing to identify",
+                                             test.name, test.displacement.front()));
       }
       identification::Segment(&test);
       if (test.half_cycles.empty()) {

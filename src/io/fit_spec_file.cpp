@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <limits>
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
@@ -20,6 +21,32 @@ double ReadCoordinate(const YamlReader& reader, const YAML::Node& node, const st
              ? reader.ReadNumber(node, path)
              : reader.ReadQuantity(node, path, dimension::kLength, units);
 }
+
+// Where a shape coordinate makes a valid law (the rules of hysteresis/law_parameters.h in the
+// coordinates' terms): a bound, a fixed value or a start outside it would fail inside the fit.
+struct CoordinateDomain {
+  double low, high;
+  bool low_open, high_open;
+  const char* rule;
+};
+
+CoordinateDomain DomainOf(const std::string& name) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (name == "k1_ratio" || name == "k2_ratio") return {-kInf, 1.0, true, true, "must be < 1"};
+  if (name == "loss") return {0.0, 1.0, false, true, "must be in [0, 1)"};
+  return {0.0, kInf, true, true, "must be > 0"};  // uy, uyh, uyh_gap, slip_scale
+}
+
+void RequireInDomain(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                     const std::string& name, double value) {
+  const CoordinateDomain d = DomainOf(name);
+  const bool above = d.low_open ? value > d.low : value >= d.low;
+  const bool below = d.high_open ? value < d.high : value <= d.high;
+  if (!above || !below) reader.Fail(node, path, fmt::format("{} = {:g} ({})", name, value, d.rule));
+}
+
+// A fit over this many components would not converge in any practical budget.
+constexpr int kMaxComponents = 100;
 
 }  // namespace
 
@@ -53,7 +80,12 @@ FitSpec LoadFitSpec(const std::string& path) {
                               type_name));
     }
     const int count = entry["count"] ? reader.ReadInteger(entry["count"], at + ".count") : 1;
-    if (count < 1) reader.Fail(entry["count"], at + ".count", fmt::format("{} (must be >= 1)", count));
+    if (count < 1 || count > kMaxComponents) {
+      reader.Fail(entry["count"], at + ".count",
+                  fmt::format("{} (must be 1 to {}: a fit of more components would not converge "
+                              "in any practical budget)",
+                              count, kMaxComponents));
+    }
     ComponentSpec component;
     component.type = *type;
     const auto read_map = [&](const char* key, auto&& read) {
@@ -72,15 +104,30 @@ FitSpec LoadFitSpec(const std::string& path) {
       if (node.size() != 2) reader.Fail(node, p, "expected [low, high]");
       const double low = ReadCoordinate(reader, node[0], p + "[0]", name, spec.units);
       const double high = ReadCoordinate(reader, node[1], p + "[1]", name, spec.units);
-      if (!(high > low)) reader.Fail(node, p, fmt::format("[{:g}, {:g}] (must be low < high)", low, high));
+      if (!(high > low))
+        reader.Fail(node, p, fmt::format("[{:g}, {:g}] (must be low < high)", low, high));
+      RequireInDomain(reader, node[0], p + "[0]", name, low);
+      RequireInDomain(reader, node[1], p + "[1]", name, high);
       component.ranges[name] = CoordinateRange{low, high, true};
     });
     read_map("fixed", [&](const std::string& name, const YAML::Node& node, const std::string& p) {
       component.fixed[name] = ReadCoordinate(reader, node, p, name, spec.units);
+      RequireInDomain(reader, node, p, name, component.fixed[name]);
     });
     read_map("start", [&](const std::string& name, const YAML::Node& node, const std::string& p) {
       component.start[name] = ReadCoordinate(reader, node, p, name, spec.units);
+      RequireInDomain(reader, node, p, name, component.start[name]);
     });
+    // A start must lie within its bounds (the fit would clamp it silently).
+    for (const auto& [name, start] : component.start) {
+      const auto range = component.ranges.find(name);
+      if (range == component.ranges.end()) continue;
+      if (start < range->second.low || start > range->second.high) {
+        reader.Fail(entry["start"][name], at + ".start." + name,
+                    fmt::format("{:g} is outside its bounds [{:g}, {:g}]", start, range->second.low,
+                                range->second.high));
+      }
+    }
     const std::string base = entry["name"] ? reader.ReadString(entry["name"], at + ".name") : "";
     for (int k = 0; k < count; ++k) {
       component.name = !base.empty() ? (count > 1 ? fmt::format("{}{}", base, k + 1) : base)
@@ -89,6 +136,12 @@ FitSpec LoadFitSpec(const std::string& path) {
     }
   }
   if (spec.components.empty()) reader.Fail(list, "components", "no component to identify");
+  if (spec.components.size() > kMaxComponents) {
+    reader.Fail(list, "components",
+                fmt::format("{} components (at most {}: a fit of more would not converge in any "
+                            "practical budget)",
+                            spec.components.size(), kMaxComponents));
+  }
   return spec;
 }
 

@@ -7,26 +7,28 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
-#include <regex>
 #include <stdexcept>
+#include <string_view>
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
 #include "isolab/io/units.h"
+#include "record_header.h"
 
 namespace isolab::io {
 namespace {
 
-std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 std::vector<std::string> Lines(const std::string& path) {
+  // A directory opens as a stream on Linux and reads as an empty file.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw InputError({path}, "is a directory, not a record");
+  }
   std::ifstream in(path);
   if (!in) throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
   std::vector<std::string> lines;
@@ -58,36 +60,6 @@ void ParseNumbers(const std::string& path, int line_number, const std::string& l
   }
 }
 
-// Units named in a header, matched as whole tokens (so "gal" is not g and "mm/s^2" is not m/s^2),
-// in the spellings PEER and others use. Empty when none or more than one kind is named.
-std::string UnitsFromHeader(const std::string& header) {
-  static const std::regex token(R"([a-z0-9/^*.]+)");
-  const std::string text = Lower(header);
-  std::string found;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), token);
-       it != std::sregex_iterator(); ++it) {
-    std::string unit = it->str();
-    while (!unit.empty() && unit.back() == '.') unit.pop_back();
-    std::string canonical;
-    if (unit == "g") {
-      canonical = "g";
-    } else if (unit == "gal" || unit == "cm/s/s" || unit == "cm/s^2" || unit == "cm/sec/sec" ||
-               unit == "cm/s2" || unit == "cm/sec^2") {
-      canonical = "cm/s^2";
-    } else if (unit == "mm/s/s" || unit == "mm/s^2" || unit == "mm/s2") {
-      canonical = "mm/s^2";
-    } else if (unit == "m/s/s" || unit == "m/s^2" || unit == "m/s2" || unit == "m/sec^2") {
-      canonical = "m/s^2";
-    } else if (unit == "in/s/s" || unit == "in/s^2" || unit == "in/s2" || unit == "in/sec^2") {
-      canonical = "in/s^2";
-    }
-    if (canonical.empty() || canonical == found) continue;
-    if (!found.empty()) return {};  // two different units named: ambiguous
-    found = canonical;
-  }
-  return found;
-}
-
 // A header number: Fortran's D exponent accepted, the whole token used, else a located error.
 double HeaderNumber(const std::string& path, std::size_t line, std::string text) {
   std::replace(text.begin(), text.end(), 'D', 'E');
@@ -98,38 +70,60 @@ double HeaderNumber(const std::string& path, std::size_t line, std::string text)
   return *value;
 }
 
+// A declared sample count: 64 bits, and a located error beyond them.
+std::int64_t HeaderCount(const std::string& path, std::size_t line, std::string_view digits) {
+  std::int64_t count = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), count);
+  if (error != std::errc() || end != digits.data() + digits.size()) {
+    throw InputError({path, static_cast<int>(line + 1)},
+                     fmt::format("'{}' points is out of range (in the header)", digits));
+  }
+  return count;
+}
+
+// Longer header lines are not a record's: refused before anything scans them.
+constexpr std::size_t kMaxHeaderLine = 4096;
+// The lines where a header is sought.
+constexpr std::size_t kHeaderLines = 12;
+
+void CheckHeaderLineLengths(const std::string& path, const std::vector<std::string>& lines) {
+  for (std::size_t i = 0; i < std::min(lines.size(), kHeaderLines); ++i) {
+    if (lines[i].size() > kMaxHeaderLine) {
+      throw InputError({path, static_cast<int>(i + 1)},
+                       fmt::format("a line of {} characters where the record's header is sought "
+                                   "(header lines have at most {}): is this a record?",
+                                   lines[i].size(), kMaxHeaderLine));
+    }
+  }
+}
+
 struct Layout {
   std::string format;
-  std::size_t first_data_line = 0;  // index into lines
-  std::optional<long> points;       // declared sample count
+  std::size_t first_data_line = 0;     // index into lines
+  std::optional<std::int64_t> points;  // declared sample count
   double dt = 0.0;
   bool two_columns = false;
 };
 
 std::optional<Layout> PeerLayout(const std::string& path, const std::vector<std::string>& lines) {
-  static const std::regex npts_dt(R"(NPTS\s*=\s*(\d+)\s*,?\s*DT\s*=\s*([0-9.eEdD+-]+))",
-                                  std::regex::icase);
-  static const std::regex old_style(R"(^\s*(\d+)\s+([0-9.eEdD+-]+)\s+NPTS\s*,\s*DT)",
-                                    std::regex::icase);
-  static const std::regex peknold(R"((\d+)\s+points at equal spacing of\s+([0-9.eEdD+-]+)\s*sec)",
-                                  std::regex::icase);
   Layout layout;
   bool found = false;
-  for (std::size_t i = 0; i < std::min<std::size_t>(lines.size(), 12); ++i) {
-    std::smatch match;
-    if (std::regex_search(lines[i], match, npts_dt) ||
-        std::regex_search(lines[i], match, old_style)) {
-      layout.points = static_cast<long>(HeaderNumber(path, i, match[1]));
-      layout.dt = HeaderNumber(path, i, match[2]);
+  for (std::size_t i = 0; i < std::min(lines.size(), kHeaderLines); ++i) {
+    const std::string_view line = lines[i];
+    std::optional<HeaderSampling> sampling = FindNptsDt(line);
+    if (!sampling) sampling = FindOldestSampling(line);
+    if (sampling) {
+      layout.points = HeaderCount(path, i, sampling->points);
+      layout.dt = HeaderNumber(path, i, std::string(sampling->step));
       layout.first_data_line = i + 1;
       if (layout.format.empty()) layout.format = "PEER AT2";
       found = true;
-    } else if (std::regex_search(lines[i], match, peknold)) {
-      layout.points = static_cast<long>(HeaderNumber(path, i, match[1]));
-      layout.dt = HeaderNumber(path, i, match[2]);
+    } else if ((sampling = FindPeknoldSampling(line))) {
+      layout.points = HeaderCount(path, i, sampling->points);
+      layout.dt = HeaderNumber(path, i, std::string(sampling->step));
       layout.format = "Peknold AT2";
       found = true;
-    } else if (Lower(lines[i]).find("begin data") != std::string::npos) {
+    } else if (ContainsIgnoringCase(line, "begin data")) {
       layout.first_data_line = i + 1;
     }
   }
@@ -145,6 +139,79 @@ double AccelerationSi(const std::string& path, const std::string& unit, const st
     throw InputError(
         {path}, fmt::format("{}: {} (g, m/s^2, cm/s^2, mm/s^2, in/s^2, gal)", who, error.what()));
   }
+}
+
+// The units headers name, in isolab's notation.
+constexpr std::string_view kAccelerationUnits[] = {"g",      "m/s^2",  "cm/s^2",
+                                                   "mm/s^2", "in/s^2", "ft/s^2"};
+
+// An acceleration unit as headers spell it ("G", "CM/SEC/SEC", "cm/s2", "FT/S**2", "gal") in
+// isolab's notation ("cm/s^2"), or empty when it is no acceleration unit isolab knows.
+std::string AccelerationUnit(std::string_view written) {
+  std::string unit;
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    if (written.substr(i, 2) == "**") {
+      unit += '^';
+      ++i;
+    } else {
+      unit += static_cast<char>(std::tolower(static_cast<unsigned char>(written[i])));
+    }
+  }
+  // Seconds spelled "sec", squares spelled "s2".
+  std::string notation;
+  std::size_t start = 0;
+  while (start <= unit.size()) {
+    std::size_t end = unit.find_first_of("/*", start);
+    if (end == std::string::npos) end = unit.size();
+    std::string factor = unit.substr(start, end - start);
+    if (factor.rfind("sec", 0) == 0) factor.replace(0, 3, "s");
+    if (factor == "s2") factor = "s^2";
+    notation += factor;
+    if (end < unit.size()) notation += unit[end];
+    start = end + 1;
+  }
+  double si = 0.0;
+  try {
+    si = UnitSystem("N", "m", "s").Convert(1.0, notation, dimension::kAcceleration);
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+  for (const std::string_view known : kAccelerationUnits) {
+    const double known_si = UnitSystem("N", "m", "s").Convert(1.0, known, dimension::kAcceleration);
+    if (std::abs(si - known_si) <= 1e-12 * known_si) return std::string(known);
+  }
+  return notation;
+}
+
+// The units the header states, in isolab's notation, or empty when it states none. Only a units
+// statement counts (a "g" in a description does not); a statement naming no unit isolab knows,
+// and two statements that disagree, are refused at their lines.
+std::string HeaderUnits(const std::string& path, const std::vector<std::string>& lines,
+                        std::size_t first, std::size_t end, bool csv) {
+  std::string units;
+  std::size_t units_line = 0;
+  for (std::size_t i = first; i < end; ++i) {
+    const std::optional<UnitsStatement> statement =
+        csv ? FindCsvUnits(lines[i]) : FindUnitsStatement(lines[i]);
+    if (!statement) continue;
+    const std::string unit = AccelerationUnit(statement->unit);
+    if (unit.empty()) {
+      throw InputError({path, static_cast<int>(i + 1)},
+                       fmt::format("the units statement '{}' names no acceleration unit isolab "
+                                   "knows (expected g, m/s^2, cm/s^2 or gal, mm/s^2, in/s^2, "
+                                   "ft/s^2)",
+                                   statement->statement));
+    }
+    if (!units.empty() && unit != units) {
+      throw InputError({path, static_cast<int>(i + 1)},
+                       fmt::format("the header states its units twice and differently: {} on "
+                                   "line {} and {} here",
+                                   units, units_line + 1, unit));
+    }
+    units = unit;
+    units_line = i;
+  }
+  return units;
 }
 
 // The units the values are in: the header's, or the ones given where the header names none. A
@@ -203,10 +270,12 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   Record record;
   record.path = path;
 
+  CheckHeaderLineLengths(path, lines);
   std::optional<Layout> layout = PeerLayout(path, lines);
-  std::string header;
+  std::string header, header_units;
   if (layout) {
     for (std::size_t i = 0; i < layout->first_data_line; ++i) header += lines[i] + "\n";
+    header_units = HeaderUnits(path, lines, 0, layout->first_data_line, false);
   } else {
     // Columns: a header line with letters makes it CSV, else count the numbers of the first line.
     layout.emplace();
@@ -222,6 +291,7 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
       layout->format = "CSV";
       layout->first_data_line = first + 1;
       layout->two_columns = std::count(header.begin(), header.end(), ',') >= 1;
+      header_units = HeaderUnits(path, lines, first, first + 1, true);
     } else {
       std::vector<double> numbers;
       ParseNumbers(path, static_cast<int>(first + 1), lines[first], &numbers);
@@ -242,7 +312,7 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   std::vector<double> numbers;
   int last_data_line = 0;
   for (std::size_t i = layout->first_data_line; i < lines.size(); ++i) {
-    if (Lower(lines[i]).find("end data") != std::string::npos) break;
+    if (ContainsIgnoringCase(lines[i], "end data")) break;
     const std::size_t before = numbers.size();
     ParseNumbers(path, static_cast<int>(i + 1), lines[i], &numbers);
     if (numbers.size() > before) last_data_line = static_cast<int>(i + 1);
@@ -275,12 +345,12 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   }
   record.dt =
       StepOf(path, file_dt, layout->two_columns ? "its times give" : "its header gives", options);
-  if (layout->points && static_cast<long>(record.values.size()) != *layout->points) {
+  if (layout->points && static_cast<std::int64_t>(record.values.size()) != *layout->points) {
     throw InputError({path, last_data_line},
                      fmt::format("the header declares {} points but the file holds {}",
                                  *layout->points, record.values.size()));
   }
-  record.units = UnitsOf(path, UnitsFromHeader(header), options, &record.units_source);
+  record.units = UnitsOf(path, header_units, options, &record.units_source);
   return record;
 }
 

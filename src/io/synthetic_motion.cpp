@@ -125,7 +125,9 @@ void WriteAt2(const Record& record, const std::string& path) {
     fmt::print(out, "ACCELERATION TIME SERIES IN UNITS OF G\n");
     fmt::print(out, "NPTS= {:7d}, DT= {:9.5f} SEC,\n", record.values.size(), record.dt);
     for (std::size_t k = 0; k < record.values.size(); ++k) {
-      fmt::print(out, "{:15.7E}{}", record.values[k],
+      // A space before every value: a three-digit exponent ("-4.6249845E-100", 15 characters)
+      // would otherwise run into the value before it. Two-digit ones keep PEER's 15 columns.
+      fmt::print(out, " {:14.7E}{}", record.values[k],
                  (k % 5 == 4 || k + 1 == record.values.size()) ? "\n" : "");
     }
   });

@@ -8,8 +8,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace isolab::io {
@@ -38,6 +42,41 @@ std::string JoinWords(std::span<const std::string_view> words) {
     joined += word;
   }
   return joined;
+}
+
+// yaml-cpp keeps both entries of a key given twice and lookups find the first: a later value the
+// user meant silently loses. Every mapping is checked once, walking with a stack of its own (no
+// recursion on the file's depth) and visiting a node an alias repeats only once (by its position
+// in the text), so the walk is linear in the file.
+void RefuseDuplicateKeys(const std::string& file, const YAML::Node& root) {
+  std::vector<std::pair<YAML::Node, std::string>> pending{{root, ""}};
+  std::unordered_set<int> visited;  // text positions of the collections walked
+  while (!pending.empty()) {
+    const auto [node, path] = std::move(pending.back());
+    pending.pop_back();
+    if (!node.IsMap() && !node.IsSequence()) continue;
+    if (!visited.insert(node.Mark().pos).second) continue;
+    if (node.IsSequence()) {
+      std::size_t index = 0;
+      for (const YAML::Node& item : node) pending.emplace_back(item, IndexPath(path, index++));
+      continue;
+    }
+    std::unordered_map<std::string, YAML::Mark> seen;
+    for (const auto& entry : node) {
+      if (!entry.first.IsScalar()) continue;  // refused where the key is read
+      const std::string& key = entry.first.Scalar();
+      const auto [first, inserted] = seen.try_emplace(key, entry.first.Mark());
+      if (!inserted) {
+        const YAML::Mark again = entry.first.Mark();
+        throw InputError({file, again.line + 1, again.column + 1},
+                         fmt::format("{}: key given twice, first at {}:{}:{} (YAML keeps only one "
+                                     "of them): remove one",
+                                     ChildPath(path, key), file, first->second.line + 1,
+                                     first->second.column + 1));
+      }
+      pending.emplace_back(entry.second, ChildPath(path, key));
+    }
+  }
 }
 
 }  // namespace
@@ -70,15 +109,25 @@ YAML::Node YamlReader::LoadFile(std::string* text) const {
 }
 
 std::string YamlReader::ReadText() const {
+  // A directory opens as a stream on Linux and throws from its first read.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(file_, ignored)) {
+    throw InputError({file_}, "is a directory, not a file");
+  }
   std::ifstream stream(file_);
   if (!stream) throw InputError({file_}, fmt::format("cannot open ({})", std::strerror(errno)));
-  return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  try {
+    return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  } catch (const std::ios_base::failure& error) {
+    throw InputError({file_}, fmt::format("cannot read ({})", error.what()));
+  }
 }
 
 YAML::Node YamlReader::LoadText(const std::string& content) const {
   try {
     YAML::Node root = YAML::Load(content);
     if (!root.IsDefined() || root.IsNull()) throw InputError({file_, 1, 1}, "the file is empty");
+    RefuseDuplicateKeys(file_, root);
     return root;
   } catch (const YAML::ParserException& e) {
     throw InputError({file_, e.mark.line + 1, e.mark.column + 1},

@@ -124,8 +124,31 @@ TEST(DiagnoseCommand, BadInputIsLocatedWithExitCodeTwoAndNoReport) {
                       "/models/diagnosis/base_bhm2.yaml -q --out " + stem.string(),
                   true);
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("force is zero throughout"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the force is 0 throughout"), std::string::npos) << run.output;
   EXPECT_FALSE(std::filesystem::exists(stem.string() + ".md"));
+}
+
+TEST(DiagnoseCommand, DataTooFewForTheBaseModelAreRefused) {
+  // Issue #18 item 9: a header-only file was diagnosed (e^2 = 0 % over no test), exit 0.
+  const std::string fit_data = kSource + "/tests/cli/data/fit/";
+  const auto stem = Scratch("too_few_for_the_base");
+  auto run = RunIsolab("diagnose " + fit_data + "bad_header_only.csv --base " + kSource +
+                           "/models/diagnosis/base_bhm2.yaml -q --out " + stem.string(),
+                       true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("bad_header_only.csv:1: a header and no samples"), std::string::npos)
+      << run.output;
+  // Six samples cannot determine the 3 shape coordinates and 4 stiffnesses of the base.
+  run = RunIsolab("diagnose " + fit_data + "bad_six_samples.csv --base " + fit_data +
+                      "three_laws_spec.yaml -q --out " + stem.string(),
+                  true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("three_laws_spec.yaml: 7 parameters to identify (3 shape coordinates "
+                            "and 4 stiffnesses) from 6 samples"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(std::filesystem::exists(stem.string() + ".md"));
+  EXPECT_FALSE(std::filesystem::exists(stem.string() + ".model.yaml"));
 }
 
 }  // namespace

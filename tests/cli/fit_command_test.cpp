@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -87,7 +88,8 @@ TEST(FitCommand, ACampaignOnOneSpecimenIsFittedAsOne) {
   const auto csv = TemporaryFile("campaign.csv");
   const auto run = RunIsolab("cyclic " + std::string(ISOLAB_SOURCE_DIR) +
                              "/models/diagnosis/cyclic_degradation.yaml -a 25,100,50 -n 2 "
-                             "--steps-per-cycle 200 --sequential --test-data " + csv.string());
+                             "--steps-per-cycle 200 --sequential --test-data " +
+                             csv.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   std::ifstream in(csv);
   std::string first, second;
@@ -126,6 +128,14 @@ TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
       {"bad_never_reverses.csv", "test 'ramp': too short to identify anything"},
       {"bad_one_reversal.csv", "test 'once': too short to identify anything: 5 samples"},
       {"bad_time_repeats.csv", "bad_time_repeats.csv:5: column 'time': 2 does not increase"},
+      // Issue #18 item 9: these were fitted, "e^2 = 0 % over 0 tests" and "e^2 = 100 %", exit 0.
+      {"bad_header_only.csv", "bad_header_only.csv:1: a header and no samples"},
+      {"bad_constant_force.csv", "test 'u=50': the force is 3 throughout"},
+      {"bad_constant_displacement.csv", "test 'u=0': the displacement is 7 throughout"},
+      // Two elastoplastic components and a trilinear spring: 3 shape coordinates (uy, uy, uyh)
+      // and 4 stiffnesses (k0, k0, k1, k2) cannot be determined by 6 samples.
+      {"bad_six_samples.csv",
+       "7 parameters to identify (3 shape coordinates and 4 stiffnesses) from 6 samples"},
   };
   for (const Case& c : cases) {
     const auto output = TemporaryFile("bad.yaml");
@@ -135,6 +145,59 @@ TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
     EXPECT_EQ(run.exit_code, 2) << c.file << ": " << run.output;
     EXPECT_NE(run.output.find(c.message), std::string::npos) << c.file << ": " << run.output;
     EXPECT_FALSE(std::filesystem::exists(output)) << c.file;
+  }
+}
+
+TEST(FitCommand, AModelIsolabWouldRefuseIsNotWritten) {
+  // A linear spring's data (F = 0.5 u) need only the trilinear spring (k1 = k2 = 0.5): the
+  // elastoplastic components get k0 = 0, which isolab cyclic refuses (k0 must be > 0). The fit
+  // used to write that model and exit 0.
+  const auto output = isolab::testing::OwnTestFile("linear_spring.fitted.yaml");
+  const auto run =
+      RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
+                    " --budget 300 -q -o " + output.string(),
+                true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("three_laws_spec.yaml: the identified model is not one isolab can use "
+                            "(isolation.components["),
+            std::string::npos)
+      << run.output;
+  // Which of the two elastoplastic components is left without stiffness is the fit's choice.
+  EXPECT_NE(run.output.find("].k0 = 0 (must be > 0))"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(output));
+}
+
+TEST(FitCommand, BadSpecificationsAreLocatedBeforeTheFit) {
+  // They used to fail inside the fit ("internal error: uy = -3.6 (must be > 0)", exit 1), or be
+  // clamped silently (a start outside its bounds), or allocate without end (count: 999999999).
+  struct Case {
+    std::string component, message;
+  };
+  const Case cases[] = {
+      {"{type: elastoplastic, bounds: {uy: [-5, 10]}}",
+       "spec.yaml:3:41: components[0].bounds.uy[0]: uy = -5 (must be > 0)"},
+      {"{type: elastoplastic, fixed: {uy: -3}}",
+       "spec.yaml:3:39: components[0].fixed.uy: uy = -3 (must be > 0)"},
+      {"{type: elastoplastic, start: {uy: 500}, bounds: {uy: [1, 10]}}",
+       "spec.yaml:3:39: components[0].start.uy: 500 is outside its bounds [1, 10]"},
+      {"{type: thm1, bounds: {k1_ratio: [0.1, 3]}}",
+       "spec.yaml:3:43: components[0].bounds.k1_ratio[1]: k1_ratio = 3 (must be < 1)"},
+      {"{type: degrading_bhm2, fixed: {loss: 1}}",
+       "spec.yaml:3:42: components[0].fixed.loss: loss = 1 (must be in [0, 1))"},
+      {"{type: elastoplastic, count: 999999999}",
+       "spec.yaml:3:34: components[0].count: 999999999 (must be 1 to 100"},
+  };
+  const auto output = isolab::testing::OwnTestFile("bad_spec.fitted.yaml");
+  for (const Case& c : cases) {
+    const auto spec = isolab::testing::OwnTestFile("spec.yaml");
+    std::ofstream(spec) << "units: {force: kN, length: mm}\ncomponents:\n  - " << c.component
+                        << "\n";
+    const auto run = RunIsolab("fit " + Data("linear_spring.csv") + " --model " + spec.string() +
+                                   " --budget 300 -q -o " + output.string(),
+                               true);
+    EXPECT_EQ(run.exit_code, 2) << c.component << ": " << run.output;
+    EXPECT_NE(run.output.find(c.message), std::string::npos) << c.component << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output)) << c.component;
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
+#include "own_test_file.h"
 #include "reference_data.h"
 
 namespace {
@@ -167,6 +168,21 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.output.find(".csv, .h5 or .hdf5"), std::string::npos) << run.output;
   EXPECT_FALSE(std::filesystem::exists(txt));
+}
+
+TEST(SpectrumCommand, RecordWithA20kBHeaderLineExitsTwoAtOnce) {
+  // std::regex spent 12 s on this header line and then read the record (exit 0); now it is a
+  // located exit 2 at once.
+  const auto record = isolab::testing::OwnTestFile("long_header.at2");
+  std::ofstream(record) << "PEER NGA STRONG MOTION DATABASE RECORD\nNPTS= "
+                        << std::string(20000, '9') << "\nACCELERATION TIME SERIES IN UNITS OF G\n"
+                        << "NPTS=      3, DT=   .0100 SEC,\n  1.0  -2.0  3.0\n";
+  const auto run = RunIsolab("spectrum " + record.string() + " --periods 1 -q", true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("long_header.at2:2: a line of 20006 characters where the record's "
+                            "header is sought"),
+            std::string::npos)
+      << run.output;
 }
 
 }  // namespace

@@ -67,6 +67,17 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_non_scalar_key.yaml", ":4:52:", "a key must be a plain name");
 }
 
+TEST(ModelFile, DuplicateKeysAreRefusedWithBothLocations) {
+  // yaml-cpp kept both and every lookup found the first: k0 = 3 and the second structure (a tenth
+  // of the mass) were silently ignored.
+  ExpectError("bad_duplicate_key.yaml", ":4:52:",
+              "isolation.components[0].k0: key given twice, first at " +
+                  DataFile("bad_duplicate_key.yaml") + ":4:38 (YAML keeps only one");
+  ExpectError(
+      "bad_duplicate_section.yaml", ":8:1:",
+      "structure: key given twice, first at " + DataFile("bad_duplicate_section.yaml") + ":2:1 ");
+}
+
 TEST(ModelFile, BadOutputSelectionIsLocated) {
   ExpectError("bad_output_every.yaml",
               ":9:31:", "output.every: 0 (expected a whole number of steps >= 1)");
@@ -115,8 +126,8 @@ TEST(ModelFile, ReadsMechanicalFormAndUnits) {
 // law's own post-slip stiffness W/R then gives back: 2 pi sqrt(m / (W/R)) with m = W/g.
 TEST(ModelFile, FrictionPendulumTakesItsPeriodInsteadOfItsRadius) {
   const ModelFile model = LoadModelFile(DataFile("good_pendulum_period.yaml"));
-  const auto values = model.isolation.components()[0].parameters.Values(
-      hysteresis::ParameterForm::kMechanical);
+  const auto values =
+      model.isolation.components()[0].parameters.Values(hysteresis::ParameterForm::kMechanical);
   const double radius = values[1];
   EXPECT_NEAR(radius, 9806.65 * 16.0 / (4.0 * std::numbers::pi * std::numbers::pi), 1e-9);
   const double mass = 1471.0 / 9806.65, post_slip_stiffness = 1471.0 / radius;
@@ -136,6 +147,15 @@ TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {
       message.find("bad_include_cycle_a.yaml -> " + DataFile("bad_include_cycle_b.yaml") + " -> "),
       std::string::npos)
       << message;
+}
+
+TEST(ModelFile, ADirectoryIsAnInputErrorNotACrash) {
+  // The fuzz target for study files found it: a directory opened as a stream and its first read
+  // threw ios_base::failure, reported as "internal error" with exit code 1.
+  EXPECT_NE(ErrorOf("bad_include_directory.yaml").find(": is a directory, not a file"),
+            std::string::npos)
+      << ErrorOf("bad_include_directory.yaml");
+  EXPECT_THROW(LoadModelFile(std::string(ISOLAB_TEST_DATA_DIR) + "/io/data"), InputError);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/io/plan_analysis.h"
+#include "own_test_file.h"
 
 namespace isolab::io {
 namespace {
@@ -52,7 +53,7 @@ std::string Model(const std::string& line = "", const std::string& with = "") {
 }
 
 std::string Write(const std::string& text, const std::string& name = "plan.yaml") {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = (testing::OwnTestDirectory() / name).string();
   std::ofstream(path) << text;
   return path;
 }
@@ -71,7 +72,8 @@ std::string ErrorOf(const std::string& text, bool prepare = false) {
 }
 
 void ExpectError(const std::string& message, const std::string& location, const std::string& text) {
-  EXPECT_EQ(message.rfind(::testing::TempDir() + "plan.yaml" + location, 0), 0u) << message;
+  EXPECT_EQ(message.rfind((testing::OwnTestDirectory() / "plan.yaml").string() + location, 0), 0u)
+      << message;
   EXPECT_NE(message.find(text), std::string::npos) << message;
 }
 
@@ -164,7 +166,7 @@ TEST(PlanModelFile, APairWithDifferentStepsOrLengthsIsALocatedError) {
   // The same step, a shorter record: the first 1000 samples of seed 3.
   std::ifstream in(kGroundMotions + "h2_fwn_firm_seed3.at2");
   std::string header, line;
-  std::ofstream short_record(::testing::TempDir() + "short.at2");
+  std::ofstream short_record((testing::OwnTestDirectory() / "short.at2").string());
   for (int i = 0; i < 4 && std::getline(in, line); ++i) {
     if (i == 3) line = "NPTS=    1000, DT=   0.01000 SEC,";
     short_record << line << "\n";

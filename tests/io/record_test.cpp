@@ -4,8 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "isolab/core/errors.h"
+#include "isolab/io/units.h"
+#include "own_test_file.h"
 #include "reference_data.h"
 
 namespace isolab::io {
@@ -23,6 +27,17 @@ std::string ErrorOf(const std::string& path, const RecordOptions& options = {}) 
   }
   ADD_FAILURE() << path << " read without error";
   return {};
+}
+
+// A record written into a directory of the test's own, its second line `long_line`.
+std::string RecordWithLine(const std::string& name, const std::string& long_line) {
+  const std::filesystem::path path = testing::OwnTestFile(name);
+  std::ofstream(path) << "PEER NGA STRONG MOTION DATABASE RECORD\n"
+                      << long_line << "\n"
+                      << "ACCELERATION TIME SERIES IN UNITS OF G\n"
+                      << "NPTS=      3, DT=   .0100 SEC,\n"
+                      << "  1.0  -2.0  3.0\n";
+  return path.string();
 }
 
 struct FormatCase {
@@ -141,6 +156,66 @@ TEST(ReadRecord, BadRecordsNameFileLineAndProblem) {
   EXPECT_NE(ErrorOf(DataFile("bad_record_uneven.txt"), {"g", 0}).find("uniform step"),
             std::string::npos);
   EXPECT_NE(ErrorOf(DataFile("no_such_record.at2")).find("cannot open"), std::string::npos);
+  // A directory used to read as an empty record.
+  EXPECT_NE(ErrorOf(DataFile("")).find("is a directory, not a record"), std::string::npos);
+}
+
+TEST(ReadRecord, LongHeaderLinesAreALocatedErrorNotACrash) {
+  // std::regex took 12 s on the first (20 kB of digits after "NPTS=") and overflowed the stack
+  // on the second (200 kB of letters): now both are refused at their line at once.
+  const std::string digits = RecordWithLine("digits.at2", "NPTS= " + std::string(20000, '9'));
+  EXPECT_NE(ErrorOf(digits).find("digits.at2:2: a line of 20006 characters where the record's "
+                                 "header is sought (header lines have at most 4096)"),
+            std::string::npos)
+      << ErrorOf(digits);
+  const std::string letters = RecordWithLine("letters.at2", std::string(200000, 'a'));
+  EXPECT_NE(ErrorOf(letters).find("letters.at2:2: a line of 200000 characters"), std::string::npos);
+  // Up to the bound a line is read: a 4000-character description changes nothing.
+  const Record long_description =
+      ReadRecord(RecordWithLine("description.at2", std::string(4000, '1') + " NPTS= 5"));
+  EXPECT_EQ(long_description.values, (std::vector<double>{1.0, -2.0, 3.0}));
+  EXPECT_DOUBLE_EQ(long_description.dt, 0.01);
+}
+
+TEST(ReadRecord, UnitsComeFromTheUnitsStatementOnly) {
+  // "UNITS OF FT/S^2" is read as ft/s^2 although the description mentions "0.3 g"; 1 ft/s^2 is
+  // 0.3048 m/s^2 exactly (the international foot).
+  const Record feet = ReadRecord(DataFile("record_ft_beside_g.at2"));
+  EXPECT_EQ(feet.units, "ft/s^2");
+  EXPECT_EQ(feet.units_source, "header");
+  EXPECT_DOUBLE_EQ(UnitSystem("N", "m", "s").Convert(1.0, feet.units, dimension::kAcceleration),
+                   0.3048);
+  // A statement naming no unit isolab knows is refused at its line, whatever else the header says.
+  const std::string furlongs = ErrorOf(DataFile("bad_record_units_furlongs.at2"));
+  EXPECT_NE(furlongs.find("bad_record_units_furlongs.at2:3: the units statement 'UNITS OF "
+                          "FURLONGS' names no acceleration unit isolab knows"),
+            std::string::npos)
+      << furlongs;
+  // A "g" in a description is no units statement: the units must be given, and then apply.
+  EXPECT_NE(ErrorOf(DataFile("record_g_only_in_description.at2"))
+                .find("the record's units are not in its header"),
+            std::string::npos);
+  const Record given =
+      ReadRecord(DataFile("record_g_only_in_description.at2"), {"g", 0, "--units"});
+  EXPECT_EQ(given.units, "g");
+  EXPECT_EQ(given.units_source, "--units");
+  // Given units that disagree with the statement are still refused (#13's rule).
+  EXPECT_NE(ErrorOf(DataFile("record_ft_beside_g.at2"), {"g", 0, "--units"})
+                .find("its header gives the units as ft/s^2 but --units gives g"),
+            std::string::npos);
+  // PEER's "CM/S/S" and a CSV value column's "(CM/SEC/SEC)" (not its time column's "(s)").
+  const std::string bundled_gal = std::string(ISOLAB_TEST_DATA_DIR) + "/data/pulse_tp2_gal.at2";
+  EXPECT_EQ(ReadRecord(bundled_gal).units, "cm/s^2");
+  EXPECT_EQ(ReadRecord(DataFile("record_csv_time_and_units.csv")).units, "cm/s^2");
+}
+
+TEST(ReadRecord, DeclaredCountBeyond64BitsIsALocatedError) {
+  // It used to be read as -9223372036854775808 points.
+  const std::string error = ErrorOf(DataFile("bad_record_npts_overflow.at2"));
+  EXPECT_NE(error.find("bad_record_npts_overflow.at2:4: '99999999999999999999' points is out of "
+                       "range"),
+            std::string::npos)
+      << error;
 }
 
 }  // namespace
