@@ -11,6 +11,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/io/plan_analysis.h"
+#include "scratch_folder.h"
 
 namespace isolab::io {
 namespace {
@@ -51,8 +52,16 @@ std::string Model(const std::string& line = "", const std::string& with = "") {
   return text;
 }
 
+// A folder of this process's own: ctest runs these tests in parallel processes (a shared
+// /tmp/plan.yaml was a race).
+std::string Folder() {
+  static const std::string folder =
+      testing::ScratchFolder("isolab_plan_model_file_test").string() + "/";
+  return folder;
+}
+
 std::string Write(const std::string& text, const std::string& name = "plan.yaml") {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = Folder() + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -71,7 +80,7 @@ std::string ErrorOf(const std::string& text, bool prepare = false) {
 }
 
 void ExpectError(const std::string& message, const std::string& location, const std::string& text) {
-  EXPECT_EQ(message.rfind(::testing::TempDir() + "plan.yaml" + location, 0), 0u) << message;
+  EXPECT_EQ(message.rfind(Folder() + "plan.yaml" + location, 0), 0u) << message;
   EXPECT_NE(message.find(text), std::string::npos) << message;
 }
 
@@ -164,7 +173,7 @@ TEST(PlanModelFile, APairWithDifferentStepsOrLengthsIsALocatedError) {
   // The same step, a shorter record: the first 1000 samples of seed 3.
   std::ifstream in(kGroundMotions + "h2_fwn_firm_seed3.at2");
   std::string header, line;
-  std::ofstream short_record(::testing::TempDir() + "short.at2");
+  std::ofstream short_record(Folder() + "short.at2");
   for (int i = 0; i < 4 && std::getline(in, line); ++i) {
     if (i == 3) line = "NPTS=    1000, DT=   0.01000 SEC,";
     short_record << line << "\n";
