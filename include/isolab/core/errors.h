@@ -48,4 +48,11 @@ class InputError : public std::runtime_error {
   SourceLocation location_;
 };
 
+// The input is fine but the machine ran out of something: disk space (a write failed), memory, or
+// one of isolab's own work and memory limits. The command line turns it into exit code 3.
+class ResourceError : public std::runtime_error {
+ public:
+  ResourceError(const std::string& where, const std::string& what);
+};
+
 }  // namespace isolab
