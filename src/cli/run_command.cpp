@@ -13,6 +13,7 @@
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/model_summary.h"
+#include "isolab/io/output_check.h"
 #include "isolab/io/plan_model_file.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
@@ -325,6 +326,14 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   // Everything that can be refused is refused before the run, not after it.
   io::CheckResultsPath(output);
+  std::vector<std::string> inputs = model.included_files;
+  inputs.push_back(options.model);
+  if (!options.record.empty()) {
+    inputs.push_back(options.record);
+  } else if (model.excitation.ground_motion) {
+    inputs.push_back(model.excitation.ground_motion->file);
+  }
+  io::CheckOutputs(inputs, {output});
   if (options.plot) {
     if (std::filesystem::path(output).extension() == ".csv") {
       throw InputError({"--plot"},

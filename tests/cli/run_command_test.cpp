@@ -17,6 +17,7 @@
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
 #include "reference_data.h"
+#include "scratch_folder.h"
 
 namespace {
 
@@ -29,9 +30,10 @@ std::string Data(const std::string& name) {
   return std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/" + name;
 }
 
+// In a folder of this process's own: ctest runs each test in its own process, several at a time
+// (two tests once raced on one /tmp/isolab_run_test/slip.h5).
 std::filesystem::path TemporaryFile(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_run_test";
-  std::filesystem::create_directories(directory);
+  static const std::filesystem::path directory = isolab::testing::ScratchFolder("isolab_run_test");
   const auto path = directory / name;
   std::filesystem::remove(path);
   return path;
@@ -375,8 +377,7 @@ TEST(RunCommand, ResidualDisplacementAfterFreeVibrationMatchesTheClosedForm) {
 }
 
 TEST(RunCommand, OutputPathsThatAreNotRegularFilesAreRefused) {
-  const auto folder = std::filesystem::temp_directory_path() / "isolab_run_test" / "paths";
-  std::filesystem::remove_all(folder);
+  const auto folder = TemporaryFile("paths");
   std::filesystem::create_directories(folder);
   const std::string run = "run " + Data("run_base.yaml") + " -o ";
   const auto fifo = folder / "pipe.h5";
