@@ -376,6 +376,27 @@ TEST(RunCommand, ResidualDisplacementAfterFreeVibrationMatchesTheClosedForm) {
   EXPECT_NEAR(none["residual_isolator_displacement"].get<double>(), at_release, 1e-5 * at_release);
 }
 
+// A write that fails (a full disk; here a real "File too large" from the shell's ulimit -f):
+// exit code 3 with the system's reason, the previous results untouched, no temporary file, and
+// no crash at exit (HDF5 1.10 once segfaulted after its failed close).
+TEST(RunCommand, AFailedWriteIsAResourceErrorAndKeepsThePreviousResults) {
+  for (const char* name : {"full.h5", "full.csv"}) {
+    const auto output = TemporaryFile(name);
+    { std::ofstream(output) << "previous"; }
+    const auto run = isolab::testing::RunCommandLine(
+        "sh -c \"ulimit -f 100; trap '' XFSZ; exec " + std::string(ISOLAB_BINARY) + " run " +
+        Source("models/buildings/five_story_table9.yaml") + " -o " + output.string() +
+        "\" 2>&1 >/dev/null");
+    EXPECT_EQ(run.exit_code, 3) << name << ": " << run.output;
+    EXPECT_NE(run.output.find("File too large"), std::string::npos) << run.output;
+    std::ifstream in(output);
+    std::string text;
+    std::getline(in, text);
+    EXPECT_EQ(text, "previous") << name;
+    EXPECT_TRUE(isolab::testing::LeftoverTemporaries(output).empty()) << name;
+  }
+}
+
 TEST(RunCommand, OutputPathsThatAreNotRegularFilesAreRefused) {
   const auto folder = TemporaryFile("paths");
   std::filesystem::create_directories(folder);
