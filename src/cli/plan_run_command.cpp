@@ -146,6 +146,7 @@ int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   io::PlanOverrides overrides;
   overrides.scale = options.scale;
   overrides.dt = options.dt;
+  overrides.max_steps = options.max_steps;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {
     overrides.free_vibration = ParseFreeVibration(options.free_vibration, model.units);

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "free_vibration_option.h"
@@ -272,6 +273,10 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                       "with the file's when it gives one");
   command->add_option("--scale", options.scale, "Scale factor of the ground motion");
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
+  command
+      ->add_option("--max-steps", options.max_steps,
+                   "Refuse runs of more analysis steps than this (default 10^7), before they start")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{std::numeric_limits<int>::max()}));
   command->add_option("--free-vibration", options.free_vibration,
                       "Free vibration after the excitation: auto (5 x the longest period; the "
                       "default), a time in s, or 0");
@@ -350,6 +355,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   overrides.scale = options.scale;
   overrides.dt = options.dt;
+  overrides.max_steps = options.max_steps;
   overrides.fixed_base = options.fixed_base;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {

@@ -397,6 +397,42 @@ TEST(RunCommand, AFailedWriteIsAResourceErrorAndKeepsThePreviousResults) {
   }
 }
 
+// A dt or a duration wrong by orders of magnitude is refused before anything is allocated: the
+// step count (once an int that overflowed: duration 1e9 "completed" at once) against the limit.
+TEST(RunCommand, RunsOfTooManyStepsAreRefusedBeforeTheyStart) {
+  const auto output = TemporaryFile("too_many_steps.h5");
+  const std::string run = "run " + Data("run_base.yaml") + " -o " + output.string();
+  const auto tiny_dt = RunIsolab(run + " --dt 1e-7", true);
+  EXPECT_EQ(tiny_dt.exit_code, 2);
+  EXPECT_EQ(tiny_dt.output.rfind("isolab: --dt: the run would take 2.13e+08 steps", 0), 0u)
+      << tiny_dt.output;
+  EXPECT_NE(tiny_dt.output.find("--max-steps"), std::string::npos) << tiny_dt.output;
+  // 12 s of record (1201 samples of 0.01 s, its header) and 9.3 s of free vibration (5 isolated
+  // periods): 2133 steps. A limit below that refuses, one above runs.
+  const auto limited = RunIsolab(run + " --max-steps 2000", true);
+  EXPECT_EQ(limited.exit_code, 2);
+  EXPECT_NE(limited.output.find("2.13e+03 steps"), std::string::npos) << limited.output;
+  EXPECT_FALSE(std::filesystem::exists(output));
+  EXPECT_EQ(RunIsolab(run + " --max-steps 2200").exit_code, 0);
+
+  const auto model = TemporaryFile("long.yaml");
+  {
+    std::ifstream in(Data("run_base.yaml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    yaml.replace(yaml.find("{file: ../../../ground_motions/"),
+                 std::string("{file: ../../../ground_motions/").size(),
+                 "{file: " + Source("ground_motions/"));
+    yaml.replace(yaml.find("analysis: {dt: 0.01}"), std::string("analysis: {dt: 0.01}").size(),
+                 "analysis: {dt: 0.01, duration: 1e9}");
+    std::ofstream(model) << yaml;
+  }
+  const auto long_run = RunIsolab("run " + model.string() + " -o " + output.string(), true);
+  EXPECT_EQ(long_run.exit_code, 2);
+  EXPECT_NE(long_run.output.find("1e+11 steps"), std::string::npos) << long_run.output;
+}
+
 TEST(RunCommand, OutputPathsThatAreNotRegularFilesAreRefused) {
   const auto folder = TemporaryFile("paths");
   std::filesystem::create_directories(folder);
