@@ -321,6 +321,7 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
 }
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
+  io::CheckInputFiles({options.model});
   if (io::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
   const io::ModelFile model = io::LoadModelFile(options.model);
   std::string output = options.output;

@@ -34,7 +34,19 @@ bool SameOutput(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+void CheckInputFiles(const std::vector<std::string>& inputs) {
+  for (const std::string& input : inputs) {
+    struct stat status {};
+    if (stat(input.c_str(), &status) != 0 || S_ISREG(status.st_mode)) continue;
+    throw InputError({input}, S_ISDIR(status.st_mode)
+                                  ? "is a folder, not a file"
+                                  : "is not a regular file (a device or a pipe): isolab reads "
+                                    "its inputs only from files");
+  }
+}
+
 void CheckOutputs(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+  CheckInputFiles(inputs);
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const std::string& output = outputs[k];
     CheckOutputPath(output);

@@ -87,6 +87,15 @@ TEST(OutputRefusal, RunRefusesTheModelItsRecordAndItsIncludedFile) {
   EXPECT_TRUE(fs::exists(folder / "m.h5"));
 }
 
+// /dev/zero as a model or a record was read without end (memory growing ~170 MB/s).
+TEST(OutputRefusal, InputsThatAreNotRegularFilesAreRefusedBeforeReading) {
+  const fs::path folder = FreshFolder();
+  ExpectRefused(folder, "run /dev/zero -o m.h5", "/dev/zero: is not a regular file");
+  ExpectRefused(folder, "run m.yaml --record /dev/zero -o m.h5",
+                "/dev/zero: is not a regular file");
+  ExpectRefused(folder, "spectrum /dev/zero -o s.csv", "/dev/zero: is not a regular file");
+}
+
 TEST(OutputRefusal, SpectrumRefusesItsRecordAndTwoNamesOfOneOutput) {
   const fs::path folder = FreshFolder();
   fs::create_hard_link(folder / "rec.at2", folder / "rec.csv");

@@ -9,10 +9,14 @@
 
 namespace isolab::io {
 
-// Throws InputError({output}, ...) naming the input when an output is the same file as an
-// input, or the same file as another output; and for any output CheckOutputPath refuses (a
-// missing folder, a device, a folder, a link). Inputs that do not exist are ignored (their
-// readers say so).
+// Throws InputError({input}, ...) for an input that exists and is not a regular file (after
+// symbolic links): /dev/zero or a pipe would be read without end. Inputs that do not exist are
+// left to their readers, which say so.
+void CheckInputFiles(const std::vector<std::string>& inputs);
+
+// CheckInputFiles, then throws InputError({output}, ...) naming the input when an output is the
+// same file as an input, or the same file as another output; and for any output CheckOutputPath
+// refuses (a missing folder, a device, a folder, a link).
 void CheckOutputs(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
 
 }  // namespace isolab::io
