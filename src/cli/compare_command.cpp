@@ -62,6 +62,8 @@ void WriteSummary(const CompareOptions& options, const io::StudyFile& study_file
   }
 }
 
+constexpr int kThreadsPerHardwareThread = 8;
+
 std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, bool mpi) {
   if (mpi) {
     if (options.jobs > 0 && !options.quiet && study::LaunchRank() == 0) {
@@ -102,6 +104,16 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
 
 int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   const bool mpi = study::LaunchedByMpirun();
+  // More threads than this only share the same cores, each with its own run buffers: -j 1000000
+  // once started 4000 threads.
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (!mpi && options.jobs > kThreadsPerHardwareThread * hardware) {
+    throw InputError({"--jobs"},
+                     fmt::format("{} threads on {} hardware threads: at most {} "
+                                 "({} per hardware thread)",
+                                 options.jobs, hardware, kThreadsPerHardwareThread * hardware,
+                                 kThreadsPerHardwareThread));
+  }
   io::StudyFile study_file;
   std::string directory;
   try {

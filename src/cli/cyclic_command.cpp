@@ -15,6 +15,7 @@
 #include "isolab/io/cyclic_campaign.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/model_file.h"
+#include "isolab/io/output_check.h"
 
 namespace isolab::cli {
 namespace {
@@ -214,10 +215,21 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
     }
   }
 
+  // The loops are cheap; their outputs are checked before any is written.
+  std::vector<std::string> inputs, outputs;
+  for (const io::ModelFile& model : models) {
+    inputs.push_back(model.path);
+    inputs.insert(inputs.end(), model.included_files.begin(), model.included_files.end());
+  }
   if (!options.csv.empty()) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      WriteLoopCsv(runs[i], CsvPath(options.csv, runs[i], i, runs.size() > 1));
+      outputs.push_back(CsvPath(options.csv, runs[i], i, runs.size() > 1));
     }
+  }
+  if (!options.test_data.empty()) outputs.push_back(options.test_data);
+  io::CheckOutputs(inputs, outputs);
+  if (!options.csv.empty()) {
+    for (std::size_t i = 0; i < runs.size(); ++i) WriteLoopCsv(runs[i], outputs[i]);
   }
 
   if (!options.test_data.empty()) {

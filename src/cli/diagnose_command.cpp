@@ -15,6 +15,7 @@
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/fit_spec_file.h"
 #include "isolab/io/fitted_model_file.h"
+#include "isolab/io/output_check.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
@@ -53,6 +54,13 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
 
 void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   const io::FitSpec base = io::LoadFitSpec(options.base);
+  const std::string stem =
+      !options.out.empty()
+          ? options.out
+          : std::filesystem::path(options.data.front()).replace_extension().string() + ".diagnosis";
+  std::vector<std::string> inputs = options.data;
+  inputs.push_back(options.base);
+  io::CheckOutputs(inputs, {stem + ".model.yaml", stem + ".json", stem + ".md"});
   io::CyclicTestSet set =
       io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
   const identification::FitData data = diagnosis::AllCycles(
@@ -82,10 +90,6 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
     throw InputError({options.base}, error.what());
   }
 
-  const std::string stem =
-      !options.out.empty()
-          ? options.out
-          : std::filesystem::path(options.data.front()).replace_extension().string() + ".diagnosis";
   DiagnosisContext context{options.data, options.base, stem + ".model.yaml", options.seed,
                            base.units};
 

@@ -16,6 +16,7 @@
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/fit_spec_file.h"
 #include "isolab/io/fitted_model_file.h"
+#include "isolab/io/output_check.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
@@ -101,6 +102,13 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
 
 void RunFitCommand(const FitOptions& options, std::ostream& out) {
   const io::FitSpec spec = io::LoadFitSpec(options.spec);
+  const std::string output =
+      !options.output.empty()
+          ? options.output
+          : std::filesystem::path(options.spec).stem().string() + ".fitted.yaml";
+  std::vector<std::string> inputs = options.data;
+  inputs.push_back(options.spec);
+  io::CheckOutputs(inputs, {output});
   io::CyclicTestSet set =
       io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, spec.units);
   const bool one_specimen = io::OneSpecimen(options.specimen, set.one_specimen);
@@ -133,10 +141,6 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     };
   }
   const FitResult result = identification::Fit(*model, data, fit);
-  const std::string output =
-      !options.output.empty()
-          ? options.output
-          : std::filesystem::path(options.spec).stem().string() + ".fitted.yaml";
   WriteFittedModel(output, spec, options, result, data);
   const auto energy = EnergyTable(model->Assembly(result.point, result.amplitudes), data);
 

@@ -1,5 +1,6 @@
 // isolab: time-history analysis of base-isolated structures. Exit codes: 0 success, 1 a failure
-// inside isolab, 2 bad input (file, option, parameter), with a message saying where and why.
+// of the run or inside isolab, 2 bad input (file, option, parameter), 3 a resource exhausted (a
+// full disk, memory, a work limit), with a message saying where and why.
 //
 // Two executables from this file. `isolab`, the front, runs the commands that need no more than
 // the solver and its files (run, cyclic, synth, spectrum, shaketable) and starts without MPI,
@@ -14,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <new>
 #include <string_view>
 #include <utility>
 
@@ -126,6 +128,13 @@ int main(int argc, char** argv) {
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;
+  } catch (const isolab::ResourceError& error) {
+    std::cerr << "isolab: " << error.what() << "\n";
+    return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "isolab: out of memory (the model, the record or the output selection is too "
+                 "large for this computer's memory)\n";
+    return 3;
   } catch (const std::exception& error) {
     std::cerr << "isolab: internal error: " << error.what() << "\n";
     return 1;

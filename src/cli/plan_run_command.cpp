@@ -9,6 +9,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/io/free_vibration_text.h"
 #include "isolab/io/model_summary.h"
+#include "isolab/io/output_check.h"
 #include "isolab/io/plan_analysis.h"
 
 namespace isolab::cli {
@@ -136,9 +137,16 @@ int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
                  : std::filesystem::path(options.model).stem().string() + ".h5";
   }
   io::CheckPlanResultsPath(output);
+  std::vector<std::string> inputs{options.model};
+  if (model.ground_motion) {
+    inputs.push_back(model.ground_motion->h1.file);
+    if (model.ground_motion->h2) inputs.push_back(model.ground_motion->h2->file);
+  }
+  io::CheckOutputs(inputs, {output});
   io::PlanOverrides overrides;
   overrides.scale = options.scale;
   overrides.dt = options.dt;
+  overrides.max_steps = options.max_steps;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {
     overrides.free_vibration =

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "isolab/core/errors.h"
@@ -13,6 +14,7 @@
 #include "isolab/io/free_vibration_text.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/model_summary.h"
+#include "isolab/io/output_check.h"
 #include "isolab/io/plan_model_file.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
@@ -274,6 +276,10 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                       "with the file's when it gives one");
   command->add_option("--scale", options.scale, "Scale factor of the ground motion");
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
+  command
+      ->add_option("--max-steps", options.max_steps,
+                   "Refuse runs of more analysis steps than this (default 10^7), before they start")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{std::numeric_limits<int>::max()}));
   command->add_option("--free-vibration", options.free_vibration,
                       "Free vibration after the excitation: auto (5 x the longest period; the "
                       "default), a time in s, or 0");
@@ -318,6 +324,7 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
 }
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
+  io::CheckInputFiles({options.model});
   if (io::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
   const io::ModelFile model = io::LoadModelFile(options.model);
   std::string output = options.output;
@@ -328,6 +335,14 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   // Everything that can be refused is refused before the run, not after it.
   io::CheckResultsPath(output);
+  std::vector<std::string> inputs = model.included_files;
+  inputs.push_back(options.model);
+  if (!options.record.empty()) {
+    inputs.push_back(options.record);
+  } else if (model.excitation.ground_motion) {
+    inputs.push_back(model.excitation.ground_motion->file);
+  }
+  io::CheckOutputs(inputs, {output});
   if (options.plot) {
     if (std::filesystem::path(output).extension() == ".csv") {
       throw InputError({"--plot"},
@@ -344,6 +359,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   overrides.scale = options.scale;
   overrides.dt = options.dt;
+  overrides.max_steps = options.max_steps;
   overrides.fixed_base = options.fixed_base;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {

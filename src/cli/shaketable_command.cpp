@@ -19,6 +19,7 @@
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/model_file.h"
+#include "isolab/io/output_check.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
@@ -94,6 +95,22 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
 
 void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   const io::ModelFile model = io::LoadModelFile(options.model);
+  const std::string results_path =
+      !options.predict ? std::string()
+      : !options.results.empty()
+          ? options.results
+          : std::filesystem::path(options.data).stem().string() + ".predicted.h5";
+  // Every output is checked before the data are read and the prediction runs, not after.
+  std::vector<std::string> outputs;
+  for (const std::string& path : {options.isolator, options.record, results_path,
+                                  options.predict ? options.comparison : std::string()}) {
+    if (!path.empty()) outputs.push_back(path);
+  }
+  std::vector<std::string> inputs = model.included_files;
+  inputs.push_back(options.model);
+  inputs.push_back(options.data);
+  io::CheckOutputs(inputs, outputs);
+  if (!results_path.empty()) io::CheckResultsPath(results_path);
   const std::vector<double> masses = LevelMasses(model);
   const io::UnitSystem& units = model.units;
   const Measured m = ReadMeasured(options, units, masses.size());
@@ -125,7 +142,6 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
 
   std::vector<Row> rows;
   Series predicted_u, predicted_roof, predicted_shear;
-  std::string results_path;
   if (options.predict) {
     const std::string record_path =
         !options.record.empty() ? options.record
@@ -155,9 +171,6 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     }
     if (options.record.empty()) std::filesystem::remove(record_path);
     if (!summary.ok()) throw std::runtime_error("the prediction stopped: " + summary.message);
-    results_path = !options.results.empty()
-                       ? options.results
-                       : std::filesystem::path(options.data).stem().string() + ".predicted.h5";
     Series at(m.time.size());
     for (std::size_t k = 0; k < at.size(); ++k) at[k] = m.time[k] - m.time.front();
     const int rows_written = response.rows_written;

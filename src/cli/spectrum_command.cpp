@@ -13,6 +13,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
 #include "isolab/io/atomic_file.h"
+#include "isolab/io/output_check.h"
 #include "isolab/io/record.h"
 #include "isolab/io/spectrum_file.h"
 #include "isolab/io/units.h"
@@ -133,8 +134,8 @@ Inputs ParseInputs(const SpectrumOptions& options) {
                                            ".csv, .h5 or .hdf5",
                                            output));
     }
-    io::CheckOutputPath(output);  // before a long constant-ductility scan, not after it
   }
+  io::CheckOutputs({options.record}, options.outputs);  // before a long scan, not after it
   if (options.plot && options.outputs.empty()) {
     throw InputError({"--plot"},
                      "needs an output file for the plot script to read (-o OUT.csv "

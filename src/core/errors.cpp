@@ -24,4 +24,7 @@ InputError::InputError(SourceLocation location, const std::string& what)
     : std::runtime_error(fmt::format("{}: {}", location.Describe(), what)),
       location_(std::move(location)) {}
 
+ResourceError::ResourceError(const std::string& where, const std::string& what)
+    : std::runtime_error(fmt::format("{}: {}", where, what)) {}
+
 }  // namespace isolab

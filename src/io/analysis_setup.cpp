@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "isolab/core/errors.h"
 #include "isolab/io/record.h"
@@ -126,7 +127,8 @@ AppliedRecord ApplyRecord(const GroundMotionSection& motion, const std::string& 
   // Records keep their step in seconds; the model gives a single column's dt in its own unit.
   const double dt_seconds = motion.dt * units.SiFactor(dimension::kTime);
   const Record record =
-      data ? *data : ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
+      data ? *data
+           : ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
   double to_model = 0.0;
   try {
     to_model = units.Convert(motion.scale, record.units, dimension::kAcceleration);
@@ -143,6 +145,22 @@ AppliedRecord ApplyRecord(const GroundMotionSection& motion, const std::string& 
           record.dt,
           motion.scale,
           record.Peak() * std::abs(to_model)};
+}
+
+integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,
+                               const std::string& where) {
+  const double steps = std::round(duration / dt);
+  // int is the integrators' step counter: no limit may pass it.
+  const std::int64_t limit = std::min<std::int64_t>(max_steps, std::numeric_limits<int>::max());
+  if (!(steps <= static_cast<double>(limit))) {
+    throw InputError(
+        {where}, fmt::format("the run would take {:.3g} steps of dt = {:g} over {:g} (time unit "
+                             "of the model), more than the limit of {} steps: choose a larger dt "
+                             "or a shorter duration, or raise the limit with isolab run "
+                             "--max-steps N (at most {})",
+                             steps, dt, duration, limit, std::numeric_limits<int>::max()));
+  }
+  return {dt, static_cast<int>(steps)};
 }
 
 AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overrides) {
@@ -222,7 +240,7 @@ AnalysisSetup PrepareAnalysis(const ModelFile& model, const RunOverrides& overri
     setup.free_vibration = std::max(0.0, duration - setup.excitation_end);
   }
   setup.residual_window = std::min(setup.summary.LongestPeriod(), setup.free_vibration);
-  setup.grid = {dt, static_cast<int>(std::round(duration / dt))};
+  setup.grid = StepGrid(dt, duration, overrides.max_steps, overrides.dt ? "--dt" : model.path);
   return setup;
 }
 

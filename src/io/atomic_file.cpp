@@ -50,6 +50,15 @@ void CheckReplaceable(const std::string& path) {
   }
 }
 
+// Forces `path` (a file or a folder) to the disk; returns 0 or the errno of the failure.
+int SyncToDisk(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int result = fsync(fd) == 0 ? 0 : errno;
+  close(fd);
+  return result;
+}
+
 // Six random letters and digits: distinct for every temporary file of every process.
 std::string RandomTag() {
   static constexpr char kAlphabet[] =
@@ -110,11 +119,21 @@ AtomicFile::~AtomicFile() {
 
 void AtomicFile::Commit() {
   CheckReplaceable(path_);
+  // The content reaches the disk before the name does: after a crash or a power cut the target
+  // is the old file or the new one, never a new name on missing data.
+  // A failure here (EIO, ENOSPC on some file systems) is a lost output, reported as such.
+  if (const int error = SyncToDisk(temporary_); error != 0) {
+    throw ResourceError(
+        path_, fmt::format("cannot write {} to the disk ({})", temporary_, std::strerror(error)));
+  }
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
     throw InputError({path_},
                      fmt::format("cannot rename {} to it ({})", temporary_, std::strerror(errno)));
   }
   committed_ = true;
+  // The rename itself; the output is in place whatever this says (some file systems cannot sync
+  // a folder), so it is not an error.
+  SyncToDisk(Folder(path_));
 }
 
 void WriteTextFileAtomically(const std::string& path,
@@ -128,7 +147,7 @@ void WriteTextFileAtomically(const std::string& path,
     }
     write(stream);
     stream.flush();
-    if (!stream) throw InputError({path}, "write failed (disk full?)");
+    if (!stream) throw ResourceError(path, "the write failed (is the disk full?)");
   }
   file.Commit();
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 
 #include "isolab/core/errors.h"
@@ -48,6 +49,29 @@ hid_t Utf8StringType() {
   return type;
 }
 
+// Why the last HDF5 call on this thread failed, from HDF5's error stack: the system's reason for
+// a failed write ("File too large", "No space left on device") when there is one, else the
+// innermost description.
+std::string LastHdf5Cause() {
+  std::string cause;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* entry, void* data) -> herr_t {
+        auto& text = *static_cast<std::string*>(data);
+        const std::string description = entry->desc != nullptr ? entry->desc : "";
+        const std::string marker = "error message = '";
+        if (const auto at = description.find(marker); at != std::string::npos) {
+          const auto begin = at + marker.size();
+          text = description.substr(begin, description.find('\'', begin) - begin);
+          return 1;  // the system's reason: stop here
+        }
+        if (text.empty()) text = description;
+        return 0;
+      },
+      &cause);
+  return cause;
+}
+
 std::vector<const char*> Pointers(std::span<const std::string> values) {
   std::vector<const char*> pointers;
   pointers.reserve(values.size());
@@ -65,8 +89,11 @@ struct Hdf5File::Impl {
   H5E_auto2_t saved_handler = nullptr;
   void* saved_handler_data = nullptr;
 
+  // An HDF5 call failed: the disk is full, the file too large, or the disk failed.
   [[noreturn]] void Fail(const std::string& what) const {
-    throw InputError({output->path()}, fmt::format("cannot write ({})", what));
+    const std::string cause = LastHdf5Cause();
+    throw ResourceError(output->path(), fmt::format("cannot write ({}){}", what,
+                                                    cause.empty() ? "" : ": " + cause));
   }
   void Check(herr_t status, const std::string& what) const {
     if (status < 0) Fail(what);
@@ -83,7 +110,9 @@ struct Hdf5File::Impl {
 
   void Write(const std::string& name, const std::vector<std::size_t>& dims, hid_t type,
              const void* data, std::size_t count, const std::string& units) const {
-    if (Product(dims) != count) Fail(fmt::format("{}: {} values for its dimensions", name, count));
+    if (Product(dims) != count) {
+      throw std::logic_error(fmt::format("{}: {} values for its dimensions", name, count));
+    }
     Handle space(Space(dims), H5Sclose);
     Check(space.get(), "space of " + name);
     Handle dataset(
@@ -132,6 +161,12 @@ struct Hdf5File::Impl {
 };
 
 Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
+  // HDF5 1.10 (Debian 12) frees a file whose close failed (a full disk) but keeps its identifier,
+  // and its exit handler then closes it again: a crash after the error was reported (fixed in
+  // HDF5 1.14, HDFGroup/hdf5#2291). Without the handler nothing is closed twice; isolab closes
+  // every file it opens itself. Effective only when isolab is the first to use HDF5.
+  static const herr_t no_exit_handler = H5dont_atexit();
+  (void)no_exit_handler;
   Impl& s = *impl_;
   s.output.emplace(std::move(path));
   // HDF5 prints its error stack by default; errors here are reported through return codes. (The
@@ -264,8 +299,10 @@ Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns
 void Hdf5File::Commit() {
   Impl& s = *impl_;
   // Only the file itself may be open: an open dataset would keep the file from closing.
-  if (H5Fget_obj_count(s.file, H5F_OBJ_ALL | H5F_OBJ_LOCAL) > 1) {
-    s.Fail("objects still open at commit (a Rows outlived its writer)");
+  // (The files themselves are not counted: a file whose close failed may linger freed among them.)
+  constexpr unsigned kObjects = H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR;
+  if (H5Fget_obj_count(s.file, kObjects | H5F_OBJ_LOCAL) > 0) {
+    throw std::logic_error("objects still open at commit (a Rows outlived its writer)");
   }
   for (hid_t* plist : {&s.dataset_create, &s.group_create}) {
     H5Pclose(*plist);
@@ -298,7 +335,8 @@ void Hdf5File::Rows::Append(std::span<const double> values) {
   if (values.empty()) return;
   const std::size_t width = std::max<std::size_t>(columns_, 1);
   if (values.size() % width != 0) {
-    file_->Fail(fmt::format("{}: {} values are not whole rows of {}", name_, values.size(), width));
+    throw std::logic_error(
+        fmt::format("{}: {} values are not whole rows of {}", name_, values.size(), width));
   }
   const hsize_t added = values.size() / width;
   const int rank = columns_ == 0 ? 1 : 2;

@@ -44,7 +44,8 @@ std::string CycleTo(const std::string& other) {
 hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
                                            const std::string& path,
                                            const std::filesystem::path& directory,
-                                           const UnitSystem& units) {
+                                           const UnitSystem& units,
+                                           std::vector<std::string>* included_files) {
   reader.RequireMap(isolation, path);
   reader.CheckKeys(isolation, path, {"components", "file"});
   if (!isolation["file"]) {
@@ -72,6 +73,11 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
                 fmt::format("'{}' is in {} {} {}, the model in {} {} {}", other,
                             included.units.force(), included.units.length(), included.units.time(),
                             units.force(), units.length(), units.time()));
+  }
+  if (included_files) {
+    included_files->push_back(other);
+    included_files->insert(included_files->end(), included.included_files.begin(),
+                           included.included_files.end());
   }
   return included.isolation;
 }

@@ -184,7 +184,8 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   model.units = ReadUnits(reader, root);
   if (root["isolation"]) {
     model.isolation = ReadIsolation(reader, root["isolation"], "isolation",
-                                    std::filesystem::path(path).parent_path(), model.units);
+                                    std::filesystem::path(path).parent_path(), model.units,
+                                    &model.included_files);
   }
   if (root["structure"]) model.structure = ReadStructure(reader, root["structure"], model.units);
   if (root["excitation"])

@@ -22,11 +22,13 @@ hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::
                                           const std::string& path, const UnitSystem& units);
 
 // `{components: [...]}` or `{file: other.yaml}` (relative to `directory`, in the same `units`), at
-// key path `path` ("isolation", "variants[2].isolation").
+// key path `path` ("isolation", "variants[2].isolation"). The files it reads are appended to
+// `included_files` when given.
 hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
                                            const std::string& path,
                                            const std::filesystem::path& directory,
-                                           const UnitSystem& units);
+                                           const UnitSystem& units,
+                                           std::vector<std::string>* included_files = nullptr);
 
 StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
                                const UnitSystem& units);

@@ -106,7 +106,7 @@ PlanAnalysisSetup PreparePlanAnalysis(const PlanModelFile& model, const PlanOver
         choice.automatic ? kAutomaticFreeVibrationPeriods * setup.isolated_period : choice.duration;
     duration = setup.excitation_end + setup.free_vibration;
   }
-  setup.grid = {dt, static_cast<int>(std::round(duration / dt))};
+  setup.grid = StepGrid(dt, duration, overrides.max_steps, overrides.dt ? "--dt" : model.path);
   return setup;
 }
 

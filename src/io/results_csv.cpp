@@ -76,8 +76,8 @@ class CsvSink final : public ResultsWriter::Sink {
   CsvSink(const std::string& path, const std::vector<Series>& series)
       : path_(path), series_(series), rows_(std::tmpfile()) {
     if (!rows_) {
-      throw InputError({path}, fmt::format("cannot create a temporary file for the rows ({})",
-                                           std::strerror(errno)));
+      throw ResourceError(path, fmt::format("cannot create a temporary file for the rows ({})",
+                                            std::strerror(errno)));
     }
   }
 
@@ -92,8 +92,8 @@ class CsvSink final : public ResultsWriter::Sink {
       }
       const std::string line = CsvLine(fields_);
       if (std::fwrite(line.data(), 1, line.size(), rows_.get()) != line.size()) {
-        throw InputError({path_}, fmt::format("cannot write the rows to a temporary file ({})",
-                                              std::strerror(errno)));
+        throw ResourceError(path_, fmt::format("cannot write the rows to a temporary file ({})",
+                                               std::strerror(errno)));
       }
     }
   }
@@ -118,7 +118,7 @@ class CsvSink final : public ResultsWriter::Sink {
         out.write(block, static_cast<std::streamsize>(count));
       }
       if (std::ferror(rows_.get())) {
-        throw InputError({path_}, "cannot read the rows back from their temporary file");
+        throw ResourceError(path_, "cannot read the rows back from their temporary file");
       }
     });
   }

@@ -299,6 +299,16 @@ TEST(CompareCommand, BadStudyExitsTwoWithItsLocation) {
   EXPECT_EQ(mpi.output.find(expected, first + 1), std::string::npos) << mpi.output;
 }
 
+// -j 1000000 once started thousands of threads; refused before the study is read.
+TEST(CompareCommand, FarMoreThreadsThanTheHardwareAreRefused) {
+  const fs::path folder = OutputFolder("too_many_threads");
+  const Outcome run = RunIsolab(
+      "compare " + StudyData("small_study.yaml") + " -q -j 1000000 -o " + folder.string(), true);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.output.rfind("isolab: --jobs: 1000000 threads on ", 0), 0u) << run.output;
+  EXPECT_FALSE(fs::exists(folder));
+}
+
 TEST(CompareCommand, PlotWritesBarCharts) {
   if (RunShell("/usr/bin/python3 -c 'import matplotlib, h5py'").exit_code != 0) {
     GTEST_SKIP() << "/usr/bin/python3 without matplotlib and h5py (Debian: python3-matplotlib "

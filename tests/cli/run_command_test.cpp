@@ -17,6 +17,7 @@
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
 #include "reference_data.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -29,9 +30,10 @@ std::string Data(const std::string& name) {
   return std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/" + name;
 }
 
+// In a folder of this process's own: ctest runs each test in its own process, several at a time
+// (two tests once raced on one /tmp/isolab_run_test/slip.h5).
 std::filesystem::path TemporaryFile(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_run_test";
-  std::filesystem::create_directories(directory);
+  static const std::filesystem::path directory = isolab::testing::FreshTestDirectory();
   const auto path = directory / name;
   std::filesystem::remove(path);
   return path;
@@ -374,9 +376,65 @@ TEST(RunCommand, ResidualDisplacementAfterFreeVibrationMatchesTheClosedForm) {
   EXPECT_NEAR(none["residual_isolator_displacement"].get<double>(), at_release, 1e-5 * at_release);
 }
 
+// A write that fails (a full disk; here a real "File too large" from the shell's ulimit -f):
+// exit code 3 with the system's reason, the previous results untouched, no temporary file, and
+// no crash at exit (HDF5 1.10 once segfaulted after its failed close).
+TEST(RunCommand, AFailedWriteIsAResourceErrorAndKeepsThePreviousResults) {
+  for (const char* name : {"full.h5", "full.csv"}) {
+    const auto output = TemporaryFile(name);
+    { std::ofstream(output) << "previous"; }
+    const auto run = isolab::testing::RunCommandLine(
+        "sh -c \"ulimit -f 100; trap '' XFSZ; exec " + std::string(ISOLAB_BINARY) + " run " +
+        Source("models/buildings/five_story_table9.yaml") + " -o " + output.string() +
+        "\" 2>&1 >/dev/null");
+    EXPECT_EQ(run.exit_code, 3) << name << ": " << run.output;
+    EXPECT_NE(run.output.find("File too large"), std::string::npos) << run.output;
+    std::ifstream in(output);
+    std::string text;
+    std::getline(in, text);
+    EXPECT_EQ(text, "previous") << name;
+    EXPECT_TRUE(isolab::testing::LeftoverTemporaries(output).empty()) << name;
+  }
+}
+
+// A dt or a duration wrong by orders of magnitude is refused before anything is allocated: the
+// step count (once an int that overflowed: duration 1e9 "completed" at once) against the limit.
+TEST(RunCommand, RunsOfTooManyStepsAreRefusedBeforeTheyStart) {
+  const auto output = TemporaryFile("too_many_steps.h5");
+  const std::string run = "run " + Data("run_base.yaml") + " -o " + output.string();
+  const auto tiny_dt = RunIsolab(run + " --dt 1e-7", true);
+  EXPECT_EQ(tiny_dt.exit_code, 2);
+  EXPECT_EQ(tiny_dt.output.rfind("isolab: --dt: the run would take 2.13e+08 steps", 0), 0u)
+      << tiny_dt.output;
+  EXPECT_NE(tiny_dt.output.find("--max-steps"), std::string::npos) << tiny_dt.output;
+  // 12 s of record (1201 samples of 0.01 s, its header) and 9.3 s of free vibration (5 isolated
+  // periods): 2133 steps. A limit below that refuses, one above runs.
+  const auto limited = RunIsolab(run + " --max-steps 2000", true);
+  EXPECT_EQ(limited.exit_code, 2);
+  EXPECT_NE(limited.output.find("2.13e+03 steps"), std::string::npos) << limited.output;
+  EXPECT_FALSE(std::filesystem::exists(output));
+  EXPECT_EQ(RunIsolab(run + " --max-steps 2200").exit_code, 0);
+
+  const auto model = TemporaryFile("long.yaml");
+  {
+    std::ifstream in(Data("run_base.yaml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    yaml.replace(yaml.find("{file: ../../../ground_motions/"),
+                 std::string("{file: ../../../ground_motions/").size(),
+                 "{file: " + Source("ground_motions/"));
+    yaml.replace(yaml.find("analysis: {dt: 0.01}"), std::string("analysis: {dt: 0.01}").size(),
+                 "analysis: {dt: 0.01, duration: 1e9}");
+    std::ofstream(model) << yaml;
+  }
+  const auto long_run = RunIsolab("run " + model.string() + " -o " + output.string(), true);
+  EXPECT_EQ(long_run.exit_code, 2);
+  EXPECT_NE(long_run.output.find("1e+11 steps"), std::string::npos) << long_run.output;
+}
+
 TEST(RunCommand, OutputPathsThatAreNotRegularFilesAreRefused) {
-  const auto folder = std::filesystem::temp_directory_path() / "isolab_run_test" / "paths";
-  std::filesystem::remove_all(folder);
+  const auto folder = TemporaryFile("paths");
   std::filesystem::create_directories(folder);
   const std::string run = "run " + Data("run_base.yaml") + " -o ";
   const auto fifo = folder / "pipe.h5";

@@ -48,4 +48,12 @@ class InputError : public std::runtime_error {
   SourceLocation location_;
 };
 
+// The input is fine but the machine ran out of something while working: disk space (a write
+// failed) or memory. The command line turns it into exit code 3. (isolab's own work limits, such
+// as the number of steps, are checked before the work and are bad input: InputError, exit 2.)
+class ResourceError : public std::runtime_error {
+ public:
+  ResourceError(const std::string& where, const std::string& what);
+};
+
 }  // namespace isolab

@@ -9,6 +9,7 @@
 // it; its scale is the override's, else 1.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,16 @@
 #include "isolab/structure/structure.h"
 
 namespace isolab::io {
+
+// The most analysis steps a run takes unless told otherwise (isolab run --max-steps): 10^7 steps
+// is 10,000 s at dt = 0.001 s, hours of computing and gigabytes of results. A dt or a duration
+// typed wrong by orders of magnitude is refused before anything is allocated or run.
+inline constexpr std::int64_t kDefaultMaxSteps = 10'000'000;
+
+// The grid of `duration` in steps of `dt`, the count taken in 64 bits. Throws InputError at
+// `where` (the file or option that set dt or the duration) when it exceeds `max_steps`.
+integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,
+                               const std::string& where);
 
 struct RunOverrides {
   std::string record;  // replaces excitation.ground_motion.file (relative to the cwd)
@@ -37,6 +48,7 @@ struct RunOverrides {
   bool fixed_base = false;                      // analyse the building without its isolation layer
   std::optional<double> trial_displacement;     // model length; default 0.1 m
   std::optional<FreeVibration> free_vibration;  // replaces analysis.free_vibration
+  std::int64_t max_steps = kDefaultMaxSteps;    // the most analysis steps (StepGrid)
 };
 
 // Where the parts of interest sit among the structure's connections.
@@ -76,8 +88,7 @@ inline constexpr double kAutomaticFreeVibrationPeriods = 5.0;
 // applied. Throws InputError as ReadRecord does, and for units that are not an acceleration.
 AppliedRecord ApplyRecord(const GroundMotionSection& motion, const std::string& units_given_by,
                           const std::string& dt_given_by, const UnitSystem& units,
-                          integrators::SampledHistory* acceleration,
-                          const Record* data = nullptr);
+                          integrators::SampledHistory* acceleration, const Record* data = nullptr);
 
 // Throws InputError (naming the file, or "command line") for records that cannot be read or whose
 // units or step disagree with what is given, a dt coarser than the record's, or a structure

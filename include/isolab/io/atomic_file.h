@@ -6,9 +6,11 @@
 //    socket or a symbolic link is never replaced;
 //  * the content is written under a unique temporary name in the target's folder
 //    ("<target>.<random>.tmp", created exclusively), so two writers to one output never share a
-//    temporary file, and renamed over the target only once it is complete; a writer that fails
-//    or is abandoned removes its temporary file.
-// Commands call CheckOutputPath before a long analysis, so a bad -o fails at once.
+//    temporary file, and renamed over the target only once it is complete and on the disk
+//    (fsync of the file before the rename, of its folder after); a writer that fails or is
+//    abandoned removes its own temporary file and nobody else's.
+// Commands check their outputs (output_check.h) before a long analysis, so a bad -o fails at
+// once.
 #pragma once
 
 #include <functional>
@@ -35,7 +37,8 @@ class AtomicFile {
   const std::string& temporary_path() const { return temporary_; }
 
   // Renames the temporary file over `path`, checking again that `path` is not something other
-  // than a regular file (it may have changed during a long run). Throws InputError.
+  // than a regular file (it may have changed during a long run). Throws InputError, or
+  // ResourceError when the content cannot be synced to the disk.
   void Commit();
 
  private:

@@ -85,6 +85,8 @@ struct AnalysisSection {
 
 struct ModelFile {
   std::string path;
+  // The files its isolation section was read from (isolation: {file: ...}, and theirs in turn).
+  std::vector<std::string> included_files;
   std::string text;  // the YAML as read, stored with results
   std::string description;
   UnitSystem units{"kN", "mm", "s"};

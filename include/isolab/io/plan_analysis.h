@@ -13,6 +13,7 @@
 
 #include "isolab/integrators/newmark.h"
 #include "isolab/integrators/plan_excitation.h"
+#include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_file.h"
 #include "isolab/io/plan_model_file.h"
 #include "isolab/io/record.h"
@@ -25,7 +26,8 @@ struct PlanOverrides {
   std::optional<double> scale;  // replaces both components' scales
   std::optional<double> dt;     // replaces analysis.dt (model time unit)
   std::optional<FreeVibration> free_vibration;
-  std::optional<double> trial_displacement;  // model length; default 0.1 m
+  std::optional<double> trial_displacement;   // model length; default 0.1 m
+  std::int64_t max_steps = kDefaultMaxSteps;  // the most analysis steps (StepGrid)
 };
 
 struct PlanAnalysisSetup {

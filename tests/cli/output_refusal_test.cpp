@@ -1,0 +1,141 @@
+// Every command refuses, with exit code 2 and before any work, an output that is one of its
+// inputs (by identity: the same name, another spelling, a hard link, an included file) or that
+// it cannot write; the input is left byte for byte as it was, and nothing new appears.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "cli/run_isolab.h"
+#include "own_test_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using isolab::testing::RunCommandLine;
+using isolab::testing::RunIsolab;
+
+const std::string kSource = ISOLAB_SOURCE_DIR;
+
+// A folder of this test alone, holding a model that runs the bundled pulse record.
+fs::path FreshFolder() {
+  const fs::path folder = isolab::testing::FreshTestDirectory();
+  fs::copy_file(kSource + "/ground_motions/pulse_tp2.at2", folder / "rec.at2");
+  std::ofstream(folder / "iso.yaml")
+      << "units: {force: kN, length: mm, time: s}\n"
+         "isolation:\n  components:\n"
+         "    - {name: bearing, type: thm1, k0: 1.0, k1: 0.2, k2: 0.45, uy: 20, uyh: 120}\n";
+  std::ofstream(folder / "m.yaml") << "units: {force: kN, length: mm, time: s}\n"
+                                      "structure: {type: sdof, mass: 31.7 t, damping: {ratio: "
+                                      "0.02}}\n"
+                                      "isolation: {file: iso.yaml}\n"
+                                      "excitation:\n  ground_motion: {file: rec.at2}\n"
+                                      "analysis: {dt: 0.01}\n";
+  return folder;
+}
+
+std::string Read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::set<std::string> Listing(const fs::path& folder) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    names.insert(entry.path().filename().string());
+  }
+  return names;
+}
+
+// Runs `arguments` in `folder`; expects exit 2 with `message` on stderr, and the folder as it
+// was (every file's bytes).
+void ExpectRefused(const fs::path& folder, const std::string& arguments,
+                   const std::string& message) {
+  std::map<std::string, std::string> before;
+  for (const std::string& name : Listing(folder)) before[name] = Read(folder / name);
+  const auto run = RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY + " " +
+                                  arguments + " 2>&1 >/dev/null");
+  EXPECT_EQ(run.exit_code, 2) << arguments << "\n" << run.output;
+  EXPECT_NE(run.output.find(message), std::string::npos) << arguments << "\n" << run.output;
+  std::map<std::string, std::string> after;
+  for (const std::string& name : Listing(folder)) after[name] = Read(folder / name);
+  EXPECT_TRUE(before == after) << arguments << ": the folder changed";
+}
+
+TEST(OutputRefusal, RunRefusesTheModelItsRecordAndItsIncludedFile) {
+  const fs::path folder = FreshFolder();
+  // A run model as output cannot even be a results file (.yaml); the identity is checked too.
+  fs::create_hard_link(folder / "m.yaml", folder / "m_link.h5");
+  fs::create_hard_link(folder / "rec.at2", folder / "rec_link.csv");
+  fs::create_hard_link(folder / "iso.yaml", folder / "iso_link.h5");
+  ExpectRefused(folder, "run m.yaml -o m_link.h5", "is the input file 'm.yaml' under another name");
+  ExpectRefused(folder, "run ./m.yaml -o ./m_link.h5", "under another name");
+  ExpectRefused(folder, "run m.yaml -o rec_link.csv", "rec.at2' under another name");
+  ExpectRefused(folder, "run m.yaml --record rec_link.csv -o rec_link.csv",
+                "is an input of this command");
+  ExpectRefused(folder, "run m.yaml -o iso_link.h5", "iso.yaml' under another name");
+  // And a run that is not refused writes its results beside them.
+  const auto run = RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY +
+                                  " run m.yaml -o m.h5 --json > /dev/null 2>&1");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_TRUE(fs::exists(folder / "m.h5"));
+}
+
+// /dev/zero as a model or a record was read without end (memory growing ~170 MB/s).
+TEST(OutputRefusal, InputsThatAreNotRegularFilesAreRefusedBeforeReading) {
+  const fs::path folder = FreshFolder();
+  ExpectRefused(folder, "run /dev/zero -o m.h5", "/dev/zero: is not a regular file");
+  ExpectRefused(folder, "run m.yaml --record /dev/zero -o m.h5",
+                "/dev/zero: is not a regular file");
+  ExpectRefused(folder, "spectrum /dev/zero -o s.csv", "/dev/zero: is not a regular file");
+}
+
+TEST(OutputRefusal, SpectrumRefusesItsRecordAndTwoNamesOfOneOutput) {
+  const fs::path folder = FreshFolder();
+  fs::create_hard_link(folder / "rec.at2", folder / "rec.csv");
+  ExpectRefused(folder, "spectrum rec.at2 -o rec.csv", "is the input file 'rec.at2'");
+  ExpectRefused(folder, "spectrum rec.at2 -o s.csv -o ./s.csv", "is also the output 's.csv'");
+}
+
+TEST(OutputRefusal, FitAndDiagnoseRefuseTheirDataAndSpecification) {
+  const fs::path folder = FreshFolder();
+  fs::copy_file(kSource + "/tests/cli/data/fit/three_laws_spec.yaml", folder / "spec.yaml");
+  fs::copy_file(kSource + "/models/diagnosis/base_bhm2.yaml", folder / "base.model.yaml");
+  std::ofstream(folder / "data.csv") << "test,time,displacement,force\n";
+  ExpectRefused(folder, "fit data.csv --model spec.yaml -q -o data.csv",
+                "is an input of this command");
+  ExpectRefused(folder, "fit data.csv --model spec.yaml -q -o ./spec.yaml", "spec.yaml'");
+  ExpectRefused(folder, "diagnose data.csv --base base.model.yaml -q --out base",
+                "base.model.yaml: is an input of this command");
+}
+
+TEST(OutputRefusal, CyclicAndShakeTableRefuseTheirModelsAndCheckEveryOutputFirst) {
+  const fs::path folder = FreshFolder();
+  fs::create_hard_link(folder / "iso.yaml", folder / "iso.csv");
+  ExpectRefused(folder, "cyclic iso.yaml -a 50 --test-data iso.csv", "is the input file");
+  fs::copy_file(kSource + "/tests/cli/data/bncs/bncs_ica50_excerpt.csv", folder / "table.csv");
+  fs::copy_file(kSource + "/models/bncs/bncs.yaml", folder / "bncs.yaml");
+  fs::copy_file(kSource + "/models/bncs/bncs_bhm2.fitted.yaml", folder / "bncs_bhm2.fitted.yaml");
+  ExpectRefused(folder, "shaketable table.csv --model bncs.yaml --isolator ./bncs_bhm2.fitted.yaml",
+                "is the input file 'bncs_bhm2.fitted.yaml' under another name");
+  ExpectRefused(folder, "shaketable table.csv --model bncs.yaml --isolator table.csv",
+                "is an input of this command");
+  // The results folder is missing: refused before the data are read or the prediction runs
+  // (without -q, the progress lines would show either).
+  const auto run = RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY +
+                                  " shaketable table.csv --model bncs.yaml --predict --results "
+                                  "missing/p.h5 2>&1 >/dev/null");
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("the folder 'missing' does not exist"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("samples"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("predicting"), std::string::npos) << run.output;
+}
+
+}  // namespace
