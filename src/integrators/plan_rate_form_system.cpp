@@ -10,7 +10,10 @@ using structure::SlotOf;
 
 PlanRateFormSystem::PlanRateFormSystem(const structure::PlanStructure& structure,
                                        const PlanExcitation& excitation)
-    : structure_(structure), excitation_(excitation), dofs_(structure.dofs()) {
+    : structure_(structure),
+      excitation_(excitation),
+      dofs_(structure.dofs()),
+      dof_rows_(dofs_, structure.viscous_damping()) {
   const auto add_law = [&](LawBlock law, int q_count, int roots) {
     law.q0 = internal_count_;
     law.q_count = q_count;
@@ -84,17 +87,7 @@ PlanRateFormSystem::PlanRateFormSystem(const structure::PlanStructure& structure
     return q0 + law.q0 + (b - 2 * law.terms);
   };
   std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < n; ++i) {
-    entries.emplace_back(i, i, 0.0);
-    entries.emplace_back(i, v0 + i, 0.0);
-    entries.emplace_back(v0 + i, v0 + i, 0.0);
-  }
-  const auto& c = structure.viscous_damping();
-  for (int col = 0; col < c.outerSize(); ++col) {
-    for (structure::SparseMatrix::InnerIterator it(c, col); it; ++it) {
-      entries.emplace_back(v0 + static_cast<int>(it.row()), v0 + col, 0.0);
-    }
-  }
+  dof_rows_.AddEntries(&entries);
   for (const LawBlock& law : laws_) {
     for (int a = 0; a < law.terms + law.q_count; ++a) {
       for (int b = 0; b < 2 * law.terms + law.q_count; ++b) {
@@ -106,16 +99,7 @@ PlanRateFormSystem::PlanRateFormSystem(const structure::PlanStructure& structure
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
 
-  for (int i = 0; i < n; ++i) {
-    uu_slots_.push_back(SlotOf(pattern_, i, i));
-    uv_slots_.push_back(SlotOf(pattern_, i, v0 + i));
-    mass_slots_.push_back(SlotOf(pattern_, v0 + i, v0 + i));
-  }
-  for (int col = 0; col < c.outerSize(); ++col) {
-    for (structure::SparseMatrix::InnerIterator it(c, col); it; ++it) {
-      damping_slots_.push_back(SlotOf(pattern_, v0 + static_cast<int>(it.row()), v0 + col));
-    }
-  }
+  dof_rows_.FindSlots(pattern_);
   for (LawBlock& law : laws_) {
     law.slot0 = static_cast<int>(law_slots_.size());
     for (int a = 0; a < law.terms + law.q_count; ++a) {
@@ -201,11 +185,7 @@ void PlanRateFormSystem::EvaluateLaws(double t, const double* y) {
 void PlanRateFormSystem::Residual(double t, const double* y, const double* yp, double* residual) {
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
-  const Eigen::VectorXd& m = structure_.mass();
-  for (int i = 0; i < dofs_; ++i) {
-    residual[i] = yp[i] - y[dofs_ + i];
-    residual[dofs_ + i] = m[i] * yp[dofs_ + i] + force_[i] - load_[i];
-  }
+  dof_rows_.Residual(y, yp, structure_.mass(), force_, load_, residual);
   for (std::size_t l = 0; l < laws_.size(); ++l) {
     const int q0 = 2 * dofs_ + laws_[l].q0;
     for (int k = 0; k < laws_[l].q_count; ++k) {
@@ -217,14 +197,7 @@ void PlanRateFormSystem::Residual(double t, const double* y, const double* yp, d
 void PlanRateFormSystem::Jacobian(double t, double cj, const double* y, double* values) {
   EvaluateLaws(t, y);
   std::fill(values, values + pattern_.nonZeros(), 0.0);
-  const Eigen::VectorXd& m = structure_.mass();
-  for (int i = 0; i < dofs_; ++i) {
-    values[uu_slots_[i]] += cj;
-    values[uv_slots_[i]] -= 1.0;
-    values[mass_slots_[i]] += cj * m[i];
-  }
-  const double* c = structure_.viscous_damping().valuePtr();
-  for (std::size_t k = 0; k < damping_slots_.size(); ++k) values[damping_slots_[k]] += c[k];
+  dof_rows_.AddJacobian(cj, structure_.mass(), values);
 
   for (std::size_t l = 0; l < laws_.size(); ++l) {
     const LawBlock& law = laws_[l];
@@ -347,11 +320,7 @@ int PlanRateFormSystem::SwitchPhases(const int* roots_found, double* y) {
 void PlanRateFormSystem::ConsistentDerivative(double t, const double* y, double* yp) {
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
-  const Eigen::VectorXd& m = structure_.mass();
-  for (int i = 0; i < dofs_; ++i) {
-    yp[i] = y[dofs_ + i];
-    yp[dofs_ + i] = (load_[i] - force_[i]) / m[i];
-  }
+  dof_rows_.Derivative(y, structure_.mass(), force_, load_, yp);
   for (std::size_t l = 0; l < laws_.size(); ++l) {
     const int q0 = 2 * dofs_ + laws_[l].q0;
     for (int k = 0; k < laws_[l].q_count; ++k) yp[q0 + k] = responses_[l].rate[k];
@@ -397,22 +366,10 @@ ResponseRow PlanRateFormSystem::Record(int step, double t, const double* y,
   acceleration_ = (load_ - force_).cwiseQuotient(m);
   absolute_acceleration_ = acceleration_;
   excitation_.AddGroundAcceleration(t, absolute_acceleration_);
-  Energies e;
-  e.input = energy_integrals[kInputPower];
-  e.damping = energy_integrals[kDampingPower];
-  e.hysteretic = energy_integrals[kHystereticPower];
-  e.kinetic = 0.5 * velocity_.dot(m.cwiseProduct(velocity_));
-  for (const LawBlock& law : laws_) e.elastic += LawStoredEnergy(law, t, y);
-  const std::size_t n = static_cast<std::size_t>(dofs_);
-  return {step,
-          t,
-          {y, n},
-          {y + dofs_, n},
-          {acceleration_.data(), n},
-          {absolute_acceleration_.data(), n},
-          connection_forces_,
-          law_forces_,
-          e};
+  double elastic = 0.0;
+  for (const LawBlock& law : laws_) elastic += LawStoredEnergy(law, t, y);
+  return dof_rows_.Row(step, t, y, acceleration_, absolute_acceleration_, connection_forces_,
+                       law_forces_, DofRows::EnergiesAt(energy_integrals, velocity_, m, elastic));
 }
 
 }  // namespace isolab::integrators

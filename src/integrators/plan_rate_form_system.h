@@ -16,12 +16,12 @@
 #include <array>
 #include <vector>
 
+#include "dof_rows.h"
 #include "isolab/hysteresis/plan_rate_form.h"
 #include "isolab/hysteresis/rate_form.h"
 #include "isolab/integrators/plan_excitation.h"
 #include "isolab/integrators/response.h"
 #include "isolab/structure/plan_structure.h"
-#include "rate_form_system.h"
 
 namespace isolab::integrators {
 
@@ -90,6 +90,7 @@ class PlanRateFormSystem {
   const structure::PlanStructure& structure_;
   const PlanExcitation& excitation_;
   int dofs_ = 0;
+  DofRows dof_rows_;
   int internal_count_ = 0;
   int root_count_ = 0;
   std::vector<LawBlock> laws_;
@@ -102,7 +103,6 @@ class PlanRateFormSystem {
   Eigen::VectorXd load_, force_, viscous_, velocity_, acceleration_, absolute_acceleration_;
 
   structure::SparseMatrix pattern_;
-  std::vector<int> uu_slots_, uv_slots_, mass_slots_, damping_slots_;
   std::vector<int> law_slots_;
 };
 
