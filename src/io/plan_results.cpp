@@ -10,9 +10,9 @@
 
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/plan_analysis.h"
+#include "isolab/io/run_analysis.h"
 #include "isolab/io/result_series.h"
 #include "isolab/io/results_file.h"
-#include "isolab/io/run_analysis.h"
 
 namespace isolab::io {
 namespace {
@@ -38,11 +38,8 @@ Series FloorColumns(std::string name, std::string units, std::vector<std::string
 }
 
 // One value per row.
-Series Scalar(std::string name, std::string units,
-              std::function<double(const ResponseRow&)> value) {
-  return {std::move(name),
-          std::move(units),
-          {},
+Series Scalar(std::string name, std::string units, std::function<double(const ResponseRow&)> value) {
+  return {std::move(name), std::move(units), {},
           [value = std::move(value)](const ResponseRow& row, double* out) { *out = value(row); }};
 }
 
@@ -92,39 +89,38 @@ std::vector<Series> PlanSeries(const PlanModelFile& model, const PlanAnalysisSet
 
   std::vector<Series> series;
   series.push_back(Scalar("time", units.time(), [](const ResponseRow& row) { return row.time; }));
-  series.push_back({"ground_acceleration",
-                    acceleration,
-                    {"x", "y"},
+  series.push_back({"ground_acceleration", acceleration, {"x", "y"},
                     [&setup](const ResponseRow& row, double* out) {
                       out[0] = setup.excitation.x.At(row.time);
                       out[1] = setup.excitation.y.At(row.time);
                     }});
   series.push_back(
       FloorColumns("floor/displacement", length, floor_xy, &ResponseRow::displacement, 0, 2));
-  series.push_back(FloorColumns("floor/rotation", "rad", floors, &ResponseRow::displacement, 2, 1));
+  series.push_back(
+      FloorColumns("floor/rotation", "rad", floors, &ResponseRow::displacement, 2, 1));
   series.push_back(FloorColumns("floor/absolute_acceleration", acceleration, floor_xy,
                                 &ResponseRow::absolute_acceleration, 0, 2));
-  series.push_back(
-      {"isolator/displacement", length, isolator_xy, [&s](const ResponseRow& row, double* out) {
-         for (std::size_t i = 0; i < s.isolators().size(); ++i) {
-           const Vec2 u = s.IsolatorDeformation(i, row.displacement);
-           *out++ = u.x;
-           *out++ = u.y;
-         }
-       }});
-  series.push_back(
-      {"isolator/resultant", length, isolators, [&s](const ResponseRow& row, double* out) {
-         for (std::size_t i = 0; i < s.isolators().size(); ++i) {
-           *out++ = Norm(s.IsolatorDeformation(i, row.displacement));
-         }
-       }});
-  series.push_back(
-      {"isolator/force", force, isolator_xy, [&s](const ResponseRow& row, double* out) {
-         const std::size_t first = s.isolator_force_column(0);
-         for (std::size_t k = 0; k < 2 * s.isolators().size(); ++k) {
-           *out++ = row.connection_force[first + k];
-         }
-       }});
+  series.push_back({"isolator/displacement", length, isolator_xy,
+                    [&s](const ResponseRow& row, double* out) {
+                      for (std::size_t i = 0; i < s.isolators().size(); ++i) {
+                        const Vec2 u = s.IsolatorDeformation(i, row.displacement);
+                        *out++ = u.x;
+                        *out++ = u.y;
+                      }
+                    }});
+  series.push_back({"isolator/resultant", length, isolators,
+                    [&s](const ResponseRow& row, double* out) {
+                      for (std::size_t i = 0; i < s.isolators().size(); ++i) {
+                        *out++ = Norm(s.IsolatorDeformation(i, row.displacement));
+                      }
+                    }});
+  series.push_back({"isolator/force", force, isolator_xy,
+                    [&s](const ResponseRow& row, double* out) {
+                      const std::size_t first = s.isolator_force_column(0);
+                      for (std::size_t k = 0; k < 2 * s.isolators().size(); ++k) {
+                        *out++ = row.connection_force[first + k];
+                      }
+                    }});
   const auto energy_series = [&](const char* name, double integrators::Energies::*term) {
     series.push_back(Scalar(fmt::format("energy/{}", name), energy,
                             [term](const ResponseRow& row) { return row.energies.*term; }));
