@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "integrator_report.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/free_vibration_text.h"
 #include "isolab/io/model_summary.h"
 #include "isolab/io/output_check.h"
 #include "isolab/io/plan_analysis.h"
+#include "isolab/io/run_analysis.h"
 
 namespace isolab::cli {
 namespace {
@@ -26,12 +28,17 @@ void RefuseOneDirectionOptions(const RunOptions& options) {
   refuse(!options.units.empty(), "--units");
   refuse(options.record_dt.has_value(), "--record-dt");
   refuse(options.fixed_base, "--fixed-base");
-  refuse(options.rtol.has_value(), "--rtol");
-  refuse(options.atol.has_value(), "--atol");
   refuse(options.plot.has_value(), "--plot");
-  if (options.integrator == "ida") {
-    throw InputError({"--integrator"}, "IDA does not run plan models yet; use newmark");
+}
+
+// The model's analysis section with the command line's choices of integrator and tolerances.
+void ApplyIntegratorOptions(const RunOptions& options, io::AnalysisSection* analysis) {
+  if (options.integrator == "ida") analysis->integrator = io::AnalysisSection::Integrator::kIda;
+  if (options.integrator == "newmark") {
+    analysis->integrator = io::AnalysisSection::Integrator::kNewmark;
   }
+  if (options.rtol) analysis->ida.relative_tolerance = *options.rtol;
+  if (options.atol) analysis->ida.absolute_tolerance = *options.atol;
 }
 
 void PrintPreamble(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
@@ -93,16 +100,13 @@ void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& s
   }
   fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
              summary.energy_balance_error);
-  fmt::print(out,
-             "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
-             "factorisations, {} step cuts; {:.3f} s\n",
-             summary.newton_iterations, summary.SolvesPerStep(), summary.max_iterations_in_a_step,
-             summary.factorisations, summary.step_cuts, summary.wall_seconds);
+  PrintIntegratorStatistics(model.analysis, summary, out);
   fmt::print(out, "results: {}\n", output);
 }
 
-nlohmann::json SummaryJson(const io::PlanAnalysisSetup& setup, const io::PlanPeaks& peaks,
-                           const integrators::RunSummary& summary, const std::string& output) {
+nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
+                           const io::PlanPeaks& peaks, const integrators::RunSummary& summary,
+                           const std::string& output) {
   nlohmann::json json;
   nlohmann::json isolators = nlohmann::json::object();
   for (std::size_t i = 0; i < setup.structure.isolators().size(); ++i) {
@@ -120,6 +124,8 @@ nlohmann::json SummaryJson(const io::PlanAnalysisSetup& setup, const io::PlanPea
   json["termination"] = summary.ok() ? "completed" : "failed";
   json["message"] = summary.message;
   json["energy_balance_error"] = summary.energy_balance_error;
+  json["integrator"] = io::DescribeIntegrator(model.analysis, setup.grid.dt);
+  AddIntegratorStatistics(model.analysis, summary, &json);
   json["steps_completed"] = summary.steps;
   json["results"] = output;
   return json;
@@ -129,7 +135,8 @@ nlohmann::json SummaryJson(const io::PlanAnalysisSetup& setup, const io::PlanPea
 
 int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   RefuseOneDirectionOptions(options);
-  const io::PlanModelFile model = io::LoadPlanModelFile(options.model);
+  io::PlanModelFile model = io::LoadPlanModelFile(options.model);
+  ApplyIntegratorOptions(options, &model.analysis);
   std::string output = options.output;
   if (output.empty()) {
     output = !model.output_file.empty()
@@ -156,11 +163,11 @@ int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   if (!options.json) PrintPreamble(model, setup, out);
   out.flush();
   integrators::ResponseHistory response;
-  const integrators::RunSummary summary = io::RunPlanAnalysis(model, setup, &response);
+  const integrators::RunSummary summary = io::RunPlanAnalysis(model.analysis, setup, &response);
   const io::PlanPeaks peaks = io::ComputePlanPeaks(setup, response);
   io::WritePlanResults(output, model, setup, response, summary, peaks, ISOLAB_VERSION);
   if (options.json) {
-    out << SummaryJson(setup, peaks, summary, output).dump(2) << "\n";
+    out << SummaryJson(model, setup, peaks, summary, output).dump(2) << "\n";
   } else {
     PrintSummary(model, setup, peaks, summary, response, output, out);
   }

@@ -9,6 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "integrator_report.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/free_vibration_text.h"
@@ -132,19 +133,7 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
   }
   fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
              summary.energy_balance_error);
-  if (analysis.integrator == io::AnalysisSection::Integrator::kIda) {
-    fmt::print(out,
-               "IDA: {} steps, {} phase-change events, {} Jacobians, {} error-test failures; "
-               "{:.3f} s\n",
-               summary.ida_steps, summary.events, summary.jacobian_evaluations,
-               summary.error_test_failures, summary.wall_seconds);
-  } else {
-    fmt::print(out,
-               "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
-               "factorisations, {} step cuts; {:.3f} s\n",
-               summary.newton_iterations, summary.SolvesPerStep(), summary.max_iterations_in_a_step,
-               summary.factorisations, summary.step_cuts, summary.wall_seconds);
-  }
+  PrintIntegratorStatistics(analysis, summary, out);
   fmt::print(out, "results: {}\n", output);
 }
 
@@ -202,18 +191,7 @@ nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection
   }
   json["energy_balance_error"] = summary.energy_balance_error;
   json["integrator"] = io::DescribeIntegrator(analysis, setup.grid.dt);
-  if (analysis.integrator == io::AnalysisSection::Integrator::kIda) {
-    json["ida"] = {{"steps", summary.ida_steps},
-                   {"events", summary.events},
-                   {"jacobian_evaluations", summary.jacobian_evaluations},
-                   {"error_test_failures", summary.error_test_failures}};
-  } else {
-    json["newton"] = {{"iterations", summary.newton_iterations},
-                      {"solves_per_step", summary.SolvesPerStep()},
-                      {"max_iterations_in_a_step", summary.max_iterations_in_a_step},
-                      {"factorisations", summary.factorisations},
-                      {"step_cuts", summary.step_cuts}};
-  }
+  AddIntegratorStatistics(analysis, summary, &json);
   json["steps_completed"] = summary.steps;
   json["wall_seconds"] = summary.wall_seconds;
   json["results"] = output;

@@ -26,13 +26,25 @@ struct SlipEquation {
   struct Linearisation {
     Mat2 dg, inverse;  // Dg(x), (ke I + B)^-1
     Vec2 t, w;
-    double c = 0.0;
+    double c = INFINITY;
     // ke B (ke I + B)^-1, with c t t^T (ke I + B)^-1 = c / (1 + c t.w) t w^T: no cancellation
     // for ke >> Dg either (ke I - ke^2 (ke I + B)^-1 would lose the digits of Dg).
+    // c = infinity (zero travel) takes the factor's limit 1 / t.w.
     Mat2 Tangent(double ke) const {
-      return ke * (dg * inverse + (c / (1.0 + c * Dot(t, w))) * Outer(t, w));
+      const double factor = std::isinf(c) ? 1.0 / Dot(t, w) : c / (1.0 + c * Dot(t, w));
+      return ke * (dg * inverse + factor * Outer(t, w));
     }
   };
+  // The limit of Linearise(s n) as s -> 0+: a slip of zero travel along the unit n.
+  Linearisation LineariseAtZeroTravel(Vec2 n) const {
+    Linearisation l;
+    l.dg = RadialStiffness(law.spring, xn);
+    const Mat2 a_inverse = Inverse(law.ke * Identity() + l.dg);
+    l.t = Perpendicular(n);
+    l.w = a_inverse * l.t;
+    l.inverse = a_inverse - (1.0 / Dot(l.t, l.w)) * Outer(l.w, l.w);
+    return l;
+  }
   Linearisation Linearise(Vec2 xi) const {
     const double m = Norm(xi);
     Linearisation l;
@@ -111,14 +123,14 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
   const Vec2 trial_force = ke * (in.u - xn) - RadialForce(law.spring, xn);
   CoupledState next = Carried(committed);
   response->damping = {};
-  if (Sticks(trial_force)) {
+  if (Sticks(committed, in.u, trial_force)) {
     next.force = ke * (in.u - xn);
     response->force = next.force;
     response->stiffness = Identity(ke);
     Store(in, next, trial);
     return;
   }
-  next.slipping = true;  // recorded for the state's contract; this kernel's test does not read it
+  next.slipping = true;   // the committed phase of the next increment's decision
   Mat2 slider_stiffness;  // B of the header
   Vec2 x;
   if (fs == 0.0) {  // no slider: ke in series with g, x from the radial series solve
@@ -126,6 +138,13 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
     const Mat2 dg = RadialStiffness(law.spring, x);
     response->stiffness = ke * (dg * Inverse(Identity(ke) + dg));
     next.force = RadialForce(law.spring, x);
+  } else if (const double trial_norm = Norm(trial_force); trial_norm <= fs) {
+    // A continuing slip decided by the phase with its trial on or a round-off inside the circle.
+    const SlipEquation eq{law, xn, in.u};
+    const Vec2 n = trial_force / trial_norm;
+    x = xn;
+    response->stiffness = eq.LineariseAtZeroTravel(n).Tangent(ke);
+    next.force = fs * n + RadialForce(law.spring, xn);
   } else {
     const SlipEquation eq{law, xn, in.u};
     const Vec2 xi = SolveSlip(eq, trial_force);

@@ -15,7 +15,9 @@
 
 #include "blow_up.h"
 #include "isolab/core/errors.h"
+#include "plan_rate_form_system.h"
 #include "rate_form_system.h"
+#include "structure_kinds.h"
 
 namespace isolab::integrators {
 
@@ -56,20 +58,37 @@ using Matrix = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter>;
 using LinearSolver = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter>;
 using IdaMemory = std::unique_ptr<void, IdaDeleter>;
 
-// The time of the next sample of any excitation history after t: its linear interpolation has a
-// kink there (a jump to zero after the last sample), which the integrator should step onto.
-double NextExcitationSample(const Excitation& excitation, double t, double horizon) {
-  double next = horizon;
-  const auto consider = [&](const SampledHistory& history) {
-    if (history.values.empty() || !(history.dt > 0.0)) return;
-    double k = std::floor(t / history.dt) + 1.0;
-    if (k * history.dt <= t * (1.0 + 1e-12) + 1e-12 * history.dt) k += 1.0;
-    if (k <= static_cast<double>(history.values.size() - 1)) next = std::min(next, k * history.dt);
-  };
-  consider(excitation.ground_acceleration);
-  for (const AppliedForce& force : excitation.forces) consider(force.force);
+// The time of the next sample of `history` after t, if before `next`: its linear interpolation
+// has a kink there (a jump to zero after the last sample), which the integrator should step onto.
+double NextSample(const SampledHistory& history, double t, double next) {
+  if (history.values.empty() || !(history.dt > 0.0)) return next;
+  double k = std::floor(t / history.dt) + 1.0;
+  if (k * history.dt <= t * (1.0 + 1e-12) + 1e-12 * history.dt) k += 1.0;
+  if (k <= static_cast<double>(history.values.size() - 1)) next = std::min(next, k * history.dt);
   return next;
 }
+double NextExcitationSample(const Excitation& excitation, double t, double horizon) {
+  double next = NextSample(excitation.ground_acceleration, t, horizon);
+  for (const AppliedForce& force : excitation.forces) next = NextSample(force.force, t, next);
+  return next;
+}
+double NextExcitationSample(const PlanExcitation& excitation, double t, double horizon) {
+  return NextSample(excitation.y, t, NextSample(excitation.x, t, horizon));
+}
+
+// The rate-form system of each kind of structure.
+template <class Structure>
+struct RateFormOf;
+template <>
+struct RateFormOf<structure::Structure> {
+  using System = RateFormSystem;
+  using Excitation = integrators::Excitation;
+};
+template <>
+struct RateFormOf<structure::PlanStructure> {
+  using System = PlanRateFormSystem;
+  using Excitation = PlanExcitation;
+};
 
 // IDAGetReturnFlagName returns a malloc'd string.
 std::string FlagName(int flag) {
@@ -79,10 +98,14 @@ std::string FlagName(int flag) {
   return text;
 }
 
+template <class Structure>
 class IdaRun {
  public:
-  IdaRun(const structure::Structure& structure, const Excitation& excitation,
-         const IdaOptions& options, RunSummary* summary)
+  using System = typename RateFormOf<Structure>::System;
+  using Excitation = typename RateFormOf<Structure>::Excitation;
+
+  IdaRun(const Structure& structure, const Excitation& excitation, const IdaOptions& options,
+         RunSummary* summary)
       : system_(structure, excitation), excitation_(excitation), summary_(*summary) {
     SUNContext raw_context = nullptr;
     if (SUNContext_Create(nullptr, &raw_context) != 0) {
@@ -261,7 +284,7 @@ class IdaRun {
     Of(user_data).last_message_ = fmt::format("{}: {}", function, message);
   }
 
-  RateFormSystem system_;
+  System system_;
   const Excitation& excitation_;
   RunSummary& summary_;
   Context context_;
@@ -277,14 +300,14 @@ class IdaRun {
   int same_time_events_ = 0;
 };
 
-}  // namespace
-
-RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
-                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
+template <class Structure>
+RunSummary Run(const Structure& structure,
+               const typename RateFormOf<Structure>::Excitation& excitation, const TimeGrid& grid,
+               const IdaOptions& options, ResponseObserver& observer) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
-  IdaRun run(structure, excitation, options, &summary);
+  IdaRun<Structure> run(structure, excitation, options, &summary);
   const int every = std::max(grid.output_every, 1);
   const int rows = grid.steps / every + 1;
   run.Record(0, observer);
@@ -311,12 +334,28 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
   return summary;
 }
 
+}  // namespace
+
+RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
+  return Run(structure, excitation, grid, options, observer);
+}
+
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
-  HistoryRecorder recorder(response, grid, structure.dofs(),
-                           static_cast<int>(structure.connections().size()),
-                           static_cast<int>(structure.law_count()));
-  return RunIda(structure, excitation, grid, options, recorder);
+  HistoryRecorder recorder = RecorderFor(structure, grid, response);
+  return Run(structure, excitation, grid, options, recorder);
+}
+
+RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
+  return Run(structure, excitation, grid, options, observer);
+}
+
+RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
+  HistoryRecorder recorder = RecorderFor(structure, grid, response);
+  return Run(structure, excitation, grid, options, recorder);
 }
 
 }  // namespace isolab::integrators

@@ -10,6 +10,7 @@
 #include "blow_up.h"
 #include "isolab/core/errors.h"
 #include "klu_solver.h"
+#include "structure_kinds.h"
 
 namespace isolab::integrators {
 
@@ -57,10 +58,8 @@ double MaxAbs(const Eigen::MatrixBase<Derived>& x) {
 // residuals after one solve at 1000 stories reach half that floor; twice it leaves a margin.
 constexpr double kRoundoffFloorFactor = 2.0;
 
-// What differs between a one-direction structure and a plan structure (plan_structure.h): how
-// many force columns a step writes, and which dofs the ground acceleration moves.
-std::size_t ForceColumns(const structure::Structure& s) { return s.connections().size(); }
-std::size_t ForceColumns(const structure::PlanStructure& s) { return s.force_columns(); }
+// What differs between the excitations of a one-direction structure and a plan structure
+// (plan_structure.h): which dofs the ground acceleration moves.
 void AddGroundAcceleration(const Excitation& excitation, double t,
                            Eigen::Ref<Eigen::VectorXd> acceleration) {
   acceleration.array() += excitation.ground_acceleration.At(t);
@@ -291,9 +290,7 @@ template <class Structure, class Excitation>
 RunSummary RunRecorded(const Structure& structure, const Excitation& excitation,
                        const TimeGrid& grid, const NewmarkOptions& options,
                        ResponseHistory* response) {
-  HistoryRecorder recorder(response, grid, structure.dofs(),
-                           static_cast<int>(ForceColumns(structure)),
-                           static_cast<int>(structure.law_count()));
+  HistoryRecorder recorder = RecorderFor(structure, grid, response);
   return Run(structure, excitation, grid, options, recorder);
 }
 

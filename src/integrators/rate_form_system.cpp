@@ -7,7 +7,10 @@ using structure::kGround;
 using structure::SlotOf;
 
 RateFormSystem::RateFormSystem(const structure::Structure& structure, const Excitation& excitation)
-    : structure_(structure), excitation_(excitation), dofs_(structure.dofs()) {
+    : structure_(structure),
+      excitation_(excitation),
+      dofs_(structure.dofs()),
+      dof_rows_(dofs_, structure.viscous_damping()) {
   const auto& connections = structure.connections();
   root_offsets_.push_back(0);
   for (const auto& connection : connections) {
@@ -33,17 +36,7 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure, const Exci
   const int n = dofs_, v0 = n, z0 = 2 * n;
   std::vector<Eigen::Triplet<double>> entries;
   const auto add = [&](int row, int col) { entries.emplace_back(row, col, 0.0); };
-  for (int i = 0; i < n; ++i) {
-    add(i, i);
-    add(i, v0 + i);
-    add(v0 + i, v0 + i);
-  }
-  const auto& c = structure.viscous_damping();
-  for (int col = 0; col < c.outerSize(); ++col) {
-    for (structure::SparseMatrix::InnerIterator it(c, col); it; ++it) {
-      add(v0 + static_cast<int>(it.row()), v0 + col);
-    }
-  }
+  dof_rows_.AddEntries(&entries);
   const auto scatter_pairs = [&](int row0, int col0, int i, int j) {
     add(row0 + j, col0 + j);
     if (i == kGround) return;
@@ -81,16 +74,7 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure, const Exci
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
 
-  for (int i = 0; i < n; ++i) {
-    uu_slots_.push_back(SlotOf(pattern_, i, i));
-    uv_slots_.push_back(SlotOf(pattern_, i, v0 + i));
-    mass_slots_.push_back(SlotOf(pattern_, v0 + i, v0 + i));
-  }
-  for (int col = 0; col < c.outerSize(); ++col) {
-    for (structure::SparseMatrix::InnerIterator it(c, col); it; ++it) {
-      damping_slots_.push_back(SlotOf(pattern_, v0 + static_cast<int>(it.row()), v0 + col));
-    }
-  }
+  dof_rows_.FindSlots(pattern_);
   internal_slots_.resize(phases_.size());
   for (std::size_t k = 0; k < connections.size(); ++k) {
     const int i = connections[k].dof_i, j = connections[k].dof_j;
@@ -172,11 +156,7 @@ void RateFormSystem::EvaluateLaws(double t, const double* y) {
 void RateFormSystem::Residual(double t, const double* y, const double* yp, double* residual) {
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
-  const Eigen::VectorXd& m = structure_.mass();
-  for (int i = 0; i < dofs_; ++i) {
-    residual[i] = yp[i] - y[dofs_ + i];
-    residual[dofs_ + i] = m[i] * yp[dofs_ + i] + force_[i] - load_[i];
-  }
+  dof_rows_.Residual(y, yp, structure_.mass(), force_, load_, residual);
   for (std::size_t law = 0; law < internal_index_.size(); ++law) {
     const int z = internal_index_[law], w = second_index_[law];
     if (z >= 0) residual[2 * dofs_ + z] = yp[2 * dofs_ + z] - responses_[law].rate;
@@ -187,14 +167,7 @@ void RateFormSystem::Residual(double t, const double* y, const double* yp, doubl
 void RateFormSystem::Jacobian(double t, double cj, const double* y, double* values) {
   EvaluateLaws(t, y);
   std::fill(values, values + pattern_.nonZeros(), 0.0);
-  const Eigen::VectorXd& m = structure_.mass();
-  for (int i = 0; i < dofs_; ++i) {
-    values[uu_slots_[i]] += cj;
-    values[uv_slots_[i]] -= 1.0;
-    values[mass_slots_[i]] += cj * m[i];
-  }
-  const double* c = structure_.viscous_damping().valuePtr();
-  for (std::size_t k = 0; k < damping_slots_.size(); ++k) values[damping_slots_[k]] += c[k];
+  dof_rows_.AddJacobian(cj, structure_.mass(), values);
 
   const auto& connections = structure_.connections();
   for (std::size_t k = 0; k < connections.size(); ++k) {
@@ -299,11 +272,7 @@ int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
 void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp) {
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
-  const Eigen::VectorXd& m = structure_.mass();
-  for (int i = 0; i < dofs_; ++i) {
-    yp[i] = y[dofs_ + i];
-    yp[dofs_ + i] = (load_[i] - force_[i]) / m[i];
-  }
+  dof_rows_.Derivative(y, structure_.mass(), force_, load_, yp);
   for (std::size_t law = 0; law < internal_index_.size(); ++law) {
     const int z = internal_index_[law], w = second_index_[law];
     if (z >= 0) yp[2 * dofs_ + z] = responses_[law].rate;
@@ -333,12 +302,7 @@ ResponseRow RateFormSystem::Record(int step, double t, const double* y,
   const double ground = excitation_.ground_acceleration.At(t);
   acceleration_ = (load_ - force_).cwiseQuotient(m);
   absolute_acceleration_ = acceleration_.array() + ground;
-  Energies e;
-  e.input = energy_integrals[kInputPower];
-  e.damping = energy_integrals[kDampingPower];
-  e.hysteretic = energy_integrals[kHystereticPower];
-  e.kinetic = 0.5 * velocity_.dot(m.cwiseProduct(velocity_));
-  e.elastic = 0.0;
+  double elastic = 0.0;
   const auto& connections = structure_.connections();
   for (std::size_t k = 0; k < connections.size(); ++k) {
     const auto& kernels = connections[k].assembly.kernels();
@@ -346,21 +310,13 @@ ResponseRow RateFormSystem::Record(int step, double t, const double* y,
       const std::size_t law = structure_.law_offset(k) + l;
       const LawInput in = InputOf(k, law, y);
       law_forces_[law] = responses_[law].force;
-      e.elastic += hysteresis::StoredEnergy(
+      elastic += hysteresis::StoredEnergy(
           kernels[l],
           hysteresis::RateFormState(kernels[l], phases_[law], in.u, in.v, in.z, in.w, t));
     }
   }
-  const std::size_t n = static_cast<std::size_t>(dofs_);
-  return {step,
-          t,
-          {y, n},
-          {y + dofs_, n},
-          {acceleration_.data(), n},
-          {absolute_acceleration_.data(), n},
-          connection_forces_,
-          law_forces_,
-          e};
+  return dof_rows_.Row(step, t, y, acceleration_, absolute_acceleration_, connection_forces_,
+                       law_forces_, DofRows::EnergiesAt(energy_integrals, velocity_, m, elastic));
 }
 
 }  // namespace isolab::integrators

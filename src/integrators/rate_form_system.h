@@ -13,15 +13,13 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "dof_rows.h"
 #include "isolab/hysteresis/rate_form.h"
 #include "isolab/integrators/excitation.h"
 #include "isolab/integrators/response.h"
 #include "isolab/structure/structure.h"
 
 namespace isolab::integrators {
-
-// Accumulated energy terms, integrated by the integrator alongside y.
-enum EnergyRate { kInputPower, kDampingPower, kHystereticPower, kEnergyRates };
 
 class RateFormSystem {
  public:
@@ -69,6 +67,7 @@ class RateFormSystem {
   const structure::Structure& structure_;
   const Excitation& excitation_;
   int dofs_ = 0;
+  DofRows dof_rows_;
   int internal_count_ = 0;
   std::vector<int> internal_index_;  // per law: position of z in the z block, or -1
   std::vector<int> second_index_;    // per law: position of w in the z block, or -1
@@ -79,7 +78,6 @@ class RateFormSystem {
   Eigen::VectorXd load_, force_, viscous_, velocity_, acceleration_, absolute_acceleration_;
 
   structure::SparseMatrix pattern_;
-  std::vector<int> uu_slots_, uv_slots_, mass_slots_, damping_slots_;
   std::vector<ConnectionSlots> connection_slots_;
   std::vector<InternalSlots> internal_slots_;  // per law with z
 };

@@ -7,6 +7,9 @@
 #include <numbers>
 
 #include "isolab/core/errors.h"
+#include "isolab/hysteresis/plan_rate_form.h"
+#include "isolab/hysteresis/rate_form.h"
+#include "isolab/integrators/ida.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/model_summary.h"
 
@@ -29,13 +32,31 @@ AppliedRecord ReadComponent(const PlanModelFile& model, GroundMotionSection moti
                      "excitation.ground_motion." + key + ".dt" + where, model.units, acceleration);
 }
 
+// IDA integrates the laws' rate forms: a law without one (a degrading BHM2, alone or in an
+// uncoupled pair) is refused before the run, naming where it is.
+void RequireRateForms(const structure::PlanStructure& structure) {
+  const auto refuse = [](const std::string& where) {
+    throw InputError({"integrator ida"},
+                     fmt::format("cannot run {} (a degrading_bhm2 component: the law has no rate "
+                                 "form yet); run it with Newmark (analysis.integrator: newmark, or "
+                                 "--integrator newmark)",
+                                 where));
+  };
+  for (const structure::PlanMember& member : structure.members()) {
+    for (const auto& kernel : member.assembly.kernels()) {
+      if (!hysteresis::HasRateForm(kernel)) refuse("member '" + member.name + "'");
+    }
+  }
+  for (const structure::PlanIsolator& isolator : structure.isolators()) {
+    for (const auto& kernel : isolator.assembly.kernels()) {
+      if (!hysteresis::HasPlanRateForm(kernel)) refuse("isolator '" + isolator.name + "'");
+    }
+  }
+}
+
 }  // namespace
 
 PlanAnalysisSetup PreparePlanAnalysis(const PlanModelFile& model, const PlanOverrides& overrides) {
-  if (model.analysis.integrator == AnalysisSection::Integrator::kIda) {
-    throw InputError({model.path},
-                     "analysis.integrator: IDA does not run plan models yet; use newmark");
-  }
   if (!model.ground_motion) {
     throw InputError({model.path}, "no excitation: give excitation.ground_motion.h1 (and h2)");
   }
@@ -110,10 +131,16 @@ PlanAnalysisSetup PreparePlanAnalysis(const PlanModelFile& model, const PlanOver
   return setup;
 }
 
-integrators::RunSummary RunPlanAnalysis(const PlanModelFile& model, const PlanAnalysisSetup& setup,
+integrators::RunSummary RunPlanAnalysis(const AnalysisSection& analysis,
+                                        const PlanAnalysisSetup& setup,
                                         integrators::ResponseHistory* response) {
-  return integrators::RunNewmark(setup.structure, setup.excitation, setup.grid,
-                                 model.analysis.newmark, response);
+  if (analysis.integrator == AnalysisSection::Integrator::kIda) {
+    RequireRateForms(setup.structure);
+    return integrators::RunIda(setup.structure, setup.excitation, setup.grid, analysis.ida,
+                               response);
+  }
+  return integrators::RunNewmark(setup.structure, setup.excitation, setup.grid, analysis.newmark,
+                                 response);
 }
 
 PlanPeaks ComputePlanPeaks(const PlanAnalysisSetup& setup,

@@ -194,6 +194,9 @@ void WritePlanResults(const std::string& path, const PlanModelFile& model,
   file.WriteIntegerAttribute("/", "newton_iterations", summary.newton_iterations);
   file.WriteAttribute("/", "solves_per_step", summary.SolvesPerStep());
   file.WriteIntegerAttribute("/", "step_cuts", summary.step_cuts);
+  file.WriteIntegerAttribute("/", "ida_steps", summary.ida_steps);
+  file.WriteIntegerAttribute("/", "events", summary.events);
+  file.WriteIntegerAttribute("/", "jacobian_evaluations", summary.jacobian_evaluations);
   file.WriteAttribute("/", "wall_seconds", summary.wall_seconds);
   file.WriteAttribute("/", "termination", summary.ok() ? "completed" : "failed");
   file.WriteAttribute("/", "message", summary.message);

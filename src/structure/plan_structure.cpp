@@ -47,7 +47,7 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
     }
     law_offsets_.push_back(law_offsets_.back() + member.assembly.size());
     for (const auto& kernel : member.assembly.kernels()) {
-      member_law_is_dashpot_.push_back(std::holds_alternative<hysteresis::Dashpot>(kernel));
+      viscous_law_state_.push_back(std::holds_alternative<hysteresis::Dashpot>(kernel));
     }
   }
   for (const PlanIsolator& isolator : isolators_) {
@@ -56,6 +56,15 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
                                   "' is under a floor that does not exist");
     }
     law_offsets_.push_back(law_offsets_.back() + 2 * isolator.assembly.size());
+    // A dashpot's x and y halves (PlanViscousEnergy), flagged once so the energy is a sum.
+    for (const auto& kernel : isolator.assembly.kernels()) {
+      const auto* pair = std::get_if<hysteresis::UncoupledPair>(&kernel);
+      const bool coupled = std::holds_alternative<hysteresis::PlanDashpot>(kernel);
+      viscous_law_state_.push_back(coupled ||
+                                   (pair && std::holds_alternative<hysteresis::Dashpot>(pair->x)));
+      viscous_law_state_.push_back(coupled ||
+                                   (pair && std::holds_alternative<hysteresis::Dashpot>(pair->y)));
+    }
   }
 
   // The pattern: mass diagonal and viscous damping, every member's terms pairwise, every
@@ -193,15 +202,8 @@ double PlanStructure::StoredEnergy(std::span<const LawState> states) const {
 
 double PlanStructure::DashpotEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
-  for (std::size_t l = 0; l < member_law_is_dashpot_.size(); ++l) {
-    if (member_law_is_dashpot_[l]) energy += states[l].dissipated;
-  }
-  for (std::size_t i = 0; i < isolators_.size(); ++i) {
-    std::size_t offset = isolator_law_offset(i);
-    for (const hysteresis::PlanLawKernel& kernel : isolators_[i].assembly.kernels()) {
-      energy += hysteresis::PlanViscousEnergy(kernel, {states[offset], states[offset + 1]});
-      offset += 2;
-    }
+  for (std::size_t l = 0; l < viscous_law_state_.size(); ++l) {
+    if (viscous_law_state_[l]) energy += states[l].dissipated;
   }
   return energy;
 }

@@ -3,7 +3,8 @@
 // tangent whatever the round-off of its trial force, and a reversal sticks at once. The slopes
 // are the laws' own closed forms: along the slip direction a slipping parallel-form slider adds
 // nothing to its hardening spring (BHM2: k1), a friction pendulum's interface nothing to W/R, a
-// lead core nothing to Kd; sticking adds kp = k0 - k1, mu W / uy and Qd / Dy.
+// lead core nothing to Kd; sticking adds kp = k0 - k1, mu W / uy and Qd / Dy. A series-form
+// slider (BHM1, THM1, elastoplastic) slips on ke kh / (ke + kh) = k1 and sticks on ke = k0.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,10 +28,23 @@ std::vector<SliderCase> Cases() {
   const double qd = 88, kd = 0.34, ku = 3.4, dy = qd / (ku - kd);
   return {
       {"bhm2", LawType::kBhm2, {1.0, 0.2, 20.0}, 0.2, 1.0, 20.0},
-      {"friction_pendulum", LawType::kFrictionPendulum, {w, r, uy, mu, NAN, NAN, NAN}, w / r,
-       w / r + mu * w / uy, uy},
-      {"lead_rubber", LawType::kLeadRubber,
-       {qd, kd, dy, NAN, NAN, NAN, NAN, NAN, NAN, NAN}, kd, ku, dy},
+      // The series form: post-yield slope ke kh / (ke + kh) = k1 for BHM1 and THM1 inside uyh, 0
+      // for the elastoplastic element; ke = k0 sticking.
+      {"bhm1", LawType::kBhm1, {1.0, 0.2, 20.0}, 0.2, 1.0, 20.0},
+      {"thm1", LawType::kThm1, {1.0, 0.2, 0.45, 20.0, 1000.0}, 0.2, 1.0, 20.0},
+      {"elastoplastic", LawType::kElastoplastic, {3.225241, 0.597}, 0.0, 3.225241, 0.597},
+      {"friction_pendulum",
+       LawType::kFrictionPendulum,
+       {w, r, uy, mu, NAN, NAN, NAN},
+       w / r,
+       w / r + mu * w / uy,
+       uy},
+      {"lead_rubber",
+       LawType::kLeadRubber,
+       {qd, kd, dy, NAN, NAN, NAN, NAN, NAN, NAN, NAN},
+       kd,
+       ku,
+       dy},
   };
 }
 

@@ -25,9 +25,18 @@
 // written fs n + g(x), as in 1-D free of the cancellation in ke (u - x) when ke >> kh; the
 // dissipation is fs |xi|, the slider's work. If Newton fails (it has not been seen to), the force
 // is NaN and the integrator cuts the step.
+//
+// A continuing slip (plan_slip_decision.h) whose trial force lies on the circle or a round-off
+// inside it (Newton's predictor, du = 0) has zero travel: the slider stays at x_n with force
+// fs n + g(x_n), n the trial force's direction, and the tangent is the consistent one's limit as
+// |xi| -> 0 (c -> infinity): ke (Dg (A^-1 - w w^T / t.w) + t w^T / t.w), the slip side's
+// derivative (slip_direction.h explains why it is exact there). Along n it is the post-yield
+// slope ke kh / (ke + kh) of a linear g, across n ke.
 #pragma once
 
 #include "isolab/hysteresis/plan_law_state.h"
+#include "isolab/hysteresis/plan_slip_decision.h"
+#include "isolab/hysteresis/radial_spring.h"
 #include "isolab/hysteresis/series_slider.h"
 
 namespace isolab::hysteresis {
@@ -35,9 +44,14 @@ namespace isolab::hysteresis {
 struct PlanSeriesSlider {
   SeriesSlider law;  // ke, fs and g, as the 1-D kernel of the same law has them
 
-  // The one stick test of the family (slip starts when the trial slider force leaves the circle).
-  bool Sticks(Vec2 trial_slider_force) const {
-    return law.fs > 0.0 && Norm(trial_slider_force) <= law.fs;
+  // The one stick test of the family (plan_slip_decision.h): the slider force if it stuck is
+  // f_s* = ke (u - x_n) - g(x_n) = f_s,n + ke du, f_s,n = f_n - g(x_n) the committed one.
+  bool Sticks(const PlanLawState& committed, Vec2 u, Vec2 trial_slider_force) const {
+    if (!(law.fs > 0.0)) return false;
+    const Vec2 committed_slider_force =
+        Force(committed) - RadialForce(law.spring, Slider(committed));
+    return !PlanSlips(Slipping(committed), committed_slider_force, u - Displacement(committed),
+                      Norm(trial_slider_force) / law.fs);
   }
 
   void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,

@@ -1,6 +1,6 @@
-// The stick-or-slip decision of a circular slider over an increment, shared by the plan kernels
-// whose return map is closed form (plan_parallel_slider.h, plan_unit_slider.h): the 2-D form of
-// slip_direction.h, and for the same reason.
+// The stick-or-slip decision of a circular slider over an increment, shared by every plan kernel
+// with a slider (plan_parallel_slider.h, plan_unit_slider.h, plan_series_slider.h): the 2-D form
+// of slip_direction.h, and for the same reason.
 //
 // A slider that slipped to reach its committed state sits on its circle, so Newton's predictor
 // (du = 0) recomputes a trial force whose norm equals the strength up to round-off, and a bare
@@ -11,8 +11,9 @@
 //     |trial|^2 = strength^2 + 2 strength k n . du + k^2 |du|^2 >= strength^2;
 //   * otherwise the kernel's own test |trial| <= strength.
 // The tangent at du = 0 is then the slip side's, the phase of the step before (slip_direction.h
-// explains why both one-sided derivatives are exact). The series-form kernel
-// (plan_series_slider.h) keeps its own test: its slip solve has no closed form at zero travel.
+// explains why both one-sided derivatives are exact). For the series form (plan_series_slider.h)
+// the trial slider force is f_s,n + ke du, so the same inequality holds with k = ke; a continuing
+// slip whose trial is a round-off inside the circle has zero travel and the limit tangent.
 #pragma once
 
 #include "isolab/hysteresis/plan_vector.h"

@@ -11,7 +11,9 @@
 #pragma once
 
 #include "isolab/integrators/excitation.h"
+#include "isolab/integrators/plan_excitation.h"
 #include "isolab/integrators/response.h"
+#include "isolab/structure/plan_structure.h"
 #include "isolab/structure/structure.h"
 
 namespace isolab::integrators {
@@ -36,6 +38,17 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
                   const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer);
 // The same, keeping every output row in memory.
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response);
+
+// The same on a structure in plan under two ground-acceleration components: the states are the
+// floors' dofs, their velocities and the plan laws' internal variables (plan_rate_form.h), every
+// phase change of every law (a circular slider's stick and slip on its resultant) an event. The
+// rows carry what RunNewmark's plan overload writes (force_columns() connection forces, an
+// isolator component's x and y law forces). Every law needs a rate form (HasPlanRateForm,
+// HasRateForm): the caller checks.
+RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
+                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer);
+RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response);
 
 }  // namespace isolab::integrators

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/integrators/plan_excitation.h"
 #include "isolab/io/analysis_setup.h"
@@ -46,11 +47,13 @@ struct PlanAnalysisSetup {
 };
 
 // Throws InputError for records that cannot be read, a pair with different steps or lengths, a
-// dt coarser than the records', IDA (not yet on plan models) and a model without excitation.
+// dt coarser than the records' and a model without excitation.
 PlanAnalysisSetup PreparePlanAnalysis(const PlanModelFile& model, const PlanOverrides& overrides);
 
-// Newmark on the plan structure.
-integrators::RunSummary RunPlanAnalysis(const PlanModelFile& model, const PlanAnalysisSetup& setup,
+// Newmark or IDA on the plan structure, as `analysis` (the model's, or with the command line's
+// overrides) says. Throws InputError for IDA on a law without a rate form.
+integrators::RunSummary RunPlanAnalysis(const AnalysisSection& analysis,
+                                        const PlanAnalysisSetup& setup,
                                         integrators::ResponseHistory* response);
 
 struct PlanPeaks {

@@ -99,8 +99,8 @@ class PlanStructure {
   std::vector<PlanMember> members_;
   std::vector<PlanIsolator> isolators_;
   SparseMatrix viscous_damping_;
-  std::vector<std::size_t> law_offsets_;     // members, then isolators, then the end
-  std::vector<char> member_law_is_dashpot_;  // per law state of the members
+  std::vector<std::size_t> law_offsets_;  // members, then isolators, then the end
+  std::vector<char> viscous_law_state_;   // per law state: a dashpot's (or a dashpot half's)
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
   // Member k's slots: kMaxTerms^2 from k * kMaxTerms^2, row-major over its terms (-1 if absent).
