@@ -1,5 +1,5 @@
 # -DISOLAB_SANITIZE=ON: AddressSanitizer and UndefinedBehaviorSanitizer in every target, for
-# scripts/sanitize.sh (a build of its own beside build/; docs/sanitizers.md). Any finding stops
+# scripts/sanitize.sh (a build of its own beside build/; docs/errors.md). Any finding stops
 # the program (no recovery), so a test that trips one fails.
 option(ISOLAB_SANITIZE "Build with AddressSanitizer and UBSan (scripts/sanitize.sh)" OFF)
 if(ISOLAB_SANITIZE)
@@ -9,11 +9,6 @@ if(ISOLAB_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all
                       -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
-  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    # GCC 12 with the sanitizers reports -Wmaybe-uninitialized inside libstdc++'s <regex>
-    # (std::function in its NFA states): a false positive there, off in this build only.
-    add_compile_options(-Wno-maybe-uninitialized)
-  endif()
   # Eigen uses its own aligned allocator under ASan unless told malloc is aligned already; Debian's
   # pagmo, built without it, then frees Eigen's memory with free(): a false heap error. glibc's
   # malloc aligns to 16 bytes, all Eigen asks for without AVX.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (docs/sanitizers.md):
+# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (docs/errors.md):
 # configures build-sanitize/ with -DISOLAB_SANITIZE=ON, builds it and runs ctest there. Too long
 # for CI beside the ordinary build (a second full build); run it before a release or after a
 # change to memory handling. Extra arguments go to ctest (e.g. -R RunCommand).
