@@ -88,14 +88,16 @@ def _default_periods():
 
 
 def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
-             points_per_period=100, scale=1.0, units=None, record_dt=None, length_unit="m"):
+             points_per_period=100, scale=1.0, units=None, record_dt=None, length_unit="m",
+             max_steps=1e9):
     """`isolab spectrum`: elastic (and, given ductility, constant-ductility) response spectra.
 
     record: a record file, or a numpy array of accelerations (then record_dt in s and units are
     required). periods (s; default the command line's 0.05 to 5 by 0.05), damping and ductility
     (a number or a list), alpha, points_per_period, scale, units, record_dt and length_unit are the
     command line's --periods, --damping, --ductility, --alpha, --points-per-period, --scale,
-    --units, --dt and --length-unit.
+    --units, --dt and --length-unit; max_steps is --max-steps (a spectrum counted above it is
+    refused before it starts).
 
     Returns a dict named as the HDF5 spectrum file: "period", "damping", "elastic" {"D", "V",
     "A", "time_of_peak"} (damping x period arrays, lengths in length_unit, time in s) and, with
@@ -104,7 +106,7 @@ def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
     """
     return _spectrum(record, _as_list(periods) or _default_periods(), _as_list(damping),
                      _as_list(ductility), alpha, points_per_period, scale, units, record_dt,
-                     length_unit)
+                     length_unit, max_steps)
 
 
 def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit="kN",

@@ -12,6 +12,7 @@
 #include "isolab/io/units.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
+#include "isolab/spectra/spectrum_work.h"
 #include "record_argument.h"
 
 namespace py = pybind11;
@@ -35,7 +36,7 @@ py::dict Spectrum(const py::object& record_argument, const std::vector<double>& 
                   const std::vector<double>& damping, const std::vector<double>& ductility,
                   double alpha, int points_per_period, double scale,
                   const std::optional<std::string>& units, std::optional<double> record_dt,
-                  const std::string& length_unit) {
+                  const std::string& length_unit, double max_steps) {
   for (const double zeta : damping) {
     if (!(zeta >= 0.0 && zeta < 1.0)) {
       throw InputError({"damping"}, "damping ratios must be in [0, 1) (e.g. 0.05 for 5 %)");
@@ -73,6 +74,13 @@ py::dict Spectrum(const py::object& record_argument, const std::vector<double>& 
     spectra::ValidateSpectrumInput(ground, periods, damping);
   } catch (const InvalidParameter& error) {
     throw InputError({record.path}, error.violation().Describe());
+  }
+  {
+    spectra::ConstantDuctilityOptions inelastic;
+    inelastic.alpha = alpha;
+    spectra::CheckSpectrumWork(spectra::SpectrumSteps(ground, periods, damping.size(),
+                                                      points_per_period, ductility.size(), inelastic),
+                               max_steps, "max_steps");
   }
 
   py::dict result;
@@ -138,7 +146,8 @@ py::dict Spectrum(const py::object& record_argument, const std::vector<double>& 
 void BindSpectrum(py::module_& module) {
   module.def("_spectrum", &Spectrum, py::arg("record"), py::arg("periods"), py::arg("damping"),
              py::arg("ductility"), py::arg("alpha"), py::arg("points_per_period"), py::arg("scale"),
-             py::arg("units"), py::arg("record_dt"), py::arg("length_unit"));
+             py::arg("units"), py::arg("record_dt"), py::arg("length_unit"),
+             py::arg("max_steps"));
 }
 
 }  // namespace isolab::python

@@ -44,3 +44,11 @@ def test_spectrum_bad_input():
         isolab.spectrum(np.ones(100), record_dt=0.01, units="g", damping=1.5)
     with pytest.raises(isolab.InputError, match="record_dt"):
         isolab.spectrum(np.ones(100), units="g")
+
+
+def test_a_spectrum_beyond_max_steps_is_refused_before_it_starts(repo):
+    record = repo / "ground_motions/fwn_firm_seed1.at2"
+    with pytest.raises(isolab.InputError, match="max_steps: the spectrum would take about"):
+        isolab.spectrum(record, periods=[1e-9])
+    with pytest.raises(isolab.InputError, match="raise max_steps"):
+        isolab.spectrum(record, periods=[1.0], max_steps=10)

@@ -19,6 +19,7 @@
 #include "isolab/io/units.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
+#include "isolab/spectra/spectrum_work.h"
 #include "plot_script.h"
 
 namespace isolab::cli {
@@ -121,6 +122,9 @@ Inputs ParseInputs(const SpectrumOptions& options) {
   if (options.points_per_period < 1) {
     throw InputError({"--points-per-period"},
                      fmt::format("{} must be >= 1", options.points_per_period));
+  }
+  if (!(options.max_steps >= 1.0)) {
+    throw InputError({"--max-steps"}, fmt::format("{:g} must be >= 1", options.max_steps));
   }
   if (!(options.scale > 0.0) || !std::isfinite(options.scale)) {
     throw InputError({"--scale"}, fmt::format("{:g} must be finite and > 0", options.scale));
@@ -280,6 +284,9 @@ void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
   command->add_option("--points-per-period", options.points_per_period,
                       "Elastic peaks sought at >= N points per period, the record's steps cut "
                       "into sub-steps (default 100; 1: at the record's samples, as Chopra)");
+  command->add_option("--max-steps", options.max_steps,
+                      "Refuse a spectrum of more SDOF steps than this, counted before it starts "
+                      "(default 1e9: about 20 s of elastic spectra)");
   command->add_option("--scale", options.scale, "Scale factor on the record");
   command->add_option("--units", options.units,
                       "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...); must "
@@ -326,6 +333,15 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
     spectra::ValidateSpectrumInput(ground, inputs.periods, inputs.damping);
   } catch (const InvalidParameter& error) {
     throw InputError({options.record}, error.violation().Describe());
+  }
+
+  {
+    spectra::ConstantDuctilityOptions inelastic;
+    inelastic.alpha = options.alpha;
+    spectra::CheckSpectrumWork(
+        spectra::SpectrumSteps(ground, inputs.periods, inputs.damping.size(),
+                               options.points_per_period, inputs.ductilities.size(), inelastic),
+        options.max_steps, "--max-steps");
   }
 
   const spectra::ElasticSpectrum elastic = spectra::ComputeElasticSpectrum(

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/spectra/spectrum_work.h"
+
 namespace CLI {
 class App;
 }
@@ -27,6 +29,7 @@ struct SpectrumOptions {
   std::string length_unit = "m";        // of the spectra's lengths; time in s
   std::vector<std::string> outputs;     // .csv and/or .h5 files
   std::optional<std::string> plot;      // --plot[=DIR]: PNGs by plot_spectrum.py
+  double max_steps = spectra::kDefaultMaxSpectrumSteps;  // refused above (spectrum_work.h)
   bool json = false;
   bool quiet = false;
 };

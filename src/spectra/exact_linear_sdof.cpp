@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "isolab/core/errors.h"
@@ -71,7 +72,12 @@ ExactStepCoefficients ExactStepCoefficients::For(double omega, double zeta, doub
 
 int SubstepsPerSample(double record_dt, double period, int points_per_period) {
   // The small allowance keeps T = 0.4 s at 20 points on a 0.02 s record from tipping to 2.
-  return std::max(1, static_cast<int>(std::ceil(record_dt * points_per_period / period - 1e-9)));
+  const double substeps = std::ceil(record_dt * points_per_period / period - 1e-9);
+  if (!(substeps <= std::numeric_limits<int>::max())) {
+    throw InvalidParameter({"points_per_period", double(points_per_period),
+                            "gives more sub-steps a sample than an int counts at this period"});
+  }
+  return std::max(1, static_cast<int>(substeps));
 }
 
 PeakDeformation ExactPeakDeformation(const integrators::SampledHistory& ground, double period,

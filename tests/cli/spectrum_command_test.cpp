@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -183,6 +184,32 @@ TEST(SpectrumCommand, RecordWithA20kBHeaderLineExitsTwoAtOnce) {
                             "header is sought"),
             std::string::npos)
       << run.output;
+}
+
+TEST(SpectrumCommand, WorkBeyondTheLimitIsRefusedBeforeItStarts) {
+  // 1000 samples at 0.01 s; periods 0.05, 0.5 and 2 s at 100 points a period take
+  // ceil(0.01 * 100 / T) = 20, 2 and 1 sub-steps a sample: 23,000 SDOF steps in all.
+  const auto record = isolab::testing::OwnTestFile("thousand.at2");
+  {
+    std::ofstream out(record);
+    out << "PEER NGA STRONG MOTION DATABASE RECORD\ntest\nACCELERATION TIME SERIES IN UNITS OF G\n"
+        << "NPTS=   1000, DT=   .0100 SEC\n";
+    for (int k = 0; k < 1000; ++k) out << " " << 0.1 * std::sin(0.05 * k) << "\n";
+  }
+  const std::string spectrum = "spectrum " + record.string() + " --periods 0.05,0.5,2 -q";
+  EXPECT_EQ(RunIsolab(spectrum + " --max-steps 23000").exit_code, 0);
+  const auto over = RunIsolab(spectrum + " --max-steps 22999", true);
+  EXPECT_EQ(over.exit_code, 2) << over.output;
+  EXPECT_NE(over.output.find("--max-steps: the spectrum would take about 2.3e+04 SDOF steps"),
+            std::string::npos)
+      << over.output;
+  // The requests of the issue: before, a period of 1e-9 s ran without end, and two billion
+  // points per period overflowed the sub-step count.
+  for (const std::string request : {" --periods 1e-9", " --points-per-period 2000000000"}) {
+    const auto run = RunIsolab("spectrum " + record.string() + request + " -q", true);
+    EXPECT_EQ(run.exit_code, 2) << request << run.output;
+    EXPECT_NE(run.output.find("or raise --max-steps"), std::string::npos) << run.output;
+  }
 }
 
 }  // namespace
