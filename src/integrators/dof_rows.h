@@ -35,6 +35,23 @@ class DofRows {
   void Derivative(const double* y, const Eigen::VectorXd& mass, const Eigen::VectorXd& force,
                   const Eigen::VectorXd& load, double* yp) const;
 
+  // The energy rates at a state: input power p . v, and damping (C v . v plus the laws'
+  // viscous power) and hysteretic power summed over `responses` (each with viscous_power and
+  // hysteretic_power).
+  template <typename Responses>
+  static void PowerRates(const Eigen::VectorXd& load, const Eigen::VectorXd& velocity,
+                         const Eigen::VectorXd& viscous, const Responses& responses,
+                         double* rates) {
+    rates[kInputPower] = load.dot(velocity);
+    double damping = velocity.dot(viscous);
+    double hysteretic = 0.0;
+    for (const auto& r : responses) {
+      damping += r.viscous_power;
+      hysteretic += r.hysteretic_power;
+    }
+    rates[kDampingPower] = damping;
+    rates[kHystereticPower] = hysteretic;
+  }
   // The energies at the row: the integrals so far, the kinetic energy of `velocity`, and
   // `elastic`.
   static Energies EnergiesAt(const double* energy_integrals, const Eigen::VectorXd& velocity,

@@ -330,15 +330,7 @@ void PlanRateFormSystem::ConsistentDerivative(double t, const double* y, double*
 void PlanRateFormSystem::EnergyRates(double t, const double* y, double* rates) {
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
-  rates[kInputPower] = load_.dot(velocity_);
-  double damping = velocity_.dot(viscous_);
-  double hysteretic = 0.0;
-  for (const BlockResponse& r : responses_) {
-    damping += r.viscous_power;
-    hysteretic += r.hysteretic_power;
-  }
-  rates[kDampingPower] = damping;
-  rates[kHystereticPower] = hysteretic;
+  DofRows::PowerRates(load_, velocity_, viscous_, responses_, rates);
 }
 
 double PlanRateFormSystem::LawStoredEnergy(const LawBlock& law, double t, const double* y) const {

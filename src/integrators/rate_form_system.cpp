@@ -283,15 +283,7 @@ void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp)
 void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
-  rates[kInputPower] = load_.dot(velocity_);
-  double damping = velocity_.dot(viscous_);
-  double hysteretic = 0.0;
-  for (const RateResponse& r : responses_) {
-    damping += r.viscous_power;
-    hysteretic += r.hysteretic_power;
-  }
-  rates[kDampingPower] = damping;
-  rates[kHystereticPower] = hysteretic;
+  DofRows::PowerRates(load_, velocity_, viscous_, responses_, rates);
 }
 
 ResponseRow RateFormSystem::Record(int step, double t, const double* y,
