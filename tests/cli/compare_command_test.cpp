@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -32,7 +33,7 @@ std::string Source(const std::string& relative) {
 }
 
 fs::path OutputFolder(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / "isolab_compare_test" / name;
+  const fs::path folder = isolab::testing::OwnTestDirectory() / name;
   fs::remove_all(folder);
   return folder;
 }

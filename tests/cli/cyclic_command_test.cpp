@@ -10,6 +10,7 @@
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
+#include "own_test_file.h"
 #include "paper_tables.h"
 
 namespace {
@@ -61,7 +62,7 @@ TEST(CyclicCommand, Table7DemoPrintsThePapersNumbers) {
 }
 
 TEST(CyclicCommand, WritesTheLoopToCsvAtomically) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_cyclic_test";
+  const auto directory = isolab::testing::OwnTestDirectory();
   std::filesystem::create_directories(directory);
   const auto csv = directory / "loop.csv";
   std::filesystem::remove(csv);

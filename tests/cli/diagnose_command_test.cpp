@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -19,7 +20,7 @@ using isolab::testing::RunIsolab;
 const std::string kSource = ISOLAB_SOURCE_DIR;
 
 std::filesystem::path Scratch(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_diagnose_test";
+  const auto directory = isolab::testing::OwnTestDirectory();
   std::filesystem::create_directories(directory);
   const auto path = directory / name;
   std::filesystem::remove(path);

@@ -20,7 +20,7 @@ std::string Data(const std::string& name) {
 }
 
 std::filesystem::path TemporaryFile(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_fit_test";
+  const auto directory = isolab::testing::OwnTestDirectory();
   std::filesystem::create_directories(directory);
   const auto path = directory / name;
   std::filesystem::remove(path);

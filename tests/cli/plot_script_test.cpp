@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -21,7 +22,7 @@ std::string Source(const std::string& relative) {
 }
 
 std::filesystem::path FreshDirectory(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_plot_test" / name;
+  const auto directory = isolab::testing::OwnTestDirectory() / name;
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory);
   return directory;

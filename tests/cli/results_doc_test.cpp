@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 
 namespace {
 
@@ -34,7 +35,7 @@ std::string Snippet() {
 TEST(ResultsDoc, PandasSnippetReadsTheResults) {
   const std::string snippet = Snippet();
   ASSERT_FALSE(snippet.empty()) << "no snippet between the markers in docs/results.md";
-  const auto folder = std::filesystem::temp_directory_path() / "isolab_results_doc_test";
+  const auto folder = isolab::testing::OwnTestDirectory();
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   const std::string model = Source("models/buildings/five_story_table9.yaml");
@@ -46,8 +47,8 @@ TEST(ResultsDoc, PandasSnippetReadsTheResults) {
                 .exit_code,
             0);
   { std::ofstream(folder / "snippet.py") << snippet; }
-  const auto python = isolab::testing::RunShell(
-      "cd " + folder.string() + " && /usr/bin/python3 snippet.py", true);
+  const auto python =
+      isolab::testing::RunShell("cd " + folder.string() + " && /usr/bin/python3 snippet.py", true);
   ASSERT_EQ(python.exit_code, 0) << python.output
                                  << "\n(Debian packages python3-h5py and python3-pandas)";
   const auto json = nlohmann::json::parse(h5.output);

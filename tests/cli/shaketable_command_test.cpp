@@ -22,6 +22,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "own_test_file.h"
 #include "reference_data.h"
 
 namespace {
@@ -31,7 +32,7 @@ using isolab::testing::RunIsolab;
 const std::string kSource = ISOLAB_SOURCE_DIR;
 
 std::filesystem::path Scratch(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_shaketable_test";
+  const auto directory = isolab::testing::OwnTestDirectory();
   std::filesystem::create_directories(directory);
   const auto path = directory / name;
   std::filesystem::remove(path);

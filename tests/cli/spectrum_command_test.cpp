@@ -25,7 +25,7 @@ std::string Source(const std::string& relative) {
 }
 
 std::filesystem::path TemporaryFile(const std::string& name) {
-  const auto directory = std::filesystem::temp_directory_path() / "isolab_spectrum_test";
+  const auto directory = isolab::testing::OwnTestDirectory();
   std::filesystem::create_directories(directory);
   const auto path = directory / name;
   std::filesystem::remove(path);

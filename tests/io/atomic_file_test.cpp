@@ -13,6 +13,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/io/hdf5_file.h"
 #include "leftover_temporaries.h"
+#include "own_test_file.h"
 
 namespace isolab::io {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path FreshFolder(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / "isolab_atomic_file_test" / name;
+  const fs::path folder = isolab::testing::OwnTestDirectory() / name;
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;

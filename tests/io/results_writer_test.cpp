@@ -21,6 +21,7 @@
 #include "isolab/io/model_file.h"
 #include "isolab/io/run_analysis.h"
 #include "leftover_temporaries.h"
+#include "own_test_file.h"
 
 namespace isolab::io {
 namespace {
@@ -36,8 +37,7 @@ std::filesystem::path TemporaryFile(const std::string& name) {
   const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string folder = std::string(test->test_suite_name()) + "." + test->name();
   std::replace(folder.begin(), folder.end(), '/', '_');
-  const auto directory =
-      std::filesystem::temp_directory_path() / "isolab_results_writer_test" / folder;
+  const auto directory = isolab::testing::OwnTestDirectory() / folder;
   std::filesystem::create_directories(directory);
   const auto path = directory / name;
   std::filesystem::remove(path);

@@ -10,12 +10,13 @@
 #include <fstream>
 
 #include "isolab/core/errors.h"
+#include "own_test_file.h"
 
 namespace isolab::io {
 namespace {
 
 std::string Write(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("isolab_shake_table_" + name);
+  const auto path = isolab::testing::OwnTestDirectory() / name;
   std::ofstream(path) << text;
   return path.string();
 }

@@ -14,6 +14,7 @@
 #include "isolab/study/summary_file.h"
 #include "isolab/study/summary_table.h"
 #include "leftover_temporaries.h"
+#include "own_test_file.h"
 
 namespace isolab::study {
 namespace {
@@ -114,7 +115,7 @@ TEST(SummaryFile, CsvHoldsExactValuesStatusAndQuotedMessages) {
   results[2].pga = 0.35;
   results[2].warnings = {"PGA, check units", "too long"};
   const Summary summary = BuildSummary(Shape(), results);
-  const auto path = std::filesystem::temp_directory_path() / "isolab_summary_test.csv";
+  const auto path = isolab::testing::OwnTestDirectory() / "summary.csv";
   WriteSummaryCsv(path.string(), summary);
   const std::string csv = ReadText(path);
   std::istringstream lines(csv);
