@@ -15,6 +15,7 @@
 #include "isolab/io/result_series.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
+#include "isolab/io/run_report.h"
 #include "model.h"
 #include "record_argument.h"
 
@@ -107,54 +108,10 @@ py::array SeriesArray(const std::shared_ptr<RunResult>& result, const io::Series
   return array;
 }
 
-// "index" (the DOF or story, from 0) only where the peak has one, as the command line's JSON.
-py::dict PeakDict(const io::Peak& peak) {
-  py::dict dict(py::arg("value") = peak.value, py::arg("time") = peak.time);
-  if (peak.index >= 0) dict["index"] = peak.index;
-  return dict;
-}
-
-py::dict Peaks(const RunResult& r) {
-  py::dict peaks;
-  peaks["isolator_displacement"] = PeakDict(r.peaks.isolator_displacement);
-  peaks["isolator_force"] = PeakDict(r.peaks.isolator_force);
-  peaks["base_shear"] = PeakDict(r.peaks.base_shear);
-  peaks["first_story_shear"] = PeakDict(r.peaks.first_story_shear);
-  peaks["roof_absolute_acceleration"] = PeakDict(r.peaks.roof_absolute_acceleration);
-  peaks["story_drift"] = PeakDict(r.peaks.story_drift);
-  peaks["story_drift_ratio"] = r.peaks.story_drift_ratio;
-  if (r.setup.layout.isolation >= 0) {
-    peaks["residual_isolator_displacement"] = r.peaks.residual_isolator_displacement;
-    peaks["residual_oscillation"] = r.peaks.residual_oscillation;
-    peaks["isolator_displacement_at_excitation_end"] =
-        r.peaks.isolator_displacement_at_excitation_end;
-  }
-  return peaks;
-}
-
+// What `isolab run --json` prints (io::RunReport), as Python objects.
 py::dict Summary(const RunResult& r) {
-  const integrators::RunSummary& s = r.summary;
-  py::dict summary;
-  summary["termination"] = s.ok() ? "completed" : "failed";
-  summary["message"] = s.message;
-  summary["integrator"] = io::DescribeIntegrator(r.analysis, r.setup.grid.dt);
-  summary["dt"] = r.setup.grid.dt;
-  summary["steps"] = r.setup.grid.steps;
-  summary["steps_completed"] = s.steps;
-  summary["excitation_end"] = r.setup.excitation_end;
-  summary["free_vibration"] = r.setup.free_vibration;
-  summary["energy_balance_error"] = s.energy_balance_error;
-  summary["newton_iterations"] = s.newton_iterations;
-  summary["step_cuts"] = s.step_cuts;
-  summary["factorisations"] = s.factorisations;
-  summary["ida_steps"] = s.ida_steps;
-  summary["events"] = s.events;
-  summary["wall_seconds"] = s.wall_seconds;
-  const io::AppliedRecord& record = r.setup.record;
-  summary["record"] = py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
-                               py::arg("units") = record.units, py::arg("dt") = record.dt,
-                               py::arg("scale") = record.scale, py::arg("pga") = record.pga);
-  return summary;
+  const nlohmann::json report = io::RunReport(r.Description(), r.warnings, "");
+  return py::module_::import("json").attr("loads")(report.dump());
 }
 
 // {series name: its field}, e.g. the units of every series.
@@ -194,9 +151,13 @@ void BindRun(py::module_& module) {
            })
       .def_property_readonly("ok", [](const RunResult& r) { return r.summary.ok(); })
       .def_property_readonly("message", [](const RunResult& r) { return r.summary.message; })
-      .def_property_readonly("peaks", &Peaks, "The peaks `isolab run --json` prints")
+      .def_property_readonly(
+          "peaks", [](const RunResult& r) { return py::object(Summary(r)["peaks"]); },
+          "The peaks `isolab run --json` prints: summary['peaks']")
       .def_property_readonly("summary", &Summary,
-                             "Termination, integrator, step, counts, energy balance, the record")
+                             "What `isolab run --json` prints: the record as applied, the model "
+                             "summary, peaks, energies, termination, integrator and its "
+                             "statistics")
       .def_property_readonly("warnings", [](const RunResult& r) { return r.warnings; })
       .def_property_readonly("model_units",
                              [](const RunResult& r) {

@@ -3,16 +3,15 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "integrator_report.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/free_vibration_text.h"
 #include "isolab/io/model_summary.h"
 #include "isolab/io/output_check.h"
 #include "isolab/io/plan_analysis.h"
-#include "isolab/io/run_analysis.h"
+#include "isolab/io/run_report.h"
+#include "run_report.h"
 
 namespace isolab::cli {
 namespace {
@@ -29,16 +28,6 @@ void RefuseOneDirectionOptions(const RunOptions& options) {
   refuse(options.record_dt.has_value(), "--record-dt");
   refuse(options.fixed_base, "--fixed-base");
   refuse(options.plot.has_value(), "--plot");
-}
-
-// The model's analysis section with the command line's choices of integrator and tolerances.
-void ApplyIntegratorOptions(const RunOptions& options, io::AnalysisSection* analysis) {
-  if (options.integrator == "ida") analysis->integrator = io::AnalysisSection::Integrator::kIda;
-  if (options.integrator == "newmark") {
-    analysis->integrator = io::AnalysisSection::Integrator::kNewmark;
-  }
-  if (options.rtol) analysis->ida.relative_tolerance = *options.rtol;
-  if (options.atol) analysis->ida.absolute_tolerance = *options.atol;
 }
 
 void PrintPreamble(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
@@ -98,10 +87,7 @@ void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& s
                "elastic {:.3g} + hysteretic {:.5g}\n",
                u.force(), u.length(), e.input, e.kinetic, e.damping, e.elastic, e.hysteretic);
   }
-  fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
-             summary.energy_balance_error);
-  PrintIntegratorStatistics(model.analysis, summary, out);
-  fmt::print(out, "results: {}\n", output);
+  PrintRunOutcome(model.analysis, summary, output, out);
 }
 
 nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
@@ -121,13 +107,7 @@ nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysi
   for (const io::Peak& p : peaks.floor_rotation) rotations.push_back(p.value);
   json["peak_floor_rotation"] = rotations;
   json["peak_base_shear"] = peaks.base_shear.value;
-  json["termination"] = summary.ok() ? "completed" : "failed";
-  json["message"] = summary.message;
-  json["energy_balance_error"] = summary.energy_balance_error;
-  json["integrator"] = io::DescribeIntegrator(model.analysis, setup.grid.dt);
-  AddIntegratorStatistics(model.analysis, summary, &json);
-  json["steps_completed"] = summary.steps;
-  json["results"] = output;
+  io::AddRunOutcome(model.analysis, setup.grid.dt, summary, output, &json);
   return json;
 }
 
@@ -136,13 +116,8 @@ nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysi
 int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   RefuseOneDirectionOptions(options);
   io::PlanModelFile model = io::LoadPlanModelFile(options.model);
-  ApplyIntegratorOptions(options, &model.analysis);
-  std::string output = options.output;
-  if (output.empty()) {
-    output = !model.output_file.empty()
-                 ? model.output_file
-                 : std::filesystem::path(options.model).stem().string() + ".h5";
-  }
+  model.analysis = ChooseIntegrator(options, model.analysis);
+  const std::string output = ChooseResultsPath(options, model.output_file);
   io::CheckPlanResultsPath(output);
   std::vector<std::string> inputs{options.model};
   if (model.ground_motion) {
@@ -174,12 +149,7 @@ int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   const std::string bearing =
       io::IsolatorDisplacementWarning(peaks.largest_resultant.value, model.units);
   if (!bearing.empty()) fmt::print(stderr, "isolab: warning: {}\n", bearing);
-  if (!summary.ok()) {
-    fmt::print(stderr, "isolab: the run stopped early: {}; results up to t = {:g} are in {}\n",
-               summary.message, summary.steps * setup.grid.dt, output);
-    return 1;
-  }
-  return 0;
+  return ExitCode(summary, setup.grid.dt, output);
 }
 
 }  // namespace isolab::cli

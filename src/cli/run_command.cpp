@@ -9,7 +9,6 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "integrator_report.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/free_vibration_text.h"
@@ -20,18 +19,13 @@
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
+#include "isolab/io/run_report.h"
 #include "plan_run_command.h"
 #include "plot_script.h"
+#include "run_report.h"
 
 namespace isolab::cli {
 namespace {
-
-// "index" (the DOF or story, from 0) only where the peak has one, as in the HDF5 results.
-nlohmann::json PeakJson(const io::Peak& peak) {
-  nlohmann::json json = {{"value", peak.value}, {"time", peak.time}};
-  if (peak.index >= 0) json["index"] = peak.index;
-  return json;
-}
 
 std::string Join(const std::vector<double>& values, std::size_t count, const char* format) {
   std::string text;
@@ -131,71 +125,7 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
                force, length, e.input, e.kinetic, e.damping, 100 * e.damping / input, e.elastic,
                e.hysteretic, 100 * e.hysteretic / input);
   }
-  fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
-             summary.energy_balance_error);
-  PrintIntegratorStatistics(analysis, summary, out);
-  fmt::print(out, "results: {}\n", output);
-}
-
-nlohmann::json SummaryJson(const io::ModelFile& model, const io::AnalysisSection& analysis,
-                           const io::AnalysisSetup& setup, const io::ResponsePeaks& peaks,
-                           const integrators::RunSummary& summary,
-                           const std::vector<std::string>& warnings, const std::string& output) {
-  const io::AppliedRecord& r = setup.record;
-  const io::ModelSummary& m = setup.summary;
-  const double g = model.units.Convert(1.0, "g", io::dimension::kAcceleration);
-  nlohmann::json json;
-  json["model"] = model.path;
-  json["record"] = r.path;
-  json["scale"] = r.scale;
-  json["record_units"] = r.units;
-  json["record_units_source"] = r.units_source;
-  json["record_dt"] = r.dt;
-  json["pga"] = r.pga;
-  json["pga_g"] = r.pga / g;
-  json["dt"] = setup.grid.dt;
-  json["steps"] = setup.grid.steps;
-  json["excitation_end"] = setup.excitation_end;
-  json["free_vibration"] = setup.free_vibration;
-  json["units"] = {{"force", model.units.force()},
-                   {"length", model.units.length()},
-                   {"time", model.units.time()}};
-  json["model_summary"] = {{"total_mass", m.total_mass},
-                           {"total_weight", m.total_weight},
-                           {"fixed_base_periods", m.fixed_base_periods},
-                           {"trial_displacement", m.trial_displacement},
-                           {"secant_stiffness", m.secant_stiffness},
-                           {"isolated_period", m.isolated_period}};
-  json["warnings"] = warnings;
-  json["termination"] = summary.ok() ? "completed" : "failed";
-  json["message"] = summary.message;
-  json["peaks"] = {{"isolator_displacement", PeakJson(peaks.isolator_displacement)},
-                   {"isolator_force", PeakJson(peaks.isolator_force)},
-                   {"base_shear", PeakJson(peaks.base_shear)},
-                   {"first_story_shear", PeakJson(peaks.first_story_shear)},
-                   {"roof_absolute_acceleration", PeakJson(peaks.roof_absolute_acceleration)},
-                   {"story_drift", PeakJson(peaks.story_drift)},
-                   {"story_drift_ratio", peaks.story_drift_ratio}};
-  if (setup.layout.isolation >= 0) {
-    json["residual_isolator_displacement"] = peaks.residual_isolator_displacement;
-    json["residual_oscillation"] = peaks.residual_oscillation;
-    json["isolator_displacement_at_excitation_end"] = peaks.isolator_displacement_at_excitation_end;
-  }
-  if (peaks.rows > 0) {
-    const integrators::Energies& e = peaks.energies;
-    json["energy"] = {{"input", e.input},
-                      {"kinetic", e.kinetic},
-                      {"damping", e.damping},
-                      {"elastic", e.elastic},
-                      {"hysteretic", e.hysteretic}};
-  }
-  json["energy_balance_error"] = summary.energy_balance_error;
-  json["integrator"] = io::DescribeIntegrator(analysis, setup.grid.dt);
-  AddIntegratorStatistics(analysis, summary, &json);
-  json["steps_completed"] = summary.steps;
-  json["wall_seconds"] = summary.wall_seconds;
-  json["results"] = output;
-  return json;
+  PrintRunOutcome(analysis, summary, output, out);
 }
 
 // The model's output selection with the command line's options over it, checked before the run.
@@ -305,12 +235,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   io::CheckInputFiles({options.model});
   if (io::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
   const io::ModelFile model = io::LoadModelFile(options.model);
-  std::string output = options.output;
-  if (output.empty()) {
-    output = !model.output_file.empty()
-                 ? model.output_file
-                 : std::filesystem::path(options.model).stem().string() + ".h5";
-  }
+  const std::string output = ChooseResultsPath(options, model.output_file);
   // Everything that can be refused is refused before the run, not after it.
   io::CheckResultsPath(output);
   std::vector<std::string> inputs = model.included_files;
@@ -346,13 +271,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
 
-  io::AnalysisSection analysis = model.analysis;
-  if (options.integrator == "ida") analysis.integrator = io::AnalysisSection::Integrator::kIda;
-  if (options.integrator == "newmark") {
-    analysis.integrator = io::AnalysisSection::Integrator::kNewmark;
-  }
-  if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
-  if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
+  const io::AnalysisSection analysis = ChooseIntegrator(options, model.analysis);
   const io::OutputSelection selection = ChooseOutput(model, options, setup);
 
   if (!options.json) PrintPreamble(model, setup, out);
@@ -364,7 +283,8 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   const integrators::RunSummary& summary = run.summary;
   const std::vector<std::string>& warnings = run.warnings;
   if (options.json) {
-    out << SummaryJson(model, analysis, setup, peaks, summary, warnings, output).dump(2) << "\n";
+    const io::RunDescription description{&model, &setup, &analysis, &summary, &peaks, "", {}};
+    out << io::RunReport(description, warnings, output).dump(2) << "\n";
   } else {
     PrintSummary(model, analysis, setup, peaks, summary, output, out);
   }
@@ -374,12 +294,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   if (options.plot) {
     RunPlotScript("plot_result.py", {output, "-o", PlotDirectory(*options.plot, output)}, false);
   }
-  if (!summary.ok()) {
-    fmt::print(stderr, "isolab: the run stopped early: {}; results up to t = {:g} are in {}\n",
-               summary.message, summary.steps * setup.grid.dt, output);
-    return 1;
-  }
-  return 0;
+  return ExitCode(summary, setup.grid.dt, output);
 }
 
 }  // namespace isolab::cli

@@ -1,18 +1,18 @@
 // The HDF5 results of a plan run (plan_analysis.h; docs/results.md, "Plan models"): the series
-// are described here once, written by the same writer as one-direction results.
+// described once, the root attributes every results file carries (run_attributes.h) and the plan's
+// own.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <set>
 
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/plan_analysis.h"
-#include "isolab/io/run_analysis.h"
 #include "isolab/io/result_series.h"
 #include "isolab/io/results_file.h"
+#include "run_attributes.h"
 
 namespace isolab::io {
 namespace {
@@ -45,13 +45,7 @@ Series Scalar(std::string name, std::string units, std::function<double(const Re
 
 // Every series over the history's rows, one dataset each (the groups their names need first).
 void WriteHistory(Hdf5File& file, const std::vector<Series>& series, const ResponseHistory& r) {
-  std::set<std::string> groups;
-  for (const Series& s : series) {
-    const std::size_t slash = s.name.rfind('/');
-    if (slash != std::string::npos && groups.insert(s.name.substr(0, slash)).second) {
-      file.CreateGroup(s.name.substr(0, slash));
-    }
-  }
+  CreateSeriesGroups(file, series);
   const std::size_t rows = static_cast<std::size_t>(r.rows_written);
   std::vector<double> buffer;
   for (const Series& s : series) {
@@ -179,28 +173,12 @@ void WritePlanResults(const std::string& path, const PlanModelFile& model,
   file.WriteText("model_yaml", model.text);
 
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
-  file.WriteAttribute("/", "isolab_version", version);
-  file.WriteAttribute("/", "model_file", model.path);
+  WriteProgramAttributes(file, version, model.path, units);
   file.WriteAttribute("/", "model_kind", "plan");
-  file.WriteAttribute(
-      "/", "units",
-      fmt::format("force {}, length {}, time {}", units.force(), units.length(), units.time()));
   WriteComponentAttributes(file, "record_h1", setup.h1, g);
   if (!setup.h2.path.empty()) WriteComponentAttributes(file, "record_h2", setup.h2, g);
   file.WriteAttribute("/", "incidence_angle", setup.angle);
-  file.WriteAttribute("/", "integrator", DescribeIntegrator(model.analysis, setup.grid.dt));
-  file.WriteAttribute("/", "dt", setup.grid.dt);
-  file.WriteIntegerAttribute("/", "steps", summary.steps);
-  file.WriteIntegerAttribute("/", "newton_iterations", summary.newton_iterations);
-  file.WriteAttribute("/", "solves_per_step", summary.SolvesPerStep());
-  file.WriteIntegerAttribute("/", "step_cuts", summary.step_cuts);
-  file.WriteIntegerAttribute("/", "ida_steps", summary.ida_steps);
-  file.WriteIntegerAttribute("/", "events", summary.events);
-  file.WriteIntegerAttribute("/", "jacobian_evaluations", summary.jacobian_evaluations);
-  file.WriteAttribute("/", "wall_seconds", summary.wall_seconds);
-  file.WriteAttribute("/", "termination", summary.ok() ? "completed" : "failed");
-  file.WriteAttribute("/", "message", summary.message);
-  file.WriteAttribute("/", "energy_balance_error", summary.energy_balance_error);
+  WriteIntegratorAttributes(file, model.analysis, setup.grid.dt, summary);
   file.WriteAttribute("/", "excitation_end", setup.excitation_end);
   file.WriteAttribute("/", "free_vibration", setup.free_vibration);
   file.WriteAttribute("/", "isolated_period", setup.isolated_period);

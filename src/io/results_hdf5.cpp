@@ -6,22 +6,11 @@
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/run_analysis.h"
 #include "record_attributes.h"
+#include "run_attributes.h"
 #include "results_sink.h"
 
 namespace isolab::io {
 namespace {
-
-// Every group a series name needs ("isolator" for "isolator/force"), created once; returns them.
-std::set<std::string> CreateGroups(Hdf5File& file, const std::vector<Series>& series) {
-  std::set<std::string> groups;
-  for (const Series& s : series) {
-    const std::size_t slash = s.name.rfind('/');
-    if (slash != std::string::npos && groups.insert(s.name.substr(0, slash)).second) {
-      file.CreateGroup(s.name.substr(0, slash));
-    }
-  }
-  return groups;
-}
 
 void WriteModelSummary(Hdf5File& file, const ModelSummary& m, const UnitSystem& units) {
   file.CreateGroup("model_summary");
@@ -44,31 +33,9 @@ void WriteRunAttributes(Hdf5File& file, const RunDescription& run) {
   const integrators::RunSummary& summary = *run.summary;
   const UnitSystem& units = run.model->units;
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
-  const auto integer = [&](const char* name, long value) {
-    file.WriteIntegerAttribute("/", name, value);
-  };
-  file.WriteAttribute("/", "isolab_version", run.version);
-  file.WriteAttribute("/", "model_file", run.model->path);
-  file.WriteAttribute(
-      "/", "units",
-      fmt::format("force {}, length {}, time {}", units.force(), units.length(), units.time()));
+  WriteProgramAttributes(file, run.version, run.model->path, units);
   WriteRecordAttributes(file, setup.record, g);
-  file.WriteAttribute("/", "integrator", DescribeIntegrator(*run.analysis, setup.grid.dt));
-  file.WriteAttribute("/", "dt", setup.grid.dt);
-  integer("steps", summary.steps);
-  integer("newton_iterations", summary.newton_iterations);
-  file.WriteAttribute("/", "solves_per_step", summary.SolvesPerStep());
-  integer("max_iterations_in_a_step", summary.max_iterations_in_a_step);
-  integer("factorisations", summary.factorisations);
-  integer("step_cuts", summary.step_cuts);
-  integer("ida_steps", summary.ida_steps);
-  integer("events", summary.events);
-  integer("jacobian_evaluations", summary.jacobian_evaluations);
-  integer("error_test_failures", summary.error_test_failures);
-  file.WriteAttribute("/", "wall_seconds", summary.wall_seconds);
-  file.WriteAttribute("/", "termination", summary.ok() ? "completed" : "failed");
-  file.WriteAttribute("/", "message", summary.message);
-  file.WriteAttribute("/", "energy_balance_error", summary.energy_balance_error);
+  WriteIntegratorAttributes(file, *run.analysis, setup.grid.dt, summary);
   file.WriteAttribute("/", "excitation_end", setup.excitation_end);
   file.WriteAttribute("/", "free_vibration", setup.free_vibration);
   file.WriteAttribute("/", "residual_window", setup.residual_window);
@@ -127,7 +94,7 @@ class Hdf5Sink final : public ResultsWriter::Sink {
  public:
   Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t expected_rows)
       : file_(path) {
-    groups_ = CreateGroups(file_, series);
+    groups_ = CreateSeriesGroups(file_, series);
     for (const Series& s : series) {
       widths_.push_back(s.width());
       rows_.push_back(file_.CreateRows(s.name, s.columns.size(), s.units, expected_rows));
