@@ -48,11 +48,8 @@ void PrintPreamble(const io::PlanModelFile& model, const io::PlanAnalysisSetup& 
              setup.structure.floors(), setup.structure.isolators().size(), setup.total_mass,
              setup.total_mass * u.SiFactor(io::dimension::kMass) / 1000.0, setup.isolated_period,
              u.time(), setup.trial_displacement, u.length());
-  fmt::print(out,
-             "dt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
-             "vibration), {} dofs\n\n",
-             setup.grid.dt, u.time(), setup.grid.steps, setup.excitation_end, u.time(),
-             setup.free_vibration, u.time(), setup.structure.dofs());
+  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u,
+            out);
 }
 
 void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,

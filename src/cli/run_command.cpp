@@ -61,11 +61,9 @@ void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, s
                u.time(), m.trial_displacement, u.length(), m.secant_stiffness,
                io::DescribeUnits(u, io::dimension::kStiffness));
   }
-  fmt::print(out,
-             "\ndt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
-             "vibration), {} dofs\n\n",
-             setup.grid.dt, u.time(), setup.grid.steps, setup.excitation_end, u.time(),
-             setup.free_vibration, u.time(), setup.structure.dofs());
+  fmt::print(out, "\n");
+  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u,
+            out);
 }
 
 void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysis,

@@ -24,6 +24,15 @@ std::string ChooseResultsPath(const RunOptions& options, const std::string& mode
   return std::filesystem::path(options.model).stem().string() + ".h5";
 }
 
+void PrintGrid(const integrators::TimeGrid& grid, double excitation_end, double free_vibration,
+               int dofs, const io::UnitSystem& units, std::ostream& out) {
+  const std::string time = units.time();
+  fmt::print(out,
+             "dt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
+             "vibration), {} dofs\n\n",
+             grid.dt, time, grid.steps, excitation_end, time, free_vibration, time, dofs);
+}
+
 void PrintRunOutcome(const io::AnalysisSection& analysis, const integrators::RunSummary& summary,
                      const std::string& output, std::ostream& out) {
   fmt::print(out, "energy balance error: {:.2e} of the input energy\n",

@@ -18,6 +18,10 @@ io::AnalysisSection ChooseIntegrator(const RunOptions& options, io::AnalysisSect
 // -o, else the model's output.file, else <model stem>.h5.
 std::string ChooseResultsPath(const RunOptions& options, const std::string& model_output_file);
 
+// "dt = ..., N steps (... of excitation, then ... of free vibration), D dofs" and a blank line.
+void PrintGrid(const integrators::TimeGrid& grid, double excitation_end, double free_vibration,
+               int dofs, const io::UnitSystem& units, std::ostream& out);
+
 // The energy balance error, the integrator's statistics (Newton's iterations and step cuts, or
 // IDA's steps, events and Jacobians) and the results path.
 void PrintRunOutcome(const io::AnalysisSection& analysis, const integrators::RunSummary& summary,
