@@ -3,6 +3,7 @@
 #include "isolab/io/plan_model_file.h"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <filesystem>
@@ -99,6 +100,31 @@ TEST(PlanModelFile, ReadsFloorsStoriesIsolatorsAndBothComponents) {
   ASSERT_TRUE(model.ground_motion.has_value());
   EXPECT_DOUBLE_EQ(model.ground_motion->angle, 30.0);
   EXPECT_EQ(model.isolation_along_x.size(), 2u);
+}
+
+// The kind is read from the top-level keys without parsing the file; the parsed answer is the
+// reference for every layout a model may have.
+TEST(PlanModelFile, IsPlanModelFileAgreesWithTheParsedMapInEveryLayout) {
+  const std::vector<std::pair<std::string, bool>> cases = {
+      {"units: {force: kN}\nplan:\n  base: {}\n", true},
+      {"# plan: in a comment\n%YAML 1.2\n---\nplan :\n  base: {}\n", true},
+      {"\"plan\": {base: {}}\n", true},
+      {"'plan': {}\n", true},
+      {"{units: {force: kN}, plan: {base: {}}}\n", true},
+      {"structure:\n  plan: 3\n", false},                        // not top-level
+      {"description: |\n  plan: in a block scalar\nstructure: {}\n", false},
+      {"planned: 1\nplan_b: 2\n", false},
+      {"{structure: {plan: 1}}\n", false},
+      {"{unclosed: \n", false},  // not YAML: the one-direction reader says what is wrong
+      {"", false}};
+  for (const auto& [text, plan] : cases) {
+    const std::string path = Write(text, "kind.yaml");
+    EXPECT_EQ(IsPlanModelFile(path), plan) << text;
+    if (text.find("unclosed") == std::string::npos && !text.empty()) {
+      const YAML::Node root = YAML::LoadFile(path);
+      EXPECT_EQ(root.IsMap() && root["plan"].IsDefined(), plan) << text;
+    }
+  }
 }
 
 TEST(PlanModelFile, TurnsThePairToTheBuildingsAxes) {

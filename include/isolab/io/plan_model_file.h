@@ -63,8 +63,9 @@ struct PlanModelFile {
   std::string output_file;
 };
 
-// True when the file is a YAML map with a `plan` key; false for anything else (LoadModelFile
-// reports what is wrong with it).
+// True when the file is a YAML map with a top-level `plan` key; false for anything else
+// (LoadModelFile reports what is wrong with it). Reads a block mapping's keys from the starts of
+// its lines without parsing the file.
 bool IsPlanModelFile(const std::string& path);
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types or
