@@ -161,7 +161,9 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):
     its "ratio <quantity>" to the reference variant) and "statistics" (one row per variant and
     scale: completed and "mean <q>", "max <q>", "mean_ratio <q>", "max_ratio <q>"), both columns
     of equal length for pandas.DataFrame; "units" per quantity, "reference", "failed" (runs that
-    failed; their quantities are NaN) and "output" (the folder).
+    failed; their quantities are NaN) and "output" (the folder). A plan study's quantities are
+    its four (resultant isolator displacement and base shear, floor rotation, torsional
+    amplification), a one-direction study's its five; "units" lists them.
     """
     return _compare(str(study), "" if output is None else str(output), jobs, quiet,
                     None if free_vibration is None else str(free_vibration))
