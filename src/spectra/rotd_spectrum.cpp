@@ -51,12 +51,8 @@ ElasticSpectrum EmptyLike(std::span<const double> periods, std::span<const doubl
 
 }  // namespace
 
-PairSpectrum ComputePairSpectrum(const integrators::SampledHistory& h1,
-                                 const integrators::SampledHistory& h2,
-                                 std::span<const double> periods,
-                                 std::span<const double> damping_ratios,
-                                 const ElasticSpectrumOptions& options) {
-  options.Validate();
+void ValidatePairInput(const integrators::SampledHistory& h1, const integrators::SampledHistory& h2,
+                       std::span<const double> periods, std::span<const double> damping_ratios) {
   ValidateComponent("h1", h1, periods, damping_ratios);
   ValidateComponent("h2", h2, periods, damping_ratios);
   if (std::abs(h2.dt - h1.dt) > 1e-9 * h1.dt) {
@@ -68,6 +64,15 @@ PairSpectrum ComputePairSpectrum(const integrators::SampledHistory& h1,
         {"h2 samples", double(h2.values.size()),
          fmt::format("must be h1's {}: a pair has one length", h1.values.size())});
   }
+}
+
+PairSpectrum ComputePairSpectrum(const integrators::SampledHistory& h1,
+                                 const integrators::SampledHistory& h2,
+                                 std::span<const double> periods,
+                                 std::span<const double> damping_ratios,
+                                 const ElasticSpectrumOptions& options) {
+  options.Validate();
+  ValidatePairInput(h1, h2, periods, damping_ratios);
   static const Directions directions;
   PairSpectrum pair{EmptyLike(periods, damping_ratios), EmptyLike(periods, damping_ratios),
                     EmptyLike(periods, damping_ratios), EmptyLike(periods, damping_ratios),
@@ -77,7 +82,7 @@ PairSpectrum ComputePairSpectrum(const integrators::SampledHistory& h1,
     for (const double period : periods) {
       const int substeps = SubstepsPerSample(h1.dt, period, options.points_per_period);
       PeakDeformation d1, d2;
-      double largest_squared = 0.0;
+      double largest_squared = 0.0, floor_squared = -1.0;
       std::array<double, 2> at_largest{};
       long k1 = 0, k2 = 0, k_largest = 0;
       peaks.fill(0.0);
@@ -88,10 +93,16 @@ PairSpectrum ComputePairSpectrum(const integrators::SampledHistory& h1,
         if (squared > largest_squared) {
           largest_squared = squared, at_largest = u, k_largest = k;
         }
+        // |u . n| <= |u|: a point no longer than the smallest peak so far raises none, and
+        // after the strong motion most points are such.
+        if (squared <= floor_squared) return;
+        double floor = std::numeric_limits<double>::infinity();
         for (int a = 0; a < kRotDAngles; ++a) {
           peaks[a] =
               std::max(peaks[a], std::abs(u[0] * directions.cos[a] + u[1] * directions.sin[a]));
+          floor = std::min(floor, peaks[a]);
         }
+        floor_squared = floor * floor;
       });
       const double h = h1.dt / substeps;
       sorted = peaks;

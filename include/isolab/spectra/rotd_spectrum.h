@@ -36,8 +36,12 @@ struct PairSpectrum {
   std::vector<double> rotd100_angle;
 };
 
-// Throws InvalidParameter as ComputeElasticSpectrum does (naming "h1 ..." or "h2 ..."), and for
-// components of different steps or lengths.
+// Throws InvalidParameter as ValidateSpectrumInput does (naming "h1 ..." or "h2 ..."), and for
+// components of different steps or lengths ("h2 dt", "h2 samples").
+void ValidatePairInput(const integrators::SampledHistory& h1, const integrators::SampledHistory& h2,
+                       std::span<const double> periods, std::span<const double> damping_ratios);
+
+// Throws InvalidParameter as ValidatePairInput and ElasticSpectrumOptions::Validate do.
 PairSpectrum ComputePairSpectrum(const integrators::SampledHistory& h1,
                                  const integrators::SampledHistory& h2,
                                  std::span<const double> periods,
