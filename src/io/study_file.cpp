@@ -70,19 +70,25 @@ ModelFile LoadStructureModel(const YamlReader& reader, const YAML::Node& node,
   return model;
 }
 
-// The building with `isolation` in place of its own; its stored text says so, since results
-// files keep the model's YAML as the record of what ran.
+// What a model's stored text gains when a variant replaces its isolation: results files keep
+// the model's YAML as the record of what ran.
+std::string ReplacedIsolationNote(const std::string& study_path, const std::string& variant,
+                                  const YAML::Node& node) {
+  YAML::Emitter emitter;
+  emitter << YAML::Flow << node;
+  return fmt::format(
+      "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
+      "{}\n",
+      study_path, variant, emitter.c_str());
+}
+
+// The building with `isolation` in place of its own, its stored text saying so.
 ModelFile WithIsolation(const ModelFile& building, hysteresis::ParallelAssembly isolation,
                         const std::string& study_path, const std::string& variant,
                         const YAML::Node& node) {
   ModelFile model = building;
   model.isolation = std::move(isolation);
-  YAML::Emitter emitter;
-  emitter << YAML::Flow << node;
-  model.text += fmt::format(
-      "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
-      "{}\n",
-      study_path, variant, emitter.c_str());
+  model.text += ReplacedIsolationNote(study_path, variant, node);
   return model;
 }
 
@@ -140,7 +146,8 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
   return variant;
 }
 
-// A plan study's variant: the building itself or another plan model.
+// A plan study's variant: the building itself, the building with every isolator on the
+// variant's laws (coupled), or another plan model.
 StudyVariant ReadPlanVariant(const YamlReader& reader, const YAML::Node& node,
                              const std::string& path, const fs::path& directory,
                              const PlanModelFile& building) {
@@ -150,14 +157,29 @@ StudyVariant ReadPlanVariant(const YamlReader& reader, const YAML::Node& node,
   const std::string name_path = ChildPath(path, "name");
   variant.name = reader.ReadString(reader.Require(node, path, "name"), name_path);
   CheckName(reader, node["name"], name_path, variant.name);
-  for (const char* key : {"isolation", "fixed_base"}) {
-    if (node[key]) {
-      reader.Fail(node[key], ChildPath(path, key),
-                  fmt::format("applies to a one-direction building; '{}' is a plan model, whose "
-                              "variants are plan models (give model: other_plan_model.yaml, or "
-                              "nothing for the building itself)",
-                              building.path));
+  if (node["fixed_base"]) {
+    reader.Fail(
+        node["fixed_base"], ChildPath(path, "fixed_base"),
+        fmt::format("applies to a one-direction building; '{}' is a plan model", building.path));
+  }
+  if (node["isolation"] && node["model"]) {
+    reader.Fail(node, path, "give isolation or model, not both");
+  }
+  if (node["isolation"]) {
+    const std::string isolation_path = ChildPath(path, "isolation");
+    const hysteresis::ParallelAssembly laws =
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units);
+    const std::size_t c = FirstWithoutCoupledForm(laws);
+    if (c < laws.size()) {
+      reader.Fail(node["isolation"], isolation_path,
+                  fmt::format("{}: every isolator of a plan building takes these laws as "
+                              "coupled laws",
+                              NoCoupledForm(laws, c)));
     }
+    variant.plan = building;
+    ReplaceIsolation(&*variant.plan, laws);
+    variant.plan->text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
+    return variant;
   }
   if (node["model"]) {
     const std::string model_path = ChildPath(path, "model");

@@ -152,10 +152,52 @@ TEST(PlanCompareCommand, SummaryIsWhatIsolabRunPrintsForEachVariantWhoeverRunsIt
   EXPECT_EQ(Read(one / "summary.csv"), Read(mpi / "summary.csv"));
 }
 
+const std::string kBilinear = "{name: b, type: bhm2, ke: 8.0653, kh: 0.80653, fs: 18.146}";
+
+// An isolation variant is the building with every isolator on the variant's laws: the same
+// numbers as a plan model file written so, read by the model reader and run by `isolab run`.
+TEST(PlanCompareCommand, IsolationVariantIsTheBuildingWithThoseLawsAtEveryIsolator) {
+  const fs::path folder = FreshTestDirectory();
+  std::string text = Read(kPlan);
+  const std::size_t from = text.find("components: &table9\n");
+  const std::size_t to = text.find("    - {name: se");
+  ASSERT_TRUE(from != std::string::npos && to != std::string::npos);
+  text.replace(from, to - from, "components: &table9 [" + kBilinear + "]\n");
+  for (int i = 0; i < 2; ++i) Replace(&text, "../../ground_motions/", kRecords);
+  const fs::path bilinear = folder / "bilinear_plan.yaml";
+  std::ofstream(bilinear) << text;
+  const fs::path study =
+      WriteStudy(folder,
+                 "  - {name: by_isolation, isolation: {components: [" + kBilinear +
+                     "]}}\n  - {name: by_model, model: " + bilinear.string() + "}\n",
+                 kFirmPair);
+  const Outcome compare =
+      RunIsolab("compare " + study.string() + " -q -o " + (folder / "out").string());
+  ASSERT_EQ(compare.exit_code, 0) << compare.output;
+  const auto rows = CsvRows(folder / "out" / "summary.csv");
+  ASSERT_GE(rows.size(), 3u);
+  const Outcome run =
+      RunIsolab("run " + bilinear.string() + " --json -o " + (folder / "run.h5").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::vector<double> expected = RunQuantities(nlohmann::json::parse(run.output));
+  for (std::size_t q = 0; q < 4; ++q) {
+    EXPECT_EQ(rows[1][4 + q], rows[2][4 + q]) << rows[0][4 + q];
+    EXPECT_EQ(std::stod(rows[1][4 + q]), expected[q]) << rows[0][4 + q];
+  }
+  EXPECT_GT(expected[0], 100.0);  // mm: the bilinear bearings move
+  // The variant's results file says what replaced the isolation.
+  EXPECT_NE(Read(folder / "out" / rows[1][13]).find("variant by_isolation: the isolation above"),
+            std::string::npos);
+}
+
 // Each bad study exits 2 with "<study>:<line>:<column>: <key path>: <what>", and runs nothing.
 TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
   const fs::path folder = FreshTestDirectory();
   const std::string eccentric = "  - {name: eccentric}\n";
+  const std::string degrading =
+      "  - {name: bilinear, isolation: {components: [{type: degrading_bhm2, k0: 2, k1: 0.25, "
+      "uy: 20, loss: 0.1, slip_scale: 500}]}}\n";
+  const std::string fixed_base = "  - {name: fixed, fixed_base: true}\n";
   const std::string nan_angle =
       Pair("fwn_firm_seed1.at2", "h2_fwn_firm_seed3.at2", ", angle: .nan");
   struct Case {
@@ -172,8 +214,12 @@ TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
            "fwn_firm_seed1.at2' 0.01 s; a pair must share one step"},
       {eccentric, "  - " + kRecords + "fwn_firm_seed1.at2\n",
        ":5:5: records[0]: one record cannot drive the plan model"},
-      {"  - {name: bilinear, isolation: {components: [{type: bhm2, ke: 8, kh: 0.8, fs: 18}]}}\n",
-       kFirmPair, ":3:33: variants[0].isolation: applies to a one-direction building"},
+      {degrading, kFirmPair,
+       ":3:33: variants[0].isolation: degrading_bhm2 has no coupled bidirectional form: every "
+       "isolator of a plan building takes these laws as coupled laws"},
+      {fixed_base, kFirmPair,
+       ":3:" + std::to_string(fixed_base.find("true") + 1) +
+           ": variants[0].fixed_base: applies to a one-direction building"},
       {"  - {name: one_direction, model: " + kRoot + "/models/buildings/five_story_table9.yaml}\n",
        kFirmPair,
        ":3:34: variants[0].model: '" + kRoot +

@@ -28,9 +28,11 @@
 // variant brings its own. Every error is an InputError "file:line:col: key path: what (allowed)".
 //
 // Plan studies (issue #15): when the building is a plan model (plan_model_file.h), every variant
-// is one too -- the building itself ({name}) or another plan model ({name, model}); `isolation`
-// and `fixed_base` are one-direction variants' and a one-direction model among plan ones is
-// refused. Their records are pairs, written as a plan model's excitation.ground_motion is:
+// is one too -- the building itself ({name}), the building with every isolator on the variant's
+// `isolation` laws as coupled laws ({name, isolation}, in the building's units), or another plan
+// model ({name, model}); `fixed_base` is a one-direction variant's and a one-direction model
+// among plan ones is refused. Their records are pairs, written as a plan model's
+// excitation.ground_motion is:
 //   records:
 //     - {h1: {file: a_h1.at2, scale: 1.0}, h2: {file: a_h2.at2}, angle: 30, name: a_at30}
 // (units, dt and scale per component as there; angle in degrees from x to H1, default 0; name
