@@ -64,6 +64,15 @@ struct PlanModelFile {
   std::string output_file;
 };
 
+// True when the file is a YAML map with a `plan` key; false for anything else (LoadModelFile
+// reports what is wrong with it).
+bool IsPlanModelFile(const std::string& path);
+
+// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types or
+// units, an isolator or centre outside the footprint, a mass or rotational inertia <= 0, laws
+// that break their rules or have no coupled form.
+PlanModelFile LoadPlanModelFile(const std::string& path);
+
 // The index of the first of `laws` without a coupled bidirectional form; laws.size() if none.
 std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws);
 // "degrading_bhm2 has no coupled bidirectional form", of laws[c].
@@ -73,14 +82,5 @@ std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t 
 // isolation_along_x to match. Throws std::invalid_argument (NoCoupledForm) for a law without a
 // coupled form.
 void ReplaceIsolation(PlanModelFile* model, const hysteresis::ParallelAssembly& laws);
-
-// True when the file is a YAML map with a `plan` key; false for anything else (LoadModelFile
-// reports what is wrong with it).
-bool IsPlanModelFile(const std::string& path);
-
-// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types or
-// units, an isolator or centre outside the footprint, a mass or rotational inertia <= 0, laws
-// that break their rules or have no coupled form.
-PlanModelFile LoadPlanModelFile(const std::string& path);
 
 }  // namespace isolab::io
