@@ -198,10 +198,7 @@ nlohmann::json SpectrumJson(const io::SpectrumDescription& s, const std::vector<
     json["pair"] = nlohmann::json::array();
     for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
       nlohmann::json curves = {{"damping", e.damping_ratios[d]}};
-      for (const auto& [name, curve] :
-           {std::pair{"h1", &s.pair->h1}, std::pair{"h2", &s.pair->h2},
-            std::pair{"geometric_mean", &s.pair->geometric_mean},
-            std::pair{"rotd50", &s.pair->rotd50}, std::pair{"rotd100", &s.pair->rotd100}}) {
+      for (const auto& [name, curve] : io::ElasticCurves(s)) {
         curves[name] = CurveJson(*curve, d, s.gravity);
       }
       curves["rotd100"]["angle"] = std::vector<double>(s.pair->rotd100_angle.begin() + d * n,
@@ -300,8 +297,7 @@ void PrintPairTables(const io::SpectrumDescription& s, std::ostream& out) {
                "RotD50", "RotD100", "dir. [deg]");
     for (std::size_t p = 0; p < h1.periods.size(); ++p) {
       fmt::print(out, "{:>8.4g}", h1.periods[p]);
-      for (const spectra::ElasticSpectrum* curve :
-           {&pair.h1, &pair.h2, &pair.geometric_mean, &pair.rotd50, &pair.rotd100}) {
+      for (const auto& [name, curve] : io::ElasticCurves(s)) {
         fmt::print(out, " {:>8.4g}", curve->at(d, p).pseudo_acceleration / s.gravity);
       }
       fmt::print(out, " {:>10.1f}\n", pair.rotd100_angle[d * h1.periods.size() + p]);

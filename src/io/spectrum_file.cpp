@@ -26,18 +26,6 @@ std::string Extension(const std::string& path) {
 // Shortest text that reads back to the same double; "nan" for a strength not found.
 std::string Number(double value) { return std::isnan(value) ? "nan" : fmt::format("{}", value); }
 
-// The elastic curves written: one record's, or a pair's five (in the order of the files).
-std::vector<std::pair<std::string, const spectra::ElasticSpectrum*>> ElasticCurves(
-    const SpectrumDescription& s) {
-  if (s.pair == nullptr) return {{"elastic", s.elastic}};
-  const spectra::PairSpectrum& p = *s.pair;
-  return {{"h1", &p.h1},
-          {"h2", &p.h2},
-          {"geometric_mean", &p.geometric_mean},
-          {"rotd50", &p.rotd50},
-          {"rotd100", &p.rotd100}};
-}
-
 std::string DescribeRecord(const AppliedRecord& r, double gravity) {
   return fmt::format("{} (units {} from {}, scale {:g}, PGA {:.4g} g)", r.path, r.units,
                      r.units_source, r.scale, r.pga / gravity);
@@ -147,6 +135,17 @@ void WriteHdf5(const std::string& path, const SpectrumDescription& s) {
 }
 
 }  // namespace
+
+std::vector<std::pair<std::string, const spectra::ElasticSpectrum*>> ElasticCurves(
+    const SpectrumDescription& s) {
+  if (s.pair == nullptr) return {{"elastic", s.elastic}};
+  const spectra::PairSpectrum& p = *s.pair;
+  return {{"h1", &p.h1},
+          {"h2", &p.h2},
+          {"geometric_mean", &p.geometric_mean},
+          {"rotd50", &p.rotd50},
+          {"rotd100", &p.rotd100}};
+}
 
 bool IsSpectrumFileName(const std::string& path) {
   const std::string extension = Extension(path);

@@ -92,14 +92,21 @@ ModelFile WithIsolation(const ModelFile& building, hysteresis::ParallelAssembly 
   return model;
 }
 
-StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const std::string& path,
-                         const fs::path& directory, const ModelFile& building) {
+// A variant entry's keys checked and its name read.
+StudyVariant NamedVariant(const YamlReader& reader, const YAML::Node& node,
+                          const std::string& path) {
   reader.RequireMap(node, path);
   reader.CheckKeys(node, path, kVariantKeys);
   StudyVariant variant;
   const std::string name_path = ChildPath(path, "name");
   variant.name = reader.ReadString(reader.Require(node, path, "name"), name_path);
   CheckName(reader, node["name"], name_path, variant.name);
+  return variant;
+}
+
+StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                         const fs::path& directory, const ModelFile& building) {
+  StudyVariant variant = NamedVariant(reader, node, path);
   if (node["fixed_base"]) {
     variant.fixed_base = ReadFlag(reader, node["fixed_base"], ChildPath(path, "fixed_base"));
   }
@@ -151,12 +158,7 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
 StudyVariant ReadPlanVariant(const YamlReader& reader, const YAML::Node& node,
                              const std::string& path, const fs::path& directory,
                              const PlanModelFile& building) {
-  reader.RequireMap(node, path);
-  reader.CheckKeys(node, path, kVariantKeys);
-  StudyVariant variant;
-  const std::string name_path = ChildPath(path, "name");
-  variant.name = reader.ReadString(reader.Require(node, path, "name"), name_path);
-  CheckName(reader, node["name"], name_path, variant.name);
+  StudyVariant variant = NamedVariant(reader, node, path);
   if (node["fixed_base"]) {
     reader.Fail(
         node["fixed_base"], ChildPath(path, "fixed_base"),

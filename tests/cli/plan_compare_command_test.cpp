@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/run_isolab.h"
+#include "cli/text_file.h"
 #include "own_test_file.h"
 
 namespace isolab::testing {
@@ -24,19 +25,6 @@ namespace fs = std::filesystem;
 const std::string kRoot = ISOLAB_SOURCE_DIR;
 const std::string kPlan = kRoot + "/models/plan/five_story_table9_plan.yaml";
 const std::string kRecords = kRoot + "/ground_motions/";
-
-std::string Read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void Replace(std::string* text, const std::string& what, const std::string& with) {
-  const std::size_t at = text->find(what);
-  ASSERT_NE(at, std::string::npos) << what;
-  text->replace(at, what.size(), with);
-}
 
 // A study file in the test's own folder, with a pair entry for `h1` and `h2` (file names in
 // ground_motions/) unless `records` gives the list.
@@ -64,29 +52,14 @@ std::string H2Location(const std::string& pair) {
 // The bundled plan model with its centres of mass on the centre of stiffness, its records'
 // paths absolute: the eccentric building's symmetric twin.
 fs::path WriteSymmetricModel(const fs::path& folder) {
-  std::string text = Read(kPlan);
-  Replace(&text, "base: {mass: 100 t, centre_of_mass: [13200, 8000]}",
-          "base: {mass: 100 t, centre_of_mass: [12000, 8000]}");
-  Replace(&text, "    centre_of_mass: [13200, 8000]\n", "    centre_of_mass: [12000, 8000]\n");
-  for (int i = 0; i < 2; ++i) Replace(&text, "../../ground_motions/", kRecords);
+  std::string text = ReadText(kPlan);
+  ReplaceOnce(&text, "base: {mass: 100 t, centre_of_mass: [13200, 8000]}",
+              "base: {mass: 100 t, centre_of_mass: [12000, 8000]}");
+  ReplaceOnce(&text, "    centre_of_mass: [13200, 8000]\n", "    centre_of_mass: [12000, 8000]\n");
+  for (int i = 0; i < 2; ++i) ReplaceOnce(&text, "../../ground_motions/", kRecords);
   const fs::path path = folder / "symmetric_plan.yaml";
   std::ofstream(path) << text;
   return path;
-}
-
-// CSV rows as fields (no quoted commas in the rows read here).
-std::vector<std::vector<std::string>> CsvRows(const fs::path& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream lines(Read(path));
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::vector<std::string> fields;
-    std::string field;
-    std::istringstream cells(line);
-    while (std::getline(cells, field, ',')) fields.push_back(field);
-    rows.push_back(fields);
-  }
-  return rows;
 }
 
 // What `isolab run` prints on a plan model as the study's four quantities.
@@ -112,8 +85,8 @@ TEST(PlanCompareCommand, SummaryIsWhatIsolabRunPrintsForEachVariantWhoeverRunsIt
   const Outcome run2 = RunIsolab("compare " + study.string() + " -q -j 2 -o " + two.string());
   ASSERT_EQ(run1.exit_code, 0) << run1.output;
   ASSERT_EQ(run2.exit_code, 0) << run2.output;
-  EXPECT_EQ(Read(one / "summary.csv"), Read(two / "summary.csv"));
-  EXPECT_TRUE(Read(one / "summary.h5") == Read(two / "summary.h5"));
+  EXPECT_EQ(ReadText(one / "summary.csv"), ReadText(two / "summary.csv"));
+  EXPECT_TRUE(ReadText(one / "summary.h5") == ReadText(two / "summary.h5"));
   EXPECT_NE(run1.output.find("torsion amp. [1]"), std::string::npos) << run1.output;
 
   const auto rows = CsvRows(one / "summary.csv");
@@ -149,7 +122,7 @@ TEST(PlanCompareCommand, SummaryIsWhatIsolabRunPrintsForEachVariantWhoeverRunsIt
       RunShell("mpirun --allow-run-as-root --oversubscribe -np 2 " + std::string(ISOLAB_BINARY) +
                " compare " + study.string() + " -q -o " + mpi.string());
   ASSERT_EQ(ranks.exit_code, 0) << ranks.output;
-  EXPECT_EQ(Read(one / "summary.csv"), Read(mpi / "summary.csv"));
+  EXPECT_EQ(ReadText(one / "summary.csv"), ReadText(mpi / "summary.csv"));
 }
 
 const std::string kBilinear = "{name: b, type: bhm2, ke: 8.0653, kh: 0.80653, fs: 18.146}";
@@ -158,12 +131,12 @@ const std::string kBilinear = "{name: b, type: bhm2, ke: 8.0653, kh: 0.80653, fs
 // numbers as a plan model file written so, read by the model reader and run by `isolab run`.
 TEST(PlanCompareCommand, IsolationVariantIsTheBuildingWithThoseLawsAtEveryIsolator) {
   const fs::path folder = FreshTestDirectory();
-  std::string text = Read(kPlan);
+  std::string text = ReadText(kPlan);
   const std::size_t from = text.find("components: &table9\n");
   const std::size_t to = text.find("    - {name: se");
   ASSERT_TRUE(from != std::string::npos && to != std::string::npos);
   text.replace(from, to - from, "components: &table9 [" + kBilinear + "]\n");
-  for (int i = 0; i < 2; ++i) Replace(&text, "../../ground_motions/", kRecords);
+  for (int i = 0; i < 2; ++i) ReplaceOnce(&text, "../../ground_motions/", kRecords);
   const fs::path bilinear = folder / "bilinear_plan.yaml";
   std::ofstream(bilinear) << text;
   const fs::path study =
@@ -186,8 +159,9 @@ TEST(PlanCompareCommand, IsolationVariantIsTheBuildingWithThoseLawsAtEveryIsolat
   }
   EXPECT_GT(expected[0], 100.0);  // mm: the bilinear bearings move
   // The variant's results file says what replaced the isolation.
-  EXPECT_NE(Read(folder / "out" / rows[1][13]).find("variant by_isolation: the isolation above"),
-            std::string::npos);
+  EXPECT_NE(
+      ReadText(folder / "out" / rows[1][13]).find("variant by_isolation: the isolation above"),
+      std::string::npos);
 }
 
 // Each bad study exits 2 with "<study>:<line>:<column>: <key path>: <what>", and runs nothing.

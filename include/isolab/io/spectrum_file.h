@@ -24,6 +24,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "isolab/io/record.h"
 #include "isolab/spectra/constant_ductility.h"
@@ -42,6 +44,11 @@ struct SpectrumDescription {
   double gravity = 0.0;                         // 1 g in length_unit/s^2
   std::string version;
 };
+
+// The elastic curves of a description, named as the files name them: {"elastic"} of one record,
+// or a pair's {"h1", "h2", "geometric_mean", "rotd50", "rotd100"}.
+std::vector<std::pair<std::string, const spectra::ElasticSpectrum*>> ElasticCurves(
+    const SpectrumDescription& spectrum);
 
 // True for the extensions WriteSpectrumFile knows (.csv, .h5, .hdf5).
 bool IsSpectrumFileName(const std::string& path);
