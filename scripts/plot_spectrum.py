@@ -11,7 +11,8 @@ writes, named after the spectrum file's stem:
     <stem>_strength.png  normalised yield strength f_y / f_o per ductility (constant-ductility
                          spectra only)
 Elastic curves are black, one line style per damping ratio; constant-ductility curves are coloured
-by ductility. Runs on Debian's /usr/bin/python3 with python3-matplotlib (and python3-h5py for
+by ductility. A pair's spectra (`isolab spectrum H1 H2`) show its five curves: the components
+(grey), their geometric mean, RotD50 and RotD100 (coloured). Runs on Debian's /usr/bin/python3 with python3-matplotlib (and python3-h5py for
 HDF5 input); `--check` only tests that they import.
 """
 import argparse
@@ -23,6 +24,10 @@ import sys
 from plot_common import import_modules
 
 STYLES = ["-", "--", ":", "-."]
+# A pair's curves (spectrum_file.h): label and colour.
+PAIR_CURVES = {"h1": ("H1", "0.55"), "h2": ("H2", "0.75"),
+               "geometric_mean": ("geometric mean", "C0"), "rotd50": ("RotD50", "C2"),
+               "rotd100": ("RotD100", "C3")}
 
 
 def number(field):
@@ -37,6 +42,7 @@ class Spectra:
         self.length = "m"
         self.elastic = {}  # zeta -> {"T", "D", "V", "A_g"}
         self.inelastic = {}  # (zeta, mu) -> {"T", "D", "V", "A_g", "fy"}
+        self.pair = {}  # (curve, zeta) -> {"T", "D", "V", "A_g"}
         self.alpha = None
         self.title = ""
 
@@ -56,6 +62,8 @@ def read_csv(path):
         zeta = number(row["damping"])
         if row["curve"] == "elastic":
             curve = s.elastic.setdefault(zeta, {"T": [], "D": [], "V": [], "A_g": []})
+        elif row["curve"] in PAIR_CURVES:
+            curve = s.pair.setdefault((row["curve"], zeta), {"T": [], "D": [], "V": [], "A_g": []})
         else:
             mu = number(row["ductility"])
             s.alpha = number(row["alpha"])
@@ -74,12 +82,19 @@ def read_hdf5(h5py, path):
     with h5py.File(path, "r") as f:
         T = f["period"][:]
         zetas = f["damping"][:]
-        units = f["elastic/D"].attrs.get("units", b"m")
+        first = "elastic" if "elastic" in f else "h1"
+        units = f[first + "/D"].attrs.get("units", b"m")
         s.length = units.decode() if isinstance(units, bytes) else str(units)
         g = float(f.attrs["gravity"])
         for k, zeta in enumerate(zetas):
-            s.elastic[float(zeta)] = {"T": T, "D": f["elastic/D"][k], "V": f["elastic/V"][k],
-                                      "A_g": f["elastic/A"][k] / g}
+            if "elastic" in f:
+                s.elastic[float(zeta)] = {"T": T, "D": f["elastic/D"][k],
+                                          "V": f["elastic/V"][k], "A_g": f["elastic/A"][k] / g}
+            for name in PAIR_CURVES:
+                if name in f:
+                    s.pair[(name, float(zeta))] = {"T": T, "D": f[name]["D"][k],
+                                                   "V": f[name]["V"][k],
+                                                   "A_g": f[name]["A"][k] / g}
         if "constant_ductility" in f:
             c = f["constant_ductility"]
             s.alpha = float(c.attrs["alpha"])
@@ -93,10 +108,18 @@ def read_hdf5(h5py, path):
 
 def plot_quantity(plt, s, key, label, path, log, title):
     fig, ax = plt.subplots(figsize=(8, 5))
-    zetas = sorted(set(s.elastic) | {zeta for (zeta, _) in s.inelastic})
+    zetas = sorted(set(s.elastic) | {zeta for (zeta, _) in s.inelastic} |
+                   {zeta for (_, zeta) in s.pair})
     for zeta, c in sorted(s.elastic.items()):
         ax.plot(c["T"], c[key], STYLES[zetas.index(zeta) % len(STYLES)], color="k", lw=1.2,
                 label=f"elastic, zeta = {zeta:g}")
+    for name, (curve_label, color) in PAIR_CURVES.items():
+        for zeta in zetas:
+            if (name, zeta) in s.pair:
+                c = s.pair[(name, zeta)]
+                ax.plot(c["T"], c[key], STYLES[zetas.index(zeta) % len(STYLES)], color=color,
+                        lw=1.4 if name.startswith("rotd") else 1.0,
+                        label=f"{curve_label}, zeta = {zeta:g}")
     ductilities = sorted({mu for (_, mu) in s.inelastic})
     for (zeta, mu), c in sorted(s.inelastic.items()):
         if key not in c:

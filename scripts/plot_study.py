@@ -30,6 +30,10 @@ LABELS = {
     "story_drift_ratio": "peak story drift ratio",
     "floor_acceleration": "peak floor absolute acceleration",
     "residual_isolator_displacement": "residual isolator displacement",
+    "resultant_isolator_displacement": "peak resultant isolator displacement",
+    "resultant_base_shear": "peak resultant base shear",
+    "floor_rotation": "peak floor rotation",
+    "torsional_amplification": "torsional amplification",
 }
 
 

@@ -87,7 +87,7 @@ def _default_periods():
     return [float(f"{0.05 + k * 0.05:.12g}") for k in range(100)]
 
 
-def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
+def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
              points_per_period=100, scale=1.0, units=None, record_dt=None, length_unit="m",
              max_steps=1e9):
     """`isolab spectrum`: elastic (and, given ductility, constant-ductility) response spectra.
@@ -103,8 +103,13 @@ def spectrum(record, *, periods=None, damping=0.05, ductility=None, alpha=0.0,
     "A", "time_of_peak"} (damping x period arrays, lengths in length_unit, time in s) and, with
     ductility, "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "u_m",
     "achieved_ductility" (damping x ductility x period), ...}; "record" and "units".
+
+    h2: the pair's second component (a file or an array, read as record is), as `isolab spectrum
+    H1 H2`: then "h1", "h2", "geometric_mean", "rotd50" and "rotd100" (each as "elastic"; rotd100
+    also "angle", degrees from H1 towards H2) replace "elastic", with "record_h2"; ductility is
+    refused for a pair.
     """
-    return _spectrum(record, _as_list(periods) or _default_periods(), _as_list(damping),
+    return _spectrum(record, h2, _as_list(periods) or _default_periods(), _as_list(damping),
                      _as_list(ductility), alpha, points_per_period, scale, units, record_dt,
                      length_unit, max_steps)
 
@@ -161,7 +166,9 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):
     its "ratio <quantity>" to the reference variant) and "statistics" (one row per variant and
     scale: completed and "mean <q>", "max <q>", "mean_ratio <q>", "max_ratio <q>"), both columns
     of equal length for pandas.DataFrame; "units" per quantity, "reference", "failed" (runs that
-    failed; their quantities are NaN) and "output" (the folder).
+    failed; their quantities are NaN) and "output" (the folder). A plan study's quantities are
+    its four (resultant isolator displacement and base shear, floor rotation, torsional
+    amplification), a one-direction study's its five; "units" lists them.
     """
     return _compare(str(study), "" if output is None else str(output), jobs, quiet,
                     None if free_vibration is None else str(free_vibration))

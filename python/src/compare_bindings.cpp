@@ -30,13 +30,14 @@ namespace {
 
 // One numpy column per quantity, `values(i)[q]` for each of `count` rows, under `prefix`+key.
 template <typename Values>
-void QuantityColumns(py::dict& columns, const std::string& prefix, std::size_t count,
-                     Values values) {
-  for (std::size_t q = 0; q < study::kQuantityCount; ++q) {
+void QuantityColumns(py::dict& columns, const study::StudyShape& shape, const std::string& prefix,
+                     std::size_t count, Values values) {
+  for (const study::Quantity quantity : shape.quantities) {
+    const auto q = static_cast<std::size_t>(quantity);
     py::array_t<double> column(static_cast<py::ssize_t>(count));
     auto out = column.mutable_unchecked<1>();
     for (std::size_t i = 0; i < count; ++i) out(i) = values(i)[q];
-    columns[py::str(prefix + std::string(study::Quantities()[q].key))] = column;
+    columns[py::str(prefix + std::string(study::InfoOf(quantity).key))] = column;
   }
 }
 
@@ -65,8 +66,10 @@ py::dict RunColumns(const study::Summary& summary) {
                    py::arg("scale") = scale, py::arg("completed") = completed,
                    py::arg("message") = message, py::arg("file") = file,
                    py::arg("record_units") = units, py::arg("pga") = pga);
-  QuantityColumns(columns, "", n, [&](std::size_t i) { return summary.runs[i].values; });
-  QuantityColumns(columns, "ratio ", n, [&](std::size_t i) { return summary.ratios[i]; });
+  QuantityColumns(columns, summary.shape, "", n,
+                  [&](std::size_t i) { return summary.runs[i].values; });
+  QuantityColumns(columns, summary.shape, "ratio ", n,
+                  [&](std::size_t i) { return summary.ratios[i]; });
   return columns;
 }
 
@@ -86,10 +89,12 @@ py::dict StatisticColumns(const study::Summary& summary) {
   py::dict columns(py::arg("variant") = variant, py::arg("scale") = scale,
                    py::arg("completed") = completed);
   const auto& s = summary.statistics;
-  QuantityColumns(columns, "mean ", n, [&](std::size_t i) { return s[i].mean; });
-  QuantityColumns(columns, "max ", n, [&](std::size_t i) { return s[i].max; });
-  QuantityColumns(columns, "mean_ratio ", n, [&](std::size_t i) { return s[i].mean_ratio; });
-  QuantityColumns(columns, "max_ratio ", n, [&](std::size_t i) { return s[i].max_ratio; });
+  QuantityColumns(columns, summary.shape, "mean ", n, [&](std::size_t i) { return s[i].mean; });
+  QuantityColumns(columns, summary.shape, "max ", n, [&](std::size_t i) { return s[i].max; });
+  QuantityColumns(columns, summary.shape, "mean_ratio ", n,
+                  [&](std::size_t i) { return s[i].mean_ratio; });
+  QuantityColumns(columns, summary.shape, "max_ratio ", n,
+                  [&](std::size_t i) { return s[i].max_ratio; });
   return columns;
 }
 
@@ -127,8 +132,9 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
   study::WriteSummaryHdf5((path / "summary.h5").string(), summary, study_path, ISOLAB_VERSION);
 
   py::dict units;
-  for (std::size_t q = 0; q < study::kQuantityCount; ++q) {
-    units[py::str(std::string(study::Quantities()[q].key))] = summary.shape.units[q];
+  for (const study::Quantity q : summary.shape.quantities) {
+    units[py::str(std::string(study::InfoOf(q).key))] =
+        summary.shape.units[static_cast<std::size_t>(q)];
   }
   py::dict result;
   result["runs"] = RunColumns(summary);

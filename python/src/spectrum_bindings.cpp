@@ -1,6 +1,6 @@
 // isolab.spectrum: `isolab spectrum` (elastic and constant-ductility response spectra of a
-// record) with the command line's options as keyword arguments; the spectra as numpy arrays
-// named as in the HDF5 spectrum file (io/spectrum_file.h).
+// record, or a pair's RotD50/RotD100) with the command line's options as keyword arguments; the
+// spectra as numpy arrays named as in the HDF5 spectrum file (io/spectrum_file.h).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -12,6 +12,7 @@
 #include "isolab/io/units.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
+#include "isolab/spectra/rotd_spectrum.h"
 #include "isolab/spectra/spectrum_work.h"
 #include "record_argument.h"
 
@@ -32,11 +33,89 @@ py::array_t<double> Table(const std::vector<Item>& values, std::size_t rows, std
   return array;
 }
 
-py::dict Spectrum(const py::object& record_argument, const std::vector<double>& periods,
-                  const std::vector<double>& damping, const std::vector<double>& ductility,
-                  double alpha, int points_per_period, double scale,
+// {"D", "V", "A", "time_of_peak"} of an elastic curve, damping x period arrays.
+py::dict CurveDict(const spectra::ElasticSpectrum& e) {
+  const std::size_t nz = e.damping_ratios.size(), nt = e.periods.size();
+  using spectra::SpectralOrdinate;
+  return py::dict(
+      py::arg("D") =
+          Table(e.ordinates, nz, nt, [](const SpectralOrdinate& o) { return o.deformation; }),
+      py::arg("V") =
+          Table(e.ordinates, nz, nt, [](const SpectralOrdinate& o) { return o.pseudo_velocity; }),
+      py::arg("A") = Table(e.ordinates, nz, nt,
+                           [](const SpectralOrdinate& o) { return o.pseudo_acceleration; }),
+      py::arg("time_of_peak") =
+          Table(e.ordinates, nz, nt, [](const SpectralOrdinate& o) { return o.time_of_peak; }));
+}
+
+// A record read (a file or an array), scaled into the spectra's unit, with its description.
+struct Ground {
+  integrators::SampledHistory acceleration;
+  py::dict description;
+};
+
+Ground ReadGround(const py::object& record_argument, double scale,
                   const std::optional<std::string>& units, std::optional<double> record_dt,
-                  const std::string& length_unit, double max_steps) {
+                  const io::UnitSystem& system) {
+  const io::Record record =
+      IsRecordFile(record_argument)
+          ? io::ReadRecord(py::str(record_argument).cast<std::string>(),
+                           {units.value_or(""), record_dt.value_or(0.0), "units", "record_dt"})
+          : ArrayRecord(record_argument, record_dt, units);
+  Ground ground;
+  ground.acceleration.dt = record.dt;
+  double factor = 0.0;
+  try {
+    factor = system.Convert(scale, record.units, io::dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({record.path}, "units '" + record.units + "': " + error.what());
+  }
+  for (const double a : record.values) ground.acceleration.values.push_back(a * factor);
+  ground.description =
+      py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
+               py::arg("units") = record.units, py::arg("dt") = record.dt, py::arg("scale") = scale,
+               py::arg("pga") = record.Peak() * std::abs(factor));
+  return ground;
+}
+
+// A pair's spectra (rotd_spectrum.h): each curve as "elastic" is, and RotD100's direction.
+py::dict PairSpectrum(const Ground& h1, const Ground& h2, const std::vector<double>& periods,
+                      const std::vector<double>& damping, int points_per_period, double max_steps,
+                      py::dict result) {
+  try {
+    spectra::ValidatePairInput(h1.acceleration, h2.acceleration, periods, damping);
+  } catch (const InvalidParameter& error) {
+    const bool about_h2 = error.violation().key.rfind("h2", 0) == 0;
+    throw InputError({(about_h2 ? h2 : h1).description["path"].cast<std::string>()},
+                     error.violation().Describe());
+  }
+  spectra::CheckSpectrumWork(
+      spectra::PairSpectrumSteps(h1.acceleration, periods, damping.size(), points_per_period),
+      max_steps, "max_steps");
+  std::optional<spectra::PairSpectrum> pair;
+  {
+    py::gil_scoped_release release;
+    pair = spectra::ComputePairSpectrum(h1.acceleration, h2.acceleration, periods, damping,
+                                        {points_per_period});
+  }
+  result["record_h2"] = h2.description;
+  result["h1"] = CurveDict(pair->h1);
+  result["h2"] = CurveDict(pair->h2);
+  result["geometric_mean"] = CurveDict(pair->geometric_mean);
+  result["rotd50"] = CurveDict(pair->rotd50);
+  py::dict rotd100 = CurveDict(pair->rotd100);
+  rotd100["angle"] =
+      Table(pair->rotd100_angle, damping.size(), periods.size(), [](double a) { return a; });
+  result["rotd100"] = rotd100;
+  return result;
+}
+
+py::dict Spectrum(const py::object& record_argument, const py::object& h2_argument,
+                  const std::vector<double>& periods, const std::vector<double>& damping,
+                  const std::vector<double>& ductility, double alpha, int points_per_period,
+                  double scale, const std::optional<std::string>& units,
+                  std::optional<double> record_dt, const std::string& length_unit,
+                  double max_steps) {
   for (const double zeta : damping) {
     if (!(zeta >= 0.0 && zeta < 1.0)) {
       throw InputError({"damping"}, "damping ratios must be in [0, 1) (e.g. 0.05 for 5 %)");
@@ -56,41 +135,36 @@ py::dict Spectrum(const py::object& record_argument, const std::vector<double>& 
   } catch (const std::invalid_argument& error) {
     throw InputError({"length_unit"}, std::string(error.what()) + " (m, cm, mm, in, ft)");
   }
-  const io::Record record =
-      IsRecordFile(record_argument)
-          ? io::ReadRecord(py::str(record_argument).cast<std::string>(),
-                           {units.value_or(""), record_dt.value_or(0.0), "units", "record_dt"})
-          : ArrayRecord(record_argument, record_dt, units);
-  integrators::SampledHistory ground;
-  ground.dt = record.dt;
-  double factor = 0.0;
-  try {
-    factor = system->Convert(scale, record.units, io::dimension::kAcceleration);
-  } catch (const std::invalid_argument& error) {
-    throw InputError({record.path}, "units '" + record.units + "': " + error.what());
-  }
-  for (const double a : record.values) ground.values.push_back(a * factor);
-  try {
-    spectra::ValidateSpectrumInput(ground, periods, damping);
-  } catch (const InvalidParameter& error) {
-    throw InputError({record.path}, error.violation().Describe());
-  }
-  {
-    spectra::ConstantDuctilityOptions inelastic;
-    inelastic.alpha = alpha;
-    spectra::CheckSpectrumWork(spectra::SpectrumSteps(ground, periods, damping.size(),
-                                                      points_per_period, ductility.size(), inelastic),
-                               max_steps, "max_steps");
-  }
-
+  const Ground h1 = ReadGround(record_argument, scale, units, record_dt, *system);
   py::dict result;
   result["period"] = py::array_t<double>(periods.size(), periods.data());
   result["damping"] = py::array_t<double>(damping.size(), damping.data());
   result["units"] = py::dict(py::arg("length") = length_unit, py::arg("time") = "s");
-  result["record"] =
-      py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
-               py::arg("units") = record.units, py::arg("dt") = record.dt, py::arg("scale") = scale,
-               py::arg("pga") = record.Peak() * std::abs(factor));
+  result["record"] = h1.description;
+  if (!h2_argument.is_none()) {
+    if (!ductility.empty()) {
+      throw InputError({"ductility"},
+                       "constant-ductility spectra of a pair do not follow from its components' "
+                       "responses (an inelastic oscillator is not linear): give one record");
+    }
+    return PairSpectrum(h1, ReadGround(h2_argument, scale, units, record_dt, *system), periods,
+                        damping, points_per_period, max_steps, result);
+  }
+  const integrators::SampledHistory& ground = h1.acceleration;
+  try {
+    spectra::ValidateSpectrumInput(ground, periods, damping);
+  } catch (const InvalidParameter& error) {
+    throw InputError({h1.description["path"].cast<std::string>()}, error.violation().Describe());
+  }
+  {
+    spectra::ConstantDuctilityOptions inelastic;
+    inelastic.alpha = alpha;
+    spectra::CheckSpectrumWork(
+        spectra::SpectrumSteps(ground, periods, damping.size(), points_per_period, ductility.size(),
+                               inelastic),
+        max_steps, "max_steps");
+  }
+
   std::optional<spectra::ElasticSpectrum> elastic;
   std::optional<spectra::ConstantDuctilitySpectrum> inelastic;
   {
@@ -104,16 +178,7 @@ py::dict Spectrum(const py::object& record_argument, const std::vector<double>& 
     }
   }
   const std::size_t nz = damping.size(), nt = periods.size();
-  using spectra::SpectralOrdinate;
-  result["elastic"] = py::dict(
-      py::arg("D") = Table(elastic->ordinates, nz, nt,
-                           [](const SpectralOrdinate& o) { return o.deformation; }),
-      py::arg("V") = Table(elastic->ordinates, nz, nt,
-                           [](const SpectralOrdinate& o) { return o.pseudo_velocity; }),
-      py::arg("A") = Table(elastic->ordinates, nz, nt,
-                           [](const SpectralOrdinate& o) { return o.pseudo_acceleration; }),
-      py::arg("time_of_peak") = Table(elastic->ordinates, nz, nt,
-                                      [](const SpectralOrdinate& o) { return o.time_of_peak; }));
+  result["elastic"] = CurveDict(*elastic);
   if (inelastic) {
     // (damping x ductility) rows of periods, reshaped to (n_z, n_mu, n_T) as in the HDF5 file.
     const std::size_t nm = ductility.size();
@@ -144,10 +209,10 @@ py::dict Spectrum(const py::object& record_argument, const std::vector<double>& 
 }  // namespace
 
 void BindSpectrum(py::module_& module) {
-  module.def("_spectrum", &Spectrum, py::arg("record"), py::arg("periods"), py::arg("damping"),
-             py::arg("ductility"), py::arg("alpha"), py::arg("points_per_period"), py::arg("scale"),
-             py::arg("units"), py::arg("record_dt"), py::arg("length_unit"),
-             py::arg("max_steps"));
+  module.def("_spectrum", &Spectrum, py::arg("record"), py::arg("h2"), py::arg("periods"),
+             py::arg("damping"), py::arg("ductility"), py::arg("alpha"),
+             py::arg("points_per_period"), py::arg("scale"), py::arg("units"), py::arg("record_dt"),
+             py::arg("length_unit"), py::arg("max_steps"));
 }
 
 }  // namespace isolab::python

@@ -69,3 +69,23 @@ def test_bad_input_raises_input_error_with_its_location(repo, tmp_path):
         isolab.compare(repo / "tests/study/data/bad_study_key.yaml", output=tmp_path)
     with pytest.raises(isolab.InputError, match="free_vibration"):
         isolab.compare(repo / SMALL, output=tmp_path, free_vibration="soon")
+
+
+def test_a_plan_study_has_the_plan_quantities_of_the_command_line(repo, tmp_path, isolab_cli,
+                                                                   monkeypatch):
+    monkeypatch.chdir(repo)
+    plan = "models/studies/five_story_plan_angles.yaml"
+    isolab_cli("compare", plan, "-q", "-j", "1", "-o", tmp_path / "cli")
+    result = isolab.compare(plan, output=tmp_path / "py", jobs=2, quiet=True)
+    assert list(result["units"]) == ["resultant_isolator_displacement", "resultant_base_shear",
+                                     "floor_rotation", "torsional_amplification"]
+    assert (tmp_path / "py" / "summary.h5").read_bytes() == \
+        (tmp_path / "cli" / "summary.h5").read_bytes()
+    runs = [row for row in read_summary(tmp_path / "cli" / "summary.csv")
+            if row["record"] not in ("mean", "max")]
+    assert [row["record"] for row in runs] == list(result["runs"]["record"]) == \
+        ["firm_at0", "firm_at45", "firm_at90", "firm_at135"]
+    for key, unit in result["units"].items():
+        for i, row in enumerate(runs):
+            np.testing.assert_equal(result["runs"][key][i], number(row[f"{key} [{unit}]"]))
+    assert all(a > 1.0 for a in result["runs"]["torsional_amplification"])

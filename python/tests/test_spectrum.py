@@ -52,3 +52,25 @@ def test_a_spectrum_beyond_max_steps_is_refused_before_it_starts(repo):
         isolab.spectrum(record, periods=[1e-9])
     with pytest.raises(isolab.InputError, match="raise max_steps"):
         isolab.spectrum(record, periods=[1.0], max_steps=10)
+
+
+def test_a_pair_equals_the_command_lines_and_refuses_ductility(repo, tmp_path, isolab_cli):
+    h1, h2 = "ground_motions/fwn_firm_seed1.at2", "ground_motions/h2_fwn_firm_seed3.at2"
+    h5 = tmp_path / "pair.h5"
+    isolab_cli("spectrum", h1, h2, "--periods", "0.5,1,2.5", "--scale", 0.6, "-o", h5, "-q")
+    mine = isolab.spectrum(repo / h1, repo / h2, periods=[0.5, 1, 2.5], scale=0.6)
+    assert "elastic" not in mine
+    with h5py.File(h5) as f:
+        for curve in ("h1", "h2", "geometric_mean", "rotd50", "rotd100"):
+            for name in ("D", "V", "A"):
+                np.testing.assert_array_equal(mine[curve][name], f[curve][name][...])
+        np.testing.assert_array_equal(mine["rotd100"]["angle"], f["rotd100/angle"][...])
+        assert mine["record_h2"]["pga"] == f.attrs["record_h2_pga"]
+    # The components' curves are each record's own spectrum.
+    alone = isolab.spectrum(repo / h2, periods=[0.5, 1, 2.5], scale=0.6)
+    np.testing.assert_array_equal(mine["h2"]["D"], alone["elastic"]["D"])
+    assert (mine["rotd100"]["D"] >= np.maximum(mine["h1"]["D"], mine["h2"]["D"])).all()
+    with pytest.raises(isolab.InputError, match="ductility"):
+        isolab.spectrum(repo / h1, repo / h2, periods=[1.0], ductility=2)
+    with pytest.raises(isolab.InputError, match="a pair has one length"):
+        isolab.spectrum(repo / h1, repo / "ground_motions/pulse_tp2.at2", periods=[1.0])

@@ -68,12 +68,8 @@ void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& s
              peaks.centre_resultant.value, peaks.centre_resultant.time, u.time());
   fmt::print(out, "torsional amplification {:.4g} ({} over the base's centre of mass)\n",
              peaks.torsional_amplification, isolators[peaks.largest_resultant.index].name);
-  double rotation = 0.0;
-  int floor = 0;
-  for (const io::Peak& p : peaks.floor_rotation) {
-    if (p.value > rotation) rotation = p.value, floor = p.index;
-  }
-  fmt::print(out, "peak floor rotation {:.4g} rad ({})\n", rotation,
+  const int floor = peaks.largest_floor_rotation.index;
+  fmt::print(out, "peak floor rotation {:.4g} rad ({})\n", peaks.largest_floor_rotation.value,
              floor == 0 ? std::string("base") : model.building.stories[floor - 1].name);
   fmt::print(out, "peak base shear (resultant) {:.5g} {} at t = {:.4g} {}\n",
              peaks.base_shear.value, u.force(), peaks.base_shear.time, u.time());

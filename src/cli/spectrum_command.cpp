@@ -139,7 +139,14 @@ Inputs ParseInputs(const SpectrumOptions& options) {
                                            output));
     }
   }
-  io::CheckOutputs({options.record}, options.outputs);  // before a long scan, not after it
+  if (!options.record_h2.empty() && !inputs.ductilities.empty()) {
+    throw InputError({"--ductility"},
+                     "constant-ductility spectra of a pair do not follow from its components' "
+                     "responses (an inelastic oscillator is not linear): give one record");
+  }
+  std::vector<std::string> inputs_read{options.record};
+  if (!options.record_h2.empty()) inputs_read.push_back(options.record_h2);
+  io::CheckOutputs(inputs_read, options.outputs);  // before a long scan, not after it
   if (options.plot && options.outputs.empty()) {
     throw InputError({"--plot"},
                      "needs an output file for the plot script to read (-o OUT.csv "
@@ -160,9 +167,22 @@ nlohmann::json Numbers(const std::vector<double>& values) {
   return json;
 }
 
+// D, V, A and A in g of damping ratio d's curve.
+nlohmann::json CurveJson(const spectra::ElasticSpectrum& e, std::size_t d, double gravity) {
+  const std::size_t n = e.periods.size();
+  std::vector<double> D(n), V(n), A(n), A_g(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    D[p] = e.at(d, p).deformation;
+    V[p] = e.at(d, p).pseudo_velocity;
+    A[p] = e.at(d, p).pseudo_acceleration;
+    A_g[p] = A[p] / gravity;
+  }
+  return {{"D", Numbers(D)}, {"V", Numbers(V)}, {"A", Numbers(A)}, {"A_g", Numbers(A_g)}};
+}
+
 nlohmann::json SpectrumJson(const io::SpectrumDescription& s, const std::vector<std::string>& files,
                             double seconds) {
-  const spectra::ElasticSpectrum& e = *s.elastic;
+  const spectra::ElasticSpectrum& e = s.pair != nullptr ? s.pair->h1 : *s.elastic;
   nlohmann::json json;
   json["record"] = s.record.path;
   json["scale"] = s.record.scale;
@@ -170,21 +190,28 @@ nlohmann::json SpectrumJson(const io::SpectrumDescription& s, const std::vector<
   json["pga_g"] = s.record.pga / s.gravity;
   json["units"] = {{"length", s.length_unit}, {"time", "s"}, {"g", s.gravity}};
   json["periods"] = e.periods;
-  json["elastic"] = nlohmann::json::array();
   const std::size_t n = e.periods.size();
-  for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
-    std::vector<double> D(n), V(n), A(n), A_g(n);
-    for (std::size_t p = 0; p < n; ++p) {
-      D[p] = e.at(d, p).deformation;
-      V[p] = e.at(d, p).pseudo_velocity;
-      A[p] = e.at(d, p).pseudo_acceleration;
-      A_g[p] = A[p] / s.gravity;
+  if (s.pair != nullptr) {
+    json["record_h2"] = s.record_h2.path;
+    json["record_h2_units"] = s.record_h2.units;
+    json["pga_h2_g"] = s.record_h2.pga / s.gravity;
+    json["pair"] = nlohmann::json::array();
+    for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
+      nlohmann::json curves = {{"damping", e.damping_ratios[d]}};
+      for (const auto& [name, curve] : io::ElasticCurves(s)) {
+        curves[name] = CurveJson(*curve, d, s.gravity);
+      }
+      curves["rotd100"]["angle"] = std::vector<double>(s.pair->rotd100_angle.begin() + d * n,
+                                                       s.pair->rotd100_angle.begin() + (d + 1) * n);
+      json["pair"].push_back(curves);
     }
-    json["elastic"].push_back({{"damping", e.damping_ratios[d]},
-                               {"D", Numbers(D)},
-                               {"V", Numbers(V)},
-                               {"A", Numbers(A)},
-                               {"A_g", Numbers(A_g)}});
+  } else {
+    json["elastic"] = nlohmann::json::array();
+    for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
+      nlohmann::json curve = CurveJson(e, d, s.gravity);
+      curve["damping"] = e.damping_ratios[d];
+      json["elastic"].push_back(curve);
+    }
   }
   if (s.constant_ductility != nullptr) {
     const spectra::ConstantDuctilitySpectrum& c = *s.constant_ductility;
@@ -260,6 +287,57 @@ void PrintTables(const io::SpectrumDescription& s, std::ostream& out) {
   }
 }
 
+// A pair's table per damping ratio: each curve's A in g, and RotD100's direction.
+void PrintPairTables(const io::SpectrumDescription& s, std::ostream& out) {
+  const spectra::PairSpectrum& pair = *s.pair;
+  const spectra::ElasticSpectrum& h1 = pair.h1;
+  for (std::size_t d = 0; d < h1.damping_ratios.size(); ++d) {
+    fmt::print(out, "\nzeta = {:g}: pseudo-acceleration A [g]\n", h1.damping_ratios[d]);
+    fmt::print(out, "{:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>10}\n", "T [s]", "H1", "H2", "geomean",
+               "RotD50", "RotD100", "dir. [deg]");
+    for (std::size_t p = 0; p < h1.periods.size(); ++p) {
+      fmt::print(out, "{:>8.4g}", h1.periods[p]);
+      for (const auto& [name, curve] : io::ElasticCurves(s)) {
+        fmt::print(out, " {:>8.4g}", curve->at(d, p).pseudo_acceleration / s.gravity);
+      }
+      fmt::print(out, " {:>10.1f}\n", pair.rotd100_angle[d * h1.periods.size() + p]);
+    }
+  }
+  fmt::print(out,
+             "\nRotD50, RotD100: median and largest peak over the directions of the pair "
+             "(Boore 2010); dir.: RotD100's, from H1 towards H2; D and V in the files\n");
+}
+
+// A record read, scaled and converted to the spectra's acceleration unit, and how it was applied.
+struct Ground {
+  io::Record record;
+  integrators::SampledHistory acceleration;
+  io::AppliedRecord applied;
+};
+
+Ground ReadGround(const SpectrumOptions& options, const std::string& path,
+                  const io::UnitSystem& units) {
+  Ground ground;
+  ground.record = io::ReadRecord(path, {options.units, options.dt.value_or(0), "--units", "--dt"});
+  const io::Record& record = ground.record;
+  ground.acceleration.dt = record.dt;
+  double factor = 0.0;
+  try {
+    factor = units.Convert(options.scale, record.units, io::dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({path}, fmt::format("units '{}': {}", record.units, error.what()));
+  }
+  for (const double a : record.values) ground.acceleration.values.push_back(a * factor);
+  ground.applied = {path,
+                    record.format,
+                    record.units,
+                    record.units_source,
+                    record.dt,
+                    options.scale,
+                    record.Peak() * std::abs(factor)};
+  return ground;
+}
+
 }  // namespace
 
 void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
@@ -271,6 +349,10 @@ void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
       ->add_option("record", options.record,
                    "Ground-motion record (PEER AT2, Peknold AT2, CSV, columns)")
       ->required();
+  command->add_option("record_h2", options.record_h2,
+                      "Second horizontal component of the same motion (same step and length): "
+                      "the pair's RotD50 and RotD100 spectra (Boore 2010) beside each "
+                      "component's and their geometric mean");
   command->add_option("--damping", options.damping,
                       "Damping ratios, comma-separated, in [0, 1) (default 0.05)");
   command->add_option("--periods", options.periods,
@@ -319,33 +401,42 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   }
   if (options.plot) CheckPlotScript(kPlotScript);
 
-  const io::Record record =
-      io::ReadRecord(options.record, {options.units, options.dt.value_or(0), "--units", "--dt"});
-  integrators::SampledHistory ground;
-  ground.dt = record.dt;
+  const Ground h1 = ReadGround(options, options.record, *units);
+  std::optional<Ground> h2;
+  if (!options.record_h2.empty()) h2 = ReadGround(options, options.record_h2, *units);
+  const integrators::SampledHistory& ground = h1.acceleration;
   try {
-    const double factor = units->Convert(options.scale, record.units, io::dimension::kAcceleration);
-    for (const double a : record.values) ground.values.push_back(a * factor);
-  } catch (const std::invalid_argument& error) {
-    throw InputError({options.record}, fmt::format("units '{}': {}", record.units, error.what()));
-  }
-  try {
-    spectra::ValidateSpectrumInput(ground, inputs.periods, inputs.damping);
+    if (h2) {
+      spectra::ValidatePairInput(ground, h2->acceleration, inputs.periods, inputs.damping);
+    } else {
+      spectra::ValidateSpectrumInput(ground, inputs.periods, inputs.damping);
+    }
   } catch (const InvalidParameter& error) {
-    throw InputError({options.record}, error.violation().Describe());
+    const bool about_h2 = error.violation().key.rfind("h2", 0) == 0;
+    throw InputError({about_h2 ? options.record_h2 : options.record}, error.violation().Describe());
   }
 
   {
     spectra::ConstantDuctilityOptions inelastic;
     inelastic.alpha = options.alpha;
     spectra::CheckSpectrumWork(
-        spectra::SpectrumSteps(ground, inputs.periods, inputs.damping.size(),
-                               options.points_per_period, inputs.ductilities.size(), inelastic),
+        h2 ? spectra::PairSpectrumSteps(ground, inputs.periods, inputs.damping.size(),
+                                        options.points_per_period)
+           : spectra::SpectrumSteps(ground, inputs.periods, inputs.damping.size(),
+                                    options.points_per_period, inputs.ductilities.size(),
+                                    inelastic),
         options.max_steps, "--max-steps");
   }
 
-  const spectra::ElasticSpectrum elastic = spectra::ComputeElasticSpectrum(
-      ground, inputs.periods, inputs.damping, {options.points_per_period});
+  std::optional<spectra::PairSpectrum> pair;
+  std::optional<spectra::ElasticSpectrum> elastic;
+  if (h2) {
+    pair = spectra::ComputePairSpectrum(ground, h2->acceleration, inputs.periods, inputs.damping,
+                                        {options.points_per_period});
+  } else {
+    elastic = spectra::ComputeElasticSpectrum(ground, inputs.periods, inputs.damping,
+                                              {options.points_per_period});
+  }
   std::optional<spectra::ConstantDuctilitySpectrum> constant_ductility;
   if (!inputs.ductilities.empty()) {
     spectra::ConstantDuctilityOptions inelastic;
@@ -373,16 +464,11 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   }
 
   io::SpectrumDescription description;
-  description.elastic = &elastic;
+  description.elastic = elastic ? &*elastic : nullptr;
+  description.pair = pair ? &*pair : nullptr;
   description.constant_ductility = constant_ductility ? &*constant_ductility : nullptr;
-  description.record = {options.record,
-                        record.format,
-                        record.units,
-                        record.units_source,
-                        record.dt,
-                        options.scale,
-                        record.Peak() * std::abs(units->Convert(options.scale, record.units,
-                                                                io::dimension::kAcceleration))};
+  description.record = h1.applied;
+  if (h2) description.record_h2 = h2->applied;
   description.length_unit = options.length_unit;
   description.gravity = gravity;
   description.version = ISOLAB_VERSION;
@@ -393,10 +479,19 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   if (options.json) {
     out << SpectrumJson(description, options.outputs, seconds).dump(2) << "\n";
   } else {
-    fmt::print(out, "== {} ==\n{}: {} samples at {:g} s, in {} from {}; scale {:g}: PGA {:.4g} g\n",
-               options.record, record.format, record.values.size(), record.dt, record.units,
-               record.units_source, options.scale, description.record.pga / gravity);
-    PrintTables(description, out);
+    for (const Ground* g : std::initializer_list<const Ground*>{&h1, h2 ? &*h2 : nullptr}) {
+      if (g == nullptr) continue;
+      const io::Record& record = g->record;
+      fmt::print(out,
+                 "== {} ==\n{}: {} samples at {:g} s, in {} from {}; scale {:g}: PGA {:.4g} g\n",
+                 g->applied.path, record.format, record.values.size(), record.dt, record.units,
+                 record.units_source, options.scale, g->applied.pga / gravity);
+    }
+    if (pair) {
+      PrintPairTables(description, out);
+    } else {
+      PrintTables(description, out);
+    }
     for (const std::string& output : options.outputs) fmt::print(out, "spectra: {}\n", output);
     fmt::print(out, "{:.2f} s\n", seconds);
   }

@@ -1,5 +1,6 @@
 // `isolab spectrum`: elastic and constant-ductility response spectra of a ground-motion record
-// (spectra/elastic_spectrum.h, spectra/constant_ductility.h), printed as a table or JSON and
+// (spectra/elastic_spectrum.h, spectra/constant_ductility.h), or the elastic RotD50/RotD100
+// spectra of a pair of records (spectra/rotd_spectrum.h), printed as a table or JSON and
 // written as CSV and/or HDF5 (io/spectrum_file.h).
 #pragma once
 
@@ -18,6 +19,7 @@ namespace isolab::cli {
 
 struct SpectrumOptions {
   std::string record;
+  std::string record_h2;                // a pair's second component: RotD50/RotD100 spectra
   std::string damping = "0.05";         // comma-separated ratios in [0, 1)
   std::string periods = "0.05:5:0.05";  // START:STOP:STEP (s, STOP included) or a list
   std::string ductility;                // comma-separated targets >= 1; empty: elastic only

@@ -178,6 +178,10 @@ PlanPeaks ComputePlanPeaks(const PlanAnalysisSetup& setup,
   for (const Peak& peak : peaks.isolator_resultant) {
     if (peak.value >= peaks.largest_resultant.value) peaks.largest_resultant = peak;
   }
+  // The first floor of the largest: a building at rest names its base.
+  for (const Peak& peak : peaks.floor_rotation) {
+    if (peak.value > peaks.largest_floor_rotation.value) peaks.largest_floor_rotation = peak;
+  }
   if (peaks.centre_resultant.value > 0.0) {
     peaks.torsional_amplification = peaks.largest_resultant.value / peaks.centre_resultant.value;
   }

@@ -168,6 +168,28 @@ std::vector<structure::PlanStory> ReadStories(const YamlReader& reader, const YA
   return stories;
 }
 
+// An isolator's laws: coupled bidirectional forms, or each law along x and along y alone.
+hysteresis::PlanAssembly IsolatorAssembly(const hysteresis::ParallelAssembly& laws,
+                                          bool uncoupled) {
+  std::vector<hysteresis::PlanComponent> components;
+  for (const hysteresis::Component& law : laws.components()) {
+    components.push_back(
+        {law.name, law.parameters, uncoupled ? std::optional(law.parameters) : std::nullopt});
+  }
+  return hysteresis::PlanAssembly(std::move(components));
+}
+
+// `along_x` with the isolator `site`'s laws added, named "<site>.<law>".
+hysteresis::ParallelAssembly AlongX(const hysteresis::ParallelAssembly& along_x,
+                                    const std::string& site,
+                                    const hysteresis::ParallelAssembly& laws) {
+  std::vector<hysteresis::Component> pushed = along_x.components();
+  for (const hysteresis::Component& law : laws.components()) {
+    pushed.push_back({site + "." + law.name, law.parameters});
+  }
+  return hysteresis::ParallelAssembly(std::move(pushed));
+}
+
 structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::Node& node,
                                          const std::string& path, std::size_t index,
                                          const Footprint& footprint, const UnitSystem& units,
@@ -191,22 +213,15 @@ structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::N
   const std::string list_path = ChildPath(path, "components");
   const YAML::Node list = reader.Require(node, path, "components");
   const hysteresis::ParallelAssembly laws = ReadAssembly(reader, list, list_path, units);
-  std::vector<hysteresis::PlanComponent> components;
-  std::vector<hysteresis::Component> pushed = along_x->components();
-  for (std::size_t c = 0; c < laws.size(); ++c) {
-    const hysteresis::Component& law = laws.components()[c];
-    if (!uncoupled && !hysteresis::HasCoupledForm(law.parameters.type())) {
-      reader.Fail(list[c], IndexPath(list_path, c),
-                  fmt::format("{} has no coupled bidirectional form (give the isolator "
-                              "coupling: uncoupled to use it along x and y independently)",
-                              hysteresis::LawName(law.parameters.type())));
-    }
-    components.push_back(
-        {law.name, law.parameters, uncoupled ? std::optional(law.parameters) : std::nullopt});
-    pushed.push_back({site.name + "." + law.name, law.parameters});
+  const std::size_t c = FirstWithoutCoupledForm(laws);
+  if (!uncoupled && c < laws.size()) {
+    reader.Fail(list[c], IndexPath(list_path, c),
+                fmt::format("{} (give the isolator coupling: uncoupled to use it along x and y "
+                            "independently)",
+                            NoCoupledForm(laws, c)));
   }
-  site.assembly = hysteresis::PlanAssembly(std::move(components));
-  *along_x = hysteresis::ParallelAssembly(std::move(pushed));
+  site.assembly = IsolatorAssembly(laws, uncoupled);
+  *along_x = AlongX(*along_x, site.name, laws);
   return site;
 }
 
@@ -270,6 +285,30 @@ PlanGroundMotion ReadPlanGroundMotion(const YamlReader& reader, const YAML::Node
 }
 
 }  // namespace
+
+std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws) {
+  for (std::size_t c = 0; c < laws.size(); ++c) {
+    if (!hysteresis::HasCoupledForm(laws.components()[c].parameters.type())) return c;
+  }
+  return laws.size();
+}
+
+std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t c) {
+  return fmt::format("{} has no coupled bidirectional form",
+                     hysteresis::LawName(laws.components()[c].parameters.type()));
+}
+
+void ReplaceIsolation(PlanModelFile* model, const hysteresis::ParallelAssembly& laws) {
+  if (FirstWithoutCoupledForm(laws) < laws.size()) {
+    throw std::invalid_argument(NoCoupledForm(laws, FirstWithoutCoupledForm(laws)));
+  }
+  hysteresis::ParallelAssembly along_x;
+  for (structure::PlanIsolatorSite& site : model->building.isolators) {
+    site.assembly = IsolatorAssembly(laws, false);
+    along_x = AlongX(along_x, site.name, laws);
+  }
+  model->isolation_along_x = std::move(along_x);
+}
 
 bool IsPlanModelFile(const std::string& path) {
   std::ifstream in(path);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <utility>
 
+#include "isolab/io/record.h"
 #include "model_sections.h"
 
 namespace isolab::io {
@@ -43,9 +44,25 @@ void CheckName(const YamlReader& reader, const YAML::Node& node, const std::stri
   }
 }
 
+// A model file named at `node`, relative to the study's folder.
+std::string ModelPath(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                      const fs::path& directory) {
+  return (directory / reader.ReadString(node, path)).lexically_normal().string();
+}
+
+// A study is one-direction or plan throughout: its records are single records or pairs.
+[[noreturn]] void FailMixedKinds(const YamlReader& reader, const YAML::Node& node,
+                                 const std::string& path, const std::string& file,
+                                 bool file_is_plan, const std::string& building) {
+  reader.Fail(node, path,
+              fmt::format("'{}' is a {} model and the building '{}' a {} one: a study's variants "
+                          "are all one-direction models or all plan models",
+                          file, file_is_plan ? "plan" : "one-direction", building,
+                          file_is_plan ? "one-direction" : "plan"));
+}
+
 ModelFile LoadStructureModel(const YamlReader& reader, const YAML::Node& node,
-                             const std::string& path, const fs::path& directory) {
-  const std::string file = (directory / reader.ReadString(node, path)).lexically_normal().string();
+                             const std::string& path, const std::string& file) {
   ModelFile model = LoadModelFile(file);
   if (!model.structure) {
     reader.Fail(node, path, fmt::format("'{}' has no structure section: nothing to run", file));
@@ -53,30 +70,43 @@ ModelFile LoadStructureModel(const YamlReader& reader, const YAML::Node& node,
   return model;
 }
 
-// The building with `isolation` in place of its own; its stored text says so, since results
-// files keep the model's YAML as the record of what ran.
+// What a model's stored text gains when a variant replaces its isolation: results files keep
+// the model's YAML as the record of what ran.
+std::string ReplacedIsolationNote(const std::string& study_path, const std::string& variant,
+                                  const YAML::Node& node) {
+  YAML::Emitter emitter;
+  emitter << YAML::Flow << node;
+  return fmt::format(
+      "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
+      "{}\n",
+      study_path, variant, emitter.c_str());
+}
+
+// The building with `isolation` in place of its own, its stored text saying so.
 ModelFile WithIsolation(const ModelFile& building, hysteresis::ParallelAssembly isolation,
                         const std::string& study_path, const std::string& variant,
                         const YAML::Node& node) {
   ModelFile model = building;
   model.isolation = std::move(isolation);
-  YAML::Emitter emitter;
-  emitter << YAML::Flow << node;
-  model.text += fmt::format(
-      "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
-      "{}\n",
-      study_path, variant, emitter.c_str());
+  model.text += ReplacedIsolationNote(study_path, variant, node);
   return model;
 }
 
-StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const std::string& path,
-                         const fs::path& directory, const ModelFile& building) {
+// A variant entry's keys checked and its name read.
+StudyVariant NamedVariant(const YamlReader& reader, const YAML::Node& node,
+                          const std::string& path) {
   reader.RequireMap(node, path);
   reader.CheckKeys(node, path, kVariantKeys);
   StudyVariant variant;
   const std::string name_path = ChildPath(path, "name");
   variant.name = reader.ReadString(reader.Require(node, path, "name"), name_path);
   CheckName(reader, node["name"], name_path, variant.name);
+  return variant;
+}
+
+StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                         const fs::path& directory, const ModelFile& building) {
+  StudyVariant variant = NamedVariant(reader, node, path);
   if (node["fixed_base"]) {
     variant.fixed_base = ReadFlag(reader, node["fixed_base"], ChildPath(path, "fixed_base"));
   }
@@ -84,7 +114,12 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
     reader.Fail(node, path, "give isolation or model, not both");
   }
   if (node["model"]) {
-    variant.model = LoadStructureModel(reader, node["model"], ChildPath(path, "model"), directory);
+    const std::string model_path = ChildPath(path, "model");
+    const std::string file = ModelPath(reader, node["model"], model_path, directory);
+    if (IsPlanModelFile(file)) {
+      FailMixedKinds(reader, node["model"], model_path, file, true, building.path);
+    }
+    variant.model = LoadStructureModel(reader, node["model"], model_path, file);
   } else if (node["isolation"]) {
     const std::string isolation_path = ChildPath(path, "isolation");
     if (variant.fixed_base) {
@@ -114,6 +149,49 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
     variant.model.text +=
         fmt::format("\n# isolab compare, study {}, variant {}: run on a fixed base\n",
                     reader.file(), variant.name);
+  }
+  return variant;
+}
+
+// A plan study's variant: the building itself, the building with every isolator on the
+// variant's laws (coupled), or another plan model.
+StudyVariant ReadPlanVariant(const YamlReader& reader, const YAML::Node& node,
+                             const std::string& path, const fs::path& directory,
+                             const PlanModelFile& building) {
+  StudyVariant variant = NamedVariant(reader, node, path);
+  if (node["fixed_base"]) {
+    reader.Fail(
+        node["fixed_base"], ChildPath(path, "fixed_base"),
+        fmt::format("applies to a one-direction building; '{}' is a plan model", building.path));
+  }
+  if (node["isolation"] && node["model"]) {
+    reader.Fail(node, path, "give isolation or model, not both");
+  }
+  if (node["isolation"]) {
+    const std::string isolation_path = ChildPath(path, "isolation");
+    const hysteresis::ParallelAssembly laws =
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units);
+    const std::size_t c = FirstWithoutCoupledForm(laws);
+    if (c < laws.size()) {
+      reader.Fail(node["isolation"], isolation_path,
+                  fmt::format("{}: every isolator of a plan building takes these laws as "
+                              "coupled laws",
+                              NoCoupledForm(laws, c)));
+    }
+    variant.plan = building;
+    ReplaceIsolation(&*variant.plan, laws);
+    variant.plan->text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
+    return variant;
+  }
+  if (node["model"]) {
+    const std::string model_path = ChildPath(path, "model");
+    const std::string file = ModelPath(reader, node["model"], model_path, directory);
+    if (!IsPlanModelFile(file)) {
+      FailMixedKinds(reader, node["model"], model_path, file, false, building.path);
+    }
+    variant.plan = LoadPlanModelFile(file);
+  } else {
+    variant.plan = building;
   }
   return variant;
 }
@@ -173,13 +251,115 @@ StudyRecord ReadRecordEntry(const YamlReader& reader, const YAML::Node& node,
   return given;
 }
 
+// `file`: a component's file resolved against the study's folder; it must exist.
+void ResolveComponent(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                      const fs::path& directory, GroundMotionSection* component) {
+  component->file = (directory / component->file).lexically_normal().string();
+  std::error_code error;
+  if (!fs::is_regular_file(component->file, error)) {
+    reader.Fail(node["file"], ChildPath(path, "file"),
+                fmt::format("'{}' is not a file", component->file));
+  }
+  if (!(component->scale > 0.0) || !std::isfinite(component->scale)) {
+    reader.Fail(node["scale"], ChildPath(path, "scale"),
+                fmt::format("{:g} (must be a finite number > 0)", component->scale));
+  }
+}
+
+// Both components read as their runs will read them: a pair must share its step and its length
+// (plan_analysis.h), and a study refuses one that does not before any run starts.
+void CheckPairMatches(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                      const PlanGroundMotion& pair, const UnitSystem& units) {
+  const auto read = [&](const GroundMotionSection& component, const std::string& key) {
+    const std::string where = fmt::format("{}.{} in {}", path, key, reader.file());
+    return ReadRecord(component.file,
+                      {component.units, component.dt * units.SiFactor(dimension::kTime),
+                       where + ".units", where + ".dt"});
+  };
+  const Record h1 = read(pair.h1, "h1"), h2 = read(*pair.h2, "h2");
+  const std::string h2_path = ChildPath(path, "h2");
+  if (std::abs(h2.dt - h1.dt) > 1e-9 * h1.dt) {
+    reader.Fail(node["h2"], h2_path,
+                fmt::format("'{}' has a step of {:g} s, h1 '{}' {:g} s; a pair must share one step",
+                            h2.path, h2.dt, h1.path, h1.dt));
+  }
+  if (h2.values.size() != h1.values.size()) {
+    reader.Fail(node["h2"], h2_path,
+                fmt::format("'{}' has {} samples, h1 '{}' {}; a pair must have the same length",
+                            h2.path, h2.values.size(), h1.path, h1.values.size()));
+  }
+}
+
+bool IsPairEntry(const YAML::Node& node) { return node.IsMap() && (node["h1"] || node["h2"]); }
+
+// A plan study's record entry {h1, h2, angle, name}, as a plan model's ground motion.
+StudyRecord ReadPairEntry(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                          const fs::path& directory, const UnitSystem& units) {
+  reader.CheckKeys(node, path, {"h1", "h2", "angle", "name"});
+  PlanGroundMotion pair;
+  for (const char* key : {"h1", "h2"}) {
+    const std::string component_path = ChildPath(path, key);
+    const YAML::Node component = reader.Require(node, path, key);
+    GroundMotionSection section = ReadGroundMotion(reader, component, component_path, units);
+    ResolveComponent(reader, component, component_path, directory, &section);
+    if (std::string_view(key) == "h1") {
+      pair.h1 = section;
+    } else {
+      pair.h2 = section;
+      pair.h2_location = reader.Locate(component);
+    }
+  }
+  if (node["angle"]) pair.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
+  CheckPairMatches(reader, node, path, pair, units);
+  StudyRecord record;
+  record.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
+  record.path = pair.h1.file;
+  if (node["name"]) {
+    record.name = reader.ReadString(node["name"], ChildPath(path, "name"));
+    CheckName(reader, node["name"], ChildPath(path, "name"), record.name);
+  } else {
+    record.name = fs::path(pair.h1.file).stem().string();
+  }
+  record.pair = std::move(pair);
+  return record;
+}
+
+// Records become runs' file names: two with one name would overwrite each other's results.
+void AddRecord(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+               StudyRecord record, std::vector<StudyRecord>* records) {
+  const auto same = std::find_if(records->begin(), records->end(),
+                                 [&](const StudyRecord& r) { return r.name == record.name; });
+  if (same != records->end()) {
+    reader.Fail(node, path,
+                fmt::format("'{}' has the name '{}' of '{}' (record names are file stems, or a "
+                            "pair's name, and must be unique)",
+                            record.path, record.name, same->path));
+  }
+  records->push_back(std::move(record));
+}
+
 std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
-                                     const fs::path& directory, const UnitSystem& units) {
+                                     const fs::path& directory, const UnitSystem& units, bool plan,
+                                     const std::string& building) {
   reader.RequireSequence(list, "records");
   if (list.size() == 0) reader.Fail(list, "records", "the list is empty (give files or globs)");
   std::vector<StudyRecord> records;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = IndexPath("records", i);
+    if (IsPairEntry(list[i]) != plan) {
+      reader.Fail(list[i], path,
+                  plan ? fmt::format("one record cannot drive the plan model '{}': give a pair "
+                                     "{{h1: {{file: ...}}, h2: {{file: ...}}, angle: 0}}",
+                                     building)
+                       : fmt::format("a pair of records drives plan models; the building '{}' "
+                                     "is a one-direction model (give one record per entry)",
+                                     building));
+    }
+    if (plan) {
+      AddRecord(reader, list[i], path, ReadPairEntry(reader, list[i], path, directory, units),
+                &records);
+      continue;
+    }
     const StudyRecord given = ReadRecordEntry(reader, list[i], path, units);
     const std::string& entry = given.path;
     const std::string pattern = (directory / entry).lexically_normal().string();
@@ -195,19 +375,10 @@ std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node&
       files.push_back(pattern);
     }
     for (const std::string& file : files) {
-      const std::string name = fs::path(file).stem().string();
-      const auto same = std::find_if(records.begin(), records.end(),
-                                     [&](const StudyRecord& r) { return r.name == name; });
-      if (same != records.end()) {
-        reader.Fail(list[i], path,
-                    fmt::format("'{}' has the name '{}' of '{}' (record names are file stems "
-                                "and must be unique)",
-                                file, name, same->path));
-      }
       StudyRecord record = given;
-      record.name = name;
+      record.name = fs::path(file).stem().string();
       record.path = file;
-      records.push_back(std::move(record));
+      AddRecord(reader, list[i], path, std::move(record), &records);
     }
   }
   return records;
@@ -244,10 +415,19 @@ StudyFile LoadStudyFile(const std::string& path) {
   if (root["description"]) {
     study.description = reader.ReadString(root["description"], "description");
   }
-  const ModelFile building =
-      LoadStructureModel(reader, reader.Require(root, "", "building"), "building", directory);
-  study.building_path = building.path;
-  study.units = building.units;
+  const YAML::Node building_node = reader.Require(root, "", "building");
+  const std::string building_file = ModelPath(reader, building_node, "building", directory);
+  study.plan = IsPlanModelFile(building_file);
+  ModelFile building;
+  std::optional<PlanModelFile> plan_building;
+  if (study.plan) {
+    plan_building = LoadPlanModelFile(building_file);
+    study.units = plan_building->units;
+  } else {
+    building = LoadStructureModel(reader, building_node, "building", building_file);
+    study.units = building.units;
+  }
+  study.building_path = building_file;
 
   const YAML::Node variants = reader.Require(root, "", "variants");
   reader.RequireSequence(variants, "variants");
@@ -255,7 +435,9 @@ StudyFile LoadStudyFile(const std::string& path) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const std::string variant_path = IndexPath("variants", i);
-    study.variants.push_back(ReadVariant(reader, variants[i], variant_path, directory, building));
+    study.variants.push_back(
+        study.plan ? ReadPlanVariant(reader, variants[i], variant_path, directory, *plan_building)
+                   : ReadVariant(reader, variants[i], variant_path, directory, building));
     const std::string& name = study.variants.back().name;
     const auto same = std::find(names.begin(), names.end(), name);
     if (same != names.end()) {
@@ -278,7 +460,8 @@ StudyFile LoadStudyFile(const std::string& path) {
     }
     study.reference = static_cast<std::size_t>(found - names.begin());
   }
-  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory, study.units);
+  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory, study.units,
+                              study.plan, study.building_path);
   study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
   if (root["free_vibration"]) {
     study.free_vibration =

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "exact_walk.h"
 #include "isolab/core/errors.h"
 
 namespace isolab::spectra {
@@ -16,32 +17,6 @@ void ValidateOscillator(double period, double zeta) {
   }
   if (!(zeta >= 0.0 && zeta < 1.0)) {
     throw InvalidParameter({"damping ratio", zeta, "must be in [0, 1)"});
-  }
-}
-
-// Walks the recurrence over the record from rest, calling visit(k, u) at every point k (time
-// k h). The load at a sub-step is the record's linear interpolation, so the walk stays exact.
-template <typename Visit>
-void Walk(const integrators::SampledHistory& ground, double period, double zeta, int substeps,
-          Visit&& visit) {
-  const double omega = 2.0 * std::numbers::pi / period;
-  const double h = ground.dt / substeps;
-  const ExactStepCoefficients k = ExactStepCoefficients::For(omega, zeta, h);
-  double u = 0.0, v = 0.0;
-  visit(0, u);
-  const std::size_t samples = ground.values.size();
-  long point = 0;
-  for (std::size_t i = 0; i + 1 < samples; ++i) {
-    const double p0 = -ground.values[i], p1 = -ground.values[i + 1];
-    const double slope = (p1 - p0) / substeps;
-    for (int j = 0; j < substeps; ++j) {
-      const double pa = p0 + j * slope;
-      const double pb = j + 1 == substeps ? p1 : p0 + (j + 1) * slope;
-      const double u_next = k.a * u + k.b * v + k.c * pa + k.d * pb;
-      v = k.a_v * u + k.b_v * v + k.c_v * pa + k.d_v * pb;
-      u = u_next;
-      visit(++point, u);
-    }
   }
 }
 
@@ -90,9 +65,9 @@ PeakDeformation ExactPeakDeformation(const integrators::SampledHistory& ground, 
   const double h = ground.dt / substeps;
   PeakDeformation peak;
   long at = 0;
-  Walk(ground, period, zeta, substeps, [&](long k, double u) {
-    if (std::abs(u) > peak.value) {
-      peak.value = std::abs(u);
+  WalkExact<1>({&ground}, period, zeta, substeps, [&](long k, const std::array<double, 1>& u) {
+    if (std::abs(u[0]) > peak.value) {
+      peak.value = std::abs(u[0]);
       at = k;
     }
   });
@@ -106,7 +81,8 @@ std::vector<double> ExactDeformationHistory(const integrators::SampledHistory& g
   if (substeps < 1) throw InvalidParameter({"substeps", double(substeps), "must be >= 1"});
   std::vector<double> history;
   history.reserve(ground.values.empty() ? 1 : (ground.values.size() - 1) * substeps + 1);
-  Walk(ground, period, zeta, substeps, [&](long, double u) { history.push_back(u); });
+  WalkExact<1>({&ground}, period, zeta, substeps,
+               [&](long, const std::array<double, 1>& u) { history.push_back(u[0]); });
   return history;
 }
 

@@ -30,6 +30,12 @@ double SpectrumSteps(const integrators::SampledHistory& ground, std::span<const 
   return steps * static_cast<double>(damping_ratios);
 }
 
+double PairSpectrumSteps(const integrators::SampledHistory& ground, std::span<const double> periods,
+                         std::size_t damping_ratios, int points_per_period) {
+  return kPairStepsPerPoint *
+         SpectrumSteps(ground, periods, damping_ratios, points_per_period, 0, {});
+}
+
 void CheckSpectrumWork(double steps, double max_steps, const std::string& limit_name) {
   if (steps <= max_steps) return;
   throw InputError({limit_name},

@@ -13,6 +13,10 @@ constexpr QuantityInfo kQuantities[] = {
     {Quantity::kStoryDriftRatio, "story_drift_ratio", "drift"},
     {Quantity::kFloorAcceleration, "floor_acceleration", "floor acc."},
     {Quantity::kResidualIsolatorDisplacement, "residual_isolator_displacement", "residual"},
+    {Quantity::kResultantIsolatorDisplacement, "resultant_isolator_displacement", "isolator |u|"},
+    {Quantity::kResultantBaseShear, "resultant_base_shear", "base shear |V|"},
+    {Quantity::kFloorRotation, "floor_rotation", "rotation"},
+    {Quantity::kTorsionalAmplification, "torsional_amplification", "torsion amp."},
 };
 static_assert(std::size(kQuantities) == kQuantityCount);
 
@@ -30,17 +34,42 @@ std::vector<int> FloorDofs(const io::AnalysisSetup& setup) {
   return dofs;
 }
 
+// From the model's unit of `dimension` to the study's.
+double Conversion(const io::UnitSystem& model_units, const io::UnitSystem& study_units,
+                  io::Dimension dimension) {
+  return model_units.SiFactor(dimension) / study_units.SiFactor(dimension);
+}
+
 }  // namespace
 
 std::span<const QuantityInfo> Quantities() { return kQuantities; }
+
+const QuantityInfo& InfoOf(Quantity quantity) {
+  return kQuantities[static_cast<std::size_t>(quantity)];
+}
+
+std::vector<Quantity> StudyQuantities(bool plan) {
+  if (plan) {
+    return {Quantity::kResultantIsolatorDisplacement, Quantity::kResultantBaseShear,
+            Quantity::kFloorRotation, Quantity::kTorsionalAmplification};
+  }
+  return {Quantity::kIsolatorDisplacement, Quantity::kBaseShear, Quantity::kStoryDriftRatio,
+          Quantity::kFloorAcceleration, Quantity::kResidualIsolatorDisplacement};
+}
 
 std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units) {
   switch (quantity) {
     case Quantity::kIsolatorDisplacement:
     case Quantity::kResidualIsolatorDisplacement:
+    case Quantity::kResultantIsolatorDisplacement:
       return units.length();
     case Quantity::kBaseShear:
+    case Quantity::kResultantBaseShear:
       return units.force();
+    case Quantity::kFloorRotation:
+      return "rad";
+    case Quantity::kTorsionalAmplification:
+      return "1";
     case Quantity::kStoryDriftRatio:
       return "%";
     case Quantity::kFloorAcceleration:
@@ -59,10 +88,8 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
                                  const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
                                  const io::UnitSystem& study_units) {
-  const double length =
-      model_units.SiFactor(io::dimension::kLength) / study_units.SiFactor(io::dimension::kLength);
-  const double force =
-      model_units.SiFactor(io::dimension::kForce) / study_units.SiFactor(io::dimension::kForce);
+  const double length = Conversion(model_units, study_units, io::dimension::kLength);
+  const double force = Conversion(model_units, study_units, io::dimension::kForce);
   const double g = model_units.Convert(1.0, "g", io::dimension::kAcceleration);
   const int rows = response.rows_written;
 
@@ -95,6 +122,19 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
     }
   }
   set(Quantity::kFloorAcceleration, acceleration / g);
+  return values;
+}
+
+QuantityValues MeasurePlanQuantities(const io::PlanPeaks& peaks, const io::UnitSystem& model_units,
+                                     const io::UnitSystem& study_units) {
+  const double length = Conversion(model_units, study_units, io::dimension::kLength);
+  const double force = Conversion(model_units, study_units, io::dimension::kForce);
+  QuantityValues values = NoValues();
+  const auto set = [&](Quantity q, double value) { values[static_cast<std::size_t>(q)] = value; };
+  set(Quantity::kResultantIsolatorDisplacement, peaks.largest_resultant.value * length);
+  set(Quantity::kResultantBaseShear, peaks.base_shear.value * force);
+  set(Quantity::kFloorRotation, peaks.largest_floor_rotation.value);
+  set(Quantity::kTorsionalAmplification, peaks.torsional_amplification);
   return values;
 }
 

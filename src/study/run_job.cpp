@@ -7,8 +7,31 @@
 #include "isolab/io/analysis_setup.h"
 #include "isolab/io/results_file.h"
 #include "isolab/io/run_analysis.h"
+#include "run_job_parts.h"
 
 namespace isolab::study {
+
+double InModelTime(const io::StudyFile& study, const io::UnitSystem& model_units, double time) {
+  return model_units.Convert(time * study.units.SiFactor(io::dimension::kTime), "s",
+                             io::dimension::kTime);
+}
+
+std::optional<io::FreeVibration> StudyFreeVibration(const io::StudyFile& study,
+                                                    const io::UnitSystem& model_units) {
+  if (!study.free_vibration) return std::nullopt;
+  io::FreeVibration free = *study.free_vibration;
+  free.duration = InModelTime(study, model_units, free.duration);
+  return free;
+}
+
+std::string PrepareRunFile(const io::StudyFile& study, const Job& job,
+                           const std::string& output_directory) {
+  const std::filesystem::path file =
+      std::filesystem::path(output_directory) / RunFileName(study, job);
+  std::error_code ignored;
+  std::filesystem::create_directories(file.parent_path(), ignored);
+  return file.string();
+}
 
 JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& output_directory,
                  const std::string& version) {
@@ -18,38 +41,32 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
   const io::StudyVariant& variant = study.variants[job.variant];
   const io::ModelFile& model = variant.model;
   try {
+    if (study.plan) {
+      RunPlanJob(study, job, output_directory, version, &result);
+      result.wall_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return result;
+    }
     const io::StudyRecord& record = study.records[job.record];
     io::RunOverrides overrides;
     overrides.record = record.path;
     overrides.record_units = record.units;
-    if (record.dt > 0.0) {
-      // The study gives dt in its building's time unit; a `model` variant may use another.
-      overrides.record_dt = model.units.Convert(
-          record.dt * study.units.SiFactor(io::dimension::kTime), "s", io::dimension::kTime);
-    }
+    if (record.dt > 0.0) overrides.record_dt = InModelTime(study, model.units, record.dt);
     overrides.units_given_by = record.entry + ".units";
     overrides.dt_given_by = record.entry + ".dt";
     overrides.scale = record.scale * study.scales[job.scale];
     overrides.fixed_base = variant.fixed_base;
-    if (study.free_vibration) {
-      io::FreeVibration free = *study.free_vibration;  // in the study's time unit
-      free.duration = model.units.Convert(
-          free.duration * study.units.SiFactor(io::dimension::kTime), "s", io::dimension::kTime);
-      overrides.free_vibration = free;
-    }
+    overrides.free_vibration = StudyFreeVibration(study, model.units);
     const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
     result.record_units = setup.record.units;
     result.pga = setup.record.pga / model.units.Convert(1.0, "g", io::dimension::kAcceleration);
     integrators::ResponseHistory response;
     const integrators::RunSummary summary = io::RunAnalysis(model.analysis, setup, &response);
-    const std::string name = RunFileName(study, job);
-    const std::filesystem::path file = std::filesystem::path(output_directory) / name;
-    std::error_code ignored;  // a folder that cannot be made shows as the file's write error
-    std::filesystem::create_directories(file.parent_path(), ignored);
+    const std::string file = PrepareRunFile(study, job, output_directory);
     const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
     const io::RunDescription run{&model, &setup, &model.analysis, &summary, &peaks, version, {}};
-    io::WriteResultsFile(file.string(), run, response);
-    result.file = name;
+    io::WriteResultsFile(file, run, response);
+    result.file = RunFileName(study, job);
     result.warnings = io::RunWarnings(run);
     if (summary.ok()) {
       result.completed = true;

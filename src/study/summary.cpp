@@ -30,8 +30,12 @@ StudyShape ShapeOf(const io::StudyFile& study) {
   for (const io::StudyVariant& variant : study.variants) shape.variants.push_back(variant.name);
   for (const io::StudyRecord& record : study.records) {
     shape.records.push_back(record.name);
-    shape.record_files.push_back(record.path);
+    shape.record_files.push_back(record.pair
+                                     ? fmt::format("{} + {} at {:g} degrees", record.pair->h1.file,
+                                                   record.pair->h2->file, record.pair->angle)
+                                     : record.path);
   }
+  shape.quantities = StudyQuantities(study.plan);
   shape.scales = study.scales;
   shape.reference = study.reference;
   for (const QuantityInfo& info : Quantities()) {

@@ -31,12 +31,17 @@ std::string JoinWarnings(const std::vector<std::string>& warnings) {
   return text;
 }
 
-std::vector<std::string> RowStart(const std::string& variant, const std::string& record,
-                                  double scale, const std::string& status,
-                                  const QuantityValues& values, const QuantityValues& ratios) {
+std::vector<std::string> RowStart(const StudyShape& shape, const std::string& variant,
+                                  const std::string& record, double scale,
+                                  const std::string& status, const QuantityValues& values,
+                                  const QuantityValues& ratios) {
   std::vector<std::string> fields = {variant, record, fmt::format("{}", scale), status};
-  for (const double value : values) fields.push_back(ExactNumber(value));
-  for (const double ratio : ratios) fields.push_back(ExactNumber(ratio));
+  for (const Quantity q : shape.quantities) {
+    fields.push_back(ExactNumber(values[static_cast<std::size_t>(q)]));
+  }
+  for (const Quantity q : shape.quantities) {
+    fields.push_back(ExactNumber(ratios[static_cast<std::size_t>(q)]));
+  }
   return fields;
 }
 
@@ -55,12 +60,13 @@ void WriteSummaryCsv(const std::string& path, const Summary& summary) {
   const StudyShape& shape = summary.shape;
   io::WriteTextFileAtomically(path, [&](std::ostream& out) {
     std::vector<std::string> header = {"variant", "record", "scale", "status"};
-    for (const QuantityInfo& info : Quantities()) {
+    for (const Quantity q : shape.quantities) {
       header.push_back(
-          fmt::format("{} [{}]", info.key, shape.units[static_cast<std::size_t>(info.quantity)]));
+          fmt::format("{} [{}]", InfoOf(q).key, shape.units[static_cast<std::size_t>(q)]));
     }
-    for (const QuantityInfo& info : Quantities())
-      header.push_back(fmt::format("ratio {}", info.key));
+    for (const Quantity q : shape.quantities) {
+      header.push_back(fmt::format("ratio {}", InfoOf(q).key));
+    }
     for (const char* name : {"message", "file", "record_units", "pga_g", "warnings"}) {
       header.push_back(name);
     }
@@ -70,7 +76,7 @@ void WriteSummaryCsv(const std::string& path, const Summary& summary) {
     for (const JobResult& run : summary.runs) {
       const std::size_t v = run.job / (R * S), r = run.job / S % R, s = run.job % S;
       std::vector<std::string> fields =
-          RowStart(shape.variants[v], shape.records[r], shape.scales[s],
+          RowStart(shape, shape.variants[v], shape.records[r], shape.scales[s],
                    run.completed ? "completed" : "failed", run.values, summary.ratios[run.job]);
       fields.push_back(run.message);
       fields.push_back(run.file);
@@ -89,7 +95,7 @@ void WriteSummaryCsv(const std::string& path, const Summary& summary) {
                                                    statistic.completed, R);
         for (const bool mean : {true, false}) {
           std::vector<std::string> fields =
-              RowStart(shape.variants[v], mean ? "mean" : "max", shape.scales[s], status,
+              RowStart(shape, shape.variants[v], mean ? "mean" : "max", shape.scales[s], status,
                        mean ? statistic.mean : statistic.max,
                        mean ? statistic.mean_ratio : statistic.max_ratio);
           fields.push_back(over);
@@ -143,9 +149,9 @@ void WriteSummaryHdf5(const std::string& path, const Summary& summary, const std
   for (const char* group : {"runs", "ratio", "mean", "max", "mean_ratio", "max_ratio"}) {
     file.CreateGroup(group);
   }
-  for (const QuantityInfo& info : Quantities()) {
-    const auto q = static_cast<std::size_t>(info.quantity);
-    const std::string key(info.key);
+  for (const Quantity quantity : shape.quantities) {
+    const auto q = static_cast<std::size_t>(quantity);
+    const std::string key(InfoOf(quantity).key);
     const std::string& unit = shape.units[q];
     file.WriteDoubles("runs/" + key, run_dims, Column(summary.runs, q, values), unit);
     file.WriteDoubles("ratio/" + key, run_dims, Column(summary.ratios, q, same), "1");
@@ -166,9 +172,9 @@ void WriteSummaryHdf5(const std::string& path, const Summary& summary, const std
   file.WriteAttribute("/", "reference", shape.variants[shape.reference]);
   file.WriteAttribute("/", "isolab_version", version);
   std::string units;
-  for (const QuantityInfo& info : Quantities()) {
-    units += fmt::format("{}{} {}", units.empty() ? "" : ", ", info.key,
-                         shape.units[static_cast<std::size_t>(info.quantity)]);
+  for (const Quantity q : shape.quantities) {
+    units += fmt::format("{}{} {}", units.empty() ? "" : ", ", InfoOf(q).key,
+                         shape.units[static_cast<std::size_t>(q)]);
   }
   file.WriteAttribute("/", "units", units);
   file.Commit();

@@ -10,12 +10,13 @@
 namespace isolab::study {
 namespace {
 
-// Four significant digits without an exponent: 1234, 123.4, 12.34, 0.1234.
+// Four significant digits without an exponent: 1234, 123.4, 12.34, 0.1234, down to 0.00001234
+// (a floor's rotation in rad).
 std::string Value(double value) {
   if (!std::isfinite(value)) return "-";
   const double magnitude = std::abs(value);
   const int digits = magnitude > 0.0 ? static_cast<int>(std::floor(std::log10(magnitude))) : 0;
-  return fmt::format("{:.{}f}", value, std::clamp(3 - digits, 0, 4));
+  return fmt::format("{:.{}f}", value, std::clamp(3 - digits, 0, 8));
 }
 
 std::string Ratio(double ratio) {
@@ -34,9 +35,9 @@ void PrintSummaryTable(const Summary& summary, std::ostream& out) {
     record_width = std::max(record_width, fmt::format("mean ({} of {})", R, R).size());
   }
   std::vector<std::string> headings;
-  for (const QuantityInfo& info : Quantities()) {
+  for (const Quantity q : shape.quantities) {
     headings.push_back(
-        fmt::format("{} [{}]", info.label, shape.units[static_cast<std::size_t>(info.quantity)]));
+        fmt::format("{} [{}]", InfoOf(q).label, shape.units[static_cast<std::size_t>(q)]));
   }
 
   const auto row = [&](const std::string& variant, const std::string& record,
@@ -47,9 +48,11 @@ void PrintSummaryTable(const Summary& summary, std::ostream& out) {
     }
     fmt::print(out, "\n");
   };
-  const auto values = [](const QuantityValues& v, std::string (*format)(double)) {
+  const auto values = [&shape](const QuantityValues& v, std::string (*format)(double)) {
     std::vector<std::string> cells;
-    for (const double value : v) cells.push_back(format(value));
+    for (const Quantity q : shape.quantities) {
+      cells.push_back(format(v[static_cast<std::size_t>(q)]));
+    }
     return cells;
   };
 

@@ -16,12 +16,15 @@
 #include <vector>
 
 #include "cli/run_isolab.h"
+#include "cli/text_file.h"
 #include "own_test_file.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using isolab::testing::CsvRows;
 using isolab::testing::Outcome;
+using isolab::testing::ReadText;
 using isolab::testing::RunIsolab;
 using isolab::testing::RunShell;
 
@@ -38,35 +41,12 @@ fs::path OutputFolder(const std::string& name) {
   return folder;
 }
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << stream.rdbuf();
-  return bytes.str();
-}
-
 bool HaveMpirun() { return RunShell("command -v mpirun").exit_code == 0; }
 
 std::string Mpirun(int ranks) {
   // Root in containers needs the first flag; the second lets 2 ranks share fewer cores.
   return "mpirun --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " " +
          ISOLAB_BINARY;
-}
-
-// CSV rows as fields (the test data has no quoted commas in the columns read here).
-std::vector<std::vector<std::string>> CsvRows(const fs::path& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream lines(ReadFile(path));
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::vector<std::string> fields;
-    std::string field;
-    std::istringstream cells(line);
-    while (std::getline(cells, field, ',')) fields.push_back(field);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    rows.push_back(fields);
-  }
-  return rows;
 }
 
 const std::vector<std::string>* FindRow(const std::vector<std::vector<std::string>>& rows,
@@ -79,10 +59,10 @@ const std::vector<std::string>* FindRow(const std::vector<std::vector<std::strin
 }
 
 void ExpectSameSummaries(const fs::path& a, const fs::path& b) {
-  EXPECT_EQ(ReadFile(a / "summary.csv"), ReadFile(b / "summary.csv")) << a << " vs " << b;
-  const std::string h5 = ReadFile(a / "summary.h5");
+  EXPECT_EQ(ReadText(a / "summary.csv"), ReadText(b / "summary.csv")) << a << " vs " << b;
+  const std::string h5 = ReadText(a / "summary.h5");
   EXPECT_GT(h5.size(), 1000u);
-  EXPECT_TRUE(h5 == ReadFile(b / "summary.h5")) << a << " vs " << b;
+  EXPECT_TRUE(h5 == ReadText(b / "summary.h5")) << a << " vs " << b;
 }
 
 TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
@@ -186,7 +166,7 @@ TEST(CompareCommand, FailedRunsAreReportedAndTheOthersFinish) {
     EXPECT_EQ(status(variant, "bad_record_nan"), "failed") << variant;
     EXPECT_EQ(status(variant, "mean"), std::string(variant) == "stuck" ? "failed" : "partial");
   }
-  const std::string csv = ReadFile(folder / "summary.csv");
+  const std::string csv = ReadText(folder / "summary.csv");
   EXPECT_NE(csv.find("\"Newton did not converge at t = 2.08"), std::string::npos) << csv;
   EXPECT_NE(csv.find("bad_record_nan.at2:6: 'nan' is not a finite number"), std::string::npos);
   // The run that stopped early keeps its results up to there, as `isolab run` does.
@@ -228,7 +208,7 @@ TEST(CompareCommand, RecordEntriesGiveScaleAndUnitsAndAConflictFailsItsRuns) {
   EXPECT_EQ((*gal)[column("record_units")], "cm/s^2");
   // Units that disagree with the record's header: refused, naming both, the run failed.
   EXPECT_EQ((*fwn)[3], "failed");
-  const std::string csv = ReadFile(folder / "summary.csv");
+  const std::string csv = ReadText(folder / "summary.csv");
   EXPECT_NE(csv.find("fwn_firm_seed1.at2: its header gives the units as g but "), std::string::npos)
       << csv;
   EXPECT_NE(csv.find("records[2].units gives gal"), std::string::npos) << csv;
@@ -354,5 +334,5 @@ TEST(CompareCommand, ABlownUpRunFailsAndStaysOutOfTheMeans) {
   const auto* reference = FindRow(rows, "thm1", "mean", "1");
   ASSERT_NE(reference, nullptr);
   EXPECT_EQ((*reference)[3], "completed");
-  EXPECT_NE(ReadFile(folder / "summary.csv").find("blow-up at t = "), std::string::npos);
+  EXPECT_NE(ReadText(folder / "summary.csv").find("blow-up at t = "), std::string::npos);
 }

@@ -17,25 +17,13 @@
 #include <vector>
 
 #include "cli/run_isolab.h"
+#include "cli/text_file.h"
 
 namespace isolab::testing {
 namespace {
 
 const std::string kRoot = ISOLAB_SOURCE_DIR;
 const std::string kPlan = kRoot + "/models/plan/five_story_table9_plan.yaml";
-
-std::string Read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void Replace(std::string* text, const std::string& what, const std::string& with) {
-  const std::size_t at = text->find(what);
-  ASSERT_NE(at, std::string::npos) << what;
-  text->replace(at, what.size(), with);
-}
 
 std::vector<double> Doubles(const std::string& path, const char* name) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -53,17 +41,18 @@ std::vector<double> Doubles(const std::string& path, const char* name) {
 }
 
 TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeaks) {
-  std::string text = Read(kPlan);
-  Replace(&text, "      components: &table9",
-          "      coupling: uncoupled\n      components: &table9");
+  std::string text = ReadText(kPlan);
+  ReplaceOnce(&text, "      components: &table9",
+              "      coupling: uncoupled\n      components: &table9");
   for (int i = 0; i < 3; ++i) {
-    Replace(&text, "components: *table9}", "coupling: uncoupled, components: *table9 }");
+    ReplaceOnce(&text, "components: *table9}", "coupling: uncoupled, components: *table9 }");
   }
-  Replace(&text, "base: {mass: 100 t, centre_of_mass: [13200, 8000]}",
-          "base: {mass: 100 t, centre_of_mass: [12000, 8000]}");
-  Replace(&text, "    centre_of_mass: [13200, 8000]\n", "    centre_of_mass: [12000, 8000]\n");
-  Replace(&text, "    h2: {file: ../../ground_motions/h2_fwn_firm_seed3.at2, scale: 0.6}\n", "");
-  Replace(&text, "../../ground_motions/", kRoot + "/ground_motions/");
+  ReplaceOnce(&text, "base: {mass: 100 t, centre_of_mass: [13200, 8000]}",
+              "base: {mass: 100 t, centre_of_mass: [12000, 8000]}");
+  ReplaceOnce(&text, "    centre_of_mass: [13200, 8000]\n", "    centre_of_mass: [12000, 8000]\n");
+  ReplaceOnce(&text, "    h2: {file: ../../ground_motions/h2_fwn_firm_seed3.at2, scale: 0.6}\n",
+              "");
+  ReplaceOnce(&text, "../../ground_motions/", kRoot + "/ground_motions/");
   // The one-direction model's Rayleigh damping is on its first two fixed-base modes: the plan
   // model's on those periods, to the last digit.
   const std::string folder = ::testing::TempDir();
@@ -72,8 +61,8 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
   ASSERT_EQ(one.exit_code, 0) << one.output;
   const auto o = nlohmann::json::parse(one.output);
   const auto& periods = o["model_summary"]["fixed_base_periods"];
-  Replace(&text, "periods: [0.4004, 0.1372]",
-          "periods: [" + periods[0].dump() + ", " + periods[1].dump() + "]");
+  ReplaceOnce(&text, "periods: [0.4004, 0.1372]",
+              "periods: [" + periods[0].dump() + ", " + periods[1].dump() + "]");
   const std::string model = folder + "symmetric_plan.yaml";
   std::ofstream(model) << text;
   const Outcome plan = RunIsolab("run " + model + " --json -o " + folder + "plan.h5");
@@ -144,7 +133,7 @@ TEST(PlanRunCommand, RefusesOneDirectionOptionsAndCsv) {
 // the two integrators' peaks agree (plan_ida_test.cpp checks them in depth), IDA's statistics
 // and the integrator's description reach the JSON summary.
 TEST(PlanRunCommand, IdaAgreesWithNewmarkAndReportsItself) {
-  std::string text = Read(kPlan);
+  std::string text = ReadText(kPlan);
   const std::size_t first = text.find("      components: &table9");
   const std::size_t last = text.find("    - {name: se,");
   ASSERT_NE(first, std::string::npos);
@@ -152,8 +141,8 @@ TEST(PlanRunCommand, IdaAgreesWithNewmarkAndReportsItself) {
   text.replace(first, last - first,
                "      components: &table9\n"
                "        - {name: rubber, type: bhm2, k0: 6, k1: 0.6, uy: 10}\n");
-  Replace(&text, "../../ground_motions/", kRoot + "/ground_motions/");
-  Replace(&text, "../../ground_motions/", kRoot + "/ground_motions/");
+  ReplaceOnce(&text, "../../ground_motions/", kRoot + "/ground_motions/");
+  ReplaceOnce(&text, "../../ground_motions/", kRoot + "/ground_motions/");
   const std::string folder = ::testing::TempDir() + "plan_ida_" + std::to_string(getpid()) + "/";
   std::filesystem::create_directories(folder);
   const std::string model = folder + "light_bearings.yaml";

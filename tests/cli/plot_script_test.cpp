@@ -90,6 +90,22 @@ TEST(PlotScript, SpectrumPlotsFromCsvAndHdf5) {
   }
 }
 
+TEST(PlotScript, PairSpectrumPlotsFromCsvAndHdf5) {
+  REQUIRE_PLOTTING();
+  const auto directory = FreshDirectory("pair_spectrum");
+  for (const char* extension : {".csv", ".h5"}) {
+    const auto output = directory / (std::string("pair") + extension);
+    const auto run =
+        RunIsolab("spectrum " + Source("ground_motions/fwn_firm_seed1.at2") + " " +
+                  Source("ground_motions/h2_fwn_firm_seed3.at2") + " --periods 0.1:2:0.1 -q -o " +
+                  output.string() + " --plot=" + (directory / extension).string());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    for (const char* name : {"D", "A"}) {
+      ExpectPng(directory / extension / (std::string("pair_") + name + ".png"));
+    }
+  }
+}
+
 TEST(PlotScript, PlotDoesNotTakeTheNextArgument) {
   // `--plot MODEL` once read MODEL as the plot folder; --plot takes a folder only as --plot=DIR.
   REQUIRE_PLOTTING();

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +34,7 @@ std::filesystem::path TemporaryFile(const std::string& name) {
 }
 
 const std::string kBundled = Source("ground_motions/fwn_firm_seed1.at2");
+const std::string kBundledH2 = Source("ground_motions/h2_fwn_firm_seed3.at2");
 
 TEST(SpectrumCommand, ChopraCaseCThroughTheCommandLine) {
   const auto record = isolab::testing::ElCentroPath();
@@ -108,6 +110,56 @@ TEST(SpectrumCommand, WritesCsvAndHdf5) {
   H5Fclose(file);
 }
 
+// A pair: each component's curve is what the command gives for it alone, the geometric mean is
+// theirs, RotD100 is at least either and RotD50 lies between the smaller component's half and
+// RotD100; the files hold the five curves and the second component's attributes.
+TEST(SpectrumCommand, PairGivesItsComponentsGeometricMeanRotD50AndRotD100) {
+  const std::string periods = " --periods 0.2:4:0.2 --damping 0.02,0.05 --json -q";
+  const auto csv = TemporaryFile("pair.csv"), h5 = TemporaryFile("pair.h5");
+  const auto run = RunIsolab("spectrum " + kBundled + " " + kBundledH2 + periods + " -o " +
+                             csv.string() + " -o " + h5.string());
+  const auto one = RunIsolab("spectrum " + kBundled + periods);
+  const auto two = RunIsolab("spectrum " + kBundledH2 + periods);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_EQ(one.exit_code, 0);
+  ASSERT_EQ(two.exit_code, 0);
+  const auto pair = nlohmann::json::parse(run.output);
+  const auto h1 = nlohmann::json::parse(one.output), h2 = nlohmann::json::parse(two.output);
+  ASSERT_EQ(pair["pair"].size(), 2u);
+  for (std::size_t d = 0; d < 2; ++d) {
+    const auto& curves = pair["pair"][d];
+    EXPECT_EQ(curves["h1"]["A"], h1["elastic"][d]["A"]);
+    EXPECT_EQ(curves["h2"]["A"], h2["elastic"][d]["A"]);
+    const std::size_t n = curves["h1"]["A"].size();
+    ASSERT_EQ(n, 20u);
+    for (std::size_t p = 0; p < n; ++p) {
+      const double a1 = curves["h1"]["A"][p], a2 = curves["h2"]["A"][p];
+      const double rotd50 = curves["rotd50"]["A"][p], rotd100 = curves["rotd100"]["A"][p];
+      EXPECT_NEAR(curves["geometric_mean"]["A"][p].get<double>(), std::sqrt(a1 * a2), 1e-12 * a1);
+      EXPECT_GE(rotd100, std::max(a1, a2));
+      EXPECT_LE(rotd50, rotd100);
+      EXPECT_GT(rotd50, 0.5 * std::min(a1, a2));
+      const double angle = curves["rotd100"]["angle"][p];
+      EXPECT_TRUE(angle >= 0.0 && angle < 180.0) << angle;
+    }
+  }
+  std::ifstream in(csv);
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const char* curve : {"\nh1,", "\nh2,", "\ngeometric_mean,", "\nrotd50,", "\nrotd100,"}) {
+    EXPECT_NE(text.str().find(curve), std::string::npos) << curve;
+  }
+  const hid_t file = H5Fopen(h5.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  for (const char* name : {"h1/A", "h2/D", "geometric_mean/V", "rotd50/A", "rotd100/A",
+                           "rotd100/angle", "rotd100/time_of_peak"}) {
+    EXPECT_GT(H5Lexists(file, name, H5P_DEFAULT), 0) << name;
+  }
+  EXPECT_GT(H5Aexists(file, "record_h2"), 0);
+  EXPECT_GT(H5Aexists(file, "record_h2_pga_g"), 0);
+  H5Fclose(file);
+}
+
 TEST(SpectrumCommand, ProgressOnStderrUnlessQuiet) {
   const std::string common = "spectrum " + kBundled + " --periods 0.5,1 --ductility 2";
   EXPECT_NE(RunIsolab(common, true).output.find("oscillators"), std::string::npos);
@@ -143,6 +195,13 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
       {kBundled + " --units kN", "--units: 'kN' is a force unit"},
       {kBundled + " --units m/s^2", "its header gives the units as g but --units gives m/s^2"},
       {kBundled + " --dt 0.02", "its header gives a step of 0.01 s but --dt gives 0.02 s"},
+      // Pairs: one step and one length, and no constant-ductility spectra.
+      {kBundled + " " + Source("ground_motions/pulse_tp2.at2"),
+       "pulse_tp2.at2: h2 samples = 1201 (must be h1's 3001: a pair has one length)"},
+      {kBundled + " " + Source("ground_motions/elcentro_1940_ns.at2"),
+       "elcentro_1940_ns.at2: h2 dt = 0.02 (must be h1's 0.01: a pair shares one step)"},
+      {kBundled + " " + kBundledH2 + " --ductility 2",
+       "--ductility: constant-ductility spectra of a pair do not follow"},
   };
   for (const BadInput& c : cases) {
     const auto run = RunIsolab("spectrum " + c.arguments + " -q -o " + output.string(), true);
@@ -203,6 +262,14 @@ TEST(SpectrumCommand, WorkBeyondTheLimitIsRefusedBeforeItStarts) {
   EXPECT_NE(over.output.find("--max-steps: the spectrum would take about 2.3e+04 SDOF steps"),
             std::string::npos)
       << over.output;
+  // A pair counts each point at kPairStepsPerPoint = 60 steps (spectrum_work.h): 1.38e6.
+  const std::string pair =
+      "spectrum " + record.string() + " " + record.string() + " --periods 0.05,0.5,2 -q";
+  EXPECT_EQ(RunIsolab(pair + " --max-steps 1380000").exit_code, 0);
+  const auto pair_over = RunIsolab(pair + " --max-steps 1379999", true);
+  EXPECT_EQ(pair_over.exit_code, 2) << pair_over.output;
+  EXPECT_NE(pair_over.output.find("would take about 1.38e+06 SDOF steps"), std::string::npos)
+      << pair_over.output;
   // The requests of the issue: before, a period of 1e-9 s ran without end, and two billion
   // points per period overflowed the sub-step count.
   for (const std::string request : {" --periods 1e-9", " --points-per-period 2000000000"}) {

@@ -93,6 +93,29 @@ TEST_F(StudyFileTest, BundledStudyBuildsEachVariantOnTheBuilding) {
   EXPECT_TRUE(study.output_directory.empty());
 }
 
+TEST_F(StudyFileTest, BundledPlanStudyHasPairsAtItsAngles) {
+  const StudyFile study = LoadStudyFile(Source("models/studies/five_story_plan_angles.yaml"));
+  EXPECT_TRUE(study.plan);
+  ASSERT_EQ(study.variants.size(), 1u);
+  ASSERT_TRUE(study.variants[0].plan.has_value());
+  EXPECT_EQ(study.variants[0].plan->building.isolators.size(), 4u);
+  EXPECT_FALSE(study.variants[0].model.structure.has_value());
+  ASSERT_EQ(study.records.size(), 4u);
+  const double angles[] = {0, 45, 90, 135};
+  for (std::size_t r = 0; r < 4; ++r) {
+    const StudyRecord& record = study.records[r];
+    ASSERT_TRUE(record.pair.has_value()) << record.name;
+    EXPECT_EQ(record.name, "firm_at" + std::to_string(static_cast<int>(angles[r])));
+    EXPECT_EQ(record.pair->angle, angles[r]);
+    // Resolved against the study's folder, as a one-direction study's records are.
+    EXPECT_EQ(record.pair->h1.file, Source("ground_motions/fwn_firm_seed1.at2"));
+    EXPECT_EQ(record.pair->h2->file, Source("ground_motions/h2_fwn_firm_seed3.at2"));
+    EXPECT_EQ(record.pair->h1.scale, 1.0);
+    EXPECT_EQ(record.path, record.pair->h1.file);
+  }
+  EXPECT_EQ(study.scales, (std::vector<double>{0.6}));
+}
+
 TEST_F(StudyFileTest, GlobsExpandInByteOrderAndKeepTheListOrder) {
   fs::create_directories(directory_ / "records");
   for (const char* name : {"b.at2", "B.at2", "a.at2", "c.csv"}) {

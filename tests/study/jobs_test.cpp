@@ -28,8 +28,9 @@ TEST(Jobs, LabelsAndRunFilesNameVariantRecordAndScale) {
   study.variants.resize(2);
   study.variants[0].name = "thm1";
   study.variants[1].name = "fixed";
-  study.records = {{"fwn_firm_seed1", "a/fwn_firm_seed1.at2", "", 0.0, 1.0, ""},
-                   {"pulse", "b/pulse.csv", "", 0.0, 1.0, ""}};
+  study.records.resize(2);
+  study.records[0].name = "fwn_firm_seed1";
+  study.records[1].name = "pulse";
   study.scales = {0.5, 1.0, 1.25};
   const std::vector<Job> jobs = ExpandJobs(study);
   ASSERT_EQ(jobs.size(), 12u);

@@ -69,7 +69,9 @@ TEST(Summary, MeanMaxAndRatiosOverCompletedRuns) {
   EXPECT_DOUBLE_EQ(ref.mean[1], 300.0);
   EXPECT_DOUBLE_EQ(ref.mean[4], 2.0);
   EXPECT_DOUBLE_EQ(ref.max[4], 4.0);
-  for (std::size_t q = 0; q < kQuantityCount; ++q) EXPECT_EQ(ref.mean_ratio[q], 1.0);
+  for (const Quantity q : StudyQuantities(false)) {
+    EXPECT_EQ(ref.mean_ratio[static_cast<std::size_t>(q)], 1.0);
+  }
 
   const Statistic& other = summary.At(1, 0);  // r1 only
   EXPECT_EQ(other.completed, 1u);

@@ -63,6 +63,7 @@ struct PlanPeaks {
   // largest_resultant / centre_resultant: how much the base's twist adds at the worst isolator.
   double torsional_amplification = 0.0;
   std::vector<Peak> floor_rotation;  // per floor, base first (radians)
+  Peak largest_floor_rotation;       // the largest floor's (index: the floor, 0 the base)
   Peak base_shear;                   // peak resultant of the isolators' summed force
 };
 

@@ -33,6 +33,7 @@
 // Every error is an InputError "file:line:col: key path: what (what was allowed)".
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -72,5 +73,15 @@ bool IsPlanModelFile(const std::string& path);
 // units, an isolator or centre outside the footprint, a mass or rotational inertia <= 0, laws
 // that break their rules or have no coupled form.
 PlanModelFile LoadPlanModelFile(const std::string& path);
+
+// The index of the first of `laws` without a coupled bidirectional form; laws.size() if none.
+std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws);
+// "degrading_bhm2 has no coupled bidirectional form", of laws[c].
+std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t c);
+
+// Every isolator of `model` with `laws` as its coupled law (a study's isolation variant), and
+// isolation_along_x to match. Throws std::invalid_argument (NoCoupledForm) for a law without a
+// coupled form.
+void ReplaceIsolation(PlanModelFile* model, const hysteresis::ParallelAssembly& laws);
 
 }  // namespace isolab::io

@@ -15,25 +15,40 @@
 //    every dataset with a "units" attribute; root attributes: record, record_units,
 //    record_units_source, record_scale, record_pga (length/s^2), record_pga_g, units, gravity
 //    (1 g in the file's acceleration unit), method, isolab_version.
+// A pair's spectra (rotd_spectrum.h) take the elastic curve's place, five curves of the same
+// columns: "h1", "h2" (the components as recorded), "geometric_mean", "rotd50", "rotd100"; in
+// HDF5 the groups /h1, /h2, /geometric_mean, /rotd50, /rotd100, each {D,V,A,time_of_peak}
+// (n_z x n_T; NaN where a curve has no time), and /rotd100/angle (n_z x n_T, degrees from H1
+// towards H2), with the second component's attributes named record_h2, record_h2_units, ....
 // Both are written atomically (atomic_file.h).
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "isolab/io/record.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
+#include "isolab/spectra/rotd_spectrum.h"
 
 namespace isolab::io {
 
 struct SpectrumDescription {
-  const spectra::ElasticSpectrum* elastic = nullptr;                       // required
+  const spectra::ElasticSpectrum* elastic = nullptr;  // required unless `pair` is given
   const spectra::ConstantDuctilitySpectrum* constant_ductility = nullptr;  // may be null
-  AppliedRecord record;     // its pga in length_unit/s^2
-  std::string length_unit;  // of every length in the spectra; time in s
-  double gravity = 0.0;     // 1 g in length_unit/s^2
+  const spectra::PairSpectrum* pair = nullptr;  // a pair's spectra instead of `elastic`
+  AppliedRecord record;                         // its pga in length_unit/s^2; H1 of a pair
+  AppliedRecord record_h2;                      // a pair's H2
+  std::string length_unit;                      // of every length in the spectra; time in s
+  double gravity = 0.0;                         // 1 g in length_unit/s^2
   std::string version;
 };
+
+// The elastic curves of a description, named as the files name them: {"elastic"} of one record,
+// or a pair's {"h1", "h2", "geometric_mean", "rotd50", "rotd100"}.
+std::vector<std::pair<std::string, const spectra::ElasticSpectrum*>> ElasticCurves(
+    const SpectrumDescription& spectrum);
 
 // True for the extensions WriteSpectrumFile knows (.csv, .h5, .hdf5).
 bool IsSpectrumFileName(const std::string& path);

@@ -26,6 +26,18 @@ double SpectrumSteps(const integrators::SampledHistory& ground, std::span<const 
                      std::size_t damping_ratios, int points_per_period, std::size_t ductilities,
                      const ConstantDuctilityOptions& options);
 
+// A point of a pair's walk (rotd_spectrum.h) in elastic SDOF steps, at its most: both
+// oscillators and every direction's peak updated. Measured with spectra_benchmark on a 2-core AMD
+// EPYC VM: the pair's 100 periods of a 30 s record cost 48 to 54 times the elastic spectrum of
+// one component with every point updating every direction, 14 times with the points that can
+// raise no direction skipped (as the spectra are computed); 60 bounds both.
+inline constexpr double kPairStepsPerPoint = 60.0;
+
+// A pair's spectra (either component's `ground`: they share step and length), counted as
+// SpectrumSteps counts one record's elastic spectrum, each point at kPairStepsPerPoint.
+double PairSpectrumSteps(const integrators::SampledHistory& ground, std::span<const double> periods,
+                         std::size_t damping_ratios, int points_per_period);
+
 // Throws InputError({limit_name}, ...) when `steps` (SpectrumSteps) exceed `max_steps`, saying
 // what to ask for instead and how to raise the limit.
 void CheckSpectrumWork(double steps, double max_steps, const std::string& limit_name);

@@ -7,8 +7,15 @@
 //   residual_isolator_displacement  |u| of the isolation layer where it comes to rest after the
 //                                   free vibration that follows the record (response_peaks.h)
 //                                   (length)
+// A plan study's runs (plan_analysis.h, as `isolab run` reports them on a plan model):
+//   resultant_isolator_displacement  peak resultant |(u_x, u_y)| of the worst isolator (length)
+//   resultant_base_shear             peak resultant of the isolators' summed force (force)
+//   floor_rotation                   peak |rotation| of the floor that twists most (rad)
+//   torsional_amplification          the worst isolator's peak resultant over that of the base's
+//                                    centre of mass (1)
 // Lengths and forces are in the study's units (its building's), whatever the variant's model
-// uses. A quantity a variant does not have (a fixed base has no isolator) is NaN.
+// uses. A quantity a variant does not have (a fixed base has no isolator) is NaN; a study shows
+// the quantities of its kind (StudyQuantities).
 #pragma once
 
 #include <array>
@@ -16,9 +23,11 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "isolab/integrators/response.h"
 #include "isolab/io/analysis_setup.h"
+#include "isolab/io/plan_analysis.h"
 #include "isolab/io/response_peaks.h"
 #include "isolab/io/units.h"
 
@@ -30,8 +39,12 @@ enum class Quantity {
   kStoryDriftRatio,
   kFloorAcceleration,
   kResidualIsolatorDisplacement,
+  kResultantIsolatorDisplacement,
+  kResultantBaseShear,
+  kFloorRotation,
+  kTorsionalAmplification,
 };
-inline constexpr std::size_t kQuantityCount = 5;
+inline constexpr std::size_t kQuantityCount = 9;
 
 using QuantityValues = std::array<double, kQuantityCount>;
 
@@ -43,6 +56,10 @@ struct QuantityInfo {
 
 // Every quantity, in the order of QuantityValues.
 std::span<const QuantityInfo> Quantities();
+const QuantityInfo& InfoOf(Quantity quantity);
+
+// The quantities a study's summary shows: a one-direction study's five, or a plan study's four.
+std::vector<Quantity> StudyQuantities(bool plan);
 
 // "mm", "kN", "%", "g": the unit quantity values are in, for a study in `units`.
 std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units);
@@ -56,5 +73,9 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
                                  const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
                                  const io::UnitSystem& study_units);
+
+// A plan run's quantities from its peaks (io::ComputePlanPeaks), the others NaN.
+QuantityValues MeasurePlanQuantities(const io::PlanPeaks& peaks, const io::UnitSystem& model_units,
+                                     const io::UnitSystem& study_units);
 
 }  // namespace isolab::study

@@ -20,6 +20,8 @@ struct StudyShape {
   std::vector<double> scales;
   std::size_t reference = 0;
   std::vector<std::string> units;  // per quantity, QuantityUnit
+  // The quantities summaries show, in order: a one-direction study's unless a plan study's.
+  std::vector<Quantity> quantities = StudyQuantities(false);
 };
 
 StudyShape ShapeOf(const io::StudyFile& study);
