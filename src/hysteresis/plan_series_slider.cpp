@@ -245,8 +245,9 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
     Store(in, next, trial);
     return;
   }
-  const Vec2 trial_force = ke * (in.u - xn) - RadialForce(law.spring, xn);
-  if (Sticks(committed, in.u, trial_force)) {
+  const Vec2 spring_force = RadialForce(law.spring, xn);
+  const Vec2 trial_force = ke * (in.u - xn) - spring_force;
+  if (Sticks(committed, spring_force, in.u, trial_force)) {
     next.force = ke * (in.u - xn);
     response->force = next.force;
     response->stiffness = Identity(ke);
@@ -260,7 +261,7 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
     const Vec2 n = trial_force / trial_norm;
     x = xn;
     response->stiffness = eq.LineariseAtZeroTravel(n).Tangent(ke);
-    next.force = fs * n + RadialForce(law.spring, xn);
+    next.force = fs * n + spring_force;
   } else {
     double travel = 0.0;
     if (const std::optional<InnerSlip> inner = SlipEndingInside(law, xn, in.u, trial_force)) {

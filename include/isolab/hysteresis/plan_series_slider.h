@@ -55,13 +55,13 @@ struct PlanSeriesSlider {
   SeriesSlider law;  // ke, fs and g, as the 1-D kernel of the same law has them
 
   // The one stick test of the family (plan_slip_decision.h): the slider force if it stuck is
-  // f_s* = ke (u - x_n) - g(x_n) = f_s,n + ke du, f_s,n = f_n - g(x_n) the committed one.
-  bool Sticks(const PlanLawState& committed, Vec2 u, Vec2 trial_slider_force) const {
+  // f_s* = ke (u - x_n) - g(x_n) = f_s,n + ke du, f_s,n = f_n - g(x_n) the committed one
+  // (committed_spring_force = g(x_n)).
+  bool Sticks(const PlanLawState& committed, Vec2 committed_spring_force, Vec2 u,
+              Vec2 trial_slider_force) const {
     if (!(law.fs > 0.0)) return false;
-    const Vec2 committed_slider_force =
-        Force(committed) - RadialForce(law.spring, Slider(committed));
-    return !PlanSlips(Slipping(committed), committed_slider_force, u - Displacement(committed),
-                      Norm(trial_slider_force) / law.fs);
+    return !PlanSlips(Slipping(committed), Force(committed) - committed_spring_force,
+                      u - Displacement(committed), Norm(trial_slider_force) / law.fs);
   }
 
   void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
