@@ -510,6 +510,11 @@ PlanLawKernel SeriesKernel(double ke, double kh1, double kh2, double fs, double 
   return CoupledKernel(LawParameters::Make(LawType::kThm1, ParameterForm::kMechanical, values));
 }
 
+void ExpectVector(Vec2 v, Vec2 expected, double tolerance) {
+  EXPECT_NEAR(v.x, expected.x, tolerance);
+  EXPECT_NEAR(v.y, expected.y, tolerance);
+}
+
 void ExpectMatrix(const Mat2& k, const Mat2& expected, double tolerance) {
   EXPECT_NEAR(k.xx, expected.xx, tolerance);
   EXPECT_NEAR(k.xy, expected.xy, tolerance);
@@ -524,10 +529,8 @@ void ExpectMatrix(const Mat2& k, const Mat2& expected, double tolerance) {
 TEST(PlanSeriesSliderReturnMap, SlipInsideUcIsTheRadialReturnWorkedByHand) {
   const PlanLawKernel kernel = SeriesKernel(1.0, 0.25, 0.1, 20.0, 1000.0);
   const Trial trial = Update(kernel, PlanLawState{}, {30.0, 40.0}, {}, 0.0);
-  EXPECT_NEAR(Slider(trial.state).x, 14.4, 1e-12);
-  EXPECT_NEAR(Slider(trial.state).y, 19.2, 1e-12);
-  EXPECT_NEAR(trial.response.force.x, 15.6, 1e-12);
-  EXPECT_NEAR(trial.response.force.y, 20.8, 1e-12);
+  ExpectVector(Slider(trial.state), {14.4, 19.2}, 1e-12);
+  ExpectVector(trial.response.force, {15.6, 20.8}, 1e-12);
   EXPECT_NEAR(Dissipated(trial.state), 20.0 * 24.0, 1e-10);  // fs |x|, |x| = 24
   const Vec2 n{0.6, 0.8}, t = Perpendicular(n);
   ExpectMatrix(trial.response.stiffness, 0.2 * Outer(n, n) + 0.52 * Outer(t, t), 1e-12);
@@ -540,10 +543,8 @@ TEST(PlanSeriesSliderReturnMap, SlipInsideUcIsTheRadialReturnWorkedByHand) {
 TEST(PlanSeriesSliderReturnMap, SpringsInSeriesHaveTheTangentWorkedByHand) {
   const PlanLawKernel kernel = SeriesKernel(1.0, 0.5, 0.1, 0.0, 10.0);
   const Trial trial = Update(kernel, PlanLawState{}, {0.0, 59.0}, {}, 0.0);
-  EXPECT_NEAR(Slider(trial.state).x, 0.0, 1e-12);
-  EXPECT_NEAR(Slider(trial.state).y, 50.0, 1e-12);
-  EXPECT_NEAR(trial.response.force.x, 0.0, 1e-12);
-  EXPECT_NEAR(trial.response.force.y, 9.0, 1e-12);
+  ExpectVector(Slider(trial.state), {0.0, 50.0}, 1e-12);
+  ExpectVector(trial.response.force, {0.0, 9.0}, 1e-12);
   ExpectMatrix(trial.response.stiffness, {0.18 / 1.18, 0.0, 0.0, 1.0 / 11.0}, 1e-12);
 }
 
