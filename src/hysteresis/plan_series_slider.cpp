@@ -278,7 +278,7 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
       // xi itself, not x - x_n, whose round-off may be all of a slip this small.
       const Vec2 xi = beyond ? beyond->x - xn : SolveSlip(eq, trial_force);
       travel = Norm(xi);
-      x = xn + xi;
+      x = beyond ? beyond->x : xn + xi;
       response->stiffness = eq.Linearise(xi).Tangent(ke);
       next.force = beyond ? fs * beyond->n + RadialForce(law.spring, x)
                           : (fs / travel) * xi + RadialForce(law.spring, x);

@@ -19,7 +19,7 @@
 //     x = (ke u - fs n) / (ke + kh1), the 1-D kernel's formula at |w|; accepted when |x| <= uc;
 //   * it ends beyond uc, where g = kh2 x + (kh1 - kh2) uc x / |x|: given n, x lies along
 //     ke u - fs n with a known length, and n solves (x(n) - x_n) x n = 0, by Newton on the angle
-//     of n from the direction of f_s* (about three turns in the Table 9 runs);
+//     of n from the direction of f_s* (about four turns in the Table 9 runs);
 //   * a slip of round-off size (f_s* within 1e-6 of fs; x - x_n would lose it) and any case the
 //     scalar iteration cannot settle go to Newton on xi in 2-D, started from the better of two
 //     closed forms (the radial return at the secant of x_n, and x = (ke + g)^-1 (ke u - fs
