@@ -90,11 +90,18 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
 
   constant_terms_ = ConstantTerms(n, viscous_damping_, pattern_);
   for (const PlanMember& member : members_) {
-    for (const int a : member.dofs) {
-      for (const int b : member.dofs) {
-        member_slots_.push_back(a != kGround && b != kGround ? SlotOf(pattern_, a, b) : -1);
+    MemberTerms packed;
+    for (int a = 0; a < kTerms; ++a) {
+      if (member.dofs[a] == kGround) continue;
+      packed.dofs[packed.count] = member.dofs[a];
+      packed.coefficients[packed.count++] = member.coefficients[a];
+    }
+    for (int a = 0; a < packed.count; ++a) {
+      for (int b = 0; b < packed.count; ++b) {
+        packed.slots[a * packed.count + b] = SlotOf(pattern_, packed.dofs[a], packed.dofs[b]);
       }
     }
+    member_terms_.push_back(packed);
   }
   for (const PlanIsolator& isolator : isolators_) {
     const int first = kPlanDofsPerFloor * isolator.floor;
@@ -121,27 +128,24 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
   double* values = tangent ? tangent->valuePtr() : nullptr;
 
   for (std::size_t k = 0; k < members_.size(); ++k) {
-    const PlanMember& member = members_[k];
+    const MemberTerms& terms = member_terms_[k];
     double d = 0.0, d_rate = 0.0;
-    for (int a = 0; a < kTerms; ++a) {
-      if (member.dofs[a] == kGround) continue;
-      d += member.coefficients[a] * u[member.dofs[a]];
-      d_rate += member.coefficients[a] * v[member.dofs[a]];
+    for (int a = 0; a < terms.count; ++a) {
+      d += terms.coefficients[a] * u[terms.dofs[a]];
+      d_rate += terms.coefficients[a] * v[terms.dofs[a]];
     }
-    const std::size_t offset = law_offsets_[k], count = member.assembly.size();
+    const std::size_t offset = law_offsets_[k], count = members_[k].assembly.size();
     const hysteresis::AssemblyResponse total =
-        member.assembly.Update(committed.subspan(offset, count), {d, d_rate, t},
-                               trial.subspan(offset, count), responses.subspan(offset, count));
+        members_[k].assembly.Update(committed.subspan(offset, count), {d, d_rate, t},
+                                    trial.subspan(offset, count), responses.subspan(offset, count));
     connection_forces[k] = total.force;
     const double k_eff = total.stiffness + factors.damping * total.damping;
-    const int* slots = &member_slots_[k * kTerms * kTerms];
-    for (int a = 0; a < kTerms; ++a) {
-      if (member.dofs[a] == kGround) continue;
-      (*force)[member.dofs[a]] += member.coefficients[a] * total.force;
+    for (int a = 0; a < terms.count; ++a) {
+      (*force)[terms.dofs[a]] += terms.coefficients[a] * total.force;
       if (!values) continue;
-      for (int b = 0; b < kTerms; ++b) {
-        if (member.dofs[b] == kGround) continue;
-        values[slots[a * kTerms + b]] += member.coefficients[a] * k_eff * member.coefficients[b];
+      const double row = terms.coefficients[a] * k_eff;
+      for (int b = 0; b < terms.count; ++b) {
+        values[terms.slots[a * terms.count + b]] += row * terms.coefficients[b];
       }
     }
   }

@@ -505,5 +505,48 @@ TEST(PlanSeriesSliderReturnMap, ZeroIncrementFromASlippingStateKeepsItsForce) {
   EXPECT_EQ(slipping, static_cast<int>(states.size()));
 }
 
+PlanLawKernel SeriesKernel(double ke, double kh1, double kh2, double fs, double uc) {
+  const double values[] = {ke, kh1, kh2, fs, uc};
+  return CoupledKernel(LawParameters::Make(LawType::kThm1, ParameterForm::kMechanical, values));
+}
+
+void ExpectVector(Vec2 v, Vec2 expected, double tolerance) {
+  EXPECT_NEAR(v.x, expected.x, tolerance);
+  EXPECT_NEAR(v.y, expected.y, tolerance);
+}
+
+void ExpectMatrix(const Mat2& k, const Mat2& expected, double tolerance) {
+  EXPECT_NEAR(k.xx, expected.xx, tolerance);
+  EXPECT_NEAR(k.xy, expected.xy, tolerance);
+  EXPECT_NEAR(k.yx, expected.yx, tolerance);
+  EXPECT_NEAR(k.yy, expected.yy, tolerance);
+}
+
+// The radial return worked by hand (ke = 1, kh1 = 0.25, fs = 20, from rest to u = (30, 40)):
+// f_s* = (30, 40), |f_s*| = 50, n = (0.6, 0.8), x = (u - 20 n) / 1.25 = (14.4, 19.2), force
+// 20 n + 0.25 x = (15.6, 20.8) = ke (u - x); tangent 1 * 0.25 / 1.25 = 0.2 along n and
+// ke (fs ke + kh1 |f_s*|) / ((ke + kh1) |f_s*|) = 32.5 / 62.5 = 0.52 across.
+TEST(PlanSeriesSliderReturnMap, SlipInsideUcIsTheRadialReturnWorkedByHand) {
+  const PlanLawKernel kernel = SeriesKernel(1.0, 0.25, 0.1, 20.0, 1000.0);
+  const Trial trial = Update(kernel, PlanLawState{}, {30.0, 40.0}, {}, 0.0);
+  ExpectVector(Slider(trial.state), {14.4, 19.2}, 1e-12);
+  ExpectVector(trial.response.force, {15.6, 20.8}, 1e-12);
+  EXPECT_NEAR(Dissipated(trial.state), 20.0 * 24.0, 1e-10);  // fs |x|, |x| = 24
+  const Vec2 n{0.6, 0.8}, t = Perpendicular(n);
+  ExpectMatrix(trial.response.stiffness, 0.2 * Outer(n, n) + 0.52 * Outer(t, t), 1e-12);
+}
+
+// No slider (fs = 0): ke = 1 in series with g (kh1 = 0.5 to uc = 10, kh2 = 0.1 beyond) at
+// u = (0, 59): x = (0, 50), since 50 + g_r(50) = 50 + 0.5 * 10 + 0.1 * 40 = 59; force g = (0, 9);
+// tangent ke kh2 / (ke + kh2) = 1 / 11 along x and, with the secant 9 / 50 = 0.18,
+// 0.18 / 1.18 across.
+TEST(PlanSeriesSliderReturnMap, SpringsInSeriesHaveTheTangentWorkedByHand) {
+  const PlanLawKernel kernel = SeriesKernel(1.0, 0.5, 0.1, 0.0, 10.0);
+  const Trial trial = Update(kernel, PlanLawState{}, {0.0, 59.0}, {}, 0.0);
+  ExpectVector(Slider(trial.state), {0.0, 50.0}, 1e-12);
+  ExpectVector(trial.response.force, {0.0, 9.0}, 1e-12);
+  ExpectMatrix(trial.response.stiffness, {0.18 / 1.18, 0.0, 0.0, 1.0 / 11.0}, 1e-12);
+}
+
 }  // namespace
 }  // namespace isolab::hysteresis

@@ -103,8 +103,15 @@ class PlanStructure {
   std::vector<char> viscous_law_state_;   // per law state: a dashpot's (or a dashpot half's)
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
-  // Member k's slots: kMaxTerms^2 from k * kMaxTerms^2, row-major over its terms (-1 if absent).
-  std::vector<int> member_slots_;
+  // Member k's terms on dofs that exist (kGround ones dropped), packed for the hot loop, with the
+  // tangent slots of their pairs, row-major count x count.
+  struct MemberTerms {
+    int count = 0;
+    std::array<int, PlanMember::kMaxTerms> dofs{};
+    std::array<double, PlanMember::kMaxTerms> coefficients{};
+    std::array<int, PlanMember::kMaxTerms * PlanMember::kMaxTerms> slots{};
+  };
+  std::vector<MemberTerms> member_terms_;
   // Isolator i's 3x3 block, row-major, from 9 i.
   std::vector<int> isolator_slots_;
 };
