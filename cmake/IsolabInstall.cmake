@@ -10,6 +10,7 @@ set(isolab_libraries core hysteresis structure integrators spectra identificatio
 set(isolab_library_targets isolab_klu isolab_hdf5)
 foreach(area ${isolab_libraries})
   set_target_properties(isolab_${area} PROPERTIES EXPORT_NAME ${area})
+  isolab_pass_sanitizers_on(isolab_${area})
   list(APPEND isolab_library_targets isolab_${area})
 endforeach()
 set_target_properties(isolab_klu PROPERTIES EXPORT_NAME klu)
