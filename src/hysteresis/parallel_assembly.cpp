@@ -1,11 +1,23 @@
 #include "isolab/hysteresis/parallel_assembly.h"
 
+#include <vector>
+
 namespace isolab::hysteresis {
 
 ParallelAssembly::ParallelAssembly(std::vector<Component> components)
     : components_(std::move(components)) {
   kernels_.reserve(components_.size());
   for (const Component& component : components_) kernels_.push_back(component.parameters.Kernel());
+}
+
+std::optional<AssemblyResponse> ParallelAssembly::ConstantTangent() const {
+  for (const LawKernel& kernel : kernels_) {
+    if (!HasConstantTangent(kernel)) return std::nullopt;
+  }
+  const std::vector<LawState> rest(size());
+  std::vector<LawState> trial(size());
+  std::vector<LawResponse> responses(size());
+  return Update(rest, {}, trial, responses);
 }
 
 double ParallelAssembly::StoredEnergy(std::span<const LawState> states) const {

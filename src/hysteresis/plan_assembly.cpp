@@ -1,5 +1,7 @@
 #include "isolab/hysteresis/plan_assembly.h"
 
+#include <vector>
+
 namespace isolab::hysteresis {
 
 PlanAssembly::PlanAssembly(std::vector<PlanComponent> components)
@@ -9,6 +11,16 @@ PlanAssembly::PlanAssembly(std::vector<PlanComponent> components)
     kernels_.push_back(component.law_y ? UncoupledKernel(component.law, *component.law_y)
                                        : CoupledKernel(component.law));
   }
+}
+
+std::optional<PlanResponse> PlanAssembly::ConstantTangent() const {
+  for (const PlanLawKernel& kernel : kernels_) {
+    if (!HasConstantTangent(kernel)) return std::nullopt;
+  }
+  const std::vector<PlanLawState> rest(size());
+  std::vector<PlanLawState> trial(size());
+  std::vector<PlanLawResponse> responses(size());
+  return Update(rest, {}, trial, responses);
 }
 
 double PlanAssembly::StoredEnergy(std::span<const PlanLawState> states) const {

@@ -37,7 +37,7 @@ PlanBoucWen::Term PlanBoucWen::Hysteretic(Vec2 z, Vec2 d, Vec2 sign_direction) c
   return term;
 }
 
-void PlanBoucWen::Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+void PlanBoucWen::Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
                          PlanLawResponse* response) const {
   const double alpha = law.alpha, beta = law.beta;
   const Vec2 du = in.u - Displacement(committed);

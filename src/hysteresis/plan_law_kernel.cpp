@@ -33,7 +33,17 @@ PlanLawKernel UncoupledKernel(const LawParameters& along_x, const LawParameters&
   return UncoupledPair{along_x.Kernel(), along_y.Kernel()};
 }
 
-double PlanViscousEnergy(const PlanLawKernel& kernel, const PlanLawState& state) {
+bool HasConstantTangent(const PlanLawKernel& kernel) {
+  if (const auto* elastic = std::get_if<PlanElasticSpring>(&kernel)) {
+    return HasConstantTangent(LawKernel{elastic->law});
+  }
+  if (const auto* pair = std::get_if<UncoupledPair>(&kernel)) {
+    return HasConstantTangent(pair->x) && HasConstantTangent(pair->y);
+  }
+  return std::holds_alternative<PlanDashpot>(kernel);
+}
+
+double PlanViscousEnergy(const PlanLawKernel& kernel, PlanLawStateView state) {
   if (std::holds_alternative<PlanDashpot>(kernel)) return Dissipated(state);
   if (const auto* pair = std::get_if<UncoupledPair>(&kernel)) {
     return (std::holds_alternative<Dashpot>(pair->x) ? state.x.dissipated : 0.0) +

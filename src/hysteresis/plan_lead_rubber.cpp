@@ -7,8 +7,8 @@
 namespace isolab::hysteresis {
 
 // The 1-D update (lead_rubber.cpp) with z a vector; see there for each step's reasoning.
-void PlanLeadRubber::Update(const PlanLawState& committed, const PlanLawInput& in,
-                            PlanLawState* trial, PlanLawResponse* response) const {
+void PlanLeadRubber::Update(PlanLawStateView committed, const PlanLawInput& in,
+                            PlanLawStateSlot trial, PlanLawResponse* response) const {
   const PlanUnitSlider core{law.slider};
   const Vec2 u_n = Displacement(committed);
   const PlanUnitSlider::Step step = core.Update(Slipping(committed), u_n, Slider(committed), in.u);

@@ -229,8 +229,8 @@ Mat2 SpringInSeriesTangent(double ke, const TrilinearSpring& g, Vec2 x) {
 
 }  // namespace
 
-void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput& in,
-                              PlanLawState* trial, PlanLawResponse* response) const {
+void PlanSeriesSlider::Update(PlanLawStateView committed, const PlanLawInput& in,
+                              PlanLawStateSlot trial, PlanLawResponse* response) const {
   const double ke = law.ke, fs = law.fs;
   const Vec2 xn = Slider(committed);
   CoupledState next = Carried(committed);
@@ -291,7 +291,7 @@ void PlanSeriesSlider::Update(const PlanLawState& committed, const PlanLawInput&
   Store(in, next, trial);
 }
 
-double PlanSeriesSlider::StoredEnergy(const PlanLawState& state) const {
+double PlanSeriesSlider::StoredEnergy(PlanLawStateView state) const {
   const Vec2 f = Force(state);
   return 0.5 * Dot(f, f) / law.ke + RadialEnergy(law.spring, Slider(state));
 }

@@ -80,6 +80,7 @@ class NewmarkRun {
         options_(options),
         summary_(*summary),
         tangent_(structure.tangent_pattern()),
+        constant_tangent_(structure.tangent_pattern()),
         solver_(structure.tangent_pattern()),
         committed_(structure.law_count()),
         trial_(structure.law_count()),
@@ -155,6 +156,7 @@ class NewmarkRun {
       // Modified-initial Newton assembles its tangent at rest below, not at the trial state.
       const bool tangent_here =
           refactor && options_.newton != NewmarkOptions::Newton::kModifiedInitial;
+      if (tangent_here) StartTangent(factors);
       structure_.Evaluate(committed_, t0 + h, u_trial_, v_trial_, trial_, responses_, &force_,
                           connection_forces_, factors, tangent_here ? &tangent_ : nullptr);
       residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
@@ -169,6 +171,7 @@ class NewmarkRun {
       if (iteration == options_.max_iterations) break;
       if (refactor) {
         if (options_.newton == NewmarkOptions::Newton::kModifiedInitial) {
+          StartTangent(factors);
           structure_.Evaluate(rest_, 0.0, zero_, zero_, trial_, responses_, &force_,
                               connection_forces_, factors, &tangent_);
         }
@@ -206,6 +209,16 @@ class NewmarkRun {
     return std::numeric_limits<double>::epsilon() * MaxAbs(roundoff_);
   }
 
+  // The tangent's values set to the structure's terms that do not depend on the state (computed
+  // again only when the step size changes), for Evaluate to add the rest to.
+  void StartTangent(const structure::TangentFactors& factors) {
+    if (factors.mass != constant_factors_.mass || factors.damping != constant_factors_.damping) {
+      structure_.ConstantTangent(factors, &constant_tangent_);
+      constant_factors_ = factors;
+    }
+    std::copy_n(constant_tangent_.valuePtr(), constant_tangent_.nonZeros(), tangent_.valuePtr());
+  }
+
   bool NeedsFactorisation(int iteration, double h) const {
     switch (options_.newton) {
       case NewmarkOptions::Newton::kFull:
@@ -241,6 +254,8 @@ class NewmarkRun {
   const NewmarkOptions& options_;
   RunSummary& summary_;
   structure::SparseMatrix tangent_;
+  structure::SparseMatrix constant_tangent_;  // StartTangent's terms, for constant_factors_
+  structure::TangentFactors constant_factors_;
   KluSolver solver_;
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;

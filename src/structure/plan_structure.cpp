@@ -8,7 +8,6 @@ namespace {
 using hysteresis::LawState;
 using hysteresis::Mat2;
 using hysteresis::PlanLawResponse;
-using hysteresis::PlanLawState;
 using hysteresis::Vec2;
 
 constexpr int kTerms = PlanMember::kMaxTerms;
@@ -102,11 +101,48 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
       }
     }
     member_terms_.push_back(packed);
+    member_constants_.push_back(member.assembly.ConstantTangent());
   }
   for (const PlanIsolator& isolator : isolators_) {
     const int first = kPlanDofsPerFloor * isolator.floor;
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) isolator_slots_.push_back(SlotOf(pattern_, first + a, first + b));
+    }
+    isolator_constants_.push_back(isolator.assembly.ConstantTangent());
+  }
+}
+
+void PlanStructure::AddMemberTangent(std::size_t member, double k_eff, double* values) const {
+  const MemberTerms& terms = member_terms_[member];
+  for (int a = 0; a < terms.count; ++a) {
+    const double row = terms.coefficients[a] * k_eff;
+    for (int b = 0; b < terms.count; ++b) {
+      values[terms.slots[a * terms.count + b]] += row * terms.coefficients[b];
+    }
+  }
+}
+
+void PlanStructure::AddIsolatorTangent(std::size_t isolator, const Mat2& k_eff,
+                                       double* values) const {
+  const std::array<Vec2, 3> columns = MapColumns(isolators_[isolator].arm);
+  const int* slots = &isolator_slots_[9 * isolator];
+  for (int b = 0; b < 3; ++b) {
+    const Vec2 k_column = k_eff * columns[b];
+    for (int a = 0; a < 3; ++a) values[slots[3 * a + b]] += Dot(columns[a], k_column);
+  }
+}
+
+void PlanStructure::ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const {
+  constant_terms_.Fill(mass_, viscous_damping_, factors, tangent);
+  double* values = tangent->valuePtr();
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    if (const auto& constant = member_constants_[k]) {
+      AddMemberTangent(k, constant->stiffness + factors.damping * constant->damping, values);
+    }
+  }
+  for (std::size_t i = 0; i < isolators_.size(); ++i) {
+    if (const auto& constant = isolator_constants_[i]) {
+      AddIsolatorTangent(i, constant->stiffness + factors.damping * constant->damping, values);
     }
   }
 }
@@ -124,7 +160,7 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
                              std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                              std::span<double> connection_forces, const TangentFactors& factors,
                              SparseMatrix* tangent) const {
-  constant_terms_.Start(mass_, viscous_damping_, v, factors, force, tangent);
+  force->noalias() = viscous_damping_ * v;
   double* values = tangent ? tangent->valuePtr() : nullptr;
 
   for (std::size_t k = 0; k < members_.size(); ++k) {
@@ -139,14 +175,11 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
         members_[k].assembly.Update(committed.subspan(offset, count), {d, d_rate, t},
                                     trial.subspan(offset, count), responses.subspan(offset, count));
     connection_forces[k] = total.force;
-    const double k_eff = total.stiffness + factors.damping * total.damping;
     for (int a = 0; a < terms.count; ++a) {
       (*force)[terms.dofs[a]] += terms.coefficients[a] * total.force;
-      if (!values) continue;
-      const double row = terms.coefficients[a] * k_eff;
-      for (int b = 0; b < terms.count; ++b) {
-        values[terms.slots[a * terms.count + b]] += row * terms.coefficients[b];
-      }
+    }
+    if (values && !member_constants_[k]) {
+      AddMemberTangent(k, total.stiffness + factors.damping * total.damping, values);
     }
   }
 
@@ -161,12 +194,9 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
     Vec2 f;
     Mat2 k_eff;
     for (const hysteresis::PlanLawKernel& kernel : isolator.assembly.kernels()) {
-      const PlanLawState from{committed[offset], committed[offset + 1]};
-      PlanLawState to;
       PlanLawResponse response;
-      hysteresis::UpdatePlanLaw(kernel, from, in, &to, &response);
-      trial[offset] = to.x;
-      trial[offset + 1] = to.y;
+      hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
+                                {trial[offset], trial[offset + 1]}, &response);
       responses[offset] = {response.force.x, response.stiffness.xx, response.damping.xx};
       responses[offset + 1] = {response.force.y, response.stiffness.yy, response.damping.yy};
       f = f + response.force;
@@ -179,12 +209,7 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
     // T^T f on the floor's dofs, T^T K_eff T into its 3x3 block.
     const std::array<Vec2, 3> columns = MapColumns(isolator.arm);
     for (int a = 0; a < 3; ++a) (*force)[first + a] += Dot(columns[a], f);
-    if (!values) continue;
-    const int* slots = &isolator_slots_[9 * i];
-    for (int b = 0; b < 3; ++b) {
-      const Vec2 k_column = k_eff * columns[b];
-      for (int a = 0; a < 3; ++a) values[slots[3 * a + b]] += Dot(columns[a], k_column);
-    }
+    if (values && !isolator_constants_[i]) AddIsolatorTangent(i, k_eff, values);
   }
 }
 

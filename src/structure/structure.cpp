@@ -29,11 +29,8 @@ ConstantTerms::ConstantTerms(int dofs, const SparseMatrix& damping, const Sparse
   }
 }
 
-void ConstantTerms::Start(const Eigen::VectorXd& mass, const SparseMatrix& damping,
-                          const Eigen::VectorXd& v, const TangentFactors& factors,
-                          Eigen::VectorXd* force, SparseMatrix* tangent) const {
-  force->noalias() = damping * v;
-  if (tangent == nullptr) return;
+void ConstantTerms::Fill(const Eigen::VectorXd& mass, const SparseMatrix& damping,
+                         const TangentFactors& factors, SparseMatrix* tangent) const {
   double* values = tangent->valuePtr();
   std::fill(values, values + tangent->nonZeros(), 0.0);
   for (std::size_t i = 0; i < mass_slots_.size(); ++i) {
@@ -90,6 +87,26 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
       slots.ji = SlotOf(pattern_, connection.dof_j, connection.dof_i);
     }
     connection_slots_.push_back(slots);
+    constant_responses_.push_back(connection.assembly.ConstantTangent());
+  }
+}
+
+void Structure::AddConnectionTangent(std::size_t connection, double k_eff, double* values) const {
+  const ConnectionSlots& slots = connection_slots_[connection];
+  values[slots.jj] += k_eff;
+  if (slots.ii < 0) return;  // grounded
+  values[slots.ii] += k_eff;
+  values[slots.ij] -= k_eff;
+  values[slots.ji] -= k_eff;
+}
+
+void Structure::ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const {
+  constant_terms_.Fill(mass_, viscous_damping_, factors, tangent);
+  for (std::size_t k = 0; k < connections_.size(); ++k) {
+    if (const auto& constant = constant_responses_[k]) {
+      AddConnectionTangent(k, constant->stiffness + factors.damping * constant->damping,
+                           tangent->valuePtr());
+    }
   }
 }
 
@@ -99,7 +116,7 @@ void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double
                          std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                          std::span<double> connection_forces, const TangentFactors& factors,
                          SparseMatrix* tangent) const {
-  constant_terms_.Start(mass_, viscous_damping_, v, factors, force, tangent);
+  force->noalias() = viscous_damping_ * v;
   double* values = tangent ? tangent->valuePtr() : nullptr;
   for (std::size_t k = 0; k < connections_.size(); ++k) {
     const Connection& connection = connections_[k];
@@ -114,15 +131,8 @@ void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double
     connection_forces[k] = total.force;
     (*force)[connection.dof_j] += total.force;
     if (!grounded) (*force)[connection.dof_i] -= total.force;
-    if (values) {
-      const double k_eff = total.stiffness + factors.damping * total.damping;
-      const ConnectionSlots& slots = connection_slots_[k];
-      values[slots.jj] += k_eff;
-      if (!grounded) {
-        values[slots.ii] += k_eff;
-        values[slots.ij] -= k_eff;
-        values[slots.ji] -= k_eff;
-      }
+    if (values && !constant_responses_[k]) {
+      AddConnectionTangent(k, total.stiffness + factors.damping * total.damping, values);
     }
   }
 }

@@ -147,6 +147,7 @@ TEST(PlanStructure, TangentMatchesCentralDifferencesOfTheForce) {
       }
       structure::SparseMatrix tangent = s.tangent_pattern();
       const structure::TangentFactors factors{0.0, 0.7};
+      s.ConstantTangent(factors, &tangent);
       s.Evaluate(committed, 0.0, u, v, trial, responses, &f, forces, factors, &tangent);
       const Eigen::MatrixXd k(tangent);
       for (int j = 0; j < n; ++j) {

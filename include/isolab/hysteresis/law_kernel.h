@@ -3,6 +3,7 @@
 // object or virtual call per component.
 #pragma once
 
+#include <cmath>
 #include <variant>
 
 #include "isolab/hysteresis/bouc_wen.h"
@@ -26,6 +27,15 @@ inline void UpdateLaw(const LawKernel& kernel, const LawState& committed, const 
 
 inline double StoredEnergy(const LawKernel& kernel, const LawState& state) {
   return std::visit([&](const auto& law) { return law.StoredEnergy(state); }, kernel);
+}
+
+// Whether the law's stiffness and damping are the same at every state (a linear spring, a
+// dashpot), so a structure may assemble them once per step size instead of every iteration.
+inline bool HasConstantTangent(const LawKernel& kernel) {
+  if (const auto* elastic = std::get_if<ElasticSpring>(&kernel)) {
+    return elastic->spring.kh1 == elastic->spring.kh2 || !std::isfinite(elastic->spring.uc);
+  }
+  return std::holds_alternative<Dashpot>(kernel);
 }
 
 }  // namespace isolab::hysteresis

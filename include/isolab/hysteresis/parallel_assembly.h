@@ -4,6 +4,7 @@
 // LawState per component) and commit by swapping them.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -47,6 +48,10 @@ class ParallelAssembly {
     }
     return total;
   }
+
+  // The summed stiffness and damping when every law's are the same at every state
+  // (HasConstantTangent); nullopt otherwise. Its force is the force at rest (zero).
+  std::optional<AssemblyResponse> ConstantTangent() const;
 
   // Recoverable energy and dissipated energy summed over components.
   double StoredEnergy(std::span<const LawState> states) const;

@@ -62,6 +62,10 @@ class PlanAssembly {
     return total;
   }
 
+  // The summed stiffness and damping when every law's are the same at every state
+  // (HasConstantTangent); nullopt otherwise. Its force is the force at rest (zero).
+  std::optional<PlanResponse> ConstantTangent() const;
+
   // Recoverable energy, and dissipated energy (all of it, and the dashpots' part), summed.
   double StoredEnergy(std::span<const PlanLawState> states) const;
   double DissipatedEnergy(std::span<const PlanLawState> states) const;

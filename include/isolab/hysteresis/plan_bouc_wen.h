@@ -38,10 +38,10 @@ struct PlanBoucWen {
   };
   Term Hysteretic(Vec2 z, Vec2 d, Vec2 sign_direction) const;
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const;
 
-  double StoredEnergy(const PlanLawState& state) const {
+  double StoredEnergy(PlanLawStateView state) const {
     const Vec2 z = Force(state);
     return Dot(z, z) / (2.0 * law.alpha);
   }

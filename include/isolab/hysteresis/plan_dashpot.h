@@ -10,7 +10,7 @@ namespace isolab::hysteresis {
 struct PlanDashpot {
   Dashpot law;
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const {
     CoupledState next;
     next.force = law.c * in.v;
@@ -22,7 +22,7 @@ struct PlanDashpot {
     Store(in, next, trial);
   }
 
-  double StoredEnergy(const PlanLawState&) const { return 0.0; }
+  double StoredEnergy(PlanLawStateView) const { return 0.0; }
 };
 
 }  // namespace isolab::hysteresis

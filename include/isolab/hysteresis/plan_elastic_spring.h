@@ -11,7 +11,7 @@ namespace isolab::hysteresis {
 struct PlanElasticSpring {
   ElasticSpring law;
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const {
     CoupledState next;
     next.force = RadialForce(law.spring, in.u);
@@ -22,7 +22,7 @@ struct PlanElasticSpring {
     Store(in, next, trial);
   }
 
-  double StoredEnergy(const PlanLawState& state) const {
+  double StoredEnergy(PlanLawStateView state) const {
     return RadialEnergy(law.spring, Displacement(state));
   }
 };

@@ -21,7 +21,7 @@ namespace isolab::hysteresis {
 struct PlanFrictionPendulum {
   FrictionPendulum law;
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const {
     const PlanUnitSlider interface { law.slider };
     const PlanUnitSlider::Step step =
@@ -46,7 +46,7 @@ struct PlanFrictionPendulum {
     Store(in, next, trial);
   }
 
-  double StoredEnergy(const PlanLawState& state) const {
+  double StoredEnergy(PlanLawStateView state) const {
     const Vec2 u = Displacement(state);
     return 0.5 * law.stiffness * Dot(u, u);
   }

@@ -34,17 +34,21 @@ PlanLawKernel CoupledKernel(const LawParameters& law);
 // Two independent 1-D laws along x and y.
 PlanLawKernel UncoupledKernel(const LawParameters& along_x, const LawParameters& along_y);
 
-inline void UpdatePlanLaw(const PlanLawKernel& kernel, const PlanLawState& committed,
-                          const PlanLawInput& in, PlanLawState* trial, PlanLawResponse* response) {
+inline void UpdatePlanLaw(const PlanLawKernel& kernel, PlanLawStateView committed,
+                          const PlanLawInput& in, PlanLawStateSlot trial, PlanLawResponse* response) {
   std::visit([&](const auto& law) { law.Update(committed, in, trial, response); }, kernel);
 }
 
-inline double PlanStoredEnergy(const PlanLawKernel& kernel, const PlanLawState& state) {
+inline double PlanStoredEnergy(const PlanLawKernel& kernel, PlanLawStateView state) {
   return std::visit([&](const auto& law) { return law.StoredEnergy(state); }, kernel);
 }
 
+// Whether the law's stiffness and damping are the same at every state (law_kernel.h): a linear
+// spring, a dashpot, or an uncoupled pair of such.
+bool HasConstantTangent(const PlanLawKernel& kernel);
+
 // The part of Dissipated(state) that dashpots took (the rest is hysteretic), for the energy
 // balance's split.
-double PlanViscousEnergy(const PlanLawKernel& kernel, const PlanLawState& state);
+double PlanViscousEnergy(const PlanLawKernel& kernel, PlanLawStateView state);
 
 }  // namespace isolab::hysteresis

@@ -26,6 +26,22 @@ struct PlanLawState {
   LawState x, y;
 };
 
+// A plan state where it lives, for the laws to read (committed) or write (trial) in place: a
+// PlanLawState, or two adjacent LawStates of a structure's state array (plan_structure.h, which
+// would otherwise copy 144 bytes in and out of every component at every evaluation).
+struct PlanLawStateView {
+  const LawState& x;
+  const LawState& y;
+  PlanLawStateView(const LawState& along_x, const LawState& along_y) : x(along_x), y(along_y) {}
+  PlanLawStateView(const PlanLawState& s) : x(s.x), y(s.y) {}  // NOLINT: implicit by design
+};
+struct PlanLawStateSlot {
+  LawState& x;
+  LawState& y;
+  PlanLawStateSlot(LawState& along_x, LawState& along_y) : x(along_x), y(along_y) {}
+  PlanLawStateSlot(PlanLawState* s) : x(s->x), y(s->y) {}  // NOLINT: implicit by design
+};
+
 // Force and its exact derivatives at the trial state.
 struct PlanLawResponse {
   Vec2 force;      // (force)
@@ -33,14 +49,14 @@ struct PlanLawResponse {
   Mat2 damping;    // d force / d v (force*time/length)
 };
 
-inline Vec2 Displacement(const PlanLawState& s) { return {s.x.u, s.y.u}; }
-inline Vec2 Velocity(const PlanLawState& s) { return {s.x.v, s.y.v}; }
-inline Vec2 Force(const PlanLawState& s) { return {s.x.force, s.y.force}; }
-inline Vec2 Slider(const PlanLawState& s) { return {s.x.slider, s.y.slider}; }
+inline Vec2 Displacement(PlanLawStateView s) { return {s.x.u, s.y.u}; }
+inline Vec2 Velocity(PlanLawStateView s) { return {s.x.v, s.y.v}; }
+inline Vec2 Force(PlanLawStateView s) { return {s.x.force, s.y.force}; }
+inline Vec2 Slider(PlanLawStateView s) { return {s.x.slider, s.y.slider}; }
 // Energy dissipated since rest, both directions.
-inline double Dissipated(const PlanLawState& s) { return s.x.dissipated + s.y.dissipated; }
+inline double Dissipated(PlanLawStateView s) { return s.x.dissipated + s.y.dissipated; }
 // A coupled law's committed phase: its slider slipped to reach this state.
-inline bool Slipping(const PlanLawState& s) { return s.x.slip != 0; }
+inline bool Slipping(PlanLawStateView s) { return s.x.slip != 0; }
 
 // What a coupled law writes after an update; Store puts it in the layout above, every field
 // written, so a trial never carries anything over from the array it was swapped from.
@@ -54,7 +70,7 @@ struct CoupledState {
 };
 
 // A coupled law's state before its update changes anything: the committed slider and energies.
-inline CoupledState Carried(const PlanLawState& committed) {
+inline CoupledState Carried(PlanLawStateView committed) {
   CoupledState c;
   c.slider = Slider(committed);
   c.dissipated = committed.x.dissipated;
@@ -63,8 +79,8 @@ inline CoupledState Carried(const PlanLawState& committed) {
   return c;
 }
 
-inline void Store(const PlanLawInput& in, const CoupledState& c, PlanLawState* s) {
-  s->x = {.u = in.u.x,
+inline void Store(const PlanLawInput& in, const CoupledState& c, PlanLawStateSlot s) {
+  s.x = {.u = in.u.x,
           .v = in.v.x,
           .force = c.force.x,
           .slider = c.slider.x,
@@ -73,7 +89,7 @@ inline void Store(const PlanLawInput& in, const CoupledState& c, PlanLawState* s
           .temperature = c.temperature,
           .slip = c.slipping ? 1 : 0,
           .dissipated = c.dissipated};
-  s->y = {.u = in.u.y,
+  s.y = {.u = in.u.y,
           .v = in.v.y,
           .force = c.force.y,
           .slider = c.slider.y,

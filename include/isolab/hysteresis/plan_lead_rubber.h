@@ -18,10 +18,10 @@ namespace isolab::hysteresis {
 struct PlanLeadRubber {
   LeadRubber law;
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const;
 
-  double StoredEnergy(const PlanLawState& state) const {
+  double StoredEnergy(PlanLawStateView state) const {
     const Vec2 u = Displacement(state);
     const Vec2 z = (u - Slider(state)) / law.slider.uy;
     return 0.5 * law.kd * Dot(u, u) +

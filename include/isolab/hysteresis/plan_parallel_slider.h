@@ -28,14 +28,14 @@ struct PlanParallelSlider {
 
   // The one stick test of the family (plan_slip_decision.h): the branch force if it stuck is
   // kp (u - u_s,n); committed on the circle, it was kp (u_n - u_s,n).
-  bool Sticks(const PlanLawState& committed, Vec2 u, Vec2 trial_branch_force) const {
+  bool Sticks(PlanLawStateView committed, Vec2 u, Vec2 trial_branch_force) const {
     if (!(law.fs > 0.0)) return false;
     const Vec2 u_n = Displacement(committed);
     return !PlanSlips(Slipping(committed), u_n - Slider(committed), u - u_n,
                       Norm(trial_branch_force) / law.fs);
   }
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const {
     const Vec2 us = Slider(committed);
     const Vec2 branch = law.kp * (in.u - us);
@@ -64,7 +64,7 @@ struct PlanParallelSlider {
     Store(in, next, trial);
   }
 
-  double StoredEnergy(const PlanLawState& state) const {
+  double StoredEnergy(PlanLawStateView state) const {
     const Vec2 ue = Displacement(state) - Slider(state);
     return 0.5 * law.kp * Dot(ue, ue) + RadialEnergy(law.spring, Displacement(state));
   }

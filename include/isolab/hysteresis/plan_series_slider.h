@@ -57,18 +57,18 @@ struct PlanSeriesSlider {
   // The one stick test of the family (plan_slip_decision.h): the slider force if it stuck is
   // f_s* = ke (u - x_n) - g(x_n) = f_s,n + ke du, f_s,n = f_n - g(x_n) the committed one
   // (committed_spring_force = g(x_n)).
-  bool Sticks(const PlanLawState& committed, Vec2 committed_spring_force, Vec2 u,
+  bool Sticks(PlanLawStateView committed, Vec2 committed_spring_force, Vec2 u,
               Vec2 trial_slider_force) const {
     if (!(law.fs > 0.0)) return false;
     return !PlanSlips(Slipping(committed), Force(committed) - committed_spring_force,
                       u - Displacement(committed), Norm(trial_slider_force) / law.fs);
   }
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const;
 
   // Recoverable energy: the spring ke (|f|^2 / 2 ke) plus g.
-  double StoredEnergy(const PlanLawState& state) const;
+  double StoredEnergy(PlanLawStateView state) const;
 };
 
 }  // namespace isolab::hysteresis

@@ -13,17 +13,17 @@ namespace isolab::hysteresis {
 struct UncoupledPair {
   LawKernel x, y;
 
-  void Update(const PlanLawState& committed, const PlanLawInput& in, PlanLawState* trial,
+  void Update(PlanLawStateView committed, const PlanLawInput& in, PlanLawStateSlot trial,
               PlanLawResponse* response) const {
     LawResponse rx, ry;
-    UpdateLaw(x, committed.x, {in.u.x, in.v.x, in.t}, &trial->x, &rx);
-    UpdateLaw(y, committed.y, {in.u.y, in.v.y, in.t}, &trial->y, &ry);
+    UpdateLaw(x, committed.x, {in.u.x, in.v.x, in.t}, &trial.x, &rx);
+    UpdateLaw(y, committed.y, {in.u.y, in.v.y, in.t}, &trial.y, &ry);
     response->force = {rx.force, ry.force};
     response->stiffness = {rx.stiffness, 0.0, 0.0, ry.stiffness};
     response->damping = {rx.damping, 0.0, 0.0, ry.damping};
   }
 
-  double StoredEnergy(const PlanLawState& state) const {
+  double StoredEnergy(PlanLawStateView state) const {
     return hysteresis::StoredEnergy(x, state.x) + hysteresis::StoredEnergy(y, state.y);
   }
 };

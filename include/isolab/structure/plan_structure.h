@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -77,6 +78,10 @@ class PlanStructure {
 
   const SparseMatrix& tangent_pattern() const { return pattern_; }
 
+  // As Structure::ConstantTangent: mass, viscous damping, and the members and isolators whose
+  // laws all have a constant tangent.
+  void ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const;
+
   // As Structure::Evaluate. `responses` of an isolator's component hold its x and y force with
   // the diagonal of its tangent and damping; `connection_forces` has force_columns() entries.
   void Evaluate(std::span<const hysteresis::LawState> committed, double t, const Eigen::VectorXd& u,
@@ -94,6 +99,10 @@ class PlanStructure {
 
  private:
   double DissipatedEnergy(std::span<const hysteresis::LawState> states) const;
+  // k_eff of member k on its terms' pairs; T^T k_eff T into isolator i's floor block.
+  void AddMemberTangent(std::size_t member, double k_eff, double* values) const;
+  void AddIsolatorTangent(std::size_t isolator, const hysteresis::Mat2& k_eff,
+                          double* values) const;
 
   Eigen::VectorXd mass_;
   std::vector<PlanMember> members_;
@@ -114,6 +123,10 @@ class PlanStructure {
   std::vector<MemberTerms> member_terms_;
   // Isolator i's 3x3 block, row-major, from 9 i.
   std::vector<int> isolator_slots_;
+  // Per member and per isolator: its laws' stiffness and damping if they do not depend on the
+  // state.
+  std::vector<std::optional<hysteresis::AssemblyResponse>> member_constants_;
+  std::vector<std::optional<hysteresis::PlanResponse>> isolator_constants_;
 };
 
 }  // namespace isolab::structure

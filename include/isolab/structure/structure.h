@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,9 +40,9 @@ struct TangentFactors {
   double damping = 0.0;
 };
 
-// The part of the effective tangent and of the resisting force that does not depend on the state,
-// written through slots precomputed in a fixed tangent pattern: factors.mass M on the diagonal,
-// factors.damping C, and C v. Structure and PlanStructure (plan_structure.h) share it.
+// The mass and viscous damping terms of the effective tangent, written through slots precomputed
+// in a fixed tangent pattern: factors.mass M on the diagonal and factors.damping C. Structure and
+// PlanStructure (plan_structure.h) share it.
 class ConstantTerms {
  public:
   // The pattern entries the terms need: the diagonal and every stored entry of `damping`.
@@ -52,10 +53,9 @@ class ConstantTerms {
   // `damping` compressed; `pattern` holds AppendEntries' entries.
   ConstantTerms(int dofs, const SparseMatrix& damping, const SparseMatrix& pattern);
 
-  // force = C v; when `tangent` is not null, its values zeroed, then the mass and damping terms
-  // added. Allocates nothing.
-  void Start(const Eigen::VectorXd& mass, const SparseMatrix& damping, const Eigen::VectorXd& v,
-             const TangentFactors& factors, Eigen::VectorXd* force, SparseMatrix* tangent) const;
+  // The tangent's values zeroed, then the mass and damping terms added. Allocates nothing.
+  void Fill(const Eigen::VectorXd& mass, const SparseMatrix& damping, const TangentFactors& factors,
+            SparseMatrix* tangent) const;
 
  private:
   std::vector<int> mass_slots_;
@@ -82,11 +82,18 @@ class Structure {
   // structure's life, so a solver analyses it once.
   const SparseMatrix& tangent_pattern() const { return pattern_; }
 
+  // The terms of the effective tangent with `factors` that do not depend on the state, into
+  // `tangent`'s values (its pattern tangent_pattern()): the mass, the viscous damping and every
+  // connection whose laws all have a constant tangent (linear springs, dashpots: a building's
+  // elastic stories). An integrator writes them once per step size and starts every Evaluate's
+  // tangent from a copy.
+  void ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const;
+
   // Updates every law at trial (u, v) at time t from `committed`, writes `trial` states and
   // `responses` (law_count() each), the resisting force (connections plus C v) into `force`, each
-  // connection's force into `connection_forces`, and, when `tangent` is not null, the
-  // effective tangent with `factors` into its values (its pattern must be tangent_pattern()).
-  // Allocates nothing.
+  // connection's force into `connection_forces`, and, when `tangent` is not null, adds the terms
+  // of the effective tangent with `factors` that depend on the state to its values, which must
+  // hold ConstantTangent(factors). Allocates nothing.
   void Evaluate(std::span<const hysteresis::LawState> committed, double t, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
                 std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
@@ -105,6 +112,8 @@ class Structure {
     int ii = -1, jj = -1, ij = -1, ji = -1;
   };
 
+  void AddConnectionTangent(std::size_t connection, double k_eff, double* values) const;
+
   Eigen::VectorXd mass_;
   std::vector<Connection> connections_;
   SparseMatrix viscous_damping_;
@@ -113,6 +122,8 @@ class Structure {
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
   std::vector<ConnectionSlots> connection_slots_;
+  // Per connection: its laws' stiffness and damping if they do not depend on the state.
+  std::vector<std::optional<hysteresis::AssemblyResponse>> constant_responses_;
 };
 
 }  // namespace isolab::structure
