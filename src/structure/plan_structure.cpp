@@ -44,26 +44,32 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
                                     "' acts on a dof that does not exist");
       }
     }
-    law_offsets_.push_back(law_offsets_.back() + member.assembly.size());
+    std::size_t state = law_offsets_.back();
     for (const auto& kernel : member.assembly.kernels()) {
-      viscous_law_state_.push_back(std::holds_alternative<hysteresis::Dashpot>(kernel));
+      if (std::holds_alternative<hysteresis::Dashpot>(kernel)) viscous_law_states_.push_back(state);
+      ++state;
     }
+    law_offsets_.push_back(state);
   }
   for (const PlanIsolator& isolator : isolators_) {
     if (isolator.floor < 0 || isolator.floor >= floors()) {
       throw std::invalid_argument("isolator '" + isolator.name +
                                   "' is under a floor that does not exist");
     }
-    law_offsets_.push_back(law_offsets_.back() + 2 * isolator.assembly.size());
-    // A dashpot's x and y halves (PlanViscousEnergy), flagged once so the energy is a sum.
+    // A dashpot's x and y halves (PlanViscousEnergy), listed once so the energy is a sum.
+    std::size_t state = law_offsets_.back();
     for (const auto& kernel : isolator.assembly.kernels()) {
       const auto* pair = std::get_if<hysteresis::UncoupledPair>(&kernel);
       const bool coupled = std::holds_alternative<hysteresis::PlanDashpot>(kernel);
-      viscous_law_state_.push_back(coupled ||
-                                   (pair && std::holds_alternative<hysteresis::Dashpot>(pair->x)));
-      viscous_law_state_.push_back(coupled ||
-                                   (pair && std::holds_alternative<hysteresis::Dashpot>(pair->y)));
+      if (coupled || (pair && std::holds_alternative<hysteresis::Dashpot>(pair->x))) {
+        viscous_law_states_.push_back(state);
+      }
+      if (coupled || (pair && std::holds_alternative<hysteresis::Dashpot>(pair->y))) {
+        viscous_law_states_.push_back(state + 1);
+      }
+      state += 2;
     }
+    law_offsets_.push_back(state);
   }
 
   // The pattern: mass diagonal and viscous damping, every member's terms pairwise, every
@@ -231,9 +237,7 @@ double PlanStructure::StoredEnergy(std::span<const LawState> states) const {
 
 double PlanStructure::DashpotEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
-  for (std::size_t l = 0; l < viscous_law_state_.size(); ++l) {
-    if (viscous_law_state_[l]) energy += states[l].dissipated;
-  }
+  for (const std::size_t l : viscous_law_states_) energy += states[l].dissipated;
   return energy;
 }
 

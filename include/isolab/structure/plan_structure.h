@@ -109,7 +109,7 @@ class PlanStructure {
   std::vector<PlanIsolator> isolators_;
   SparseMatrix viscous_damping_;
   std::vector<std::size_t> law_offsets_;  // members, then isolators, then the end
-  std::vector<char> viscous_law_state_;   // per law state: a dashpot's (or a dashpot half's)
+  std::vector<std::size_t> viscous_law_states_;  // the law states of dashpots (and dashpot halves)
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
   // Member k's terms on dofs that exist (kGround ones dropped), packed for the hot loop, with the

@@ -4,7 +4,8 @@
 // buildings (shear_building.h) are both built as this.
 //
 // The integrator sees only Evaluate(): resisting force and its tangent at a trial state (MFEM's
-// seam between problem and integrator); the structure never sees the integrator.
+// seam between problem and integrator), with ConstantTangent() for the tangent's terms that never
+// change within a step size; the structure never sees the integrator.
 #pragma once
 
 #include <Eigen/Core>
