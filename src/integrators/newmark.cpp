@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "blow_up.h"
 #include "isolab/core/errors.h"
@@ -212,7 +213,8 @@ class NewmarkRun {
   // The tangent's values set to the structure's terms that do not depend on the state (computed
   // again only when the step size changes), for Evaluate to add the rest to.
   void StartTangent(const structure::TangentFactors& factors) {
-    if (factors.mass != constant_factors_.mass || factors.damping != constant_factors_.damping) {
+    if (!constant_factors_ || factors.mass != constant_factors_->mass ||
+        factors.damping != constant_factors_->damping) {
       structure_.ConstantTangent(factors, &constant_tangent_);
       constant_factors_ = factors;
     }
@@ -255,7 +257,7 @@ class NewmarkRun {
   RunSummary& summary_;
   structure::SparseMatrix tangent_;
   structure::SparseMatrix constant_tangent_;  // StartTangent's terms, for constant_factors_
-  structure::TangentFactors constant_factors_;
+  std::optional<structure::TangentFactors> constant_factors_;
   KluSolver solver_;
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;

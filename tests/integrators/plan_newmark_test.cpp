@@ -1,6 +1,6 @@
 // Newmark on plan models (plan_building.h, plan_structure.h):
-//  * the tangent of an eccentric building on coupled and uncoupled isolators against central
-//    differences of its force, in every phase the sliders pass through;
+//  * the tangent of an eccentric building on coupled, uncoupled and linear isolators against
+//    central differences of its force, in every phase the sliders pass through;
 //  * a symmetric plan building under one component equals the one-direction building
 //    (shear_building.h) to round-off, on coupled and on uncoupled isolators;
 //  * an eccentric linear building against its modal solution: a dense eigensolution of (K, M),
@@ -130,8 +130,10 @@ Eigen::MatrixXd LinearStiffness(int stories, Vec2 mass_offset, Vec2 stiffness_of
 }
 
 TEST(PlanStructure, TangentMatchesCentralDifferencesOfTheForce) {
-  for (const bool uncoupled : {false, true}) {
-    PlanBuilding description = Building(2, uncoupled, {400, -300}, {-500, 200});
+  // Coupled and uncoupled bilinear isolators, and linear ones, whose terms (as the stories') only
+  // ConstantTangent writes.
+  for (const auto& [uncoupled, linear] : {std::pair{false, false}, {true, false}, {false, true}}) {
+    PlanBuilding description = Building(2, uncoupled, {400, -300}, {-500, 200}, linear);
     description.damping = {true, {1.0, 0.2}, {0.05, 0.05}};
     const structure::PlanStructure s = structure::BuildPlanBuilding(description);
     const int n = s.dofs();
@@ -162,7 +164,8 @@ TEST(PlanStructure, TangentMatchesCentralDifferencesOfTheForce) {
         const Eigen::VectorXd column = (f_plus - f_minus) / (2 * h);
         EXPECT_LE((column - k.col(j)).cwiseAbs().maxCoeff(),
                   1e-6 * std::max(1.0, k.col(j).cwiseAbs().maxCoeff()))
-            << "uncoupled " << uncoupled << ", amplitude " << amplitude << ", column " << j;
+            << "uncoupled " << uncoupled << ", linear " << linear << ", amplitude " << amplitude
+            << ", column " << j;
       }
       s.Evaluate(committed, 0.0, u, v, trial, responses, &f, forces, factors, nullptr);
       committed = trial;

@@ -35,7 +35,8 @@ PlanLawKernel CoupledKernel(const LawParameters& law);
 PlanLawKernel UncoupledKernel(const LawParameters& along_x, const LawParameters& along_y);
 
 inline void UpdatePlanLaw(const PlanLawKernel& kernel, PlanLawStateView committed,
-                          const PlanLawInput& in, PlanLawStateSlot trial, PlanLawResponse* response) {
+                          const PlanLawInput& in, PlanLawStateSlot trial,
+                          PlanLawResponse* response) {
   std::visit([&](const auto& law) { law.Update(committed, in, trial, response); }, kernel);
 }
 

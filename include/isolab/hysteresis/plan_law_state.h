@@ -81,23 +81,23 @@ inline CoupledState Carried(PlanLawStateView committed) {
 
 inline void Store(const PlanLawInput& in, const CoupledState& c, PlanLawStateSlot s) {
   s.x = {.u = in.u.x,
-          .v = in.v.x,
-          .force = c.force.x,
-          .slider = c.slider.x,
-          .accumulated_slip = c.accumulated_slip,
-          .t = in.t,
-          .temperature = c.temperature,
-          .slip = c.slipping ? 1 : 0,
-          .dissipated = c.dissipated};
+         .v = in.v.x,
+         .force = c.force.x,
+         .slider = c.slider.x,
+         .accumulated_slip = c.accumulated_slip,
+         .t = in.t,
+         .temperature = c.temperature,
+         .slip = c.slipping ? 1 : 0,
+         .dissipated = c.dissipated};
   s.y = {.u = in.u.y,
-          .v = in.v.y,
-          .force = c.force.y,
-          .slider = c.slider.y,
-          .accumulated_slip = 0.0,
-          .t = in.t,
-          .temperature = 0.0,
-          .slip = 0,
-          .dissipated = 0.0};
+         .v = in.v.y,
+         .force = c.force.y,
+         .slider = c.slider.y,
+         .accumulated_slip = 0.0,
+         .t = in.t,
+         .temperature = 0.0,
+         .slip = 0,
+         .dissipated = 0.0};
 }
 
 }  // namespace isolab::hysteresis

@@ -108,7 +108,7 @@ class PlanStructure {
   std::vector<PlanMember> members_;
   std::vector<PlanIsolator> isolators_;
   SparseMatrix viscous_damping_;
-  std::vector<std::size_t> law_offsets_;  // members, then isolators, then the end
+  std::vector<std::size_t> law_offsets_;         // members, then isolators, then the end
   std::vector<std::size_t> viscous_law_states_;  // the law states of dashpots (and dashpot halves)
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;

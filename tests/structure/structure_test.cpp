@@ -1,0 +1,84 @@
+// Structure's effective tangent, ConstantTangent's terms plus what Evaluate adds, against central
+// differences of Evaluate's force: connections whose laws have a constant tangent (a linear
+// spring, a trilinear spring with kh1 = kh2 and a finite corner, a dashpot), which only
+// ConstantTangent writes, beside ones that do not (a bilinear isolator, a trilinear spring),
+// grounded and between dofs, with viscous damping.
+#include "isolab/structure/structure.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "isolab/hysteresis/law_parameters.h"
+
+namespace isolab::structure {
+namespace {
+
+using hysteresis::LawParameters;
+using hysteresis::LawType;
+using hysteresis::ParallelAssembly;
+using hysteresis::ParameterForm;
+
+LawParameters Law(LawType type, std::vector<double> mathematical) {
+  return LawParameters::Make(type, ParameterForm::kMathematical, mathematical);
+}
+
+Structure ThreeDofs() {
+  std::vector<Connection> connections;
+  connections.push_back({"isolator", kGround, 0,
+                         ParallelAssembly({{"slider", Law(LawType::kBhm1, {8.0, 1.0, 20.0})},
+                                           {"dashpot", Law(LawType::kDashpot, {0.3})}})});
+  connections.push_back(
+      {"linear story", 0, 1, ParallelAssembly({{"k", Law(LawType::kLinearSpring, {120.0})}})});
+  // kh1 = kh2 with a corner at 5: constant although the law is trilinear in form.
+  connections.push_back(
+      {"straight trilinear story", 1, 2,
+       ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {90.0, 90.0, 5.0})},
+                         {"c", Law(LawType::kDashpot, {0.1})}})});
+  connections.push_back(
+      {"trilinear brace", 0, 2,
+       ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {40.0, 4.0, 5.0})}})});
+  const std::vector<Eigen::Triplet<double>> c{
+      {0, 0, 0.5}, {1, 1, 0.7}, {0, 1, -0.2}, {1, 0, -0.2}, {2, 2, 0.4}};
+  SparseMatrix damping(3, 3);
+  damping.setFromTriplets(c.begin(), c.end());
+  return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(connections), damping);
+}
+
+TEST(Structure, ConstantTangentPlusEvaluateIsTheDerivativeOfTheForce) {
+  const Structure s = ThreeDofs();
+  std::vector<hysteresis::LawState> committed(s.law_count()), trial(s.law_count());
+  std::vector<hysteresis::LawResponse> responses(s.law_count());
+  std::vector<double> forces(s.connections().size());
+  const TangentFactors factors{40.0, 0.7};
+  Eigen::VectorXd f(3), f_plus(3), f_minus(3);
+  // Elastic everywhere, then past the isolator's yield (20 mm) and both trilinear corners.
+  for (const Eigen::Vector3d& u :
+       {Eigen::Vector3d(1.0, 2.5, 3.0), Eigen::Vector3d(30.0, 32.0, 41.0)}) {
+    const Eigen::VectorXd v = Eigen::Vector3d(20.0, -15.0, 10.0);
+    SparseMatrix tangent = s.tangent_pattern();
+    s.ConstantTangent(factors, &tangent);
+    s.Evaluate(committed, 0.0, u, v, trial, responses, &f, forces, factors, &tangent);
+    const Eigen::MatrixXd k(tangent);
+    // The force has no mass term: d/du of f(u, v(u)) with dv/du = factors.damping.
+    const Eigen::MatrixXd expected_mass =
+        factors.mass * Eigen::Vector3d(0.1, 0.2, 0.3).asDiagonal();
+    for (int j = 0; j < 3; ++j) {
+      const double h = 1e-5;
+      Eigen::VectorXd up = u, um = u, vp = v, vm = v;
+      up[j] += h;
+      um[j] -= h;
+      vp[j] += factors.damping * h;
+      vm[j] -= factors.damping * h;
+      s.Evaluate(committed, 0.0, up, vp, trial, responses, &f_plus, forces, factors, nullptr);
+      s.Evaluate(committed, 0.0, um, vm, trial, responses, &f_minus, forces, factors, nullptr);
+      const Eigen::VectorXd column = (f_plus - f_minus) / (2 * h) + expected_mass.col(j);
+      EXPECT_LE((column - k.col(j)).cwiseAbs().maxCoeff(), 1e-6 * k.col(j).cwiseAbs().maxCoeff())
+          << "at u = " << u.transpose() << ", column " << j;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace isolab::structure
