@@ -50,7 +50,13 @@ fi
 jobs="${ISOLAB_JOBS:-$(nproc)}"
 # The Python module is left out: it would run inside an uninstrumented python3, which cannot load
 # an ASan library without LD_PRELOAD (and then reports the interpreter's own allocations).
-cmake -S . -B "$build" "${flags[@]}" -DISOLAB_SANITIZE=ON -DISOLAB_BUILD_PYTHON=OFF \
+# A unity build (sources compiled in batches) built by Ninja, which compiles every library's
+# objects at once: half the CPU time and half the wall time of a Makefile build of single sources.
+# A build directory of another generator is made again.
+if [[ -f "$build/CMakeCache.txt" ]] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$build/CMakeCache.txt"; then
+  rm -rf "$build"
+fi
+cmake -G Ninja -S . -B "$build" "${flags[@]}" -DCMAKE_UNITY_BUILD=ON -DISOLAB_SANITIZE=ON -DISOLAB_BUILD_PYTHON=OFF \
   -DISOLAB_BUILD_BENCHMARKS=OFF "${launcher[@]}" >/dev/null
 cmake --build "$build" -j "$jobs" "${targets[@]}"
 

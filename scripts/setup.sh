@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libsundials-dev libsuitesparse-dev libyaml-cpp-dev libhdf5-dev
   libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libpagmo-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-h5py python3-pandas

@@ -10,10 +10,11 @@
 namespace isolab::study {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// What a statistic or ratio is when it has no value (a ratio to zero, the mean of no record).
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 double Ratio(double value, double reference) {
-  if (!std::isfinite(value) || !std::isfinite(reference) || reference == 0.0) return kNaN;
+  if (!std::isfinite(value) || !std::isfinite(reference) || reference == 0.0) return kNoValue;
   return value / reference;
 }
 
@@ -81,7 +82,7 @@ Summary BuildSummary(StudyShape shape, std::vector<JobResult> runs) {
     for (std::size_t s = 0; s < S; ++s) {
       Statistic& statistic = summary.statistics[v * S + s];
       for (std::size_t q = 0; q < kQuantityCount; ++q) {
-        double sum = 0.0, max = kNaN;
+        double sum = 0.0, max = kNoValue;
         std::size_t count = 0;
         for (std::size_t r = 0; r < R; ++r) {
           const JobResult& run = summary.runs[job(v, r, s)];
@@ -91,7 +92,7 @@ Summary BuildSummary(StudyShape shape, std::vector<JobResult> runs) {
           max = std::isnan(max) ? value : std::max(max, value);
           ++count;
         }
-        statistic.mean[q] = count > 0 ? sum / static_cast<double>(count) : kNaN;
+        statistic.mean[q] = count > 0 ? sum / static_cast<double>(count) : kNoValue;
         statistic.max[q] = max;
       }
       for (std::size_t r = 0; r < R; ++r)
