@@ -12,7 +12,8 @@
 //  * plan models (issue #15): the five-story Table 9 building in plan on four coupled (and
 //    uncoupled) Table 9 bearings under two components, against the one-direction five-story
 //    model above (target within 5x), and a plan building of 5 to 1000 stories on four linear
-//    isolators (target: linear in stories).
+//    isolators (target: linear in stories); and both models on one lead-rubber bearing or
+//    friction pendulum a bearing.
 // Counters: "per_step" is seconds per step, "solves_per_step" linear solves (Newton
 // iterations) per step. The excitation is isolab's seeded filtered noise.
 #include <benchmark/benchmark.h>
@@ -241,6 +242,38 @@ void BM_PlanFiveStoryTable9(benchmark::State& state) {
   RunSteps(state, structure::BuildPlanBuilding(building), 6000, PlanNoise());
 }
 
+// The devices engineers specify, one law a bearing, for 150 t (the one-direction building's mass
+// and each plan bearing's share): range(0) = 0 a lead-rubber bearing without heating (Qd 6 % of
+// the weight, T = 4.2 s on Kd), 1 a friction pendulum with velocity-dependent friction on the
+// same period (docs/bearings.md's example).
+hysteresis::LawParameters Device(int device) {
+  using hysteresis::LawParameters, hysteresis::ParameterForm;
+  if (device == 0) {
+    return LawParameters::Make(LawType::kLeadRubber, ParameterForm::kMechanical,
+                               std::vector<double>{88.26, 0.3391, 3.391, NAN, NAN, NAN, NAN, NAN,
+                                                   NAN, NAN});
+  }
+  return LawParameters::Make(LawType::kFrictionPendulum, ParameterForm::kMechanical,
+                             std::vector<double>{1471.0, 4338.0, 0.5, NAN, 0.03, 0.06, 0.02});
+}
+
+void BM_FiveStoryDevice(benchmark::State& state) {
+  const ParallelAssembly isolation({{"bearing", Device(static_cast<int>(state.range(0)))}});
+  RunSteps(state, IsolatedBuilding(5, isolation), 6000);
+}
+
+// The bundled plan model with each of its four bearings one coupled device of Device().
+void BM_PlanFiveStoryDevice(benchmark::State& state) {
+  structure::PlanBuilding building =
+      io::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                            "/models/plan/five_story_table9_plan.yaml")
+          .building;
+  const hysteresis::PlanAssembly bearing(
+      {{"bearing", Device(static_cast<int>(state.range(0))), std::nullopt}});
+  for (structure::PlanIsolatorSite& site : building.isolators) site.assembly = bearing;
+  RunSteps(state, structure::BuildPlanBuilding(building), 6000, PlanNoise());
+}
+
 // `stories` floors of 100 t on a 24 m x 16 m plan, 5 % eccentric, stories of 304 kN/mm, four
 // corner isolators that never yield (spring and dashpot: 2.5 s, 10 % on the whole mass).
 void BM_PlanStoriesLinearIsolators(benchmark::State& state) {
@@ -281,7 +314,9 @@ BENCHMARK(BM_PlanStoriesLinearIsolators)
     ->Arg(100)
     ->Arg(1000)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanFiveStoryDevice)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryDevice)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Floor)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9FloorKlu)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Ida)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
