@@ -53,11 +53,12 @@ jobs="${ISOLAB_JOBS:-$(nproc)}"
 # A unity build (sources compiled in batches) built by Ninja, which compiles every library's
 # objects at once: half the CPU time and half the wall time of a Makefile build of single sources.
 # A build directory of another generator is made again.
-if [[ -f "$build/CMakeCache.txt" ]] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$build/CMakeCache.txt"; then
+cache="$build/CMakeCache.txt"
+if [[ -f "$cache" ]] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$cache"; then
   rm -rf "$build"
 fi
-cmake -G Ninja -S . -B "$build" "${flags[@]}" -DCMAKE_UNITY_BUILD=ON -DISOLAB_SANITIZE=ON -DISOLAB_BUILD_PYTHON=OFF \
-  -DISOLAB_BUILD_BENCHMARKS=OFF "${launcher[@]}" >/dev/null
+cmake -G Ninja -S . -B "$build" "${flags[@]}" -DCMAKE_UNITY_BUILD=ON -DISOLAB_SANITIZE=ON \
+  -DISOLAB_BUILD_PYTHON=OFF -DISOLAB_BUILD_BENCHMARKS=OFF "${launcher[@]}" >/dev/null
 cmake --build "$build" -j "$jobs" "${targets[@]}"
 
 suppressions="$PWD/scripts/lsan_suppressions.txt"
