@@ -121,7 +121,8 @@ class NewmarkFloor {
     for (int step = 1; step <= steps; ++step) {
       const double ag = ground.At(step * h);
       for (int i = 0; i < kDofs; ++i) load_trial_[i] = -ag * mass_[i];
-      Vector u = u_, v{}, a{};
+      Vector u{}, v{}, a{};
+      for (int i = 0; i < kDofs; ++i) u[i] = u_[i] + h * v_[i] + (0.5 * h * h) * a_[i];
       bool displacement_converged = false;
       for (int iteration = 0;; ++iteration) {
         for (int i = 0; i < kDofs; ++i) {
