@@ -23,8 +23,8 @@ struct SlipEquation {
   // The slip's linearisation: B = Dg(x) + c t t^T (c = fs / |xi|, t normal to xi) and
   // (ke I + B)^-1 by Sherman-Morrison on A = ke I + Dg(x): A^-1 - c w w^T / (1 + c t.w),
   // w = A^-1 t. Inverting ke I + B whole cancels catastrophically when the slip is of round-off
-  // size (c ~ 1e17: a trial a unit in the last place outside the circle, as every Newmark
-  // predictor from a slipping state is); this form has no cancellation and tends to its limit.
+  // size (c ~ 1e17: a trial a unit in the last place outside the circle, as a zero increment
+  // from a slipping state gives); this form has no cancellation and tends to its limit.
   struct Linearisation {
     Mat2 dg, inverse;  // Dg(x), (ke I + B)^-1
     Vec2 t, w;
@@ -110,8 +110,8 @@ Vec2 SolveSlip(const SlipEquation& eq, Vec2 trial_force) {
     if (!std::isfinite(step_norm)) break;
     if (step_norm <= 1e-13 * (length_scale + Norm(xi))) {
       // A trial force a unit in the last place outside the circle (a zero increment from a
-      // slipping state, every Newmark predictor) has a slip of round-off size that this last
-      // step may cancel exactly; the slip is not zero (the trial is outside), so keep xi.
+      // slipping state) has a slip of round-off size that this last step may cancel exactly;
+      // the slip is not zero (the trial is outside), so keep xi.
       const Vec2 converged = xi + step;
       return Norm(converged) > 0.0 ? converged : xi;
     }

@@ -40,7 +40,7 @@ struct BoucWen {
   void Update(const LawState& committed, const LawInput& in, LawState* trial,
               LawResponse* response) const {
     const double du = in.u - committed.u;
-    // Direction of the increment; with no increment (a Newton predictor), the trial velocity's.
+    // Direction of the increment; with no increment (a step from rest), the trial velocity's.
     const double s = du > 0.0 ? 1.0 : (du < 0.0 ? -1.0 : (in.v < 0.0 ? -1.0 : 1.0));
     const double z0 = committed.force;
     const double g0 = Slope(z0, s);

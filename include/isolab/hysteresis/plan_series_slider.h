@@ -37,7 +37,7 @@
 // the axes of x: ke in series with g's slope along x and with its secant across.
 //
 // A continuing slip (plan_slip_decision.h) whose trial force lies on the circle or a round-off
-// inside it (Newton's predictor, du = 0) has zero travel: the slider stays at x_n with force
+// inside it (du = 0, or one of round-off size) has zero travel: the slider stays at x_n with force
 // fs n + g(x_n), n the trial force's direction, and the tangent is the consistent one's limit as
 // |xi| -> 0 (c -> infinity): ke (Dg (A^-1 - w w^T / t.w) + t w^T / t.w), the slip side's
 // derivative (slip_direction.h explains why it is exact there). Along n it is the post-yield

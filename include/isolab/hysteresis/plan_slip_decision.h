@@ -2,10 +2,11 @@
 // with a slider (plan_parallel_slider.h, plan_unit_slider.h, plan_series_slider.h): the 2-D form
 // of slip_direction.h, and for the same reason.
 //
-// A slider that slipped to reach its committed state sits on its circle, so Newton's predictor
-// (du = 0) recomputes a trial force whose norm equals the strength up to round-off, and a bare
-// |trial| <= strength decides stick or slip by the sign of that round-off: half the continuing
-// slips would start on the elastic tangent and need a second solve. The committed phase is known
+// A slider that slipped to reach its committed state sits on its circle, so an increment of zero
+// (a Newton iterate that repeats the committed displacement) recomputes a trial force whose norm
+// equals the strength up to round-off, and a bare |trial| <= strength decides stick or slip by
+// the sign of that round-off: half such continuing slips would start on the elastic tangent and
+// need a second solve. The committed phase is known
 // (PlanLawState's x.slip), so:
 //   * committed slipping along n and n . du >= 0: the slip goes on, exactly, since then
 //     |trial|^2 = strength^2 + 2 strength k n . du + k^2 |du|^2 >= strength^2;

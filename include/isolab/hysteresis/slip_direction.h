@@ -2,9 +2,10 @@
 // increment du from its committed state, shared by every kernel with a slider.
 //
 // Why not simply |stick force| <= fs: a slider that slipped to reach its committed state sits on
-// the yield surface, so at the start of the next increment (du = 0: Newton's predictor) its stick
-// force recomputed from the committed state equals +-fs up to round-off, and the test decides
-// stick or slip by the sign of that round-off. The committed phase is known instead
+// the yield surface, so over an increment of zero or of round-off size (a Newton iterate that
+// repeats the committed displacement, a dof at rest) its stick force recomputed from the
+// committed state equals +-fs up to round-off, and the test decides stick or slip by the sign of
+// that round-off. The committed phase is known instead
 // (LawState::slip), so the decision below is exact:
 //   * committed slipping in direction s and s du >= 0: the slip goes on (the yield function only
 //     grows), whatever the round-off;
@@ -17,9 +18,10 @@
 // derivatives: the slip slope for s du > 0 and the stick slope for s du < 0. Both are exact
 // derivatives of the update actually computed; the kernels return the slip side, the phase this
 // decision gives at du = 0. A slider that slipped over one step nearly always slips over the
-// next, so Newton's predictor then starts on the tangent of the step's own phase and converges
-// in one solve; when the motion reverses, the first iterate lands in the stick phase and the
-// next iterations use its (exact) stick slope.
+// next, so an iterate with no increment then takes the tangent of the step's own phase; when the
+// motion reverses, the iterate lands in the stick phase and the next iterations use its (exact)
+// stick slope. (Newmark's predictor carries the committed acceleration through the step, so its
+// increment usually has a sign and the first two cases decide.)
 #pragma once
 
 #include <cmath>
