@@ -53,6 +53,10 @@ jobs="${ISOLAB_JOBS:-$(nproc)}"
 # A unity build (sources compiled in batches) built by Ninja, which compiles every library's
 # objects at once: half the CPU time and half the wall time of a Makefile build of single sources.
 # A build directory of another generator is made again.
+if ! command -v ninja >/dev/null; then
+  echo "sanitize.sh: needs ninja (scripts/setup.sh installs ninja-build)" >&2
+  exit 1
+fi
 cache="$build/CMakeCache.txt"
 if [[ -f "$cache" ]] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$cache"; then
   rm -rf "$build"

@@ -185,7 +185,7 @@ TEST_P(LawUpdate, TangentIsTheDerivativeOfTheUpdateInEveryPhase) {
   }
 }
 
-// Newton's predictor evaluates a law at no increment from its committed state. After a slipping
+// An iterate with no increment evaluates a law at its committed state. After a slipping
 // increment that point is a corner of the update (slip on one side, stick on the other); the
 // tangent there must be the one-sided derivative on the side the motion came from, so a slip
 // that goes on starts on the slip tangent, whatever the round-off in the stick test.

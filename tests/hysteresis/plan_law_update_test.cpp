@@ -453,13 +453,14 @@ TEST(PlanSeriesSliderReturnMap, ConvergesFromAnyStateToAnyTrial) {
   }
 }
 
-// A Newmark step's predictor repeats the committed displacement: from a slipping state the trial
-// force is then the committed force recomputed, which round-off puts on, inside or a unit in the
-// last place outside the circle. A slip continues whichever (plan_slip_decision.h): outside, of
-// round-off size, inside of none; the tangent must be the limit of the consistent one, ke t t^T for
-// an elastic-perfectly-plastic slider (t normal to the force: no stiffness along the slip, ke
-// across it), not NaN. The first state is the Table 9 bearing's c9 component as a plan model's
-// Newmark run met it (trial norm fs + 1 ulp); the others come from loading in five directions.
+// An iterate that repeats the committed displacement (an increment of zero): from a slipping
+// state the trial force is then the committed force recomputed, which round-off puts on, inside
+// or a unit in the last place outside the circle. A slip continues whichever
+// (plan_slip_decision.h): outside, of round-off size, inside of none; the tangent must be the
+// limit of the consistent one, ke t t^T for an elastic-perfectly-plastic slider (t normal to the
+// force: no stiffness along the slip, ke across it), not NaN. The first state is the Table 9
+// bearing's c9 component as a plan model's Newmark run met it (trial norm fs + 1 ulp); the others
+// come from loading in five directions.
 TEST(PlanSeriesSliderReturnMap, ZeroIncrementFromASlippingStateKeepsItsForce) {
   const double values[] = {67.445070, 0.0, 0.0, 0.041, NAN};  // Table 9, c9: k0, k1, k2, uy, uyh
   const LawParameters law =
@@ -501,7 +502,7 @@ TEST(PlanSeriesSliderReturnMap, ZeroIncrementFromASlippingStateKeepsItsForce) {
     EXPECT_NEAR(response.stiffness.yy, expected.yy, 1e-9 * ke);
   }
   // Every state slipped to be reached (the c9 state a unit in the last place outside its circle,
-  // the others by their phase, plan_slip_decision.h): the predictor continues the slip.
+  // the others by their phase, plan_slip_decision.h): the zero increment continues the slip.
   EXPECT_EQ(slipping, static_cast<int>(states.size()));
 }
 

@@ -1,5 +1,5 @@
 // The plan sliders' stick-or-slip decision (plan_slip_decision.h): a slider that slipped to reach
-// its committed state starts the next increment, and Newton's predictor (du = 0), on the slip
+// its committed state starts the next increment, and an iterate with du = 0, on the slip
 // tangent whatever the round-off of its trial force, and a reversal sticks at once. The slopes
 // are the laws' own closed forms: along the slip direction a slipping parallel-form slider adds
 // nothing to its hardening spring (BHM2: k1), a friction pendulum's interface nothing to W/R, a
@@ -69,7 +69,7 @@ TEST(PlanSlipDecision, AContinuingSlipStartsOnTheSlipTangentAndAReversalSticks) 
       std::swap(committed, trial);
       if (a < 1.5 * c.yield) continue;
       ASSERT_EQ(committed[0].x.slip, 1) << "step " << k;
-      // Newton's predictor at the committed state: the slip side, every time.
+      // An iterate at the committed state (du = 0): the slip side, every time.
       const PlanResponse predictor =
           assembly.Update(committed, {a * d, 0.01 * d, 0.01 * k}, trial, responses);
       EXPECT_NEAR(Along(predictor.stiffness, d), c.slip_slope, 1e-9 * c.stick_slope)

@@ -24,7 +24,7 @@ struct NewmarkOptions {
     kFull,             // tangent refactorised every iteration
     kModifiedInitial,  // tangent of the initial state, factorised once per run (again for each
                        // new step size after a step cut)
-    kModifiedStep,     // tangent at the start of each step
+    kModifiedStep,     // tangent at each step's predictor, factorised once per step
   };
 
   double beta = 0.25;  // 1/4 average acceleration, 1/6 linear acceleration; (0, 0.5]
