@@ -225,13 +225,16 @@ PlanExcitation PlanNoise() {
   return excitation;
 }
 
+structure::PlanBuilding BundledPlanBuilding() {
+  return io::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                               "/models/plan/five_story_table9_plan.yaml")
+      .building;
+}
+
 // The bundled plan model (models/plan/five_story_table9_plan.yaml): 18 dofs, 4 bearings of 9
 // components each; range(0) = 1 makes every bearing an uncoupled pair.
 void BM_PlanFiveStoryTable9(benchmark::State& state) {
-  structure::PlanBuilding building =
-      io::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
-                            "/models/plan/five_story_table9_plan.yaml")
-          .building;
+  structure::PlanBuilding building = BundledPlanBuilding();
   if (state.range(0) == 1) {
     for (structure::PlanIsolatorSite& site : building.isolators) {
       std::vector<hysteresis::PlanComponent> pairs = site.assembly.components();
@@ -264,10 +267,7 @@ void BM_FiveStoryDevice(benchmark::State& state) {
 
 // The bundled plan model with each of its four bearings one coupled device of Device().
 void BM_PlanFiveStoryDevice(benchmark::State& state) {
-  structure::PlanBuilding building =
-      io::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
-                            "/models/plan/five_story_table9_plan.yaml")
-          .building;
+  structure::PlanBuilding building = BundledPlanBuilding();
   const hysteresis::PlanAssembly bearing(
       {{"bearing", Device(static_cast<int>(state.range(0))), std::nullopt}});
   for (structure::PlanIsolatorSite& site : building.isolators) site.assembly = bearing;

@@ -83,15 +83,20 @@ TEST(ChopraChapter5, CaseBElastoplasticNewtonAndModifiedNewton) {
   EXPECT_EQ(initial_summary.factorisations, 1);  // one factorisation for the whole run
 }
 
-// A smooth law (Bouc-Wen, yielding at Chopra's 7.5 kips): full Newton converges quadratically,
-// modified Newton on the step's first tangent linearly, with one factorisation a step; both reach
-// the same response.
+// Chopra's SDOF on a Bouc-Wen law of initial stiffness k yielding at his 7.5 kips: smooth, its
+// knee the sharper the larger nu.
+structure::Structure BoucWenSdof(double nu) {
+  return structure::BuildSdof(
+      kMass, kDamping,
+      Single(LawType::kBoucWen, {kStiffness, kStiffness / std::pow(7.5, nu), 0.5, 0.5, nu}));
+}
+
+// On the smooth law full Newton converges quadratically, modified Newton on the step's first
+// tangent linearly, with one factorisation a step; both reach the same response.
 ResponseHistory SmoothSdof(NewmarkOptions::Newton newton, RunSummary* summary) {
-  const auto sdof = structure::BuildSdof(
-      kMass, kDamping, Single(LawType::kBoucWen, {kStiffness, kStiffness / 7.5, 0.5, 0.5, 1.0}));
   NewmarkOptions options;
   options.newton = newton;
-  return Simulate(sdof, HalfSinePulse(), {0.1, 10}, options, summary);
+  return Simulate(BoucWenSdof(1.0), HalfSinePulse(), {0.1, 10}, options, summary);
 }
 
 TEST(Newmark, ModifiedNewtonFactorisesOnceAStepAndReachesFullNewtonsResponse) {
@@ -228,10 +233,7 @@ TEST(Newmark, CutsAStepThatDoesNotConvergeAndReportsAFailureWithTime) {
   // kips, then smooth, so one correction leaves a residual far above the tolerance once it
   // yields, however small the step is cut. (A piecewise-linear law will not do: the predictor
   // lands its steps on the right branch.)
-  const double nu = 20.0;
-  const auto sdof = structure::BuildSdof(
-      kMass, kDamping,
-      Single(LawType::kBoucWen, {kStiffness, kStiffness / std::pow(7.5, nu), 0.5, 0.5, nu}));
+  const auto sdof = BoucWenSdof(20.0);
   NewmarkOptions options;
   options.max_iterations = 1;
   options.max_step_cuts = 2;
