@@ -18,6 +18,7 @@
 
 #include "cli/run_isolab.h"
 #include "cli/text_file.h"
+#include "own_test_file.h"
 
 namespace isolab::testing {
 namespace {
@@ -55,7 +56,7 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
   ReplaceOnce(&text, "../../ground_motions/", kRoot + "/ground_motions/");
   // The one-direction model's Rayleigh damping is on its first two fixed-base modes: the plan
   // model's on those periods, to the last digit.
-  const std::string folder = ::testing::TempDir();
+  const std::string folder = OwnTestDirectory().string() + "/";
   const Outcome one = RunIsolab(
       "run " + kRoot + "/models/buildings/five_story_table9.yaml --json -o " + folder + "one.h5");
   ASSERT_EQ(one.exit_code, 0) << one.output;
@@ -83,7 +84,7 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
 }
 
 TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
-  const std::string output = ::testing::TempDir() + "five_story_table9_plan.h5";
+  const std::string output = OwnTestFile("five_story_table9_plan.h5").string();
   const Outcome run = RunIsolab("run " + kPlan + " --json -o " + output);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto summary = nlohmann::json::parse(run.output);
@@ -117,13 +118,13 @@ TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
 }
 
 TEST(PlanRunCommand, RefusesOneDirectionOptionsAndCsv) {
-  const std::string out = " -o " + ::testing::TempDir() + "x.h5";
+  const std::string out = " -o " + OwnTestFile("x.h5").string();
   const Outcome record = RunIsolab(
       "run " + kPlan + " --record " + kRoot + "/ground_motions/pulse_tp2.at2" + out, true);
   EXPECT_EQ(record.exit_code, 2);
   EXPECT_NE(record.output.find("--record: does not apply to a plan model"), std::string::npos)
       << record.output;
-  const Outcome csv = RunIsolab("run " + kPlan + " -o " + ::testing::TempDir() + "x.csv", true);
+  const Outcome csv = RunIsolab("run " + kPlan + " -o " + OwnTestFile("x.csv").string(), true);
   EXPECT_EQ(csv.exit_code, 2);
   EXPECT_NE(csv.output.find("HDF5 only"), std::string::npos) << csv.output;
 }
@@ -143,8 +144,7 @@ TEST(PlanRunCommand, IdaAgreesWithNewmarkAndReportsItself) {
                "        - {name: rubber, type: bhm2, k0: 6, k1: 0.6, uy: 10}\n");
   ReplaceOnce(&text, "../../ground_motions/", kRoot + "/ground_motions/");
   ReplaceOnce(&text, "../../ground_motions/", kRoot + "/ground_motions/");
-  const std::string folder = ::testing::TempDir() + "plan_ida_" + std::to_string(getpid()) + "/";
-  std::filesystem::create_directories(folder);
+  const std::string folder = FreshTestDirectory().string() + "/";
   const std::string model = folder + "light_bearings.yaml";
   std::ofstream(model) << text;
   const std::string common = "run " + model + " --free-vibration 5 --json";
@@ -165,7 +165,6 @@ TEST(PlanRunCommand, IdaAgreesWithNewmarkAndReportsItself) {
   EXPECT_GT(i["ida"]["events"].get<long>(), 10);
   EXPECT_EQ(i["integrator"].get<std::string>().rfind("ida rtol=1e-06", 0), 0u) << i["integrator"];
   EXPECT_TRUE(n.contains("newton"));
-  std::filesystem::remove_all(folder);
 }
 
 }  // namespace

@@ -192,14 +192,15 @@ TEST(PlanModelFile, APairWithDifferentStepsOrLengthsIsALocatedError) {
   // The same step, a shorter record: the first 1000 samples of seed 3.
   std::ifstream in(kGroundMotions + "h2_fwn_firm_seed3.at2");
   std::string header, line;
-  std::ofstream short_record((testing::OwnTestDirectory() / "short.at2").string());
+  const std::string short_path = (testing::OwnTestDirectory() / "short.at2").string();
+  std::ofstream short_record(short_path);
   for (int i = 0; i < 4 && std::getline(in, line); ++i) {
     if (i == 3) line = "NPTS=    1000, DT=   0.01000 SEC,";
     short_record << line << "\n";
   }
   for (int i = 0; i < 200 && std::getline(in, line); ++i) short_record << line << "\n";
   short_record.close();
-  ExpectError(ErrorOf(Model(h2, "    h2: {file: " + ::testing::TempDir() + "short.at2}\n"), true),
+  ExpectError(ErrorOf(Model(h2, "    h2: {file: " + short_path + "}\n"), true),
               ":17:", "excitation.ground_motion.h2: 1000 samples, h1 has 3001");
 }
 

@@ -31,6 +31,7 @@
 #include "isolab/io/record.h"
 #include "isolab/io/shake_table_file.h"
 #include "isolab/io/study_file.h"
+#include "own_test_file.h"
 
 namespace isolab::io {
 namespace {
@@ -132,7 +133,7 @@ FuzzOutcome Fuzz(const std::vector<Seed>& corpus, const std::string& target,
   const double seconds = EnvironmentNumber("ISOLAB_FUZZ_SECONDS", 2.0);
   const long max_runs = static_cast<long>(EnvironmentNumber("ISOLAB_FUZZ_RUNS", 3000));
   const auto seed = static_cast<std::uint64_t>(EnvironmentNumber("ISOLAB_FUZZ_SEED", 1));
-  const fs::path root = fs::path(::testing::TempDir()) / ("reader_fuzz_test_" + target);
+  const fs::path root = testing::OwnTestDirectory() / target;
   fs::remove_all(root);
   testing::InputMutator mutator(seed);
   FuzzOutcome outcome;

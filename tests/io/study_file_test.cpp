@@ -9,6 +9,7 @@
 #include <string>
 
 #include "isolab/core/errors.h"
+#include "own_test_file.h"
 
 namespace isolab::io {
 namespace {
@@ -26,10 +27,7 @@ std::string Source(const std::string& relative) {
 class StudyFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = fs::temp_directory_path() / "isolab_study_file_test" /
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
+    directory_ = testing::FreshTestDirectory();
   }
 
   std::string Write(const std::string& name, const std::string& text) const {
