@@ -13,7 +13,7 @@
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/hysteresis/plan_assembly.h"
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 
 namespace isolab::hysteresis {
 namespace {
@@ -58,14 +58,14 @@ void BM_Law(benchmark::State& state, LawType type, std::vector<double> math) {
 }
 
 void BM_Table9Assembly(benchmark::State& state) {
-  const io::ModelFile model =
-      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml");
+  const model::ModelFile model = model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                                                      "/models/paper/table9_thm1_system.yaml");
   RunAssembly(state, model.isolation);
 }
 
 void BM_Table10Assembly(benchmark::State& state) {
-  const io::ModelFile model =
-      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table10_thm2_system.yaml");
+  const model::ModelFile model = model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                                                      "/models/paper/table10_thm2_system.yaml");
   RunAssembly(state, model.isolation);
 }
 
@@ -143,8 +143,8 @@ void BM_UncoupledBhm2Pair(benchmark::State& state) {
 
 // The nine THM1 components of Table 9, each coupled.
 void BM_PlanTable9Assembly(benchmark::State& state) {
-  const io::ModelFile model =
-      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml");
+  const model::ModelFile model = model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                                                      "/models/paper/table9_thm1_system.yaml");
   std::vector<PlanComponent> components;
   for (const Component& c : model.isolation.components()) {
     components.push_back({c.name, c.parameters, std::nullopt});

@@ -25,12 +25,12 @@
 #include <variant>
 #include <vector>
 
+#include "isolab/analysis/synthetic_motion.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
-#include "isolab/io/model_file.h"
-#include "isolab/io/plan_model_file.h"
-#include "isolab/io/synthetic_motion.h"
+#include "isolab/model/model_file.h"
+#include "isolab/model/plan_model_file.h"
 #include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 #include "newmark_floor.h"
@@ -43,10 +43,10 @@ using hysteresis::ParallelAssembly;
 
 // 100 s of filtered noise at 0.01 s, PGA 0.35 g, in mm/s^2.
 Excitation Noise() {
-  io::FilteredNoiseSpec spec;
+  analysis::FilteredNoiseSpec spec;
   spec.duration = 100.0;
   spec.pga = 0.35;
-  const io::Record record = io::FilteredNoiseRecord(spec);
+  const io::Record record = analysis::FilteredNoiseRecord(spec);
   Excitation excitation;
   excitation.ground_acceleration.dt = record.dt;
   for (const double a : record.values) excitation.ground_acceleration.values.push_back(a * 9806.65);
@@ -98,7 +98,8 @@ structure::Structure IsolatedBuilding(int stories, const ParallelAssembly& isola
 }
 
 ParallelAssembly Table9() {
-  return io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/table9_thm1_system.yaml")
+  return model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                              "/models/paper/table9_thm1_system.yaml")
       .isolation;
 }
 
@@ -215,19 +216,19 @@ void BM_FiveStoryTable9Ida(benchmark::State& state) {
 
 // H1: Noise() along x; H2: the same generator with another seed along y.
 PlanExcitation PlanNoise() {
-  io::FilteredNoiseSpec spec;
+  analysis::FilteredNoiseSpec spec;
   spec.duration = 100.0;
   spec.pga = 0.30;
   spec.seed = 2;
-  const io::Record record = io::FilteredNoiseRecord(spec);
+  const io::Record record = analysis::FilteredNoiseRecord(spec);
   PlanExcitation excitation{Noise().ground_acceleration, {record.dt, {}}};
   for (const double a : record.values) excitation.y.values.push_back(a * 9806.65);
   return excitation;
 }
 
 structure::PlanBuilding BundledPlanBuilding() {
-  return io::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
-                               "/models/plan/five_story_table9_plan.yaml")
+  return model::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                                  "/models/plan/five_story_table9_plan.yaml")
       .building;
 }
 
@@ -252,9 +253,9 @@ void BM_PlanFiveStoryTable9(benchmark::State& state) {
 hysteresis::LawParameters Device(int device) {
   using hysteresis::LawParameters, hysteresis::ParameterForm;
   if (device == 0) {
-    return LawParameters::Make(LawType::kLeadRubber, ParameterForm::kMechanical,
-                               std::vector<double>{88.26, 0.3391, 3.391, NAN, NAN, NAN, NAN, NAN,
-                                                   NAN, NAN});
+    return LawParameters::Make(
+        LawType::kLeadRubber, ParameterForm::kMechanical,
+        std::vector<double>{88.26, 0.3391, 3.391, NAN, NAN, NAN, NAN, NAN, NAN, NAN});
   }
   return LawParameters::Make(LawType::kFrictionPendulum, ParameterForm::kMechanical,
                              std::vector<double>{1471.0, 4338.0, 0.5, NAN, 0.03, 0.06, 0.02});

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""PNG plots of an `isolab run` result (HDF5; layout in include/isolab/io/results_file.h).
+"""PNG plots of an `isolab run` result (HDF5; layout in include/isolab/analysis/results_file.h).
 
     scripts/plot_result.py RESULT.h5 [-o DIR] [-q]
 

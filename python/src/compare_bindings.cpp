@@ -13,8 +13,8 @@
 
 #include "bindings.h"
 #include "isolab/core/errors.h"
-#include "isolab/io/free_vibration_text.h"
-#include "isolab/io/study_file.h"
+#include "isolab/model/free_vibration_text.h"
+#include "isolab/model/study_file.h"
 #include "isolab/study/jobs.h"
 #include "isolab/study/output_folder.h"
 #include "isolab/study/quantities.h"
@@ -100,9 +100,10 @@ py::dict StatisticColumns(const study::Summary& summary) {
 
 py::dict Compare(const std::string& study_path, const std::string& output, int jobs, bool quiet,
                  const std::optional<std::string>& free_vibration) {
-  io::StudyFile study = io::LoadStudyFile(study_path);
+  model::StudyFile study = model::LoadStudyFile(study_path);
   if (free_vibration) {
-    study.free_vibration = io::ParseFreeVibration(*free_vibration, study.units, "free_vibration");
+    study.free_vibration =
+        model::ParseFreeVibration(*free_vibration, study.units, "free_vibration");
   }
   if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
   const std::string folder = study::PrepareOutputFolder(output, study_path, study);

@@ -6,11 +6,11 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "isolab/analysis/cyclic_campaign.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/identification/synthetic_tests.h"
-#include "isolab/io/cyclic_campaign.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "model.h"
 
@@ -22,7 +22,7 @@ namespace {
 struct CyclicRun {
   hysteresis::CyclicResult result;
   std::vector<std::string> components;
-  io::UnitSystem units;
+  UnitSystem units;
 };
 
 // One result per period and amplitude (periods outer), as `isolab cyclic` runs them; with
@@ -31,18 +31,18 @@ std::vector<std::shared_ptr<CyclicRun>> Cyclic(
     const Model& model, const std::vector<double>& amplitudes, const std::vector<double>& periods,
     std::optional<int> cycles, std::optional<int> steps_per_cycle, bool sequential,
     const std::string& test_data, double noise, unsigned seed) {
-  const io::ModelFile& file = model.file();
+  const model::ModelFile& file = model.file();
   if (!(noise >= 0.0 && noise <= 1.0)) throw InputError({"noise"}, "must be in [0, 1]");
-  io::CyclicRequest request{amplitudes, periods,  cycles,      steps_per_cycle,
-                            sequential, "cyclic", "amplitude="};
+  analysis::CyclicRequest request{amplitudes, periods,  cycles,      steps_per_cycle,
+                                  sequential, "cyclic", "amplitude="};
   std::vector<hysteresis::CyclicResult> loops;
   {
     py::gil_scoped_release release;
-    loops = io::RunCyclicCampaign(file, request);
+    loops = analysis::RunCyclicCampaign(file, request);
   }
   if (!test_data.empty()) {
     std::vector<identification::CyclicTestData> tests =
-        io::TestsFromLoops(loops, periods.size() > 1);
+        analysis::TestsFromLoops(loops, periods.size() > 1);
     identification::AddForceNoise(&tests, noise, seed);
     io::WriteCyclicTests(test_data, tests, file.units, sequential);
   }

@@ -11,7 +11,7 @@
 #include "isolab/diagnosis/discrepancy.h"
 #include "isolab/diagnosis/effects.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/fit_spec_file.h"
+#include "isolab/model/fit_spec_file.h"
 
 namespace py = pybind11;
 
@@ -27,7 +27,7 @@ py::dict ModelDict(const diagnosis::FittedModel& model) {
 py::dict Diagnose(const std::vector<std::string>& data, const std::string& base_path, unsigned seed,
                   long budget, const std::string& specimen, const std::string& force_unit,
                   const std::string& length_unit, bool quiet) {
-  const io::FitSpec base = io::LoadFitSpec(base_path);
+  const model::FitSpec base = model::LoadFitSpec(base_path);
   io::CyclicTestSet set = io::ReadCyclicTests(data, {force_unit, length_unit}, base.units);
   const identification::FitData fit_data =
       diagnosis::AllCycles(std::move(set.tests), io::OneSpecimen(specimen, set.one_specimen));

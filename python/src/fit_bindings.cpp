@@ -11,7 +11,7 @@
 #include "isolab/identification/fit.h"
 #include "isolab/identification/parametrisation.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/fit_spec_file.h"
+#include "isolab/model/fit_spec_file.h"
 
 namespace py = pybind11;
 
@@ -21,7 +21,7 @@ namespace {
 py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path, unsigned seed,
              long budget, const std::vector<int>& cycles, const std::string& specimen,
              const std::string& force_unit, const std::string& length_unit, bool quiet) {
-  const io::FitSpec spec = io::LoadFitSpec(spec_path);
+  const model::FitSpec spec = model::LoadFitSpec(spec_path);
   io::CyclicTestSet set = io::ReadCyclicTests(data, {force_unit, length_unit}, spec.units);
   const bool one_specimen = io::OneSpecimen(specimen, set.one_specimen);
   identification::FitData fit_data;

@@ -78,7 +78,7 @@ std::string Describe(const std::string& where) { return where.empty() ? "the mod
 }  // namespace
 
 Model Model::Load(const std::string& path) {
-  io::ModelFile model = io::LoadModelFile(path);
+  model::ModelFile model = model::LoadModelFile(path);
   YAML::Node tree = YAML::Load(model.text);
   return Model(std::move(tree), std::move(model));
 }
@@ -86,7 +86,7 @@ Model Model::Load(const std::string& path) {
 Model Model::FromTree(const YAML::Node& tree, const std::string& name) {
   YAML::Emitter emitter;
   emitter << tree;
-  io::ModelFile model = io::LoadModelText(std::string(emitter.c_str()) + "\n", name);
+  model::ModelFile model = model::LoadModelText(std::string(emitter.c_str()) + "\n", name);
   return Model(YAML::Clone(tree), std::move(model));
 }
 

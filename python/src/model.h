@@ -7,13 +7,13 @@
 
 #include <string>
 
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 
 namespace isolab::python {
 
 class Model {
  public:
-  // Throws InputError as io::LoadModelFile does.
+  // Throws InputError as model::LoadModelFile does.
   static Model Load(const std::string& path);
   // `name` stands for the file in messages; files the model names are found relative to its
   // folder (a name without one: the current directory).
@@ -27,7 +27,7 @@ class Model {
     return *this;
   }
 
-  const io::ModelFile& file() const { return model_; }
+  const model::ModelFile& file() const { return model_; }
   const YAML::Node& tree() const { return tree_; }
 
   // The node at a key path such as "isolation.components[0].qd" or, in a list of named entries,
@@ -39,10 +39,11 @@ class Model {
   void Set(const std::string& key_path, const YAML::Node& value);
 
  private:
-  Model(YAML::Node tree, io::ModelFile model) : tree_(std::move(tree)), model_(std::move(model)) {}
+  Model(YAML::Node tree, model::ModelFile model)
+      : tree_(std::move(tree)), model_(std::move(model)) {}
 
   YAML::Node tree_;
-  io::ModelFile model_;
+  model::ModelFile model_;
 };
 
 }  // namespace isolab::python

@@ -58,7 +58,7 @@ void BindModel(py::module_& module) {
       .def_property_readonly(
           "units",
           [](const Model& m) {
-            const io::UnitSystem& u = m.file().units;
+            const UnitSystem& u = m.file().units;
             return py::dict(py::arg("force") = u.force(), py::arg("length") = u.length(),
                             py::arg("time") = u.time());
           },

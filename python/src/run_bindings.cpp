@@ -8,14 +8,14 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/response_peaks.h"
+#include "isolab/analysis/result_series.h"
+#include "isolab/analysis/results_file.h"
+#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/run_report.h"
 #include "isolab/core/errors.h"
-#include "isolab/io/analysis_setup.h"
-#include "isolab/io/free_vibration_text.h"
-#include "isolab/io/response_peaks.h"
-#include "isolab/io/result_series.h"
-#include "isolab/io/results_file.h"
-#include "isolab/io/run_analysis.h"
-#include "isolab/io/run_report.h"
+#include "isolab/model/free_vibration_text.h"
 #include "model.h"
 #include "record_argument.h"
 
@@ -26,20 +26,20 @@ namespace {
 
 // Everything a run made, in one place that does not move: the series refer into it.
 struct RunResult {
-  io::ModelFile model;
-  io::AnalysisSection analysis;
-  io::AnalysisSetup setup;
+  model::ModelFile model;
+  model::AnalysisSection analysis;
+  analysis::AnalysisSetup setup;
   integrators::ResponseHistory response;
   integrators::RunSummary summary;
-  io::ResponsePeaks peaks;
-  std::vector<io::Series> series;
+  analysis::ResponsePeaks peaks;
+  std::vector<analysis::Series> series;
   std::vector<std::string> warnings;
 
-  io::RunDescription Description() const {
+  analysis::RunDescription Description() const {
     return {&model, &setup, &analysis, &summary, &peaks, ISOLAB_VERSION, {}};
   }
-  const io::Series& Find(const std::string& name) const {
-    for (const io::Series& s : series) {
+  const analysis::Series& Find(const std::string& name) const {
+    for (const analysis::Series& s : series) {
       if (s.name == name) return s;
     }
     throw py::key_error(name);
@@ -47,35 +47,35 @@ struct RunResult {
 };
 
 struct RunOptions {
-  io::RunOverrides overrides;
+  analysis::RunOverrides overrides;
   std::optional<std::string> integrator;
   std::optional<double> rtol, atol;
 };
 
 std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
-  io::AnalysisSection analysis = model.file().analysis;
-  if (options.integrator == "ida") analysis.integrator = io::AnalysisSection::Integrator::kIda;
+  model::AnalysisSection analysis = model.file().analysis;
+  if (options.integrator == "ida") analysis.integrator = model::AnalysisSection::Integrator::kIda;
   if (options.integrator == "newmark") {
-    analysis.integrator = io::AnalysisSection::Integrator::kNewmark;
+    analysis.integrator = model::AnalysisSection::Integrator::kNewmark;
   }
   if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
   if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
   std::shared_ptr<RunResult> result;
   {
     py::gil_scoped_release release;  // a thread pool of runs scales
-    result = std::make_shared<RunResult>(model.file(), analysis,
-                                         io::PrepareAnalysis(model.file(), options.overrides));
-    result->summary = io::RunAnalysis(analysis, result->setup, &result->response);
-    result->peaks = io::ComputePeaks(result->setup, result->response);
+    result = std::make_shared<RunResult>(
+        model.file(), analysis, analysis::PrepareAnalysis(model.file(), options.overrides));
+    result->summary = analysis::RunAnalysis(analysis, result->setup, &result->response);
+    result->peaks = analysis::ComputePeaks(result->setup, result->response);
   }
-  result->series = io::ResultSeries(result->model, result->setup, io::OutputSelection{});
-  result->warnings = io::RunWarnings(result->Description());
+  result->series = analysis::ResultSeries(result->model, result->setup, model::OutputSelection{});
+  result->warnings = analysis::RunWarnings(result->Description());
   return result;
 }
 
 // The history's own row-major storage of a series that is one of its matrices (or its time)
 // whole, so the array can view it; nullptr for a series computed from the rows.
-const double* StoredRows(const integrators::ResponseHistory& h, const io::Series& series) {
+const double* StoredRows(const integrators::ResponseHistory& h, const analysis::Series& series) {
   const auto whole = [&](const integrators::RowMatrix& m) {
     return m.cols() == static_cast<Eigen::Index>(series.width()) ? m.data() : nullptr;
   };
@@ -90,7 +90,7 @@ const double* StoredRows(const integrators::ResponseHistory& h, const io::Series
 
 // The values of a series over the rows written: a read-only view of the result's storage when
 // the history stores the series as it is, else computed into a new array.
-py::array SeriesArray(const std::shared_ptr<RunResult>& result, const io::Series& series) {
+py::array SeriesArray(const std::shared_ptr<RunResult>& result, const analysis::Series& series) {
   const integrators::ResponseHistory& history = result->response;
   const py::ssize_t rows = history.rows_written;
   const py::ssize_t width = series.columns.empty() ? 0 : py::ssize_t(series.width());
@@ -108,17 +108,17 @@ py::array SeriesArray(const std::shared_ptr<RunResult>& result, const io::Series
   return array;
 }
 
-// What `isolab run --json` prints (io::RunReport), as Python objects.
+// What `isolab run --json` prints (analysis::RunReport), as Python objects.
 py::dict Summary(const RunResult& r) {
-  const nlohmann::json report = io::RunReport(r.Description(), r.warnings, "");
+  const nlohmann::json report = analysis::RunReport(r.Description(), r.warnings, "");
   return py::module_::import("json").attr("loads")(report.dump());
 }
 
 // {series name: its field}, e.g. the units of every series.
 template <typename Field>
-py::dict BySeries(const RunResult& r, Field io::Series::*field) {
+py::dict BySeries(const RunResult& r, Field analysis::Series::*field) {
   py::dict values;
-  for (const io::Series& s : r.series) values[py::str(s.name)] = s.*field;
+  for (const analysis::Series& s : r.series) values[py::str(s.name)] = s.*field;
   return values;
 }
 
@@ -133,18 +133,18 @@ void BindRun(py::module_& module) {
       .def_property_readonly("names",
                              [](const RunResult& r) {
                                std::vector<std::string> names;
-                               for (const io::Series& s : r.series) names.push_back(s.name);
+                               for (const analysis::Series& s : r.series) names.push_back(s.name);
                                return names;
                              })
-      .def_property_readonly("units",
-                             [](const RunResult& r) { return BySeries(r, &io::Series::units); })
-      .def_property_readonly("columns",
-                             [](const RunResult& r) { return BySeries(r, &io::Series::columns); })
+      .def_property_readonly(
+          "units", [](const RunResult& r) { return BySeries(r, &analysis::Series::units); })
+      .def_property_readonly(
+          "columns", [](const RunResult& r) { return BySeries(r, &analysis::Series::columns); })
       .def("__getitem__", [](const std::shared_ptr<RunResult>& r,
                              const std::string& name) { return SeriesArray(r, r->Find(name)); })
       .def("__contains__",
            [](const RunResult& r, const std::string& name) {
-             for (const io::Series& s : r.series) {
+             for (const analysis::Series& s : r.series) {
                if (s.name == name) return true;
              }
              return false;
@@ -161,7 +161,7 @@ void BindRun(py::module_& module) {
       .def_property_readonly("warnings", [](const RunResult& r) { return r.warnings; })
       .def_property_readonly("model_units",
                              [](const RunResult& r) {
-                               const io::UnitSystem& u = r.model.units;
+                               const UnitSystem& u = r.model.units;
                                return py::dict(py::arg("force") = u.force(),
                                                py::arg("length") = u.length(),
                                                py::arg("time") = u.time());
@@ -169,7 +169,7 @@ void BindRun(py::module_& module) {
       .def(
           "save",
           [](const RunResult& r, const std::filesystem::path& path) {
-            io::WriteResultsFile(path.string(), r.Description(), r.response);
+            analysis::WriteResultsFile(path.string(), r.Description(), r.response);
           },
           py::arg("path"),
           "Writes the results file `isolab run -o path` writes (.h5/.hdf5 or .csv)");
@@ -182,13 +182,13 @@ void BindRun(py::module_& module) {
          std::optional<double> trial_displacement, const std::optional<std::string>& integrator,
          std::optional<double> rtol, std::optional<double> atol) {
         RunOptions options;
-        io::RunOverrides& o = options.overrides;
+        analysis::RunOverrides& o = options.overrides;
         if (!record.is_none()) {
           if (IsRecordFile(record)) {
             o.record = py::str(record).cast<std::string>();
             if (units) o.record_units = *units;
             if (record_dt) {
-              o.record_dt = model.file().units.Convert(*record_dt, "s", io::dimension::kTime);
+              o.record_dt = model.file().units.Convert(*record_dt, "s", dimension::kTime);
             }
           } else {
             o.record_data = ArrayRecord(record, record_dt, units);
@@ -196,7 +196,7 @@ void BindRun(py::module_& module) {
         } else if (units || record_dt) {
           if (units) o.record_units = *units;
           if (record_dt) {
-            o.record_dt = model.file().units.Convert(*record_dt, "s", io::dimension::kTime);
+            o.record_dt = model.file().units.Convert(*record_dt, "s", dimension::kTime);
           }
         }
         o.units_given_by = "units";
@@ -207,8 +207,8 @@ void BindRun(py::module_& module) {
         o.trial_displacement = trial_displacement;
         if (!free_vibration.is_none()) {
           // "auto" or a number, read as the command line reads --free-vibration.
-          o.free_vibration =
-              io::ParseFreeVibration(py::str(free_vibration), model.file().units, "free_vibration");
+          o.free_vibration = model::ParseFreeVibration(py::str(free_vibration), model.file().units,
+                                                       "free_vibration");
         }
         if (integrator && *integrator != "newmark" && *integrator != "ida") {
           throw InputError({"integrator"}, "'" + *integrator + "' (newmark or ida)");

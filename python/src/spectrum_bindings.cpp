@@ -8,8 +8,8 @@
 
 #include "bindings.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/units.h"
 #include "isolab/io/record.h"
-#include "isolab/io/units.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
 #include "isolab/spectra/rotd_spectrum.h"
@@ -56,7 +56,7 @@ struct Ground {
 
 Ground ReadGround(const py::object& record_argument, double scale,
                   const std::optional<std::string>& units, std::optional<double> record_dt,
-                  const io::UnitSystem& system) {
+                  const UnitSystem& system) {
   const io::Record record =
       IsRecordFile(record_argument)
           ? io::ReadRecord(py::str(record_argument).cast<std::string>(),
@@ -66,7 +66,7 @@ Ground ReadGround(const py::object& record_argument, double scale,
   ground.acceleration.dt = record.dt;
   double factor = 0.0;
   try {
-    factor = system.Convert(scale, record.units, io::dimension::kAcceleration);
+    factor = system.Convert(scale, record.units, dimension::kAcceleration);
   } catch (const std::invalid_argument& error) {
     throw InputError({record.path}, "units '" + record.units + "': " + error.what());
   }
@@ -129,7 +129,7 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
   if (!(scale > 0.0) || !std::isfinite(scale)) {
     throw InputError({"scale"}, "must be finite and > 0");
   }
-  std::optional<io::UnitSystem> system;
+  std::optional<UnitSystem> system;
   try {
     system.emplace("N", length_unit, "s");
   } catch (const std::invalid_argument& error) {

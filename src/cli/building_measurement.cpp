@@ -62,7 +62,7 @@ std::vector<int> ParseLevels(const std::string& text) {
 
 }  // namespace
 
-Measured ReadMeasured(const ShakeTableOptions& options, const io::UnitSystem& units,
+Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
                       std::size_t levels) {
   const io::ShakeTableData data = io::ShakeTableData::Read(options.data);
   Measured m;
@@ -72,15 +72,14 @@ Measured ReadMeasured(const ShakeTableOptions& options, const io::UnitSystem& un
   // exceeds 5 % of its peak; --offsets none keeps the channels as recorded.
   std::size_t quiet = 0;
   if (options.offsets == "pre-event") {
-    const Series table =
-        data.Channel(options.table_acceleration, io::dimension::kAcceleration, units);
+    const Series table = data.Channel(options.table_acceleration, dimension::kAcceleration, units);
     double peak = 0.0;
     for (const double v : table) peak = std::max(peak, std::abs(v));
     while (quiet < table.size() && std::abs(table[quiet]) <= 0.05 * peak) ++quiet;
     if (quiet < 10) quiet = 0;  // no quiet start: nothing to read an offset from
   }
   const auto acceleration = [&](const std::string& name) {
-    Series a = data.Channel(name, io::dimension::kAcceleration, units);
+    Series a = data.Channel(name, dimension::kAcceleration, units);
     if (quiet > 0) {
       const double offset = std::accumulate(a.begin(), a.begin() + quiet, 0.0) / quiet;
       for (double& v : a) v -= offset;
@@ -104,7 +103,7 @@ Measured ReadMeasured(const ShakeTableOptions& options, const io::UnitSystem& un
   for (const int c : channels) {
     a.push_back(acceleration(fmt::format("{}{}", options.acceleration_prefix, c)));
     u.push_back(data.Channel(fmt::format("{}{}", options.displacement_prefix, c),
-                             io::dimension::kLength, units));
+                             dimension::kLength, units));
   }
   // Relative or absolute: the displacement's second derivative follows the acceleration
   // relative to the table (a - a_table) if it is relative, a itself if absolute.
@@ -130,7 +129,7 @@ Measured ReadMeasured(const ShakeTableOptions& options, const io::UnitSystem& un
         fmt::format("displacements {} (as given)", relative ? "relative to the table" : "absolute");
   }
   if (!relative) {  // only then is the table's displacement needed
-    const Series table_u = data.Channel(options.table_displacement, io::dimension::kLength, units);
+    const Series table_u = data.Channel(options.table_displacement, dimension::kLength, units);
     for (Series& s : u) {
       for (std::size_t k = 0; k < s.size(); ++k) s[k] -= table_u[k];
     }
@@ -154,8 +153,8 @@ Measured ReadMeasured(const ShakeTableOptions& options, const io::UnitSystem& un
   return m;
 }
 
-std::vector<double> LevelMasses(const io::ModelFile& model) {
-  if (!model.structure || model.structure->kind != io::StructureSection::Kind::kShearBuilding ||
+std::vector<double> LevelMasses(const model::ModelFile& model) {
+  if (!model.structure || model.structure->kind != model::StructureSection::Kind::kShearBuilding ||
       !(model.structure->building.base_mass > 0.0)) {
     throw InputError({model.path},
                      "the model needs a shear_building structure with a base_mass "

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 #include "shaketable_command.h"
 
 namespace isolab::cli {
@@ -23,12 +23,12 @@ struct Measured {
 };
 
 // Reads options.data for a building of `levels` levels. Throws InputError.
-Measured ReadMeasured(const ShakeTableOptions& options, const io::UnitSystem& units,
+Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
                       std::size_t levels);
 
 // Floor masses bottom (isolation slab) to roof. Throws InputError for a model without a shear
 // building on a base mass.
-std::vector<double> LevelMasses(const io::ModelFile& model);
+std::vector<double> LevelMasses(const model::ModelFile& model);
 
 // Minus the sum over levels of mass x absolute acceleration: the force the isolators carry.
 Series BaseShear(const std::vector<Series>& acceleration, const std::vector<double>& masses);

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "isolab/core/errors.h"
-#include "isolab/io/free_vibration_text.h"
-#include "isolab/io/study_file.h"
+#include "isolab/model/free_vibration_text.h"
+#include "isolab/model/study_file.h"
 #include "isolab/study/jobs.h"
 #include "isolab/study/mpi_scheduler.h"
 #include "isolab/study/output_folder.h"
@@ -42,7 +42,7 @@ std::string Count(std::size_t n, const char* noun) {
 }
 
 // Summary files (CSV and HDF5) and the table on `out`.
-void WriteSummary(const CompareOptions& options, const io::StudyFile& study_file,
+void WriteSummary(const CompareOptions& options, const model::StudyFile& study_file,
                   const std::vector<study::JobResult>& results, const std::string& directory,
                   std::ostream& out) {
   const study::Summary summary = study::BuildSummary(study::ShapeOf(study_file), results);
@@ -114,13 +114,13 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
                                  options.jobs, hardware, kThreadsPerHardwareThread * hardware,
                                  kThreadsPerHardwareThread));
   }
-  io::StudyFile study_file;
+  model::StudyFile study_file;
   std::string directory;
   try {
-    study_file = io::LoadStudyFile(options.study);
+    study_file = model::LoadStudyFile(options.study);
     if (!options.free_vibration.empty()) {
       study_file.free_vibration =
-          io::ParseFreeVibration(options.free_vibration, study_file.units, "--free-vibration");
+          model::ParseFreeVibration(options.free_vibration, study_file.units, "--free-vibration");
     }
     if (options.plot) CheckPlotScript("plot_study.py");  // before the runs, not after
     directory = study::PrepareOutputFolder(options.output, options.study, study_file);

@@ -8,14 +8,14 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "isolab/analysis/cyclic_campaign.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/atomic_file.h"
-#include "isolab/io/cyclic_campaign.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/model_file.h"
 #include "isolab/io/output_check.h"
+#include "isolab/model/model_file.h"
 
 namespace isolab::cli {
 namespace {
@@ -25,7 +25,7 @@ using hysteresis::CyclicResult;
 using hysteresis::ParameterForm;
 
 struct Run {
-  const io::ModelFile* model;
+  const model::ModelFile* model;
   CyclicResult result;
 };
 
@@ -40,7 +40,7 @@ std::string ParameterText(const hysteresis::LawParameters& parameters, Parameter
   return text;
 }
 
-void PrintModel(const io::ModelFile& model, std::ostream& out) {
+void PrintModel(const model::ModelFile& model, std::ostream& out) {
   fmt::print(out, "== {} ==\n", model.path);
   if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
   fmt::print(out, "{:<12} {:<18} {:<48} {}\n", "component", "type", "mathematical", "mechanical");
@@ -53,7 +53,7 @@ void PrintModel(const io::ModelFile& model, std::ostream& out) {
 }
 
 void PrintRun(const Run& run, std::ostream& out) {
-  const io::UnitSystem& u = run.model->units;
+  const UnitSystem& u = run.model->units;
   const CyclicProtocol& p = run.result.protocol;
   fmt::print(out, "\nu_a = {:g} {}, T = {:g} {}, {} cycles, {} steps per cycle\n", p.amplitude,
              u.length(), p.period, u.time(), p.cycles, p.steps_per_cycle);
@@ -75,7 +75,7 @@ void PrintRun(const Run& run, std::ostream& out) {
 
 // Energy of the last cycle against amplitude, when one model ran at several amplitudes.
 void PrintAmplitudeTable(const std::vector<Run>& runs, std::size_t first, std::ostream& out) {
-  const io::UnitSystem& u = runs[first].model->units;
+  const UnitSystem& u = runs[first].model->units;
   fmt::print(out, "\nlast cycle against amplitude\n{:>12} {:>16} {:>14}\n",
              fmt::format("u_a [{}]", u.length()), fmt::format("W_d [{}*{}]", u.force(), u.length()),
              fmt::format("peak|F| [{}]", u.force()));
@@ -136,7 +136,7 @@ void WriteLoopCsv(const Run& run, const std::string& path) {
   const auto& components = run.model->isolation.components();
   const auto& loop = run.result.loop;
   io::WriteTextFileAtomically(path, [&](std::ostream& out) {
-    const io::UnitSystem& u = run.model->units;
+    const UnitSystem& u = run.model->units;
     fmt::print(out, "time_{},u_{},force_{}", u.time(), u.length(), u.force());
     for (const auto& component : components)
       fmt::print(out, ",force_{}_{}", component.name, u.force());
@@ -198,26 +198,26 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
 }
 
 void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
-  std::vector<io::ModelFile> models;
+  std::vector<model::ModelFile> models;
   models.reserve(options.models.size());
-  for (const std::string& path : options.models) models.push_back(io::LoadModelFile(path));
+  for (const std::string& path : options.models) models.push_back(model::LoadModelFile(path));
 
-  io::CyclicRequest request;
+  analysis::CyclicRequest request;
   request.amplitudes = options.amplitudes;
   request.periods = options.periods;
   request.cycles = options.cycles;
   request.steps_per_cycle = options.steps_per_cycle;
   request.sequential = options.sequential;
   std::vector<Run> runs;
-  for (const io::ModelFile& model : models) {
-    for (hysteresis::CyclicResult& result : io::RunCyclicCampaign(model, request)) {
+  for (const model::ModelFile& model : models) {
+    for (hysteresis::CyclicResult& result : analysis::RunCyclicCampaign(model, request)) {
       runs.push_back({&model, std::move(result)});
     }
   }
 
   // The loops are cheap; their outputs are checked before any is written.
   std::vector<std::string> inputs, outputs;
-  for (const io::ModelFile& model : models) {
+  for (const model::ModelFile& model : models) {
     inputs.push_back(model.path);
     inputs.insert(inputs.end(), model.included_files.begin(), model.included_files.end());
   }
@@ -236,7 +236,7 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
     std::vector<hysteresis::CyclicResult> loops;
     for (const Run& run : runs) loops.push_back(run.result);
     std::vector<identification::CyclicTestData> tests =
-        io::TestsFromLoops(loops, options.periods.size() > 1);
+        analysis::TestsFromLoops(loops, options.periods.size() > 1);
     if (models.size() > 1) {
       for (std::size_t i = 0; i < runs.size(); ++i) {
         tests[i].name =

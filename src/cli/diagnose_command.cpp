@@ -13,9 +13,9 @@
 #include "isolab/diagnosis/diagnose.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/fit_spec_file.h"
-#include "isolab/io/fitted_model_file.h"
 #include "isolab/io/output_check.h"
+#include "isolab/model/fit_spec_file.h"
+#include "isolab/model/fitted_model_file.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
@@ -53,7 +53,7 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
 }
 
 void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
-  const io::FitSpec base = io::LoadFitSpec(options.base);
+  const model::FitSpec base = model::LoadFitSpec(options.base);
   const std::string stem =
       !options.out.empty()
           ? options.out
@@ -93,7 +93,7 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   DiagnosisContext context{options.data, options.base, stem + ".model.yaml", options.seed,
                            base.units};
 
-  io::FittedModel model;
+  model::FittedModel model;
   model.comment.push_back(fmt::format("Diagnosed by isolab diagnose from {} (base {}, seed {}).",
                                       fmt::join(options.data, ", "), options.base, options.seed));
   std::string effects;
@@ -111,7 +111,7 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   // Every text first, then the files: a failure while composing leaves none behind.
   const nlohmann::json json = DiagnosisJson(result, data, context);
   const std::string markdown = DiagnosisMarkdown(result, data, context);
-  io::WriteFittedModel(context.model_file, model);
+  model::WriteFittedModel(context.model_file, model);
   WriteText(stem + ".json", json.dump(2) + "\n");
   WriteText(stem + ".md", markdown);
 

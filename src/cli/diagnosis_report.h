@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/core/units.h"
 #include "isolab/diagnosis/diagnose.h"
-#include "isolab/io/units.h"
 
 namespace isolab::cli {
 
@@ -18,7 +18,7 @@ struct DiagnosisContext {
   std::string base_file;
   std::string model_file;  // where the final model was written
   unsigned seed = 1;
-  io::UnitSystem units{"kN", "mm", "s"};
+  UnitSystem units{"kN", "mm", "s"};
 };
 
 nlohmann::json DiagnosisJson(const diagnosis::Diagnosis& d, const identification::FitData& data,

@@ -14,9 +14,9 @@
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/fit_spec_file.h"
-#include "isolab/io/fitted_model_file.h"
 #include "isolab/io/output_check.h"
+#include "isolab/model/fit_spec_file.h"
+#include "isolab/model/fitted_model_file.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
@@ -54,9 +54,9 @@ std::vector<EnergyRow> EnergyTable(const hysteresis::ParallelAssembly& model, co
   return rows;
 }
 
-void WriteFittedModel(const std::string& path, const io::FitSpec& spec, const FitOptions& options,
-                      const FitResult& result, const FitData& data) {
-  io::FittedModel model;
+void WriteFittedModel(const std::string& path, const model::FitSpec& spec,
+                      const FitOptions& options, const FitResult& result, const FitData& data) {
+  model::FittedModel model;
   model.comment.push_back(
       fmt::format("Identified by isolab fit from {} (specification {}, seed {}, {} evaluations).",
                   fmt::join(options.data, ", "), spec.path, options.seed, result.evaluations));
@@ -72,7 +72,7 @@ void WriteFittedModel(const std::string& path, const io::FitSpec& spec, const Fi
   model.units = spec.units;
   model.components = spec.components;
   model.mathematical = result.mathematical;
-  io::WriteFittedModel(path, model);
+  model::WriteFittedModel(path, model);
 }
 
 }  // namespace
@@ -101,7 +101,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
 }
 
 void RunFitCommand(const FitOptions& options, std::ostream& out) {
-  const io::FitSpec spec = io::LoadFitSpec(options.spec);
+  const model::FitSpec spec = model::LoadFitSpec(options.spec);
   const std::string output =
       !options.output.empty()
           ? options.output

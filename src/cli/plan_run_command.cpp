@@ -5,12 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "isolab/analysis/model_summary.h"
+#include "isolab/analysis/plan_analysis.h"
+#include "isolab/analysis/run_report.h"
 #include "isolab/core/errors.h"
-#include "isolab/io/free_vibration_text.h"
-#include "isolab/io/model_summary.h"
 #include "isolab/io/output_check.h"
-#include "isolab/io/plan_analysis.h"
-#include "isolab/io/run_report.h"
+#include "isolab/model/free_vibration_text.h"
 #include "run_report.h"
 
 namespace isolab::cli {
@@ -30,10 +30,10 @@ void RefuseOneDirectionOptions(const RunOptions& options) {
   refuse(options.plot.has_value(), "--plot");
 }
 
-void PrintPreamble(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
+void PrintPreamble(const model::PlanModelFile& model, const analysis::PlanAnalysisSetup& setup,
                    std::ostream& out) {
-  const io::UnitSystem& u = model.units;
-  const double g = u.Convert(1.0, "g", io::dimension::kAcceleration);
+  const UnitSystem& u = model.units;
+  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
   fmt::print(out, "== {} (plan model) ==\n", model.path);
   if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
   for (const auto& [key, r] : {std::pair{"H1", &setup.h1}, std::pair{"H2", &setup.h2}}) {
@@ -46,21 +46,20 @@ void PrintPreamble(const io::PlanModelFile& model, const io::PlanAnalysisSetup& 
              "model: {} floors, {} isolators, total mass {:.5g} ({:.5g} t); isolated period "
              "{:.4g} {} at {:g} {} along x\n",
              setup.structure.floors(), setup.structure.isolators().size(), setup.total_mass,
-             setup.total_mass * u.SiFactor(io::dimension::kMass) / 1000.0, setup.isolated_period,
+             setup.total_mass * u.SiFactor(dimension::kMass) / 1000.0, setup.isolated_period,
              u.time(), setup.trial_displacement, u.length());
-  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u,
-            out);
+  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u, out);
 }
 
-void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
-                  const io::PlanPeaks& peaks, const integrators::RunSummary& summary,
+void PrintSummary(const model::PlanModelFile& model, const analysis::PlanAnalysisSetup& setup,
+                  const analysis::PlanPeaks& peaks, const integrators::RunSummary& summary,
                   const integrators::ResponseHistory& response, const std::string& output,
                   std::ostream& out) {
-  const io::UnitSystem& u = model.units;
+  const UnitSystem& u = model.units;
   const auto& isolators = setup.structure.isolators();
   fmt::print(out, "peak resultant isolator displacement [{}]:\n", u.length());
   for (std::size_t i = 0; i < isolators.size(); ++i) {
-    const io::Peak& p = peaks.isolator_resultant[i];
+    const analysis::Peak& p = peaks.isolator_resultant[i];
     fmt::print(out, "  {:<24} {:>12.5g} at t = {:.4g} {}\n", isolators[i].name, p.value, p.time,
                u.time());
   }
@@ -83,8 +82,9 @@ void PrintSummary(const io::PlanModelFile& model, const io::PlanAnalysisSetup& s
   PrintRunOutcome(model.analysis, summary, output, out);
 }
 
-nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysisSetup& setup,
-                           const io::PlanPeaks& peaks, const integrators::RunSummary& summary,
+nlohmann::json SummaryJson(const model::PlanModelFile& model,
+                           const analysis::PlanAnalysisSetup& setup,
+                           const analysis::PlanPeaks& peaks, const integrators::RunSummary& summary,
                            const std::string& output) {
   nlohmann::json json;
   nlohmann::json isolators = nlohmann::json::object();
@@ -97,10 +97,10 @@ nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysi
   json["peak_centre_resultant"] = peaks.centre_resultant.value;
   json["torsional_amplification"] = peaks.torsional_amplification;
   std::vector<double> rotations;
-  for (const io::Peak& p : peaks.floor_rotation) rotations.push_back(p.value);
+  for (const analysis::Peak& p : peaks.floor_rotation) rotations.push_back(p.value);
   json["peak_floor_rotation"] = rotations;
   json["peak_base_shear"] = peaks.base_shear.value;
-  io::AddRunOutcome(model.analysis, setup.grid.dt, summary, output, &json);
+  analysis::AddRunOutcome(model.analysis, setup.grid.dt, summary, output, &json);
   return json;
 }
 
@@ -108,39 +108,40 @@ nlohmann::json SummaryJson(const io::PlanModelFile& model, const io::PlanAnalysi
 
 int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
   RefuseOneDirectionOptions(options);
-  io::PlanModelFile model = io::LoadPlanModelFile(options.model);
+  model::PlanModelFile model = model::LoadPlanModelFile(options.model);
   model.analysis = ChooseIntegrator(options, model.analysis);
   const std::string output = ChooseResultsPath(options, model.output_file);
-  io::CheckPlanResultsPath(output);
+  analysis::CheckPlanResultsPath(output);
   std::vector<std::string> inputs{options.model};
   if (model.ground_motion) {
     inputs.push_back(model.ground_motion->h1.file);
     if (model.ground_motion->h2) inputs.push_back(model.ground_motion->h2->file);
   }
   io::CheckOutputs(inputs, {output});
-  io::PlanOverrides overrides;
+  analysis::PlanOverrides overrides;
   overrides.scale = options.scale;
   overrides.dt = options.dt;
   overrides.max_steps = options.max_steps;
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {
     overrides.free_vibration =
-        io::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
+        model::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
   }
-  const io::PlanAnalysisSetup setup = io::PreparePlanAnalysis(model, overrides);
+  const analysis::PlanAnalysisSetup setup = analysis::PreparePlanAnalysis(model, overrides);
   if (!options.json) PrintPreamble(model, setup, out);
   out.flush();
   integrators::ResponseHistory response;
-  const integrators::RunSummary summary = io::RunPlanAnalysis(model.analysis, setup, &response);
-  const io::PlanPeaks peaks = io::ComputePlanPeaks(setup, response);
-  io::WritePlanResults(output, model, setup, response, summary, peaks, ISOLAB_VERSION);
+  const integrators::RunSummary summary =
+      analysis::RunPlanAnalysis(model.analysis, setup, &response);
+  const analysis::PlanPeaks peaks = analysis::ComputePlanPeaks(setup, response);
+  analysis::WritePlanResults(output, model, setup, response, summary, peaks, ISOLAB_VERSION);
   if (options.json) {
     out << SummaryJson(model, setup, peaks, summary, output).dump(2) << "\n";
   } else {
     PrintSummary(model, setup, peaks, summary, response, output, out);
   }
   const std::string bearing =
-      io::IsolatorDisplacementWarning(peaks.largest_resultant.value, model.units);
+      analysis::IsolatorDisplacementWarning(peaks.largest_resultant.value, model.units);
   if (!bearing.empty()) fmt::print(stderr, "isolab: warning: {}\n", bearing);
   return ExitCode(summary, setup.grid.dt, output);
 }

@@ -9,17 +9,18 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/model_summary.h"
+#include "isolab/analysis/response_peaks.h"
+#include "isolab/analysis/result_series.h"
+#include "isolab/analysis/results_file.h"
+#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/run_report.h"
 #include "isolab/core/errors.h"
-#include "isolab/io/analysis_setup.h"
-#include "isolab/io/free_vibration_text.h"
-#include "isolab/io/model_file.h"
-#include "isolab/io/model_summary.h"
 #include "isolab/io/output_check.h"
-#include "isolab/io/plan_model_file.h"
-#include "isolab/io/response_peaks.h"
-#include "isolab/io/results_file.h"
-#include "isolab/io/run_analysis.h"
-#include "isolab/io/run_report.h"
+#include "isolab/model/free_vibration_text.h"
+#include "isolab/model/model_file.h"
+#include "isolab/model/plan_model_file.h"
 #include "plan_run_command.h"
 #include "plot_script.h"
 #include "run_report.h"
@@ -36,10 +37,11 @@ std::string Join(const std::vector<double>& values, std::size_t count, const cha
 }
 
 // The record as applied and the model summary, before the run: what the engineer checks first.
-void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, std::ostream& out) {
-  const io::UnitSystem& u = model.units;
-  const io::ModelSummary& m = setup.summary;
-  const double g = u.Convert(1.0, "g", io::dimension::kAcceleration);
+void PrintPreamble(const model::ModelFile& model, const analysis::AnalysisSetup& setup,
+                   std::ostream& out) {
+  const UnitSystem& u = model.units;
+  const analysis::ModelSummary& m = setup.summary;
+  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
   fmt::print(out, "== {} ==\n", model.path);
   if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
   if (!setup.record.path.empty()) {
@@ -47,9 +49,9 @@ void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, s
     fmt::print(
         out, "record: {} ({}, dt = {:g} s, in {} from {}), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
         r.path, r.format, r.dt, r.units, r.units_source == "header" ? "its header" : r.units_source,
-        r.scale, r.pga / g, r.pga, io::DescribeUnits(u, io::dimension::kAcceleration));
+        r.scale, r.pga / g, r.pga, DescribeUnits(u, dimension::kAcceleration));
   }
-  const double tonnes = m.total_mass * u.SiFactor(io::dimension::kMass) / 1000.0;
+  const double tonnes = m.total_mass * u.SiFactor(dimension::kMass) / 1000.0;
   fmt::print(out, "model: total weight {:.5g} {} ({:.5g} t)", m.total_weight, u.force(), tonnes);
   if (!m.fixed_base_periods.empty()) {
     fmt::print(out, "; fixed-base periods {} {}{}", Join(m.fixed_base_periods, 3, "{:.4g}"),
@@ -59,22 +61,21 @@ void PrintPreamble(const io::ModelFile& model, const io::AnalysisSetup& setup, s
     fmt::print(out, "; {} {:.4g} {} at {:g} {} (secant stiffness {:.4g} {})",
                setup.layout.stories.empty() ? "period" : "isolated period", m.isolated_period,
                u.time(), m.trial_displacement, u.length(), m.secant_stiffness,
-               io::DescribeUnits(u, io::dimension::kStiffness));
+               DescribeUnits(u, dimension::kStiffness));
   }
   fmt::print(out, "\n");
-  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u,
-            out);
+  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u, out);
 }
 
-void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysis,
-                  const io::AnalysisSetup& setup, const io::ResponsePeaks& peaks,
+void PrintSummary(const model::ModelFile& model, const model::AnalysisSection& analysis,
+                  const analysis::AnalysisSetup& setup, const analysis::ResponsePeaks& peaks,
                   const integrators::RunSummary& summary, const std::string& output,
                   std::ostream& out) {
-  const io::UnitSystem& u = model.units;
+  const UnitSystem& u = model.units;
   const std::string length = u.length(), force = u.force(), time = u.time();
-  const std::string acceleration = io::DescribeUnits(u, io::dimension::kAcceleration);
-  const double g = u.Convert(1.0, "g", io::dimension::kAcceleration);
-  const auto line = [&](const char* what, const io::Peak& peak, const std::string& unit,
+  const std::string acceleration = DescribeUnits(u, dimension::kAcceleration);
+  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
+  const auto line = [&](const char* what, const analysis::Peak& peak, const std::string& unit,
                         const std::string& extra = "") {
     fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {}{}\n", what, peak.value, unit,
                peak.time, time, extra);
@@ -103,14 +104,15 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
     }
     fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
                peaks.isolator_displacement_at_excitation_end, length);
-    const io::ModelSummary& m = setup.summary;
+    const analysis::ModelSummary& m = setup.summary;
     if (m.isolated && peaks.isolator_displacement.value > 0.0) {
-      const double k = io::SecantStiffness(model.isolation, peaks.isolator_displacement.value);
+      const double k =
+          analysis::SecantStiffness(model.isolation, peaks.isolator_displacement.value);
       if (k > 0.0) {
         fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
                    "period at the peak displacement",
                    2.0 * std::numbers::pi * std::sqrt(m.total_mass / k), time, k,
-                   io::DescribeUnits(u, io::dimension::kStiffness));
+                   DescribeUnits(u, dimension::kStiffness));
       }
     }
   }
@@ -127,15 +129,15 @@ void PrintSummary(const io::ModelFile& model, const io::AnalysisSection& analysi
 }
 
 // The model's output selection with the command line's options over it, checked before the run.
-io::OutputSelection ChooseOutput(const io::ModelFile& model, const RunOptions& options,
-                                 const io::AnalysisSetup& setup) {
-  io::OutputSelection selection = model.output;
+model::OutputSelection ChooseOutput(const model::ModelFile& model, const RunOptions& options,
+                                    const analysis::AnalysisSetup& setup) {
+  model::OutputSelection selection = model.output;
   if (options.every) selection.every = *options.every;
   if (options.summary_only) selection.summary_only = true;
   if (!options.quantities.empty()) {
     selection.quantities.clear();
     for (const std::string& name : options.quantities) {
-      const std::string error = io::UnknownQuantity(name);
+      const std::string error = model::UnknownQuantity(name);
       if (!error.empty()) throw InputError({"--quantities"}, error);
       selection.quantities.push_back(name);
     }
@@ -144,7 +146,7 @@ io::OutputSelection ChooseOutput(const io::ModelFile& model, const RunOptions& o
   if (!options.levels.empty()) {
     selection.levels.clear();
     for (const std::string& text : options.levels) {
-      const std::optional<int> level = io::ParseLevel(text);
+      const std::optional<int> level = model::ParseLevel(text);
       if (!level) {
         throw InputError({"--levels"}, fmt::format("'{}' is not a level (0 for the base, k for "
                                                    "floor k, or roof)",
@@ -155,7 +157,7 @@ io::OutputSelection ChooseOutput(const io::ModelFile& model, const RunOptions& o
     levels_key = "--levels";
   }
   // --fixed-base takes the base away: a level may exist in the model and not in this run.
-  io::SelectedDofs(selection, setup, levels_key);
+  analysis::SelectedDofs(selection, setup, levels_key);
   return selection;
 }
 
@@ -231,11 +233,11 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
   io::CheckInputFiles({options.model});
-  if (io::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
-  const io::ModelFile model = io::LoadModelFile(options.model);
+  if (model::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
+  const model::ModelFile model = model::LoadModelFile(options.model);
   const std::string output = ChooseResultsPath(options, model.output_file);
   // Everything that can be refused is refused before the run, not after it.
-  io::CheckResultsPath(output);
+  analysis::CheckResultsPath(output);
   std::vector<std::string> inputs = model.included_files;
   inputs.push_back(options.model);
   if (!options.record.empty()) {
@@ -252,11 +254,11 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     }
     CheckPlotScript("plot_result.py");
   }
-  io::RunOverrides overrides;
+  analysis::RunOverrides overrides;
   overrides.record = options.record;
   overrides.record_units = options.units;
   if (options.record_dt) {
-    overrides.record_dt = model.units.Convert(*options.record_dt, "s", io::dimension::kTime);
+    overrides.record_dt = model.units.Convert(*options.record_dt, "s", dimension::kTime);
   }
   overrides.scale = options.scale;
   overrides.dt = options.dt;
@@ -265,24 +267,24 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   overrides.trial_displacement = options.trial_displacement;
   if (!options.free_vibration.empty()) {
     overrides.free_vibration =
-        io::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
+        model::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
   }
-  const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
+  const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(model, overrides);
 
-  const io::AnalysisSection analysis = ChooseIntegrator(options, model.analysis);
-  const io::OutputSelection selection = ChooseOutput(model, options, setup);
+  const model::AnalysisSection analysis = ChooseIntegrator(options, model.analysis);
+  const model::OutputSelection selection = ChooseOutput(model, options, setup);
 
   if (!options.json) PrintPreamble(model, setup, out);
   out.flush();
   PrintWarnings(setup.summary.warnings);
-  const io::RecordedRun run =
-      io::RunAndRecord(model, analysis, setup, selection, output, ISOLAB_VERSION);
-  const io::ResponsePeaks& peaks = run.peaks;
+  const analysis::RecordedRun run =
+      analysis::RunAndRecord(model, analysis, setup, selection, output, ISOLAB_VERSION);
+  const analysis::ResponsePeaks& peaks = run.peaks;
   const integrators::RunSummary& summary = run.summary;
   const std::vector<std::string>& warnings = run.warnings;
   if (options.json) {
-    const io::RunDescription description{&model, &setup, &analysis, &summary, &peaks, "", {}};
-    out << io::RunReport(description, warnings, output).dump(2) << "\n";
+    const analysis::RunDescription description{&model, &setup, &analysis, &summary, &peaks, "", {}};
+    out << analysis::RunReport(description, warnings, output).dump(2) << "\n";
   } else {
     PrintSummary(model, analysis, setup, peaks, summary, output, out);
   }

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "isolab/io/analysis_setup.h"
+#include "isolab/analysis/analysis_setup.h"
 
 namespace CLI {
 class App;
@@ -27,10 +27,10 @@ struct RunOptions {
   std::string units;   // the record's acceleration unit; must agree with its header if it has one
   std::optional<double> record_dt;  // the record's sampling step (s), for a single column
   std::optional<double> scale;
-  std::optional<double> dt;                       // analysis step (model time unit)
-  std::int64_t max_steps = io::kDefaultMaxSteps;  // the most analysis steps
-  std::string free_vibration;                     // "auto" or a time (s); empty: the model's
-  std::optional<double> trial_displacement;       // (model length) for the isolated period
+  std::optional<double> dt;                             // analysis step (model time unit)
+  std::int64_t max_steps = analysis::kDefaultMaxSteps;  // the most analysis steps
+  std::string free_vibration;                           // "auto" or a time (s); empty: the model's
+  std::optional<double> trial_displacement;             // (model length) for the isolated period
   std::string output;  // .h5/.hdf5 or .csv; default: the model's output.file or <model stem>.h5
   std::optional<int> every;             // output every N steps, overriding output.every
   std::vector<std::string> quantities;  // overriding output.quantities

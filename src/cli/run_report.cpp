@@ -8,10 +8,11 @@
 
 namespace isolab::cli {
 
-io::AnalysisSection ChooseIntegrator(const RunOptions& options, io::AnalysisSection analysis) {
-  if (options.integrator == "ida") analysis.integrator = io::AnalysisSection::Integrator::kIda;
+model::AnalysisSection ChooseIntegrator(const RunOptions& options,
+                                        model::AnalysisSection analysis) {
+  if (options.integrator == "ida") analysis.integrator = model::AnalysisSection::Integrator::kIda;
   if (options.integrator == "newmark") {
-    analysis.integrator = io::AnalysisSection::Integrator::kNewmark;
+    analysis.integrator = model::AnalysisSection::Integrator::kNewmark;
   }
   if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
   if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
@@ -25,7 +26,7 @@ std::string ChooseResultsPath(const RunOptions& options, const std::string& mode
 }
 
 void PrintGrid(const integrators::TimeGrid& grid, double excitation_end, double free_vibration,
-               int dofs, const io::UnitSystem& units, std::ostream& out) {
+               int dofs, const UnitSystem& units, std::ostream& out) {
   const std::string time = units.time();
   fmt::print(out,
              "dt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
@@ -33,11 +34,11 @@ void PrintGrid(const integrators::TimeGrid& grid, double excitation_end, double 
              grid.dt, time, grid.steps, excitation_end, time, free_vibration, time, dofs);
 }
 
-void PrintRunOutcome(const io::AnalysisSection& analysis, const integrators::RunSummary& summary,
+void PrintRunOutcome(const model::AnalysisSection& analysis, const integrators::RunSummary& summary,
                      const std::string& output, std::ostream& out) {
   fmt::print(out, "energy balance error: {:.2e} of the input energy\n",
              summary.energy_balance_error);
-  if (analysis.integrator == io::AnalysisSection::Integrator::kIda) {
+  if (analysis.integrator == model::AnalysisSection::Integrator::kIda) {
     fmt::print(out,
                "IDA: {} steps, {} phase-change events, {} Jacobians, {} error-test failures; "
                "{:.3f} s\n",

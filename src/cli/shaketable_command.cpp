@@ -14,15 +14,15 @@
 #include <sstream>
 
 #include "building_measurement.h"
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/response_peaks.h"
+#include "isolab/analysis/results_file.h"
+#include "isolab/analysis/run_analysis.h"
 #include "isolab/core/errors.h"
-#include "isolab/io/analysis_setup.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/model_file.h"
 #include "isolab/io/output_check.h"
-#include "isolab/io/response_peaks.h"
-#include "isolab/io/results_file.h"
-#include "isolab/io/run_analysis.h"
+#include "isolab/model/model_file.h"
 
 namespace isolab::cli {
 namespace {
@@ -94,7 +94,7 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
 }
 
 void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
-  const io::ModelFile model = io::LoadModelFile(options.model);
+  const model::ModelFile model = model::LoadModelFile(options.model);
   const std::string results_path =
       !options.predict ? std::string()
       : !options.results.empty()
@@ -110,9 +110,9 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   inputs.push_back(options.model);
   inputs.push_back(options.data);
   io::CheckOutputs(inputs, outputs);
-  if (!results_path.empty()) io::CheckResultsPath(results_path);
+  if (!results_path.empty()) analysis::CheckResultsPath(results_path);
   const std::vector<double> masses = LevelMasses(model);
-  const io::UnitSystem& units = model.units;
+  const UnitSystem& units = model.units;
   const Measured m = ReadMeasured(options, units, masses.size());
   if (!options.quiet) {
     fmt::print(stderr, "isolab shaketable: {} samples, levels (slab to roof) = channels {}; {}\n",
@@ -132,7 +132,7 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   // Everything is composed before anything is written.
   std::string record_text;
   if (!options.record.empty() || options.predict) {
-    const double to_si = units.SiFactor(io::dimension::kAcceleration);
+    const double to_si = units.SiFactor(dimension::kAcceleration);
     record_text = "time (s),acceleration (m/s^2)\n";
     for (std::size_t k = 0; k < m.time.size(); ++k) {
       record_text += fmt::format("{:.6f},{:.9g}\n", m.time[k] - m.time.front(),
@@ -149,22 +149,22 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
                                    fmt::format("isolab_shaketable_{}.record.csv", ::getpid()))
                                       .string();
     io::WriteTextFileAtomically(record_path, [&](std::ostream& o) { o << record_text; });
-    std::optional<io::AnalysisSetup> prepared;
+    std::optional<analysis::AnalysisSetup> prepared;
     integrators::ResponseHistory response;
     integrators::RunSummary summary;
     try {
-      io::RunOverrides overrides;
+      analysis::RunOverrides overrides;
       overrides.record = record_path;
       overrides.scale = 1.0;
-      prepared.emplace(io::PrepareAnalysis(model, overrides));
-      const io::AnalysisSetup& setup = *prepared;
+      prepared.emplace(analysis::PrepareAnalysis(model, overrides));
+      const analysis::AnalysisSetup& setup = *prepared;
       if (setup.layout.isolation < 0) {
         throw InputError({options.model}, "--predict needs an isolation layer in the model");
       }
       if (!options.quiet) {
         fmt::print(stderr, "  predicting: {} steps of {} s\n", setup.grid.steps, setup.grid.dt);
       }
-      summary = io::RunAnalysis(model.analysis, setup, &response);
+      summary = analysis::RunAnalysis(model.analysis, setup, &response);
     } catch (...) {
       if (options.record.empty()) std::filesystem::remove(record_path);
       throw;
@@ -184,7 +184,7 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     }
     predicted_shear = BaseShear(predicted_a, masses);
     const std::string length = units.length(), force = units.force();
-    const std::string acceleration = io::DescribeUnits(units, io::dimension::kAcceleration);
+    const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
     rows = {
         {"peak isolator displacement", length, PeakAbs(m.displacement.front()),
          PeakAbs(predicted_u)},
@@ -192,8 +192,8 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
         {"peak roof absolute acceleration", acceleration, PeakAbs(m.acceleration.back()),
          PeakAbs(predicted_roof)},
     };
-    const io::ResponsePeaks peaks = io::ComputePeaks(*prepared, response);
-    io::WriteResultsFile(
+    const analysis::ResponsePeaks peaks = analysis::ComputePeaks(*prepared, response);
+    analysis::WriteResultsFile(
         results_path, {&model, &*prepared, &model.analysis, &summary, &peaks, ISOLAB_VERSION, {}},
         response);
   }
@@ -201,7 +201,7 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   const double nrmse_roof = options.predict ? Nrmse(m.acceleration.back(), predicted_roof) : 0.0;
   double total_mass = 0.0;
   for (const double mass : masses) total_mass += mass;
-  const double weight = total_mass * units.Convert(1.0, "g", io::dimension::kAcceleration);
+  const double weight = total_mass * units.Convert(1.0, "g", dimension::kAcceleration);
 
   if (!options.isolator.empty()) io::WriteCyclicTests(options.isolator, {isolator}, units);
   if (!options.record.empty() && !options.predict) {

@@ -12,11 +12,11 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/core/units.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/io/record.h"
 #include "isolab/io/spectrum_file.h"
-#include "isolab/io/units.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
 #include "isolab/spectra/spectrum_work.h"
@@ -316,14 +316,14 @@ struct Ground {
 };
 
 Ground ReadGround(const SpectrumOptions& options, const std::string& path,
-                  const io::UnitSystem& units) {
+                  const UnitSystem& units) {
   Ground ground;
   ground.record = io::ReadRecord(path, {options.units, options.dt.value_or(0), "--units", "--dt"});
   const io::Record& record = ground.record;
   ground.acceleration.dt = record.dt;
   double factor = 0.0;
   try {
-    factor = units.Convert(options.scale, record.units, io::dimension::kAcceleration);
+    factor = units.Convert(options.scale, record.units, dimension::kAcceleration);
   } catch (const std::invalid_argument& error) {
     throw InputError({path}, fmt::format("units '{}': {}", record.units, error.what()));
   }
@@ -391,10 +391,10 @@ void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
   const Inputs inputs = ParseInputs(options);
   double gravity = 0.0;
-  std::optional<io::UnitSystem> units;
+  std::optional<UnitSystem> units;
   try {
     units.emplace("N", options.length_unit, "s");
-    gravity = units->Convert(1.0, "g", io::dimension::kAcceleration);
+    gravity = units->Convert(1.0, "g", dimension::kAcceleration);
   } catch (const std::invalid_argument& error) {
     throw InputError({"--length-unit"}, fmt::format("'{}': {} (allowed: m, cm, mm, in, ft)",
                                                     options.length_unit, error.what()));

@@ -19,7 +19,7 @@ void Require(bool ok, const char* option, double value, const std::string& rule)
 
 // Every option of the kind asked for, before anything is generated: out of range, the filters or
 // the scaling produce NaN samples (a zero duration, a zero pulse period) or no motion at all.
-void CheckNoise(const io::FilteredNoiseSpec& s) {
+void CheckNoise(const analysis::FilteredNoiseSpec& s) {
   Require(s.pga > 0, "--pga", s.pga, "must be > 0");
   Require(s.duration > 0 && s.duration <= kMaxDuration, "--duration", s.duration,
           fmt::format("must be > 0 and at most {:g} s", kMaxDuration));
@@ -33,7 +33,7 @@ void CheckNoise(const io::FilteredNoiseSpec& s) {
           fmt::format("must be >= the envelope's rise time, {:g} s", s.rise_end));
 }
 
-void CheckPulse(const io::PulseSpec& s) {
+void CheckPulse(const analysis::PulseSpec& s) {
   Require(s.period >= 10 * s.dt, "--pulse-period", s.period,
           fmt::format("must be >= {:g} s, ten samples", 10 * s.dt));
   Require(s.pgv > 0, "--pgv", s.pgv, "must be > 0");
@@ -64,10 +64,10 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
 void RunSynthCommand(const SynthOptions& o) {
   if (o.kind == "pulse") {
     CheckPulse(o.pulse);
-    io::WriteAt2(io::PulseRecord(o.pulse), o.output);
+    analysis::WriteAt2(analysis::PulseRecord(o.pulse), o.output);
   } else {
     CheckNoise(o.noise);
-    io::WriteAt2(io::FilteredNoiseRecord(o.noise), o.output);
+    analysis::WriteAt2(analysis::FilteredNoiseRecord(o.noise), o.output);
   }
 }
 

@@ -1,10 +1,10 @@
 // `isolab synth`: writes a seeded synthetic ground motion (filtered white noise or a near-fault
-// pulse) as a PEER AT2 file; see include/isolab/io/synthetic_motion.h.
+// pulse) as a PEER AT2 file; see include/isolab/analysis/synthetic_motion.h.
 #pragma once
 
 #include <string>
 
-#include "isolab/io/synthetic_motion.h"
+#include "isolab/analysis/synthetic_motion.h"
 
 namespace CLI {
 class App;
@@ -15,8 +15,8 @@ namespace isolab::cli {
 struct SynthOptions {
   std::string kind = "noise";  // noise | pulse
   std::string output;
-  io::FilteredNoiseSpec noise;
-  io::PulseSpec pulse;
+  analysis::FilteredNoiseSpec noise;
+  analysis::PulseSpec pulse;
 };
 
 void RegisterSynthCommand(CLI::App& app, SynthOptions& options);

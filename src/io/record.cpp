@@ -17,7 +17,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
-#include "isolab/io/units.h"
+#include "isolab/core/units.h"
 #include "record_header.h"
 
 namespace isolab::io {

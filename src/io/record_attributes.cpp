@@ -1,4 +1,4 @@
-#include "record_attributes.h"
+#include "isolab/io/record_attributes.h"
 
 namespace isolab::io {
 

@@ -12,7 +12,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/hdf5_file.h"
-#include "record_attributes.h"
+#include "isolab/io/record_attributes.h"
 
 namespace isolab::io {
 namespace {

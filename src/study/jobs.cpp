@@ -17,18 +17,18 @@ std::vector<Job> ExpandJobs(std::size_t variants, std::size_t records, std::size
   return jobs;
 }
 
-std::vector<Job> ExpandJobs(const io::StudyFile& study) {
+std::vector<Job> ExpandJobs(const model::StudyFile& study) {
   return ExpandJobs(study.variants.size(), study.records.size(), study.scales.size());
 }
 
 std::string ScaleName(double scale) { return fmt::format("{}", scale); }
 
-std::string JobLabel(const io::StudyFile& study, const Job& job) {
+std::string JobLabel(const model::StudyFile& study, const Job& job) {
   return fmt::format("{} / {} x{}", study.variants[job.variant].name,
                      study.records[job.record].name, ScaleName(study.scales[job.scale]));
 }
 
-std::string JobProgressLine(const io::StudyFile& study, const Job& job, const JobResult& result,
+std::string JobProgressLine(const model::StudyFile& study, const Job& job, const JobResult& result,
                             std::size_t done, std::size_t total) {
   const std::string label = JobLabel(study, job);
   if (result.completed)
@@ -36,7 +36,7 @@ std::string JobProgressLine(const io::StudyFile& study, const Job& job, const Jo
   return fmt::format("[{}/{}] {} ... failed: {}", done, total, label, result.message);
 }
 
-std::string RunFileName(const io::StudyFile& study, const Job& job) {
+std::string RunFileName(const model::StudyFile& study, const Job& job) {
   return (std::filesystem::path("runs") / study.variants[job.variant].name /
           fmt::format("{}_x{}.h5", study.records[job.record].name,
                       ScaleName(study.scales[job.scale])))

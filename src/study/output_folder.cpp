@@ -10,7 +10,7 @@
 namespace isolab::study {
 
 std::string PrepareOutputFolder(const std::string& requested, const std::string& study_path,
-                                const io::StudyFile& study) {
+                                const model::StudyFile& study) {
   std::string folder = requested;
   if (folder.empty()) folder = study.output_directory;
   if (folder.empty()) folder = std::filesystem::path(study_path).stem().string();

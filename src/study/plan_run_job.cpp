@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "isolab/io/model_summary.h"
-#include "isolab/io/plan_analysis.h"
+#include "isolab/analysis/model_summary.h"
+#include "isolab/analysis/plan_analysis.h"
 #include "run_job_parts.h"
 
 namespace isolab::study {
@@ -14,27 +14,27 @@ namespace {
 
 // A component as the plan model's reader would hold it: the study's scale applied, the path
 // absolute (the model resolves relative ones against its own folder) and dt in its time unit.
-io::GroundMotionSection ForModel(io::GroundMotionSection component, double scale,
-                                 const io::StudyFile& study, const io::UnitSystem& model_units) {
+model::GroundMotionSection ForModel(model::GroundMotionSection component, double scale,
+                                    const model::StudyFile& study, const UnitSystem& model_units) {
   component.file = std::filesystem::absolute(component.file).lexically_normal().string();
   component.scale *= scale;
   if (component.dt > 0.0) component.dt = InModelTime(study, model_units, component.dt);
   return component;
 }
 
-std::string PairUnits(const io::PlanAnalysisSetup& setup) {
+std::string PairUnits(const analysis::PlanAnalysisSetup& setup) {
   if (setup.h1.units == setup.h2.units) return setup.h1.units;
   return fmt::format("{} / {}", setup.h1.units, setup.h2.units);
 }
 
 }  // namespace
 
-void RunPlanJob(const io::StudyFile& study, const Job& job, const std::string& output_directory,
+void RunPlanJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
                 const std::string& version, JobResult* result) {
-  io::PlanModelFile model = *study.variants[job.variant].plan;
-  const io::StudyRecord& record = study.records[job.record];
+  model::PlanModelFile model = *study.variants[job.variant].plan;
+  const model::StudyRecord& record = study.records[job.record];
   const double scale = study.scales[job.scale];
-  io::PlanGroundMotion motion = *record.pair;
+  model::PlanGroundMotion motion = *record.pair;
   motion.h1 = ForModel(motion.h1, scale, study, model.units);
   motion.h2 = ForModel(*motion.h2, scale, study, model.units);
   model.ground_motion = motion;
@@ -45,20 +45,21 @@ void RunPlanJob(const io::StudyFile& study, const Job& job, const std::string& o
       study.path, study.variants[job.variant].name, motion.h1.file, motion.h1.scale,
       motion.h2->file, motion.h2->scale, motion.angle);
 
-  io::PlanOverrides overrides;
+  analysis::PlanOverrides overrides;
   overrides.free_vibration = StudyFreeVibration(study, model.units);
-  const io::PlanAnalysisSetup setup = io::PreparePlanAnalysis(model, overrides);
-  const double g = model.units.Convert(1.0, "g", io::dimension::kAcceleration);
+  const analysis::PlanAnalysisSetup setup = analysis::PreparePlanAnalysis(model, overrides);
+  const double g = model.units.Convert(1.0, "g", dimension::kAcceleration);
   result->record_units = PairUnits(setup);
   result->pga = std::max(setup.h1.pga, setup.h2.pga) / g;
   integrators::ResponseHistory response;
-  const integrators::RunSummary summary = io::RunPlanAnalysis(model.analysis, setup, &response);
-  const io::PlanPeaks peaks = io::ComputePlanPeaks(setup, response);
-  io::WritePlanResults(PrepareRunFile(study, job, output_directory), model, setup, response,
-                       summary, peaks, version);
+  const integrators::RunSummary summary =
+      analysis::RunPlanAnalysis(model.analysis, setup, &response);
+  const analysis::PlanPeaks peaks = analysis::ComputePlanPeaks(setup, response);
+  analysis::WritePlanResults(PrepareRunFile(study, job, output_directory), model, setup, response,
+                             summary, peaks, version);
   result->file = RunFileName(study, job);
   const std::string bearing =
-      io::IsolatorDisplacementWarning(peaks.largest_resultant.value, model.units);
+      analysis::IsolatorDisplacementWarning(peaks.largest_resultant.value, model.units);
   if (!bearing.empty()) result->warnings.push_back(bearing);
   if (summary.ok()) {
     result->completed = true;

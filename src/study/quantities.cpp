@@ -24,7 +24,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The DOFs whose absolute acceleration is a floor's: the top of each story, or every DOF of a
 // model without stories (an SDOF's mass).
-std::vector<int> FloorDofs(const io::AnalysisSetup& setup) {
+std::vector<int> FloorDofs(const analysis::AnalysisSetup& setup) {
   std::vector<int> dofs;
   const auto& connections = setup.structure.connections();
   for (const int story : setup.layout.stories) dofs.push_back(connections[story].dof_j);
@@ -35,8 +35,8 @@ std::vector<int> FloorDofs(const io::AnalysisSetup& setup) {
 }
 
 // From the model's unit of `dimension` to the study's.
-double Conversion(const io::UnitSystem& model_units, const io::UnitSystem& study_units,
-                  io::Dimension dimension) {
+double Conversion(const UnitSystem& model_units, const UnitSystem& study_units,
+                  Dimension dimension) {
   return model_units.SiFactor(dimension) / study_units.SiFactor(dimension);
 }
 
@@ -57,7 +57,7 @@ std::vector<Quantity> StudyQuantities(bool plan) {
           Quantity::kFloorAcceleration, Quantity::kResidualIsolatorDisplacement};
 }
 
-std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units) {
+std::string QuantityUnit(Quantity quantity, const UnitSystem& units) {
   switch (quantity) {
     case Quantity::kIsolatorDisplacement:
     case Quantity::kResidualIsolatorDisplacement:
@@ -84,13 +84,13 @@ QuantityValues NoValues() {
   return values;
 }
 
-QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
+QuantityValues MeasureQuantities(const analysis::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
-                                 const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
-                                 const io::UnitSystem& study_units) {
-  const double length = Conversion(model_units, study_units, io::dimension::kLength);
-  const double force = Conversion(model_units, study_units, io::dimension::kForce);
-  const double g = model_units.Convert(1.0, "g", io::dimension::kAcceleration);
+                                 const analysis::ResponsePeaks& peaks,
+                                 const UnitSystem& model_units, const UnitSystem& study_units) {
+  const double length = Conversion(model_units, study_units, dimension::kLength);
+  const double force = Conversion(model_units, study_units, dimension::kForce);
+  const double g = model_units.Convert(1.0, "g", dimension::kAcceleration);
   const int rows = response.rows_written;
 
   QuantityValues values = NoValues();
@@ -110,8 +110,9 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
     if (!(height > 0.0)) continue;
     if (std::isnan(drift_ratio)) drift_ratio = 0.0;
     for (int row = 0; row < rows; ++row) {
-      drift_ratio = std::max(
-          drift_ratio, std::abs(io::StoryDrift(setup, response.displacement, row, s)) / height);
+      drift_ratio =
+          std::max(drift_ratio,
+                   std::abs(analysis::StoryDrift(setup, response.displacement, row, s)) / height);
     }
   }
   set(Quantity::kStoryDriftRatio, 100.0 * drift_ratio);
@@ -125,10 +126,10 @@ QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
   return values;
 }
 
-QuantityValues MeasurePlanQuantities(const io::PlanPeaks& peaks, const io::UnitSystem& model_units,
-                                     const io::UnitSystem& study_units) {
-  const double length = Conversion(model_units, study_units, io::dimension::kLength);
-  const double force = Conversion(model_units, study_units, io::dimension::kForce);
+QuantityValues MeasurePlanQuantities(const analysis::PlanPeaks& peaks,
+                                     const UnitSystem& model_units, const UnitSystem& study_units) {
+  const double length = Conversion(model_units, study_units, dimension::kLength);
+  const double force = Conversion(model_units, study_units, dimension::kForce);
   QuantityValues values = NoValues();
   const auto set = [&](Quantity q, double value) { values[static_cast<std::size_t>(q)] = value; };
   set(Quantity::kResultantIsolatorDisplacement, peaks.largest_resultant.value * length);

@@ -4,27 +4,26 @@
 #include <exception>
 #include <filesystem>
 
-#include "isolab/io/analysis_setup.h"
-#include "isolab/io/results_file.h"
-#include "isolab/io/run_analysis.h"
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/results_file.h"
+#include "isolab/analysis/run_analysis.h"
 #include "run_job_parts.h"
 
 namespace isolab::study {
 
-double InModelTime(const io::StudyFile& study, const io::UnitSystem& model_units, double time) {
-  return model_units.Convert(time * study.units.SiFactor(io::dimension::kTime), "s",
-                             io::dimension::kTime);
+double InModelTime(const model::StudyFile& study, const UnitSystem& model_units, double time) {
+  return model_units.Convert(time * study.units.SiFactor(dimension::kTime), "s", dimension::kTime);
 }
 
-std::optional<io::FreeVibration> StudyFreeVibration(const io::StudyFile& study,
-                                                    const io::UnitSystem& model_units) {
+std::optional<model::FreeVibration> StudyFreeVibration(const model::StudyFile& study,
+                                                       const UnitSystem& model_units) {
   if (!study.free_vibration) return std::nullopt;
-  io::FreeVibration free = *study.free_vibration;
+  model::FreeVibration free = *study.free_vibration;
   free.duration = InModelTime(study, model_units, free.duration);
   return free;
 }
 
-std::string PrepareRunFile(const io::StudyFile& study, const Job& job,
+std::string PrepareRunFile(const model::StudyFile& study, const Job& job,
                            const std::string& output_directory) {
   const std::filesystem::path file =
       std::filesystem::path(output_directory) / RunFileName(study, job);
@@ -33,13 +32,13 @@ std::string PrepareRunFile(const io::StudyFile& study, const Job& job,
   return file.string();
 }
 
-JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& output_directory,
+JobResult RunJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
                  const std::string& version) {
   const auto start = std::chrono::steady_clock::now();
   JobResult result;
   result.job = job.index;
-  const io::StudyVariant& variant = study.variants[job.variant];
-  const io::ModelFile& model = variant.model;
+  const model::StudyVariant& variant = study.variants[job.variant];
+  const model::ModelFile& model = variant.model;
   try {
     if (study.plan) {
       RunPlanJob(study, job, output_directory, version, &result);
@@ -47,8 +46,8 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return result;
     }
-    const io::StudyRecord& record = study.records[job.record];
-    io::RunOverrides overrides;
+    const model::StudyRecord& record = study.records[job.record];
+    analysis::RunOverrides overrides;
     overrides.record = record.path;
     overrides.record_units = record.units;
     if (record.dt > 0.0) overrides.record_dt = InModelTime(study, model.units, record.dt);
@@ -57,17 +56,18 @@ JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& 
     overrides.scale = record.scale * study.scales[job.scale];
     overrides.fixed_base = variant.fixed_base;
     overrides.free_vibration = StudyFreeVibration(study, model.units);
-    const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
+    const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(model, overrides);
     result.record_units = setup.record.units;
-    result.pga = setup.record.pga / model.units.Convert(1.0, "g", io::dimension::kAcceleration);
+    result.pga = setup.record.pga / model.units.Convert(1.0, "g", dimension::kAcceleration);
     integrators::ResponseHistory response;
-    const integrators::RunSummary summary = io::RunAnalysis(model.analysis, setup, &response);
+    const integrators::RunSummary summary = analysis::RunAnalysis(model.analysis, setup, &response);
     const std::string file = PrepareRunFile(study, job, output_directory);
-    const io::ResponsePeaks peaks = io::ComputePeaks(setup, response);
-    const io::RunDescription run{&model, &setup, &model.analysis, &summary, &peaks, version, {}};
-    io::WriteResultsFile(file, run, response);
+    const analysis::ResponsePeaks peaks = analysis::ComputePeaks(setup, response);
+    const analysis::RunDescription run{&model,  &setup, &model.analysis, &summary, &peaks,
+                                       version, {}};
+    analysis::WriteResultsFile(file, run, response);
     result.file = RunFileName(study, job);
-    result.warnings = io::RunWarnings(run);
+    result.warnings = analysis::RunWarnings(run);
     if (summary.ok()) {
       result.completed = true;
       result.values = MeasureQuantities(setup, response, peaks, model.units, study.units);

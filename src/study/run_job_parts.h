@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "isolab/io/study_file.h"
+#include "isolab/model/study_file.h"
 #include "isolab/study/job_result.h"
 #include "isolab/study/jobs.h"
 
@@ -13,21 +13,21 @@ namespace isolab::study {
 
 // `time` in the study's time unit (its building's), in the unit of `model_units`: a `model`
 // variant may use another.
-double InModelTime(const io::StudyFile& study, const io::UnitSystem& model_units, double time);
+double InModelTime(const model::StudyFile& study, const UnitSystem& model_units, double time);
 
 // The study's free vibration in the model's time unit; empty: the model's own.
-std::optional<io::FreeVibration> StudyFreeVibration(const io::StudyFile& study,
-                                                    const io::UnitSystem& model_units);
+std::optional<model::FreeVibration> StudyFreeVibration(const model::StudyFile& study,
+                                                       const UnitSystem& model_units);
 
 // <output_directory>/<RunFileName>, its folder made (a folder that cannot be made shows as the
 // file's write error).
-std::string PrepareRunFile(const io::StudyFile& study, const Job& job,
+std::string PrepareRunFile(const model::StudyFile& study, const Job& job,
                            const std::string& output_directory);
 
 // RunJob for a plan study's job (study.plan): `isolab run` on the variant's plan model with the
 // record pair as its excitation. `result` holds the job's index; the caller times it and turns
 // an exception into its failure.
-void RunPlanJob(const io::StudyFile& study, const Job& job, const std::string& output_directory,
+void RunPlanJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
                 const std::string& version, JobResult* result);
 
 }  // namespace isolab::study

@@ -26,10 +26,10 @@ QuantityValues Ratios(const QuantityValues& values, const QuantityValues& refere
 
 }  // namespace
 
-StudyShape ShapeOf(const io::StudyFile& study) {
+StudyShape ShapeOf(const model::StudyFile& study) {
   StudyShape shape;
-  for (const io::StudyVariant& variant : study.variants) shape.variants.push_back(variant.name);
-  for (const io::StudyRecord& record : study.records) {
+  for (const model::StudyVariant& variant : study.variants) shape.variants.push_back(variant.name);
+  for (const model::StudyRecord& record : study.records) {
     shape.records.push_back(record.name);
     shape.record_files.push_back(record.pair
                                      ? fmt::format("{} + {} at {:g} degrees", record.pair->h1.file,

@@ -79,8 +79,8 @@ TEST(Diagnose, NullCaseNamesNothing) {
 TEST(Diagnose, NullCaseWithFilteredNoiseNamesNothing) {
   identification::SyntheticTestOptions protocol = DiagnosisProtocol(0);
   protocol.noise = 0.0;
-  const io::ModelFile truth =
-      io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/diagnosis/null.yaml");
+  const model::ModelFile truth =
+      model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/diagnosis/null.yaml");
   for (unsigned seed = 1; seed <= 3; ++seed) {
     auto tests = identification::SyntheticTests(truth.isolation, protocol);
     std::mt19937_64 random(seed);

@@ -9,7 +9,7 @@
 
 #include "isolab/diagnosis/discrepancy.h"
 #include "isolab/identification/synthetic_tests.h"
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 
 namespace isolab::diagnosis {
 
@@ -29,8 +29,8 @@ inline identification::SyntheticTestOptions DiagnosisProtocol(unsigned seed,
   return protocol;
 }
 
-inline io::ModelFile HiddenEffectTruth(const HiddenEffectCase& c) {
-  return io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/diagnosis/" + c.file);
+inline model::ModelFile HiddenEffectTruth(const HiddenEffectCase& c) {
+  return model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/diagnosis/" + c.file);
 }
 
 inline identification::FitData HiddenEffectData(const HiddenEffectCase& c) {

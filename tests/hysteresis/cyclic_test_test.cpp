@@ -8,14 +8,14 @@
 #include <string>
 
 #include "isolab/core/errors.h"
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 #include "paper_tables.h"
 
 namespace isolab::hysteresis {
 namespace {
 
-io::ModelFile LoadPaperModel(const std::string& name) {
-  return io::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/" + name);
+model::ModelFile LoadPaperModel(const std::string& name) {
+  return model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/paper/" + name);
 }
 
 struct Table7Row {
@@ -28,7 +28,7 @@ class Table7 : public ::testing::TestWithParam<Table7Row> {};
 
 TEST_P(Table7, SecondCycleMatchesThePaper) {
   const Table7Row& row = GetParam();
-  const io::ModelFile model = LoadPaperModel(row.file);
+  const model::ModelFile model = LoadPaperModel(row.file);
   CyclicProtocol protocol;
   protocol.amplitude = 200.0;
   protocol.cycles = 2;
@@ -55,7 +55,7 @@ CycleSummary ThirdCycle(const ParallelAssembly& assembly, double amplitude) {
 }
 
 TEST(Table10, EnergyPerCycleIsTheSumOfFourFsTimesAmplitudeMinusYield) {
-  const io::ModelFile model = LoadPaperModel("table10_thm2_system.yaml");
+  const model::ModelFile model = LoadPaperModel("table10_thm2_system.yaml");
   for (const double ua : testing::kTestAmplitudes) {
     double closed_form = 0.0;
     for (const auto& component : testing::kTable10)
@@ -66,7 +66,7 @@ TEST(Table10, EnergyPerCycleIsTheSumOfFourFsTimesAmplitudeMinusYield) {
 }
 
 TEST(Table9, EachComponentDissipatesItsClosedForm) {
-  const io::ModelFile model = LoadPaperModel("table9_thm1_system.yaml");
+  const model::ModelFile model = LoadPaperModel("table9_thm1_system.yaml");
   ASSERT_EQ(model.isolation.size(), 9u);
   for (const double ua : testing::kTestAmplitudes) {
     const CycleSummary cycle = ThirdCycle(model.isolation, ua);
@@ -82,7 +82,7 @@ TEST(Table9, EachComponentDissipatesItsClosedForm) {
 }
 
 TEST(CyclicTest, PeakForceOfThm1HardIsKeTimesElasticDeformation) {
-  const io::ModelFile model = LoadPaperModel("table7_thm1_hard.yaml");
+  const model::ModelFile model = LoadPaperModel("table7_thm1_hard.yaml");
   CyclicProtocol protocol;
   protocol.amplitude = 200.0;
   const CyclicResult result = RunCyclicTest(model.isolation, protocol);

@@ -10,11 +10,11 @@
 #include <numbers>
 
 #include "integrators/chopra_chapter5.h"
+#include "isolab/analysis/analysis_setup.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/integrators/newmark.h"
-#include "isolab/io/analysis_setup.h"
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 #include "isolab/structure/shear_building.h"
 #include "reference_data.h"
 
@@ -91,14 +91,14 @@ TEST(Ida, AgreesWithNewmarkOnChopraCaseB) {
 
 TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
   const auto record = testing::ElCentroPath();
-  const io::ModelFile model =
-      io::LoadModelFile(ISOLAB_SOURCE_DIR "/models/buildings/five_story_table9.yaml");
-  io::RunOverrides overrides;
+  const model::ModelFile model =
+      model::LoadModelFile(ISOLAB_SOURCE_DIR "/models/buildings/five_story_table9.yaml");
+  analysis::RunOverrides overrides;
   overrides.record = record.string();
   overrides.scale = 1.0;
   overrides.dt = 0.001;
-  overrides.free_vibration = io::FreeVibration{false, 0.0};  // the record alone
-  const io::AnalysisSetup setup = io::PrepareAnalysis(model, overrides);
+  overrides.free_vibration = model::FreeVibration{false, 0.0};  // the record alone
+  const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(model, overrides);
   ResponseHistory ida, newmark;
   const RunSummary ida_summary =
       RunIda(setup.structure, setup.excitation, setup.grid, Tolerance(1e-8), &ida);

@@ -25,12 +25,12 @@
 #include "input_mutator.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/fit_spec_file.h"
-#include "isolab/io/model_file.h"
-#include "isolab/io/plan_model_file.h"
 #include "isolab/io/record.h"
 #include "isolab/io/shake_table_file.h"
-#include "isolab/io/study_file.h"
+#include "isolab/model/fit_spec_file.h"
+#include "isolab/model/model_file.h"
+#include "isolab/model/plan_model_file.h"
+#include "isolab/model/study_file.h"
 #include "own_test_file.h"
 
 namespace isolab::io {
@@ -199,7 +199,8 @@ TEST(ReaderFuzz, ModelFiles) {
   };
   const auto corpus = Corpus({"models", "tests/io/data", "tests/cli/data"}, ".yaml", is_model);
   ASSERT_GE(corpus.size(), 20u);
-  ExpectNoFindings(Fuzz(corpus, "model", [](const std::string& path) { LoadModelFile(path); }));
+  ExpectNoFindings(
+      Fuzz(corpus, "model", [](const std::string& path) { model::LoadModelFile(path); }));
 }
 
 TEST(ReaderFuzz, PlanModelFiles) {
@@ -207,7 +208,7 @@ TEST(ReaderFuzz, PlanModelFiles) {
   const auto corpus = Corpus({"models", "tests"}, ".yaml", is_plan);
   ASSERT_GE(corpus.size(), 1u);
   ExpectNoFindings(
-      Fuzz(corpus, "plan_model", [](const std::string& path) { LoadPlanModelFile(path); }));
+      Fuzz(corpus, "plan_model", [](const std::string& path) { model::LoadPlanModelFile(path); }));
 }
 
 TEST(ReaderFuzz, Records) {
@@ -251,14 +252,16 @@ TEST(ReaderFuzz, StudyFiles) {
   const auto is_study = [](const std::string& text) { return HasTopLevelKey(text, "variants"); };
   const auto corpus = Corpus({"models", "tests"}, ".yaml", is_study);
   ASSERT_GE(corpus.size(), 5u);
-  ExpectNoFindings(Fuzz(corpus, "study", [](const std::string& path) { LoadStudyFile(path); }));
+  ExpectNoFindings(
+      Fuzz(corpus, "study", [](const std::string& path) { model::LoadStudyFile(path); }));
 }
 
 TEST(ReaderFuzz, FitSpecifications) {
   const auto is_spec = [](const std::string& text) { return HasTopLevelKey(text, "components"); };
   const auto corpus = Corpus({"models", "tests"}, ".yaml", is_spec);
   ASSERT_GE(corpus.size(), 4u);
-  ExpectNoFindings(Fuzz(corpus, "fit_spec", [](const std::string& path) { LoadFitSpec(path); }));
+  ExpectNoFindings(
+      Fuzz(corpus, "fit_spec", [](const std::string& path) { model::LoadFitSpec(path); }));
 }
 
 TEST(ReaderFuzz, ShakeTableData) {

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "isolab/core/errors.h"
-#include "isolab/io/units.h"
+#include "isolab/core/units.h"
 #include "own_test_file.h"
 #include "reference_data.h"
 

@@ -5,36 +5,37 @@
 
 #include <cstdio>
 
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/run_analysis.h"
 #include "isolab/hysteresis/cyclic_test.h"
-#include "isolab/io/analysis_setup.h"
-#include "isolab/io/run_analysis.h"
-#include "isolab/io/study_file.h"
+#include "isolab/model/study_file.h"
 
 namespace isolab::study {
 namespace {
 
-io::StudyFile BearingStudy() {
-  return io::LoadStudyFile(ISOLAB_SOURCE_DIR "/models/studies/five_story_bearings.yaml");
+model::StudyFile BearingStudy() {
+  return model::LoadStudyFile(ISOLAB_SOURCE_DIR "/models/studies/five_story_bearings.yaml");
 }
 
-integrators::ResponseHistory RunVariant(const io::StudyVariant& variant,
-                                        const io::StudyRecord& record, io::AnalysisSection analysis,
+integrators::ResponseHistory RunVariant(const model::StudyVariant& variant,
+                                        const model::StudyRecord& record,
+                                        model::AnalysisSection analysis,
                                         integrators::RunSummary* summary, double scale = 0.75) {
-  io::RunOverrides overrides;
+  analysis::RunOverrides overrides;
   overrides.record = record.path;
   overrides.scale = scale;
-  const io::AnalysisSetup setup = io::PrepareAnalysis(variant.model, overrides);
+  const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(variant.model, overrides);
   integrators::ResponseHistory response;
-  *summary = io::RunAnalysis(analysis, setup, &response);
+  *summary = analysis::RunAnalysis(analysis, setup, &response);
   return response;
 }
 
 TEST(BearingStudy, EveryVariantClosesItsEnergyBalanceUnderEveryRecord) {
-  const io::StudyFile study = BearingStudy();
+  const model::StudyFile study = BearingStudy();
   ASSERT_EQ(study.variants.size(), 5u);
   ASSERT_EQ(study.records.size(), 3u);
-  for (const io::StudyVariant& variant : study.variants) {
-    for (const io::StudyRecord& record : study.records) {
+  for (const model::StudyVariant& variant : study.variants) {
+    for (const model::StudyRecord& record : study.records) {
       integrators::RunSummary summary;
       RunVariant(variant, record, variant.model.analysis, &summary);
       ASSERT_TRUE(summary.ok()) << variant.name << " / " << record.name << ": " << summary.message;
@@ -44,16 +45,16 @@ TEST(BearingStudy, EveryVariantClosesItsEnergyBalanceUnderEveryRecord) {
 }
 
 TEST(BearingStudy, IdaAgreesWithNewmarkOnTheHeatedLeadRubberAndTheFrictionPendulum) {
-  const io::StudyFile study = BearingStudy();
-  const io::StudyRecord* pulse = nullptr;
+  const model::StudyFile study = BearingStudy();
+  const model::StudyRecord* pulse = nullptr;
   for (const auto& record : study.records) {
     if (record.name == "pulse_tp2") pulse = &record;
   }
   ASSERT_NE(pulse, nullptr);
-  for (const io::StudyVariant& variant : study.variants) {
+  for (const model::StudyVariant& variant : study.variants) {
     if (variant.name != "lead_rubber" && variant.name != "friction_pendulum") continue;
-    io::AnalysisSection ida = variant.model.analysis;
-    ida.integrator = io::AnalysisSection::Integrator::kIda;
+    model::AnalysisSection ida = variant.model.analysis;
+    ida.integrator = model::AnalysisSection::Integrator::kIda;
     ida.ida.relative_tolerance = 1e-8;
     ida.ida.absolute_tolerance = 1e-8;
     integrators::RunSummary newmark_summary, ida_summary;
@@ -78,26 +79,26 @@ TEST(BearingStudy, IdaAgreesWithNewmarkOnTheHeatedLeadRubberAndTheFrictionPendul
 // laws' closed forms were solved for them to four digits), and every variant closes its energy
 // balance under every record.
 TEST(BearingStudy, BncsVariantsMatchTheMeasuredIsolatorAtTheDesignDisplacement) {
-  const io::StudyFile study =
-      io::LoadStudyFile(ISOLAB_SOURCE_DIR "/models/studies/bncs_bearings.yaml");
+  const model::StudyFile study =
+      model::LoadStudyFile(ISOLAB_SOURCE_DIR "/models/studies/bncs_bearings.yaml");
   ASSERT_EQ(study.variants.size(), 5u);
   ASSERT_EQ(study.variants[study.reference].name, "measured_diagnosed");
   hysteresis::CyclicProtocol protocol;
   protocol.amplitude = 110.0;
   protocol.period = 2.5;
   protocol.cycles = 3;
-  const auto third_cycle = [&](const io::StudyVariant& variant) {
+  const auto third_cycle = [&](const model::StudyVariant& variant) {
     return hysteresis::RunCyclicTest(variant.model.isolation, protocol).cycles.back();
   };
   const hysteresis::CycleSummary measured = third_cycle(study.variants.front());
   EXPECT_NEAR(measured.peak_force / 110.0, 3.7815, 1e-4);  // K_eff, as the file states
   EXPECT_NEAR(measured.dissipated, 38535.0, 1.0);          // W_d
-  for (const io::StudyVariant& variant : study.variants) {
+  for (const model::StudyVariant& variant : study.variants) {
     if (variant.name == "measured_diagnosed" || variant.name == "measured_thm1") continue;
     const hysteresis::CycleSummary designed = third_cycle(variant);
     EXPECT_NEAR(designed.peak_force / measured.peak_force, 1.0, 1e-3) << variant.name;
     EXPECT_NEAR(designed.dissipated / measured.dissipated, 1.0, 2e-3) << variant.name;
-    for (const io::StudyRecord& record : study.records) {
+    for (const model::StudyRecord& record : study.records) {
       integrators::RunSummary summary;
       RunVariant(variant, record, variant.model.analysis, &summary, study.scales.back());
       ASSERT_TRUE(summary.ok()) << variant.name << " / " << record.name << ": " << summary.message;

@@ -24,7 +24,7 @@ TEST(Jobs, VariantThenRecordThenScale) {
 }
 
 TEST(Jobs, LabelsAndRunFilesNameVariantRecordAndScale) {
-  io::StudyFile study;
+  model::StudyFile study;
   study.variants.resize(2);
   study.variants[0].name = "thm1";
   study.variants[1].name = "fixed";

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/core/units.h"
 #include "isolab/identification/cyclic_data.h"
-#include "isolab/io/units.h"
 
 namespace isolab::io {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "isolab/io/units.h"
+#include "isolab/core/units.h"
 
 namespace isolab::io {
 

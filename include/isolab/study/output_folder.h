@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "isolab/io/study_file.h"
+#include "isolab/model/study_file.h"
 
 namespace isolab::study {
 
@@ -12,6 +12,6 @@ namespace isolab::study {
 // Every MPI process calls it (workers write their runs there too), so a folder that cannot be
 // made is bad input on every rank alike.
 std::string PrepareOutputFolder(const std::string& requested, const std::string& study_path,
-                                const io::StudyFile& study);
+                                const model::StudyFile& study);
 
 }  // namespace isolab::study

@@ -25,11 +25,11 @@
 #include <string_view>
 #include <vector>
 
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/plan_analysis.h"
+#include "isolab/analysis/response_peaks.h"
+#include "isolab/core/units.h"
 #include "isolab/integrators/response.h"
-#include "isolab/io/analysis_setup.h"
-#include "isolab/io/plan_analysis.h"
-#include "isolab/io/response_peaks.h"
-#include "isolab/io/units.h"
 
 namespace isolab::study {
 
@@ -62,20 +62,20 @@ const QuantityInfo& InfoOf(Quantity quantity);
 std::vector<Quantity> StudyQuantities(bool plan);
 
 // "mm", "kN", "%", "g": the unit quantity values are in, for a study in `units`.
-std::string QuantityUnit(Quantity quantity, const io::UnitSystem& units);
+std::string QuantityUnit(Quantity quantity, const UnitSystem& units);
 
 // All NaN: nothing measured.
 QuantityValues NoValues();
 
 // `model_units` are the run's model's, `study_units` the study's; `peaks` are the run's
-// (io::ComputePeaks).
-QuantityValues MeasureQuantities(const io::AnalysisSetup& setup,
+// (analysis::ComputePeaks).
+QuantityValues MeasureQuantities(const analysis::AnalysisSetup& setup,
                                  const integrators::ResponseHistory& response,
-                                 const io::ResponsePeaks& peaks, const io::UnitSystem& model_units,
-                                 const io::UnitSystem& study_units);
+                                 const analysis::ResponsePeaks& peaks,
+                                 const UnitSystem& model_units, const UnitSystem& study_units);
 
-// A plan run's quantities from its peaks (io::ComputePlanPeaks), the others NaN.
-QuantityValues MeasurePlanQuantities(const io::PlanPeaks& peaks, const io::UnitSystem& model_units,
-                                     const io::UnitSystem& study_units);
+// A plan run's quantities from its peaks (analysis::ComputePlanPeaks), the others NaN.
+QuantityValues MeasurePlanQuantities(const analysis::PlanPeaks& peaks,
+                                     const UnitSystem& model_units, const UnitSystem& study_units);
 
 }  // namespace isolab::study

@@ -7,14 +7,14 @@
 
 #include <string>
 
-#include "isolab/io/study_file.h"
+#include "isolab/model/study_file.h"
 #include "isolab/study/job_result.h"
 #include "isolab/study/jobs.h"
 
 namespace isolab::study {
 
 // `version` is written into the results file.
-JobResult RunJob(const io::StudyFile& study, const Job& job, const std::string& output_directory,
+JobResult RunJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
                  const std::string& version);
 
 }  // namespace isolab::study

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "isolab/io/study_file.h"
+#include "isolab/model/study_file.h"
 #include "isolab/study/job_result.h"
 
 namespace isolab::study {
@@ -24,7 +24,7 @@ struct StudyShape {
   std::vector<Quantity> quantities = StudyQuantities(false);
 };
 
-StudyShape ShapeOf(const io::StudyFile& study);
+StudyShape ShapeOf(const model::StudyFile& study);
 
 struct Statistic {
   std::size_t completed = 0;  // runs over which mean and max are taken

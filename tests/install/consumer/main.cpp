@@ -4,14 +4,14 @@
 #include <cstdio>
 
 #include "isolab/hysteresis/cyclic_test.h"
-#include "isolab/io/model_file.h"
+#include "isolab/model/model_file.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: isolab_consumer models/paper/table7_thm1_hard.yaml\n");
     return 2;
   }
-  const isolab::io::ModelFile model = isolab::io::LoadModelFile(argv[1]);
+  const isolab::model::ModelFile model = isolab::model::LoadModelFile(argv[1]);
   const isolab::hysteresis::CyclicResult result =
       isolab::hysteresis::RunCyclicTest(model.isolation, *model.cyclic);
   const double dissipated = result.cycles.at(1).dissipated;

@@ -1,0 +1,56 @@
+// The time histories of a run, described once for every results format (HDF5 datasets, CSV
+// columns): each series has a name (its HDF5 path), units, column names (none for a vector) and
+// fills its values for one row of the response. The files' writers (results_file.h,
+// results_writer.h) and the Python module's arrays use it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/response_peaks.h"
+#include "isolab/integrators/response.h"
+#include "isolab/model/model_file.h"
+#include "isolab/model/output_selection.h"
+
+namespace isolab::analysis {
+
+struct Series {
+  std::string name;                  // "time", "displacement", "isolator/force", ...
+  std::string units;                 // "" for none
+  std::vector<std::string> columns;  // empty: a vector (one value per row)
+  // Writes the width() values of `row` to `out`.
+  std::function<void(const integrators::ResponseRow& row, double* out)> fill;
+
+  std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
+};
+
+// A peak as the files name it ("isolator_displacement": /peaks/<name> in HDF5, a '#' line in CSV).
+struct NamedPeak {
+  const char* name;
+  const Peak* peak;
+  Dimension dimension;
+};
+// The peaks that apply to the run's structure (isolator ones with isolation, story ones for a
+// building), in file order.
+std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks);
+
+// The selection's levels as DOF indices of `setup` (ascending, no repeats; every DOF when none
+// are selected). Throws InputError({key}, ...) for a level the structure does not have.
+std::vector<int> SelectedDofs(const model::OutputSelection& selection, const AnalysisSetup& setup,
+                              const std::string& key);
+
+// What a selection writes, for the files' description of it: the quantities' names and the
+// selected levels' DOF names (both empty when it is summary-only).
+std::vector<std::string> RecordedQuantities(const model::OutputSelection& selection);
+std::vector<std::string> RecordedLevels(const model::OutputSelection& selection,
+                                        const AnalysisSetup& setup);
+
+// The series `selection` records of a run of `setup`, in file order (layout in results_file.h);
+// none when it is summary-only. Throws InputError({"output.levels"}, ...) for a level the
+// structure does not have.
+std::vector<Series> ResultSeries(const model::ModelFile& model, const AnalysisSetup& setup,
+                                 const model::OutputSelection& selection);
+
+}  // namespace isolab::analysis

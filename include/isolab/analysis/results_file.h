@@ -1,0 +1,71 @@
+// Results of a time-history run, in the format the file's extension names:
+//
+// .h5 / .hdf5 (docs/results.md has every dataset with its shape, units and meaning; n = output
+// rows; every numeric dataset has a "units" attribute, every 2-D one a "columns" attribute
+// naming its columns; the histories are those the output selection records, output_selection.h,
+// with only the selected levels' columns):
+//   /time (n), /ground_acceleration (n, with a record)
+//   /displacement /velocity /acceleration (n x dofs), relative to the ground; columns "base",
+//     "floor 1", ... (an SDOF: "mass")
+//   /absolute_acceleration (n x dofs)
+//   /connection_force (n x connections): columns "isolation", the stories' names
+//   /isolator/displacement /isolator/force (n), /isolator/component_force (n x components)
+//   /story/drift /story/drift_ratio (%) /story/shear (n x stories), /story/height (stories)
+//   /energy/{input,kinetic,damping,elastic,hysteretic} (n)
+//   /model_summary/...: total mass and weight, fixed-base periods, isolated period at the
+//     trial displacement, the record's PGA (model_summary.h)
+//   /peaks/<name>: each peak of response_peaks.h (scalar, "units", attributes "time" and,
+//     where it has one, "index"), /final_energy/<term>: the energies at the end (scalars)
+//   /model_yaml: the model file's text
+//   attributes of /: the record (path, format, units and where they came from, step, scale,
+//     PGA), the units, the integrator and its counts (integers), termination and message, the
+//     energy balance error, the excitation's end, the free vibration, the residual isolator
+//     displacement, warnings, the isolab version; the selection: output_every (analysis steps
+//     between rows), output_quantities, output_levels (the DOF names), summary_only (0 or 1).
+// .csv: the same time histories as columns named "<series>[/<column>] [<units>]", e.g.
+//   "time [s]", "displacement/floor 1 [mm]", "isolator/component_force/c1 [kN]", after '#'
+//   comment lines with the model, the record (units, scale, PGA), the selection, the peaks, the
+//   summary and the warnings (pandas: read_csv(path, comment="#")); summary-only: the comment
+//   lines alone.
+//
+// Story shear and base shear are the connections' (spring) forces; the superstructure's viscous
+// forces are not in them. A run that failed keeps its rows up to the failure, with termination
+// "failed" and the message. Files are written atomically (atomic_file.h); results_writer.h
+// streams them while the run advances.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/response_peaks.h"
+#include "isolab/integrators/response.h"
+#include "isolab/model/model_file.h"
+#include "isolab/model/output_selection.h"
+
+namespace isolab::analysis {
+
+struct RunDescription {
+  const model::ModelFile* model = nullptr;
+  const AnalysisSetup* setup = nullptr;
+  const model::AnalysisSection* analysis = nullptr;
+  const integrators::RunSummary* summary = nullptr;
+  const ResponsePeaks* peaks = nullptr;  // of every step of the run
+  std::string version;
+  model::OutputSelection selection;  // what the file records
+};
+
+// Throws InputError({path}, ...) when the extension is not .h5, .hdf5 or .csv, or the path cannot
+// be an output (atomic_file.h). Commands call it before the analysis.
+void CheckResultsPath(const std::string& path);
+
+// Writes a run held in memory: the history's rows as they are (its output_every is recorded;
+// run.selection.every is not applied again). Throws InputError when the file cannot be written
+// (or CheckResultsPath fails).
+void WriteResultsFile(const std::string& path, const RunDescription& run,
+                      const integrators::ResponseHistory& history);
+
+// Every warning about the model and the run (model_summary.h), for printing and the files.
+std::vector<std::string> RunWarnings(const RunDescription& run);
+
+}  // namespace isolab::analysis

@@ -1,0 +1,57 @@
+// A results file written while the run advances: a ResponseObserver that keeps every N-th row of
+// the selected series (output_selection.h) in a bounded buffer and writes it out whenever the
+// buffer fills (HDF5: appended to chunked, extendable datasets; CSV: to an anonymous temporary
+// file, since its header comes before the rows). Memory stays the buffer's whatever the record's
+// length or the building's size. Finish writes the summary and makes the file appear at once
+// (atomic_file.h); a writer destroyed without Finish leaves nothing behind.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "isolab/analysis/results_file.h"
+#include "isolab/integrators/response.h"
+
+namespace isolab::analysis {
+
+struct Series;  // one history of the file (private to io)
+
+class ResultsWriter final : public integrators::ResponseObserver {
+ public:
+  // Rows buffered when none are asked for: as many as fit in this many bytes, at least one.
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+
+  // Creates `path` (its extension chooses the format, results_file.h) under a temporary name for
+  // the run `run` describes (its summary and peaks are not read), recording run.selection.
+  // Throws InputError for a bad path or a level the structure does not have.
+  ResultsWriter(const std::string& path, const RunDescription& run, std::size_t buffer_rows = 0);
+  ~ResultsWriter() override;
+  ResultsWriter(const ResultsWriter&) = delete;
+  ResultsWriter& operator=(const ResultsWriter&) = delete;
+
+  // Keeps the row if its step is a multiple of run.selection.every.
+  void Observe(const integrators::ResponseRow& row) override;
+  // Writes what is buffered, the summary, peaks and attributes, and renames the file to its path.
+  // Throws InputError when the file cannot be written.
+  void Finish(const integrators::RunSummary& summary, const ResponsePeaks& peaks);
+
+  // The rows written so far (and buffered), and the rows the buffer holds.
+  int rows() const { return rows_; }
+  std::size_t buffer_rows() const { return buffer_rows_; }
+
+  class Sink;  // the format (results_sink.h)
+
+ private:
+  void Flush();
+
+  RunDescription run_;
+  std::vector<Series> series_;
+  std::unique_ptr<Sink> sink_;
+  std::size_t buffer_rows_ = 0;
+  std::vector<std::vector<double>> buffers_;  // per series: buffer_rows_ x width, row-major
+  std::size_t buffered_ = 0;
+  int rows_ = 0;
+};
+
+}  // namespace isolab::analysis

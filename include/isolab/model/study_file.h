@@ -1,0 +1,94 @@
+// Study files (YAML) for `isolab compare`: one building, several isolator variants, a suite of
+// records at several scale factors. Paths are relative to the study file.
+//
+//   description: free text
+//   building: ../buildings/five_story_table9.yaml   # a model file with a structure section;
+//                                                   # its units are the study's
+//   variants:                                       # at least one; names are unique
+//     - {name: thm1, isolation: {file: ../paper/table9_thm1_system.yaml}}
+//     - name: bilinear                              # components in the building's units
+//       isolation: {components: [{name: b, type: bhm2, ke: 8, kh: 0.8, fs: 18}]}
+//     - {name: as_built}                            # the building's own isolation
+//     - {name: other, model: other_building.yaml}   # a whole model file instead of the building
+//     - {name: fixed, fixed_base: true}             # the building without isolation
+//   reference: thm1                                 # ratios are to this variant; default: first
+//   records:                                        # files or globs (* ? [..] in the file
+//     - ../../ground_motions/*.at2                  # name), each glob sorted by name; units
+//     - {file: extra/rec.txt, units: gal, dt: 0.01, scale: 1.2}   # and step from each file's
+//                                                   # header, else from its entry (never the
+//                                                   # building's ground_motion); an entry's
+//                                                   # scale multiplies every study scale
+//   scales: [0.5, 1.0, 1.5]                         # replace the building's ground_motion.scale
+//   output: {directory: results}                    # per-run HDF5 and summary; relative to the
+//                                                   # working directory, like a model's output
+//   free_vibration: auto                            # after each record (or a time, 0 for none);
+//                                                   # default: each model's analysis section
+//
+// The building's analysis section (dt, duration, integrator) applies to every run; a `model`
+// variant brings its own. Every error is an InputError "file:line:col: key path: what (allowed)".
+//
+// Plan studies (issue #15): when the building is a plan model (plan_model_file.h), every variant
+// is one too -- the building itself ({name}), the building with every isolator on the variant's
+// `isolation` laws as coupled laws ({name, isolation}, in the building's units), or another plan
+// model ({name, model}); `fixed_base` is a one-direction variant's and a one-direction model
+// among plan ones is refused. Their records are pairs, written as a plan model's
+// excitation.ground_motion is:
+//   records:
+//     - {h1: {file: a_h1.at2, scale: 1.0}, h2: {file: a_h2.at2}, angle: 30, name: a_at30}
+// (units, dt and scale per component as there; angle in degrees from x to H1, default 0; name
+// default: h1's file stem). Both files are read when the study loads: a pair whose steps or
+// lengths differ is refused then, as is a single record in a plan study or a pair in a
+// one-direction one. Each run is what `isolab run` does on the variant's plan model with the
+// pair in its excitation, each component's scale times the study's.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "isolab/core/units.h"
+#include "isolab/model/model_file.h"
+#include "isolab/model/plan_model_file.h"
+
+namespace isolab::model {
+
+struct StudyVariant {
+  std::string name;
+  ModelFile model;  // what runs: the building with this variant's isolation, or its own model
+  bool fixed_base = false;
+  std::optional<PlanModelFile> plan;  // a plan study's variant (then `model` is empty)
+};
+
+struct StudyRecord {
+  std::string name;    // the file's stem, unique within a study
+  std::string path;    // as found (relative to the working directory or absolute)
+  std::string units;   // given by its entry; empty: from the file's header
+  double dt = 0.0;     // (the building's time unit) given by its entry; 0: from the file
+  double scale = 1.0;  // multiplies the study's scales
+  std::string entry;   // "study.yaml:12:5: records[2]", for messages about what it gives
+  // A plan study's pair (files resolved like `path`, dt in the study's time unit); `path` is H1's.
+  std::optional<PlanGroundMotion> pair;
+};
+
+struct StudyFile {
+  std::string path;
+  std::string description;
+  std::string building_path;
+  bool plan = false;                  // the building and every variant are plan models
+  UnitSystem units{"kN", "mm", "s"};  // the building's: summary quantities are in these
+  std::vector<StudyVariant> variants;
+  std::size_t reference = 0;  // index into variants
+  std::vector<StudyRecord> records;
+  std::vector<double> scales;
+  std::string output_directory;                 // empty: not given
+  std::optional<FreeVibration> free_vibration;  // (the building's time unit); empty: the models'
+};
+
+// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types, a
+// variant or building model that does not load, a glob that matches nothing, a missing record
+// file, two records with the same name, or an unknown reference. Records are only opened when
+// a run reads them, so a record that exists but cannot be read fails its runs, not the study.
+StudyFile LoadStudyFile(const std::string& path);
+
+}  // namespace isolab::model

@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Prints which area of isolab includes which, and fails on an include the layering forbids.
+
+Areas depend one way (docs/architecture.md):
+
+  core <- hysteresis <- structure <- integrators <- spectra
+       <- identification <- diagnosis
+       <- io (formats) <- model (schemas) <- analysis <- study <- cli, python
+
+An area may include its own headers and those of the areas listed for it in ALLOWED, nothing
+else: a lower area never sees a higher one (hysteresis knows no YAML, no files, no integrator).
+Third-party headers are checked too where an area must not see them (yaml-cpp outside model,
+HDF5 outside io and analysis, MPI outside study, SUNDIALS outside integrators).
+
+Usage: check_layering.py [ROOT]   (ROOT: the repository; default this script's parent's parent)
+Exit status 1 when an include breaks the rules, each printed as FILE:LINE: what and why.
+"""
+import pathlib
+import re
+import sys
+
+ALLOWED = {
+    "core": set(),
+    "hysteresis": {"core"},
+    "structure": {"core", "hysteresis"},
+    "integrators": {"core", "hysteresis", "structure"},
+    "spectra": {"core", "hysteresis", "structure", "integrators"},
+    "identification": {"core", "hysteresis"},
+    "diagnosis": {"core", "hysteresis", "identification"},
+    "io": {"core", "hysteresis", "structure", "integrators", "spectra", "identification"},
+    "model": {"core", "hysteresis", "structure", "integrators", "identification", "io"},
+    "analysis": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
+                 "diagnosis", "io", "model"},
+    "study": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
+              "diagnosis", "io", "model", "analysis"},
+}
+ALLOWED["cli"] = set(ALLOWED) - {"cli"}
+ALLOWED["python"] = set(ALLOWED) - {"cli", "python"}
+
+# Third-party headers and the only areas that may include them.
+THIRD_PARTY = [
+    (re.compile(r"^yaml-cpp/"), {"model", "python"}),
+    (re.compile(r"^(hdf5|H5)"), {"io", "analysis"}),
+    (re.compile(r"^mpi\.h$"), {"study"}),
+    (re.compile(r"^(ida|idas|sundials|sunlinsol|sunmatrix|nvector)/"), {"integrators"}),
+    (re.compile(r"^(klu|suitesparse/)"), {"integrators"}),
+    (re.compile(r"^pagmo/"), {"identification"}),
+]
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^">]+)[">]')
+
+
+def area_of(path: pathlib.Path, root: pathlib.Path):
+    parts = path.relative_to(root).parts
+    if parts[0] == "src" and len(parts) > 2:
+        return parts[1]
+    if parts[:2] == ("include", "isolab") and len(parts) > 3:
+        return parts[2]
+    if parts[:2] == ("python", "src"):
+        return "python"
+    return None
+
+
+def main() -> int:
+    root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parent.parent)
+    root = root.resolve()
+    uses = {}
+    problems = []
+    files = sorted(p for folder in ("src", "include/isolab", "python/src")
+                   for p in (root / folder).rglob("*") if p.suffix in (".h", ".cpp"))
+    for path in files:
+        area = area_of(path, root)
+        if area is None:
+            continue
+        if area not in ALLOWED:
+            problems.append(f"{path.relative_to(root)}: area '{area}' is not in the layering table")
+            continue
+        for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+            match = INCLUDE.match(line)
+            if not match:
+                continue
+            header = match.group(1)
+            where = f"{path.relative_to(root)}:{number}"
+            if header.startswith("isolab/"):
+                target = header.split("/")[1]
+                if target == area:
+                    continue
+                uses.setdefault(area, set()).add(target)
+                if target not in ALLOWED[area]:
+                    problems.append(f"{where}: {area} includes {header}: {target} is above it "
+                                    f"(or beside it); {area} may include "
+                                    f"{', '.join(sorted(ALLOWED[area])) or 'nothing of isolab'}")
+                continue
+            for pattern, areas in THIRD_PARTY:
+                if pattern.search(header) and area not in areas:
+                    problems.append(f"{where}: {area} includes <{header}>, which only "
+                                    f"{', '.join(sorted(areas))} may include")
+    for area in ALLOWED:
+        print(f"{area:15} includes {', '.join(sorted(uses.get(area, ()))) or '-'}")
+    for problem in problems:
+        print(problem)
+    if problems:
+        print(f"check_layering: {len(problems)} include(s) break the layering", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,69 @@
+#include "isolab/analysis/cyclic_campaign.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "isolab/core/errors.h"
+#include "isolab/identification/synthetic_tests.h"
+
+namespace isolab::analysis {
+
+using hysteresis::CyclicProtocol;
+
+std::vector<CyclicProtocol> CyclicProtocols(const model::ModelFile& model,
+                                            const CyclicRequest& request) {
+  if (model.isolation.size() == 0) {
+    throw InputError({model.path}, "no isolation section: nothing to test cyclically");
+  }
+  CyclicProtocol base = model.cyclic.value_or(CyclicProtocol{});
+  if (request.cycles) base.cycles = *request.cycles;
+  if (request.steps_per_cycle) base.steps_per_cycle = *request.steps_per_cycle;
+  std::vector<double> amplitudes = request.amplitudes;
+  if (amplitudes.empty()) {
+    if (!model.cyclic) {
+      throw InputError({model.path}, fmt::format("no amplitude: give {} or a 'cyclic:' section",
+                                                 request.amplitude_option));
+    }
+    amplitudes.push_back(model.cyclic->amplitude);
+  }
+  const std::vector<double> periods =
+      request.periods.empty() ? std::vector<double>{base.period} : request.periods;
+  std::vector<CyclicProtocol> protocols;
+  for (const double period : periods) {
+    for (const double amplitude : amplitudes) {
+      CyclicProtocol protocol = base;
+      protocol.amplitude = amplitude;
+      protocol.period = period;
+      try {
+        protocol.Validate();
+      } catch (const InvalidParameter& error) {
+        throw InputError({request.where}, error.violation().Describe());
+      }
+      protocols.push_back(protocol);
+    }
+  }
+  return protocols;
+}
+
+std::vector<hysteresis::CyclicResult> RunCyclicCampaign(const model::ModelFile& model,
+                                                        const CyclicRequest& request) {
+  std::vector<hysteresis::CyclicResult> runs;
+  std::vector<hysteresis::LawState> state(model.isolation.size());
+  for (const CyclicProtocol& protocol : CyclicProtocols(model, request)) {
+    if (!request.sequential) std::fill(state.begin(), state.end(), hysteresis::LawState{});
+    runs.push_back(hysteresis::RunCyclicTest(model.isolation, protocol, state));
+  }
+  return runs;
+}
+
+std::vector<identification::CyclicTestData> TestsFromLoops(
+    const std::vector<hysteresis::CyclicResult>& runs, bool name_period) {
+  std::vector<identification::CyclicTestData> tests;
+  for (const hysteresis::CyclicResult& run : runs) {
+    tests.push_back(identification::TestFromLoop(run, name_period));
+  }
+  return tests;
+}
+
+}  // namespace isolab::analysis

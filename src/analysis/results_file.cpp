@@ -1,0 +1,56 @@
+#include "isolab/analysis/results_file.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "isolab/analysis/results_writer.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
+#include "results_sink.h"
+
+namespace isolab::analysis {
+namespace {
+
+enum class Format { kHdf5, kCsv };
+
+Format FormatOf(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".h5" || extension == ".hdf5") return Format::kHdf5;
+  if (extension == ".csv") return Format::kCsv;
+  throw InputError({path}, fmt::format("unknown results file type '{}' (the extension chooses: "
+                                       ".h5 or .hdf5 for HDF5, .csv for CSV)",
+                                       extension));
+}
+
+}  // namespace
+
+void CheckResultsPath(const std::string& path) {
+  FormatOf(path);
+  io::CheckOutputPath(path);
+}
+
+bool IsCsvPath(const std::string& path) { return FormatOf(path) == Format::kCsv; }
+
+void WriteResultsFile(const std::string& path, const RunDescription& run,
+                      const integrators::ResponseHistory& history) {
+  RunDescription rows_as_they_are = run;
+  rows_as_they_are.selection.every = history.output_every;
+  ResultsWriter writer(path, rows_as_they_are);
+  for (int row = 0; row < history.rows_written; ++row) writer.Observe(history.Row(row));
+  writer.Finish(*run.summary, *run.peaks);
+}
+
+std::vector<std::string> RunWarnings(const RunDescription& run) {
+  std::vector<std::string> warnings = run.setup->summary.warnings;
+  const std::string bearing =
+      IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.model->units);
+  if (!bearing.empty()) warnings.push_back(bearing);
+  return warnings;
+}
+
+}  // namespace isolab::analysis

@@ -1,0 +1,33 @@
+// The formats a ResultsWriter writes through (results_file.h has both layouts). Private to io.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "isolab/analysis/result_series.h"
+#include "isolab/analysis/results_writer.h"
+
+namespace isolab::analysis {
+
+class ResultsWriter::Sink {
+ public:
+  virtual ~Sink() = default;
+  // `rows` rows of every series: blocks[s] holds rows x series[s].width() values, row-major.
+  virtual void Write(std::span<const std::vector<double>> blocks, std::size_t rows) = 0;
+  // Everything but the histories, then the file appears at its path. `run` is complete.
+  virtual void Finish(const RunDescription& run) = 0;
+};
+
+// True for a .csv path, false for .h5/.hdf5; throws InputError for any other (results_file.h).
+bool IsCsvPath(const std::string& path);
+
+// `expected_rows` sizes HDF5's chunks (more rows may come).
+std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
+                                                  const std::vector<Series>& series,
+                                                  std::size_t expected_rows);
+std::unique_ptr<ResultsWriter::Sink> OpenCsvSink(const std::string& path,
+                                                 const std::vector<Series>& series);
+
+}  // namespace isolab::analysis

@@ -1,0 +1,203 @@
+#include "isolab/model/model_file.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <optional>
+#include <utility>
+
+#include "model_sections.h"
+
+namespace isolab::model {
+
+UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root) {
+  const YAML::Node node = reader.Require(root, "", "units");
+  reader.RequireMap(node, "units");
+  reader.CheckKeys(node, "units", {"force", "length", "time"});
+  const std::string force =
+      reader.ReadString(reader.Require(node, "units", "force"), "units.force");
+  const std::string length =
+      reader.ReadString(reader.Require(node, "units", "length"), "units.length");
+  const std::string time = node["time"] ? reader.ReadString(node["time"], "units.time") : "s";
+  // Built up one unit at a time, so an error points at the unit that is wrong.
+  const std::pair<const char*,
+                  UnitSystem (*)(const std::string&, const std::string&, const std::string&)>
+      steps[] = {
+          {"force", [](auto& f, auto&, auto&) { return UnitSystem(f, "m", "s"); }},
+          {"length", [](auto& f, auto& l, auto&) { return UnitSystem(f, l, "s"); }},
+          {"time", [](auto& f, auto& l, auto& t) { return UnitSystem(f, l, t); }},
+      };
+  std::optional<UnitSystem> units;
+  for (const auto& [key, build] : steps) {
+    try {
+      units = build(force, length, time);
+    } catch (const std::invalid_argument& error) {
+      reader.Fail(node[key], ChildPath("units", key),
+                  fmt::format("{} (force: N, kN, MN, lbf, kip; length: m, cm, mm, in, ft; time: s, "
+                              "ms)",
+                              error.what()));
+    }
+  }
+  return *units;
+}
+
+namespace {
+
+hysteresis::CyclicProtocol ReadCyclic(const YamlReader& reader, const YAML::Node& node) {
+  const std::string path = "cyclic";
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"amplitude", "period", "cycles", "steps_per_cycle"});
+  hysteresis::CyclicProtocol protocol;
+  protocol.amplitude =
+      reader.ReadNumber(reader.Require(node, path, "amplitude"), "cyclic.amplitude");
+  if (node["period"]) protocol.period = reader.ReadNumber(node["period"], "cyclic.period");
+  if (node["cycles"]) protocol.cycles = reader.ReadInteger(node["cycles"], "cyclic.cycles");
+  if (node["steps_per_cycle"]) {
+    protocol.steps_per_cycle =
+        reader.ReadInteger(node["steps_per_cycle"], "cyclic.steps_per_cycle");
+  }
+  try {
+    protocol.Validate();
+  } catch (const InvalidParameter& error) {
+    const YAML::Node at = node[error.violation().key];
+    throw InputError(reader.Locate(at.IsDefined() ? at : node),
+                     fmt::format("cyclic.{}", error.violation().Describe()));
+  }
+  return protocol;
+}
+
+// Checks that need more than one section.
+void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const ModelFile& model) {
+  if (!model.structure) return;
+  const YAML::Node structure = root["structure"];
+  int dofs = 1;
+  if (model.structure->kind == StructureSection::Kind::kSdof) {
+    if (model.isolation.size() == 0) {
+      reader.Fail(structure, "structure",
+                  "an sdof takes its restoring force from isolation.components, which is missing");
+    }
+  } else {
+    const bool isolated = model.isolation.size() > 0;
+    const bool has_base_mass = model.structure->building.base_mass > 0.0;
+    if (isolated && !has_base_mass) {
+      reader.Fail(structure, "structure", "an isolated building needs base_mass");
+    }
+    if (!isolated && has_base_mass) {
+      reader.Fail(
+          structure["base_mass"], "structure.base_mass",
+          "given, but there is no isolation section (a fixed-base building has no base mass)");
+    }
+    dofs = static_cast<int>(model.structure->building.stories.size()) + (isolated ? 1 : 0);
+  }
+  const YAML::Node levels = root["output"] ? root["output"]["levels"] : YAML::Node();
+  const bool has_level_zero =
+      model.structure->kind == StructureSection::Kind::kSdof || model.isolation.size() > 0;
+  for (std::size_t i = 0; i < model.output.levels.size(); ++i) {
+    const int level = model.output.levels[i];
+    const int highest = has_level_zero ? dofs - 1 : dofs;
+    if (level != kRoofLevel && (level > highest || (!has_level_zero && level == 0))) {
+      reader.Fail(levels[i], IndexPath("output.levels", i),
+                  fmt::format("{} (the structure's levels are {} to {}, or roof)", level,
+                              has_level_zero ? 0 : 1, highest));
+    }
+  }
+  const YAML::Node forces = root["excitation"] ? root["excitation"]["forces"] : YAML::Node();
+  for (std::size_t i = 0; i < model.excitation.forces.size(); ++i) {
+    const int dof = model.excitation.forces[i].dof;
+    if (dof < 0 || dof >= dofs) {
+      reader.Fail(
+          forces[i]["dof"], IndexPath("excitation.forces", i) + ".dof",
+          fmt::format("{} (the structure's degrees of freedom are 0 to {})", dof, dofs - 1));
+    }
+  }
+}
+
+// The output section: the results file and what goes into it (output_selection.h).
+void ReadOutput(const YamlReader& reader, const YAML::Node& output, ModelFile* model) {
+  reader.RequireMap(output, "output");
+  reader.CheckKeys(output, "output", {"file", "every", "quantities", "levels", "summary_only"});
+  OutputSelection& selection = model->output;
+  if (output["file"]) model->output_file = reader.ReadString(output["file"], "output.file");
+  if (output["every"]) {
+    selection.every = reader.ReadInteger(output["every"], "output.every");
+    if (selection.every < 1) {
+      reader.Fail(output["every"], "output.every",
+                  fmt::format("{} (expected a whole number of steps >= 1)", selection.every));
+    }
+  }
+  if (output["quantities"]) {
+    const YAML::Node list = output["quantities"];
+    reader.RequireSequence(list, "output.quantities");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = IndexPath("output.quantities", i);
+      const std::string name = reader.ReadString(list[i], path);
+      const std::string error = UnknownQuantity(name);
+      if (!error.empty()) reader.Fail(list[i], path, error);
+      selection.quantities.push_back(name);
+    }
+  }
+  if (output["levels"]) {
+    const YAML::Node list = output["levels"];
+    reader.RequireSequence(list, "output.levels");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = IndexPath("output.levels", i);
+      const std::optional<int> level = ParseLevel(reader.ReadString(list[i], path));
+      if (!level)
+        reader.Fail(list[i], path, "expected a level: 0 for the base, k for floor k, or roof");
+      selection.levels.push_back(*level);
+    }
+  }
+  if (output["summary_only"]) {
+    const YAML::Node flag = output["summary_only"];
+    bool value = false;
+    if (!flag.IsScalar() || !YAML::convert<bool>::decode(flag, value)) {
+      reader.Fail(flag, "output.summary_only", "expected true or false");
+    }
+    selection.summary_only = value;
+  }
+}
+
+}  // namespace
+
+ModelFile LoadModelFile(const std::string& path) {
+  return LoadModelText(YamlReader(path).ReadText(), path);
+}
+
+ModelFile LoadModelText(const std::string& text, const std::string& path) {
+  const YamlReader reader(path);
+  ModelFile model;
+  model.text = text;
+  const YAML::Node root = reader.LoadText(text);
+  reader.RequireMap(root, "");
+  if (root["plan"]) {
+    reader.Fail(root["plan"], "plan",
+                "a plan model: `isolab run` analyses it (docs/bidirectional.md); this command "
+                "takes one-direction models");
+  }
+  reader.CheckKeys(root, "",
+                   {"description", "units", "isolation", "structure", "excitation", "analysis",
+                    "output", "cyclic"});
+  model.path = path;
+  if (root["description"]) {
+    model.description = reader.ReadString(root["description"], "description");
+  }
+  model.units = ReadUnits(reader, root);
+  if (root["isolation"]) {
+    model.isolation = ReadIsolation(reader, root["isolation"], "isolation",
+                                    std::filesystem::path(path).parent_path(), model.units,
+                                    &model.included_files);
+  }
+  if (root["structure"]) model.structure = ReadStructure(reader, root["structure"], model.units);
+  if (root["excitation"])
+    model.excitation = ReadExcitation(reader, root["excitation"], model.units);
+  if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], model.units);
+  if (root["output"]) ReadOutput(reader, root["output"], &model);
+  if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);
+  if (!model.structure && model.isolation.size() == 0) {
+    reader.Fail(root, "", "missing key 'isolation' (a model needs isolation, structure, or both)");
+  }
+  CheckConsistency(reader, root, model);
+  return model;
+}
+
+}  // namespace isolab::model

@@ -1,0 +1,46 @@
+// Readers of the model file's sections, one file each; LoadModelFile (model_file.cpp) calls them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "isolab/model/model_file.h"
+#include "yaml_reader.h"
+
+namespace isolab::model {
+
+// The number or quantity at `map[key]`, required, finite and > 0; a damping ratio in [0, 1).
+double ReadPositive(const YamlReader& reader, const YAML::Node& map, const std::string& path,
+                    std::string_view key, Dimension dimension, const UnitSystem& units);
+double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::string& path);
+
+// The required `units` section of a model (or fit specification) file.
+UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
+
+// A list of law components (an isolation layer, a hysteretic story).
+hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
+                                          const std::string& path, const UnitSystem& units);
+
+// `{components: [...]}` or `{file: other.yaml}` (relative to `directory`, in the same `units`), at
+// key path `path` ("isolation", "variants[2].isolation"). The files it reads are appended to
+// `included_files` when given.
+hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
+                                           const std::string& path,
+                                           const std::filesystem::path& directory,
+                                           const UnitSystem& units,
+                                           std::vector<std::string>* included_files = nullptr);
+
+StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
+                               const UnitSystem& units);
+// `{file, units, scale, dt}` at key path `path`.
+GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& node,
+                                     const std::string& path, const UnitSystem& units);
+ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
+                                 const UnitSystem& units);
+// `auto` or a time >= 0 (analysis.free_vibration, a study's free_vibration).
+FreeVibration ReadFreeVibration(const YamlReader& reader, const YAML::Node& node,
+                                const std::string& path, const UnitSystem& units);
+AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
+                             const UnitSystem& units);
+
+}  // namespace isolab::model

@@ -1,0 +1,395 @@
+// Plan model files (plan_model_file.h): the `plan` section (footprint, floors, stories,
+// isolators, damping) and the two-component ground motion; units, analysis and output as in
+// one-direction models.
+#include "isolab/model/plan_model_file.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <string_view>
+
+#include "model_sections.h"
+
+namespace isolab::model {
+namespace {
+
+using hysteresis::Vec2;
+
+constexpr Dimension kRotationalInertia{1, 2, 0};    // mass*length^2
+constexpr Dimension kTorsionalStiffness{1, 2, -2};  // force*length per radian
+
+struct Footprint {
+  Vec2 low, high;
+  Vec2 centre() const { return 0.5 * (low + high); }
+  bool Contains(Vec2 p) const {
+    // A point on the edge is inside (a corner isolator), within round-off of the edge's size.
+    const double tolerance = 1e-9 * std::max(high.x - low.x, high.y - low.y);
+    return p.x >= low.x - tolerance && p.x <= high.x + tolerance && p.y >= low.y - tolerance &&
+           p.y <= high.y + tolerance;
+  }
+};
+
+Vec2 ReadPoint(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+               const UnitSystem& units) {
+  if (!node.IsSequence() || node.size() != 2) {
+    reader.Fail(node, path, "expected a plan position [x, y]");
+  }
+  return {reader.ReadQuantity(node[0], path, dimension::kLength, units),
+          reader.ReadQuantity(node[1], path, dimension::kLength, units)};
+}
+
+Vec2 ReadInside(const YamlReader& reader, const YAML::Node& map, const std::string& path,
+                std::string_view key, const Footprint& footprint, const UnitSystem& units) {
+  const std::string child = ChildPath(path, key);
+  if (!map[std::string(key)]) return footprint.centre();
+  const Vec2 p = ReadPoint(reader, map[std::string(key)], child, units);
+  if (!footprint.Contains(p)) {
+    reader.Fail(
+        map[std::string(key)], child,
+        fmt::format("[{:g}, {:g}] is outside the footprint [[{:g}, {:g}], [{:g}, {:g}]]", p.x, p.y,
+                    footprint.low.x, footprint.low.y, footprint.high.x, footprint.high.y));
+  }
+  return p;
+}
+
+Footprint ReadFootprint(const YamlReader& reader, const YAML::Node& plan, const UnitSystem& units) {
+  const YAML::Node node = reader.Require(plan, "plan", "footprint");
+  if (!node.IsSequence() || node.size() != 2) {
+    reader.Fail(node, "plan.footprint", "expected two opposite corners [[x1, y1], [x2, y2]]");
+  }
+  const Vec2 a = ReadPoint(reader, node[0], "plan.footprint", units);
+  const Vec2 b = ReadPoint(reader, node[1], "plan.footprint", units);
+  const Footprint footprint{{std::min(a.x, b.x), std::min(a.y, b.y)},
+                            {std::max(a.x, b.x), std::max(a.y, b.y)}};
+  if (!(footprint.high.x > footprint.low.x && footprint.high.y > footprint.low.y)) {
+    reader.Fail(node, "plan.footprint", "the corners must span an area (different x and y)");
+  }
+  return footprint;
+}
+
+// A floor's mass, centre of mass and rotational inertia (given, from a radius of gyration, or a
+// uniform slab over the footprint).
+structure::PlanFloor ReadFloor(const YamlReader& reader, const YAML::Node& node,
+                               const std::string& path, const Footprint& footprint,
+                               const UnitSystem& units) {
+  structure::PlanFloor floor;
+  floor.mass = ReadPositive(reader, node, path, "mass", dimension::kMass, units);
+  floor.centre_of_mass = ReadInside(reader, node, path, "centre_of_mass", footprint, units);
+  if (node["rotational_inertia"] && node["radius_of_gyration"]) {
+    reader.Fail(node, path, "give rotational_inertia or radius_of_gyration, not both");
+  }
+  if (node["rotational_inertia"]) {
+    floor.rotational_inertia =
+        ReadPositive(reader, node, path, "rotational_inertia", kRotationalInertia, units);
+  } else if (node["radius_of_gyration"]) {
+    const double r =
+        ReadPositive(reader, node, path, "radius_of_gyration", dimension::kLength, units);
+    floor.rotational_inertia = floor.mass * r * r;
+  } else {
+    const Vec2 size = footprint.high - footprint.low;
+    floor.rotational_inertia = floor.mass * (size.x * size.x + size.y * size.y) / 12.0;
+  }
+  return floor;
+}
+
+hysteresis::ParallelAssembly LinearLaw(double k) {
+  return hysteresis::SingleLaw(hysteresis::LawType::kLinearSpring, {k}, "k");
+}
+
+structure::PlanStory ReadStory(const YamlReader& reader, const YAML::Node& node,
+                               const std::string& path, std::size_t index,
+                               const Footprint& footprint, const UnitSystem& units) {
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path,
+                   {"name", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
+                    "height", "centre_of_stiffness", "stiffness", "x", "y", "torsion"});
+  structure::PlanStory story;
+  story.name = node["name"] ? reader.ReadString(node["name"], ChildPath(path, "name"))
+                            : fmt::format("story{}", index + 1);
+  story.floor = ReadFloor(reader, node, path, footprint, units);
+  if (node["height"]) {
+    story.height =
+        reader.ReadQuantity(node["height"], ChildPath(path, "height"), dimension::kLength, units);
+  }
+  story.centre_of_stiffness =
+      ReadInside(reader, node, path, "centre_of_stiffness", footprint, units);
+  if (node["stiffness"]) {
+    if (node["x"] || node["y"] || node["torsion"]) {
+      reader.Fail(node, path,
+                  "give either 'stiffness: {x, y, torsion}' (linear) or laws 'x', 'y' and "
+                  "'torsion', not both");
+    }
+    const std::string s_path = ChildPath(path, "stiffness");
+    const YAML::Node s = node["stiffness"];
+    reader.RequireMap(s, s_path);
+    reader.CheckKeys(s, s_path, {"x", "y", "torsion"});
+    story.x = LinearLaw(ReadPositive(reader, s, s_path, "x", dimension::kStiffness, units));
+    story.y = LinearLaw(ReadPositive(reader, s, s_path, "y", dimension::kStiffness, units));
+    story.torsion =
+        LinearLaw(ReadPositive(reader, s, s_path, "torsion", kTorsionalStiffness, units));
+    return story;
+  }
+  story.x = ReadAssembly(reader, reader.Require(node, path, "x"), ChildPath(path, "x"), units);
+  story.y = ReadAssembly(reader, reader.Require(node, path, "y"), ChildPath(path, "y"), units);
+  // Torque against twist: a linear stiffness (a law's parameters are read as translations').
+  story.torsion =
+      LinearLaw(ReadPositive(reader, node, path, "torsion", kTorsionalStiffness, units));
+  return story;
+}
+
+std::vector<structure::PlanStory> ReadStories(const YamlReader& reader, const YAML::Node& node,
+                                              const Footprint& footprint, const UnitSystem& units) {
+  const std::string path = "plan.stories";
+  std::vector<structure::PlanStory> stories;
+  if (node.IsSequence()) {
+    if (node.size() == 0) reader.Fail(node, path, "the list is empty; give at least one story");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      stories.push_back(ReadStory(reader, node[i], IndexPath(path, i), i, footprint, units));
+    }
+    return stories;
+  }
+  // Uniform shorthand: count copies of one story.
+  reader.RequireMap(node, path);
+  const YAML::Node count_node = reader.Require(node, path, "count");
+  const int count = reader.ReadInteger(count_node, ChildPath(path, "count"));
+  if (count < 1 || count > 2000) {
+    reader.Fail(count_node, ChildPath(path, "count"), fmt::format("{} (must be 1 to 2000)", count));
+  }
+  YAML::Node one = YAML::Clone(node);
+  one.remove("count");
+  if (one["name"])
+    reader.Fail(node["name"], ChildPath(path, "name"),
+                "equal stories are named story1, story2, ...");
+  for (int i = 0; i < count; ++i) {
+    stories.push_back(ReadStory(reader, one, path, static_cast<std::size_t>(i), footprint, units));
+  }
+  return stories;
+}
+
+// An isolator's laws: coupled bidirectional forms, or each law along x and along y alone.
+hysteresis::PlanAssembly IsolatorAssembly(const hysteresis::ParallelAssembly& laws,
+                                          bool uncoupled) {
+  std::vector<hysteresis::PlanComponent> components;
+  for (const hysteresis::Component& law : laws.components()) {
+    components.push_back(
+        {law.name, law.parameters, uncoupled ? std::optional(law.parameters) : std::nullopt});
+  }
+  return hysteresis::PlanAssembly(std::move(components));
+}
+
+// `along_x` with the isolator `site`'s laws added, named "<site>.<law>".
+hysteresis::ParallelAssembly AlongX(const hysteresis::ParallelAssembly& along_x,
+                                    const std::string& site,
+                                    const hysteresis::ParallelAssembly& laws) {
+  std::vector<hysteresis::Component> pushed = along_x.components();
+  for (const hysteresis::Component& law : laws.components()) {
+    pushed.push_back({site + "." + law.name, law.parameters});
+  }
+  return hysteresis::ParallelAssembly(std::move(pushed));
+}
+
+structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::Node& node,
+                                         const std::string& path, std::size_t index,
+                                         const Footprint& footprint, const UnitSystem& units,
+                                         hysteresis::ParallelAssembly* along_x) {
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"name", "position", "coupling", "components"});
+  structure::PlanIsolatorSite site;
+  site.name = node["name"] ? reader.ReadString(node["name"], ChildPath(path, "name"))
+                           : fmt::format("isolator{}", index + 1);
+  reader.Require(node, path, "position");
+  site.position = ReadInside(reader, node, path, "position", footprint, units);
+  bool uncoupled = false;
+  if (node["coupling"]) {
+    const std::string coupling = reader.ReadString(node["coupling"], ChildPath(path, "coupling"));
+    if (coupling != "coupled" && coupling != "uncoupled") {
+      reader.Fail(node["coupling"], ChildPath(path, "coupling"),
+                  fmt::format("'{}' (expected coupled or uncoupled)", coupling));
+    }
+    uncoupled = coupling == "uncoupled";
+  }
+  const std::string list_path = ChildPath(path, "components");
+  const YAML::Node list = reader.Require(node, path, "components");
+  const hysteresis::ParallelAssembly laws = ReadAssembly(reader, list, list_path, units);
+  const std::size_t c = FirstWithoutCoupledForm(laws);
+  if (!uncoupled && c < laws.size()) {
+    reader.Fail(list[c], IndexPath(list_path, c),
+                fmt::format("{} (give the isolator coupling: uncoupled to use it along x and y "
+                            "independently)",
+                            NoCoupledForm(laws, c)));
+  }
+  site.assembly = IsolatorAssembly(laws, uncoupled);
+  *along_x = AlongX(*along_x, site.name, laws);
+  return site;
+}
+
+structure::PlanDamping ReadDamping(const YamlReader& reader, const YAML::Node& node,
+                                   const UnitSystem& units) {
+  const std::string path = "plan.damping";
+  reader.RequireMap(node, path);
+  const YAML::Node type_node = reader.Require(node, path, "type");
+  const std::string type = reader.ReadString(type_node, ChildPath(path, "type"));
+  structure::PlanDamping damping;
+  if (type == "none") {
+    reader.CheckKeys(node, path, {"type"});
+    return damping;
+  }
+  if (type != "rayleigh") {
+    reader.Fail(type_node, ChildPath(path, "type"),
+                fmt::format("'{}' is not a plan damping type (expected rayleigh or none)", type));
+  }
+  reader.CheckKeys(node, path, {"type", "periods", "ratios"});
+  damping.rayleigh = true;
+  for (const char* key : {"periods", "ratios"}) {
+    const YAML::Node pair = reader.Require(node, path, key);
+    if (!pair.IsSequence() || pair.size() != 2) {
+      reader.Fail(pair, ChildPath(path, key), fmt::format("expected two {}", key));
+    }
+  }
+  for (int i = 0; i < 2; ++i) {
+    const std::string periods = ChildPath(path, "periods");
+    damping.periods[i] = reader.ReadQuantity(node["periods"][i], periods, dimension::kTime, units);
+    if (!(damping.periods[i] > 0.0)) reader.Fail(node["periods"][i], periods, "must be > 0");
+    damping.ratios[i] = ReadRatio(reader, node["ratios"][i], ChildPath(path, "ratios"));
+  }
+  if (damping.periods[0] == damping.periods[1]) {
+    reader.Fail(node["periods"], ChildPath(path, "periods"), "two different periods");
+  }
+  return damping;
+}
+
+PlanGroundMotion ReadPlanGroundMotion(const YamlReader& reader, const YAML::Node& excitation,
+                                      const UnitSystem& units) {
+  reader.RequireMap(excitation, "excitation");
+  reader.CheckKeys(excitation, "excitation", {"ground_motion"});
+  const std::string path = "excitation.ground_motion";
+  const YAML::Node node = reader.Require(excitation, "excitation", "ground_motion");
+  reader.RequireMap(node, path);
+  if (node["file"]) {
+    reader.Fail(node, path,
+                "a plan model takes its components as h1 and h2 ({file, units, scale, dt} "
+                "each), with the angle of h1 from the x axis");
+  }
+  reader.CheckKeys(node, path, {"h1", "h2", "angle"});
+  PlanGroundMotion motion;
+  motion.h1 =
+      ReadGroundMotion(reader, reader.Require(node, path, "h1"), ChildPath(path, "h1"), units);
+  if (node["h2"]) {
+    motion.h2 = ReadGroundMotion(reader, node["h2"], ChildPath(path, "h2"), units);
+    motion.h2_location = reader.Locate(node["h2"]);
+  }
+  if (node["angle"]) motion.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
+  return motion;
+}
+
+}  // namespace
+
+std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws) {
+  for (std::size_t c = 0; c < laws.size(); ++c) {
+    if (!hysteresis::HasCoupledForm(laws.components()[c].parameters.type())) return c;
+  }
+  return laws.size();
+}
+
+std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t c) {
+  return fmt::format("{} has no coupled bidirectional form",
+                     hysteresis::LawName(laws.components()[c].parameters.type()));
+}
+
+void ReplaceIsolation(PlanModelFile* model, const hysteresis::ParallelAssembly& laws) {
+  if (FirstWithoutCoupledForm(laws) < laws.size()) {
+    throw std::invalid_argument(NoCoupledForm(laws, FirstWithoutCoupledForm(laws)));
+  }
+  hysteresis::ParallelAssembly along_x;
+  for (structure::PlanIsolatorSite& site : model->building.isolators) {
+    site.assembly = IsolatorAssembly(laws, false);
+    along_x = AlongX(along_x, site.name, laws);
+  }
+  model->isolation_along_x = std::move(along_x);
+}
+
+bool IsPlanModelFile(const std::string& path) {
+  std::ifstream in(path);
+  // A block mapping's top-level keys start their lines; anything indented, a comment or a
+  // document marker is not one. Parsing the whole file here would read every model twice (it
+  // was 15 % of a one-step run's instructions), so only a flow mapping at the top is parsed.
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || std::isspace(static_cast<unsigned char>(line[0])) || line[0] == '#' ||
+        line[0] == '%' || line.starts_with("---")) {
+      continue;
+    }
+    if (line[0] == '{') {
+      try {
+        const YAML::Node root = YAML::LoadFile(path);
+        return root.IsMap() && root["plan"].IsDefined();
+      } catch (const std::exception&) {
+        return false;
+      }
+    }
+    std::string_view key(line);
+    key = key.substr(0, key.find(':'));
+    while (!key.empty() && std::isspace(static_cast<unsigned char>(key.back()))) {
+      key.remove_suffix(1);
+    }
+    if (key == "plan" || key == "\"plan\"" || key == "'plan'") return true;
+  }
+  return false;
+}
+
+PlanModelFile LoadPlanModelFile(const std::string& path) {
+  const YamlReader reader(path);
+  PlanModelFile model;
+  const YAML::Node root = reader.LoadFile(&model.text);
+  reader.RequireMap(root, "");
+  reader.CheckKeys(root, "", {"description", "units", "plan", "excitation", "analysis", "output"});
+  model.path = path;
+  if (root["description"]) {
+    model.description = reader.ReadString(root["description"], "description");
+  }
+  model.units = ReadUnits(reader, root);
+  const UnitSystem& units = model.units;
+  const YAML::Node plan = reader.Require(root, "", "plan");
+  reader.RequireMap(plan, "plan");
+  reader.CheckKeys(plan, "plan", {"footprint", "base", "stories", "damping", "isolators"});
+  const Footprint footprint = ReadFootprint(reader, plan, units);
+  const YAML::Node base = reader.Require(plan, "plan", "base");
+  reader.RequireMap(base, "plan.base");
+  reader.CheckKeys(base, "plan.base",
+                   {"mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration"});
+  model.building.base = ReadFloor(reader, base, "plan.base", footprint, units);
+  model.building.stories =
+      ReadStories(reader, reader.Require(plan, "plan", "stories"), footprint, units);
+  if (plan["damping"]) model.building.damping = ReadDamping(reader, plan["damping"], units);
+  const YAML::Node isolators = reader.Require(plan, "plan", "isolators");
+  reader.RequireSequence(isolators, "plan.isolators");
+  if (isolators.size() == 0) {
+    reader.Fail(isolators, "plan.isolators", "the list is empty; give at least one isolator");
+  }
+  for (std::size_t i = 0; i < isolators.size(); ++i) {
+    model.building.isolators.push_back(ReadIsolator(reader, isolators[i],
+                                                    IndexPath("plan.isolators", i), i, footprint,
+                                                    units, &model.isolation_along_x));
+    for (std::size_t j = 0; j + 1 < model.building.isolators.size(); ++j) {
+      if (model.building.isolators[j].name == model.building.isolators.back().name) {
+        reader.Fail(isolators[i], IndexPath("plan.isolators", i),
+                    fmt::format("name '{}' is already used by isolator {}",
+                                model.building.isolators[j].name, j));
+      }
+    }
+  }
+  if (root["excitation"]) {
+    model.ground_motion = ReadPlanGroundMotion(reader, root["excitation"], units);
+  }
+  if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], units);
+  if (root["output"]) {
+    reader.RequireMap(root["output"], "output");
+    reader.CheckKeys(root["output"], "output", {"file"});
+    model.output_file =
+        reader.ReadString(reader.Require(root["output"], "output", "file"), "output.file");
+  }
+  return model;
+}
+
+}  // namespace isolab::model

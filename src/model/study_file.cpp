@@ -1,0 +1,480 @@
+#include "isolab/model/study_file.h"
+
+#include <fmt/format.h>
+#include <glob.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <span>
+#include <string_view>
+#include <utility>
+
+#include "isolab/io/record.h"
+#include "model_sections.h"
+
+namespace isolab::model {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kStudyKeys[] = {"description", "building", "variants", "reference",
+                                           "records",     "scales",   "output",   "free_vibration"};
+constexpr std::string_view kVariantKeys[] = {"name", "isolation", "model", "fixed_base"};
+
+bool ReadFlag(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
+  const std::string text = reader.ReadString(node, path);
+  if (text == "true") return true;
+  if (text == "false") return false;
+  reader.Fail(node, path, fmt::format("'{}' is not true or false", text));
+}
+
+// Variant names become folder names of the per-run results, so they stay portable.
+void CheckName(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+               const std::string& name) {
+  const bool portable =
+      !name.empty() && name != "." && name != ".." &&
+      std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      });
+  if (!portable) {
+    reader.Fail(node, path,
+                fmt::format("'{}' (a name takes letters, digits, '_', '-' and '.')", name));
+  }
+}
+
+// A model file named at `node`, relative to the study's folder.
+std::string ModelPath(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                      const fs::path& directory) {
+  return (directory / reader.ReadString(node, path)).lexically_normal().string();
+}
+
+// A study is one-direction or plan throughout: its records are single records or pairs.
+[[noreturn]] void FailMixedKinds(const YamlReader& reader, const YAML::Node& node,
+                                 const std::string& path, const std::string& file,
+                                 bool file_is_plan, const std::string& building) {
+  reader.Fail(node, path,
+              fmt::format("'{}' is a {} model and the building '{}' a {} one: a study's variants "
+                          "are all one-direction models or all plan models",
+                          file, file_is_plan ? "plan" : "one-direction", building,
+                          file_is_plan ? "one-direction" : "plan"));
+}
+
+ModelFile LoadStructureModel(const YamlReader& reader, const YAML::Node& node,
+                             const std::string& path, const std::string& file) {
+  ModelFile model = LoadModelFile(file);
+  if (!model.structure) {
+    reader.Fail(node, path, fmt::format("'{}' has no structure section: nothing to run", file));
+  }
+  return model;
+}
+
+// What a model's stored text gains when a variant replaces its isolation: results files keep
+// the model's YAML as the record of what ran.
+std::string ReplacedIsolationNote(const std::string& study_path, const std::string& variant,
+                                  const YAML::Node& node) {
+  YAML::Emitter emitter;
+  emitter << YAML::Flow << node;
+  return fmt::format(
+      "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
+      "{}\n",
+      study_path, variant, emitter.c_str());
+}
+
+// The building with `isolation` in place of its own, its stored text saying so.
+ModelFile WithIsolation(const ModelFile& building, hysteresis::ParallelAssembly isolation,
+                        const std::string& study_path, const std::string& variant,
+                        const YAML::Node& node) {
+  ModelFile model = building;
+  model.isolation = std::move(isolation);
+  model.text += ReplacedIsolationNote(study_path, variant, node);
+  return model;
+}
+
+// A variant entry's keys checked and its name read.
+StudyVariant NamedVariant(const YamlReader& reader, const YAML::Node& node,
+                          const std::string& path) {
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, kVariantKeys);
+  StudyVariant variant;
+  const std::string name_path = ChildPath(path, "name");
+  variant.name = reader.ReadString(reader.Require(node, path, "name"), name_path);
+  CheckName(reader, node["name"], name_path, variant.name);
+  return variant;
+}
+
+StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                         const fs::path& directory, const ModelFile& building) {
+  StudyVariant variant = NamedVariant(reader, node, path);
+  if (node["fixed_base"]) {
+    variant.fixed_base = ReadFlag(reader, node["fixed_base"], ChildPath(path, "fixed_base"));
+  }
+  if (node["isolation"] && node["model"]) {
+    reader.Fail(node, path, "give isolation or model, not both");
+  }
+  if (node["model"]) {
+    const std::string model_path = ChildPath(path, "model");
+    const std::string file = ModelPath(reader, node["model"], model_path, directory);
+    if (IsPlanModelFile(file)) {
+      FailMixedKinds(reader, node["model"], model_path, file, true, building.path);
+    }
+    variant.model = LoadStructureModel(reader, node["model"], model_path, file);
+  } else if (node["isolation"]) {
+    const std::string isolation_path = ChildPath(path, "isolation");
+    if (variant.fixed_base) {
+      reader.Fail(node["fixed_base"], ChildPath(path, "fixed_base"),
+                  "a fixed-base variant has no isolation; remove one of the two");
+    }
+    const StructureSection& structure = *building.structure;
+    if (structure.kind == StructureSection::Kind::kShearBuilding &&
+        !(structure.building.base_mass > 0.0)) {
+      reader.Fail(node["isolation"], isolation_path,
+                  fmt::format("the building '{}' has no base_mass, which an isolated building "
+                              "needs",
+                              building.path));
+    }
+    variant.model = WithIsolation(
+        building,
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units),
+        reader.file(), variant.name, node["isolation"]);
+  } else {
+    variant.model = building;
+  }
+  if (variant.fixed_base) {
+    if (variant.model.structure->kind != StructureSection::Kind::kShearBuilding) {
+      reader.Fail(node["fixed_base"], ChildPath(path, "fixed_base"),
+                  "applies to a shear building only");
+    }
+    variant.model.text +=
+        fmt::format("\n# isolab compare, study {}, variant {}: run on a fixed base\n",
+                    reader.file(), variant.name);
+  }
+  return variant;
+}
+
+// A plan study's variant: the building itself, the building with every isolator on the
+// variant's laws (coupled), or another plan model.
+StudyVariant ReadPlanVariant(const YamlReader& reader, const YAML::Node& node,
+                             const std::string& path, const fs::path& directory,
+                             const PlanModelFile& building) {
+  StudyVariant variant = NamedVariant(reader, node, path);
+  if (node["fixed_base"]) {
+    reader.Fail(
+        node["fixed_base"], ChildPath(path, "fixed_base"),
+        fmt::format("applies to a one-direction building; '{}' is a plan model", building.path));
+  }
+  if (node["isolation"] && node["model"]) {
+    reader.Fail(node, path, "give isolation or model, not both");
+  }
+  if (node["isolation"]) {
+    const std::string isolation_path = ChildPath(path, "isolation");
+    const hysteresis::ParallelAssembly laws =
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units);
+    const std::size_t c = FirstWithoutCoupledForm(laws);
+    if (c < laws.size()) {
+      reader.Fail(node["isolation"], isolation_path,
+                  fmt::format("{}: every isolator of a plan building takes these laws as "
+                              "coupled laws",
+                              NoCoupledForm(laws, c)));
+    }
+    variant.plan = building;
+    ReplaceIsolation(&*variant.plan, laws);
+    variant.plan->text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
+    return variant;
+  }
+  if (node["model"]) {
+    const std::string model_path = ChildPath(path, "model");
+    const std::string file = ModelPath(reader, node["model"], model_path, directory);
+    if (!IsPlanModelFile(file)) {
+      FailMixedKinds(reader, node["model"], model_path, file, false, building.path);
+    }
+    variant.plan = LoadPlanModelFile(file);
+  } else {
+    variant.plan = building;
+  }
+  return variant;
+}
+
+bool IsGlob(std::string_view pattern) {
+  return pattern.find_first_of("*?[") != std::string_view::npos;
+}
+
+// Regular files matching `pattern`, in byte order of their paths (glob(3) would sort by the
+// locale's collation, which differs between machines).
+std::vector<std::string> ExpandGlob(const std::string& pattern) {
+  glob_t matches{};
+  const int status = glob(pattern.c_str(), GLOB_NOSORT, nullptr, &matches);
+  std::vector<std::string> files;
+  if (status == 0) {
+    for (std::size_t i = 0; i < matches.gl_pathc; ++i) {
+      std::error_code error;
+      if (fs::is_regular_file(matches.gl_pathv[i], error)) files.emplace_back(matches.gl_pathv[i]);
+    }
+  }
+  globfree(&matches);
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// A record entry's {file, units, dt, scale}, or a plain file name or glob.
+StudyRecord ReadRecordEntry(const YamlReader& reader, const YAML::Node& node,
+                            const std::string& path, const UnitSystem& units) {
+  StudyRecord given;
+  given.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
+  if (!node.IsMap()) {
+    given.path = reader.ReadString(node, path);
+    return given;
+  }
+  reader.CheckKeys(node, path, {"file", "units", "dt", "scale"});
+  given.path = reader.ReadString(reader.Require(node, path, "file"), ChildPath(path, "file"));
+  if (node["units"]) {
+    given.units = reader.ReadString(node["units"], ChildPath(path, "units"));
+    try {
+      units.Convert(1.0, given.units, dimension::kAcceleration);
+    } catch (const std::invalid_argument& error) {
+      reader.Fail(node["units"], ChildPath(path, "units"),
+                  fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
+    }
+  }
+  if (node["dt"]) {
+    given.dt = reader.ReadQuantity(node["dt"], ChildPath(path, "dt"), dimension::kTime, units);
+    if (!(given.dt > 0.0)) reader.Fail(node["dt"], ChildPath(path, "dt"), "must be > 0");
+  }
+  if (node["scale"]) {
+    given.scale = reader.ReadNumber(node["scale"], ChildPath(path, "scale"));
+    if (!(given.scale > 0.0) || !std::isfinite(given.scale)) {
+      reader.Fail(node["scale"], ChildPath(path, "scale"),
+                  fmt::format("{:g} (must be a finite number > 0)", given.scale));
+    }
+  }
+  return given;
+}
+
+// `file`: a component's file resolved against the study's folder; it must exist.
+void ResolveComponent(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                      const fs::path& directory, GroundMotionSection* component) {
+  component->file = (directory / component->file).lexically_normal().string();
+  std::error_code error;
+  if (!fs::is_regular_file(component->file, error)) {
+    reader.Fail(node["file"], ChildPath(path, "file"),
+                fmt::format("'{}' is not a file", component->file));
+  }
+  if (!(component->scale > 0.0) || !std::isfinite(component->scale)) {
+    reader.Fail(node["scale"], ChildPath(path, "scale"),
+                fmt::format("{:g} (must be a finite number > 0)", component->scale));
+  }
+}
+
+// Both components read as their runs will read them: a pair must share its step and its length
+// (plan_analysis.h), and a study refuses one that does not before any run starts.
+void CheckPairMatches(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                      const PlanGroundMotion& pair, const UnitSystem& units) {
+  const auto read = [&](const GroundMotionSection& component, const std::string& key) {
+    const std::string where = fmt::format("{}.{} in {}", path, key, reader.file());
+    return io::ReadRecord(component.file,
+                          {component.units, component.dt * units.SiFactor(dimension::kTime),
+                           where + ".units", where + ".dt"});
+  };
+  const io::Record h1 = read(pair.h1, "h1"), h2 = read(*pair.h2, "h2");
+  const std::string h2_path = ChildPath(path, "h2");
+  if (std::abs(h2.dt - h1.dt) > 1e-9 * h1.dt) {
+    reader.Fail(node["h2"], h2_path,
+                fmt::format("'{}' has a step of {:g} s, h1 '{}' {:g} s; a pair must share one step",
+                            h2.path, h2.dt, h1.path, h1.dt));
+  }
+  if (h2.values.size() != h1.values.size()) {
+    reader.Fail(node["h2"], h2_path,
+                fmt::format("'{}' has {} samples, h1 '{}' {}; a pair must have the same length",
+                            h2.path, h2.values.size(), h1.path, h1.values.size()));
+  }
+}
+
+bool IsPairEntry(const YAML::Node& node) { return node.IsMap() && (node["h1"] || node["h2"]); }
+
+// A plan study's record entry {h1, h2, angle, name}, as a plan model's ground motion.
+StudyRecord ReadPairEntry(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                          const fs::path& directory, const UnitSystem& units) {
+  reader.CheckKeys(node, path, {"h1", "h2", "angle", "name"});
+  PlanGroundMotion pair;
+  for (const char* key : {"h1", "h2"}) {
+    const std::string component_path = ChildPath(path, key);
+    const YAML::Node component = reader.Require(node, path, key);
+    GroundMotionSection section = ReadGroundMotion(reader, component, component_path, units);
+    ResolveComponent(reader, component, component_path, directory, &section);
+    if (std::string_view(key) == "h1") {
+      pair.h1 = section;
+    } else {
+      pair.h2 = section;
+      pair.h2_location = reader.Locate(component);
+    }
+  }
+  if (node["angle"]) pair.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
+  CheckPairMatches(reader, node, path, pair, units);
+  StudyRecord record;
+  record.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
+  record.path = pair.h1.file;
+  if (node["name"]) {
+    record.name = reader.ReadString(node["name"], ChildPath(path, "name"));
+    CheckName(reader, node["name"], ChildPath(path, "name"), record.name);
+  } else {
+    record.name = fs::path(pair.h1.file).stem().string();
+  }
+  record.pair = std::move(pair);
+  return record;
+}
+
+// Records become runs' file names: two with one name would overwrite each other's results.
+void AddRecord(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+               StudyRecord record, std::vector<StudyRecord>* records) {
+  const auto same = std::find_if(records->begin(), records->end(),
+                                 [&](const StudyRecord& r) { return r.name == record.name; });
+  if (same != records->end()) {
+    reader.Fail(node, path,
+                fmt::format("'{}' has the name '{}' of '{}' (record names are file stems, or a "
+                            "pair's name, and must be unique)",
+                            record.path, record.name, same->path));
+  }
+  records->push_back(std::move(record));
+}
+
+std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
+                                     const fs::path& directory, const UnitSystem& units, bool plan,
+                                     const std::string& building) {
+  reader.RequireSequence(list, "records");
+  if (list.size() == 0) reader.Fail(list, "records", "the list is empty (give files or globs)");
+  std::vector<StudyRecord> records;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = IndexPath("records", i);
+    if (IsPairEntry(list[i]) != plan) {
+      reader.Fail(list[i], path,
+                  plan ? fmt::format("one record cannot drive the plan model '{}': give a pair "
+                                     "{{h1: {{file: ...}}, h2: {{file: ...}}, angle: 0}}",
+                                     building)
+                       : fmt::format("a pair of records drives plan models; the building '{}' "
+                                     "is a one-direction model (give one record per entry)",
+                                     building));
+    }
+    if (plan) {
+      AddRecord(reader, list[i], path, ReadPairEntry(reader, list[i], path, directory, units),
+                &records);
+      continue;
+    }
+    const StudyRecord given = ReadRecordEntry(reader, list[i], path, units);
+    const std::string& entry = given.path;
+    const std::string pattern = (directory / entry).lexically_normal().string();
+    std::vector<std::string> files;
+    if (IsGlob(entry)) {
+      files = ExpandGlob(pattern);
+      if (files.empty()) reader.Fail(list[i], path, fmt::format("'{}' matches no file", pattern));
+    } else {
+      std::error_code error;
+      if (!fs::is_regular_file(pattern, error)) {
+        reader.Fail(list[i], path, fmt::format("'{}' is not a file", pattern));
+      }
+      files.push_back(pattern);
+    }
+    for (const std::string& file : files) {
+      StudyRecord record = given;
+      record.name = fs::path(file).stem().string();
+      record.path = file;
+      AddRecord(reader, list[i], path, std::move(record), &records);
+    }
+  }
+  return records;
+}
+
+std::vector<double> ReadScales(const YamlReader& reader, const YAML::Node& list) {
+  reader.RequireSequence(list, "scales");
+  if (list.size() == 0) reader.Fail(list, "scales", "the list is empty");
+  std::vector<double> scales;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = IndexPath("scales", i);
+    const double scale = reader.ReadNumber(list[i], path);
+    if (!(scale > 0.0) || !std::isfinite(scale)) {
+      reader.Fail(list[i], path, fmt::format("{:g} (must be a finite number > 0)", scale));
+    }
+    if (std::find(scales.begin(), scales.end(), scale) != scales.end()) {
+      reader.Fail(list[i], path, fmt::format("{:g} is already in the list", scale));
+    }
+    scales.push_back(scale);
+  }
+  return scales;
+}
+
+}  // namespace
+
+StudyFile LoadStudyFile(const std::string& path) {
+  const YamlReader reader(path);
+  const YAML::Node root = reader.LoadFile();
+  reader.RequireMap(root, "");
+  reader.CheckKeys(root, "", kStudyKeys);
+  StudyFile study;
+  study.path = path;
+  const fs::path directory = fs::path(path).parent_path();
+  if (root["description"]) {
+    study.description = reader.ReadString(root["description"], "description");
+  }
+  const YAML::Node building_node = reader.Require(root, "", "building");
+  const std::string building_file = ModelPath(reader, building_node, "building", directory);
+  study.plan = IsPlanModelFile(building_file);
+  ModelFile building;
+  std::optional<PlanModelFile> plan_building;
+  if (study.plan) {
+    plan_building = LoadPlanModelFile(building_file);
+    study.units = plan_building->units;
+  } else {
+    building = LoadStructureModel(reader, building_node, "building", building_file);
+    study.units = building.units;
+  }
+  study.building_path = building_file;
+
+  const YAML::Node variants = reader.Require(root, "", "variants");
+  reader.RequireSequence(variants, "variants");
+  if (variants.size() == 0) reader.Fail(variants, "variants", "the list is empty");
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const std::string variant_path = IndexPath("variants", i);
+    study.variants.push_back(
+        study.plan ? ReadPlanVariant(reader, variants[i], variant_path, directory, *plan_building)
+                   : ReadVariant(reader, variants[i], variant_path, directory, building));
+    const std::string& name = study.variants.back().name;
+    const auto same = std::find(names.begin(), names.end(), name);
+    if (same != names.end()) {
+      reader.Fail(
+          variants[i]["name"], ChildPath(variant_path, "name"),
+          fmt::format("'{}' is already the name of variants[{}]", name, same - names.begin()));
+    }
+    names.push_back(name);
+  }
+  if (root["reference"]) {
+    const std::string reference = reader.ReadString(root["reference"], "reference");
+    const auto found = std::find(names.begin(), names.end(), reference);
+    if (found == names.end()) {
+      const std::vector<std::string_view> candidates(names.begin(), names.end());
+      const std::string_view nearest = NearestWord(reference, candidates);
+      reader.Fail(
+          root["reference"], "reference",
+          fmt::format("'{}' is not a variant{}", reference,
+                      nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest)));
+    }
+    study.reference = static_cast<std::size_t>(found - names.begin());
+  }
+  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory, study.units,
+                              study.plan, study.building_path);
+  study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
+  if (root["free_vibration"]) {
+    study.free_vibration =
+        ReadFreeVibration(reader, root["free_vibration"], "free_vibration", study.units);
+  }
+  if (root["output"]) {
+    const YAML::Node output = root["output"];
+    reader.RequireMap(output, "output");
+    reader.CheckKeys(output, "output", {"directory"});
+    study.output_directory =
+        reader.ReadString(reader.Require(output, "output", "directory"), "output.directory");
+  }
+  return study;
+}
+
+}  // namespace isolab::model

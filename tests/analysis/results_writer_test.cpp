@@ -1,0 +1,373 @@
+// Results streamed while the run advances (results_writer.h, run_analysis.h's RunAndRecord)
+// against the same run held in memory (ResponseHistory): the datasets equal bit for bit through
+// buffer boundaries, every N-th row is the in-memory run's row N k, peaks with output every 10
+// steps equal the full run's (and differ from peaks read off the thinned history), summary-only
+// files hold the peaks and final energies alone, levels and quantities pick the columns, CSV
+// follows the selection, and an abandoned writer leaves nothing behind.
+#include "isolab/analysis/results_writer.h"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/result_series.h"
+#include "isolab/analysis/run_analysis.h"
+#include "isolab/core/errors.h"
+#include "isolab/model/model_file.h"
+#include "leftover_temporaries.h"
+#include "own_test_file.h"
+
+namespace isolab::analysis {
+namespace {
+
+using integrators::ResponseHistory;
+
+std::string Model(const std::string& relative) {
+  return std::string(ISOLAB_SOURCE_DIR) + "/models/" + relative;
+}
+
+// Under a folder of the running test's own, since ctest runs the tests of this file in parallel.
+std::filesystem::path TemporaryFile(const std::string& name) {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string folder = std::string(test->test_suite_name()) + "." + test->name();
+  std::replace(folder.begin(), folder.end(), '/', '_');
+  const auto directory = isolab::testing::OwnTestDirectory() / folder;
+  std::filesystem::create_directories(directory);
+  const auto path = directory / name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+// A dataset's values (row-major) and dimensions; empty dimensions and values when it is absent.
+struct Dataset {
+  std::vector<hsize_t> dims;
+  std::vector<double> values;
+};
+
+Dataset Read(hid_t file, const std::string& name) {
+  Dataset data;
+  if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) return data;
+  const hid_t dataset = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  const hid_t space = H5Dget_space(dataset);
+  data.dims.resize(H5Sget_simple_extent_ndims(space));
+  H5Sget_simple_extent_dims(space, data.dims.data(), nullptr);
+  data.values.resize(H5Sget_simple_extent_npoints(space));
+  H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.values.data());
+  H5Sclose(space);
+  H5Dclose(dataset);
+  return data;
+}
+
+long IntegerAttribute(hid_t file, const char* name) {
+  long value = -1;
+  const hid_t attribute = H5Aopen(file, name, H5P_DEFAULT);
+  H5Aread(attribute, H5T_NATIVE_LONG, &value);
+  H5Aclose(attribute);
+  return value;
+}
+
+// The in-memory response, rows `stride` apart, one column per `columns` entry (every column
+// when empty), row-major: what a thinned, column-selected dataset must hold.
+std::vector<double> Expected(const integrators::RowMatrix& matrix, int rows, int stride,
+                             std::vector<int> columns = {}) {
+  if (columns.empty()) {
+    for (int c = 0; c < matrix.cols(); ++c) columns.push_back(c);
+  }
+  std::vector<double> values;
+  for (int r = 0; r < rows; r += stride) {
+    for (const int c : columns) values.push_back(matrix(r, c));
+  }
+  return values;
+}
+
+template <typename Value>
+std::vector<double> ExpectedVector(int rows, int stride, Value value) {
+  std::vector<double> values;
+  for (int r = 0; r < rows; r += stride) values.push_back(value(r));
+  return values;
+}
+
+// Bitwise: the same doubles, not merely close ones.
+void ExpectBitwiseEqual(const std::vector<double>& actual, const std::vector<double>& expected,
+                        const std::string& what) {
+  ASSERT_EQ(actual.size(), expected.size()) << what;
+  EXPECT_EQ(std::memcmp(actual.data(), expected.data(), actual.size() * sizeof(double)), 0) << what;
+}
+
+struct Case {
+  const char* model;
+  bool ida;
+};
+
+class StreamedAgainstInMemory : public ::testing::TestWithParam<Case> {};
+
+// Every history of the file, streamed through a 7-row buffer (so that many flushes and a partial
+// last one happen), equals the in-memory run's; with every 10 steps, its rows 0, 10, 20, ...
+TEST_P(StreamedAgainstInMemory, DatasetsAreBitwiseEqual) {
+  const model::ModelFile model = model::LoadModelFile(Model(GetParam().model));
+  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  model::AnalysisSection analysis = model.analysis;
+  if (GetParam().ida) analysis.integrator = model::AnalysisSection::Integrator::kIda;
+  ResponseHistory history;
+  const integrators::RunSummary in_memory = RunAnalysis(analysis, setup, &history);
+  ASSERT_TRUE(in_memory.ok());
+  const int rows = history.rows_written;
+  ASSERT_GT(rows, 100);
+
+  for (const int every : {1, 10}) {
+    SCOPED_TRACE(every);
+    model::OutputSelection selection;
+    selection.every = every;
+    const auto path = TemporaryFile("streamed.h5");
+    const RecordedRun run = RunAndRecord(model, analysis, setup, selection, path.string(), "test",
+                                         /*buffer_rows=*/7);
+    EXPECT_EQ(run.summary.newton_iterations, in_memory.newton_iterations);
+    EXPECT_EQ(run.summary.energy_balance_error, in_memory.energy_balance_error);
+
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_EQ(IntegerAttribute(file, "output_every"), every);
+    const int expected_rows = (rows - 1) / every + 1;
+    EXPECT_EQ(Read(file, "time").dims, std::vector<hsize_t>{hsize_t(expected_rows)});
+    ExpectBitwiseEqual(Read(file, "time").values,
+                       ExpectedVector(rows, every, [&](int r) { return history.time[r]; }), "time");
+    ExpectBitwiseEqual(Read(file, "displacement").values,
+                       Expected(history.displacement, rows, every), "displacement");
+    ExpectBitwiseEqual(Read(file, "velocity").values, Expected(history.velocity, rows, every),
+                       "velocity");
+    ExpectBitwiseEqual(Read(file, "acceleration").values,
+                       Expected(history.acceleration, rows, every), "acceleration");
+    ExpectBitwiseEqual(Read(file, "absolute_acceleration").values,
+                       Expected(history.absolute_acceleration, rows, every),
+                       "absolute_acceleration");
+    ExpectBitwiseEqual(Read(file, "connection_force").values,
+                       Expected(history.connection_force, rows, every), "connection_force");
+    if (setup.layout.isolation >= 0) {
+      const int first = static_cast<int>(setup.structure.law_offset(setup.layout.isolation));
+      const int count = static_cast<int>(
+          setup.structure.connections()[setup.layout.isolation].assembly.components().size());
+      std::vector<int> components;
+      for (int l = first; l < first + count; ++l) components.push_back(l);
+      ExpectBitwiseEqual(Read(file, "isolator/component_force").values,
+                         Expected(history.law_force, rows, every, components),
+                         "isolator/component_force");
+    }
+    ExpectBitwiseEqual(
+        Read(file, "energy/hysteretic").values,
+        ExpectedVector(rows, every, [&](int r) { return history.energies[r].hysteretic; }),
+        "energy/hysteretic");
+    ExpectBitwiseEqual(
+        Read(file, "energy/input").values,
+        ExpectedVector(rows, every, [&](int r) { return history.energies[r].input; }),
+        "energy/input");
+    H5Fclose(file);
+    EXPECT_TRUE(testing::LeftoverTemporaries(path).empty());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BundledModels, StreamedAgainstInMemory,
+                         ::testing::Values(Case{"buildings/five_story_table9.yaml", false},
+                                           Case{"chopra/case_e_five_story_frame.yaml", false},
+                                           Case{"sdof/table7_thm1_hard.yaml", true}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           std::string name =
+                               std::filesystem::path(info.param.model).stem().string();
+                           return name + (info.param.ida ? "_ida" : "_newmark");
+                         });
+
+void ExpectSamePeak(const Peak& a, const Peak& b, const char* what) {
+  EXPECT_EQ(a.value, b.value) << what;
+  EXPECT_EQ(a.time, b.time) << what;
+  EXPECT_EQ(a.index, b.index) << what;
+}
+
+// Peaks, the residual and the energies see every step whatever is written: with every 10 steps
+// they are the full run's, exactly; read off a history thinned to every 10th step they are not.
+TEST(ResultsWriter, PeaksWithOutputEveryTenStepsEqualTheFullRuns) {
+  const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
+  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  const RecordedRun full = RunAndRecord(model, model.analysis, setup, {}, "", "test");
+  model::OutputSelection every_ten;
+  every_ten.every = 10;
+  const auto path = TemporaryFile("every_ten.h5");
+  const RecordedRun thinned =
+      RunAndRecord(model, model.analysis, setup, every_ten, path.string(), "test");
+  const ResponsePeaks &a = full.peaks, &b = thinned.peaks;
+  ExpectSamePeak(a.isolator_displacement, b.isolator_displacement, "isolator displacement");
+  ExpectSamePeak(a.isolator_force, b.isolator_force, "isolator force");
+  ExpectSamePeak(a.base_shear, b.base_shear, "base shear");
+  ExpectSamePeak(a.first_story_shear, b.first_story_shear, "first-story shear");
+  ExpectSamePeak(a.roof_absolute_acceleration, b.roof_absolute_acceleration, "roof acceleration");
+  ExpectSamePeak(a.story_drift, b.story_drift, "story drift");
+  EXPECT_EQ(a.residual_isolator_displacement, b.residual_isolator_displacement);
+  EXPECT_EQ(a.residual_oscillation, b.residual_oscillation);
+  EXPECT_EQ(a.energies.input, b.energies.input);
+  EXPECT_EQ(a.energies.hysteretic, b.energies.hysteretic);
+  EXPECT_EQ(full.summary.energy_balance_error, thinned.summary.energy_balance_error);
+  EXPECT_EQ(a.rows, setup.grid.steps + 1);
+
+  // The full run's peaks are those of the in-memory history (the definition ComputePeaks keeps).
+  ResponseHistory history;
+  RunAnalysis(model.analysis, setup, &history);
+  const ResponsePeaks from_history = ComputePeaks(setup, history);
+  ExpectSamePeak(a.isolator_displacement, from_history.isolator_displacement, "from history");
+  ExpectSamePeak(a.roof_absolute_acceleration, from_history.roof_absolute_acceleration,
+                 "from history");
+  EXPECT_EQ(a.residual_isolator_displacement, from_history.residual_isolator_displacement);
+
+  // What this guards against: peaks of the thinned history miss the true ones.
+  AnalysisSetup coarse = setup;
+  coarse.grid.output_every = 10;
+  ResponseHistory thinned_history;
+  RunAnalysis(model.analysis, coarse, &thinned_history);
+  const ResponsePeaks missed = ComputePeaks(coarse, thinned_history);
+  EXPECT_LT(missed.roof_absolute_acceleration.value, a.roof_absolute_acceleration.value);
+  EXPECT_LT(missed.story_drift.value, a.story_drift.value);
+
+  // And the file carries the full run's peaks.
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(Read(file, "peaks/roof_absolute_acceleration").values,
+            std::vector<double>{a.roof_absolute_acceleration.value});
+  H5Fclose(file);
+}
+
+TEST(ResultsWriter, SummaryOnlyHoldsPeaksAndFinalEnergiesWithoutHistories) {
+  const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
+  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  model::OutputSelection summary_only;
+  summary_only.summary_only = true;
+  const auto path = TemporaryFile("summary_only.h5");
+  const RecordedRun run =
+      RunAndRecord(model, model.analysis, setup, summary_only, path.string(), "test");
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  for (const char* history : {"time", "ground_acceleration", "displacement", "connection_force",
+                              "isolator/force", "story/drift", "energy/input"}) {
+    EXPECT_TRUE(Read(file, history).dims.empty()) << history << " written";
+  }
+  EXPECT_EQ(IntegerAttribute(file, "summary_only"), 1);
+  EXPECT_EQ(Read(file, "peaks/isolator_displacement").values,
+            std::vector<double>{run.peaks.isolator_displacement.value});
+  EXPECT_EQ(Read(file, "peaks/story_drift").values,
+            std::vector<double>{run.peaks.story_drift.value});
+  EXPECT_EQ(Read(file, "final_energy/input").values, std::vector<double>{run.peaks.energies.input});
+  EXPECT_EQ(Read(file, "final_energy/hysteretic").values,
+            std::vector<double>{run.peaks.energies.hysteretic});
+  EXPECT_EQ(Read(file, "story/height").values.size(), 5u);
+  H5Fclose(file);
+  EXPECT_GT(run.peaks.isolator_displacement.value, 10.0);
+}
+
+TEST(ResultsWriter, LevelsAndQuantitiesChooseTheColumns) {
+  const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
+  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  ResponseHistory history;
+  RunAnalysis(model.analysis, setup, &history);
+  const int rows = history.rows_written;
+
+  model::OutputSelection selection;
+  selection.quantities = {"displacement", "connection_force", "story"};
+  selection.levels = {model::kRoofLevel, 0};  // the base and floor 5
+  const auto path = TemporaryFile("levels.h5");
+  RunAndRecord(model, model.analysis, setup, selection, path.string(), "test");
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(Read(file, "displacement").dims, (std::vector<hsize_t>{hsize_t(rows), 2}));
+  ExpectBitwiseEqual(Read(file, "displacement").values,
+                     Expected(history.displacement, rows, 1, {0, 5}), "displacement");
+  // The isolation layer sits below the base, story 5 below floor 5.
+  ExpectBitwiseEqual(Read(file, "connection_force").values,
+                     Expected(history.connection_force, rows, 1, {0, 5}), "connection_force");
+  ExpectBitwiseEqual(
+      Read(file, "story/drift").values,
+      ExpectedVector(
+          rows, 1, [&](int r) { return history.displacement(r, 5) - history.displacement(r, 4); }),
+      "story/drift");
+  for (const char* absent :
+       {"velocity", "acceleration", "absolute_acceleration", "isolator/force", "energy/input"}) {
+    EXPECT_TRUE(Read(file, absent).dims.empty()) << absent << " written";
+  }
+  H5Fclose(file);
+
+  // A fixed-base building has no level 0: its floors count from 1.
+  const model::ModelFile frame = model::LoadModelFile(Model("chopra/case_e_five_story_frame.yaml"));
+  const AnalysisSetup frame_setup = PrepareAnalysis(frame, {});
+  model::OutputSelection level_zero;
+  level_zero.levels = {0};
+  EXPECT_THROW(SelectedDofs(level_zero, frame_setup, "output.levels"), InputError);
+  model::OutputSelection first_floor;
+  first_floor.levels = {1, model::kRoofLevel};
+  EXPECT_EQ(SelectedDofs(first_floor, frame_setup, "output.levels"), (std::vector<int>{0, 4}));
+}
+
+TEST(ResultsWriter, CsvFollowsTheSelection) {
+  const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
+  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  ResponseHistory history;
+  RunAnalysis(model.analysis, setup, &history);
+  model::OutputSelection selection;
+  selection.every = 10;
+  selection.quantities = {"energy"};
+  const auto path = TemporaryFile("energy.csv");
+  RunAndRecord(model, model.analysis, setup, selection, path.string(), "test", 7);
+  std::ifstream in(path);
+  std::string line, header;
+  std::vector<std::vector<double>> values;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header.empty()) {
+      header = line;
+      continue;
+    }
+    std::vector<double> row;
+    std::size_t start = 0;
+    while (start <= line.size()) {
+      const std::size_t comma = std::min(line.find(',', start), line.size());
+      row.push_back(std::stod(line.substr(start, comma - start)));
+      start = comma + 1;
+    }
+    values.push_back(row);
+  }
+  EXPECT_EQ(header,
+            "time [s],ground_acceleration [mm/s^2],energy/input [kN*mm],energy/kinetic [kN*mm],"
+            "energy/damping [kN*mm],energy/elastic [kN*mm],energy/hysteretic [kN*mm]");
+  ASSERT_EQ(values.size(), std::size_t((history.rows_written - 1) / 10 + 1));
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const int r = static_cast<int>(10 * k);
+    ASSERT_EQ(values[k].size(), 7u);
+    EXPECT_EQ(values[k][0], history.time[r]);
+    EXPECT_EQ(values[k][2], history.energies[r].input);
+    EXPECT_EQ(values[k][6], history.energies[r].hysteretic);
+  }
+}
+
+TEST(ResultsWriter, AWriterAbandonedBeforeFinishLeavesNothing) {
+  const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
+  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  ResponseHistory history;
+  AnalysisSetup short_run = setup;
+  short_run.grid.steps = 50;
+  RunAnalysis(model.analysis, short_run, &history);
+  for (const char* name : {"abandoned.h5", "abandoned.csv"}) {
+    const auto path = TemporaryFile(name);
+    {
+      const RunDescription run{&model, &setup, &model.analysis, nullptr, nullptr, "test", {}};
+      ResultsWriter writer(path.string(), run, 7);
+      for (int r = 0; r < history.rows_written; ++r) writer.Observe(history.Row(r));
+      EXPECT_EQ(writer.rows(), history.rows_written);
+    }
+    EXPECT_FALSE(std::filesystem::exists(path)) << name;
+    EXPECT_TRUE(testing::LeftoverTemporaries(path).empty()) << name;
+  }
+}
+
+}  // namespace
+}  // namespace isolab::analysis
