@@ -47,9 +47,9 @@ Excitation Noise() {
   spec.duration = 100.0;
   spec.pga = 0.35;
   const io::Record record = analysis::FilteredNoiseRecord(spec);
-  Excitation excitation;
-  excitation.ground_acceleration.dt = record.dt;
-  for (const double a : record.values) excitation.ground_acceleration.values.push_back(a * 9806.65);
+  Excitation excitation = Excitation::Uniform({});
+  excitation.ground[0].acceleration.dt = record.dt;
+  for (const double a : record.values) excitation.ground[0].acceleration.values.push_back(a * 9806.65);
   return excitation;
 }
 
@@ -144,7 +144,7 @@ void FiveStoryTable9Floor(benchmark::State& state) {
   Floor floor(mass, damping, isolator, stories);
   const Excitation excitation = Noise();
   typename Floor::Output output;
-  long solves = floor.Run(excitation.ground_acceleration, 0.01, kSteps, &output);
+  long solves = floor.Run(excitation.ground[0].acceleration, 0.01, kSteps, &output);
 
   ResponseHistory response;
   const RunSummary summary = RunNewmark(building, excitation, {0.01, kSteps}, {}, &response);
@@ -163,7 +163,7 @@ void FiveStoryTable9Floor(benchmark::State& state) {
     return;
   }
   solves = 0;
-  for (auto _ : state) solves += floor.Run(excitation.ground_acceleration, 0.01, kSteps, &output);
+  for (auto _ : state) solves += floor.Run(excitation.ground[0].acceleration, 0.01, kSteps, &output);
   CountSteps(state, kSteps, solves);
 }
 

@@ -78,8 +78,8 @@ void BM_ConstantDuctilityCurve20Periods(benchmark::State& state) {
 BENCHMARK(BM_ConstantDuctilityCurve20Periods)->Unit(benchmark::kMillisecond);
 
 void BM_InelasticSdofRun(benchmark::State& state) {
-  integrators::Excitation excitation;
-  excitation.ground_acceleration = Record();
+  integrators::Excitation excitation = integrators::Excitation::Uniform({});
+  excitation.ground[0].acceleration = Record();
   DuctilityDemand demand(excitation, 0.5, 0.05, {});
   for (auto _ : state) benchmark::DoNotOptimize(demand(0.25));
 }

@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "isolab/structure/shear_building.h"
@@ -12,38 +13,145 @@
 namespace isolab::analysis {
 namespace {
 
-// Periods of the fixed-base shear building, longest first. K is tridiagonal, so M^-1/2 K M^-1/2
-// is too and its eigenvalues cost O(n^2): cheap for thousands of stories.
-std::vector<double> FixedBasePeriods(const std::vector<structure::Story>& stories) {
-  const auto n = static_cast<Eigen::Index>(stories.size());
-  if (n == 0) return {};
-  Eigen::VectorXd k(n), m(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    k[i] = structure::InitialStiffness(stories[i].assembly);
-    m[i] = stories[i].floor_mass;
+using hysteresis::Vec2;
+using structure::kGround;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double PeriodOf(double eigenvalue) {
+  return eigenvalue > 0.0 ? 2.0 * std::numbers::pi / std::sqrt(eigenvalue) : kInfinity;
+}
+
+// Which of x, y and rotation each dof is, from the layout's levels.
+std::vector<int> DofDirections(const structure::Layout& layout, int dofs) {
+  std::vector<int> directions(dofs, structure::kX);
+  for (const structure::Level& level : layout.levels) {
+    for (int d = 0; d < 3; ++d) {
+      if (level.dofs[d] != kGround) directions[level.dofs[d]] = d;
+    }
   }
-  Eigen::VectorXd diagonal(n), off_diagonal(std::max<Eigen::Index>(n - 1, 0));
-  for (Eigen::Index i = 0; i < n; ++i) {
-    diagonal[i] = (k[i] + (i + 1 < n ? k[i + 1] : 0.0)) / m[i];
-    if (i + 1 < n) off_diagonal[i] = -k[i + 1] / std::sqrt(m[i] * m[i + 1]);
+  return directions;
+}
+
+const char* DirectionName(int direction) {
+  return direction == structure::kX ? "x" : direction == structure::kY ? "y" : "torsion";
+}
+
+// The isolator that member `member` (or coupled member `coupled`) is, or nullptr.
+const structure::IsolatorLayout* IsolatorOf(const structure::Layout& layout, int member,
+                                            int coupled) {
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    if ((member >= 0 && isolator.member == member) ||
+        (coupled >= 0 && isolator.coupled == coupled)) {
+      return &isolator;
+    }
   }
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
-  solver.computeFromTridiagonal(diagonal, off_diagonal, Eigen::EigenvaluesOnly);
-  std::vector<double> periods;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double omega_squared = solver.eigenvalues()[i];  // ascending
-    periods.push_back(omega_squared > 0.0 ? 2.0 * std::numbers::pi / std::sqrt(omega_squared)
-                                          : INFINITY);
+  return nullptr;
+}
+
+Vec2 InitialStiffness(const hysteresis::PlanAssembly& assembly) {
+  std::vector<hysteresis::PlanLawState> rest(assembly.size()), trial(assembly.size());
+  std::vector<hysteresis::PlanLawResponse> responses(assembly.size());
+  const hysteresis::PlanResponse r = assembly.Update(rest, {}, trial, responses);
+  return {r.stiffness.xx, r.stiffness.yy};
+}
+
+// The stiffness matrix as triplets: every member at its initial stiffness, the isolators at their
+// secant stiffness at `displacement`; or the isolators alone.
+enum class Members { kAll, kIsolatorsOnly };
+
+std::vector<Eigen::Triplet<double>> StiffnessEntries(const structure::Structure& s,
+                                                     const structure::Layout& layout,
+                                                     double displacement, Members which) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t k = 0; k < s.members().size(); ++k) {
+    const structure::Member& member = s.members()[k];
+    const bool isolator = IsolatorOf(layout, static_cast<int>(k), -1) != nullptr;
+    if (which == Members::kIsolatorsOnly && !isolator) continue;
+    const double stiffness = isolator ? SecantStiffness(member.assembly, displacement)
+                                      : structure::InitialStiffness(member.assembly);
+    for (int a = 0; a < structure::kMaxTerms; ++a) {
+      for (int b = 0; b < structure::kMaxTerms; ++b) {
+        if (member.dofs[a] == kGround || member.dofs[b] == kGround) continue;
+        entries.emplace_back(member.dofs[a], member.dofs[b],
+                             member.coefficients[a] * stiffness * member.coefficients[b]);
+      }
+    }
   }
-  return periods;
+  for (std::size_t i = 0; i < s.coupled_members().size(); ++i) {
+    const structure::CoupledMember& member = s.coupled_members()[i];
+    const bool isolator = IsolatorOf(layout, -1, static_cast<int>(i)) != nullptr;
+    if (which == Members::kIsolatorsOnly && !isolator) continue;
+    const Vec2 k = isolator ? SecantStiffness(member.assembly, displacement)
+                            : InitialStiffness(member.assembly);
+    for (int a = 0; a < structure::kMaxTerms; ++a) {
+      for (int b = 0; b < structure::kMaxTerms; ++b) {
+        if (member.dofs[a] == kGround || member.dofs[b] == kGround) continue;
+        const Vec2 ta = member.columns[a], tb = member.columns[b];
+        entries.emplace_back(member.dofs[a], member.dofs[b], ta.x * k.x * tb.x + ta.y * k.y * tb.y);
+      }
+    }
+  }
+  return entries;
+}
+
+// Every mode of K x = w^2 M x, longest first: from the tridiagonal M^-1/2 K M^-1/2 of a chain in
+// one direction (any size, periods only), else densely up to kMaxDenseModalDofs.
+std::vector<Mode> Modes(const structure::Structure& s, const structure::Layout& layout,
+                        double displacement) {
+  const int n = s.dofs();
+  const Eigen::VectorXd& m = s.mass();
+  const std::vector<Eigen::Triplet<double>> entries =
+      StiffnessEntries(s, layout, displacement, Members::kAll);
+  const bool chain = std::all_of(entries.begin(), entries.end(), [](const auto& e) {
+    return std::abs(e.row() - e.col()) <= 1;
+  });
+  std::vector<Mode> modes;
+  if (chain && layout.directions == 1 && !layout.rotations) {
+    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd off_diagonal = Eigen::VectorXd::Zero(std::max(n - 1, 0));
+    for (const auto& e : entries) {
+      if (e.row() == e.col()) {
+        diagonal[e.row()] += e.value() / m[e.row()];
+      } else if (e.row() > e.col()) {
+        off_diagonal[e.col()] += e.value() / std::sqrt(m[e.row()] * m[e.col()]);
+      }
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
+    solver.computeFromTridiagonal(diagonal, off_diagonal, Eigen::EigenvaluesOnly);
+    for (Eigen::Index i = 0; i < n; ++i) modes.push_back({PeriodOf(solver.eigenvalues()[i]), "x"});
+    return modes;
+  }
+  if (n > kMaxDenseModalDofs) return modes;
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
+  for (const auto& e : entries) k(e.row(), e.col()) += e.value();
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
+      k, Eigen::MatrixXd(m.asDiagonal()));
+  if (solver.info() != Eigen::Success) return modes;
+  const std::vector<int> directions = DofDirections(layout, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    double share[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < n; ++i) {
+      share[directions[i]] += m[i] * solver.eigenvectors()(i, j) * solver.eigenvectors()(i, j);
+    }
+    const int direction = static_cast<int>(std::max_element(share, share + 3) - share);
+    modes.push_back({PeriodOf(solver.eigenvalues()[j]), DirectionName(direction)});
+  }
+  return modes;
 }
 
 }  // namespace
 
 double ModelSummary::LongestPeriod() const {
   double longest = isolated_period;
-  if (!fixed_base_periods.empty()) longest = std::max(longest, fixed_base_periods.front());
+  if (!fixed_base_modes.empty()) longest = std::max(longest, fixed_base_modes.front().period);
   return longest;
+}
+
+std::vector<double> ModelSummary::FixedBasePeriods() const {
+  std::vector<double> periods;
+  for (const Mode& mode : fixed_base_modes) periods.push_back(mode.period);
+  return periods;
 }
 
 double SecantStiffness(const hysteresis::ParallelAssembly& assembly, double displacement) {
@@ -60,32 +168,102 @@ double SecantStiffness(const hysteresis::ParallelAssembly& assembly, double disp
   return force / displacement;
 }
 
-ModelSummary SummariseModel(const model::ModelFile& model, bool fixed_base, double pga,
-                            double trial_displacement) {
+Vec2 SecantStiffness(const hysteresis::PlanAssembly& assembly, double displacement) {
+  constexpr int kIncrements = 200;
+  Vec2 secant;
+  for (const Vec2 direction : {Vec2{1.0, 0.0}, Vec2{0.0, 1.0}}) {
+    std::vector<hysteresis::PlanLawState> committed(assembly.size()), trial(assembly.size());
+    std::vector<hysteresis::PlanLawResponse> responses(assembly.size());
+    double force = 0.0;
+    for (int i = 1; i <= kIncrements; ++i) {
+      const hysteresis::PlanLawInput in{(displacement * i / kIncrements) * direction, {}, 0.0};
+      force = Dot(direction, assembly.Update(committed, in, trial, responses).force);
+      committed.swap(trial);
+    }
+    (direction.x == 1.0 ? secant.x : secant.y) = force / displacement;
+  }
+  return secant;
+}
+
+std::vector<Mode> RigidModes(const structure::Structure& s, const structure::Layout& layout,
+                             double displacement) {
+  // The rigid body's dofs: the base's x (y, rotation); R carries them to every level's dofs.
+  const int rigid = layout.directions + (layout.rotations ? 1 : 0);
+  const int theta = layout.directions;  // the rotation's column of R
+  const Vec2 base = layout.levels.front().centre_of_mass;
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(s.dofs(), rigid);
+  for (const structure::Level& level : layout.levels) {
+    const Vec2 arm = level.centre_of_mass - base;
+    if (level.dofs[structure::kX] != kGround) {
+      r(level.dofs[structure::kX], 0) = 1.0;
+      if (layout.rotations) r(level.dofs[structure::kX], theta) = -arm.y;
+    }
+    if (level.dofs[structure::kY] != kGround) {
+      r(level.dofs[structure::kY], 1) = 1.0;
+      if (layout.rotations) r(level.dofs[structure::kY], theta) = arm.x;
+    }
+    if (level.dofs[structure::kRotation] != kGround) r(level.dofs[structure::kRotation], theta) = 1.0;
+  }
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(s.dofs(), s.dofs());
+  for (const auto& e : StiffnessEntries(s, layout, displacement, Members::kIsolatorsOnly)) {
+    k(e.row(), e.col()) += e.value();
+  }
+  const Eigen::MatrixXd m_rigid = r.transpose() * s.mass().asDiagonal() * r;
+  const Eigen::MatrixXd k_rigid = r.transpose() * k * r;
+  std::vector<Mode> modes;
+  if (rigid == 1) {
+    modes.push_back({PeriodOf(k_rigid(0, 0) / m_rigid(0, 0)), "x"});
+    return modes;
+  }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(k_rigid, m_rigid);
+  for (int j = 0; j < rigid; ++j) {
+    int direction = 0;
+    double largest = -1.0;
+    for (int i = 0; i < rigid; ++i) {
+      const double share = m_rigid(i, i) * solver.eigenvectors()(i, j) * solver.eigenvectors()(i, j);
+      if (share > largest) {
+        largest = share;
+        direction = i == theta ? structure::kRotation : i;
+      }
+    }
+    modes.push_back({PeriodOf(solver.eigenvalues()[j]), DirectionName(direction)});
+  }
+  return modes;
+}
+
+ModelSummary SummariseModel(const structure::Structure& s, const structure::Layout& layout,
+                            const structure::LaidOutStructure* fixed_base, const UnitSystem& units,
+                            double pga, double trial_displacement) {
   ModelSummary summary;
-  const UnitSystem& units = model.units;
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
   const double seconds = units.Convert(1.0, "s", dimension::kTime);
-  const model::StructureSection& structure = *model.structure;
-  if (structure.kind == model::StructureSection::Kind::kSdof) {
-    summary.total_mass = structure.mass;
-    summary.isolated = true;
-  } else {
-    const structure::ShearBuilding& building = structure.building;
-    for (const structure::Story& story : building.stories) summary.total_mass += story.floor_mass;
-    summary.isolated = !fixed_base && model.isolation.size() > 0;
-    if (summary.isolated) summary.total_mass += building.base_mass;
-    summary.fixed_base_periods = FixedBasePeriods(building.stories);
+  for (const structure::Level& level : layout.levels) {
+    summary.total_mass += s.mass()[level.dofs[structure::kX]];
   }
   summary.total_weight = summary.total_mass * g;
   summary.pga = pga;
   summary.trial_displacement = trial_displacement;
+  summary.isolated = layout.isolated();
+  if (fixed_base) {
+    summary.fixed_base_modes = Modes(fixed_base->structure, fixed_base->layout, 0.0);
+  } else if (!summary.isolated) {
+    summary.fixed_base_modes = Modes(s, layout, 0.0);
+  }
   if (summary.isolated) {
-    summary.secant_stiffness = SecantStiffness(model.isolation, trial_displacement);
-    summary.isolated_period =
-        summary.secant_stiffness > 0.0
-            ? 2.0 * std::numbers::pi * std::sqrt(summary.total_mass / summary.secant_stiffness)
-            : INFINITY;
+    for (const structure::IsolatorLayout& isolator : layout.isolators) {
+      summary.secant_stiffness +=
+          isolator.member >= 0
+              ? SecantStiffness(s.members()[isolator.member].assembly, trial_displacement)
+              : SecantStiffness(s.coupled_members()[isolator.coupled].assembly,
+                                trial_displacement)
+                    .x;
+    }
+    summary.rigid_modes = RigidModes(s, layout, trial_displacement);
+    summary.isolated_modes = Modes(s, layout, trial_displacement);
+    summary.isolated_period = summary.rigid_modes.front().period;
+    for (const Mode& mode : summary.rigid_modes) {
+      summary.isolated_period = std::max(summary.isolated_period, mode.period);
+    }
   }
 
   const std::string check = "check the units of the masses and stiffnesses";
@@ -95,12 +273,12 @@ ModelSummary SummariseModel(const model::ModelFile& model, bool fixed_base, doub
         "earthquake has produced: check the record's units and the scale",
         pga / g, kMaxPlausiblePga));
   }
-  if (!summary.fixed_base_periods.empty() &&
-      summary.fixed_base_periods.front() > kMaxPlausiblePeriod * seconds) {
+  if (!summary.fixed_base_modes.empty() &&
+      summary.fixed_base_modes.front().period > kMaxPlausiblePeriod * seconds) {
     summary.warnings.push_back(fmt::format(
         "the superstructure's fixed-base first period, {:.4g} {}, exceeds {:g} s, longer than "
         "any building's: {}",
-        summary.fixed_base_periods.front(), units.time(), kMaxPlausiblePeriod, check));
+        summary.fixed_base_modes.front().period, units.time(), kMaxPlausiblePeriod, check));
   }
   if (summary.isolated && summary.isolated_period > kMaxPlausiblePeriod * seconds) {
     summary.warnings.push_back(fmt::format(

@@ -6,62 +6,203 @@
 namespace isolab::analysis {
 namespace {
 
+using hysteresis::Norm;
+using hysteresis::Vec2;
+using structure::kGround;
+
 void Consider(Peak* peak, double value, double time, int index = -1) {
   if (std::abs(value) > peak->value) *peak = {std::abs(value), time, index};
 }
 
+// A value with one or two horizontal components: |x| in one direction, the resultant in two.
+double Magnitude(Vec2 v) { return v.y == 0.0 ? std::abs(v.x) : Norm(v); }
+
+// The largest of `peaks` (the first of equals), or an absent peak.
+Peak Largest(const std::vector<Peak>& peaks) {
+  Peak largest;
+  for (const Peak& peak : peaks) {
+    if (largest.index < 0 || peak.value > largest.value) largest = peak;
+  }
+  return largest;
+}
+
 }  // namespace
 
+PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
+  const structure::Layout& layout = problem.layout;
+  const std::size_t isolators = layout.isolators.size();
+  for (std::size_t i = 0; i < isolators; ++i) {
+    peaks_.isolator_displacements.push_back({0.0, 0.0, static_cast<int>(i)});
+    peaks_.isolator_forces.push_back({0.0, 0.0, static_cast<int>(i)});
+  }
+  for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+    peaks_.story_drifts.push_back({0.0, 0.0, static_cast<int>(s)});
+  }
+  if (layout.rotations) {
+    for (std::size_t l = 0; l < layout.levels.size(); ++l) {
+      peaks_.level_rotations.push_back({0.0, 0.0, static_cast<int>(l)});
+    }
+  }
+  const bool base = layout.isolated() && !layout.stories.empty();
+  for (std::size_t l = base ? 1 : 0; l < layout.levels.size(); ++l) {
+    floors_.push_back(static_cast<int>(l));
+  }
+  // Every step may be a row (Newmark): the window holds at most this many.
+  const double dt = problem.grid.dt > 0.0 ? problem.grid.dt : 1.0;
+  const auto capacity = static_cast<std::size_t>(std::floor(problem.residual_window / dt)) + 2;
+  window_.assign(isolators, std::vector<Sample>(capacity));
+  at_excitation_end_.assign(isolators, Vec2{});
+}
+
+Vec2 PeakTracker::IsolatorDisplacement(std::size_t isolator,
+                                       const integrators::ResponseRow& row) const {
+  const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
+  if (site.member >= 0) {
+    return {problem_.structure.MemberDeformation(site.member, row.displacement), 0.0};
+  }
+  return problem_.structure.CoupledDeformation(site.coupled, row.displacement);
+}
+
+Vec2 PeakTracker::IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const {
+  const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
+  if (site.member >= 0) return {row.connection_force[site.member], 0.0};
+  const std::size_t column = problem_.structure.coupled_force_column(site.coupled);
+  return {row.connection_force[column], row.connection_force[column + 1]};
+}
+
+Vec2 PeakTracker::StoryDrift(std::size_t story, const integrators::ResponseRow& row) const {
+  const structure::StoryLayout& s = problem_.layout.stories[story];
+  Vec2 drift;
+  if (s.members[structure::kX] >= 0) {
+    drift.x = problem_.structure.MemberDeformation(s.members[structure::kX], row.displacement);
+  }
+  if (s.members[structure::kY] >= 0) {
+    drift.y = problem_.structure.MemberDeformation(s.members[structure::kY], row.displacement);
+  }
+  return drift;
+}
+
+Vec2 PeakTracker::StoryShear(std::size_t story, const integrators::ResponseRow& row) const {
+  const structure::StoryLayout& s = problem_.layout.stories[story];
+  Vec2 shear;
+  if (s.members[structure::kX] >= 0) shear.x = row.connection_force[s.members[structure::kX]];
+  if (s.members[structure::kY] >= 0) shear.y = row.connection_force[s.members[structure::kY]];
+  return shear;
+}
+
 void PeakTracker::Observe(const integrators::ResponseRow& row) {
-  const auto& connections = setup_.structure.connections();
-  const int roof = setup_.structure.dofs() - 1;
+  const structure::Layout& layout = problem_.layout;
   const double t = row.time;
   ResponsePeaks& peaks = peaks_;
-  if (setup_.layout.isolation >= 0) {
-    const double u = row.displacement[connections[setup_.layout.isolation].dof_j];
-    Consider(&peaks.isolator_displacement, u, t);
-    Consider(&peaks.isolator_force, row.connection_force[setup_.layout.isolation], t);
-    // The residual is read over the last residual_window of the run, wherever the run ends.
-    window_.emplace_back(t, u);
-    while (window_.front().first < t - setup_.residual_window) window_.pop_front();
-    if (t <= setup_.excitation_end * (1 + 1e-12)) peaks.isolator_displacement_at_excitation_end = u;
+
+  // The residual window: drop the samples older than it, then add this row's.
+  while (window_size_ > 0 &&
+         window_.front()[window_start_].t < t - problem_.residual_window) {
+    window_start_ = (window_start_ + 1) % window_.front().size();
+    --window_size_;
   }
-  double base_shear = 0.0;
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    if (connections[k].dof_i == structure::kGround) base_shear += row.connection_force[k];
+  if (!window_.empty() && window_size_ == window_.front().size()) {
+    window_start_ = (window_start_ + 1) % window_.front().size();
+    --window_size_;
   }
-  Consider(&peaks.base_shear, base_shear, t);
-  Consider(&peaks.roof_absolute_acceleration, row.absolute_acceleration[roof], t, roof);
-  for (std::size_t s = 0; s < setup_.layout.stories.size(); ++s) {
-    if (s == 0) {
-      Consider(&peaks.first_story_shear, row.connection_force[setup_.layout.stories[s]], t);
+  const bool before_end = t <= problem_.excitation_end * (1 + 1e-12);
+  for (std::size_t i = 0; i < layout.isolators.size(); ++i) {
+    const Vec2 u = IsolatorDisplacement(i, row);
+    Consider(&peaks.isolator_displacements[i], Magnitude(u), t, static_cast<int>(i));
+    Consider(&peaks.isolator_forces[i], Magnitude(IsolatorForce(i, row)), t, static_cast<int>(i));
+    std::vector<Sample>& ring = window_[i];
+    ring[(window_start_ + window_size_) % ring.size()] = {t, u.x, u.y};
+    if (before_end) at_excitation_end_[i] = u;
+  }
+  if (!window_.empty()) ++window_size_;
+
+  Vec2 base_shear;
+  for (const structure::GroundForce& term : layout.base_shear) {
+    if (term.member >= 0) {
+      const double f = row.connection_force[term.member];
+      (term.direction == structure::kX ? base_shear.x : base_shear.y) += f;
+    } else {
+      const std::size_t column = problem_.structure.coupled_force_column(term.coupled);
+      base_shear = base_shear + Vec2{row.connection_force[column], row.connection_force[column + 1]};
     }
-    Consider(&peaks.story_drift, StoryDrift(setup_, row.displacement, s), t, static_cast<int>(s));
+  }
+  Consider(&peaks.base_shear, Magnitude(base_shear), t);
+
+  const auto acceleration = [&](const structure::Level& level) {
+    const int x = level.dofs[structure::kX], y = level.dofs[structure::kY];
+    return Vec2{row.absolute_acceleration[x], y == kGround ? 0.0 : row.absolute_acceleration[y]};
+  };
+  const int roof = static_cast<int>(layout.levels.size()) - 1;
+  Consider(&peaks.roof_absolute_acceleration, Magnitude(acceleration(layout.roof())), t, roof);
+  for (const int level : floors_) {
+    Consider(&peaks.floor_acceleration, Magnitude(acceleration(layout.levels[level])), t, level);
+  }
+  for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+    if (s == 0) Consider(&peaks.first_story_shear, Magnitude(StoryShear(s, row)), t);
+    Consider(&peaks.story_drifts[s], Magnitude(StoryDrift(s, row)), t, static_cast<int>(s));
+  }
+  if (layout.rotations) {
+    for (std::size_t l = 0; l < layout.levels.size(); ++l) {
+      Consider(&peaks.level_rotations[l], row.displacement[layout.levels[l].dofs[structure::kRotation]],
+               t, static_cast<int>(l));
+    }
+    const structure::Level& base = layout.levels.front();
+    Consider(&peaks.base_centre_displacement,
+             Norm({row.displacement[base.dofs[structure::kX]],
+                   row.displacement[base.dofs[structure::kY]]}),
+             t, 0);
   }
   peaks.energies = row.energies;
   ++peaks.rows;
 }
 
 ResponsePeaks PeakTracker::Peaks() const {
+  const structure::Layout& layout = problem_.layout;
   ResponsePeaks peaks = peaks_;
-  if (!window_.empty()) {
-    double low = window_.back().second, high = low;
-    for (const auto& [t, u] : window_) {
-      low = std::min(low, u);
-      high = std::max(high, u);
-    }
-    peaks.residual_isolator_displacement = 0.5 * (low + high);
-    peaks.residual_oscillation = 0.5 * (high - low);
-  }
+  peaks.isolator_displacement = Largest(peaks.isolator_displacements);
+  peaks.isolator_force = Largest(peaks.isolator_forces);
+  peaks.story_drift = Largest(peaks.story_drifts);
+  peaks.level_rotation = Largest(peaks.level_rotations);
   if (peaks.story_drift.index >= 0) {
-    const double height = setup_.layout.story_heights[peaks.story_drift.index];
+    const double height = layout.stories[peaks.story_drift.index].height;
     if (height > 0.0) peaks.story_drift_ratio = peaks.story_drift.value / height;
+  }
+  for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+    if (layout.stories[s].height > 0.0) {
+      peaks.largest_drift_ratio = std::max(peaks.largest_drift_ratio,
+                                           peaks.story_drifts[s].value / layout.stories[s].height);
+    }
+  }
+  if (peaks.base_centre_displacement.value > 0.0) {
+    peaks.torsional_amplification =
+        peaks.isolator_displacement.value / peaks.base_centre_displacement.value;
+  }
+  for (std::size_t i = 0; i < window_.size(); ++i) {
+    Vec2 low, high;
+    for (std::size_t k = 0; k < window_size_; ++k) {
+      const Sample& s = window_[i][(window_start_ + k) % window_[i].size()];
+      low = k == 0 ? Vec2{s.x, s.y} : Vec2{std::min(low.x, s.x), std::min(low.y, s.y)};
+      high = k == 0 ? Vec2{s.x, s.y} : Vec2{std::max(high.x, s.x), std::max(high.y, s.y)};
+    }
+    const Vec2 middle = 0.5 * (low + high), half = 0.5 * (high - low);
+    const bool one_direction = layout.isolators[i].member >= 0;
+    peaks.isolator_residuals.push_back(one_direction ? middle.x : Norm(middle));
+    peaks.isolator_oscillations.push_back(one_direction ? half.x : Norm(half));
+    if (i == 0 || std::abs(peaks.isolator_residuals[i]) > std::abs(peaks.residual_isolator_displacement)) {
+      peaks.residual_isolator_displacement = peaks.isolator_residuals[i];
+      peaks.residual_oscillation = peaks.isolator_oscillations[i];
+    }
+    const Vec2 end = at_excitation_end_[i];
+    const double at_end = one_direction ? end.x : Norm(end);
+    if (i == 0 || std::abs(at_end) > std::abs(peaks.isolator_displacement_at_excitation_end)) {
+      peaks.isolator_displacement_at_excitation_end = at_end;
+    }
   }
   return peaks;
 }
 
-ResponsePeaks ComputePeaks(const AnalysisSetup& setup, const integrators::ResponseHistory& r) {
-  PeakTracker tracker(setup);
+ResponsePeaks ComputePeaks(const Problem& problem, const integrators::ResponseHistory& r) {
+  PeakTracker tracker(problem);
   for (int row = 0; row < r.rows_written; ++row) tracker.Observe(r.Row(row));
   return tracker.Peaks();
 }

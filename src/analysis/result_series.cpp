@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "isolab/core/errors.h"
@@ -10,10 +11,13 @@
 namespace isolab::analysis {
 namespace {
 
+using hysteresis::Norm;
+using hysteresis::Vec2;
 using integrators::ResponseRow;
 using RowValues = std::span<const double> ResponseRow::*;
+using structure::kGround;
 
-// The chosen columns of one of the row's per-DOF or per-connection arrays.
+// The chosen entries of one of the row's per-dof or per-force-column arrays, times a factor each.
 Series Columns(std::string name, std::string units, std::vector<std::string> columns,
                RowValues values, std::vector<int> chosen) {
   return {std::move(name), std::move(units), std::move(columns),
@@ -31,47 +35,85 @@ Series Vector(std::string name, std::string units, Value value) {
           }};
 }
 
-}  // namespace
-
-std::vector<int> SelectedDofs(const model::OutputSelection& selection, const AnalysisSetup& setup,
-                              const std::string& key) {
-  const int dofs = setup.structure.dofs();
-  std::vector<int> selected;
-  if (selection.levels.empty()) {
-    for (int dof = 0; dof < dofs; ++dof) selected.push_back(dof);
-    return selected;
-  }
-  // Level 0 is the base when the building stands on one, or an SDOF's mass; floors count from 1.
-  const bool has_level_zero = setup.layout.dof_names.front() != "floor 1";
-  for (const int level : selection.levels) {
-    const int dof = level == model::kRoofLevel ? dofs - 1 : has_level_zero ? level : level - 1;
-    if (dof < 0 || dof >= dofs) {
-      throw InputError(
-          {key}, fmt::format("level {} is not in the structure (its levels are {} to "
-                             "{}, or roof)",
-                             level, has_level_zero ? 0 : 1, has_level_zero ? dofs - 1 : dofs));
-    }
-    selected.push_back(dof);
-  }
-  std::sort(selected.begin(), selected.end());
-  selected.erase(std::unique(selected.begin(), selected.end()), selected.end());
-  return selected;
+// "name" in one direction, "name.x" and "name.y" in two.
+std::vector<std::string> Directional(const std::string& name, bool two) {
+  if (!two) return {name};
+  return {name + ".x", name + ".y"};
 }
 
-std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks) {
+// A single column is a vector: a one-direction structure's one isolator keeps its (n) datasets.
+std::vector<std::string> Named(std::vector<std::string> columns) {
+  if (columns.size() == 1) columns.clear();
+  return columns;
+}
+
+// The level each member and each coupled member belongs to (the one above a story, an isolator's
+// own), for the level selection.
+struct MemberLevels {
+  std::vector<int> member, coupled;
+};
+MemberLevels LevelsOfMembers(const Problem& problem) {
+  MemberLevels levels{std::vector<int>(problem.structure.members().size(), -1),
+                      std::vector<int>(problem.structure.coupled_members().size(), -1)};
+  for (const structure::StoryLayout& story : problem.layout.stories) {
+    for (const int member : story.members) {
+      if (member >= 0) levels.member[member] = story.level;
+    }
+  }
+  for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+    if (isolator.member >= 0) levels.member[isolator.member] = isolator.level;
+    if (isolator.coupled >= 0) levels.coupled[isolator.coupled] = isolator.level;
+  }
+  return levels;
+}
+
+}  // namespace
+
+std::vector<NamedPeak> FilePeaks(const Problem& problem, const ResponsePeaks& peaks) {
+  const structure::Layout& layout = problem.layout;
   std::vector<NamedPeak> named;
-  if (setup.layout.isolation >= 0) {
+  if (layout.isolated()) {
     named.push_back({"isolator_displacement", &peaks.isolator_displacement, dimension::kLength});
     named.push_back({"isolator_force", &peaks.isolator_force, dimension::kForce});
   }
   named.push_back({"base_shear", &peaks.base_shear, dimension::kForce});
   named.push_back(
       {"roof_absolute_acceleration", &peaks.roof_absolute_acceleration, dimension::kAcceleration});
-  if (!setup.layout.stories.empty()) {
+  if (!layout.stories.empty()) {
     named.push_back({"first_story_shear", &peaks.first_story_shear, dimension::kForce});
     named.push_back({"story_drift", &peaks.story_drift, dimension::kLength});
   }
+  if (layout.rotations) {
+    named.push_back({"floor_rotation", &peaks.level_rotation, dimension::kNone});
+    named.push_back(
+        {"base_centre_displacement", &peaks.base_centre_displacement, dimension::kLength});
+  }
   return named;
+}
+
+std::vector<int> SelectedLevels(const model::OutputSelection& selection,
+                                const structure::Layout& layout, const std::string& key) {
+  const int levels = static_cast<int>(layout.levels.size());
+  std::vector<int> selected;
+  if (selection.levels.empty()) {
+    for (int level = 0; level < levels; ++level) selected.push_back(level);
+    return selected;
+  }
+  // Level 0 is the base when the building stands on one, or an SDOF's mass; floors count from 1.
+  const bool has_level_zero = layout.isolated();
+  for (const int level : selection.levels) {
+    const int index = level == model::kRoofLevel ? levels - 1 : has_level_zero ? level : level - 1;
+    if (index < 0 || index >= levels) {
+      throw InputError({key}, fmt::format("level {} is not in the structure (its levels are {} to "
+                                          "{}, or roof)",
+                                          level, has_level_zero ? 0 : 1,
+                                          has_level_zero ? levels - 1 : levels));
+    }
+    selected.push_back(index);
+  }
+  std::sort(selected.begin(), selected.end());
+  selected.erase(std::unique(selected.begin(), selected.end()), selected.end());
+  return selected;
 }
 
 std::vector<std::string> RecordedQuantities(const model::OutputSelection& selection) {
@@ -83,118 +125,212 @@ std::vector<std::string> RecordedQuantities(const model::OutputSelection& select
 }
 
 std::vector<std::string> RecordedLevels(const model::OutputSelection& selection,
-                                        const AnalysisSetup& setup) {
+                                        const Problem& problem) {
   std::vector<std::string> levels;
   if (selection.summary_only) return levels;
-  for (const int dof : SelectedDofs(selection, setup, "output.levels")) {
-    levels.push_back(setup.layout.dof_names[dof]);
+  for (const int level : SelectedLevels(selection, problem.layout, "output.levels")) {
+    levels.push_back(problem.layout.levels[level].name);
   }
   return levels;
 }
 
-std::vector<Series> ResultSeries(const model::ModelFile& model, const AnalysisSetup& setup,
-                                 const model::OutputSelection& selection) {
+std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSelection& selection) {
   std::vector<Series> series;
   if (selection.summary_only) return series;
-  const UnitSystem& units = model.units;
+  const UnitSystem& units = problem.units();
+  const structure::Structure& s = problem.structure;
+  const structure::Layout& layout = problem.layout;
+  const bool two = layout.directions == 2;
   const std::string length = DescribeUnits(units, dimension::kLength);
   const std::string force = DescribeUnits(units, dimension::kForce);
   const std::string velocity = DescribeUnits(units, dimension::kVelocity);
   const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
   const std::string energy = fmt::format("{}*{}", units.force(), units.length());
-  const auto& connections = setup.structure.connections();
 
-  // The selected levels: their DOFs, and the connections and stories just below them.
-  const std::vector<int> dofs = SelectedDofs(selection, setup, "output.levels");
-  const auto chosen = [&dofs](int dof) {
-    return std::binary_search(dofs.begin(), dofs.end(), dof);
+  // The selected levels: their dofs, and the members and stories that belong to them.
+  const std::vector<int> levels = SelectedLevels(selection, layout, "output.levels");
+  const auto chosen = [&levels](int level) {
+    return std::binary_search(levels.begin(), levels.end(), level);
   };
-  std::vector<std::string> dof_names;
-  for (const int dof : dofs) dof_names.push_back(setup.layout.dof_names[dof]);
-  std::vector<int> chosen_connections;
-  std::vector<std::string> connection_names;
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    if (!chosen(connections[k].dof_j)) continue;
-    chosen_connections.push_back(static_cast<int>(k));
-    connection_names.push_back(connections[k].name);
+  std::vector<int> translations, rotations;
+  std::vector<std::string> translation_names, rotation_names;
+  for (const int level : levels) {
+    const structure::Level& l = layout.levels[level];
+    const std::vector<std::string> names = Directional(l.name, two);
+    for (int d = 0; d < layout.directions; ++d) {
+      translations.push_back(l.dofs[d]);
+      translation_names.push_back(names[d]);
+    }
+    if (l.dofs[structure::kRotation] != kGround) {
+      rotations.push_back(l.dofs[structure::kRotation]);
+      rotation_names.push_back(l.name);
+    }
   }
-  std::vector<std::size_t> stories;  // indices into setup.layout.stories
-  std::vector<std::string> story_names;
-  for (std::size_t s = 0; s < setup.layout.stories.size(); ++s) {
-    const auto& story = connections[setup.layout.stories[s]];
-    if (!chosen(story.dof_j)) continue;
-    stories.push_back(s);
-    story_names.push_back(story.name);
+  // Torsion members' forces are torques: they are the stories' torque, not connection forces.
+  std::vector<bool> torque(s.members().size(), false);
+  for (const structure::StoryLayout& story : layout.stories) {
+    if (story.members[structure::kRotation] >= 0) torque[story.members[structure::kRotation]] = true;
+  }
+  const MemberLevels member_levels = LevelsOfMembers(problem);
+  std::vector<int> force_columns;
+  std::vector<std::string> force_names;
+  for (std::size_t k = 0; k < s.members().size(); ++k) {
+    if (torque[k] || !chosen(member_levels.member[k])) continue;
+    force_columns.push_back(static_cast<int>(k));
+    force_names.push_back(s.members()[k].name);
+  }
+  for (std::size_t i = 0; i < s.coupled_members().size(); ++i) {
+    if (!chosen(member_levels.coupled[i])) continue;
+    int column = static_cast<int>(s.coupled_force_column(i));
+    for (const std::string& name : Directional(s.coupled_members()[i].name, true)) {
+      force_names.push_back(name);
+      force_columns.push_back(column++);
+    }
   }
 
   series.push_back(Vector("time", units.time(), [](const ResponseRow& row) { return row.time; }));
-  if (!setup.record.path.empty()) {
-    series.push_back(Vector("ground_acceleration", acceleration, [&setup](const ResponseRow& row) {
-      return setup.excitation.ground_acceleration.At(row.time);
-    }));
+  if (!problem.records.empty()) {
+    std::vector<std::string> columns;
+    if (two) columns = {"x", "y"};
+    series.push_back({"ground_acceleration", acceleration, columns,
+                      [&problem](const ResponseRow& row, double* out) {
+                        for (const integrators::GroundMotion& motion : problem.excitation.ground) {
+                          *out++ = motion.acceleration.At(row.time);
+                        }
+                      }});
   }
   const auto per_dof = [&](const char* name, const std::string& units, RowValues values) {
-    if (selection.Records(name)) series.push_back(Columns(name, units, dof_names, values, dofs));
+    if (selection.Records(name)) {
+      series.push_back(Columns(name, units, translation_names, values, translations));
+    }
   };
   per_dof("displacement", length, &ResponseRow::displacement);
+  if (selection.Records("displacement") && !rotations.empty()) {
+    series.push_back(
+        Columns("rotation", "rad", rotation_names, &ResponseRow::displacement, rotations));
+  }
   per_dof("velocity", velocity, &ResponseRow::velocity);
   per_dof("acceleration", acceleration, &ResponseRow::acceleration);
   per_dof("absolute_acceleration", acceleration, &ResponseRow::absolute_acceleration);
-  if (selection.Records("connection_force") && !chosen_connections.empty()) {
-    series.push_back(Columns("connection_force", force, connection_names,
-                             &ResponseRow::connection_force, chosen_connections));
+  if (selection.Records("connection_force") && !force_columns.empty()) {
+    series.push_back(Columns("connection_force", force, force_names,
+                             &ResponseRow::connection_force, force_columns));
   }
 
-  if (setup.layout.isolation >= 0 && selection.Records("isolator")) {
-    const int k = setup.layout.isolation;
-    const int dof = connections[k].dof_j;
-    series.push_back(Vector("isolator/displacement", length,
-                            [dof](const ResponseRow& row) { return row.displacement[dof]; }));
-    series.push_back(Vector("isolator/force", force,
-                            [k](const ResponseRow& row) { return row.connection_force[k]; }));
-    std::vector<std::string> components;
-    for (const auto& component : connections[k].assembly.components()) {
-      components.push_back(component.name);
+  if (layout.isolated() && selection.Records("isolator")) {
+    // Each isolator's (x[, y]) deformation and force, as the row gives them.
+    std::vector<std::string> names, resultants, components;
+    std::vector<int> force_of;  // per column: its force column
+    bool any_coupled = false;
+    std::vector<std::size_t> component_laws;  // per component column: its law state
+    const bool many = layout.isolators.size() > 1;
+    for (const structure::IsolatorLayout& isolator : layout.isolators) {
+      const bool coupled = isolator.coupled >= 0;
+      any_coupled = any_coupled || coupled;
+      for (const std::string& name : Directional(isolator.name, coupled)) names.push_back(name);
+      resultants.push_back(isolator.name);
+      const std::string prefix = many ? isolator.name + "/" : "";
+      if (coupled) {
+        const std::size_t column = s.coupled_force_column(isolator.coupled);
+        force_of.push_back(static_cast<int>(column));
+        force_of.push_back(static_cast<int>(column + 1));
+        std::size_t law = s.coupled_law_offset(isolator.coupled);
+        for (const auto& component : s.coupled_members()[isolator.coupled].assembly.components()) {
+          for (const std::string& name : Directional(prefix + component.name, true)) {
+            components.push_back(name);
+            component_laws.push_back(law++);
+          }
+        }
+      } else {
+        force_of.push_back(isolator.member);
+        std::size_t law = s.law_offset(isolator.member);
+        for (const auto& component : s.members()[isolator.member].assembly.components()) {
+          components.push_back(prefix + component.name);
+          component_laws.push_back(law++);
+        }
+      }
     }
-    const std::size_t first = setup.structure.law_offset(k);
+    const auto deformations = [&problem](const ResponseRow& row, double* out) {
+      for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+        if (isolator.member >= 0) {
+          *out++ = problem.structure.MemberDeformation(isolator.member, row.displacement);
+        } else {
+          const Vec2 u = problem.structure.CoupledDeformation(isolator.coupled, row.displacement);
+          *out++ = u.x;
+          *out++ = u.y;
+        }
+      }
+    };
+    series.push_back({"isolator/displacement", length, Named(names), deformations});
+    series.push_back(Columns("isolator/force", force, Named(names), &ResponseRow::connection_force,
+                             force_of));
+    if (any_coupled) {
+      series.push_back({"isolator/resultant", length, Named(resultants),
+                        [&problem](const ResponseRow& row, double* out) {
+                          for (const structure::IsolatorLayout& isolator :
+                               problem.layout.isolators) {
+                            *out++ = isolator.member >= 0
+                                         ? std::abs(problem.structure.MemberDeformation(
+                                               isolator.member, row.displacement))
+                                         : Norm(problem.structure.CoupledDeformation(
+                                               isolator.coupled, row.displacement));
+                          }
+                        }});
+    }
     series.push_back({"isolator/component_force", force, components,
-                      [first, count = components.size()](const ResponseRow& row, double* out) {
-                        std::copy_n(row.law_force.data() + first, count, out);
+                      [laws = std::move(component_laws)](const ResponseRow& row, double* out) {
+                        for (const std::size_t law : laws) *out++ = row.law_force[law];
                       }});
   }
+
+  std::vector<std::size_t> stories;  // the selected stories
+  for (std::size_t k = 0; k < layout.stories.size(); ++k) {
+    if (chosen(layout.stories[k].level)) stories.push_back(k);
+  }
   if (!stories.empty() && selection.Records("story")) {
+    // Per story and direction: its member, its name and its drift's factor (1, or 100 / height for
+    // the ratio in %).
+    std::vector<int> members, twists;
+    std::vector<std::string> names, twist_names;
+    std::vector<double> per_height;
     bool heights = false;
-    for (const std::size_t s : stories) heights = heights || setup.layout.story_heights[s] > 0.0;
-    std::vector<std::pair<int, int>> floors;  // (below, above); kGround: -1
-    for (const std::size_t s : stories) {
-      const auto& story = connections[setup.layout.stories[s]];
-      floors.emplace_back(story.dof_i, story.dof_j);
+    for (const std::size_t k : stories) {
+      const structure::StoryLayout& story = layout.stories[k];
+      heights = heights || story.height > 0.0;
+      const std::vector<std::string> directional = Directional(story.name, two);
+      for (int d = 0; d < layout.directions; ++d) {
+        if (story.members[d] < 0) continue;
+        members.push_back(story.members[d]);
+        names.push_back(directional[d]);
+        per_height.push_back(story.height > 0.0 ? 100.0 / story.height
+                                                : std::numeric_limits<double>::quiet_NaN());
+      }
+      if (story.members[structure::kRotation] >= 0) {
+        twists.push_back(story.members[structure::kRotation]);
+        twist_names.push_back(story.name);
+      }
     }
-    // Each story's drift times a factor: 1 for the drift, 100 / height for its ratio (%).
-    const auto drifts = [&](std::string name, std::string units, std::vector<double> factors) {
-      return Series{std::move(name), std::move(units), story_names,
-                    [floors, factors](const ResponseRow& row, double* out) {
-                      const double* u = row.displacement.data();
-                      for (std::size_t s = 0; s < floors.size(); ++s) {
-                        const double below = floors[s].first >= 0 ? u[floors[s].first] : 0.0;
-                        out[s] = factors[s] * (u[floors[s].second] - below);
+    const auto drifts = [&](std::string name, std::string units, std::vector<int> chosen_members,
+                            std::vector<std::string> columns, std::vector<double> factors) {
+      return Series{std::move(name), std::move(units), std::move(columns),
+                    [&problem, chosen_members, factors](const ResponseRow& row, double* out) {
+                      for (std::size_t c = 0; c < chosen_members.size(); ++c) {
+                        out[c] = factors[c] * problem.structure.MemberDeformation(
+                                                  chosen_members[c], row.displacement);
                       }
                     }};
     };
-    series.push_back(drifts("story/drift", length, std::vector<double>(stories.size(), 1.0)));
-    if (heights) {
-      std::vector<double> per_height;
-      for (const std::size_t s : stories) {
-        const double height = setup.layout.story_heights[s];
-        per_height.push_back(height > 0.0 ? 100.0 / height
-                                          : std::numeric_limits<double>::quiet_NaN());
-      }
-      series.push_back(drifts("story/drift_ratio", "%", per_height));
+    series.push_back(drifts("story/drift", length, members, names,
+                            std::vector<double>(members.size(), 1.0)));
+    if (heights) series.push_back(drifts("story/drift_ratio", "%", members, names, per_height));
+    series.push_back(
+        Columns("story/shear", force, names, &ResponseRow::connection_force, members));
+    if (!twists.empty()) {
+      series.push_back(drifts("story/twist", "rad", twists, twist_names,
+                              std::vector<double>(twists.size(), 1.0)));
+      series.push_back(Columns("story/torque", energy, twist_names,
+                               &ResponseRow::connection_force, twists));
     }
-    std::vector<int> story_connections;
-    for (const std::size_t s : stories) story_connections.push_back(setup.layout.stories[s]);
-    series.push_back(Columns("story/shear", force, story_names, &ResponseRow::connection_force,
-                             story_connections));
   }
   if (selection.Records("energy")) {
     const auto energy_term = [&](const char* name, double integrators::Energies::*term) {

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/csv.h"
@@ -19,25 +19,30 @@ namespace isolab::analysis {
 namespace {
 
 void WriteComments(std::ostream& out, const RunDescription& run) {
-  const AnalysisSetup& setup = *run.setup;
-  const UnitSystem& units = run.model->units;
+  const Problem& problem = *run.problem;
+  const UnitSystem& units = problem.units();
   const integrators::RunSummary& summary = *run.summary;
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
-  fmt::print(out, "# isolab {} results of {}\n", run.version, run.model->path);
+  fmt::print(out, "# isolab {} results of {}\n", run.version, problem.model.path);
   fmt::print(out, "# units: force {}, length {}, time {}\n", units.force(), units.length(),
              units.time());
-  if (!setup.record.path.empty()) {
-    const io::AppliedRecord& r = setup.record;
+  for (std::size_t i = 0; i < problem.records.size(); ++i) {
+    const io::AppliedRecord& r = problem.records[i];
     fmt::print(out,
-               "# record: {} ({}, units {} from {}, dt {:g} s), scale {:g}, PGA {:.6g} {} "
+               "# record{}: {} ({}, units {} from {}, dt {:g} s), scale {:g}, PGA {:.6g} {} "
                "({:.4g} g)\n",
-               r.path, r.format, r.units, r.units_source, r.dt, r.scale, r.pga,
+               problem.records.size() > 1 ? fmt::format(" h{}", i + 1) : "", r.path, r.format,
+               r.units, r.units_source, r.dt, r.scale, r.pga,
                DescribeUnits(units, dimension::kAcceleration), r.pga / g);
   }
-  fmt::print(out, "# integrator: {}\n", DescribeIntegrator(*run.analysis, setup.grid.dt));
+  if (problem.layout.directions > 1) {
+    fmt::print(out, "# H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle,
+               problem.angle + 90.0);
+  }
+  fmt::print(out, "# integrator: {}\n", DescribeIntegrator(*run.analysis, problem.grid.dt));
   fmt::print(out, "# excitation ends at {:g} {}, then free vibration for {:g} {}\n",
-             setup.excitation_end, units.time(), setup.free_vibration, units.time());
-  if (setup.layout.isolation >= 0) {
+             problem.excitation_end, units.time(), problem.free_vibration, units.time());
+  if (problem.layout.isolated()) {
     const ResponsePeaks& peaks = *run.peaks;
     fmt::print(out, "# residual isolator displacement: {:.6g} {} (still oscillating +-{:.3g})\n",
                peaks.residual_isolator_displacement, units.length(), peaks.residual_oscillation);
@@ -48,12 +53,13 @@ void WriteComments(std::ostream& out, const RunDescription& run) {
   } else {
     fmt::print(out, "# output: every {} steps; quantities: {}; levels: {}\n", selection.every,
                fmt::join(RecordedQuantities(selection), ", "),
-               fmt::join(RecordedLevels(selection, setup), ", "));
+               fmt::join(RecordedLevels(selection, problem), ", "));
   }
   const ResponsePeaks& peaks = *run.peaks;
-  for (const NamedPeak& p : FilePeaks(setup, peaks)) {
+  for (const NamedPeak& p : FilePeaks(problem, peaks)) {
     fmt::print(out, "# peak {}: {:.6g} {} at t = {:g} {}\n", p.name, p.peak->value,
-               DescribeUnits(units, p.dimension), p.peak->time, units.time());
+               p.dimension == dimension::kNone ? "rad" : DescribeUnits(units, p.dimension),
+               p.peak->time, units.time());
   }
   const integrators::Energies& e = peaks.energies;
   fmt::print(out,

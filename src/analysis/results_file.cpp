@@ -46,9 +46,9 @@ void WriteResultsFile(const std::string& path, const RunDescription& run,
 }
 
 std::vector<std::string> RunWarnings(const RunDescription& run) {
-  std::vector<std::string> warnings = run.setup->summary.warnings;
+  std::vector<std::string> warnings = run.problem->summary.warnings;
   const std::string bearing =
-      IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.model->units);
+      IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.problem->units());
   if (!bearing.empty()) warnings.push_back(bearing);
   return warnings;
 }

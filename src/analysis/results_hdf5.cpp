@@ -3,7 +3,7 @@
 
 #include <set>
 
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/record_attributes.h"
 #include "results_sink.h"
@@ -11,6 +11,19 @@
 
 namespace isolab::analysis {
 namespace {
+
+// Periods (a dataset) with their modes' directions (its "directions" attribute).
+void WriteModes(io::Hdf5File& file, const std::string& name, const std::vector<Mode>& modes,
+                const UnitSystem& units) {
+  std::vector<double> periods;
+  std::vector<std::string> directions;
+  for (const Mode& mode : modes) {
+    periods.push_back(mode.period);
+    directions.push_back(mode.direction);
+  }
+  file.WriteDoubles(name, {periods.size()}, periods, units.time());
+  file.WriteStringsAttribute(name, "directions", directions);
+}
 
 void WriteModelSummary(io::Hdf5File& file, const ModelSummary& m, const UnitSystem& units) {
   file.CreateGroup("model_summary");
@@ -20,8 +33,9 @@ void WriteModelSummary(io::Hdf5File& file, const ModelSummary& m, const UnitSyst
   };
   scalar("total_mass", m.total_mass, dimension::kMass);
   scalar("total_weight", m.total_weight, dimension::kForce);
-  file.WriteDoubles("model_summary/fixed_base_periods", {m.fixed_base_periods.size()},
-                    m.fixed_base_periods, units.time());
+  WriteModes(file, "model_summary/fixed_base_periods", m.fixed_base_modes, units);
+  WriteModes(file, "model_summary/rigid_periods", m.rigid_modes, units);
+  WriteModes(file, "model_summary/isolated_periods", m.isolated_modes, units);
   scalar("trial_displacement", m.trial_displacement, dimension::kLength);
   scalar("secant_stiffness", m.secant_stiffness, dimension::kStiffness);
   scalar("isolated_period", m.isolated_period, dimension::kTime);
@@ -29,17 +43,23 @@ void WriteModelSummary(io::Hdf5File& file, const ModelSummary& m, const UnitSyst
 }
 
 void WriteRunAttributes(io::Hdf5File& file, const RunDescription& run) {
-  const AnalysisSetup& setup = *run.setup;
+  const Problem& problem = *run.problem;
   const integrators::RunSummary& summary = *run.summary;
-  const UnitSystem& units = run.model->units;
+  const UnitSystem& units = problem.units();
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
-  WriteProgramAttributes(file, run.version, run.model->path, units);
-  io::WriteRecordAttributes(file, setup.record, g);
-  WriteIntegratorAttributes(file, *run.analysis, setup.grid.dt, summary);
-  file.WriteAttribute("/", "excitation_end", setup.excitation_end);
-  file.WriteAttribute("/", "free_vibration", setup.free_vibration);
-  file.WriteAttribute("/", "residual_window", setup.residual_window);
-  if (setup.layout.isolation >= 0) {
+  WriteProgramAttributes(file, run.version, problem.model.path, units);
+  io::WriteRecordAttributes(file, problem.records.empty() ? io::AppliedRecord{} : problem.records[0],
+                            g);
+  if (problem.records.size() > 1) io::WriteRecordAttributes(file, problem.records[1], g, "record_h2");
+  if (problem.layout.directions > 1) file.WriteAttribute("/", "incidence_angle", problem.angle);
+  WriteIntegratorAttributes(file, *run.analysis, problem.grid.dt, summary);
+  file.WriteAttribute("/", "excitation_end", problem.excitation_end);
+  file.WriteAttribute("/", "free_vibration", problem.free_vibration);
+  file.WriteAttribute("/", "residual_window", problem.residual_window);
+  if (problem.layout.rotations) {
+    file.WriteAttribute("/", "torsional_amplification", run.peaks->torsional_amplification);
+  }
+  if (problem.layout.isolated()) {
     const ResponsePeaks& peaks = *run.peaks;
     file.WriteAttribute("/", "residual_isolator_displacement",
                         peaks.residual_isolator_displacement);
@@ -54,19 +74,42 @@ void WriteRunAttributes(io::Hdf5File& file, const RunDescription& run) {
 
 // Each peak as a scalar with its units, time and (where it has one) index.
 void WritePeaks(io::Hdf5File& file, const RunDescription& run) {
-  const AnalysisSetup& setup = *run.setup;
+  const Problem& problem = *run.problem;
   const ResponsePeaks& peaks = *run.peaks;
-  const UnitSystem& units = run.model->units;
+  const UnitSystem& units = problem.units();
   file.CreateGroup("peaks");
-  for (const NamedPeak& p : FilePeaks(setup, peaks)) {
+  for (const NamedPeak& p : FilePeaks(problem, peaks)) {
     const std::string path = fmt::format("peaks/{}", p.name);
     file.WriteDoubles(path, {}, std::span<const double>(&p.peak->value, 1),
-                      DescribeUnits(units, p.dimension));
+                      p.dimension == dimension::kNone ? "rad" : DescribeUnits(units, p.dimension));
     file.WriteAttribute(path, "time", p.peak->time);
     if (p.peak->index >= 0) file.WriteIntegerAttribute(path, "index", p.peak->index);
   }
-  if (!setup.layout.stories.empty()) {
+  if (!problem.layout.stories.empty()) {
     file.WriteAttribute("peaks/story_drift", "ratio", peaks.story_drift_ratio);
+  }
+  if (problem.layout.isolated()) {
+    // Each isolator's peak displacement, force and residual, in the layout's order.
+    std::vector<std::string> names;
+    for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+      names.push_back(isolator.name);
+    }
+    const auto values = [](const std::vector<Peak>& list) {
+      std::vector<double> v;
+      for (const Peak& peak : list) v.push_back(peak.value);
+      return v;
+    };
+    const std::string length = DescribeUnits(units, dimension::kLength);
+    file.CreateGroup("peaks/isolators");
+    file.WriteDoubles("peaks/isolators/displacement", {names.size()},
+                      values(peaks.isolator_displacements), length);
+    file.WriteDoubles("peaks/isolators/force", {names.size()}, values(peaks.isolator_forces),
+                      DescribeUnits(units, dimension::kForce));
+    file.WriteDoubles("peaks/isolators/residual", {names.size()}, peaks.isolator_residuals,
+                      length);
+    for (const char* name : {"displacement", "force", "residual"}) {
+      file.WriteStringsAttribute(fmt::format("peaks/isolators/{}", name), "columns", names);
+    }
   }
   file.CreateGroup("final_energy");
   const std::string energy = fmt::format("{}*{}", units.force(), units.length());
@@ -87,7 +130,7 @@ void WriteSelectionAttributes(io::Hdf5File& file, const RunDescription& run) {
   file.WriteIntegerAttribute("/", "output_every", selection.every);
   file.WriteIntegerAttribute("/", "summary_only", selection.summary_only ? 1 : 0);
   file.WriteStringsAttribute("/", "output_quantities", RecordedQuantities(selection));
-  file.WriteStringsAttribute("/", "output_levels", RecordedLevels(selection, *run.setup));
+  file.WriteStringsAttribute("/", "output_levels", RecordedLevels(selection, *run.problem));
 }
 
 class Hdf5Sink final : public ResultsWriter::Sink {
@@ -110,16 +153,19 @@ class Hdf5Sink final : public ResultsWriter::Sink {
 
   void Finish(const RunDescription& run) override {
     rows_.clear();  // every dataset closed before the commit
-    const AnalysisSetup& setup = *run.setup;
-    if (!setup.layout.stories.empty()) {
+    const Problem& problem = *run.problem;
+    if (!problem.layout.stories.empty()) {
       if (!groups_.contains("story")) file_.CreateGroup("story");
-      file_.WriteDoubles("story/height", {setup.layout.story_heights.size()},
-                         setup.layout.story_heights,
-                         DescribeUnits(run.model->units, dimension::kLength));
+      std::vector<double> heights;
+      for (const structure::StoryLayout& story : problem.layout.stories) {
+        heights.push_back(story.height);
+      }
+      file_.WriteDoubles("story/height", {heights.size()}, heights,
+                         DescribeUnits(problem.units(), dimension::kLength));
     }
-    WriteModelSummary(file_, setup.summary, run.model->units);
+    WriteModelSummary(file_, problem.summary, problem.units());
     WritePeaks(file_, run);
-    file_.WriteText("model_yaml", run.model->text);
+    file_.WriteText("model_yaml", problem.model.text);
     WriteRunAttributes(file_, run);
     WriteSelectionAttributes(file_, run);
     file_.Commit();

@@ -10,14 +10,14 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
                              std::size_t buffer_rows)
     : run_(run) {
   CheckResultsPath(path);
-  series_ = ResultSeries(*run.model, *run.setup, run.selection);
+  series_ = ResultSeries(*run.problem, run.selection);
   std::size_t width = 0;
   for (const Series& s : series_) width += s.width();
   buffer_rows_ = buffer_rows > 0 ? buffer_rows
                                  : std::max<std::size_t>(
                                        1, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
   const int every = std::max(run.selection.every, 1);
-  const std::size_t expected_rows = static_cast<std::size_t>(run.setup->grid.steps / every + 1);
+  const std::size_t expected_rows = static_cast<std::size_t>(run.problem->grid.steps / every + 1);
   buffer_rows_ = std::min(buffer_rows_, expected_rows);
   for (const Series& s : series_) buffers_.emplace_back(buffer_rows_ * s.width());
   if (IsCsvPath(path)) {

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/solve.h"
 
 namespace isolab::analysis {
 

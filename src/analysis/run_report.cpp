@@ -1,11 +1,10 @@
 #include "isolab/analysis/run_report.h"
 
-#include "isolab/analysis/run_analysis.h"
-
 namespace isolab::analysis {
 namespace {
 
-// "index" (the DOF or story, from 0) only where the peak has one, as in the HDF5 results.
+// "index" (the isolator, story or level, from 0) only where the peak has one, as in the HDF5
+// results.
 nlohmann::json PeakJson(const Peak& peak) {
   nlohmann::json json = {{"value", peak.value}, {"time", peak.time}};
   if (peak.index >= 0) json["index"] = peak.index;
@@ -27,65 +26,76 @@ nlohmann::json IntegratorStatistics(const model::AnalysisSection& analysis,
           {"step_cuts", summary.step_cuts}};
 }
 
-}  // namespace
-
-void AddRunOutcome(const model::AnalysisSection& analysis, double dt,
-                   const integrators::RunSummary& summary, const std::string& output,
-                   nlohmann::json* json) {
-  nlohmann::json& j = *json;
-  j["termination"] = summary.ok() ? "completed" : "failed";
-  j["message"] = summary.message;
-  j["energy_balance_error"] = summary.energy_balance_error;
-  j["integrator"] = DescribeIntegrator(analysis, dt);
-  j[analysis.integrator == model::AnalysisSection::Integrator::kIda ? "ida" : "newton"] =
-      IntegratorStatistics(analysis, summary);
-  j["steps_completed"] = summary.steps;
-  j["wall_seconds"] = summary.wall_seconds;
-  if (!output.empty()) j["results"] = output;
+nlohmann::json ModesJson(const std::vector<Mode>& modes) {
+  nlohmann::json json = nlohmann::json::array();
+  for (const Mode& mode : modes) {
+    json.push_back({{"period", mode.period}, {"direction", mode.direction}});
+  }
+  return json;
 }
 
-nlohmann::json RunReport(const RunDescription& run, const std::vector<std::string>& warnings,
-                         const std::string& output) {
-  const model::ModelFile& model = *run.model;
-  const AnalysisSetup& setup = *run.setup;
-  const ResponsePeaks& peaks = *run.peaks;
-  const io::AppliedRecord& r = setup.record;
-  const ModelSummary& m = setup.summary;
-  const double g = model.units.Convert(1.0, "g", dimension::kAcceleration);
+nlohmann::json RecordJson(const io::AppliedRecord& r, double g) {
+  return {{"record", r.path},         {"scale", r.scale}, {"record_units", r.units},
+          {"record_units_source", r.units_source}, {"record_dt", r.dt}, {"pga", r.pga},
+          {"pga_g", r.pga / g}};
+}
+
+}  // namespace
+
+nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& analysis,
+                         const Summary& summary) {
+  const UnitSystem& units = problem.units();
+  const ResponsePeaks& peaks = summary.peaks;
+  const ModelSummary& m = problem.summary;
+  const structure::Layout& layout = problem.layout;
+  const double g = units.Convert(1.0, "g", dimension::kAcceleration);
   nlohmann::json json;
-  json["model"] = model.path;
-  json["record"] = r.path;
-  json["scale"] = r.scale;
-  json["record_units"] = r.units;
-  json["record_units_source"] = r.units_source;
-  json["record_dt"] = r.dt;
-  json["pga"] = r.pga;
-  json["pga_g"] = r.pga / g;
-  json["dt"] = setup.grid.dt;
-  json["steps"] = setup.grid.steps;
-  json["excitation_end"] = setup.excitation_end;
-  json["free_vibration"] = setup.free_vibration;
-  json["units"] = {{"force", model.units.force()},
-                   {"length", model.units.length()},
-                   {"time", model.units.time()}};
+  json["model"] = problem.model.path;
+  json.update(RecordJson(problem.records.empty() ? io::AppliedRecord{} : problem.records[0], g));
+  if (problem.records.size() > 1) json["h2"] = RecordJson(problem.records[1], g);
+  if (layout.directions > 1) json["angle"] = problem.angle;
+  json["dt"] = problem.grid.dt;
+  json["steps"] = problem.grid.steps;
+  json["excitation_end"] = problem.excitation_end;
+  json["free_vibration"] = problem.free_vibration;
+  json["units"] = {
+      {"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
   json["model_summary"] = {{"total_mass", m.total_mass},
                            {"total_weight", m.total_weight},
-                           {"fixed_base_periods", m.fixed_base_periods},
+                           {"fixed_base_periods", m.FixedBasePeriods()},
+                           {"fixed_base_modes", ModesJson(m.fixed_base_modes)},
                            {"trial_displacement", m.trial_displacement},
                            {"secant_stiffness", m.secant_stiffness},
-                           {"isolated_period", m.isolated_period}};
-  json["warnings"] = warnings;
+                           {"isolated_period", m.isolated_period},
+                           {"rigid_modes", ModesJson(m.rigid_modes)},
+                           {"isolated_modes", ModesJson(m.isolated_modes)}};
+  json["warnings"] = summary.warnings;
   json["peaks"] = {{"isolator_displacement", PeakJson(peaks.isolator_displacement)},
                    {"isolator_force", PeakJson(peaks.isolator_force)},
                    {"base_shear", PeakJson(peaks.base_shear)},
                    {"first_story_shear", PeakJson(peaks.first_story_shear)},
                    {"roof_absolute_acceleration", PeakJson(peaks.roof_absolute_acceleration)},
+                   {"floor_acceleration", PeakJson(peaks.floor_acceleration)},
                    {"story_drift", PeakJson(peaks.story_drift)},
-                   {"story_drift_ratio", peaks.story_drift_ratio}};
-  if (setup.layout.isolation >= 0) {
+                   {"story_drift_ratio", peaks.story_drift_ratio},
+                   {"largest_drift_ratio", peaks.largest_drift_ratio}};
+  if (layout.rotations) {
+    json["peaks"]["floor_rotation"] = PeakJson(peaks.level_rotation);
+    json["peaks"]["base_centre_displacement"] = PeakJson(peaks.base_centre_displacement);
+    json["torsional_amplification"] = peaks.torsional_amplification;
+  }
+  if (layout.isolated()) {
     json["residual_isolator_displacement"] = peaks.residual_isolator_displacement;
     json["residual_oscillation"] = peaks.residual_oscillation;
     json["isolator_displacement_at_excitation_end"] = peaks.isolator_displacement_at_excitation_end;
+    nlohmann::json isolators = nlohmann::json::object();
+    for (std::size_t i = 0; i < layout.isolators.size(); ++i) {
+      isolators[layout.isolators[i].name] = {
+          {"displacement", PeakJson(peaks.isolator_displacements[i])},
+          {"force", PeakJson(peaks.isolator_forces[i])},
+          {"residual", peaks.isolator_residuals[i]}};
+    }
+    json["isolators"] = isolators;
   }
   if (peaks.rows > 0) {
     const integrators::Energies& e = peaks.energies;
@@ -95,7 +105,16 @@ nlohmann::json RunReport(const RunDescription& run, const std::vector<std::strin
                       {"elastic", e.elastic},
                       {"hysteretic", e.hysteretic}};
   }
-  AddRunOutcome(*run.analysis, setup.grid.dt, *run.summary, output, &json);
+  const integrators::RunSummary& run = summary.run;
+  json["termination"] = run.ok() ? "completed" : "failed";
+  json["message"] = run.message;
+  json["energy_balance_error"] = run.energy_balance_error;
+  json["integrator"] = DescribeIntegrator(analysis, problem.grid.dt);
+  json[analysis.integrator == model::AnalysisSection::Integrator::kIda ? "ida" : "newton"] =
+      IntegratorStatistics(analysis, run);
+  json["steps_completed"] = run.steps;
+  json["wall_seconds"] = run.wall_seconds;
+  if (!summary.results_path.empty()) json["results"] = summary.results_path;
   return json;
 }
 

@@ -153,38 +153,4 @@ Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
   return m;
 }
 
-std::vector<double> LevelMasses(const model::ModelFile& model) {
-  if (!model.structure || model.structure->kind != model::StructureSection::Kind::kShearBuilding ||
-      !(model.structure->building.base_mass > 0.0)) {
-    throw InputError({model.path},
-                     "the model needs a shear_building structure with a base_mass "
-                     "(the isolation slab) and its stories' masses");
-  }
-  std::vector<double> masses{model.structure->building.base_mass};
-  for (const auto& story : model.structure->building.stories) masses.push_back(story.floor_mass);
-  return masses;
-}
-
-Series BaseShear(const std::vector<Series>& acceleration, const std::vector<double>& masses) {
-  Series shear(acceleration.front().size(), 0.0);
-  for (std::size_t l = 0; l < masses.size(); ++l) {
-    for (std::size_t k = 0; k < shear.size(); ++k) shear[k] -= masses[l] * acceleration[l][k];
-  }
-  return shear;
-}
-
-double PeakAbs(const Series& x) {
-  double peak = 0.0;
-  for (const double v : x) peak = std::max(peak, std::abs(v));
-  return peak;
-}
-
-double Nrmse(const Series& measured, const Series& predicted) {
-  double error = 0.0;
-  for (std::size_t k = 0; k < measured.size(); ++k) {
-    error += std::pow(predicted[k] - measured[k], 2);
-  }
-  return std::sqrt(error / measured.size()) / Rms(measured);
-}
-
 }  // namespace isolab::cli

@@ -4,133 +4,29 @@
 #include <fmt/ostream.h>
 
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "isolab/analysis/analysis_setup.h"
-#include "isolab/analysis/model_summary.h"
-#include "isolab/analysis/response_peaks.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
-#include "isolab/analysis/run_analysis.h"
 #include "isolab/analysis/run_report.h"
+#include "isolab/analysis/run_text.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/model_file.h"
-#include "isolab/model/plan_model_file.h"
-#include "plan_run_command.h"
 #include "plot_script.h"
 #include "run_report.h"
 
 namespace isolab::cli {
 namespace {
 
-std::string Join(const std::vector<double>& values, std::size_t count, const char* format) {
-  std::string text;
-  for (std::size_t i = 0; i < std::min(count, values.size()); ++i) {
-    text += (i > 0 ? ", " : "") + fmt::format(fmt::runtime(format), values[i]);
-  }
-  return text;
-}
-
-// The record as applied and the model summary, before the run: what the engineer checks first.
-void PrintPreamble(const model::ModelFile& model, const analysis::AnalysisSetup& setup,
-                   std::ostream& out) {
-  const UnitSystem& u = model.units;
-  const analysis::ModelSummary& m = setup.summary;
-  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
-  fmt::print(out, "== {} ==\n", model.path);
-  if (!model.description.empty()) fmt::print(out, "{}\n", model.description);
-  if (!setup.record.path.empty()) {
-    const io::AppliedRecord& r = setup.record;
-    fmt::print(
-        out, "record: {} ({}, dt = {:g} s, in {} from {}), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
-        r.path, r.format, r.dt, r.units, r.units_source == "header" ? "its header" : r.units_source,
-        r.scale, r.pga / g, r.pga, DescribeUnits(u, dimension::kAcceleration));
-  }
-  const double tonnes = m.total_mass * u.SiFactor(dimension::kMass) / 1000.0;
-  fmt::print(out, "model: total weight {:.5g} {} ({:.5g} t)", m.total_weight, u.force(), tonnes);
-  if (!m.fixed_base_periods.empty()) {
-    fmt::print(out, "; fixed-base periods {} {}{}", Join(m.fixed_base_periods, 3, "{:.4g}"),
-               u.time(), m.fixed_base_periods.size() > 3 ? ", ..." : "");
-  }
-  if (m.isolated) {
-    fmt::print(out, "; {} {:.4g} {} at {:g} {} (secant stiffness {:.4g} {})",
-               setup.layout.stories.empty() ? "period" : "isolated period", m.isolated_period,
-               u.time(), m.trial_displacement, u.length(), m.secant_stiffness,
-               DescribeUnits(u, dimension::kStiffness));
-  }
-  fmt::print(out, "\n");
-  PrintGrid(setup.grid, setup.excitation_end, setup.free_vibration, setup.structure.dofs(), u, out);
-}
-
-void PrintSummary(const model::ModelFile& model, const model::AnalysisSection& analysis,
-                  const analysis::AnalysisSetup& setup, const analysis::ResponsePeaks& peaks,
-                  const integrators::RunSummary& summary, const std::string& output,
-                  std::ostream& out) {
-  const UnitSystem& u = model.units;
-  const std::string length = u.length(), force = u.force(), time = u.time();
-  const std::string acceleration = DescribeUnits(u, dimension::kAcceleration);
-  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
-  const auto line = [&](const char* what, const analysis::Peak& peak, const std::string& unit,
-                        const std::string& extra = "") {
-    fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {}{}\n", what, peak.value, unit,
-               peak.time, time, extra);
-  };
-  if (setup.layout.isolation >= 0) {
-    line("peak isolator displacement", peaks.isolator_displacement, length);
-    line("peak isolator force", peaks.isolator_force, force);
-  }
-  line("peak base shear", peaks.base_shear, force);
-  if (!setup.layout.stories.empty()) {
-    line("peak first-story shear", peaks.first_story_shear, force);
-    line("peak story drift", peaks.story_drift, length,
-         fmt::format(" (story {}{})", peaks.story_drift.index + 1,
-                     peaks.story_drift_ratio > 0.0
-                         ? fmt::format(", {:.3g} % of its height", 100 * peaks.story_drift_ratio)
-                         : ""));
-  }
-  line("peak roof absolute acceleration", peaks.roof_absolute_acceleration, acceleration,
-       fmt::format(" ({:.3g} g)", peaks.roof_absolute_acceleration.value / g));
-  if (setup.layout.isolation >= 0) {
-    fmt::print(out, "{:<34} {:>12.5g} {:<8} ", "residual isolator displacement",
-               peaks.residual_isolator_displacement, length);
-    if (setup.free_vibration > 0.0) {
-      fmt::print(out, "after {:.4g} {} of free vibration (still swinging +-{:.3g} {})",
-                 setup.free_vibration, time, peaks.residual_oscillation, length);
-    }
-    fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
-               peaks.isolator_displacement_at_excitation_end, length);
-    const analysis::ModelSummary& m = setup.summary;
-    if (m.isolated && peaks.isolator_displacement.value > 0.0) {
-      const double k =
-          analysis::SecantStiffness(model.isolation, peaks.isolator_displacement.value);
-      if (k > 0.0) {
-        fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
-                   "period at the peak displacement",
-                   2.0 * std::numbers::pi * std::sqrt(m.total_mass / k), time, k,
-                   DescribeUnits(u, dimension::kStiffness));
-      }
-    }
-  }
-  if (peaks.rows > 0) {
-    const integrators::Energies& e = peaks.energies;
-    const double input = e.input != 0.0 ? e.input : 1.0;
-    fmt::print(out,
-               "\nenergy at the end [{}*{}]: input {:.5g} = kinetic {:.3g} + damping {:.5g} "
-               "({:.1f} %) + elastic {:.3g} + hysteretic {:.5g} ({:.1f} %)\n",
-               force, length, e.input, e.kinetic, e.damping, 100 * e.damping / input, e.elastic,
-               e.hysteretic, 100 * e.hysteretic / input);
-  }
-  PrintRunOutcome(analysis, summary, output, out);
-}
-
 // The model's output selection with the command line's options over it, checked before the run.
 model::OutputSelection ChooseOutput(const model::ModelFile& model, const RunOptions& options,
-                                    const analysis::AnalysisSetup& setup) {
+                                    const analysis::Problem& problem) {
   model::OutputSelection selection = model.output;
   if (options.every) selection.every = *options.every;
   if (options.summary_only) selection.summary_only = true;
@@ -157,8 +53,44 @@ model::OutputSelection ChooseOutput(const model::ModelFile& model, const RunOpti
     levels_key = "--levels";
   }
   // --fixed-base takes the base away: a level may exist in the model and not in this run.
-  analysis::SelectedDofs(selection, setup, levels_key);
+  analysis::SelectedLevels(selection, problem.layout, levels_key);
   return selection;
+}
+
+analysis::RunOverrides ChooseOverrides(const model::ModelFile& model, const RunOptions& options) {
+  analysis::RunOverrides overrides;
+  if (!options.record_h2.empty() && options.record.empty()) {
+    throw InputError({"--record-h2"}, "needs --record: the pair's first component");
+  }
+  if (options.angle && options.record.empty()) {
+    throw InputError({"--angle"}, "needs --record (the model's own pair has its angle)");
+  }
+  if (!options.record.empty()) {
+    analysis::RecordOverride h1;
+    h1.file = options.record;
+    overrides.records.push_back(h1);
+    if (!options.record_h2.empty()) {
+      analysis::RecordOverride h2;
+      h2.name = "--record-h2";
+      h2.file = options.record_h2;
+      overrides.records.push_back(h2);
+    }
+    overrides.angle = options.angle.value_or(0.0);
+  }
+  overrides.record_units = options.units;
+  if (options.record_dt) {
+    overrides.record_dt = model.units.Convert(*options.record_dt, "s", dimension::kTime);
+  }
+  overrides.scale = options.scale;
+  overrides.dt = options.dt;
+  overrides.max_steps = options.max_steps;
+  overrides.fixed_base = options.fixed_base;
+  overrides.trial_displacement = options.trial_displacement;
+  if (!options.free_vibration.empty()) {
+    overrides.free_vibration =
+        model::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
+  }
+  return overrides;
 }
 
 void PrintWarnings(const std::vector<std::string>& warnings) {
@@ -169,13 +101,20 @@ void PrintWarnings(const std::vector<std::string>& warnings) {
 
 void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "run", "Time-history analysis of a model's structure under its excitation (Newmark or IDA)");
+      "run",
+      "Time-history analysis of a model's structure under its excitation (Newmark or IDA): an "
+      "SDOF, a shear building or a building in plan");
   command->add_option("model", options.model, "Model file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--record", options.record,
                       "Ground-motion record replacing the model's (the model's units, dt and "
-                      "scale do not apply to it)");
+                      "scale do not apply to it); with a building in plan, its H1 component");
+  command->add_option("--record-h2", options.record_h2,
+                      "With --record, the second horizontal component H2 (a building in plan)");
+  command->add_option("--angle", options.angle,
+                      "With --record, the angle from the x axis to H1 in degrees (H2 at +90; "
+                      "default 0)");
   command->add_option("--units", options.units,
                       "The record's acceleration unit (g, m/s^2, cm/s^2, in/s^2, ...); must "
                       "agree with its header when the header names one");
@@ -216,7 +155,8 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
       ->delimiter(',');
   command->add_flag("--summary-only", options.summary_only,
                     "Write peaks and energies only, no histories (replaces output.summary_only)");
-  command->add_flag("--fixed-base", options.fixed_base, "Analyse the building without isolation");
+  command->add_flag("--fixed-base", options.fixed_base,
+                    "Analyse the superstructure without its isolation, on a fixed base");
   command
       ->add_option("--integrator", options.integrator,
                    "newmark or ida (replaces the model's analysis.integrator)")
@@ -233,7 +173,6 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
 
 int RunRunCommand(const RunOptions& options, std::ostream& out) {
   io::CheckInputFiles({options.model});
-  if (model::IsPlanModelFile(options.model)) return RunPlanRunCommand(options, out);
   const model::ModelFile model = model::LoadModelFile(options.model);
   const std::string output = ChooseResultsPath(options, model.output_file);
   // Everything that can be refused is refused before the run, not after it.
@@ -242,8 +181,12 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   inputs.push_back(options.model);
   if (!options.record.empty()) {
     inputs.push_back(options.record);
-  } else if (model.excitation.ground_motion) {
-    inputs.push_back(model.excitation.ground_motion->file);
+    if (!options.record_h2.empty()) inputs.push_back(options.record_h2);
+  } else {
+    for (const model::GroundMotionSection& motion : model.excitation.ground_motion) {
+      inputs.push_back(
+          (std::filesystem::path(model.path).parent_path() / motion.file).lexically_normal());
+    }
   }
   io::CheckOutputs(inputs, {output});
   if (options.plot) {
@@ -254,47 +197,29 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     }
     CheckPlotScript("plot_result.py");
   }
-  analysis::RunOverrides overrides;
-  overrides.record = options.record;
-  overrides.record_units = options.units;
-  if (options.record_dt) {
-    overrides.record_dt = model.units.Convert(*options.record_dt, "s", dimension::kTime);
-  }
-  overrides.scale = options.scale;
-  overrides.dt = options.dt;
-  overrides.max_steps = options.max_steps;
-  overrides.fixed_base = options.fixed_base;
-  overrides.trial_displacement = options.trial_displacement;
-  if (!options.free_vibration.empty()) {
-    overrides.free_vibration =
-        model::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
-  }
-  const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(model, overrides);
+  const analysis::Problem problem = analysis::Prepare(model, ChooseOverrides(model, options));
+  analysis::SolveOptions solve;
+  solve.analysis = ChooseIntegrator(options, model.analysis);
+  solve.output = ChooseOutput(model, options, problem);
+  solve.results_path = output;
+  solve.version = ISOLAB_VERSION;
 
-  const model::AnalysisSection analysis = ChooseIntegrator(options, model.analysis);
-  const model::OutputSelection selection = ChooseOutput(model, options, setup);
-
-  if (!options.json) PrintPreamble(model, setup, out);
+  if (!options.json) analysis::PrintPreamble(problem, out);
   out.flush();
-  PrintWarnings(setup.summary.warnings);
-  const analysis::RecordedRun run =
-      analysis::RunAndRecord(model, analysis, setup, selection, output, ISOLAB_VERSION);
-  const analysis::ResponsePeaks& peaks = run.peaks;
-  const integrators::RunSummary& summary = run.summary;
-  const std::vector<std::string>& warnings = run.warnings;
+  PrintWarnings(problem.summary.warnings);
+  const analysis::Summary summary = analysis::Solve(solve, problem);
   if (options.json) {
-    const analysis::RunDescription description{&model, &setup, &analysis, &summary, &peaks, "", {}};
-    out << analysis::RunReport(description, warnings, output).dump(2) << "\n";
+    out << analysis::RunReport(problem, solve.analysis, summary).dump(2) << "\n";
   } else {
-    PrintSummary(model, analysis, setup, peaks, summary, output, out);
+    analysis::PrintSummary(problem, solve.analysis, summary, out);
   }
   // After the run: what the response itself shows (the model's warnings were printed before).
-  PrintWarnings(
-      {warnings.begin() + static_cast<long>(setup.summary.warnings.size()), warnings.end()});
+  PrintWarnings({summary.warnings.begin() + static_cast<long>(problem.summary.warnings.size()),
+                 summary.warnings.end()});
   if (options.plot) {
     RunPlotScript("plot_result.py", {output, "-o", PlotDirectory(*options.plot, output)}, false);
   }
-  return ExitCode(summary, setup.grid.dt, output);
+  return ExitCode(summary.run, problem.grid.dt, output);
 }
 
 }  // namespace isolab::cli

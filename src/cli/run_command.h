@@ -1,7 +1,8 @@
-// `isolab run`: a time-history analysis of a model file's structure under its excitation. Before
-// the run it prints the record as applied (units, scale, PGA) and the model summary (weight,
-// periods) with warnings about implausible values; after it, the peaks, the residual isolator
-// displacement after free vibration, the energy balance and integrator statistics; the response
+// `isolab run`: a time-history analysis of a model file's structure under its excitation, for
+// every kind of model (an SDOF, a shear building, a building in plan). Before the run it prints
+// the record as applied (units, scale, PGA) and the model summary (weight, periods) with warnings
+// about implausible values; after it, the peaks, the residual isolator displacement after free
+// vibration, the energy balance and integrator statistics (analysis/run_text.h); the response
 // goes to HDF5 or CSV as it is computed (results_writer.h), thinned as the model's `output:`
 // section and the options --every, --quantities, --levels and --summary-only ask
 // (output_selection.h).
@@ -13,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/problem.h"
 
 namespace CLI {
 class App;
@@ -23,7 +24,9 @@ namespace isolab::cli {
 
 struct RunOptions {
   std::string model;
-  std::string record;  // replaces the model's ground motion file (and its units, dt and scale)
+  std::string record;     // replaces the model's ground motion (and its units, dt and scale): H1
+  std::string record_h2;  // with `record`, its second horizontal component (buildings in plan)
+  std::optional<double> angle;  // with `record`, degrees from x to H1
   std::string units;   // the record's acceleration unit; must agree with its header if it has one
   std::optional<double> record_dt;  // the record's sampling step (s), for a single column
   std::optional<double> scale;

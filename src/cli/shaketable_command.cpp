@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -14,10 +13,8 @@
 #include <sstream>
 
 #include "building_measurement.h"
-#include "isolab/analysis/analysis_setup.h"
-#include "isolab/analysis/response_peaks.h"
 #include "isolab/analysis/results_file.h"
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/shake_table_prediction.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
@@ -25,29 +22,6 @@
 #include "isolab/model/model_file.h"
 
 namespace isolab::cli {
-namespace {
-
-// The prediction sampled at the measured times (linear between output rows).
-Series AtTimes(const std::vector<double>& time, const integrators::RowMatrix& columns, int column,
-               const Series& at, int rows) {
-  Series out(at.size());
-  std::size_t j = 0;
-  for (std::size_t k = 0; k < at.size(); ++k) {
-    while (j + 2 < static_cast<std::size_t>(rows) && time[j + 1] < at[k]) ++j;
-    const double t0 = time[j], t1 = time[std::min<std::size_t>(j + 1, rows - 1)];
-    const double w = t1 > t0 ? std::clamp((at[k] - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
-    out[k] =
-        (1 - w) * columns(j, column) + w * columns(std::min<std::size_t>(j + 1, rows - 1), column);
-  }
-  return out;
-}
-
-struct Row {
-  std::string quantity, unit;
-  double measured = 0.0, predicted = 0.0;
-};
-
-}  // namespace
 
 void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
   CLI::App* command = app.add_subcommand(
@@ -111,14 +85,14 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   inputs.push_back(options.data);
   io::CheckOutputs(inputs, outputs);
   if (!results_path.empty()) analysis::CheckResultsPath(results_path);
-  const std::vector<double> masses = LevelMasses(model);
+  const std::vector<double> masses = analysis::LevelMasses(model);
   const UnitSystem& units = model.units;
   const Measured m = ReadMeasured(options, units, masses.size());
   if (!options.quiet) {
     fmt::print(stderr, "isolab shaketable: {} samples, levels (slab to roof) = channels {}; {}\n",
                m.time.size(), fmt::join(m.channels, ","), m.reference_note);
   }
-  const Series shear = BaseShear(m.acceleration, masses);
+  const Series shear = analysis::BaseShear(m.acceleration, masses);
   identification::CyclicTestData isolator;
   isolator.name = std::filesystem::path(options.data).stem().string();
   isolator.time = m.time;
@@ -131,7 +105,7 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
 
   // Everything is composed before anything is written.
   std::string record_text;
-  if (!options.record.empty() || options.predict) {
+  if (!options.record.empty()) {
     const double to_si = units.SiFactor(dimension::kAcceleration);
     record_text = "time (s),acceleration (m/s^2)\n";
     for (std::size_t k = 0; k < m.time.size(); ++k) {
@@ -140,71 +114,28 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     }
   }
 
-  std::vector<Row> rows;
-  Series predicted_u, predicted_roof, predicted_shear;
+  std::optional<analysis::ShakeTablePrediction> prediction;
   if (options.predict) {
-    const std::string record_path =
-        !options.record.empty() ? options.record
-                                : (std::filesystem::temp_directory_path() /
-                                   fmt::format("isolab_shaketable_{}.record.csv", ::getpid()))
-                                      .string();
-    io::WriteTextFileAtomically(record_path, [&](std::ostream& o) { o << record_text; });
-    std::optional<analysis::AnalysisSetup> prepared;
-    integrators::ResponseHistory response;
-    integrators::RunSummary summary;
-    try {
-      analysis::RunOverrides overrides;
-      overrides.record = record_path;
-      overrides.scale = 1.0;
-      prepared.emplace(analysis::PrepareAnalysis(model, overrides));
-      const analysis::AnalysisSetup& setup = *prepared;
-      if (setup.layout.isolation < 0) {
-        throw InputError({options.model}, "--predict needs an isolation layer in the model");
-      }
-      if (!options.quiet) {
-        fmt::print(stderr, "  predicting: {} steps of {} s\n", setup.grid.steps, setup.grid.dt);
-      }
-      summary = analysis::RunAnalysis(model.analysis, setup, &response);
-    } catch (...) {
-      if (options.record.empty()) std::filesystem::remove(record_path);
-      throw;
-    }
-    if (options.record.empty()) std::filesystem::remove(record_path);
-    if (!summary.ok()) throw std::runtime_error("the prediction stopped: " + summary.message);
-    Series at(m.time.size());
-    for (std::size_t k = 0; k < at.size(); ++k) at[k] = m.time[k] - m.time.front();
-    const int rows_written = response.rows_written;
-    predicted_u = AtTimes(response.time, response.displacement, 0, at, rows_written);
-    const int roof = static_cast<int>(masses.size()) - 1;
-    predicted_roof = AtTimes(response.time, response.absolute_acceleration, roof, at, rows_written);
-    std::vector<Series> predicted_a;
-    for (int l = 0; l <= roof; ++l) {
-      predicted_a.push_back(
-          AtTimes(response.time, response.absolute_acceleration, l, at, rows_written));
-    }
-    predicted_shear = BaseShear(predicted_a, masses);
-    const std::string length = units.length(), force = units.force();
-    const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
-    rows = {
-        {"peak isolator displacement", length, PeakAbs(m.displacement.front()),
-         PeakAbs(predicted_u)},
-        {"peak base shear", force, PeakAbs(shear), PeakAbs(predicted_shear)},
-        {"peak roof absolute acceleration", acceleration, PeakAbs(m.acceleration.back()),
-         PeakAbs(predicted_roof)},
-    };
-    const analysis::ResponsePeaks peaks = analysis::ComputePeaks(*prepared, response);
-    analysis::WriteResultsFile(
-        results_path, {&model, &*prepared, &model.analysis, &summary, &peaks, ISOLAB_VERSION, {}},
-        response);
+    analysis::SolveOptions solve;
+    solve.analysis = model.analysis;
+    solve.results_path = results_path;
+    solve.version = ISOLAB_VERSION;
+    if (!options.quiet) fmt::print(stderr, "  predicting under the measured table motion\n");
+    prediction = analysis::PredictShakeTable(model, m, solve);
   }
-  const double nrmse_u = options.predict ? Nrmse(m.displacement.front(), predicted_u) : 0.0;
-  const double nrmse_roof = options.predict ? Nrmse(m.acceleration.back(), predicted_roof) : 0.0;
+  const Series& predicted_u = prediction ? prediction->isolator_displacement : Series{};
+  const Series& predicted_shear = prediction ? prediction->base_shear : Series{};
+  const Series& predicted_roof = prediction ? prediction->roof_acceleration : Series{};
+  const double nrmse_u = prediction ? prediction->nrmse_isolator_displacement : 0.0;
+  const double nrmse_roof = prediction ? prediction->nrmse_roof_acceleration : 0.0;
+  const std::vector<analysis::ComparedPeak> rows =
+      prediction ? prediction->peaks : std::vector<analysis::ComparedPeak>{};
   double total_mass = 0.0;
   for (const double mass : masses) total_mass += mass;
   const double weight = total_mass * units.Convert(1.0, "g", dimension::kAcceleration);
 
   if (!options.isolator.empty()) io::WriteCyclicTests(options.isolator, {isolator}, units);
-  if (!options.record.empty() && !options.predict) {
+  if (!options.record.empty()) {
     io::WriteTextFileAtomically(options.record, [&](std::ostream& o) { o << record_text; });
   }
   if (!options.comparison.empty() && options.predict) {
@@ -231,7 +162,7 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     json["half_cycles"] = isolator.half_cycles.size();
     json["weight"] = weight;
     json["units"] = {{"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
-    for (const Row& row : rows) {
+    for (const analysis::ComparedPeak& row : rows) {
       json["comparison"].push_back({{"quantity", row.quantity},
                                     {"unit", row.unit},
                                     {"measured", row.measured},
@@ -250,14 +181,14 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
              options.data, m.time.size(), isolator.half_cycles.size(), fmt::join(m.channels, ","),
              m.reference_note);
   fmt::print(out, "peak isolator displacement {:.4g} {}, peak base shear {:.4g} {} ({:.3g} W)\n",
-             PeakAbs(m.displacement.front()), units.length(), PeakAbs(shear), units.force(),
-             PeakAbs(shear) / weight);
+             analysis::PeakAbs(m.displacement.front()), units.length(), analysis::PeakAbs(shear),
+             units.force(), analysis::PeakAbs(shear) / weight);
   if (!options.isolator.empty()) fmt::print(out, "isolator history: {}\n", options.isolator);
   if (!options.record.empty()) fmt::print(out, "table record: {}\n", options.record);
   if (options.predict) {
     fmt::print(out,
                "\n| quantity | measured | predicted | predicted / measured |\n|---|---|---|---|\n");
-    for (const Row& row : rows) {
+    for (const analysis::ComparedPeak& row : rows) {
       fmt::print(out, "| {} [{}] | {:.4g} | {:.4g} | {:.3f} |\n", row.quantity, row.unit,
                  row.measured, row.predicted, row.predicted / row.measured);
     }

@@ -4,6 +4,18 @@
 #include <cmath>
 
 namespace isolab::integrators {
+namespace {
+
+// The time of the next sample of `history` after t, if before `next`.
+double NextSampleOf(const SampledHistory& history, double t, double next) {
+  if (history.values.empty() || !(history.dt > 0.0)) return next;
+  double k = std::floor(t / history.dt) + 1.0;
+  if (k * history.dt <= t * (1.0 + 1e-12) + 1e-12 * history.dt) k += 1.0;
+  if (k <= static_cast<double>(history.values.size() - 1)) next = std::min(next, k * history.dt);
+  return next;
+}
+
+}  // namespace
 
 double SampledHistory::At(double t) const {
   if (values.empty() || t < 0.0) return 0.0;
@@ -17,16 +29,54 @@ double SampledHistory::At(double t) const {
   return values[k] + fraction * (values[k + 1] - values[k]);
 }
 
+Excitation Excitation::Uniform(SampledHistory acceleration) {
+  Excitation excitation;
+  excitation.ground.push_back({std::move(acceleration), {}});
+  return excitation;
+}
+
 double Excitation::duration() const {
-  double duration = ground_acceleration.duration();
+  double duration = 0.0;
+  for (const GroundMotion& motion : ground) {
+    duration = std::max(duration, motion.acceleration.duration());
+  }
   for (const AppliedForce& force : forces) duration = std::max(duration, force.force.duration());
   return duration;
 }
 
 void Excitation::EffectiveLoad(double t, const Eigen::VectorXd& mass, Eigen::VectorXd* load) const {
-  const double ag = ground_acceleration.At(t);
-  *load = -ag * mass;
+  // The first component assigns: a one-direction record costs one pass over the dofs.
+  if (ground.empty()) load->setZero(mass.size());
+  for (std::size_t c = 0; c < ground.size(); ++c) {
+    const GroundMotion& motion = ground[c];
+    const double a = motion.acceleration.At(t);
+    if (motion.influence.size() == 0) {
+      if (c == 0) *load = -a * mass;
+      else *load -= a * mass;
+    } else {
+      if (c == 0) *load = -a * mass.cwiseProduct(motion.influence);
+      else *load -= a * mass.cwiseProduct(motion.influence);
+    }
+  }
   for (const AppliedForce& force : forces) (*load)[force.dof] += force.force.At(t);
+}
+
+void Excitation::AddGroundAcceleration(double t, Eigen::Ref<Eigen::VectorXd> acceleration) const {
+  for (const GroundMotion& motion : ground) {
+    const double a = motion.acceleration.At(t);
+    if (motion.influence.size() == 0) {
+      acceleration.array() += a;
+    } else {
+      acceleration += a * motion.influence;
+    }
+  }
+}
+
+double Excitation::NextSample(double t, double horizon) const {
+  double next = horizon;
+  for (const GroundMotion& motion : ground) next = NextSampleOf(motion.acceleration, t, next);
+  for (const AppliedForce& force : forces) next = NextSampleOf(force.force, t, next);
+  return next;
 }
 
 }  // namespace isolab::integrators

@@ -15,9 +15,7 @@
 
 #include "blow_up.h"
 #include "isolab/core/errors.h"
-#include "plan_rate_form_system.h"
 #include "rate_form_system.h"
-#include "structure_kinds.h"
 
 namespace isolab::integrators {
 
@@ -58,38 +56,6 @@ using Matrix = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter>;
 using LinearSolver = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter>;
 using IdaMemory = std::unique_ptr<void, IdaDeleter>;
 
-// The time of the next sample of `history` after t, if before `next`: its linear interpolation
-// has a kink there (a jump to zero after the last sample), which the integrator should step onto.
-double NextSample(const SampledHistory& history, double t, double next) {
-  if (history.values.empty() || !(history.dt > 0.0)) return next;
-  double k = std::floor(t / history.dt) + 1.0;
-  if (k * history.dt <= t * (1.0 + 1e-12) + 1e-12 * history.dt) k += 1.0;
-  if (k <= static_cast<double>(history.values.size() - 1)) next = std::min(next, k * history.dt);
-  return next;
-}
-double NextExcitationSample(const Excitation& excitation, double t, double horizon) {
-  double next = NextSample(excitation.ground_acceleration, t, horizon);
-  for (const AppliedForce& force : excitation.forces) next = NextSample(force.force, t, next);
-  return next;
-}
-double NextExcitationSample(const PlanExcitation& excitation, double t, double horizon) {
-  return NextSample(excitation.y, t, NextSample(excitation.x, t, horizon));
-}
-
-// The rate-form system of each kind of structure.
-template <class Structure>
-struct RateFormOf;
-template <>
-struct RateFormOf<structure::Structure> {
-  using System = RateFormSystem;
-  using Excitation = integrators::Excitation;
-};
-template <>
-struct RateFormOf<structure::PlanStructure> {
-  using System = PlanRateFormSystem;
-  using Excitation = PlanExcitation;
-};
-
 // IDAGetReturnFlagName returns a malloc'd string.
 std::string FlagName(int flag) {
   char* name = IDAGetReturnFlagName(flag);
@@ -98,13 +64,9 @@ std::string FlagName(int flag) {
   return text;
 }
 
-template <class Structure>
 class IdaRun {
  public:
-  using System = typename RateFormOf<Structure>::System;
-  using Excitation = typename RateFormOf<Structure>::Excitation;
-
-  IdaRun(const Structure& structure, const Excitation& excitation, const IdaOptions& options,
+  IdaRun(const structure::Structure& structure, const Excitation& excitation, const IdaOptions& options,
          RunSummary* summary)
       : system_(structure, excitation), excitation_(excitation), summary_(*summary) {
     SUNContext raw_context = nullptr;
@@ -192,7 +154,7 @@ class IdaRun {
   bool Integrate(double t_out) {
     void* ida = ida_.get();
     while (t_ < t_out) {
-      const double stop = NextExcitationSample(excitation_, t_, t_out);
+      const double stop = excitation_.NextSample(t_, t_out);
       if (stop - t_ <= 1e-10 * std::max(stop, 1.0)) {  // an event landed on the stop time
         t_ = stop;
         continue;
@@ -284,7 +246,7 @@ class IdaRun {
     Of(user_data).last_message_ = fmt::format("{}: {}", function, message);
   }
 
-  System system_;
+  RateFormSystem system_;
   const Excitation& excitation_;
   RunSummary& summary_;
   Context context_;
@@ -300,14 +262,12 @@ class IdaRun {
   int same_time_events_ = 0;
 };
 
-template <class Structure>
-RunSummary Run(const Structure& structure,
-               const typename RateFormOf<Structure>::Excitation& excitation, const TimeGrid& grid,
-               const IdaOptions& options, ResponseObserver& observer) {
+RunSummary Run(const structure::Structure& structure, const Excitation& excitation,
+               const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
-  IdaRun<Structure> run(structure, excitation, options, &summary);
+  IdaRun run(structure, excitation, options, &summary);
   const int every = std::max(grid.output_every, 1);
   const int rows = grid.steps / every + 1;
   run.Record(0, observer);
@@ -343,18 +303,7 @@ RunSummary RunIda(const structure::Structure& structure, const Excitation& excit
 
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
-  HistoryRecorder recorder = RecorderFor(structure, grid, response);
-  return Run(structure, excitation, grid, options, recorder);
-}
-
-RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
-                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
-  return Run(structure, excitation, grid, options, observer);
-}
-
-RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
-                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response) {
-  HistoryRecorder recorder = RecorderFor(structure, grid, response);
+  HistoryRecorder recorder = RecordHistory(structure, grid, response);
   return Run(structure, excitation, grid, options, recorder);
 }
 

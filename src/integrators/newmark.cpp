@@ -11,7 +11,6 @@
 #include "blow_up.h"
 #include "isolab/core/errors.h"
 #include "klu_solver.h"
-#include "structure_kinds.h"
 
 namespace isolab::integrators {
 
@@ -59,19 +58,9 @@ double MaxAbs(const Eigen::MatrixBase<Derived>& x) {
 // residuals after one solve at 1000 stories reach half that floor; twice it leaves a margin.
 constexpr double kRoundoffFloorFactor = 2.0;
 
-// What differs between the excitations of a one-direction structure and a plan structure
-// (plan_structure.h): which dofs the ground acceleration moves.
-void AddGroundAcceleration(const Excitation& excitation, double t,
-                           Eigen::Ref<Eigen::VectorXd> acceleration) {
-  acceleration.array() += excitation.ground_acceleration.At(t);
-}
-void AddGroundAcceleration(const PlanExcitation& excitation, double t,
-                           Eigen::Ref<Eigen::VectorXd> acceleration) {
-  excitation.AddGroundAcceleration(t, acceleration);
-}
-
 // One run's working state; every vector is sized once, so a step allocates nothing.
-template <class Structure, class Excitation>
+using structure::Structure;
+
 class NewmarkRun {
  public:
   NewmarkRun(const Structure& structure, const Excitation& excitation,
@@ -87,7 +76,7 @@ class NewmarkRun {
         trial_(structure.law_count()),
         rest_(structure.law_count()),
         responses_(structure.law_count()),
-        connection_forces_(ForceColumns(structure)),
+        member_forces_(structure.force_columns()),
         law_forces_(structure.law_count()) {
     pending_levels_.reserve(options.max_step_cuts + 1);
     const int n = structure.dofs();
@@ -130,13 +119,13 @@ class NewmarkRun {
   // Hands the committed state at grid step `step` (time t) to the observer.
   void Record(int step, double t, ResponseObserver& observer) {
     absolute_acceleration_ = a_;
-    AddGroundAcceleration(excitation_, t, absolute_acceleration_);
+    excitation_.AddGroundAcceleration(t, absolute_acceleration_);
     for (std::size_t k = 0; k < responses_.size(); ++k) law_forces_[k] = responses_[k].force;
     const auto view = [](const VectorXd& x) {
       return std::span<const double>(x.data(), static_cast<std::size_t>(x.size()));
     };
     observer.Observe({step, t, view(u_), view(v_), view(a_), view(absolute_acceleration_),
-                      connection_forces_, law_forces_, energies_});
+                      member_forces_, law_forces_, energies_});
   }
 
   const Energies& energies() const { return energies_; }
@@ -168,7 +157,7 @@ class NewmarkRun {
           refactor && options_.newton != NewmarkOptions::Newton::kModifiedInitial;
       if (tangent_here) StartTangent(factors);
       structure_.Evaluate(committed_, t0 + h, u_trial_, v_trial_, trial_, responses_, &force_,
-                          connection_forces_, factors, tangent_here ? &tangent_ : nullptr);
+                          member_forces_, factors, tangent_here ? &tangent_ : nullptr);
       residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
       last_scale_ = std::max(
           {MaxAbs(load_trial_), MaxAbs(force_), MaxAbs(structure_.mass().cwiseProduct(a_trial_))});
@@ -183,7 +172,7 @@ class NewmarkRun {
         if (options_.newton == NewmarkOptions::Newton::kModifiedInitial) {
           StartTangent(factors);
           structure_.Evaluate(rest_, 0.0, zero_, zero_, trial_, responses_, &force_,
-                              connection_forces_, factors, &tangent_);
+                              member_forces_, factors, &tangent_);
         }
         ++summary_.factorisations;
         factored_step_ = h;
@@ -270,7 +259,7 @@ class NewmarkRun {
   KluSolver solver_;
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;
-  std::vector<double> connection_forces_, law_forces_;
+  std::vector<double> member_forces_, law_forces_;
   std::vector<int> pending_levels_;  // halving levels of the sub-steps Advance has still to take
   VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
       correction_, viscous_, viscous_trial_, zero_, roundoff_, absolute_acceleration_;
@@ -280,13 +269,12 @@ class NewmarkRun {
   double last_residual_ = 0.0, last_scale_ = 0.0;
 };
 
-template <class Structure, class Excitation>
 RunSummary Run(const Structure& structure, const Excitation& excitation, const TimeGrid& grid,
                const NewmarkOptions& options, ResponseObserver& observer) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
-  NewmarkRun<Structure, Excitation> run(structure, excitation, options, &summary);
+  NewmarkRun run(structure, excitation, options, &summary);
   run.Record(0, 0.0, observer);
   double max_input = 0.0, max_balance = 0.0;
   for (int step = 1; step <= grid.steps; ++step) {
@@ -311,15 +299,6 @@ RunSummary Run(const Structure& structure, const Excitation& excitation, const T
   return summary;
 }
 
-// A run kept whole in memory (every output_every-th step), for library callers.
-template <class Structure, class Excitation>
-RunSummary RunRecorded(const Structure& structure, const Excitation& excitation,
-                       const TimeGrid& grid, const NewmarkOptions& options,
-                       ResponseHistory* response) {
-  HistoryRecorder recorder = RecorderFor(structure, grid, response);
-  return Run(structure, excitation, grid, options, recorder);
-}
-
 }  // namespace
 
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
@@ -331,13 +310,8 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response) {
-  return RunRecorded(structure, excitation, grid, options, response);
-}
-
-RunSummary RunNewmark(const structure::PlanStructure& structure, const PlanExcitation& excitation,
-                      const TimeGrid& grid, const NewmarkOptions& options,
-                      ResponseHistory* response) {
-  return RunRecorded(structure, excitation, grid, options, response);
+  HistoryRecorder recorder = RecordHistory(structure, grid, response);
+  return Run(structure, excitation, grid, options, recorder);
 }
 
 }  // namespace isolab::integrators

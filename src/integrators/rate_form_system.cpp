@@ -1,72 +1,96 @@
 #include "rate_form_system.h"
 
+#include <algorithm>
+
 namespace isolab::integrators {
 
-using hysteresis::RateResponse;
+using hysteresis::Vec2;
 using structure::kGround;
 using structure::SlotOf;
 
-RateFormSystem::RateFormSystem(const structure::Structure& structure, const Excitation& excitation)
+RateFormSystem::RateFormSystem(const structure::Structure& structure,
+                               const Excitation& excitation)
     : structure_(structure),
       excitation_(excitation),
       dofs_(structure.dofs()),
       dof_rows_(dofs_, structure.viscous_damping()) {
-  const auto& connections = structure.connections();
-  root_offsets_.push_back(0);
-  for (const auto& connection : connections) {
-    for (const auto& kernel : connection.assembly.kernels()) {
-      const int count = hysteresis::InternalVariableCount(kernel);
-      internal_index_.push_back(count > 0 ? internal_count_++ : -1);
-      second_index_.push_back(count > 1 ? internal_count_++ : -1);
-      root_offsets_.push_back(root_offsets_.back() + hysteresis::PhaseRootCount(kernel));
-      phases_.push_back(hysteresis::RestPhase(kernel));
+  const auto add_law = [&](LawBlock law, int q_count, int roots) {
+    law.q0 = internal_count_;
+    law.q_count = q_count;
+    law.root0 = root_count_;
+    law.roots = roots;
+    internal_count_ += q_count;
+    root_count_ += roots;
+    laws_.push_back(law);
+  };
+  const auto& members = structure.members();
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    LawBlock law;
+    law.rows = 1;
+    for (int a = 0; a < kMaxTerms; ++a) {
+      if (members[k].dofs[a] == kGround) continue;
+      law.dofs[law.terms] = members[k].dofs[a];
+      law.map[0][law.terms++] = members[k].coefficients[a];
+    }
+    law.force_column = static_cast<int>(k);
+    const auto& kernels = members[k].assembly.kernels();
+    for (std::size_t l = 0; l < kernels.size(); ++l) {
+      law.plan = false;
+      law.kernel = static_cast<int>(member_kernels_.size());
+      law.law_column = static_cast<int>(structure.law_offset(k) + l);
+      member_kernels_.push_back(&kernels[l]);
+      member_phases_.push_back(hysteresis::RestPhase(kernels[l]));
+      add_law(law, hysteresis::InternalVariableCount(kernels[l]),
+              hysteresis::PhaseRootCount(kernels[l]));
     }
   }
-  responses_.resize(phases_.size());
-  connection_forces_.resize(connections.size());
-  law_forces_.resize(phases_.size());
-  acceleration_.setZero(dofs_);
-  absolute_acceleration_.setZero(dofs_);
-  load_.setZero(dofs_);
-  force_.setZero(dofs_);
-  viscous_.setZero(dofs_);
-  velocity_.setZero(dofs_);
+  const auto& coupled = structure.coupled_members();
+  for (std::size_t i = 0; i < coupled.size(); ++i) {
+    LawBlock law;
+    law.rows = 2;
+    for (int a = 0; a < kMaxTerms; ++a) {
+      if (coupled[i].dofs[a] == kGround) continue;
+      law.dofs[law.terms] = coupled[i].dofs[a];
+      law.map[0][law.terms] = coupled[i].columns[a].x;
+      law.map[1][law.terms++] = coupled[i].columns[a].y;
+    }
+    law.force_column = static_cast<int>(structure.coupled_force_column(i));
+    const auto& kernels = coupled[i].assembly.kernels();
+    for (std::size_t c = 0; c < kernels.size(); ++c) {
+      law.plan = true;
+      law.kernel = static_cast<int>(plan_kernels_.size());
+      law.law_column = static_cast<int>(structure.coupled_law_offset(i) + 2 * c);
+      plan_kernels_.push_back(&kernels[c]);
+      plan_phases_.push_back(hysteresis::PlanRestPhase(kernels[c]));
+      add_law(law, hysteresis::PlanInternalVariableCount(kernels[c]),
+              hysteresis::PlanPhaseRootCount(kernels[c]));
+    }
+  }
+  responses_.resize(laws_.size());
+  connection_forces_.resize(structure.force_columns());
+  law_forces_.resize(structure.law_count());
+  for (Eigen::VectorXd* x :
+       {&load_, &force_, &viscous_, &velocity_, &acceleration_, &absolute_acceleration_}) {
+    x->setZero(dofs_);
+  }
 
-  // Column blocks: u at 0, v at n, z at 2n.
-  const int n = dofs_, v0 = n, z0 = 2 * n;
-  std::vector<Eigen::Triplet<double>> entries;
-  const auto add = [&](int row, int col) { entries.emplace_back(row, col, 0.0); };
-  dof_rows_.AddEntries(&entries);
-  const auto scatter_pairs = [&](int row0, int col0, int i, int j) {
-    add(row0 + j, col0 + j);
-    if (i == kGround) return;
-    add(row0 + i, col0 + i);
-    add(row0 + i, col0 + j);
-    add(row0 + j, col0 + i);
+  // Column blocks: u at 0, v at n, q at 2n. Each law's block: rows (its dofs' v rows, its q
+  // rows) x columns (its dofs' u and v columns, its q columns).
+  const int n = dofs_, v0 = n, q0 = 2 * n;
+  const auto rows_of = [&](const LawBlock& law, int a) {
+    return a < law.terms ? v0 + law.dofs[a] : q0 + law.q0 + (a - law.terms);
   };
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const int i = connections[k].dof_i, j = connections[k].dof_j;
-    scatter_pairs(v0, 0, i, j);
-    scatter_pairs(v0, v0, i, j);
-    for (std::size_t l = 0; l < connections[k].assembly.size(); ++l) {
-      const int z = internal_index_[structure.law_offset(k) + l];
-      if (z < 0) continue;
-      for (const int row : {v0 + j, z0 + z}) add(row, z0 + z);
-      add(z0 + z, j);
-      add(z0 + z, v0 + j);
-      if (i != kGround) {
-        add(v0 + i, z0 + z);
-        add(z0 + z, i);
-        add(z0 + z, v0 + i);
-      }
-      const int w = second_index_[structure.law_offset(k) + l];
-      if (w < 0) continue;
-      for (const int row : {v0 + j, z0 + z, z0 + w}) add(row, z0 + w);
-      for (const int col : {j, v0 + j, z0 + z}) add(z0 + w, col);
-      if (i != kGround) {
-        add(v0 + i, z0 + w);
-        add(z0 + w, i);
-        add(z0 + w, v0 + i);
+  const auto columns_of = [&](const LawBlock& law, int b) {
+    if (b < law.terms) return law.dofs[b];
+    if (b < 2 * law.terms) return v0 + law.dofs[b - law.terms];
+    return q0 + law.q0 + (b - 2 * law.terms);
+  };
+  std::vector<Eigen::Triplet<double>> entries;
+  dof_rows_.AddEntries(&entries);
+  for (const LawBlock& law : laws_) {
+    for (int a = 0; a < law.terms + law.q_count; ++a) {
+      for (int b = 0; b < 2 * law.terms + law.q_count; ++b) {
+        entries.emplace_back(rows_of(law, a), columns_of(law, b), 0.0);
       }
     }
   }
@@ -75,81 +99,85 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure, const Exci
   pattern_.makeCompressed();
 
   dof_rows_.FindSlots(pattern_);
-  internal_slots_.resize(phases_.size());
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const int i = connections[k].dof_i, j = connections[k].dof_j;
-    ConnectionSlots s;
-    s.vu_jj = SlotOf(pattern_, v0 + j, j);
-    s.vv_jj = SlotOf(pattern_, v0 + j, v0 + j);
-    if (i != kGround) {
-      s.vu_ii = SlotOf(pattern_, v0 + i, i);
-      s.vu_ij = SlotOf(pattern_, v0 + i, j);
-      s.vu_ji = SlotOf(pattern_, v0 + j, i);
-      s.vv_ii = SlotOf(pattern_, v0 + i, v0 + i);
-      s.vv_ij = SlotOf(pattern_, v0 + i, v0 + j);
-      s.vv_ji = SlotOf(pattern_, v0 + j, v0 + i);
-    }
-    connection_slots_.push_back(s);
-    for (std::size_t l = 0; l < connections[k].assembly.size(); ++l) {
-      const std::size_t law = structure.law_offset(k) + l;
-      const int z = internal_index_[law];
-      if (z < 0) continue;
-      InternalSlots& t = internal_slots_[law];
-      t.vz_j = SlotOf(pattern_, v0 + j, z0 + z);
-      t.zu_j = SlotOf(pattern_, z0 + z, j);
-      t.zv_j = SlotOf(pattern_, z0 + z, v0 + j);
-      t.zz = SlotOf(pattern_, z0 + z, z0 + z);
-      if (i != kGround) {
-        t.vz_i = SlotOf(pattern_, v0 + i, z0 + z);
-        t.zu_i = SlotOf(pattern_, z0 + z, i);
-        t.zv_i = SlotOf(pattern_, z0 + z, v0 + i);
-      }
-      const int w = second_index_[law];
-      if (w < 0) continue;
-      t.vw_j = SlotOf(pattern_, v0 + j, z0 + w);
-      t.zw = SlotOf(pattern_, z0 + z, z0 + w);
-      t.wu_j = SlotOf(pattern_, z0 + w, j);
-      t.wv_j = SlotOf(pattern_, z0 + w, v0 + j);
-      t.wz = SlotOf(pattern_, z0 + w, z0 + z);
-      t.ww = SlotOf(pattern_, z0 + w, z0 + w);
-      if (i != kGround) {
-        t.vw_i = SlotOf(pattern_, v0 + i, z0 + w);
-        t.wu_i = SlotOf(pattern_, z0 + w, i);
-        t.wv_i = SlotOf(pattern_, z0 + w, v0 + i);
+  for (LawBlock& law : laws_) {
+    law.slot0 = static_cast<int>(law_slots_.size());
+    for (int a = 0; a < law.terms + law.q_count; ++a) {
+      for (int b = 0; b < 2 * law.terms + law.q_count; ++b) {
+        law_slots_.push_back(SlotOf(pattern_, rows_of(law, a), columns_of(law, b)));
       }
     }
   }
 }
 
-RateFormSystem::LawInput RateFormSystem::InputOf(std::size_t connection, std::size_t law,
-                                                 const double* y) const {
-  const auto& c = structure_.connections()[connection];
-  const double* u = y;
-  const double* v = y + dofs_;
-  const bool grounded = c.dof_i == kGround;
-  const int z = internal_index_[law], w = second_index_[law];
-  return {u[c.dof_j] - (grounded ? 0.0 : u[c.dof_i]), v[c.dof_j] - (grounded ? 0.0 : v[c.dof_i]),
-          z >= 0 ? y[2 * dofs_ + z] : 0.0, w >= 0 ? y[2 * dofs_ + w] : 0.0};
+void RateFormSystem::Deformation(const LawBlock& law, const double* y,
+                                     std::array<double, kMaxRows>* u,
+                                     std::array<double, kMaxRows>* v) const {
+  for (int i = 0; i < law.rows; ++i) {
+    double d = 0.0, rate = 0.0;
+    for (int a = 0; a < law.terms; ++a) {
+      d += law.map[i][a] * y[law.dofs[a]];
+      rate += law.map[i][a] * y[dofs_ + law.dofs[a]];
+    }
+    (*u)[i] = d;
+    (*v)[i] = rate;
+  }
+}
+
+RateFormSystem::BlockResponse RateFormSystem::EvaluateLaw(const LawBlock& law, double t,
+                                                                  const double* y) const {
+  std::array<double, kMaxRows> u{}, v{};
+  Deformation(law, y, &u, &v);
+  const double* q = y + 2 * dofs_ + law.q0;
+  BlockResponse b;
+  if (law.plan) {
+    const hysteresis::PlanRateResponse r = hysteresis::EvaluatePlanRate(
+        *plan_kernels_[law.kernel], plan_phases_[law.kernel], {u[0], u[1]}, {v[0], v[1]}, q, t);
+    b.force = {r.force.x, r.force.y};
+    b.force_u = {{{r.force_u.xx, r.force_u.xy}, {r.force_u.yx, r.force_u.yy}}};
+    b.force_v = {{{r.force_v.xx, r.force_v.xy}, {r.force_v.yx, r.force_v.yy}}};
+    b.force_q = r.force_q;
+    b.rate = r.rate;
+    b.rate_u = r.rate_u;
+    b.rate_v = r.rate_v;
+    b.rate_q = r.rate_q;
+    b.hysteretic_power = r.hysteretic_power;
+    b.viscous_power = r.viscous_power;
+    return b;
+  }
+  // A one-direction law: z then w as its q (rate_form.h).
+  const double z = law.q_count > 0 ? q[0] : 0.0, w = law.q_count > 1 ? q[1] : 0.0;
+  const hysteresis::RateResponse r = hysteresis::EvaluateRate(
+      *member_kernels_[law.kernel], member_phases_[law.kernel], u[0], v[0], z, w, t);
+  b.force[0] = r.force;
+  b.force_u[0][0] = r.force_u;
+  b.force_v[0][0] = r.force_v;
+  b.force_q[0] = {r.force_z, r.force_w};
+  b.rate = {r.rate, r.w_rate};
+  b.rate_u[0][0] = r.rate_u;
+  b.rate_u[1][0] = r.w_rate_u;
+  b.rate_v[0][0] = r.rate_v;
+  b.rate_v[1][0] = r.w_rate_v;
+  b.rate_q[0] = {r.rate_z, r.rate_w};
+  b.rate_q[1] = {r.w_rate_z, r.w_rate_w};
+  b.hysteretic_power = r.hysteretic_power;
+  b.viscous_power = r.viscous_power;
+  return b;
 }
 
 void RateFormSystem::EvaluateLaws(double t, const double* y) {
   velocity_ = Eigen::Map<const Eigen::VectorXd>(y + dofs_, dofs_);
   viscous_.noalias() = structure_.viscous_damping() * velocity_;
   force_ = viscous_;
-  const auto& connections = structure_.connections();
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const auto& kernels = connections[k].assembly.kernels();
-    double total = 0.0;
-    for (std::size_t l = 0; l < kernels.size(); ++l) {
-      const std::size_t law = structure_.law_offset(k) + l;
-      const LawInput in = InputOf(k, law, y);
-      responses_[law] =
-          hysteresis::EvaluateRate(kernels[l], phases_[law], in.u, in.v, in.z, in.w, t);
-      total += responses_[law].force;
+  std::fill(connection_forces_.begin(), connection_forces_.end(), 0.0);
+  for (std::size_t l = 0; l < laws_.size(); ++l) {
+    const LawBlock& law = laws_[l];
+    responses_[l] = EvaluateLaw(law, t, y);
+    for (int i = 0; i < law.rows; ++i) {
+      const double f = responses_[l].force[i];
+      connection_forces_[law.force_column + i] += f;
+      law_forces_[law.law_column + i] = f;
+      for (int a = 0; a < law.terms; ++a) force_[law.dofs[a]] += law.map[i][a] * f;
     }
-    connection_forces_[k] = total;
-    force_[connections[k].dof_j] += total;
-    if (connections[k].dof_i != kGround) force_[connections[k].dof_i] -= total;
   }
 }
 
@@ -157,10 +185,11 @@ void RateFormSystem::Residual(double t, const double* y, const double* yp, doubl
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
   dof_rows_.Residual(y, yp, structure_.mass(), force_, load_, residual);
-  for (std::size_t law = 0; law < internal_index_.size(); ++law) {
-    const int z = internal_index_[law], w = second_index_[law];
-    if (z >= 0) residual[2 * dofs_ + z] = yp[2 * dofs_ + z] - responses_[law].rate;
-    if (w >= 0) residual[2 * dofs_ + w] = yp[2 * dofs_ + w] - responses_[law].w_rate;
+  for (std::size_t l = 0; l < laws_.size(); ++l) {
+    const int q0 = 2 * dofs_ + laws_[l].q0;
+    for (int k = 0; k < laws_[l].q_count; ++k) {
+      residual[q0 + k] = yp[q0 + k] - responses_[l].rate[k];
+    }
   }
 }
 
@@ -169,99 +198,117 @@ void RateFormSystem::Jacobian(double t, double cj, const double* y, double* valu
   std::fill(values, values + pattern_.nonZeros(), 0.0);
   dof_rows_.AddJacobian(cj, structure_.mass(), values);
 
-  const auto& connections = structure_.connections();
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const bool grounded = connections[k].dof_i == kGround;
-    const ConnectionSlots& s = connection_slots_[k];
-    double stiffness = 0.0, damping = 0.0;
-    for (std::size_t l = 0; l < connections[k].assembly.size(); ++l) {
-      const std::size_t law = structure_.law_offset(k) + l;
-      const RateResponse& r = responses_[law];
-      stiffness += r.force_u;
-      damping += r.force_v;
-      if (internal_index_[law] < 0) continue;
-      const InternalSlots& slots = internal_slots_[law];
-      values[slots.vz_j] += r.force_z;
-      values[slots.zu_j] -= r.rate_u;
-      values[slots.zv_j] -= r.rate_v;
-      values[slots.zz] += cj - r.rate_z;
-      if (!grounded) {
-        values[slots.vz_i] -= r.force_z;
-        values[slots.zu_i] += r.rate_u;
-        values[slots.zv_i] += r.rate_v;
-      }
-      if (second_index_[law] < 0) continue;
-      values[slots.vw_j] += r.force_w;
-      values[slots.zw] -= r.rate_w;
-      values[slots.wu_j] -= r.w_rate_u;
-      values[slots.wv_j] -= r.w_rate_v;
-      values[slots.wz] -= r.w_rate_z;
-      values[slots.ww] += cj - r.w_rate_w;
-      if (!grounded) {
-        values[slots.vw_i] -= r.force_w;
-        values[slots.wu_i] += r.w_rate_u;
-        values[slots.wv_i] += r.w_rate_v;
+  for (std::size_t l = 0; l < laws_.size(); ++l) {
+    const LawBlock& law = laws_[l];
+    const BlockResponse& r = responses_[l];
+    const int m_terms = law.terms, width = 2 * m_terms + law.q_count;
+    const int* slots = &law_slots_[law.slot0];
+    // f_u G and f_v G (r x m), then the force rows: G^T (f_u G), G^T (f_v G), G^T f_q.
+    std::array<std::array<double, kMaxTerms>, kMaxRows> ku{}, kv{};
+    for (int i = 0; i < law.rows; ++i) {
+      for (int b = 0; b < m_terms; ++b) {
+        for (int j = 0; j < law.rows; ++j) {
+          ku[i][b] += r.force_u[i][j] * law.map[j][b];
+          kv[i][b] += r.force_v[i][j] * law.map[j][b];
+        }
       }
     }
-    values[s.vu_jj] += stiffness;
-    values[s.vv_jj] += damping;
-    if (!grounded) {
-      values[s.vu_ii] += stiffness;
-      values[s.vu_ij] -= stiffness;
-      values[s.vu_ji] -= stiffness;
-      values[s.vv_ii] += damping;
-      values[s.vv_ij] -= damping;
-      values[s.vv_ji] -= damping;
+    for (int a = 0; a < m_terms; ++a) {
+      const int* s = slots + a * width;
+      for (int b = 0; b < m_terms; ++b) {
+        double stiffness = 0.0, damping = 0.0;
+        for (int i = 0; i < law.rows; ++i) {
+          stiffness += law.map[i][a] * ku[i][b];
+          damping += law.map[i][a] * kv[i][b];
+        }
+        values[s[b]] += stiffness;
+        values[s[m_terms + b]] += damping;
+      }
+      for (int k = 0; k < law.q_count; ++k) {
+        double coupling = 0.0;
+        for (int i = 0; i < law.rows; ++i) coupling += law.map[i][a] * r.force_q[i][k];
+        values[s[2 * m_terms + k]] += coupling;
+      }
     }
+    // The q rows: -r_u G, -r_v G, cj I - r_q.
+    for (int k = 0; k < law.q_count; ++k) {
+      const int* s = slots + (m_terms + k) * width;
+      for (int b = 0; b < m_terms; ++b) {
+        double rate_u = 0.0, rate_v = 0.0;
+        for (int j = 0; j < law.rows; ++j) {
+          rate_u += r.rate_u[k][j] * law.map[j][b];
+          rate_v += r.rate_v[k][j] * law.map[j][b];
+        }
+        values[s[b]] -= rate_u;
+        values[s[m_terms + b]] -= rate_v;
+      }
+      for (int l2 = 0; l2 < law.q_count; ++l2) {
+        values[s[2 * m_terms + l2]] += (k == l2 ? cj : 0.0) - r.rate_q[k][l2];
+      }
+    }
+  }
+}
+
+void RateFormSystem::LawRoots(const LawBlock& law, const double* y, double* roots) const {
+  std::array<double, kMaxRows> u{}, v{};
+  Deformation(law, y, &u, &v);
+  const double* q = y + 2 * dofs_ + law.q0;
+  if (law.plan) {
+    hysteresis::PlanPhaseRoots(*plan_kernels_[law.kernel], plan_phases_[law.kernel], {u[0], u[1]},
+                               {v[0], v[1]}, q, roots);
+  } else {
+    hysteresis::PhaseRoots(*member_kernels_[law.kernel], member_phases_[law.kernel], u[0], v[0],
+                           law.q_count > 0 ? q[0] : 0.0, roots);
   }
 }
 
 void RateFormSystem::Roots(const double* y, double* roots) const {
-  const auto& connections = structure_.connections();
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const auto& kernels = connections[k].assembly.kernels();
-    for (std::size_t l = 0; l < kernels.size(); ++l) {
-      const std::size_t law = structure_.law_offset(k) + l;
-      if (root_offsets_[law] == root_offsets_[law + 1]) continue;
-      const LawInput in = InputOf(k, law, y);
-      hysteresis::PhaseRoots(kernels[l], phases_[law], in.u, in.v, in.z,
-                             roots + root_offsets_[law]);
-    }
+  for (const LawBlock& law : laws_) {
+    if (law.roots > 0) LawRoots(law, y, roots + law.root0);
   }
+}
+
+bool RateFormSystem::SwitchLaw(const LawBlock& law, int root, double* y) {
+  std::array<double, kMaxRows> u{}, v{};
+  Deformation(law, y, &u, &v);
+  double* q = y + 2 * dofs_ + law.q0;
+  if (law.plan) {
+    const hysteresis::PlanPhaseSwitch next = hysteresis::SwitchPlanPhase(
+        *plan_kernels_[law.kernel], plan_phases_[law.kernel], root, {u[0], u[1]}, {v[0], v[1]}, q);
+    const bool changed = !(next.phase == plan_phases_[law.kernel]);
+    plan_phases_[law.kernel] = next.phase;
+    std::copy(next.q.begin(), next.q.begin() + law.q_count, q);
+    return changed;
+  }
+  const hysteresis::PhaseSwitch next =
+      hysteresis::SwitchPhase(*member_kernels_[law.kernel], member_phases_[law.kernel], root, u[0],
+                              v[0], law.q_count > 0 ? q[0] : 0.0);
+  const bool changed = !(next.phase == member_phases_[law.kernel]);
+  member_phases_[law.kernel] = next.phase;
+  if (law.q_count > 0) q[0] = next.z;
+  return changed;
 }
 
 int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
   int switched = 0;
-  const auto& connections = structure_.connections();
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const auto& kernels = connections[k].assembly.kernels();
-    for (std::size_t l = 0; l < kernels.size(); ++l) {
-      const std::size_t law = structure_.law_offset(k) + l;
-      const int count = root_offsets_[law + 1] - root_offsets_[law];
-      const auto apply = [&](int root) {
-        const LawInput in = InputOf(k, law, y);
-        const hysteresis::PhaseSwitch next =
-            hysteresis::SwitchPhase(kernels[l], phases_[law], root, in.u, in.v, in.z);
-        const bool changed = !(next.phase == phases_[law]);
-        phases_[law] = next.phase;
-        if (internal_index_[law] >= 0) y[2 * dofs_ + internal_index_[law]] = next.z;
-        switched += changed;
-        return changed;
-      };
-      bool any = false;
-      for (int root = 0; root < count; ++root) {
-        if (roots_found[root_offsets_[law] + root] != 0) any |= apply(root);
-      }
-      // A switch can leave another of the law's roots already below zero (two boundaries met
-      // at once, e.g. slip ending exactly at +-uc): IDA would never see it fall, so it is
-      // applied here, a bounded number of times.
-      for (int pass = 0; any && pass < 2 * hysteresis::kMaxPhaseRoots; ++pass) {
-        double roots[hysteresis::kMaxPhaseRoots];
-        const LawInput in = InputOf(k, law, y);
-        hysteresis::PhaseRoots(kernels[l], phases_[law], in.u, in.v, in.z, roots);
-        any = false;
-        for (int root = 0; root < count && !any; ++root) {
-          if (roots[root] < 0.0) any = apply(root);
+  for (const LawBlock& law : laws_) {
+    bool any = false;
+    for (int root = 0; root < law.roots; ++root) {
+      if (roots_found[law.root0 + root] == 0) continue;
+      const bool changed = SwitchLaw(law, root, y);
+      switched += changed;
+      any |= changed;
+    }
+    // A switch can leave another of the law's roots already below zero, which IDA would never
+    // see fall: switched here too, a bounded number of times.
+    for (int pass = 0; any && pass < 2 * hysteresis::kMaxPlanPhaseRoots; ++pass) {
+      double roots[hysteresis::kMaxPlanPhaseRoots];
+      LawRoots(law, y, roots);
+      any = false;
+      for (int root = 0; root < law.roots && !any; ++root) {
+        if (roots[root] < 0.0) {
+          any = SwitchLaw(law, root, y);
+          switched += any;
         }
       }
     }
@@ -273,10 +320,9 @@ void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp)
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, structure_.mass(), &load_);
   dof_rows_.Derivative(y, structure_.mass(), force_, load_, yp);
-  for (std::size_t law = 0; law < internal_index_.size(); ++law) {
-    const int z = internal_index_[law], w = second_index_[law];
-    if (z >= 0) yp[2 * dofs_ + z] = responses_[law].rate;
-    if (w >= 0) yp[2 * dofs_ + w] = responses_[law].w_rate;
+  for (std::size_t l = 0; l < laws_.size(); ++l) {
+    const int q0 = 2 * dofs_ + laws_[l].q0;
+    for (int k = 0; k < laws_[l].q_count; ++k) yp[q0 + k] = responses_[l].rate[k];
   }
 }
 
@@ -286,27 +332,33 @@ void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
   DofRows::PowerRates(load_, velocity_, viscous_, responses_, rates);
 }
 
+double RateFormSystem::LawStoredEnergy(const LawBlock& law, double t, const double* y) const {
+  std::array<double, kMaxRows> u{}, v{};
+  Deformation(law, y, &u, &v);
+  const double* q = y + 2 * dofs_ + law.q0;
+  if (law.plan) {
+    const auto& kernel = *plan_kernels_[law.kernel];
+    return hysteresis::PlanStoredEnergy(
+        kernel, hysteresis::PlanRateFormState(kernel, plan_phases_[law.kernel], {u[0], u[1]},
+                                              {v[0], v[1]}, q, t));
+  }
+  const auto& kernel = *member_kernels_[law.kernel];
+  return hysteresis::StoredEnergy(
+      kernel,
+      hysteresis::RateFormState(kernel, member_phases_[law.kernel], u[0], v[0],
+                                law.q_count > 0 ? q[0] : 0.0, law.q_count > 1 ? q[1] : 0.0, t));
+}
+
 ResponseRow RateFormSystem::Record(int step, double t, const double* y,
-                                   const double* energy_integrals) {
+                                       const double* energy_integrals) {
   const Eigen::VectorXd& m = structure_.mass();
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, m, &load_);
-  const double ground = excitation_.ground_acceleration.At(t);
   acceleration_ = (load_ - force_).cwiseQuotient(m);
-  absolute_acceleration_ = acceleration_.array() + ground;
+  absolute_acceleration_ = acceleration_;
+  excitation_.AddGroundAcceleration(t, absolute_acceleration_);
   double elastic = 0.0;
-  const auto& connections = structure_.connections();
-  for (std::size_t k = 0; k < connections.size(); ++k) {
-    const auto& kernels = connections[k].assembly.kernels();
-    for (std::size_t l = 0; l < kernels.size(); ++l) {
-      const std::size_t law = structure_.law_offset(k) + l;
-      const LawInput in = InputOf(k, law, y);
-      law_forces_[law] = responses_[law].force;
-      elastic += hysteresis::StoredEnergy(
-          kernels[l],
-          hysteresis::RateFormState(kernels[l], phases_[law], in.u, in.v, in.z, in.w, t));
-    }
-  }
+  for (const LawBlock& law : laws_) elastic += LawStoredEnergy(law, t, y);
   return dof_rows_.Row(step, t, y, acceleration_, absolute_acceleration_, connection_forces_,
                        law_forces_, DofRows::EnergiesAt(energy_integrals, velocity_, m, elastic));
 }

@@ -50,4 +50,11 @@ void HistoryRecorder::Observe(const ResponseRow& row) {
   history_.rows_written = r + 1;
 }
 
+HistoryRecorder RecordHistory(const structure::Structure& structure, const TimeGrid& grid,
+                              ResponseHistory* response) {
+  return HistoryRecorder(response, grid, structure.dofs(),
+                         static_cast<int>(structure.force_columns()),
+                         static_cast<int>(structure.law_count()));
+}
+
 }  // namespace isolab::integrators

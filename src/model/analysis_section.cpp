@@ -27,6 +27,8 @@ GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node&
   reader.RequireMap(motion, motion_path);
   reader.CheckKeys(motion, motion_path, {"file", "units", "scale", "dt"});
   GroundMotionSection ground;
+  ground.key = motion_path;
+  ground.location = reader.Locate(motion);
   ground.file =
       reader.ReadString(reader.Require(motion, motion_path, "file"), motion_path + ".file");
   if (motion["units"]) {
@@ -53,8 +55,29 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
   reader.CheckKeys(node, path, {"ground_motion", "forces"});
   ExcitationSection section;
   if (node["ground_motion"]) {
-    section.ground_motion =
-        ReadGroundMotion(reader, node["ground_motion"], "excitation.ground_motion", units);
+    // One component {file, ...}, or H1 with an optional H2 {h1, h2, angle}.
+    const std::string motion_path = "excitation.ground_motion";
+    const YAML::Node motion = node["ground_motion"];
+    reader.RequireMap(motion, motion_path);
+    if (motion["h1"] || motion["h2"] || motion["angle"]) {
+      if (motion["file"]) {
+        reader.Fail(motion, motion_path,
+                    "give one record {file, units, scale, dt} or the components h1 and h2 "
+                    "(each {file, units, scale, dt}) with the angle of h1 from x, not both");
+      }
+      reader.CheckKeys(motion, motion_path, {"h1", "h2", "angle"});
+      section.ground_motion.push_back(ReadGroundMotion(
+          reader, reader.Require(motion, motion_path, "h1"), ChildPath(motion_path, "h1"), units));
+      if (motion["h2"]) {
+        section.ground_motion.push_back(
+            ReadGroundMotion(reader, motion["h2"], ChildPath(motion_path, "h2"), units));
+      }
+      if (motion["angle"]) {
+        section.angle = reader.ReadNumber(motion["angle"], ChildPath(motion_path, "angle"));
+      }
+    } else {
+      section.ground_motion.push_back(ReadGroundMotion(reader, motion, motion_path, units));
+    }
   }
   if (node["forces"]) {
     const YAML::Node list = node["forces"];
@@ -78,7 +101,7 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
       section.forces.push_back(std::move(force));
     }
   }
-  if (!section.ground_motion && section.forces.empty()) {
+  if (section.ground_motion.empty() && section.forces.empty()) {
     reader.Fail(node, path, "give a ground_motion, forces, or both");
   }
   return section;

@@ -66,19 +66,45 @@ hysteresis::CyclicProtocol ReadCyclic(const YamlReader& reader, const YAML::Node
   return protocol;
 }
 
+// The structure's levels and dofs, as build_structure.cpp lays them out: level 0 is the base (or
+// an SDOF's mass) when there is one, else floor 1.
+struct Extent {
+  int levels = 0, dofs = 0;
+  bool level_zero = true;
+  int directions = 1;
+};
+
+Extent ExtentOf(const ModelFile& model) {
+  const StructureSection& section = *model.structure;
+  switch (section.kind) {
+    case StructureSection::Kind::kSdof:
+      return {1, 1, true, 1};
+    case StructureSection::Kind::kShearBuilding: {
+      const bool isolated = model.isolation.size() > 0;
+      const int levels = static_cast<int>(section.building.stories.size()) + (isolated ? 1 : 0);
+      return {levels, levels, isolated, 1};
+    }
+    case StructureSection::Kind::kPlanBuilding: {
+      const int levels = static_cast<int>(section.plan.stories.size()) + 1;
+      return {levels, structure::kPlanDofsPerFloor * levels, true, 2};
+    }
+  }
+  return {};
+}
+
 // Checks that need more than one section.
 void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const ModelFile& model) {
+  const YAML::Node motion = root["excitation"] ? root["excitation"]["ground_motion"] : YAML::Node();
   if (!model.structure) return;
+  const StructureSection& section = *model.structure;
   const YAML::Node structure = root["structure"];
-  int dofs = 1;
-  if (model.structure->kind == StructureSection::Kind::kSdof) {
-    if (model.isolation.size() == 0) {
-      reader.Fail(structure, "structure",
-                  "an sdof takes its restoring force from isolation.components, which is missing");
-    }
-  } else {
+  if (section.kind == StructureSection::Kind::kSdof && model.isolation.size() == 0) {
+    reader.Fail(structure, "structure",
+                "an sdof takes its restoring force from isolation.components, which is missing");
+  }
+  if (section.kind == StructureSection::Kind::kShearBuilding) {
     const bool isolated = model.isolation.size() > 0;
-    const bool has_base_mass = model.structure->building.base_mass > 0.0;
+    const bool has_base_mass = section.building.base_mass > 0.0;
     if (isolated && !has_base_mass) {
       reader.Fail(structure, "structure", "an isolated building needs base_mass");
     }
@@ -87,27 +113,38 @@ void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const Mo
           structure["base_mass"], "structure.base_mass",
           "given, but there is no isolation section (a fixed-base building has no base mass)");
     }
-    dofs = static_cast<int>(model.structure->building.stories.size()) + (isolated ? 1 : 0);
+    if (!isolated && section.building.stories.empty()) {
+      reader.Fail(structure, "structure",
+                  "a building without isolation needs stories (an isolated one may have none: "
+                  "a slab on its isolators)");
+    }
+  }
+  const Extent extent = ExtentOf(model);
+  if (static_cast<int>(model.excitation.ground_motion.size()) > extent.directions ||
+      (extent.directions == 1 && model.excitation.angle != 0.0)) {
+    const YAML::Node at = motion["h2"] ? motion["h2"] : motion["angle"];
+    reader.Fail(at, "excitation.ground_motion",
+                "the structure moves along x only: one component, along x (a second component "
+                "or an angle needs a building in plan)");
   }
   const YAML::Node levels = root["output"] ? root["output"]["levels"] : YAML::Node();
-  const bool has_level_zero =
-      model.structure->kind == StructureSection::Kind::kSdof || model.isolation.size() > 0;
   for (std::size_t i = 0; i < model.output.levels.size(); ++i) {
     const int level = model.output.levels[i];
-    const int highest = has_level_zero ? dofs - 1 : dofs;
-    if (level != kRoofLevel && (level > highest || (!has_level_zero && level == 0))) {
+    const int lowest = extent.level_zero ? 0 : 1;
+    const int highest = lowest + extent.levels - 1;
+    if (level != kRoofLevel && (level > highest || level < lowest)) {
       reader.Fail(levels[i], IndexPath("output.levels", i),
-                  fmt::format("{} (the structure's levels are {} to {}, or roof)", level,
-                              has_level_zero ? 0 : 1, highest));
+                  fmt::format("{} (the structure's levels are {} to {}, or roof)", level, lowest,
+                              highest));
     }
   }
   const YAML::Node forces = root["excitation"] ? root["excitation"]["forces"] : YAML::Node();
   for (std::size_t i = 0; i < model.excitation.forces.size(); ++i) {
     const int dof = model.excitation.forces[i].dof;
-    if (dof < 0 || dof >= dofs) {
+    if (dof < 0 || dof >= extent.dofs) {
       reader.Fail(
           forces[i]["dof"], IndexPath("excitation.forces", i) + ".dof",
-          fmt::format("{} (the structure's degrees of freedom are 0 to {})", dof, dofs - 1));
+          fmt::format("{} (the structure's degrees of freedom are 0 to {})", dof, extent.dofs - 1));
     }
   }
 }
@@ -169,14 +206,18 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   model.text = text;
   const YAML::Node root = reader.LoadText(text);
   reader.RequireMap(root, "");
-  if (root["plan"]) {
-    reader.Fail(root["plan"], "plan",
-                "a plan model: `isolab run` analyses it (docs/bidirectional.md); this command "
-                "takes one-direction models");
-  }
   reader.CheckKeys(root, "",
-                   {"description", "units", "isolation", "structure", "excitation", "analysis",
-                    "output", "cyclic"});
+                   {"description", "units", "isolation", "structure", "plan", "excitation",
+                    "analysis", "output", "cyclic"});
+  if (root["plan"] && root["structure"]) {
+    reader.Fail(root["plan"], "plan",
+                "a model is either a building in plan (plan) or one in one direction "
+                "(structure), not both");
+  }
+  if (root["plan"] && root["isolation"]) {
+    reader.Fail(root["isolation"], "isolation",
+                "a building in plan carries its isolators' laws in plan.isolators[i].components");
+  }
   model.path = path;
   if (root["description"]) {
     model.description = reader.ReadString(root["description"], "description");
@@ -188,13 +229,15 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
                                     &model.included_files);
   }
   if (root["structure"]) model.structure = ReadStructure(reader, root["structure"], model.units);
+  if (root["plan"]) model.structure = ReadPlan(reader, root["plan"], model.units);
   if (root["excitation"])
     model.excitation = ReadExcitation(reader, root["excitation"], model.units);
   if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], model.units);
   if (root["output"]) ReadOutput(reader, root["output"], &model);
   if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);
   if (!model.structure && model.isolation.size() == 0) {
-    reader.Fail(root, "", "missing key 'isolation' (a model needs isolation, structure, or both)");
+    reader.Fail(root, "",
+                "missing key 'isolation' (a model needs isolation, structure, or both; or plan)");
   }
   CheckConsistency(reader, root, model);
   return model;

@@ -32,6 +32,9 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
 
 StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
                                const UnitSystem& units);
+// The `plan` section: a building in plan (plan_section.cpp).
+StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& node,
+                          const UnitSystem& units);
 // `{file, units, scale, dt}` at key path `path`.
 GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& node,
                                      const std::string& path, const UnitSystem& units);

@@ -55,8 +55,7 @@ structure::Story ReadStory(const YamlReader& reader, const YAML::Node& node,
 std::vector<structure::Story> ReadStories(const YamlReader& reader, const YAML::Node& node,
                                           const std::string& path, const UnitSystem& units) {
   std::vector<structure::Story> stories;
-  if (node.IsSequence()) {
-    if (node.size() == 0) reader.Fail(node, path, "the list is empty; give at least one story");
+  if (node.IsSequence()) {  // empty: a slab on its isolators (model_file.cpp checks)
     for (std::size_t i = 0; i < node.size(); ++i) {
       stories.push_back(ReadStory(reader, node[i], IndexPath(path, i), units, i));
     }
@@ -79,8 +78,9 @@ std::vector<structure::Story> ReadStories(const YamlReader& reader, const YAML::
 structure::SuperstructureDamping ReadBuildingDamping(const YamlReader& reader,
                                                      const YAML::Node& node,
                                                      const std::string& path) {
-  reader.RequireMap(node, path);
   structure::SuperstructureDamping damping;
+  if (node.IsScalar() && node.Scalar() == "none") return damping;
+  reader.RequireMap(node, path);
   const YAML::Node type_node = reader.Require(node, path, "type");
   const std::string type = reader.ReadString(type_node, ChildPath(path, "type"));
   if (type == "none") {
@@ -153,8 +153,10 @@ StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
   } else if (type == "shear_building") {
     reader.CheckKeys(node, path, {"type", "stories", "base_mass", "damping"});
     section.kind = StructureSection::Kind::kShearBuilding;
-    section.building.stories =
-        ReadStories(reader, reader.Require(node, path, "stories"), "structure.stories", units);
+    if (node["stories"]) {
+      section.building.stories =
+          ReadStories(reader, node["stories"], "structure.stories", units);
+    }
     if (node["base_mass"]) {
       section.building.base_mass =
           ReadPositive(reader, node, path, "base_mass", dimension::kMass, units);

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "isolab/io/record.h"
+#include "isolab/model/build_structure.h"
 #include "model_sections.h"
 
 namespace isolab::model {
@@ -50,15 +51,9 @@ std::string ModelPath(const YamlReader& reader, const YAML::Node& node, const st
   return (directory / reader.ReadString(node, path)).lexically_normal().string();
 }
 
-// A study is one-direction or plan throughout: its records are single records or pairs.
-[[noreturn]] void FailMixedKinds(const YamlReader& reader, const YAML::Node& node,
-                                 const std::string& path, const std::string& file,
-                                 bool file_is_plan, const std::string& building) {
-  reader.Fail(node, path,
-              fmt::format("'{}' is a {} model and the building '{}' a {} one: a study's variants "
-                          "are all one-direction models or all plan models",
-                          file, file_is_plan ? "plan" : "one-direction", building,
-                          file_is_plan ? "one-direction" : "plan"));
+// What a model moves in, for messages.
+std::string DescribeDirections(int directions) {
+  return directions == 2 ? "in plan (x, y and rotation)" : "in one direction";
 }
 
 ModelFile LoadStructureModel(const YamlReader& reader, const YAML::Node& node,
@@ -80,16 +75,6 @@ std::string ReplacedIsolationNote(const std::string& study_path, const std::stri
       "\n# isolab compare, study {}, variant {}: the isolation above is replaced by\n# isolation: "
       "{}\n",
       study_path, variant, emitter.c_str());
-}
-
-// The building with `isolation` in place of its own, its stored text saying so.
-ModelFile WithIsolation(const ModelFile& building, hysteresis::ParallelAssembly isolation,
-                        const std::string& study_path, const std::string& variant,
-                        const YAML::Node& node) {
-  ModelFile model = building;
-  model.isolation = std::move(isolation);
-  model.text += ReplacedIsolationNote(study_path, variant, node);
-  return model;
 }
 
 // A variant entry's keys checked and its name read.
@@ -116,10 +101,14 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
   if (node["model"]) {
     const std::string model_path = ChildPath(path, "model");
     const std::string file = ModelPath(reader, node["model"], model_path, directory);
-    if (IsPlanModelFile(file)) {
-      FailMixedKinds(reader, node["model"], model_path, file, true, building.path);
-    }
     variant.model = LoadStructureModel(reader, node["model"], model_path, file);
+    if (Directions(variant.model) != Directions(building)) {
+      reader.Fail(node["model"], model_path,
+                  fmt::format("'{}' moves {} and the building '{}' {}: a study's variants move "
+                              "in the same directions, under the same records",
+                              file, DescribeDirections(Directions(variant.model)), building.path,
+                              DescribeDirections(Directions(building))));
+    }
   } else if (node["isolation"]) {
     const std::string isolation_path = ChildPath(path, "isolation");
     if (variant.fixed_base) {
@@ -134,64 +123,29 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
                               "needs",
                               building.path));
     }
-    variant.model = WithIsolation(
-        building,
-        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units),
-        reader.file(), variant.name, node["isolation"]);
+    const hysteresis::ParallelAssembly laws =
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units);
+    const std::size_t c = FirstWithoutCoupledForm(laws);
+    if (structure.kind == StructureSection::Kind::kPlanBuilding && c < laws.size()) {
+      reader.Fail(node["isolation"], isolation_path,
+                  fmt::format("{}: every isolator of a building in plan takes these laws as "
+                              "coupled laws",
+                              NoCoupledForm(laws, c)));
+    }
+    variant.model = building;
+    ReplaceIsolation(&variant.model, laws);
+    variant.model.text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
   } else {
     variant.model = building;
   }
   if (variant.fixed_base) {
-    if (variant.model.structure->kind != StructureSection::Kind::kShearBuilding) {
+    if (variant.model.structure->kind == StructureSection::Kind::kSdof) {
       reader.Fail(node["fixed_base"], ChildPath(path, "fixed_base"),
-                  "applies to a shear building only");
+                  "applies to a building on isolators; an SDOF has no base to hold");
     }
     variant.model.text +=
         fmt::format("\n# isolab compare, study {}, variant {}: run on a fixed base\n",
                     reader.file(), variant.name);
-  }
-  return variant;
-}
-
-// A plan study's variant: the building itself, the building with every isolator on the
-// variant's laws (coupled), or another plan model.
-StudyVariant ReadPlanVariant(const YamlReader& reader, const YAML::Node& node,
-                             const std::string& path, const fs::path& directory,
-                             const PlanModelFile& building) {
-  StudyVariant variant = NamedVariant(reader, node, path);
-  if (node["fixed_base"]) {
-    reader.Fail(
-        node["fixed_base"], ChildPath(path, "fixed_base"),
-        fmt::format("applies to a one-direction building; '{}' is a plan model", building.path));
-  }
-  if (node["isolation"] && node["model"]) {
-    reader.Fail(node, path, "give isolation or model, not both");
-  }
-  if (node["isolation"]) {
-    const std::string isolation_path = ChildPath(path, "isolation");
-    const hysteresis::ParallelAssembly laws =
-        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units);
-    const std::size_t c = FirstWithoutCoupledForm(laws);
-    if (c < laws.size()) {
-      reader.Fail(node["isolation"], isolation_path,
-                  fmt::format("{}: every isolator of a plan building takes these laws as "
-                              "coupled laws",
-                              NoCoupledForm(laws, c)));
-    }
-    variant.plan = building;
-    ReplaceIsolation(&*variant.plan, laws);
-    variant.plan->text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
-    return variant;
-  }
-  if (node["model"]) {
-    const std::string model_path = ChildPath(path, "model");
-    const std::string file = ModelPath(reader, node["model"], model_path, directory);
-    if (!IsPlanModelFile(file)) {
-      FailMixedKinds(reader, node["model"], model_path, file, false, building.path);
-    }
-    variant.plan = LoadPlanModelFile(file);
-  } else {
-    variant.plan = building;
   }
   return variant;
 }
@@ -217,37 +171,42 @@ std::vector<std::string> ExpandGlob(const std::string& pattern) {
   return files;
 }
 
-// A record entry's {file, units, dt, scale}, or a plain file name or glob.
+// A record entry's {file, units, dt, scale}, or a plain file name or glob: one component, whose
+// file is the entry's pattern.
 StudyRecord ReadRecordEntry(const YamlReader& reader, const YAML::Node& node,
                             const std::string& path, const UnitSystem& units) {
   StudyRecord given;
   given.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
+  GroundMotionSection component;
+  component.location = reader.Locate(node);
   if (!node.IsMap()) {
-    given.path = reader.ReadString(node, path);
+    component.file = reader.ReadString(node, path);
+    given.components.push_back(component);
     return given;
   }
   reader.CheckKeys(node, path, {"file", "units", "dt", "scale"});
-  given.path = reader.ReadString(reader.Require(node, path, "file"), ChildPath(path, "file"));
+  component.file = reader.ReadString(reader.Require(node, path, "file"), ChildPath(path, "file"));
   if (node["units"]) {
-    given.units = reader.ReadString(node["units"], ChildPath(path, "units"));
+    component.units = reader.ReadString(node["units"], ChildPath(path, "units"));
     try {
-      units.Convert(1.0, given.units, dimension::kAcceleration);
+      units.Convert(1.0, component.units, dimension::kAcceleration);
     } catch (const std::invalid_argument& error) {
       reader.Fail(node["units"], ChildPath(path, "units"),
                   fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
     }
   }
   if (node["dt"]) {
-    given.dt = reader.ReadQuantity(node["dt"], ChildPath(path, "dt"), dimension::kTime, units);
-    if (!(given.dt > 0.0)) reader.Fail(node["dt"], ChildPath(path, "dt"), "must be > 0");
+    component.dt = reader.ReadQuantity(node["dt"], ChildPath(path, "dt"), dimension::kTime, units);
+    if (!(component.dt > 0.0)) reader.Fail(node["dt"], ChildPath(path, "dt"), "must be > 0");
   }
   if (node["scale"]) {
-    given.scale = reader.ReadNumber(node["scale"], ChildPath(path, "scale"));
-    if (!(given.scale > 0.0) || !std::isfinite(given.scale)) {
+    component.scale = reader.ReadNumber(node["scale"], ChildPath(path, "scale"));
+    if (!(component.scale > 0.0) || !std::isfinite(component.scale)) {
       reader.Fail(node["scale"], ChildPath(path, "scale"),
-                  fmt::format("{:g} (must be a finite number > 0)", given.scale));
+                  fmt::format("{:g} (must be a finite number > 0)", component.scale));
     }
   }
+  given.components.push_back(component);
   return given;
 }
 
@@ -267,16 +226,16 @@ void ResolveComponent(const YamlReader& reader, const YAML::Node& node, const st
 }
 
 // Both components read as their runs will read them: a pair must share its step and its length
-// (plan_analysis.h), and a study refuses one that does not before any run starts.
+// (problem.h), and a study refuses one that does not before any run starts.
 void CheckPairMatches(const YamlReader& reader, const YAML::Node& node, const std::string& path,
-                      const PlanGroundMotion& pair, const UnitSystem& units) {
+                      const StudyRecord& pair, const UnitSystem& units) {
   const auto read = [&](const GroundMotionSection& component, const std::string& key) {
     const std::string where = fmt::format("{}.{} in {}", path, key, reader.file());
     return io::ReadRecord(component.file,
                           {component.units, component.dt * units.SiFactor(dimension::kTime),
                            where + ".units", where + ".dt"});
   };
-  const io::Record h1 = read(pair.h1, "h1"), h2 = read(*pair.h2, "h2");
+  const io::Record h1 = read(pair.components[0], "h1"), h2 = read(pair.components[1], "h2");
   const std::string h2_path = ChildPath(path, "h2");
   if (std::abs(h2.dt - h1.dt) > 1e-9 * h1.dt) {
     reader.Fail(node["h2"], h2_path,
@@ -292,35 +251,27 @@ void CheckPairMatches(const YamlReader& reader, const YAML::Node& node, const st
 
 bool IsPairEntry(const YAML::Node& node) { return node.IsMap() && (node["h1"] || node["h2"]); }
 
-// A plan study's record entry {h1, h2, angle, name}, as a plan model's ground motion.
+// A record entry {h1, h2, angle, name}, as a model's excitation.ground_motion pair.
 StudyRecord ReadPairEntry(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                           const fs::path& directory, const UnitSystem& units) {
   reader.CheckKeys(node, path, {"h1", "h2", "angle", "name"});
-  PlanGroundMotion pair;
+  StudyRecord record;
+  record.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
   for (const char* key : {"h1", "h2"}) {
     const std::string component_path = ChildPath(path, key);
     const YAML::Node component = reader.Require(node, path, key);
     GroundMotionSection section = ReadGroundMotion(reader, component, component_path, units);
     ResolveComponent(reader, component, component_path, directory, &section);
-    if (std::string_view(key) == "h1") {
-      pair.h1 = section;
-    } else {
-      pair.h2 = section;
-      pair.h2_location = reader.Locate(component);
-    }
+    record.components.push_back(std::move(section));
   }
-  if (node["angle"]) pair.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
-  CheckPairMatches(reader, node, path, pair, units);
-  StudyRecord record;
-  record.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
-  record.path = pair.h1.file;
+  if (node["angle"]) record.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
+  CheckPairMatches(reader, node, path, record, units);
   if (node["name"]) {
     record.name = reader.ReadString(node["name"], ChildPath(path, "name"));
     CheckName(reader, node["name"], ChildPath(path, "name"), record.name);
   } else {
-    record.name = fs::path(pair.h1.file).stem().string();
+    record.name = fs::path(record.components[0].file).stem().string();
   }
-  record.pair = std::move(pair);
   return record;
 }
 
@@ -333,35 +284,33 @@ void AddRecord(const YamlReader& reader, const YAML::Node& node, const std::stri
     reader.Fail(node, path,
                 fmt::format("'{}' has the name '{}' of '{}' (record names are file stems, or a "
                             "pair's name, and must be unique)",
-                            record.path, record.name, same->path));
+                            record.components[0].file, record.name,
+                            same->components[0].file));
   }
   records->push_back(std::move(record));
 }
 
 std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
-                                     const fs::path& directory, const UnitSystem& units, bool plan,
-                                     const std::string& building) {
+                                     const fs::path& directory, const UnitSystem& units,
+                                     int directions, const std::string& building) {
   reader.RequireSequence(list, "records");
   if (list.size() == 0) reader.Fail(list, "records", "the list is empty (give files or globs)");
   std::vector<StudyRecord> records;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = IndexPath("records", i);
-    if (IsPairEntry(list[i]) != plan) {
-      reader.Fail(list[i], path,
-                  plan ? fmt::format("one record cannot drive the plan model '{}': give a pair "
-                                     "{{h1: {{file: ...}}, h2: {{file: ...}}, angle: 0}}",
-                                     building)
-                       : fmt::format("a pair of records drives plan models; the building '{}' "
-                                     "is a one-direction model (give one record per entry)",
-                                     building));
-    }
-    if (plan) {
+    if (IsPairEntry(list[i])) {
+      if (directions < 2) {
+        reader.Fail(list[i], path,
+                    fmt::format("a pair of records drives a building in plan; the building '{}' "
+                                "moves in one direction (give one record per entry)",
+                                building));
+      }
       AddRecord(reader, list[i], path, ReadPairEntry(reader, list[i], path, directory, units),
                 &records);
       continue;
     }
     const StudyRecord given = ReadRecordEntry(reader, list[i], path, units);
-    const std::string& entry = given.path;
+    const std::string& entry = given.components[0].file;
     const std::string pattern = (directory / entry).lexically_normal().string();
     std::vector<std::string> files;
     if (IsGlob(entry)) {
@@ -377,7 +326,7 @@ std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node&
     for (const std::string& file : files) {
       StudyRecord record = given;
       record.name = fs::path(file).stem().string();
-      record.path = file;
+      record.components[0].file = file;
       AddRecord(reader, list[i], path, std::move(record), &records);
     }
   }
@@ -417,16 +366,10 @@ StudyFile LoadStudyFile(const std::string& path) {
   }
   const YAML::Node building_node = reader.Require(root, "", "building");
   const std::string building_file = ModelPath(reader, building_node, "building", directory);
-  study.plan = IsPlanModelFile(building_file);
-  ModelFile building;
-  std::optional<PlanModelFile> plan_building;
-  if (study.plan) {
-    plan_building = LoadPlanModelFile(building_file);
-    study.units = plan_building->units;
-  } else {
-    building = LoadStructureModel(reader, building_node, "building", building_file);
-    study.units = building.units;
-  }
+  const ModelFile building = LoadStructureModel(reader, building_node, "building", building_file);
+  study.units = building.units;
+  study.directions = Directions(building);
+  study.rotations = study.directions == 2;
   study.building_path = building_file;
 
   const YAML::Node variants = reader.Require(root, "", "variants");
@@ -435,9 +378,7 @@ StudyFile LoadStudyFile(const std::string& path) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const std::string variant_path = IndexPath("variants", i);
-    study.variants.push_back(
-        study.plan ? ReadPlanVariant(reader, variants[i], variant_path, directory, *plan_building)
-                   : ReadVariant(reader, variants[i], variant_path, directory, building));
+    study.variants.push_back(ReadVariant(reader, variants[i], variant_path, directory, building));
     const std::string& name = study.variants.back().name;
     const auto same = std::find(names.begin(), names.end(), name);
     if (same != names.end()) {
@@ -461,7 +402,7 @@ StudyFile LoadStudyFile(const std::string& path) {
     study.reference = static_cast<std::size_t>(found - names.begin());
   }
   study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory, study.units,
-                              study.plan, study.building_path);
+                              study.directions, study.building_path);
   study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
   if (root["free_vibration"]) {
     study.free_vibration =

@@ -76,14 +76,14 @@ DuctilityDemand::DuctilityDemand(const integrators::Excitation& excitation, doub
       zeta_(zeta),
       alpha_(options.alpha),
       newmark_(options.newmark) {
-  const auto& ground = excitation.ground_acceleration;
+  const auto& ground = excitation.ground.front().acceleration;
   grid_.dt = InelasticTimeStep(ground.dt, period, options.steps_per_period);
   // h divides the record's step, so the record's end is a whole number of steps.
   grid_.steps = static_cast<int>(std::lround(ground.duration() / grid_.dt));
   grid_.output_every = 1;  // the peak needs every step
   const double k = omega_ * omega_;
   elastic_deformation_ = PeakOf(structure::BuildSdof(
-      1.0, 2.0 * zeta_ * omega_, hysteresis::SingleLaw(LawType::kLinearSpring, {k})));
+      1.0, 2.0 * zeta_ * omega_, hysteresis::SingleLaw(LawType::kLinearSpring, {k})).structure);
 }
 
 double DuctilityDemand::PeakOf(const structure::Structure& sdof) {
@@ -105,7 +105,8 @@ DuctilityDemand::Result DuctilityDemand::operator()(double strength_ratio) {
   hysteresis::ParallelAssembly law =
       alpha_ == 0.0 ? hysteresis::SingleLaw(LawType::kElastoplastic, {k, u_y})
                     : hysteresis::SingleLaw(LawType::kBhm2, {k, alpha_ * k, u_y});
-  const double peak = PeakOf(structure::BuildSdof(1.0, 2.0 * zeta_ * omega_, std::move(law)));
+  const double peak =
+      PeakOf(structure::BuildSdof(1.0, 2.0 * zeta_ * omega_, std::move(law)).structure);
   return {peak, peak / u_y};
 }
 
@@ -182,8 +183,8 @@ ConstantDuctilitySpectrum ComputeConstantDuctilitySpectrum(
     spectrum.time_steps.push_back(InelasticTimeStep(ground.dt, period, options.steps_per_period));
   }
 
-  integrators::Excitation excitation;
-  excitation.ground_acceleration = ground;
+  integrators::Excitation excitation = integrators::Excitation::Uniform({});
+  excitation.ground[0].acceleration = ground;
   const std::size_t total = periods.size() * damping_ratios.size();
   std::size_t done = 0;
   for (std::size_t d = 0; d < damping_ratios.size(); ++d) {

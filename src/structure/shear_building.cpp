@@ -129,44 +129,66 @@ Modes FixedBaseModes(const std::vector<Story>& stories) {
   return modes;
 }
 
-Structure BuildShearBuilding(const ShearBuilding& building) {
+LaidOutStructure BuildShearBuilding(const ShearBuilding& building) {
   const int stories = static_cast<int>(building.stories.size());
-  if (stories == 0) throw std::invalid_argument("structure.stories: at least one story");
+  if (stories == 0 && !building.isolated) {
+    throw std::invalid_argument("structure.stories: a building on a fixed base needs a story");
+  }
   const int first_floor = building.isolated ? 1 : 0;
   const int n = stories + first_floor;
 
+  Layout layout;
   Eigen::VectorXd mass(n);
-  if (building.isolated) mass[0] = building.base_mass;
-  std::vector<Connection> connections;
-  if (building.isolated) connections.push_back({"isolation", kGround, 0, building.isolation});
+  std::vector<Member> members;
+  if (building.isolated) {
+    mass[0] = building.base_mass;
+    members.push_back(Member::Between("isolation", kGround, 0, building.isolation));
+    layout.levels.push_back({"base", {0, kGround, kGround}, {}});
+    layout.isolators.push_back({"isolation", 0, -1, 0, {}});
+  }
   for (int s = 0; s < stories; ++s) {
     const Story& story = building.stories[s];
-    mass[first_floor + s] = story.floor_mass;
-    const int below = s == 0 ? (building.isolated ? 0 : kGround) : first_floor + s - 1;
-    connections.push_back({story.name, below, first_floor + s, story.assembly});
+    const int dof = first_floor + s;
+    mass[dof] = story.floor_mass;
+    const int below = s == 0 ? (building.isolated ? 0 : kGround) : dof - 1;
+    layout.stories.push_back(
+        {story.name, dof, story.height, {static_cast<int>(members.size()), -1, -1}});
+    members.push_back(Member::Between(story.name, below, dof, story.assembly));
+    layout.levels.push_back({"floor " + std::to_string(s + 1), {dof, kGround, kGround}, {}});
   }
+  // The force into the ground: the isolators', or the first story's on a fixed base.
+  layout.base_shear.push_back({0, -1, kX});
 
   // C = T^T C_s T, where T maps the DOFs to floor motion relative to the base,
   // x_s = u_s - u_base 1 (isolated), or x_s = u_s (fixed base).
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int s = 0; s < stories; ++s) {
-    entries.emplace_back(s, first_floor + s, 1.0);
-    if (building.isolated) entries.emplace_back(s, 0, -1.0);
+  SparseMatrix c(n, n);
+  if (stories > 0) {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int s = 0; s < stories; ++s) {
+      entries.emplace_back(s, first_floor + s, 1.0);
+      if (building.isolated) entries.emplace_back(s, 0, -1.0);
+    }
+    SparseMatrix t(stories, n);
+    t.setFromTriplets(entries.begin(), entries.end());
+    const SparseMatrix cs = SuperstructureDampingMatrix(building.stories, building.damping);
+    c = SparseMatrix(t.transpose()) * cs * t;
+    c.prune(0.0);
   }
-  SparseMatrix t(stories, n);
-  t.setFromTriplets(entries.begin(), entries.end());
-  const SparseMatrix cs = SuperstructureDampingMatrix(building.stories, building.damping);
-  SparseMatrix c = SparseMatrix(t.transpose()) * cs * t;
-  c.prune(0.0);
-  return Structure(std::move(mass), std::move(connections), std::move(c));
+  return {Structure(std::move(mass), std::move(members), {}, std::move(c)), std::move(layout)};
 }
-Structure BuildSdof(double mass, double damping_coefficient,
-                    hysteresis::ParallelAssembly restoring) {
+
+LaidOutStructure BuildSdof(double mass, double damping_coefficient,
+                           hysteresis::ParallelAssembly restoring) {
   SparseMatrix c(1, 1);
   if (damping_coefficient != 0.0) c.insert(0, 0) = damping_coefficient;
-  std::vector<Connection> connections;
-  connections.push_back({"restoring", kGround, 0, std::move(restoring)});
-  return Structure(Eigen::VectorXd::Constant(1, mass), std::move(connections), c);
+  std::vector<Member> members;
+  members.push_back(Member::Between("restoring", kGround, 0, std::move(restoring)));
+  Layout layout;
+  layout.levels.push_back({"mass", {0, kGround, kGround}, {}});
+  layout.isolators.push_back({"restoring", 0, -1, 0, {}});
+  layout.base_shear.push_back({0, -1, kX});
+  return {Structure(Eigen::VectorXd::Constant(1, mass), std::move(members), {}, c),
+          std::move(layout)};
 }
 
 }  // namespace isolab::structure

@@ -3,11 +3,65 @@
 #include <stdexcept>
 
 namespace isolab::structure {
+namespace {
+
+using hysteresis::LawState;
+using hysteresis::Mat2;
+
+// Whether a member is a spring between two dofs (d = u_j - u_i) or from the ground (d = u_j).
+bool IsBetween(const Member& member, int* dof_i, int* dof_j) {
+  int plus = kGround, minus = kGround, count = 0;
+  for (int a = 0; a < kMaxTerms; ++a) {
+    if (member.dofs[a] == kGround) continue;
+    ++count;
+    if (member.coefficients[a] == 1.0 && plus == kGround) {
+      plus = member.dofs[a];
+    } else if (member.coefficients[a] == -1.0 && minus == kGround) {
+      minus = member.dofs[a];
+    } else {
+      return false;
+    }
+  }
+  if (plus == kGround || count != (minus == kGround ? 1 : 2)) return false;
+  *dof_i = minus;
+  *dof_j = plus;
+  return true;
+}
+
+}  // namespace
+
 int SlotOf(const SparseMatrix& matrix, int row, int col) {
   for (int k = matrix.outerIndexPtr()[col]; k < matrix.outerIndexPtr()[col + 1]; ++k) {
     if (matrix.innerIndexPtr()[k] == row) return k;
   }
   throw std::logic_error("sparse pattern lacks an entry it was built with");
+}
+
+Member Member::Between(std::string name, int dof_i, int dof_j,
+                       hysteresis::ParallelAssembly assembly) {
+  Member member;
+  member.name = std::move(name);
+  member.assembly = std::move(assembly);
+  member.dofs[0] = dof_j;
+  member.coefficients[0] = 1.0;
+  if (dof_i != kGround) {
+    member.dofs[1] = dof_i;
+    member.coefficients[1] = -1.0;
+  }
+  return member;
+}
+
+CoupledMember CoupledMember::UnderFloor(std::string name, int first_dof, Vec2 arm,
+                                        hysteresis::PlanAssembly assembly) {
+  CoupledMember member;
+  member.name = std::move(name);
+  member.assembly = std::move(assembly);
+  const Vec2 columns[3] = {{1.0, 0.0}, {0.0, 1.0}, {-arm.y, arm.x}};
+  for (int a = 0; a < 3; ++a) {
+    member.dofs[a] = first_dof + a;
+    member.columns[a] = columns[a];
+  }
+  return member;
 }
 
 void ConstantTerms::AppendEntries(int dofs, const SparseMatrix& damping,
@@ -42,10 +96,11 @@ void ConstantTerms::Fill(const Eigen::VectorXd& mass, const SparseMatrix& dampin
   }
 }
 
-Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
-                     SparseMatrix viscous_damping)
+Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
+                     std::vector<CoupledMember> coupled_members, SparseMatrix viscous_damping)
     : mass_(std::move(mass)),
-      connections_(std::move(connections)),
+      members_(std::move(members)),
+      coupled_(std::move(coupled_members)),
       viscous_damping_(std::move(viscous_damping)) {
   const int n = dofs();
   for (int i = 0; i < n; ++i) {
@@ -54,112 +109,273 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
     }
   }
   viscous_damping_.makeCompressed();
+  const auto check_dofs = [n](const std::string& name, const std::array<int, kMaxTerms>& dofs) {
+    bool any = false;
+    for (const int dof : dofs) {
+      if (dof < kGround || dof >= n) {
+        throw std::invalid_argument("member '" + name + "' acts on a dof that does not exist");
+      }
+      any = any || dof != kGround;
+    }
+    if (!any) throw std::invalid_argument("member '" + name + "' acts on no dof");
+  };
+
   law_offsets_.push_back(0);
-  for (const Connection& connection : connections_) {
-    if (connection.dof_j < 0 || connection.dof_j >= n || connection.dof_i < kGround ||
-        connection.dof_i >= n || connection.dof_i == connection.dof_j) {
-      throw std::invalid_argument("connection '" + connection.name + "' joins invalid dofs");
+  for (const Member& member : members_) {
+    check_dofs(member.name, member.dofs);
+    std::size_t state = law_offsets_.back();
+    for (const auto& kernel : member.assembly.kernels()) {
+      if (std::holds_alternative<hysteresis::Dashpot>(kernel)) viscous_law_states_.push_back(state);
+      ++state;
     }
-    law_offsets_.push_back(law_offsets_.back() + connection.assembly.size());
-    for (const auto& kernel : connection.assembly.kernels()) {
-      law_is_dashpot_.push_back(std::holds_alternative<hysteresis::Dashpot>(kernel));
+    law_offsets_.push_back(state);
+  }
+  for (const CoupledMember& member : coupled_) {
+    check_dofs(member.name, member.dofs);
+    // A dashpot's x and y halves, listed once each so that the viscous energy is a sum.
+    std::size_t state = law_offsets_.back();
+    for (const auto& kernel : member.assembly.kernels()) {
+      const auto* pair = std::get_if<hysteresis::UncoupledPair>(&kernel);
+      const bool coupled = std::holds_alternative<hysteresis::PlanDashpot>(kernel);
+      if (coupled || (pair && std::holds_alternative<hysteresis::Dashpot>(pair->x))) {
+        viscous_law_states_.push_back(state);
+      }
+      if (coupled || (pair && std::holds_alternative<hysteresis::Dashpot>(pair->y))) {
+        viscous_law_states_.push_back(state + 1);
+      }
+      state += 2;
     }
+    law_offsets_.push_back(state);
   }
 
+  // The pattern: mass diagonal and viscous damping, every member's dofs pairwise; fixed for the
+  // structure's life.
   std::vector<Eigen::Triplet<double>> entries;
   ConstantTerms::AppendEntries(n, viscous_damping_, &entries);
-  for (const Connection& connection : connections_) {
-    if (connection.dof_i == kGround) continue;
-    entries.emplace_back(connection.dof_i, connection.dof_j, 0.0);
-    entries.emplace_back(connection.dof_j, connection.dof_i, 0.0);
-  }
+  const auto pairs = [&entries](const std::array<int, kMaxTerms>& dofs) {
+    for (const int a : dofs) {
+      for (const int b : dofs) {
+        if (a != kGround && b != kGround) entries.emplace_back(a, b, 0.0);
+      }
+    }
+  };
+  for (const Member& member : members_) pairs(member.dofs);
+  for (const CoupledMember& member : coupled_) pairs(member.dofs);
   pattern_.resize(n, n);
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
-
   constant_terms_ = ConstantTerms(n, viscous_damping_, pattern_);
-  for (const Connection& connection : connections_) {
-    ConnectionSlots slots;
-    slots.jj = SlotOf(pattern_, connection.dof_j, connection.dof_j);
-    if (connection.dof_i != kGround) {
-      slots.ii = SlotOf(pattern_, connection.dof_i, connection.dof_i);
-      slots.ij = SlotOf(pattern_, connection.dof_i, connection.dof_j);
-      slots.ji = SlotOf(pattern_, connection.dof_j, connection.dof_i);
+
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    const Member& member = members_[k];
+    Terms packed;
+    for (int a = 0; a < kMaxTerms; ++a) {
+      if (member.dofs[a] == kGround) continue;
+      packed.dofs[packed.count] = member.dofs[a];
+      packed.coefficients[packed.count++] = member.coefficients[a];
     }
-    connection_slots_.push_back(slots);
-    constant_responses_.push_back(connection.assembly.ConstantTangent());
+    for (int a = 0; a < packed.count; ++a) {
+      for (int b = 0; b < packed.count; ++b) {
+        packed.slots[a * packed.count + b] = SlotOf(pattern_, packed.dofs[a], packed.dofs[b]);
+      }
+    }
+    member_terms_.push_back(packed);
+    member_constants_.push_back(member.assembly.ConstantTangent());
+    Between spring{k};
+    if (IsBetween(member, &spring.dof_i, &spring.dof_j)) {
+      spring.jj = SlotOf(pattern_, spring.dof_j, spring.dof_j);
+      if (spring.dof_i != kGround) {
+        spring.ii = SlotOf(pattern_, spring.dof_i, spring.dof_i);
+        spring.ij = SlotOf(pattern_, spring.dof_i, spring.dof_j);
+        spring.ji = SlotOf(pattern_, spring.dof_j, spring.dof_i);
+      }
+      between_.push_back(spring);
+    } else {
+      general_.push_back(k);
+    }
+  }
+  for (const CoupledMember& member : coupled_) {
+    CoupledTerms packed;
+    for (int a = 0; a < kMaxTerms; ++a) {
+      if (member.dofs[a] == kGround) continue;
+      packed.dofs[packed.count] = member.dofs[a];
+      packed.columns[packed.count++] = member.columns[a];
+    }
+    for (int a = 0; a < packed.count; ++a) {
+      for (int b = 0; b < packed.count; ++b) {
+        packed.slots[a * packed.count + b] = SlotOf(pattern_, packed.dofs[a], packed.dofs[b]);
+      }
+    }
+    coupled_terms_.push_back(packed);
+    coupled_constants_.push_back(member.assembly.ConstantTangent());
   }
 }
 
-void Structure::AddConnectionTangent(std::size_t connection, double k_eff, double* values) const {
-  const ConnectionSlots& slots = connection_slots_[connection];
-  values[slots.jj] += k_eff;
-  if (slots.ii < 0) return;  // grounded
-  values[slots.ii] += k_eff;
-  values[slots.ij] -= k_eff;
-  values[slots.ji] -= k_eff;
+void Structure::AddMemberTangent(std::size_t member, double k_eff, double* values) const {
+  const Terms& terms = member_terms_[member];
+  for (int a = 0; a < terms.count; ++a) {
+    const double row = terms.coefficients[a] * k_eff;
+    for (int b = 0; b < terms.count; ++b) {
+      values[terms.slots[a * terms.count + b]] += row * terms.coefficients[b];
+    }
+  }
+}
+
+void Structure::AddBetweenTangent(const Between& spring, double k_eff, double* values) const {
+  values[spring.jj] += k_eff;
+  if (spring.ii < 0) return;  // grounded
+  values[spring.ii] += k_eff;
+  values[spring.ij] -= k_eff;
+  values[spring.ji] -= k_eff;
+}
+
+void Structure::AddCoupledTangent(std::size_t coupled, const Mat2& k_eff, double* values) const {
+  const CoupledTerms& terms = coupled_terms_[coupled];
+  for (int b = 0; b < terms.count; ++b) {
+    const Vec2 k_column = k_eff * terms.columns[b];
+    for (int a = 0; a < terms.count; ++a) {
+      values[terms.slots[a * terms.count + b]] += Dot(terms.columns[a], k_column);
+    }
+  }
 }
 
 void Structure::ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const {
   constant_terms_.Fill(mass_, viscous_damping_, factors, tangent);
-  for (std::size_t k = 0; k < connections_.size(); ++k) {
-    if (const auto& constant = constant_responses_[k]) {
-      AddConnectionTangent(k, constant->stiffness + factors.damping * constant->damping,
-                           tangent->valuePtr());
+  double* values = tangent->valuePtr();
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    if (const auto& constant = member_constants_[k]) {
+      AddMemberTangent(k, constant->stiffness + factors.damping * constant->damping, values);
+    }
+  }
+  for (std::size_t i = 0; i < coupled_.size(); ++i) {
+    if (const auto& constant = coupled_constants_[i]) {
+      AddCoupledTangent(i, constant->stiffness + factors.damping * constant->damping, values);
     }
   }
 }
 
-void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double t,
-                         const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                         std::span<hysteresis::LawState> trial,
+double Structure::MemberDeformation(std::size_t member, std::span<const double> u) const {
+  const Terms& terms = member_terms_[member];
+  double d = 0.0;
+  for (int a = 0; a < terms.count; ++a) d += terms.coefficients[a] * u[terms.dofs[a]];
+  return d;
+}
+
+Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> u) const {
+  const CoupledTerms& terms = coupled_terms_[coupled];
+  Vec2 d;
+  for (int a = 0; a < terms.count; ++a) d = d + u[terms.dofs[a]] * terms.columns[a];
+  return d;
+}
+
+void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committed,
+                               const hysteresis::LawInput& in, std::span<LawState> trial,
+                               std::span<hysteresis::LawResponse> responses,
+                               std::span<double> member_forces, double damping_factor,
+                               double* values) const {
+  const std::size_t offset = law_offsets_[k], count = members_[k].assembly.size();
+  const hysteresis::AssemblyResponse total =
+      members_[k].assembly.Update(committed.subspan(offset, count), in,
+                                  trial.subspan(offset, count), responses.subspan(offset, count));
+  member_forces[k] = total.force;
+  if (values && !member_constants_[k]) {
+    AddMemberTangent(k, total.stiffness + damping_factor * total.damping, values);
+  }
+}
+
+void Structure::Evaluate(std::span<const LawState> committed, double t, const Eigen::VectorXd& u,
+                         const Eigen::VectorXd& v, std::span<LawState> trial,
                          std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
-                         std::span<double> connection_forces, const TangentFactors& factors,
+                         std::span<double> member_forces, const TangentFactors& factors,
                          SparseMatrix* tangent) const {
   force->noalias() = viscous_damping_ * v;
   double* values = tangent ? tangent->valuePtr() : nullptr;
-  for (std::size_t k = 0; k < connections_.size(); ++k) {
-    const Connection& connection = connections_[k];
-    const bool grounded = connection.dof_i == kGround;
-    const hysteresis::LawInput in{u[connection.dof_j] - (grounded ? 0.0 : u[connection.dof_i]),
-                                  v[connection.dof_j] - (grounded ? 0.0 : v[connection.dof_i]), t};
-    const std::size_t offset = law_offsets_[k];
-    const std::size_t count = connection.assembly.size();
+
+  for (const Between& spring : between_) {
+    const std::size_t k = spring.member;
+    const bool grounded = spring.dof_i == kGround;
+    const hysteresis::LawInput in{u[spring.dof_j] - (grounded ? 0.0 : u[spring.dof_i]),
+                                  v[spring.dof_j] - (grounded ? 0.0 : v[spring.dof_i]), t};
+    const std::size_t offset = law_offsets_[k], count = members_[k].assembly.size();
     const hysteresis::AssemblyResponse total =
-        connection.assembly.Update(committed.subspan(offset, count), in,
-                                   trial.subspan(offset, count), responses.subspan(offset, count));
-    connection_forces[k] = total.force;
-    (*force)[connection.dof_j] += total.force;
-    if (!grounded) (*force)[connection.dof_i] -= total.force;
-    if (values && !constant_responses_[k]) {
-      AddConnectionTangent(k, total.stiffness + factors.damping * total.damping, values);
+        members_[k].assembly.Update(committed.subspan(offset, count), in,
+                                    trial.subspan(offset, count), responses.subspan(offset, count));
+    member_forces[k] = total.force;
+    (*force)[spring.dof_j] += total.force;
+    if (!grounded) (*force)[spring.dof_i] -= total.force;
+    if (values && !member_constants_[k]) {
+      AddBetweenTangent(spring, total.stiffness + factors.damping * total.damping, values);
     }
   }
+
+  for (const std::size_t k : general_) {
+    const Terms& terms = member_terms_[k];
+    double d = 0.0, d_rate = 0.0;
+    for (int a = 0; a < terms.count; ++a) {
+      d += terms.coefficients[a] * u[terms.dofs[a]];
+      d_rate += terms.coefficients[a] * v[terms.dofs[a]];
+    }
+    EvaluateMember(k, committed, {d, d_rate, t}, trial, responses, member_forces, factors.damping,
+                   values);
+    for (int a = 0; a < terms.count; ++a) {
+      (*force)[terms.dofs[a]] += terms.coefficients[a] * member_forces[k];
+    }
+  }
+
+  for (std::size_t i = 0; i < coupled_.size(); ++i) {
+    const CoupledTerms& terms = coupled_terms_[i];
+    hysteresis::PlanLawInput in{{}, {}, t};
+    for (int a = 0; a < terms.count; ++a) {
+      in.u = in.u + u[terms.dofs[a]] * terms.columns[a];
+      in.v = in.v + v[terms.dofs[a]] * terms.columns[a];
+    }
+    std::size_t offset = coupled_law_offset(i);
+    Vec2 f;
+    Mat2 k_eff;
+    for (const hysteresis::PlanLawKernel& kernel : coupled_[i].assembly.kernels()) {
+      hysteresis::PlanLawResponse response;
+      hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
+                                {trial[offset], trial[offset + 1]}, &response);
+      responses[offset] = {response.force.x, response.stiffness.xx, response.damping.xx};
+      responses[offset + 1] = {response.force.y, response.stiffness.yy, response.damping.yy};
+      f = f + response.force;
+      k_eff = k_eff + response.stiffness + factors.damping * response.damping;
+      offset += 2;
+    }
+    const std::size_t column = coupled_force_column(i);
+    member_forces[column] = f.x;
+    member_forces[column + 1] = f.y;
+    for (int a = 0; a < terms.count; ++a) (*force)[terms.dofs[a]] += Dot(terms.columns[a], f);
+    if (values && !coupled_constants_[i]) AddCoupledTangent(i, k_eff, values);
+  }
 }
 
-double Structure::StoredEnergy(std::span<const hysteresis::LawState> states) const {
+double Structure::StoredEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
-  for (std::size_t k = 0; k < connections_.size(); ++k) {
-    energy += connections_[k].assembly.StoredEnergy(
-        states.subspan(law_offsets_[k], connections_[k].assembly.size()));
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    energy += members_[k].assembly.StoredEnergy(
+        states.subspan(law_offsets_[k], members_[k].assembly.size()));
+  }
+  for (std::size_t i = 0; i < coupled_.size(); ++i) {
+    std::size_t offset = coupled_law_offset(i);
+    for (const hysteresis::PlanLawKernel& kernel : coupled_[i].assembly.kernels()) {
+      energy += hysteresis::PlanStoredEnergy(kernel, {states[offset], states[offset + 1]});
+      offset += 2;
+    }
   }
   return energy;
 }
 
-double Structure::DashpotEnergy(std::span<const hysteresis::LawState> states) const {
+double Structure::DashpotEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    if (law_is_dashpot_[i]) energy += states[i].dissipated;
-  }
+  for (const std::size_t l : viscous_law_states_) energy += states[l].dissipated;
   return energy;
 }
 
-double Structure::HystereticEnergy(std::span<const hysteresis::LawState> states) const {
-  double energy = 0.0;
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    if (!law_is_dashpot_[i]) energy += states[i].dissipated;
-  }
-  return energy;
+double Structure::HystereticEnergy(std::span<const LawState> states) const {
+  double dissipated = 0.0;
+  for (const LawState& state : states) dissipated += state.dissipated;
+  return dissipated - DashpotEnergy(states);
 }
 
 }  // namespace isolab::structure

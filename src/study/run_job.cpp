@@ -1,12 +1,14 @@
 #include "isolab/study/run_job.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <filesystem>
 
-#include "isolab/analysis/analysis_setup.h"
-#include "isolab/analysis/results_file.h"
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/problem.h"
+#include "isolab/analysis/solve.h"
 #include "run_job_parts.h"
 
 namespace isolab::study {
@@ -40,39 +42,49 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
   const model::StudyVariant& variant = study.variants[job.variant];
   const model::ModelFile& model = variant.model;
   try {
-    if (study.plan) {
-      RunPlanJob(study, job, output_directory, version, &result);
-      result.wall_seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return result;
-    }
     const model::StudyRecord& record = study.records[job.record];
     analysis::RunOverrides overrides;
-    overrides.record = record.path;
-    overrides.record_units = record.units;
-    if (record.dt > 0.0) overrides.record_dt = InModelTime(study, model.units, record.dt);
-    overrides.units_given_by = record.entry + ".units";
-    overrides.dt_given_by = record.entry + ".dt";
-    overrides.scale = record.scale * study.scales[job.scale];
+    const bool pair = record.components.size() > 1;
+    for (std::size_t c = 0; c < record.components.size(); ++c) {
+      const model::GroundMotionSection& component = record.components[c];
+      const std::string entry = pair ? fmt::format("{}.h{}", record.entry, c + 1) : record.entry;
+      analysis::RecordOverride given;
+      given.name = entry;
+      given.file = component.file;
+      given.units = component.units;
+      if (component.dt > 0.0) given.dt = InModelTime(study, model.units, component.dt);
+      given.scale = component.scale * study.scales[job.scale];
+      given.units_given_by = entry + ".units";
+      given.dt_given_by = entry + ".dt";
+      overrides.records.push_back(std::move(given));
+    }
+    overrides.angle = record.angle;
     overrides.fixed_base = variant.fixed_base;
     overrides.free_vibration = StudyFreeVibration(study, model.units);
-    const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(model, overrides);
-    result.record_units = setup.record.units;
-    result.pga = setup.record.pga / model.units.Convert(1.0, "g", dimension::kAcceleration);
-    integrators::ResponseHistory response;
-    const integrators::RunSummary summary = analysis::RunAnalysis(model.analysis, setup, &response);
-    const std::string file = PrepareRunFile(study, job, output_directory);
-    const analysis::ResponsePeaks peaks = analysis::ComputePeaks(setup, response);
-    const analysis::RunDescription run{&model,  &setup, &model.analysis, &summary, &peaks,
-                                       version, {}};
-    analysis::WriteResultsFile(file, run, response);
+    const analysis::Problem problem = analysis::Prepare(model, overrides);
+    const double g = model.units.Convert(1.0, "g", dimension::kAcceleration);
+    double pga = 0.0;
+    for (const io::AppliedRecord& applied : problem.records) {
+      if (!result.record_units.empty() && result.record_units != applied.units) {
+        result.record_units += " / " + applied.units;
+      } else if (result.record_units.empty()) {
+        result.record_units = applied.units;
+      }
+      pga = std::max(pga, applied.pga);
+    }
+    result.pga = pga / g;
+    analysis::SolveOptions options;
+    options.analysis = model.analysis;
+    options.results_path = PrepareRunFile(study, job, output_directory);
+    options.version = version;
+    const analysis::Summary summary = analysis::Solve(options, problem);
     result.file = RunFileName(study, job);
-    result.warnings = analysis::RunWarnings(run);
+    result.warnings = summary.warnings;
     if (summary.ok()) {
       result.completed = true;
-      result.values = MeasureQuantities(setup, response, peaks, model.units, study.units);
+      result.values = MeasureQuantities(problem, summary.peaks, model.units, study.units);
     } else {
-      result.message = summary.message;
+      result.message = summary.run.message;
     }
   } catch (const std::exception& error) {
     // Bad records (InputError), unwritable results, anything a run throws: this job's failure.

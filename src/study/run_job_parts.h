@@ -1,5 +1,5 @@
-// What a study's one-direction runs (run_job.cpp) and plan runs (plan_run_job.cpp) share: the
-// study's times in a variant model's unit, and where a run's results go.
+// The parts of a study's run (run_job.cpp) that the scheduler's tests reach too: the study's
+// times in a variant model's unit, and where a run's results go.
 #pragma once
 
 #include <optional>
@@ -23,11 +23,5 @@ std::optional<model::FreeVibration> StudyFreeVibration(const model::StudyFile& s
 // file's write error).
 std::string PrepareRunFile(const model::StudyFile& study, const Job& job,
                            const std::string& output_directory);
-
-// RunJob for a plan study's job (study.plan): `isolab run` on the variant's plan model with the
-// record pair as its excitation. `result` holds the job's index; the caller times it and turns
-// an exception into its failure.
-void RunPlanJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
-                const std::string& version, JobResult* result);
 
 }  // namespace isolab::study

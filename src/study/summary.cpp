@@ -31,12 +31,12 @@ StudyShape ShapeOf(const model::StudyFile& study) {
   for (const model::StudyVariant& variant : study.variants) shape.variants.push_back(variant.name);
   for (const model::StudyRecord& record : study.records) {
     shape.records.push_back(record.name);
-    shape.record_files.push_back(record.pair
-                                     ? fmt::format("{} + {} at {:g} degrees", record.pair->h1.file,
-                                                   record.pair->h2->file, record.pair->angle)
-                                     : record.path);
+    const auto& c = record.components;
+    shape.record_files.push_back(c.size() > 1 ? fmt::format("{} + {} at {:g} degrees", c[0].file,
+                                                            c[1].file, record.angle)
+                                              : c[0].file);
   }
-  shape.quantities = StudyQuantities(study.plan);
+  shape.quantities = StudyQuantities(study.rotations);
   shape.scales = study.scales;
   shape.reference = study.reference;
   for (const QuantityInfo& info : Quantities()) {

@@ -66,11 +66,11 @@ structure::Structure Building(const Device& device) {
 
 // A two-frequency ground acceleration (mm/s^2, peak about 0.2 g) over 8 s, sampled at 0.01 s.
 Excitation Shaking() {
-  Excitation excitation;
-  excitation.ground_acceleration.dt = 0.01;
+  Excitation excitation = Excitation::Uniform({});
+  excitation.ground[0].acceleration.dt = 0.01;
   for (int k = 0; k <= 800; ++k) {
     const double t = 0.01 * k;
-    excitation.ground_acceleration.values.push_back(
+    excitation.ground[0].acceleration.values.push_back(
         1500.0 * std::sin(std::numbers::pi * t / 8) *
         (std::sin(2 * std::numbers::pi * 0.5 * t) +
          0.5 * std::sin(2 * std::numbers::pi * 2.1 * t)));

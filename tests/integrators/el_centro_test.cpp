@@ -26,10 +26,10 @@ ParallelAssembly Linear(double k) { return hysteresis::SingleLaw(LawType::kLinea
 // Chopra's record: El Centro NS 1940 in g at 0.02 s, with a(0) = 0 at t = 0.
 Excitation ElCentro() {
   const io::Record record = io::ReadRecord(testing::ElCentroPath().string());
-  Excitation excitation;
-  excitation.ground_acceleration.dt = record.dt;
+  Excitation excitation = Excitation::Uniform({});
+  excitation.ground[0].acceleration.dt = record.dt;
   for (const double a : record.values)
-    excitation.ground_acceleration.values.push_back(a * kGravity);
+    excitation.ground[0].acceleration.values.push_back(a * kGravity);
   return excitation;
 }
 

@@ -22,10 +22,10 @@ constexpr double kGravity = 386.4;  // in/s^2, as in Chopra
 
 integrators::Excitation Load(const std::string& path, double to_model) {
   const io::Record record = io::ReadRecord(path);
-  integrators::Excitation excitation;
-  excitation.ground_acceleration.dt = record.dt;
+  integrators::Excitation excitation = integrators::Excitation::Uniform({});
+  excitation.ground[0].acceleration.dt = record.dt;
   for (const double a : record.values)
-    excitation.ground_acceleration.values.push_back(a * to_model);
+    excitation.ground[0].acceleration.values.push_back(a * to_model);
   return excitation;
 }
 
@@ -59,7 +59,7 @@ TEST(ConstantDuctility, NewmarkNormalisationIsTheExactElasticDeformation) {
     const double zeta = 0.05;
     DuctilityDemand demand(excitation, period, zeta, options);
     const double exact =
-        ComputeElasticSpectrum(excitation.ground_acceleration, {&period, 1}, {&zeta, 1})
+        ComputeElasticSpectrum(excitation.ground[0].acceleration, {&period, 1}, {&zeta, 1})
             .at(0, 0)
             .deformation;
     EXPECT_NEAR(demand.elastic_deformation() / exact, 1.0, 0.005) << "T " << period;
@@ -168,7 +168,7 @@ TEST(ConstantDuctility, SpectrumReportsYieldQuantities) {
   };
   const std::vector<double> periods{0.25, 0.5, 1.5}, damping{0.02, 0.05}, mu{1, 4};
   const ConstantDuctilitySpectrum spectrum = ComputeConstantDuctilitySpectrum(
-      excitation.ground_acceleration, periods, damping, mu, options);
+      excitation.ground[0].acceleration, periods, damping, mu, options);
   EXPECT_EQ(calls, 6);
   EXPECT_GT(spectrum.newmark_runs, 6);
   for (std::size_t d = 0; d < damping.size(); ++d) {
@@ -194,7 +194,7 @@ TEST(ConstantDuctility, RejectsBadOptionsNamingTheField) {
   const std::vector<double> periods{1.0}, damping{0.05};
   const auto key = [&](ConstantDuctilityOptions options, std::vector<double> mu) -> std::string {
     try {
-      ComputeConstantDuctilitySpectrum(excitation.ground_acceleration, periods, damping, mu,
+      ComputeConstantDuctilitySpectrum(excitation.ground[0].acceleration, periods, damping, mu,
                                        options);
     } catch (const InvalidParameter& error) {
       return error.violation().key;

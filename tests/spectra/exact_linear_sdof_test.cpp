@@ -126,9 +126,9 @@ TEST(ExactLinearSdof, RejectsOutOfRangeOscillators) {
 TEST(ExactLinearSdof, AgreesWithNewmarkAtAFineStep) {
   const io::Record record =
       io::ReadRecord(std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/fwn_firm_seed1.at2");
-  integrators::Excitation excitation;
-  excitation.ground_acceleration.dt = record.dt;
-  for (const double a : record.values) excitation.ground_acceleration.values.push_back(a * 9.80665);
+  integrators::Excitation excitation = integrators::Excitation::Uniform({});
+  excitation.ground[0].acceleration.dt = record.dt;
+  for (const double a : record.values) excitation.ground[0].acceleration.values.push_back(a * 9.80665);
   for (const double period : {0.2, 0.5, 1.0, 3.0}) {
     const int substeps = SubstepsPerSample(record.dt, period, 2000);
     const double h = record.dt / substeps;
@@ -141,7 +141,7 @@ TEST(ExactLinearSdof, AgreesWithNewmarkAtAFineStep) {
       integrators::ResponseHistory response;
       ASSERT_TRUE(integrators::RunNewmark(sdof, excitation, {h, steps}, {}, &response).ok());
       const auto exact =
-          ExactDeformationHistory(excitation.ground_acceleration, period, zeta, substeps);
+          ExactDeformationHistory(excitation.ground[0].acceleration, period, zeta, substeps);
       ASSERT_EQ(exact.size(), std::size_t(steps + 1));
       double peak_newmark = 0, peak_exact = 0, worst = 0;
       for (int k = 0; k <= steps; ++k) {

@@ -1,41 +1,63 @@
-// The peaks an engineer reads first from a run: isolator displacement and force, base shear,
-// roof absolute acceleration, story drift; and where the isolator comes to rest.
+// The peaks an engineer reads first from a run, for any structure (layout.h): each isolator's
+// displacement and force, base shear, story drifts and shears, the roof's and the floors'
+// absolute acceleration, the levels' rotations (in plan) and how much the base's twist adds at the
+// worst isolator; and where the isolators come to rest. A quantity with two horizontal components
+// (in plan) peaks as the resultant |(x, y)|; in one direction, as |x|.
 //
 // The residual isolator displacement is read after the free vibration that follows the
-// excitation (analysis_setup.h): the middle of the isolator's range over the last
-// `residual_window` of the run. A structure at rest gives its final displacement; a bearing that
-// still swings elastically about an offset (a bilinear isolator below yield is undamped) gives
-// that offset, and half the range says how much it still swings.
+// excitation (problem.h): the middle of the isolator's range over the last `residual_window` of
+// the run. A structure at rest gives its final displacement; a bearing that still swings
+// elastically about an offset (a bilinear isolator below yield is undamped) gives that offset, and
+// half the range says how much it still swings.
 //
 // A PeakTracker sees every step of a run (it is a ResponseObserver), whatever the results file
-// keeps, and holds no history: only the isolator's displacements within the residual window.
+// keeps, and holds no history: only the isolators' displacements within the residual window, in
+// buffers sized before the run.
 #pragma once
 
-#include <deque>
-#include <utility>
+#include <vector>
 
-#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/integrators/response.h"
 
 namespace isolab::analysis {
 
 struct Peak {
-  double value = 0.0;  // largest absolute value
+  double value = 0.0;  // largest absolute value (or resultant)
   double time = 0.0;
-  int index = -1;  // story or DOF where it occurred, if relevant
+  int index = -1;  // the isolator, story or level where it occurred; -1: none
 };
 
 struct ResponsePeaks {
-  Peak isolator_displacement;  // absent (index -1) without isolation
-  Peak isolator_force;
-  Peak base_shear;                  // force into the ground: grounded connections
-  Peak first_story_shear;           // shear above the isolation layer (buildings)
-  Peak roof_absolute_acceleration;  // top DOF
-  Peak story_drift;                 // largest story drift; index = story (0-based)
-  double story_drift_ratio = 0.0;   // that drift / its story height (0 without heights)
-  // Isolator only (0 without isolation), signed:
-  double residual_isolator_displacement = 0.0;  // the middle of the range over the window
-  double residual_oscillation = 0.0;            // half that range
+  // Per isolator (the layout's order): the peak of |u| and of |f|.
+  std::vector<Peak> isolator_displacements, isolator_forces;
+  // The largest of them (index: the isolator); absent (index -1) without isolators.
+  Peak isolator_displacement, isolator_force;
+  Peak base_shear;                  // the force into the ground
+  Peak first_story_shear;           // the lowest story's (absent without stories)
+  Peak roof_absolute_acceleration;  // the top level's
+  // The largest absolute acceleration of the floors above the isolators (every level of a
+  // structure without stories); index: the level.
+  Peak floor_acceleration;
+  std::vector<Peak> story_drifts;  // per story: its drift at its centre of stiffness
+  Peak story_drift;                // the largest (index: the story)
+  double story_drift_ratio = 0.0;  // that drift / its story's height (0 without a height)
+  // The largest peak drift / height over the stories with a height (not necessarily the largest
+  // drift's story); 0 when no story has a height.
+  double largest_drift_ratio = 0.0;
+  // Rotating levels only (empty, zero otherwise): each level's peak |rotation| (rad), the
+  // largest (index: the level), the base's centre of mass's peak displacement, and the largest
+  // isolator displacement over it (the twist's amplification).
+  std::vector<Peak> level_rotations;
+  Peak level_rotation;
+  Peak base_centre_displacement;
+  double torsional_amplification = 0.0;
+  // Per isolator, the middle of its range over the residual window (signed along x in one
+  // direction, the resultant in plan) and half that range; the headline values are the isolator's
+  // with the largest |residual|, and the largest |u| at the end of the excitation.
+  std::vector<double> isolator_residuals, isolator_oscillations;
+  double residual_isolator_displacement = 0.0;
+  double residual_oscillation = 0.0;
   double isolator_displacement_at_excitation_end = 0.0;
   integrators::Energies energies;  // at the last row seen (zero before any)
   int rows = 0;                    // rows seen
@@ -43,20 +65,33 @@ struct ResponsePeaks {
 
 class PeakTracker final : public integrators::ResponseObserver {
  public:
-  explicit PeakTracker(const AnalysisSetup& setup) : setup_(setup) {}
+  // Every buffer is sized here, for the problem's grid.
+  explicit PeakTracker(const Problem& problem);
   void Observe(const integrators::ResponseRow& row) override;
   // The peaks of the rows seen so far.
   ResponsePeaks Peaks() const;
 
  private:
-  const AnalysisSetup& setup_;
+  // An isolator's deformation (x, y; y = 0 in one direction) and force at a row.
+  hysteresis::Vec2 IsolatorDisplacement(std::size_t isolator,
+                                        const integrators::ResponseRow& row) const;
+  hysteresis::Vec2 IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const;
+  hysteresis::Vec2 StoryDrift(std::size_t story, const integrators::ResponseRow& row) const;
+  hysteresis::Vec2 StoryShear(std::size_t story, const integrators::ResponseRow& row) const;
+
+  const Problem& problem_;
   ResponsePeaks peaks_;
-  // (time, isolator displacement) of the rows within residual_window of the latest one.
-  std::deque<std::pair<double, double>> window_;
+  std::vector<int> floors_;  // the levels whose acceleration is a floor's
+  // Per isolator, a ring of (time, u_x, u_y) over the last residual window.
+  struct Sample {
+    double t, x, y;
+  };
+  std::vector<std::vector<Sample>> window_;
+  std::size_t window_start_ = 0, window_size_ = 0;
+  std::vector<hysteresis::Vec2> at_excitation_end_;
 };
 
 // The peaks of a history's rows (a PeakTracker fed with them).
-ResponsePeaks ComputePeaks(const AnalysisSetup& setup,
-                           const integrators::ResponseHistory& response);
+ResponsePeaks ComputePeaks(const Problem& problem, const integrators::ResponseHistory& response);
 
 }  // namespace isolab::analysis

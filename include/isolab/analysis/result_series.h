@@ -1,17 +1,16 @@
 // The time histories of a run, described once for every results format (HDF5 datasets, CSV
-// columns): each series has a name (its HDF5 path), units, column names (none for a vector) and
-// fills its values for one row of the response. The files' writers (results_file.h,
-// results_writer.h) and the Python module's arrays use it.
+// columns) and every structure (layout.h): each series has a name (its HDF5 path), units, column
+// names (none for a vector) and fills its values for one row of the response. The files' writers
+// (results_file.h, results_writer.h) and the Python module's arrays use it.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/response_peaks.h"
 #include "isolab/integrators/response.h"
-#include "isolab/model/model_file.h"
 #include "isolab/model/output_selection.h"
 
 namespace isolab::analysis {
@@ -30,27 +29,28 @@ struct Series {
 struct NamedPeak {
   const char* name;
   const Peak* peak;
-  Dimension dimension;
+  Dimension dimension;  // kNone for a rotation (rad)
 };
-// The peaks that apply to the run's structure (isolator ones with isolation, story ones for a
-// building), in file order.
-std::vector<NamedPeak> FilePeaks(const AnalysisSetup& setup, const ResponsePeaks& peaks);
+// The peaks that apply to the run's structure (isolator ones with isolators, story ones with
+// stories, rotations with rotating levels), in file order.
+std::vector<NamedPeak> FilePeaks(const Problem& problem, const ResponsePeaks& peaks);
 
-// The selection's levels as DOF indices of `setup` (ascending, no repeats; every DOF when none
-// are selected). Throws InputError({key}, ...) for a level the structure does not have.
-std::vector<int> SelectedDofs(const model::OutputSelection& selection, const AnalysisSetup& setup,
-                              const std::string& key);
+// The selection's levels as indices into the layout's levels (ascending, no repeats; every level
+// when none are selected): 0 is the base (an SDOF's mass) when the structure stands on one, else
+// floor 1; k is floor k; kRoofLevel the top. Throws InputError({key}, ...) for a level the
+// structure does not have.
+std::vector<int> SelectedLevels(const model::OutputSelection& selection,
+                                const structure::Layout& layout, const std::string& key);
 
 // What a selection writes, for the files' description of it: the quantities' names and the
-// selected levels' DOF names (both empty when it is summary-only).
+// selected levels' names (both empty when it is summary-only).
 std::vector<std::string> RecordedQuantities(const model::OutputSelection& selection);
 std::vector<std::string> RecordedLevels(const model::OutputSelection& selection,
-                                        const AnalysisSetup& setup);
+                                        const Problem& problem);
 
-// The series `selection` records of a run of `setup`, in file order (layout in results_file.h);
+// The series `selection` records of a run of `problem`, in file order (layout in results_file.h);
 // none when it is summary-only. Throws InputError({"output.levels"}, ...) for a level the
 // structure does not have.
-std::vector<Series> ResultSeries(const model::ModelFile& model, const AnalysisSetup& setup,
-                                 const model::OutputSelection& selection);
+std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSelection& selection);
 
 }  // namespace isolab::analysis

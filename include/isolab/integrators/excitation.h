@@ -1,6 +1,11 @@
-// What drives a structure: a ground acceleration record (on every degree of freedom, the
-// displacements being relative to the ground) and applied force histories on chosen degrees of
-// freedom. Both are sampled at a fixed step, linear between samples and zero after the last.
+// What drives a structure: ground acceleration components, each moving the dofs its influence
+// vector names (the displacements being relative to the ground), and applied force histories on
+// chosen dofs. Every history is sampled at a fixed step, linear between samples and zero after the
+// last.
+//
+// A one-direction structure has one component on every dof; a plan structure two, along x on each
+// floor's u_x and along y on each floor's u_y (a rigid floor's rotation about its centre of mass
+// takes no load from ground translation).
 #pragma once
 
 #include <Eigen/Core>
@@ -22,13 +27,29 @@ struct AppliedForce {
   SampledHistory force;  // (force)
 };
 
+// A ground acceleration and the dofs it moves.
+struct GroundMotion {
+  SampledHistory acceleration;  // (length/time^2)
+  // r: per dof, the dof's displacement for a unit ground displacement of this component (1 for a
+  // translation along it, 0 otherwise); empty: 1 on every dof.
+  Eigen::VectorXd influence;
+};
+
 struct Excitation {
-  SampledHistory ground_acceleration;  // (length/time^2); empty for none
+  std::vector<GroundMotion> ground;
   std::vector<AppliedForce> forces;
 
+  // One component moving every dof: a one-direction structure's record.
+  static Excitation Uniform(SampledHistory acceleration);
+
   double duration() const;
-  // Effective load p(t) - M 1 a_g(t) for a lumped mass vector; writes into `load`.
+  // Effective load p(t) - M sum_c r_c a_c(t) for a lumped mass vector; writes into `load`.
   void EffectiveLoad(double t, const Eigen::VectorXd& mass, Eigen::VectorXd* load) const;
+  // Adds the ground's acceleration at t to the dofs' relative accelerations: the absolute ones.
+  void AddGroundAcceleration(double t, Eigen::Ref<Eigen::VectorXd> acceleration) const;
+  // The first sample time of any history after t and before `horizon` (or `horizon`): where a
+  // history's linear interpolation has a kink, which an adaptive integrator steps onto.
+  double NextSample(double t, double horizon) const;
 };
 
 }  // namespace isolab::integrators

@@ -11,9 +11,7 @@
 #pragma once
 
 #include "isolab/integrators/excitation.h"
-#include "isolab/integrators/plan_excitation.h"
 #include "isolab/integrators/response.h"
-#include "isolab/structure/plan_structure.h"
 #include "isolab/structure/structure.h"
 
 namespace isolab::integrators {
@@ -33,22 +31,12 @@ struct IdaOptions {
 // Runs from rest over the grid; a failure of IDA (error test or nonlinear solver failing
 // repeatedly, too much work) stops the run with the call, the SUNDIALS flag name and the time,
 // keeping the rows observed so far. RunSummary.steps counts grid steps completed (whole output
-// intervals). The observer sees the state at rest and at every output time.
+// intervals). The observer sees the state at rest and at every output time. Every law needs a rate
+// form (hysteresis::HasRateForm, HasPlanRateForm): the caller checks.
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer);
 // The same, keeping every output row in memory.
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
-                  const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response);
-
-// The same on a structure in plan under two ground-acceleration components: the states are the
-// floors' dofs, their velocities and the plan laws' internal variables (plan_rate_form.h), every
-// phase change of every law (a circular slider's stick and slip on its resultant) an event. The
-// rows carry what RunNewmark's plan overload writes (force_columns() connection forces, an
-// isolator component's x and y law forces). Every law needs a rate form (HasPlanRateForm,
-// HasRateForm): the caller checks.
-RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
-                  const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer);
-RunSummary RunIda(const structure::PlanStructure& structure, const PlanExcitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseHistory* response);
 
 }  // namespace isolab::integrators

@@ -12,9 +12,7 @@
 #pragma once
 
 #include "isolab/integrators/excitation.h"
-#include "isolab/integrators/plan_excitation.h"
 #include "isolab/integrators/response.h"
-#include "isolab/structure/plan_structure.h"
 #include "isolab/structure/structure.h"
 
 namespace isolab::integrators {
@@ -56,12 +54,6 @@ RunSummary RunNewmark(const structure::Structure& structure, const Excitation& e
                       ResponseObserver& observer);
 // The same, keeping every output_every-th step in memory.
 RunSummary RunNewmark(const structure::Structure& structure, const Excitation& excitation,
-                      const TimeGrid& grid, const NewmarkOptions& options,
-                      ResponseHistory* response);
-
-// The same on a structure in plan under two ground-acceleration components. The response's
-// connection_force has force_columns() columns and law_force an isolator component's x and y.
-RunSummary RunNewmark(const structure::PlanStructure& structure, const PlanExcitation& excitation,
                       const TimeGrid& grid, const NewmarkOptions& options,
                       ResponseHistory* response);
 

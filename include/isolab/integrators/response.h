@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/structure/structure.h"
+
 namespace isolab::integrators {
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -37,7 +39,7 @@ struct ResponseRow {
   double time = 0.0;
   std::span<const double> displacement, velocity, acceleration;  // per DOF, relative
   std::span<const double> absolute_acceleration;                 // per DOF
-  std::span<const double> connection_force;                      // per connection
+  std::span<const double> connection_force;  // per force column of the structure's members
   std::span<const double> law_force;                             // per law component
   Energies energies;
 };
@@ -69,7 +71,7 @@ struct ResponseHistory {
   std::vector<double> time;
   RowMatrix displacement, velocity, acceleration;  // relative to the ground
   RowMatrix absolute_acceleration;                 // acceleration + ground acceleration
-  RowMatrix connection_force;                      // each connection's force
+  RowMatrix connection_force;                      // each member force column
   RowMatrix law_force;                             // each law component's force
   std::vector<Energies> energies;
   int rows_written = 0;  // < time.size() when the run stopped early
@@ -91,6 +93,10 @@ class HistoryRecorder final : public ResponseObserver {
  private:
   ResponseHistory& history_;
 };
+
+// A recorder sized for a run of `structure` on `grid`.
+HistoryRecorder RecordHistory(const structure::Structure& structure, const TimeGrid& grid,
+                              ResponseHistory* response);
 
 struct RunSummary {
   enum class Termination { kCompleted, kFailed };

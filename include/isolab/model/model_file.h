@@ -1,5 +1,6 @@
-// Model files (YAML). Every number is in the declared units; any quantity may also be a string
-// with its own unit ("0.2 kN/mm", "250 t"). Sections:
+// Model files (YAML): one description for every kind of model isolab analyses. Every number is in
+// the declared units; any quantity may also be a string with its own unit ("0.2 kN/mm", "250 t").
+// Sections:
 //
 //   description: free text
 //   units: {force: kN, length: mm, time: s}          # required
@@ -7,12 +8,16 @@
 //     components:                                    # a parallel assembly, one entry per law
 //       - {name: c1, type: thm1, k0: 1.0, k1: 0.2, k2: 0.45, uy: 20, uyh: 120}
 //       - {name: c2, type: thm2, ke: "1 kN/mm", kh1: 0.2, kh2: 0.05, fs: 16, uc: 120}
-//   structure:                                       # for `isolab run`
+//   structure:                                       # one direction (structure_section.cpp)
 //     type: sdof                                     # mass, damping: {ratio | coefficient}
-//     type: shear_building                           # stories (list or uniform), base_mass,
+//     type: shear_building                           # stories (list, uniform, or none: a slab
+//                                                    # on its isolators), base_mass,
 //                                                    # damping: {type: rayleigh|modal|none, ...}
+//   plan:                                            # or a building in plan (plan_section.cpp):
+//     footprint, base, stories, damping, isolators   # floors in plan, isolators at positions
 //   excitation:
-//     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}
+//     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}      # one component, or
+//     ground_motion: {h1: {file: ...}, h2: {file: ...}, angle: 0}         # a pair (plan models)
 //     forces: [{dof: 0, dt: 0.1, values: [...]}]
 //   analysis: {dt: 0.005, duration: 30, integrator: newmark,   # or ida
 //              free_vibration: auto,                         # or a time, 0 for none
@@ -22,37 +27,44 @@
 //                                                    # what is recorded: output_selection.h
 //   cyclic: {amplitude: 200, period: 1, cycles: 2, steps_per_cycle: 400}  # for `isolab cyclic`
 //
-// Every error is an InputError "file:line:col: key path: what (what was allowed)".
+// A model with `structure` or `plan` can be run in time (build_structure.h lays it out); a model
+// with only `isolation` is a bearing, for `cyclic` and `fit`. Every error is an InputError
+// "file:line:col: key path: what (what was allowed)".
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "isolab/core/errors.h"
 #include "isolab/core/units.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/model/output_selection.h"
+#include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 
 namespace isolab::model {
 
 struct StructureSection {
-  enum class Kind { kSdof, kShearBuilding };
+  enum class Kind { kSdof, kShearBuilding, kPlanBuilding };
   Kind kind = Kind::kSdof;
   double mass = 0.0;                    // SDOF
   std::optional<double> damping_ratio;  // SDOF, on the initial stiffness
   double damping_coefficient = 0.0;     // SDOF, when no ratio is given
-  structure::ShearBuilding building;    // shear building (isolation filled in if present)
+  structure::ShearBuilding building;    // shear building (its isolation is the model's)
+  structure::PlanBuilding plan;         // building in plan, with its isolators
 };
 
 struct GroundMotionSection {
   std::string file;   // resolved against the model file's folder
   std::string units;  // empty: from the record's header
   double scale = 1.0;
-  double dt = 0.0;  // single-column records only
+  double dt = 0.0;          // single-column records only
+  std::string key;          // "excitation.ground_motion" (.h1, .h2), for messages about it
+  SourceLocation location;  // where it is given
 };
 
 struct ForceSection {
@@ -62,14 +74,16 @@ struct ForceSection {
 };
 
 struct ExcitationSection {
-  std::optional<GroundMotionSection> ground_motion;
+  // The record's horizontal components: H1, and H2 at angle + 90 degrees when there is a pair.
+  std::vector<GroundMotionSection> ground_motion;
+  double angle = 0.0;  // degrees from the x axis to H1
   std::vector<ForceSection> forces;
 };
 
 // How long the structure vibrates freely after the excitation ends, so that the residual
 // displacement is read where the structure comes to rest, not while it still swings.
 struct FreeVibration {
-  bool automatic = true;  // five times the structure's longest period (analysis_setup.h)
+  bool automatic = true;  // five times the structure's longest period (problem.h)
   double duration = 0.0;  // (time) when not automatic; 0: none
 };
 
@@ -90,7 +104,9 @@ struct ModelFile {
   std::string text;  // the YAML as read, stored with results
   std::string description;
   UnitSystem units{"kN", "mm", "s"};
-  hysteresis::ParallelAssembly isolation;  // empty when the file has no isolation section
+  // A one-direction model's isolation layer (or an SDOF's spring); empty when it has none, and in
+  // a plan model, whose isolators carry their own laws.
+  hysteresis::ParallelAssembly isolation;
   std::optional<StructureSection> structure;
   ExcitationSection excitation;
   AnalysisSection analysis;
@@ -106,5 +122,15 @@ ModelFile LoadModelFile(const std::string& path);
 // The same from a model's text (a model built in memory, e.g. from Python): `path` names it in
 // messages, and files it names relative to themselves are found beside `path`.
 ModelFile LoadModelText(const std::string& text, const std::string& path);
+
+// The index of the first of `laws` without a coupled bidirectional form; laws.size() if none.
+std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws);
+// "degrading_bhm2 has no coupled bidirectional form", of laws[c].
+std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t c);
+
+// The model with `laws` as its isolation (a study's isolation variant): a one-direction model's
+// isolation layer, or every isolator of a plan model as a coupled law. Throws
+// std::invalid_argument (NoCoupledForm) for a plan model and a law without a coupled form.
+void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws);
 
 }  // namespace isolab::model

@@ -25,21 +25,20 @@
 //                                                   # default: each model's analysis section
 //
 // The building's analysis section (dt, duration, integrator) applies to every run; a `model`
-// variant brings its own. Every error is an InputError "file:line:col: key path: what (allowed)".
-//
-// Plan studies (issue #15): when the building is a plan model (plan_model_file.h), every variant
-// is one too -- the building itself ({name}), the building with every isolator on the variant's
-// `isolation` laws as coupled laws ({name, isolation}, in the building's units), or another plan
-// model ({name, model}); `fixed_base` is a one-direction variant's and a one-direction model
-// among plan ones is refused. Their records are pairs, written as a plan model's
-// excitation.ground_motion is:
+// variant brings its own. The building may be any model with a structure (one direction or in
+// plan); every variant's structure moves in the building's directions (a study's records and
+// quantities are the same for all). An `isolation` variant of a building in plan puts every
+// isolator on those laws, as coupled laws. A record entry may also be a pair, for buildings in
+// plan, written as a model's excitation.ground_motion is:
 //   records:
 //     - {h1: {file: a_h1.at2, scale: 1.0}, h2: {file: a_h2.at2}, angle: 30, name: a_at30}
 // (units, dt and scale per component as there; angle in degrees from x to H1, default 0; name
 // default: h1's file stem). Both files are read when the study loads: a pair whose steps or
-// lengths differ is refused then, as is a single record in a plan study or a pair in a
-// one-direction one. Each run is what `isolab run` does on the variant's plan model with the
-// pair in its excitation, each component's scale times the study's.
+// lengths differ is refused then, as is a pair in a study of a building in one direction. Each run
+// is what `isolab run` does on the variant's model with the record in its excitation, each
+// component's scale times the study's.
+//
+// Every error is an InputError "file:line:col: key path: what (allowed)".
 #pragma once
 
 #include <cstddef>
@@ -49,7 +48,6 @@
 
 #include "isolab/core/units.h"
 #include "isolab/model/model_file.h"
-#include "isolab/model/plan_model_file.h"
 
 namespace isolab::model {
 
@@ -57,26 +55,25 @@ struct StudyVariant {
   std::string name;
   ModelFile model;  // what runs: the building with this variant's isolation, or its own model
   bool fixed_base = false;
-  std::optional<PlanModelFile> plan;  // a plan study's variant (then `model` is empty)
 };
 
 struct StudyRecord {
-  std::string name;    // the file's stem, unique within a study
-  std::string path;    // as found (relative to the working directory or absolute)
-  std::string units;   // given by its entry; empty: from the file's header
-  double dt = 0.0;     // (the building's time unit) given by its entry; 0: from the file
-  double scale = 1.0;  // multiplies the study's scales
-  std::string entry;   // "study.yaml:12:5: records[2]", for messages about what it gives
-  // A plan study's pair (files resolved like `path`, dt in the study's time unit); `path` is H1's.
-  std::optional<PlanGroundMotion> pair;
+  std::string name;   // the file's stem (a pair's name), unique within a study
+  std::string entry;  // "study.yaml:12:5: records[2]", for messages about what it gives
+  // H1 (and H2): files as found (relative to the working directory or absolute), units given by
+  // the entry (empty: from the file's header), dt in the building's time unit (0: from the file),
+  // scale multiplying the study's scales.
+  std::vector<GroundMotionSection> components;
+  double angle = 0.0;  // degrees from x to H1
 };
 
 struct StudyFile {
   std::string path;
   std::string description;
   std::string building_path;
-  bool plan = false;                  // the building and every variant are plan models
   UnitSystem units{"kN", "mm", "s"};  // the building's: summary quantities are in these
+  int directions = 1;    // horizontal directions of the building's structure: 1, or 2 in plan
+  bool rotations = false;  // its levels rotate (a building in plan)
   std::vector<StudyVariant> variants;
   std::size_t reference = 0;  // index into variants
   std::vector<StudyRecord> records;

@@ -1,10 +1,11 @@
-// A base-isolated shear building in plan (issue #15): rigid floors, each with its mass, rotational
+// A base-isolated shear building in plan: rigid floors, each with its mass, rotational
 // inertia about its centre of mass and the centre of mass's plan position; stories that resist
 // along x, along y and in torsion at their centre of stiffness (the description an engineer
 // gives for a story: its lateral stiffnesses, where they act, and its torsional stiffness about
 // that point; any one-direction laws); isolators at plan positions under the base floor, each
-// with its plan laws. Plan coordinates are global; the building is built as a PlanStructure
-// whose floor 0 is the base and floor s + 1 the floor above story s.
+// with its plan laws. Plan coordinates are global; the building is built as a Structure
+// (structure.h) whose floor 0 is the base and floor s + 1 the floor above story s, floor f's
+// dofs (u_x, u_y, theta about its centre of mass) at 3 f, 3 f + 1, 3 f + 2.
 #pragma once
 
 #include <string>
@@ -12,9 +13,12 @@
 
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/hysteresis/plan_assembly.h"
-#include "isolab/structure/plan_structure.h"
+#include "isolab/structure/layout.h"
+#include "isolab/structure/structure.h"
 
 namespace isolab::structure {
+
+inline constexpr int kPlanDofsPerFloor = 3;
 
 struct PlanFloor {
   double mass = 0.0;                // (mass)
@@ -53,9 +57,12 @@ struct PlanBuilding {
   PlanDamping damping;
 };
 
-// Story s gives members 3 s, 3 s + 1, 3 s + 2, named "<story>.x", ".y", ".torsion". Throws
-// std::invalid_argument naming the field at fault (no isolators, a mass or inertia <= 0, Rayleigh
-// periods equal or ratios giving a negative coefficient).
-PlanStructure BuildPlanBuilding(const PlanBuilding& building);
+// The structure and its layout: levels "base" and "floor 1" to "floor N" (their x, y and rotation
+// dofs), story s's members 3 s, 3 s + 1, 3 s + 2, named "<story>.x", ".y", ".torsion", the
+// isolators as coupled members under the base. `fixed_base`: the superstructure alone, the base
+// held (no isolators, no base dofs). Throws std::invalid_argument naming the field at fault (no
+// isolators, a mass or inertia <= 0, Rayleigh periods equal or ratios giving a negative
+// coefficient).
+LaidOutStructure BuildPlanBuilding(const PlanBuilding& building, bool fixed_base = false);
 
 }  // namespace isolab::structure

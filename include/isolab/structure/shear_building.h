@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "isolab/structure/layout.h"
 #include "isolab/structure/structure.h"
 
 namespace isolab::structure {
@@ -52,10 +53,14 @@ struct Modes {
 
 Modes FixedBaseModes(const std::vector<Story>& stories);
 
-// Throws std::invalid_argument with the field at fault when the description is inconsistent.
-Structure BuildShearBuilding(const ShearBuilding& building);
-Structure BuildSdof(double mass, double damping_coefficient,
-                    hysteresis::ParallelAssembly restoring);
+// The structure and its layout: levels "base" (isolated) and "floor 1" to "floor N", the stories
+// (their members: x only), the isolation layer as the one isolator "isolation"; an SDOF is one
+// level "mass" on its spring "restoring", which counts as its isolator. An isolated building may
+// have no story (a rigid slab on its isolators). Throws std::invalid_argument with the field at
+// fault when the description is inconsistent.
+LaidOutStructure BuildShearBuilding(const ShearBuilding& building);
+LaidOutStructure BuildSdof(double mass, double damping_coefficient,
+                           hysteresis::ParallelAssembly restoring);
 
 // Initial stiffness of an assembly: its tangent at rest.
 double InitialStiffness(const hysteresis::ParallelAssembly& assembly);

@@ -1,38 +1,76 @@
 // A structure for time-history analysis: lumped masses on degrees of freedom (displacements
-// relative to the ground), connections between them or to the ground that each carry a parallel
-// assembly of element laws, and a constant viscous damping matrix. SDOF systems and shear
-// buildings (shear_building.h) are both built as this.
+// relative to the ground; a translation or a rotation each), members that act between them, and
+// a constant viscous damping matrix. Every model isolab analyses is built as this: an SDOF, a
+// shear building in one direction (one translation per level, shear_building.h) and a building in
+// plan (two translations and a rotation per rigid floor, plan_building.h).
+//
+// A member acts on the dofs through a small influence row, as an element of OpenSees' ndf-generic
+// domain does:
+//  * Member: a one-direction law (parallel_assembly.h) on the deformation d = sum_k c_k u[dof_k];
+//    its force f acts as c_k f on dof_k, and its stiffness k adds c_a k c_b to the tangent. A story
+//    of a shear building is d = u_above - u_below; a story of a plan building along x at a plan
+//    point adds the floors' rotations times the point's arms.
+//  * CoupledMember: a bidirectional law (plan_assembly.h) on the deformation vector
+//    u = sum_k t_k q[dof_k] (t_k a 2-vector); its force vector f acts as t_k . f on dof_k, its 2x2
+//    stiffness K adds t_a . K t_b. An isolator under a rigid floor at `arm` from the floor's
+//    reference point has t = (1, 0), (0, 1), (-arm.y, arm.x) on the floor's (u_x, u_y, theta).
 //
 // The integrator sees only Evaluate(): resisting force and its tangent at a trial state (MFEM's
 // seam between problem and integrator), with ConstantTangent() for the tangent's terms that never
 // change within a step size; the structure never sees the integrator.
+//
+// Law states live in one LawState array: a member's components one each, a coupled member's two
+// each (x then y: PlanLawState's halves), members first. Force columns (a response row's
+// connection forces) are one per member, then two per coupled member (x, y).
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/hysteresis/plan_assembly.h"
 
 namespace isolab::structure {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using hysteresis::Vec2;
 
 inline constexpr int kGround = -1;
+// The most dofs a member's influence row may name: the three of a rigid floor below and above.
+inline constexpr int kMaxTerms = 6;
 
 // Position of (row, col) in a compressed column-major matrix's value array, so an assembly can
 // write its entries through precomputed slots; throws std::logic_error if the entry is absent.
 int SlotOf(const SparseMatrix& matrix, int row, int col);
 
-// A connection's deformation is u[dof_j] - u[dof_i] (u[kGround] = 0); its force acts +on dof_j.
-struct Connection {
+// A one-direction law on d = sum_k coefficients[k] u[dofs[k]]; terms on kGround are absent.
+struct Member {
   std::string name;
-  int dof_i = kGround;
-  int dof_j = 0;
+  std::array<int, kMaxTerms> dofs{kGround, kGround, kGround, kGround, kGround, kGround};
+  std::array<double, kMaxTerms> coefficients{};
   hysteresis::ParallelAssembly assembly;
+
+  // d = u[dof_j] - u[dof_i] (dof_i may be kGround): a spring between two dofs, or to the ground.
+  static Member Between(std::string name, int dof_i, int dof_j,
+                        hysteresis::ParallelAssembly assembly);
+};
+
+// A bidirectional law on u = sum_k columns[k] q[dofs[k]]; terms on kGround are absent.
+struct CoupledMember {
+  std::string name;
+  std::array<int, kMaxTerms> dofs{kGround, kGround, kGround, kGround, kGround, kGround};
+  std::array<Vec2, kMaxTerms> columns{};
+  hysteresis::PlanAssembly assembly;
+
+  // Between the ground and the rigid floor whose dofs (u_x, u_y, theta) start at `first_dof`, at
+  // `arm` from the floor's reference point: u = (u_x - arm.y theta, u_y + arm.x theta).
+  static CoupledMember UnderFloor(std::string name, int first_dof, Vec2 arm,
+                                  hysteresis::PlanAssembly assembly);
 };
 
 // Coefficients of the effective tangent  K_t + damping (C_t + C) + mass M.
@@ -42,8 +80,7 @@ struct TangentFactors {
 };
 
 // The mass and viscous damping terms of the effective tangent, written through slots precomputed
-// in a fixed tangent pattern: factors.mass M on the diagonal and factors.damping C. Structure and
-// PlanStructure (plan_structure.h) share it.
+// in a fixed tangent pattern: factors.mass M on the diagonal and factors.damping C.
 class ConstantTerms {
  public:
   // The pattern entries the terms need: the diagonal and every stored entry of `damping`.
@@ -65,41 +102,58 @@ class ConstantTerms {
 
 class Structure {
  public:
-  // `viscous_damping` is dofs x dofs (may be empty of entries).
-  Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
-            SparseMatrix viscous_damping);
+  // `mass` per dof (a rotation's: its rotational inertia), each > 0; `viscous_damping` is
+  // dofs x dofs (may be empty of entries). Throws std::invalid_argument for a mass <= 0 and for
+  // a member on dofs that do not exist or on none.
+  Structure(Eigen::VectorXd mass, std::vector<Member> members,
+            std::vector<CoupledMember> coupled_members, SparseMatrix viscous_damping);
 
   int dofs() const { return static_cast<int>(mass_.size()); }
   const Eigen::VectorXd& mass() const { return mass_; }
-  const std::vector<Connection>& connections() const { return connections_; }
+  const std::vector<Member>& members() const { return members_; }
+  const std::vector<CoupledMember>& coupled_members() const { return coupled_; }
   const SparseMatrix& viscous_damping() const { return viscous_damping_; }
 
-  // Law states are stored connection after connection; component c of connection k sits at
-  // law_offset(k) + c.
+  // Law states: member k's component c at law_offset(k) + c; coupled member i's component c at
+  // coupled_law_offset(i) + 2 c (x) and + 2 c + 1 (y).
   std::size_t law_count() const { return law_offsets_.back(); }
-  std::size_t law_offset(std::size_t connection) const { return law_offsets_[connection]; }
+  std::size_t law_offset(std::size_t member) const { return law_offsets_[member]; }
+  std::size_t coupled_law_offset(std::size_t coupled) const {
+    return law_offsets_[members_.size() + coupled];
+  }
 
-  // The effective tangent's sparsity: mass diagonal, connections, viscous damping. Fixed for the
+  // Force columns Evaluate writes: one per member, then two per coupled member (x, y).
+  std::size_t force_columns() const { return members_.size() + 2 * coupled_.size(); }
+  std::size_t coupled_force_column(std::size_t coupled) const {
+    return members_.size() + 2 * coupled;
+  }
+
+  // The effective tangent's sparsity: mass diagonal, members, viscous damping. Fixed for the
   // structure's life, so a solver analyses it once.
   const SparseMatrix& tangent_pattern() const { return pattern_; }
 
   // The terms of the effective tangent with `factors` that do not depend on the state, into
   // `tangent`'s values (its pattern tangent_pattern()): the mass, the viscous damping and every
-  // connection whose laws all have a constant tangent (linear springs, dashpots: a building's
-  // elastic stories). An integrator writes them once per step size and starts every Evaluate's
-  // tangent from a copy.
+  // member whose laws all have a constant tangent (linear springs, dashpots: a building's elastic
+  // stories). An integrator writes them once per step size and starts every Evaluate's tangent
+  // from a copy.
   void ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const;
 
   // Updates every law at trial (u, v) at time t from `committed`, writes `trial` states and
-  // `responses` (law_count() each), the resisting force (connections plus C v) into `force`, each
-  // connection's force into `connection_forces`, and, when `tangent` is not null, adds the terms
-  // of the effective tangent with `factors` that depend on the state to its values, which must
-  // hold ConstantTangent(factors). Allocates nothing.
+  // `responses` (law_count() each; a coupled component's x and y force with the diagonal of its
+  // tangent and damping), the resisting force (members plus C v) into `force`, each force column
+  // into `member_forces` (force_columns()), and, when `tangent` is not null, adds the terms of the
+  // effective tangent with `factors` that depend on the state to its values, which must hold
+  // ConstantTangent(factors). Allocates nothing.
   void Evaluate(std::span<const hysteresis::LawState> committed, double t, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
                 std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
-                std::span<double> connection_forces, const TangentFactors& factors,
+                std::span<double> member_forces, const TangentFactors& factors,
                 SparseMatrix* tangent) const;
+
+  // A member's deformation, and a coupled member's deformation vector, at dofs u.
+  double MemberDeformation(std::size_t member, std::span<const double> u) const;
+  Vec2 CoupledDeformation(std::size_t coupled, std::span<const double> u) const;
 
   // Recoverable energy of all laws, and dissipated energy split into viscous (dashpots) and
   // hysteretic (sliders).
@@ -108,23 +162,53 @@ class Structure {
   double HystereticEnergy(std::span<const hysteresis::LawState> states) const;
 
  private:
-  // Positions in the tangent's value array of the entries a connection touches (-1 if none).
-  struct ConnectionSlots {
+  // A member's terms packed for the hot loop: the dofs that exist, with the tangent slots of
+  // their pairs (row-major count x count). A spring between two dofs or to the ground (the
+  // members of a one-direction building) takes a shorter path through `between`.
+  struct Terms {
+    int count = 0;
+    std::array<int, kMaxTerms> dofs{};
+    std::array<double, kMaxTerms> coefficients{};
+    std::array<int, kMaxTerms * kMaxTerms> slots{};
+  };
+  struct Between {
+    std::size_t member = 0;
+    int dof_i = kGround, dof_j = 0;
     int ii = -1, jj = -1, ij = -1, ji = -1;
   };
+  struct CoupledTerms {
+    int count = 0;
+    std::array<int, kMaxTerms> dofs{};
+    std::array<Vec2, kMaxTerms> columns{};
+    std::array<int, kMaxTerms * kMaxTerms> slots{};
+  };
 
-  void AddConnectionTangent(std::size_t connection, double k_eff, double* values) const;
+  void AddMemberTangent(std::size_t member, double k_eff, double* values) const;
+  void AddBetweenTangent(const Between& spring, double k_eff, double* values) const;
+  void AddCoupledTangent(std::size_t coupled, const hysteresis::Mat2& k_eff,
+                         double* values) const;
+  void EvaluateMember(std::size_t k, std::span<const hysteresis::LawState> committed,
+                      const hysteresis::LawInput& in, std::span<hysteresis::LawState> trial,
+                      std::span<hysteresis::LawResponse> responses,
+                      std::span<double> member_forces, double damping_factor,
+                      double* values) const;
 
   Eigen::VectorXd mass_;
-  std::vector<Connection> connections_;
+  std::vector<Member> members_;
+  std::vector<CoupledMember> coupled_;
   SparseMatrix viscous_damping_;
-  std::vector<std::size_t> law_offsets_;
-  std::vector<char> law_is_dashpot_;
+  std::vector<std::size_t> law_offsets_;         // members, then coupled members, then the end
+  std::vector<std::size_t> viscous_law_states_;  // the law states of dashpots (and their halves)
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
-  std::vector<ConnectionSlots> connection_slots_;
-  // Per connection: its laws' stiffness and damping if they do not depend on the state.
-  std::vector<std::optional<hysteresis::AssemblyResponse>> constant_responses_;
+  std::vector<Terms> member_terms_;
+  std::vector<Between> between_;        // the members that are springs between two dofs
+  std::vector<std::size_t> general_;    // the others
+  std::vector<CoupledTerms> coupled_terms_;
+  // Per member and coupled member: its laws' stiffness and damping if they do not depend on the
+  // state.
+  std::vector<std::optional<hysteresis::AssemblyResponse>> member_constants_;
+  std::vector<std::optional<hysteresis::PlanResponse>> coupled_constants_;
 };
 
 }  // namespace isolab::structure

@@ -1,21 +1,20 @@
-// The response quantities a study compares, measured from one run:
-//   isolator_displacement           peak |u| of the isolation layer (length)
+// The response quantities a study compares, measured from one run's peaks (response_peaks.h), the
+// same for every structure (a quantity with two horizontal components, in plan, as its
+// resultant):
+//   isolator_displacement           peak |u| of the worst isolator (length)
 //   base_shear                      peak |force into the ground| (force)
 //   story_drift_ratio               peak |drift| / height over every story with a height (%)
 //   floor_acceleration              peak |absolute acceleration| over the floors above the
-//                                   isolation (every DOF of a model without stories) (g)
-//   residual_isolator_displacement  |u| of the isolation layer where it comes to rest after the
-//                                   free vibration that follows the record (response_peaks.h)
-//                                   (length)
-// A plan study's runs (plan_analysis.h, as `isolab run` reports them on a plan model):
-//   resultant_isolator_displacement  peak resultant |(u_x, u_y)| of the worst isolator (length)
-//   resultant_base_shear             peak resultant of the isolators' summed force (force)
-//   floor_rotation                   peak |rotation| of the floor that twists most (rad)
-//   torsional_amplification          the worst isolator's peak resultant over that of the base's
-//                                    centre of mass (1)
+//                                   isolation (every level of a model without stories) (g)
+//   residual_isolator_displacement  |u| of the isolator that comes to rest farthest from zero
+//                                   after the free vibration that follows the record (length)
+// Buildings in plan also:
+//   floor_rotation                  peak |rotation| of the level that twists most (rad)
+//   torsional_amplification         the worst isolator's peak displacement over that of the
+//                                   base's centre of mass (1)
 // Lengths and forces are in the study's units (its building's), whatever the variant's model
 // uses. A quantity a variant does not have (a fixed base has no isolator) is NaN; a study shows
-// the quantities of its kind (StudyQuantities).
+// the quantities of its building (StudyQuantities).
 #pragma once
 
 #include <array>
@@ -25,8 +24,7 @@
 #include <string_view>
 #include <vector>
 
-#include "isolab/analysis/analysis_setup.h"
-#include "isolab/analysis/plan_analysis.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/response_peaks.h"
 #include "isolab/core/units.h"
 #include "isolab/integrators/response.h"
@@ -39,12 +37,10 @@ enum class Quantity {
   kStoryDriftRatio,
   kFloorAcceleration,
   kResidualIsolatorDisplacement,
-  kResultantIsolatorDisplacement,
-  kResultantBaseShear,
   kFloorRotation,
   kTorsionalAmplification,
 };
-inline constexpr std::size_t kQuantityCount = 9;
+inline constexpr std::size_t kQuantityCount = 7;
 
 using QuantityValues = std::array<double, kQuantityCount>;
 
@@ -58,8 +54,9 @@ struct QuantityInfo {
 std::span<const QuantityInfo> Quantities();
 const QuantityInfo& InfoOf(Quantity quantity);
 
-// The quantities a study's summary shows: a one-direction study's five, or a plan study's four.
-std::vector<Quantity> StudyQuantities(bool plan);
+// The quantities a study's summary shows: five, and the two of rotating levels when its building
+// is in plan.
+std::vector<Quantity> StudyQuantities(bool rotations);
 
 // "mm", "kN", "%", "g": the unit quantity values are in, for a study in `units`.
 std::string QuantityUnit(Quantity quantity, const UnitSystem& units);
@@ -67,15 +64,9 @@ std::string QuantityUnit(Quantity quantity, const UnitSystem& units);
 // All NaN: nothing measured.
 QuantityValues NoValues();
 
-// `model_units` are the run's model's, `study_units` the study's; `peaks` are the run's
-// (analysis::ComputePeaks).
-QuantityValues MeasureQuantities(const analysis::AnalysisSetup& setup,
-                                 const integrators::ResponseHistory& response,
+// `model_units` are the run's model's, `study_units` the study's.
+QuantityValues MeasureQuantities(const analysis::Problem& problem,
                                  const analysis::ResponsePeaks& peaks,
                                  const UnitSystem& model_units, const UnitSystem& study_units);
-
-// A plan run's quantities from its peaks (analysis::ComputePlanPeaks), the others NaN.
-QuantityValues MeasurePlanQuantities(const analysis::PlanPeaks& peaks,
-                                     const UnitSystem& model_units, const UnitSystem& study_units);
 
 }  // namespace isolab::study

@@ -20,7 +20,7 @@ struct StudyShape {
   std::vector<double> scales;
   std::size_t reference = 0;
   std::vector<std::string> units;  // per quantity, QuantityUnit
-  // The quantities summaries show, in order: a one-direction study's unless a plan study's.
+  // The quantities summaries show, in order (StudyQuantities).
   std::vector<Quantity> quantities = StudyQuantities(false);
 };
 

@@ -7,7 +7,7 @@
 //   message,file,record_units,pga_g,warnings
 // (record_units: the units the record was read in; pga_g: the scaled record's PGA in g;
 // warnings: implausible values, "; "-separated; all three empty on mean and max rows). The
-// quantities are the study's (StudyShape::quantities): a plan study has its four instead.
+// quantities are the study's (StudyShape::quantities): a building in plan's have two more.
 // Values are written exactly (shortest decimal that reads back as the same double); a missing
 // value is an empty field.
 //

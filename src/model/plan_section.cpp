@@ -1,13 +1,28 @@
-// Plan model files (plan_model_file.h): the `plan` section (footprint, floors, stories,
-// isolators, damping) and the two-component ground motion; units, analysis and output as in
-// one-direction models.
-#include "isolab/model/plan_model_file.h"
-
+// plan: a building in plan. Plan coordinates (x, y) are in the model's length unit, from any
+// origin; the footprint is the rectangle every centre and isolator must lie in.
+//
+//   plan:
+//     footprint: [[0, 0], [20, 12]]              # two opposite corners
+//     base: {mass: 100 t, centre_of_mass: [10, 6], radius_of_gyration: 6.7}
+//     stories:                                    # bottom to top; or {count: 5, ...} for equal
+//       - name: s1                                # stories (default: story1, story2, ...); none
+//         mass: 100 t                             # or [] for a slab on its isolators
+//         centre_of_mass: [10.3, 6]               # default: the footprint's centre
+//         rotational_inertia: 4000 t*m^2          # or radius_of_gyration; default: a uniform
+//                                                 # slab over the footprint, m (a^2 + b^2) / 12
+//         height: 3                               # for reporting
+//         centre_of_stiffness: [10, 6]            # default: the footprint's centre
+//         stiffness: {x: 120 kN/mm, y: 120 kN/mm, torsion: 4.3e9 kN*mm}  # linear, or
+//         x: [components], y: [...], torsion: ... # any laws along x and y, a linear torsion
+//     damping: {type: rayleigh, periods: [0.6, 0.1], ratios: [0.05, 0.05]}   # or none (default)
+//     isolators:
+//       - name: sw
+//         position: [0, 0]
+//         coupling: coupled                       # or uncoupled: each law along x and along y
+//         components: [{type: bhm2, k0: 2, k1: 0.25, uy: 20}]
 #include <fmt/format.h>
 
-#include <cctype>
 #include <cmath>
-#include <fstream>
 #include <string_view>
 
 #include "model_sections.h"
@@ -143,8 +158,7 @@ std::vector<structure::PlanStory> ReadStories(const YamlReader& reader, const YA
                                               const Footprint& footprint, const UnitSystem& units) {
   const std::string path = "plan.stories";
   std::vector<structure::PlanStory> stories;
-  if (node.IsSequence()) {
-    if (node.size() == 0) reader.Fail(node, path, "the list is empty; give at least one story");
+  if (node.IsSequence()) {  // empty: a slab on its isolators
     for (std::size_t i = 0; i < node.size(); ++i) {
       stories.push_back(ReadStory(reader, node[i], IndexPath(path, i), i, footprint, units));
     }
@@ -179,21 +193,9 @@ hysteresis::PlanAssembly IsolatorAssembly(const hysteresis::ParallelAssembly& la
   return hysteresis::PlanAssembly(std::move(components));
 }
 
-// `along_x` with the isolator `site`'s laws added, named "<site>.<law>".
-hysteresis::ParallelAssembly AlongX(const hysteresis::ParallelAssembly& along_x,
-                                    const std::string& site,
-                                    const hysteresis::ParallelAssembly& laws) {
-  std::vector<hysteresis::Component> pushed = along_x.components();
-  for (const hysteresis::Component& law : laws.components()) {
-    pushed.push_back({site + "." + law.name, law.parameters});
-  }
-  return hysteresis::ParallelAssembly(std::move(pushed));
-}
-
 structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::Node& node,
                                          const std::string& path, std::size_t index,
-                                         const Footprint& footprint, const UnitSystem& units,
-                                         hysteresis::ParallelAssembly* along_x) {
+                                         const Footprint& footprint, const UnitSystem& units) {
   reader.RequireMap(node, path);
   reader.CheckKeys(node, path, {"name", "position", "coupling", "components"});
   structure::PlanIsolatorSite site;
@@ -221,17 +223,17 @@ structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::N
                             NoCoupledForm(laws, c)));
   }
   site.assembly = IsolatorAssembly(laws, uncoupled);
-  *along_x = AlongX(*along_x, site.name, laws);
   return site;
 }
 
 structure::PlanDamping ReadDamping(const YamlReader& reader, const YAML::Node& node,
                                    const UnitSystem& units) {
   const std::string path = "plan.damping";
+  structure::PlanDamping damping;
+  if (node.IsScalar() && node.Scalar() == "none") return damping;
   reader.RequireMap(node, path);
   const YAML::Node type_node = reader.Require(node, path, "type");
   const std::string type = reader.ReadString(type_node, ChildPath(path, "type"));
-  structure::PlanDamping damping;
   if (type == "none") {
     reader.CheckKeys(node, path, {"type"});
     return damping;
@@ -260,30 +262,6 @@ structure::PlanDamping ReadDamping(const YamlReader& reader, const YAML::Node& n
   return damping;
 }
 
-PlanGroundMotion ReadPlanGroundMotion(const YamlReader& reader, const YAML::Node& excitation,
-                                      const UnitSystem& units) {
-  reader.RequireMap(excitation, "excitation");
-  reader.CheckKeys(excitation, "excitation", {"ground_motion"});
-  const std::string path = "excitation.ground_motion";
-  const YAML::Node node = reader.Require(excitation, "excitation", "ground_motion");
-  reader.RequireMap(node, path);
-  if (node["file"]) {
-    reader.Fail(node, path,
-                "a plan model takes its components as h1 and h2 ({file, units, scale, dt} "
-                "each), with the angle of h1 from the x axis");
-  }
-  reader.CheckKeys(node, path, {"h1", "h2", "angle"});
-  PlanGroundMotion motion;
-  motion.h1 =
-      ReadGroundMotion(reader, reader.Require(node, path, "h1"), ChildPath(path, "h1"), units);
-  if (node["h2"]) {
-    motion.h2 = ReadGroundMotion(reader, node["h2"], ChildPath(path, "h2"), units);
-    motion.h2_location = reader.Locate(node["h2"]);
-  }
-  if (node["angle"]) motion.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
-  return motion;
-}
-
 }  // namespace
 
 std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws) {
@@ -298,98 +276,52 @@ std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t 
                      hysteresis::LawName(laws.components()[c].parameters.type()));
 }
 
-void ReplaceIsolation(PlanModelFile* model, const hysteresis::ParallelAssembly& laws) {
+void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws) {
+  if (!model->structure || model->structure->kind != StructureSection::Kind::kPlanBuilding) {
+    model->isolation = laws;
+    return;
+  }
   if (FirstWithoutCoupledForm(laws) < laws.size()) {
     throw std::invalid_argument(NoCoupledForm(laws, FirstWithoutCoupledForm(laws)));
   }
-  hysteresis::ParallelAssembly along_x;
-  for (structure::PlanIsolatorSite& site : model->building.isolators) {
+  for (structure::PlanIsolatorSite& site : model->structure->plan.isolators) {
     site.assembly = IsolatorAssembly(laws, false);
-    along_x = AlongX(along_x, site.name, laws);
   }
-  model->isolation_along_x = std::move(along_x);
 }
 
-bool IsPlanModelFile(const std::string& path) {
-  std::ifstream in(path);
-  // A block mapping's top-level keys start their lines; anything indented, a comment or a
-  // document marker is not one. Parsing the whole file here would read every model twice (it
-  // was 15 % of a one-step run's instructions), so only a flow mapping at the top is parsed.
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || std::isspace(static_cast<unsigned char>(line[0])) || line[0] == '#' ||
-        line[0] == '%' || line.starts_with("---")) {
-      continue;
-    }
-    if (line[0] == '{') {
-      try {
-        const YAML::Node root = YAML::LoadFile(path);
-        return root.IsMap() && root["plan"].IsDefined();
-      } catch (const std::exception&) {
-        return false;
-      }
-    }
-    std::string_view key(line);
-    key = key.substr(0, key.find(':'));
-    while (!key.empty() && std::isspace(static_cast<unsigned char>(key.back()))) {
-      key.remove_suffix(1);
-    }
-    if (key == "plan" || key == "\"plan\"" || key == "'plan'") return true;
-  }
-  return false;
-}
-
-PlanModelFile LoadPlanModelFile(const std::string& path) {
-  const YamlReader reader(path);
-  PlanModelFile model;
-  const YAML::Node root = reader.LoadFile(&model.text);
-  reader.RequireMap(root, "");
-  reader.CheckKeys(root, "", {"description", "units", "plan", "excitation", "analysis", "output"});
-  model.path = path;
-  if (root["description"]) {
-    model.description = reader.ReadString(root["description"], "description");
-  }
-  model.units = ReadUnits(reader, root);
-  const UnitSystem& units = model.units;
-  const YAML::Node plan = reader.Require(root, "", "plan");
+StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& plan,
+                          const UnitSystem& units) {
   reader.RequireMap(plan, "plan");
   reader.CheckKeys(plan, "plan", {"footprint", "base", "stories", "damping", "isolators"});
+  StructureSection section;
+  section.kind = StructureSection::Kind::kPlanBuilding;
+  structure::PlanBuilding& building = section.plan;
   const Footprint footprint = ReadFootprint(reader, plan, units);
   const YAML::Node base = reader.Require(plan, "plan", "base");
   reader.RequireMap(base, "plan.base");
   reader.CheckKeys(base, "plan.base",
                    {"mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration"});
-  model.building.base = ReadFloor(reader, base, "plan.base", footprint, units);
-  model.building.stories =
-      ReadStories(reader, reader.Require(plan, "plan", "stories"), footprint, units);
-  if (plan["damping"]) model.building.damping = ReadDamping(reader, plan["damping"], units);
+  building.base = ReadFloor(reader, base, "plan.base", footprint, units);
+  if (plan["stories"]) building.stories = ReadStories(reader, plan["stories"], footprint, units);
+  if (plan["damping"]) building.damping = ReadDamping(reader, plan["damping"], units);
   const YAML::Node isolators = reader.Require(plan, "plan", "isolators");
   reader.RequireSequence(isolators, "plan.isolators");
   if (isolators.size() == 0) {
     reader.Fail(isolators, "plan.isolators", "the list is empty; give at least one isolator");
   }
   for (std::size_t i = 0; i < isolators.size(); ++i) {
-    model.building.isolators.push_back(ReadIsolator(reader, isolators[i],
-                                                    IndexPath("plan.isolators", i), i, footprint,
-                                                    units, &model.isolation_along_x));
-    for (std::size_t j = 0; j + 1 < model.building.isolators.size(); ++j) {
-      if (model.building.isolators[j].name == model.building.isolators.back().name) {
+    building.isolators.push_back(ReadIsolator(reader, isolators[i],
+                                              IndexPath("plan.isolators", i), i, footprint,
+                                              units));
+    for (std::size_t j = 0; j + 1 < building.isolators.size(); ++j) {
+      if (building.isolators[j].name == building.isolators.back().name) {
         reader.Fail(isolators[i], IndexPath("plan.isolators", i),
                     fmt::format("name '{}' is already used by isolator {}",
-                                model.building.isolators[j].name, j));
+                                building.isolators[j].name, j));
       }
     }
   }
-  if (root["excitation"]) {
-    model.ground_motion = ReadPlanGroundMotion(reader, root["excitation"], units);
-  }
-  if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], units);
-  if (root["output"]) {
-    reader.RequireMap(root["output"], "output");
-    reader.CheckKeys(root["output"], "output", {"file"});
-    model.output_file =
-        reader.ReadString(reader.Require(root["output"], "output", "file"), "output.file");
-  }
-  return model;
+  return section;
 }
 
 }  // namespace isolab::model

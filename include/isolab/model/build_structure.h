@@ -1,0 +1,20 @@
+// The structure a model describes, laid out (structure/layout.h): the one place that reads which
+// kind of structure a model has (an SDOF, a shear building in one direction, a building in plan).
+// Everything after it reads the structure and its layout, whatever the kind.
+#pragma once
+
+#include "isolab/model/model_file.h"
+#include "isolab/structure/layout.h"
+
+namespace isolab::model {
+
+// `fixed_base`: the superstructure without its isolation, the base held. Throws InputError
+// (naming the model) for a model without a structure section, for `fixed_base` on an SDOF, and
+// for a description the builder refuses.
+structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base = false);
+
+// The horizontal directions the model's structure moves in, as BuildStructure lays it out: 1, or
+// 2 for a building in plan (whose levels also rotate); 1 without a structure section.
+int Directions(const ModelFile& model);
+
+}  // namespace isolab::model

@@ -1,0 +1,269 @@
+#include "isolab/analysis/problem.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+
+#include "isolab/core/errors.h"
+#include "isolab/model/build_structure.h"
+
+namespace isolab::analysis {
+namespace {
+
+// A ground motion component to read: what it is, who gave its units and step, and where it is
+// named (for a pair that does not match).
+struct Component {
+  model::GroundMotionSection motion;
+  std::string units_given_by, dt_given_by;
+  const io::Record* data = nullptr;
+};
+
+// The components to apply: the model's (files relative to the model's folder), or the overrides'
+// (the model's units, dt and scale were given for the model's own record and do not carry over).
+std::vector<Component> ChooseComponents(const model::ModelFile& model,
+                                        const RunOverrides& overrides) {
+  std::vector<Component> components;
+  if (!overrides.records.empty()) {
+    for (const RecordOverride& record : overrides.records) {
+      Component c;
+      c.motion.file = record.data ? record.data->path : record.file;
+      c.motion.units = record.units;
+      c.motion.dt = record.dt;
+      c.motion.scale = record.scale;
+      c.motion.key = record.name;
+      c.motion.location = {record.name};
+      c.units_given_by = record.units_given_by;
+      c.dt_given_by = record.dt_given_by;
+      c.data = record.data ? &*record.data : nullptr;
+      components.push_back(std::move(c));
+    }
+  } else {
+    for (const model::GroundMotionSection& motion : model.excitation.ground_motion) {
+      Component c;
+      c.motion = motion;
+      if (std::filesystem::path(motion.file).is_relative()) {
+        c.motion.file = (std::filesystem::path(model.path).parent_path() / motion.file)
+                            .lexically_normal()
+                            .string();
+      }
+      const std::string in_model = fmt::format(" in {}", model.path);
+      c.units_given_by = motion.key + ".units" + in_model;
+      c.dt_given_by = motion.key + ".dt" + in_model;
+      components.push_back(std::move(c));
+    }
+  }
+  if (components.empty() && (!overrides.record_units.empty() || overrides.record_dt)) {
+    throw InputError({overrides.units_given_by},
+                     fmt::format("the record's units or step are given, but {} has no ground "
+                                 "motion (give a record)",
+                                 model.path));
+  }
+  for (Component& c : components) {
+    if (!overrides.record_units.empty()) {
+      const auto size = [&](const std::string& unit) {
+        try {
+          return UnitSystem("N", "m", "s").Convert(1.0, unit, dimension::kAcceleration);
+        } catch (const std::invalid_argument& error) {
+          throw InputError({overrides.units_given_by}, error.what());
+        }
+      };
+      if (!c.motion.units.empty() && size(c.motion.units) != size(overrides.record_units)) {
+        throw InputError({overrides.units_given_by},
+                         fmt::format("the record's units {} disagree with {} ({})",
+                                     overrides.record_units, c.units_given_by, c.motion.units));
+      }
+      c.motion.units = overrides.record_units;
+      c.units_given_by = overrides.units_given_by;
+    }
+    if (overrides.record_dt) {
+      c.motion.dt = *overrides.record_dt;
+      c.dt_given_by = overrides.dt_given_by;
+    }
+    if (overrides.scale) c.motion.scale = *overrides.scale;
+  }
+  return components;
+}
+
+// The components along the structure's axes: one along x, or x and y turned by the angle.
+void AddGroundMotion(const std::vector<integrators::SampledHistory>& components, double angle,
+                     const structure::Layout& layout, integrators::Excitation* excitation) {
+  if (components.empty()) return;
+  const integrators::SampledHistory& h1 = components[0];
+  if (layout.directions == 1) {
+    excitation->ground.push_back({h1, layout.ground_influence[structure::kX]});
+    return;
+  }
+  const double radians = angle * std::numbers::pi / 180.0;
+  const double c = std::cos(radians), s = std::sin(radians);
+  integrators::SampledHistory x{h1.dt, {}}, y{h1.dt, {}};
+  for (std::size_t k = 0; k < h1.values.size(); ++k) {
+    const double h2 = components.size() > 1 ? components[1].values[k] : 0.0;
+    x.values.push_back(c * h1.values[k] - s * h2);
+    y.values.push_back(s * h1.values[k] + c * h2);
+  }
+  excitation->ground.push_back({std::move(x), layout.ground_influence[structure::kX]});
+  excitation->ground.push_back({std::move(y), layout.ground_influence[structure::kY]});
+}
+
+// How long the structure vibrates freely after the excitation: as chosen, or automatically a
+// few of its longest periods.
+double FreeVibrationLength(const model::AnalysisSection& analysis, const RunOverrides& overrides,
+                           const ModelSummary& summary) {
+  const model::FreeVibration choice = overrides.free_vibration.value_or(analysis.free_vibration);
+  if (!choice.automatic) return choice.duration;
+  const double period = summary.LongestPeriod();
+  return std::isfinite(period) ? kAutomaticFreeVibrationPeriods * period : 0.0;
+}
+
+}  // namespace
+
+io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
+                              const std::string& units_given_by, const std::string& dt_given_by,
+                              const UnitSystem& units, integrators::SampledHistory* acceleration,
+                              const io::Record* data) {
+  // Records keep their step in seconds; the model gives a single column's dt in its own unit.
+  const double dt_seconds = motion.dt * units.SiFactor(dimension::kTime);
+  const io::Record record =
+      data ? *data
+           : io::ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
+  double to_model = 0.0;
+  try {
+    to_model = units.Convert(motion.scale, record.units, dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({motion.file}, error.what());
+  }
+  acceleration->dt = units.Convert(record.dt, "s", dimension::kTime);
+  acceleration->values.clear();
+  for (const double a : record.values) acceleration->values.push_back(a * to_model);
+  return {motion.file,
+          record.format,
+          record.units,
+          record.units_source,
+          record.dt,
+          motion.scale,
+          record.Peak() * std::abs(to_model)};
+}
+
+integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,
+                               const std::string& where) {
+  const double steps = std::round(duration / dt);
+  // int is the integrators' step counter: no limit may pass it.
+  const std::int64_t limit = std::min<std::int64_t>(max_steps, std::numeric_limits<int>::max());
+  if (!(steps <= static_cast<double>(limit))) {
+    throw InputError(
+        {where}, fmt::format("the run would take {:.3g} steps of dt = {:g} over {:g} (time unit "
+                             "of the model), more than the limit of {} steps: choose a larger dt "
+                             "or a shorter duration, or raise the limit with isolab run "
+                             "--max-steps N (at most {})",
+                             steps, dt, duration, limit, std::numeric_limits<int>::max()));
+  }
+  return {dt, static_cast<int>(steps)};
+}
+
+Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
+  structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
+  // The superstructure on a fixed base, for its periods: the run's own structure, or built once
+  // more (an SDOF and a slab on isolators have none).
+  std::optional<structure::LaidOutStructure> fixed_base;
+  if (!overrides.fixed_base && !built.layout.stories.empty()) {
+    fixed_base = model::BuildStructure(model, true);
+  }
+  Problem problem{model, std::move(built.structure), std::move(built.layout), {}, {}, {}, 0.0, {}};
+  const structure::Layout& layout = problem.layout;
+  const int dofs = problem.structure.dofs();
+
+  const std::vector<Component> components = ChooseComponents(model, overrides);
+  const double angle = overrides.records.empty() ? model.excitation.angle : overrides.angle;
+  if (static_cast<int>(components.size()) > layout.directions ||
+      (layout.directions == 1 && angle != 0.0)) {
+    const Component& extra = components.size() > 1 ? components[1] : components.front();
+    throw InputError(extra.motion.location,
+                     fmt::format("{}: the structure moves along x only: one component, along x "
+                                 "(a second component or an angle needs a building in plan)",
+                                 extra.motion.key));
+  }
+  std::vector<integrators::SampledHistory> histories(components.size());
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    const Component& c = components[i];
+    problem.records.push_back(ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
+                                          &histories[i], c.data));
+    if (i == 0) continue;
+    const integrators::SampledHistory& h1 = histories[0];
+    if (std::abs(histories[i].dt - h1.dt) > 1e-9 * h1.dt) {
+      throw InputError(c.motion.location,
+                       fmt::format("{}: its step {:g} differs from h1's {:g}; a pair must share "
+                                   "one step",
+                                   c.motion.key, histories[i].dt, h1.dt));
+    }
+    if (histories[i].values.size() != h1.values.size()) {
+      throw InputError(c.motion.location,
+                       fmt::format("{}: {} samples, h1 has {}; a pair must have the same length",
+                                   c.motion.key, histories[i].values.size(), h1.values.size()));
+    }
+  }
+  problem.angle = angle;
+  AddGroundMotion(histories, angle, layout, &problem.excitation);
+  double record_dt = histories.empty() ? 0.0 : histories[0].dt;
+
+  // A fixed-base variant loses the base's dofs: applied forces shift down by them.
+  int dof_shift = 0;
+  if (overrides.fixed_base && model::BuildStructure(model).layout.isolated()) {
+    dof_shift = -(layout.directions + (layout.rotations ? 1 : 0));
+  }
+  for (const model::ForceSection& force : model.excitation.forces) {
+    const int dof = force.dof + dof_shift;
+    if (dof < 0 || dof >= dofs) {
+      throw InputError({model.path}, fmt::format("excitation force on dof {} does not exist in "
+                                                 "this variant ({} dofs)",
+                                                 force.dof, dofs));
+    }
+    problem.excitation.forces.push_back({dof, {force.dt, force.values}});
+    if (record_dt == 0.0) record_dt = force.dt;
+  }
+  if (problem.excitation.duration() <= 0.0 && record_dt == 0.0) {
+    throw InputError({model.path}, "no excitation: give excitation.ground_motion or forces");
+  }
+
+  const double dt = overrides.dt.value_or(model.analysis.dt > 0.0 ? model.analysis.dt : record_dt);
+  if (!(dt > 0.0)) throw InputError({"command line"}, fmt::format("--dt {:g} must be > 0", dt));
+  if (!problem.records.empty() && dt > record_dt * (1.0 + 1e-9)) {
+    throw InputError({overrides.dt ? "command line" : model.path},
+                     fmt::format("dt = {:g} is coarser than the record's {:g}; the analysis step "
+                                 "may only refine it",
+                                 dt, record_dt));
+  }
+  const double trial = overrides.trial_displacement.value_or(
+      model.units.Convert(kDefaultTrialDisplacement, "m", dimension::kLength));
+  if (!(trial > 0.0)) {
+    throw InputError({"command line"}, fmt::format("--trial-displacement {:g} must be > 0", trial));
+  }
+  double pga = 0.0;
+  for (const io::AppliedRecord& record : problem.records) pga = std::max(pga, record.pga);
+  problem.summary =
+      SummariseModel(problem.structure, problem.layout, fixed_base ? &*fixed_base : nullptr,
+                     model.units, pga, trial);
+
+  problem.excitation_end = problem.excitation.duration();
+  double duration = model.analysis.duration;
+  if (duration > 0.0 && overrides.free_vibration) {
+    throw InputError({"command line"},
+                     fmt::format("the model fixes the run's duration (analysis.duration in {}); "
+                                 "--free-vibration cannot lengthen it",
+                                 model.path));
+  }
+  if (duration <= 0.0) {
+    problem.free_vibration = FreeVibrationLength(model.analysis, overrides, problem.summary);
+    duration = problem.excitation_end + problem.free_vibration;
+  } else {
+    problem.free_vibration = std::max(0.0, duration - problem.excitation_end);
+  }
+  problem.residual_window = std::min(problem.summary.LongestPeriod(), problem.free_vibration);
+  problem.grid = StepGrid(dt, duration, overrides.max_steps, overrides.dt ? "--dt" : model.path);
+  return problem;
+}
+
+}  // namespace isolab::analysis

@@ -1,0 +1,199 @@
+#include "isolab/analysis/run_text.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace isolab::analysis {
+namespace {
+
+// The first `count` periods, with their directions where the structure moves in more than one.
+std::string JoinModes(const std::vector<Mode>& modes, std::size_t count, bool directions) {
+  std::string text;
+  for (std::size_t i = 0; i < std::min(count, modes.size()); ++i) {
+    text += (i > 0 ? ", " : "") + fmt::format("{:.4g}", modes[i].period);
+    if (directions) text += fmt::format(" ({})", modes[i].direction);
+  }
+  return text;
+}
+
+void PrintRecord(const io::AppliedRecord& r, const std::string& label, const UnitSystem& u,
+                 std::ostream& out) {
+  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
+  fmt::print(out, "{}: {} ({}, dt = {:g} s, in {} from {}), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
+             label, r.path, r.format, r.dt, r.units,
+             r.units_source == "header" ? "its header" : r.units_source, r.scale, r.pga / g, r.pga,
+             DescribeUnits(u, dimension::kAcceleration));
+}
+
+}  // namespace
+
+void PrintGrid(const integrators::TimeGrid& grid, double excitation_end, double free_vibration,
+               int dofs, const UnitSystem& units, std::ostream& out) {
+  const std::string time = units.time();
+  fmt::print(out,
+             "dt = {:g} {}, {} steps ({:.4g} {} of excitation, then {:.4g} {} of free "
+             "vibration), {} dofs\n\n",
+             grid.dt, time, grid.steps, excitation_end, time, free_vibration, time, dofs);
+}
+
+void PrintRunOutcome(const model::AnalysisSection& analysis, const integrators::RunSummary& run,
+                     const std::string& output, std::ostream& out) {
+  fmt::print(out, "energy balance error: {:.2e} of the input energy\n", run.energy_balance_error);
+  if (analysis.integrator == model::AnalysisSection::Integrator::kIda) {
+    fmt::print(out,
+               "IDA: {} steps, {} phase-change events, {} Jacobians, {} error-test failures; "
+               "{:.3f} s\n",
+               run.ida_steps, run.events, run.jacobian_evaluations, run.error_test_failures,
+               run.wall_seconds);
+  } else {
+    fmt::print(out,
+               "Newton: {} iterations ({:.3f} solves per step, at most {} in a step), {} "
+               "factorisations, {} step cuts; {:.3f} s\n",
+               run.newton_iterations, run.SolvesPerStep(), run.max_iterations_in_a_step,
+               run.factorisations, run.step_cuts, run.wall_seconds);
+  }
+  if (!output.empty()) fmt::print(out, "results: {}\n", output);
+}
+
+void PrintPreamble(const Problem& problem, std::ostream& out) {
+  const UnitSystem& u = problem.units();
+  const ModelSummary& m = problem.summary;
+  const structure::Layout& layout = problem.layout;
+  const bool directions = layout.directions > 1 || layout.rotations;
+  fmt::print(out, "== {} ==\n", problem.model.path);
+  if (!problem.model.description.empty()) fmt::print(out, "{}\n", problem.model.description);
+  if (problem.records.size() == 1) PrintRecord(problem.records[0], "record", u, out);
+  if (problem.records.size() > 1) {
+    PrintRecord(problem.records[0], "record H1", u, out);
+    PrintRecord(problem.records[1], "record H2", u, out);
+  }
+  if (layout.directions > 1 && !problem.records.empty()) {
+    fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle,
+               problem.angle + 90.0);
+  }
+  const double tonnes = m.total_mass * u.SiFactor(dimension::kMass) / 1000.0;
+  fmt::print(out, "model: ");
+  if (layout.isolators.size() > 1) {
+    fmt::print(out, "{} levels, {} isolators, ", layout.levels.size(), layout.isolators.size());
+  }
+  fmt::print(out, "total weight {:.5g} {} ({:.5g} t)", m.total_weight, u.force(), tonnes);
+  if (!m.fixed_base_modes.empty()) {
+    fmt::print(out, "; fixed-base periods {} {}{}", JoinModes(m.fixed_base_modes, 3, directions),
+               u.time(), m.fixed_base_modes.size() > 3 ? ", ..." : "");
+  }
+  if (m.isolated) {
+    fmt::print(out, "; {}{} {} {} at {:g} {} (secant stiffness {:.4g} {})",
+               layout.stories.empty() ? "period" : "isolated period",
+               m.rigid_modes.size() > 1 ? "s" : "", JoinModes(m.rigid_modes, 3, directions),
+               u.time(), m.trial_displacement, u.length(), m.secant_stiffness,
+               DescribeUnits(u, dimension::kStiffness));
+  }
+  fmt::print(out, "\n");
+  PrintGrid(problem.grid, problem.excitation_end, problem.free_vibration,
+            problem.structure.dofs(), u, out);
+}
+
+void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis,
+                  const Summary& summary, std::ostream& out) {
+  const UnitSystem& u = problem.units();
+  const structure::Layout& layout = problem.layout;
+  const ResponsePeaks& peaks = summary.peaks;
+  const std::string length = u.length(), force = u.force(), time = u.time();
+  const std::string acceleration = DescribeUnits(u, dimension::kAcceleration);
+  const double g = u.Convert(1.0, "g", dimension::kAcceleration);
+  const auto line = [&](const char* what, const Peak& peak, const std::string& unit,
+                        const std::string& extra = "") {
+    fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {}{}\n", what, peak.value, unit,
+               peak.time, time, extra);
+  };
+  // The isolator a peak is at, where there are several.
+  const auto at_isolator = [&](const Peak& peak) {
+    return layout.isolators.size() > 1 && peak.index >= 0
+               ? fmt::format(" ({})", layout.isolators[peak.index].name)
+               : std::string();
+  };
+  if (layout.isolators.size() > 1) {
+    fmt::print(out, "peak isolator displacement [{}] and force [{}]:\n", length, force);
+    for (std::size_t i = 0; i < layout.isolators.size(); ++i) {
+      const Peak& d = peaks.isolator_displacements[i];
+      fmt::print(out, "  {:<24} {:>12.5g} at t = {:<8.4g} {:>12.5g} at t = {:.4g} {}\n",
+                 layout.isolators[i].name, d.value, d.time, peaks.isolator_forces[i].value,
+                 peaks.isolator_forces[i].time, time);
+    }
+  }
+  if (layout.isolated()) {
+    line("peak isolator displacement", peaks.isolator_displacement, length,
+         at_isolator(peaks.isolator_displacement));
+    line("peak isolator force", peaks.isolator_force, force, at_isolator(peaks.isolator_force));
+  }
+  line("peak base shear", peaks.base_shear, force);
+  if (!layout.stories.empty()) {
+    line("peak first-story shear", peaks.first_story_shear, force);
+    const int story = peaks.story_drift.index;
+    line("peak story drift", peaks.story_drift, length,
+         story < 0 ? std::string()
+                   : fmt::format(" (story {}{})", story + 1,
+                                 peaks.story_drift_ratio > 0.0
+                                     ? fmt::format(", {:.3g} % of its height",
+                                                   100 * peaks.story_drift_ratio)
+                                     : ""));
+  }
+  line("peak roof absolute acceleration", peaks.roof_absolute_acceleration, acceleration,
+       fmt::format(" ({:.3g} g)", peaks.roof_absolute_acceleration.value / g));
+  if (layout.rotations) {
+    const int level = peaks.level_rotation.index;
+    line("peak floor rotation", peaks.level_rotation, "rad",
+         level < 0 ? std::string() : fmt::format(" ({})", layout.levels[level].name));
+    fmt::print(out, "{:<34} {:>12.4g} (the largest isolator displacement over the base's "
+               "centre of mass's, {:.5g} {})\n",
+               "torsional amplification", peaks.torsional_amplification,
+               peaks.base_centre_displacement.value, length);
+  }
+  if (layout.isolated()) {
+    fmt::print(out, "{:<34} {:>12.5g} {:<8} ", "residual isolator displacement",
+               peaks.residual_isolator_displacement, length);
+    if (problem.free_vibration > 0.0) {
+      fmt::print(out, "after {:.4g} {} of free vibration (still swinging +-{:.3g} {})",
+                 problem.free_vibration, time, peaks.residual_oscillation, length);
+    }
+    fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
+               peaks.isolator_displacement_at_excitation_end, length);
+    const ModelSummary& m = problem.summary;
+    if (m.isolated && peaks.isolator_displacement.value > 0.0) {
+      const double d = peaks.isolator_displacement.value;
+      double k = 0.0;
+      for (const structure::IsolatorLayout& isolator : layout.isolators) {
+        k += isolator.member >= 0
+                 ? SecantStiffness(problem.structure.members()[isolator.member].assembly, d)
+                 : SecantStiffness(problem.structure.coupled_members()[isolator.coupled].assembly,
+                                   d)
+                       .x;
+      }
+      if (k > 0.0) {
+        double period = 0.0;
+        for (const Mode& mode : RigidModes(problem.structure, layout, d)) {
+          period = std::max(period, mode.period);
+        }
+        fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
+                   "period at the peak displacement", period, time, k,
+                   DescribeUnits(u, dimension::kStiffness));
+      }
+    }
+  }
+  if (peaks.rows > 0) {
+    const integrators::Energies& e = peaks.energies;
+    const double input = e.input != 0.0 ? e.input : 1.0;
+    fmt::print(out,
+               "\nenergy at the end [{}*{}]: input {:.5g} = kinetic {:.3g} + damping {:.5g} "
+               "({:.1f} %) + elastic {:.3g} + hysteretic {:.5g} ({:.1f} %)\n",
+               force, length, e.input, e.kinetic, e.damping, 100 * e.damping / input, e.elastic,
+               e.hysteretic, 100 * e.hysteretic / input);
+  }
+  PrintRunOutcome(analysis, summary.run, summary.results_path, out);
+}
+
+}  // namespace isolab::analysis
