@@ -30,7 +30,6 @@
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/model/model_file.h"
-#include "isolab/model/plan_model_file.h"
 #include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 #include "newmark_floor.h"
@@ -64,9 +63,8 @@ void CountSteps(benchmark::State& state, int steps, long solves) {
   state.counters["solves_per_step"] = static_cast<double>(solves) / (state.iterations() * steps);
 }
 
-template <class S, class E = Excitation>
-void RunSteps(benchmark::State& state, const S& structure, int steps,
-              const E& excitation = Noise()) {
+void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps,
+              const Excitation& excitation = Noise()) {
   ResponseHistory response;
   long solves = 0;
   for (auto _ : state) {
@@ -80,7 +78,7 @@ void RunSteps(benchmark::State& state, const S& structure, int steps,
 void BM_SdofThm1(benchmark::State& state) {
   // 31.7 t on the Table 7 THM1 (hardening) law, in kN, mm, s.
   const auto sdof =
-      structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120}));
+      structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120})).structure;
   RunSteps(state, sdof, 10000);
 }
 
@@ -94,7 +92,7 @@ structure::Structure IsolatedBuilding(int stories, const ParallelAssembly& isola
   building.isolation = isolation;
   building.damping.kind = structure::SuperstructureDamping::Kind::kRayleigh;
   building.damping.rayleigh_ratios[0] = building.damping.rayleigh_ratios[1] = 0.02;
-  return structure::BuildShearBuilding(building);
+  return structure::BuildShearBuilding(building).structure;
 }
 
 ParallelAssembly Table9() {
@@ -124,7 +122,7 @@ template <template <int> class Solver>
 void FiveStoryTable9Floor(benchmark::State& state) {
   constexpr int kSteps = 6000;
   const structure::Structure building = IsolatedBuilding(5, Table9());
-  const auto& connections = building.connections();
+  const auto& connections = building.members();
   std::array<hysteresis::SeriesSlider, 9> isolator;
   for (int c = 0; c < 9; ++c) {
     isolator[c] = std::get<hysteresis::SeriesSlider>(connections[0].assembly.kernels()[c]);
@@ -214,22 +212,29 @@ void BM_FiveStoryTable9Ida(benchmark::State& state) {
   state.counters["events_per_s"] = static_cast<double>(summary.events) / 60.0;
 }
 
-// H1: Noise() along x; H2: the same generator with another seed along y.
-PlanExcitation PlanNoise() {
+// H1: Noise() along x; H2: the same generator with another seed along y, on a plan structure laid
+// out as `layout`.
+Excitation PlanNoise(const structure::Layout& layout) {
   analysis::FilteredNoiseSpec spec;
   spec.duration = 100.0;
   spec.pga = 0.30;
   spec.seed = 2;
   const io::Record record = analysis::FilteredNoiseRecord(spec);
-  PlanExcitation excitation{Noise().ground_acceleration, {record.dt, {}}};
-  for (const double a : record.values) excitation.y.values.push_back(a * 9806.65);
-  return excitation;
+  integrators::SampledHistory y{record.dt, {}};
+  for (const double a : record.values) y.values.push_back(a * 9806.65);
+  return Excitation::Horizontal(layout, Noise().ground[0].acceleration, std::move(y));
 }
 
 structure::PlanBuilding BundledPlanBuilding() {
-  return model::LoadPlanModelFile(std::string(ISOLAB_SOURCE_DIR) +
-                                  "/models/plan/five_story_table9_plan.yaml")
-      .building;
+  return model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                              "/models/plan/five_story_table9_plan.yaml")
+      .structure->plan;
+}
+
+// A plan building under PlanNoise().
+void RunPlanSteps(benchmark::State& state, const structure::LaidOutStructure& building,
+                  int steps) {
+  RunSteps(state, building.structure, steps, PlanNoise(building.layout));
 }
 
 // The bundled plan model (models/plan/five_story_table9_plan.yaml): 18 dofs, 4 bearings of 9
@@ -243,7 +248,7 @@ void BM_PlanFiveStoryTable9(benchmark::State& state) {
       site.assembly = hysteresis::PlanAssembly(std::move(pairs));
     }
   }
-  RunSteps(state, structure::BuildPlanBuilding(building), 6000, PlanNoise());
+  RunPlanSteps(state, structure::BuildPlanBuilding(building), 6000);
 }
 
 // The devices engineers specify, one law a bearing, for 150 t (the one-direction building's mass
@@ -272,7 +277,7 @@ void BM_PlanFiveStoryDevice(benchmark::State& state) {
   const hysteresis::PlanAssembly bearing(
       {{"bearing", Device(static_cast<int>(state.range(0))), std::nullopt}});
   for (structure::PlanIsolatorSite& site : building.isolators) site.assembly = bearing;
-  RunSteps(state, structure::BuildPlanBuilding(building), 6000, PlanNoise());
+  RunPlanSteps(state, structure::BuildPlanBuilding(building), 6000);
 }
 
 // `stories` floors of 100 t on a 24 m x 16 m plan, 5 % eccentric, stories of 304 kN/mm, four
@@ -305,7 +310,7 @@ void BM_PlanStoriesLinearIsolators(benchmark::State& state) {
     building.isolators.push_back({"corner", {x, y}, isolator});
   }
   building.damping = {true, {0.4, 0.1}, {0.02, 0.02}};
-  RunSteps(state, structure::BuildPlanBuilding(building), 10000, PlanNoise());
+  RunPlanSteps(state, structure::BuildPlanBuilding(building), 10000);
 }
 
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);

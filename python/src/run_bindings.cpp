@@ -8,12 +8,11 @@
 
 #include "arrays.h"
 #include "bindings.h"
-#include "isolab/analysis/analysis_setup.h"
-#include "isolab/analysis/response_peaks.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
-#include "isolab/analysis/run_analysis.h"
 #include "isolab/analysis/run_report.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/free_vibration_text.h"
 #include "model.h"
@@ -26,17 +25,14 @@ namespace {
 
 // Everything a run made, in one place that does not move: the series refer into it.
 struct RunResult {
-  model::ModelFile model;
+  analysis::Problem problem;
   model::AnalysisSection analysis;
-  analysis::AnalysisSetup setup;
   integrators::ResponseHistory response;
-  integrators::RunSummary summary;
-  analysis::ResponsePeaks peaks;
+  analysis::Summary summary;
   std::vector<analysis::Series> series;
-  std::vector<std::string> warnings;
 
   analysis::RunDescription Description() const {
-    return {&model, &setup, &analysis, &summary, &peaks, ISOLAB_VERSION, {}};
+    return {&problem, &analysis, &summary.run, &summary.peaks, ISOLAB_VERSION, {}};
   }
   const analysis::Series& Find(const std::string& name) const {
     for (const analysis::Series& s : series) {
@@ -64,12 +60,15 @@ std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
   {
     py::gil_scoped_release release;  // a thread pool of runs scales
     result = std::make_shared<RunResult>(
-        model.file(), analysis, analysis::PrepareAnalysis(model.file(), options.overrides));
-    result->summary = analysis::RunAnalysis(analysis, result->setup, &result->response);
-    result->peaks = analysis::ComputePeaks(result->setup, result->response);
+        RunResult{analysis::Prepare(model.file(), options.overrides), analysis, {}, {}, {}});
+    integrators::HistoryRecorder recorder = integrators::RecordHistory(
+        result->problem.structure, result->problem.grid, &result->response);
+    integrators::ResponseObserver* const also[] = {&recorder};
+    analysis::SolveOptions solve;
+    solve.analysis = analysis;
+    result->summary = analysis::Solve(solve, result->problem, also);
   }
-  result->series = analysis::ResultSeries(result->model, result->setup, model::OutputSelection{});
-  result->warnings = analysis::RunWarnings(result->Description());
+  result->series = analysis::ResultSeries(result->problem, model::OutputSelection{});
   return result;
 }
 
@@ -110,7 +109,7 @@ py::array SeriesArray(const std::shared_ptr<RunResult>& result, const analysis::
 
 // What `isolab run --json` prints (analysis::RunReport), as Python objects.
 py::dict Summary(const RunResult& r) {
-  const nlohmann::json report = analysis::RunReport(r.Description(), r.warnings, "");
+  const nlohmann::json report = analysis::RunReport(r.problem, r.analysis, r.summary);
   return py::module_::import("json").attr("loads")(report.dump());
 }
 
@@ -150,7 +149,7 @@ void BindRun(py::module_& module) {
              return false;
            })
       .def_property_readonly("ok", [](const RunResult& r) { return r.summary.ok(); })
-      .def_property_readonly("message", [](const RunResult& r) { return r.summary.message; })
+      .def_property_readonly("message", [](const RunResult& r) { return r.summary.run.message; })
       .def_property_readonly(
           "peaks", [](const RunResult& r) { return py::object(Summary(r)["peaks"]); },
           "The peaks `isolab run --json` prints: summary['peaks']")
@@ -158,10 +157,10 @@ void BindRun(py::module_& module) {
                              "What `isolab run --json` prints: the record as applied, the model "
                              "summary, peaks, energies, termination, integrator and its "
                              "statistics")
-      .def_property_readonly("warnings", [](const RunResult& r) { return r.warnings; })
+      .def_property_readonly("warnings", [](const RunResult& r) { return r.summary.warnings; })
       .def_property_readonly("model_units",
                              [](const RunResult& r) {
-                               const UnitSystem& u = r.model.units;
+                               const UnitSystem& u = r.problem.units();
                                return py::dict(py::arg("force") = u.force(),
                                                py::arg("length") = u.length(),
                                                py::arg("time") = u.time());
@@ -184,16 +183,16 @@ void BindRun(py::module_& module) {
         RunOptions options;
         analysis::RunOverrides& o = options.overrides;
         if (!record.is_none()) {
+          analysis::RecordOverride given;
+          given.name = "record";
           if (IsRecordFile(record)) {
-            o.record = py::str(record).cast<std::string>();
-            if (units) o.record_units = *units;
-            if (record_dt) {
-              o.record_dt = model.file().units.Convert(*record_dt, "s", dimension::kTime);
-            }
+            given.file = py::str(record).cast<std::string>();
           } else {
-            o.record_data = ArrayRecord(record, record_dt, units);
+            given.data = ArrayRecord(record, record_dt, units);
           }
-        } else if (units || record_dt) {
+          o.records.push_back(std::move(given));
+        }
+        if (record.is_none() || IsRecordFile(record)) {
           if (units) o.record_units = *units;
           if (record_dt) {
             o.record_dt = model.file().units.Convert(*record_dt, "s", dimension::kTime);

@@ -94,7 +94,7 @@ void AddGroundMotion(const std::vector<integrators::SampledHistory>& components,
   if (components.empty()) return;
   const integrators::SampledHistory& h1 = components[0];
   if (layout.directions == 1) {
-    excitation->ground.push_back({h1, layout.ground_influence[structure::kX]});
+    *excitation = integrators::Excitation::Horizontal(layout, h1);
     return;
   }
   const double radians = angle * std::numbers::pi / 180.0;
@@ -105,8 +105,7 @@ void AddGroundMotion(const std::vector<integrators::SampledHistory>& components,
     x.values.push_back(c * h1.values[k] - s * h2);
     y.values.push_back(s * h1.values[k] + c * h2);
   }
-  excitation->ground.push_back({std::move(x), layout.ground_influence[structure::kX]});
-  excitation->ground.push_back({std::move(y), layout.ground_influence[structure::kY]});
+  *excitation = integrators::Excitation::Horizontal(layout, std::move(x), std::move(y));
 }
 
 // How long the structure vibrates freely after the excitation: as chosen, or automatically a

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "isolab/analysis/results_writer.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "results_sink.h"
@@ -50,6 +51,13 @@ std::vector<std::string> RunWarnings(const RunDescription& run) {
   const std::string bearing =
       IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.problem->units());
   if (!bearing.empty()) warnings.push_back(bearing);
+  const double error = run.summary->energy_balance_error;
+  if (run.summary->ok() && error > kEnergyBalanceWarning) {
+    warnings.push_back(fmt::format(
+        "the energy balance closes to {:.3g} of the input energy only (more than {:g}): the step "
+        "is coarse for this response; refine dt",
+        error, kEnergyBalanceWarning));
+  }
   return warnings;
 }
 

@@ -35,6 +35,18 @@ Excitation Excitation::Uniform(SampledHistory acceleration) {
   return excitation;
 }
 
+Excitation Excitation::Horizontal(const structure::Layout& layout, SampledHistory x,
+                                  SampledHistory y) {
+  Excitation excitation;
+  if (!x.values.empty()) {
+    excitation.ground.push_back({std::move(x), layout.ground_influence[structure::kX]});
+  }
+  if (!y.values.empty()) {
+    excitation.ground.push_back({std::move(y), layout.ground_influence[structure::kY]});
+  }
+  return excitation;
+}
+
 double Excitation::duration() const {
   double duration = 0.0;
   for (const GroundMotion& motion : ground) {

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/model_file.h"
 #include "leftover_temporaries.h"
@@ -94,6 +94,31 @@ std::vector<double> ExpectedVector(int rows, int stride, Value value) {
   return values;
 }
 
+// A run kept whole in memory.
+integrators::RunSummary RunInMemory(const model::AnalysisSection& analysis, const Problem& problem,
+                                    ResponseHistory* history) {
+  integrators::HistoryRecorder recorder =
+      integrators::RecordHistory(problem.structure, problem.grid, history);
+  integrators::ResponseObserver* const also[] = {&recorder};
+  SolveOptions options;
+  options.analysis = analysis;
+  options.output.summary_only = true;
+  return Solve(options, problem, also).run;
+}
+
+// A run streamed to `path` (none when empty) as `selection` asks.
+Summary RunAndRecord(const model::AnalysisSection& analysis, const Problem& problem,
+                     const model::OutputSelection& selection, const std::string& path,
+                     std::size_t buffer_rows = 0) {
+  SolveOptions options;
+  options.analysis = analysis;
+  options.output = selection;
+  options.results_path = path;
+  options.version = "test";
+  options.buffer_rows = buffer_rows;
+  return Solve(options, problem);
+}
+
 // Bitwise: the same doubles, not merely close ones.
 void ExpectBitwiseEqual(const std::vector<double>& actual, const std::vector<double>& expected,
                         const std::string& what) {
@@ -112,11 +137,11 @@ class StreamedAgainstInMemory : public ::testing::TestWithParam<Case> {};
 // last one happen), equals the in-memory run's; with every 10 steps, its rows 0, 10, 20, ...
 TEST_P(StreamedAgainstInMemory, DatasetsAreBitwiseEqual) {
   const model::ModelFile model = model::LoadModelFile(Model(GetParam().model));
-  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  const Problem setup = Prepare(model, {});
   model::AnalysisSection analysis = model.analysis;
   if (GetParam().ida) analysis.integrator = model::AnalysisSection::Integrator::kIda;
   ResponseHistory history;
-  const integrators::RunSummary in_memory = RunAnalysis(analysis, setup, &history);
+  const integrators::RunSummary in_memory = RunInMemory(analysis, setup, &history);
   ASSERT_TRUE(in_memory.ok());
   const int rows = history.rows_written;
   ASSERT_GT(rows, 100);
@@ -126,10 +151,9 @@ TEST_P(StreamedAgainstInMemory, DatasetsAreBitwiseEqual) {
     model::OutputSelection selection;
     selection.every = every;
     const auto path = TemporaryFile("streamed.h5");
-    const RecordedRun run = RunAndRecord(model, analysis, setup, selection, path.string(), "test",
-                                         /*buffer_rows=*/7);
-    EXPECT_EQ(run.summary.newton_iterations, in_memory.newton_iterations);
-    EXPECT_EQ(run.summary.energy_balance_error, in_memory.energy_balance_error);
+    const Summary run = RunAndRecord(analysis, setup, selection, path.string(), /*buffer_rows=*/7);
+    EXPECT_EQ(run.run.newton_iterations, in_memory.newton_iterations);
+    EXPECT_EQ(run.run.energy_balance_error, in_memory.energy_balance_error);
 
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     ASSERT_GE(file, 0);
@@ -149,10 +173,11 @@ TEST_P(StreamedAgainstInMemory, DatasetsAreBitwiseEqual) {
                        "absolute_acceleration");
     ExpectBitwiseEqual(Read(file, "connection_force").values,
                        Expected(history.connection_force, rows, every), "connection_force");
-    if (setup.layout.isolation >= 0) {
-      const int first = static_cast<int>(setup.structure.law_offset(setup.layout.isolation));
-      const int count = static_cast<int>(
-          setup.structure.connections()[setup.layout.isolation].assembly.components().size());
+    if (setup.layout.isolated()) {
+      const int isolation = setup.layout.isolators[0].member;
+      const int first = static_cast<int>(setup.structure.law_offset(isolation));
+      const int count =
+          static_cast<int>(setup.structure.members()[isolation].assembly.components().size());
       std::vector<int> components;
       for (int l = first; l < first + count; ++l) components.push_back(l);
       ExpectBitwiseEqual(Read(file, "isolator/component_force").values,
@@ -192,13 +217,12 @@ void ExpectSamePeak(const Peak& a, const Peak& b, const char* what) {
 // they are the full run's, exactly; read off a history thinned to every 10th step they are not.
 TEST(ResultsWriter, PeaksWithOutputEveryTenStepsEqualTheFullRuns) {
   const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
-  const AnalysisSetup setup = PrepareAnalysis(model, {});
-  const RecordedRun full = RunAndRecord(model, model.analysis, setup, {}, "", "test");
+  const Problem setup = Prepare(model, {});
+  const Summary full = RunAndRecord(model.analysis, setup, {}, "");
   model::OutputSelection every_ten;
   every_ten.every = 10;
   const auto path = TemporaryFile("every_ten.h5");
-  const RecordedRun thinned =
-      RunAndRecord(model, model.analysis, setup, every_ten, path.string(), "test");
+  const Summary thinned = RunAndRecord(model.analysis, setup, every_ten, path.string());
   const ResponsePeaks &a = full.peaks, &b = thinned.peaks;
   ExpectSamePeak(a.isolator_displacement, b.isolator_displacement, "isolator displacement");
   ExpectSamePeak(a.isolator_force, b.isolator_force, "isolator force");
@@ -210,12 +234,12 @@ TEST(ResultsWriter, PeaksWithOutputEveryTenStepsEqualTheFullRuns) {
   EXPECT_EQ(a.residual_oscillation, b.residual_oscillation);
   EXPECT_EQ(a.energies.input, b.energies.input);
   EXPECT_EQ(a.energies.hysteretic, b.energies.hysteretic);
-  EXPECT_EQ(full.summary.energy_balance_error, thinned.summary.energy_balance_error);
+  EXPECT_EQ(full.run.energy_balance_error, thinned.run.energy_balance_error);
   EXPECT_EQ(a.rows, setup.grid.steps + 1);
 
   // The full run's peaks are those of the in-memory history (the definition ComputePeaks keeps).
   ResponseHistory history;
-  RunAnalysis(model.analysis, setup, &history);
+  RunInMemory(model.analysis, setup, &history);
   const ResponsePeaks from_history = ComputePeaks(setup, history);
   ExpectSamePeak(a.isolator_displacement, from_history.isolator_displacement, "from history");
   ExpectSamePeak(a.roof_absolute_acceleration, from_history.roof_absolute_acceleration,
@@ -223,10 +247,10 @@ TEST(ResultsWriter, PeaksWithOutputEveryTenStepsEqualTheFullRuns) {
   EXPECT_EQ(a.residual_isolator_displacement, from_history.residual_isolator_displacement);
 
   // What this guards against: peaks of the thinned history miss the true ones.
-  AnalysisSetup coarse = setup;
+  Problem coarse = setup;
   coarse.grid.output_every = 10;
   ResponseHistory thinned_history;
-  RunAnalysis(model.analysis, coarse, &thinned_history);
+  RunInMemory(model.analysis, coarse, &thinned_history);
   const ResponsePeaks missed = ComputePeaks(coarse, thinned_history);
   EXPECT_LT(missed.roof_absolute_acceleration.value, a.roof_absolute_acceleration.value);
   EXPECT_LT(missed.story_drift.value, a.story_drift.value);
@@ -241,12 +265,11 @@ TEST(ResultsWriter, PeaksWithOutputEveryTenStepsEqualTheFullRuns) {
 
 TEST(ResultsWriter, SummaryOnlyHoldsPeaksAndFinalEnergiesWithoutHistories) {
   const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
-  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  const Problem setup = Prepare(model, {});
   model::OutputSelection summary_only;
   summary_only.summary_only = true;
   const auto path = TemporaryFile("summary_only.h5");
-  const RecordedRun run =
-      RunAndRecord(model, model.analysis, setup, summary_only, path.string(), "test");
+  const Summary run = RunAndRecord(model.analysis, setup, summary_only, path.string());
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   for (const char* history : {"time", "ground_acceleration", "displacement", "connection_force",
@@ -268,16 +291,16 @@ TEST(ResultsWriter, SummaryOnlyHoldsPeaksAndFinalEnergiesWithoutHistories) {
 
 TEST(ResultsWriter, LevelsAndQuantitiesChooseTheColumns) {
   const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
-  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  const Problem setup = Prepare(model, {});
   ResponseHistory history;
-  RunAnalysis(model.analysis, setup, &history);
+  RunInMemory(model.analysis, setup, &history);
   const int rows = history.rows_written;
 
   model::OutputSelection selection;
   selection.quantities = {"displacement", "connection_force", "story"};
   selection.levels = {model::kRoofLevel, 0};  // the base and floor 5
   const auto path = TemporaryFile("levels.h5");
-  RunAndRecord(model, model.analysis, setup, selection, path.string(), "test");
+  RunAndRecord(model.analysis, setup, selection, path.string());
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   EXPECT_EQ(Read(file, "displacement").dims, (std::vector<hsize_t>{hsize_t(rows), 2}));
@@ -299,25 +322,26 @@ TEST(ResultsWriter, LevelsAndQuantitiesChooseTheColumns) {
 
   // A fixed-base building has no level 0: its floors count from 1.
   const model::ModelFile frame = model::LoadModelFile(Model("chopra/case_e_five_story_frame.yaml"));
-  const AnalysisSetup frame_setup = PrepareAnalysis(frame, {});
+  const Problem frame_setup = Prepare(frame, {});
   model::OutputSelection level_zero;
   level_zero.levels = {0};
-  EXPECT_THROW(SelectedDofs(level_zero, frame_setup, "output.levels"), InputError);
+  EXPECT_THROW(SelectedLevels(level_zero, frame_setup.layout, "output.levels"), InputError);
   model::OutputSelection first_floor;
   first_floor.levels = {1, model::kRoofLevel};
-  EXPECT_EQ(SelectedDofs(first_floor, frame_setup, "output.levels"), (std::vector<int>{0, 4}));
+  EXPECT_EQ(SelectedLevels(first_floor, frame_setup.layout, "output.levels"),
+            (std::vector<int>{0, 4}));
 }
 
 TEST(ResultsWriter, CsvFollowsTheSelection) {
   const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
-  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  const Problem setup = Prepare(model, {});
   ResponseHistory history;
-  RunAnalysis(model.analysis, setup, &history);
+  RunInMemory(model.analysis, setup, &history);
   model::OutputSelection selection;
   selection.every = 10;
   selection.quantities = {"energy"};
   const auto path = TemporaryFile("energy.csv");
-  RunAndRecord(model, model.analysis, setup, selection, path.string(), "test", 7);
+  RunAndRecord(model.analysis, setup, selection, path.string(), 7);
   std::ifstream in(path);
   std::string line, header;
   std::vector<std::vector<double>> values;
@@ -351,15 +375,15 @@ TEST(ResultsWriter, CsvFollowsTheSelection) {
 
 TEST(ResultsWriter, AWriterAbandonedBeforeFinishLeavesNothing) {
   const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
-  const AnalysisSetup setup = PrepareAnalysis(model, {});
+  const Problem setup = Prepare(model, {});
   ResponseHistory history;
-  AnalysisSetup short_run = setup;
+  Problem short_run = setup;
   short_run.grid.steps = 50;
-  RunAnalysis(model.analysis, short_run, &history);
+  RunInMemory(model.analysis, short_run, &history);
   for (const char* name : {"abandoned.h5", "abandoned.csv"}) {
     const auto path = TemporaryFile(name);
     {
-      const RunDescription run{&model, &setup, &model.analysis, nullptr, nullptr, "test", {}};
+      const RunDescription run{&setup, &model.analysis, nullptr, nullptr, "test", {}};
       ResultsWriter writer(path.string(), run, 7);
       for (int r = 0; r < history.rows_written; ++r) writer.Observe(history.Row(r));
       EXPECT_EQ(writer.rows(), history.rows_written);

@@ -1,8 +1,8 @@
-// `isolab compare` on plan models (issue #15): a study of the bundled eccentric plan building and
-// its symmetric twin under a record pair reports, per run, what `isolab run` prints for the same
+// `isolab compare` on buildings in plan: a study of the bundled eccentric plan building and its
+// symmetric twin under a record pair reports, per run, what `isolab run` prints for the same
 // model and pair (the independent path: the run command), the same whether one thread, two or
 // two MPI ranks ran it; a symmetric building under the pair does not twist; bad pairs and
-// studies that mix single records, pairs and kinds of model exit 2 naming the study's line.
+// studies that mix buildings that move in different directions exit 2 naming the study's line.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,17 +62,24 @@ fs::path WriteSymmetricModel(const fs::path& folder) {
   return path;
 }
 
-// What `isolab run` prints on a plan model as the study's four quantities.
+// What `isolab run` prints on a plan model as the study's seven quantities (kN, mm; g).
 std::vector<double> RunQuantities(const nlohmann::json& run) {
   double resultant = 0.0;
   for (const auto& [name, isolator] : run["isolators"].items()) {
-    resultant = std::max(resultant, isolator["peak_resultant"].get<double>());
+    resultant = std::max(resultant, isolator["displacement"]["value"].get<double>());
   }
-  const std::vector<double> rotations = run["peak_floor_rotation"];
-  return {resultant, run["peak_base_shear"].get<double>(),
-          *std::max_element(rotations.begin(), rotations.end()),
+  const auto& peaks = run["peaks"];
+  return {resultant,
+          peaks["base_shear"]["value"].get<double>(),
+          100.0 * peaks["largest_drift_ratio"].get<double>(),
+          peaks["floor_acceleration"]["value"].get<double>() / 9806.65,
+          std::abs(run["residual_isolator_displacement"].get<double>()),
+          peaks["floor_rotation"]["value"].get<double>(),
           run["torsional_amplification"].get<double>()};
 }
+
+constexpr std::size_t kQuantities = 7;
+constexpr std::size_t kFileColumn = 4 + 2 * kQuantities + 1;
 
 TEST(PlanCompareCommand, SummaryIsWhatIsolabRunPrintsForEachVariantWhoeverRunsIt) {
   const fs::path folder = FreshTestDirectory();
@@ -91,29 +98,30 @@ TEST(PlanCompareCommand, SummaryIsWhatIsolabRunPrintsForEachVariantWhoeverRunsIt
 
   const auto rows = CsvRows(one / "summary.csv");
   ASSERT_EQ(rows.size(), 1u + 2u + 2u * 2u);
-  EXPECT_EQ(rows[0][4], "resultant_isolator_displacement [mm]");
-  EXPECT_EQ(rows[0][5], "resultant_base_shear [kN]");
-  EXPECT_EQ(rows[0][6], "floor_rotation [rad]");
-  EXPECT_EQ(rows[0][7], "torsional_amplification [1]");
+  EXPECT_EQ(rows[0][4], "isolator_displacement [mm]");
+  EXPECT_EQ(rows[0][5], "base_shear [kN]");
+  EXPECT_EQ(rows[0][9], "floor_rotation [rad]");
+  EXPECT_EQ(rows[0][10], "torsional_amplification [1]");
+  EXPECT_EQ(rows[0][kFileColumn], "file");
   // The bundled model's own excitation is this pair at scale 0.6: `isolab run` on each model
   // runs what the study ran.
   for (const auto& [row, model] : {std::pair{1, kPlan}, std::pair{2, symmetric.string()}}) {
     ASSERT_EQ(rows[row][3], "completed") << rows[row][0];
     EXPECT_EQ(rows[row][1], "fwn_firm_seed1");
-    EXPECT_TRUE(fs::exists(one / rows[row][13])) << rows[row][13];
-    EXPECT_EQ(rows[row][14], "g");
+    EXPECT_TRUE(fs::exists(one / rows[row][kFileColumn])) << rows[row][kFileColumn];
+    EXPECT_EQ(rows[row][kFileColumn + 1], "g");
     const Outcome run = RunIsolab("run " + model + " --json -o " + (folder / "run.h5").string());
     ASSERT_EQ(run.exit_code, 0) << run.output;
     const std::vector<double> expected = RunQuantities(nlohmann::json::parse(run.output));
-    for (std::size_t q = 0; q < 4; ++q) {
+    for (std::size_t q = 0; q < kQuantities; ++q) {
       EXPECT_EQ(std::stod(rows[row][4 + q]), expected[q]) << rows[row][0] << " " << rows[0][4 + q];
     }
   }
   // The eccentric building twists; its symmetric twin, under the same pair, does not.
-  EXPECT_GT(std::stod(rows[1][7]), 1.01);
-  EXPECT_GT(std::stod(rows[1][6]), 1e-4);
-  EXPECT_LT(std::stod(rows[2][6]), 1e-12);
-  EXPECT_NEAR(std::stod(rows[2][7]), 1.0, 1e-9);
+  EXPECT_GT(std::stod(rows[1][10]), 1.01);
+  EXPECT_GT(std::stod(rows[1][9]), 1e-4);
+  EXPECT_LT(std::stod(rows[2][9]), 1e-12);
+  EXPECT_NEAR(std::stod(rows[2][10]), 1.0, 1e-9);
   EXPECT_GT(std::stod(rows[2][4]), 100.0);  // a real response, in mm
 
   if (RunShell("command -v mpirun").exit_code != 0) return;  // Debian: openmpi-bin
@@ -153,15 +161,15 @@ TEST(PlanCompareCommand, IsolationVariantIsTheBuildingWithThoseLawsAtEveryIsolat
       RunIsolab("run " + bilinear.string() + " --json -o " + (folder / "run.h5").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::vector<double> expected = RunQuantities(nlohmann::json::parse(run.output));
-  for (std::size_t q = 0; q < 4; ++q) {
+  for (std::size_t q = 0; q < kQuantities; ++q) {
     EXPECT_EQ(rows[1][4 + q], rows[2][4 + q]) << rows[0][4 + q];
     EXPECT_EQ(std::stod(rows[1][4 + q]), expected[q]) << rows[0][4 + q];
   }
   EXPECT_GT(expected[0], 100.0);  // mm: the bilinear bearings move
   // The variant's results file says what replaced the isolation.
-  EXPECT_NE(
-      ReadText(folder / "out" / rows[1][13]).find("variant by_isolation: the isolation above"),
-      std::string::npos);
+  EXPECT_NE(ReadText(folder / "out" / rows[1][kFileColumn])
+                .find("variant by_isolation: the isolation above"),
+            std::string::npos);
 }
 
 // Each bad study exits 2 with "<study>:<line>:<column>: <key path>: <what>", and runs nothing.
@@ -171,7 +179,6 @@ TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
   const std::string degrading =
       "  - {name: bilinear, isolation: {components: [{type: degrading_bhm2, k0: 2, k1: 0.25, "
       "uy: 20, loss: 0.1, slip_scale: 500}]}}\n";
-  const std::string fixed_base = "  - {name: fixed, fixed_base: true}\n";
   const std::string nan_angle =
       Pair("fwn_firm_seed1.at2", "h2_fwn_firm_seed3.at2", ", angle: .nan");
   struct Case {
@@ -186,20 +193,14 @@ TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
        H2Location(Pair("fwn_firm_seed1.at2", "elcentro_1940_ns.at2")) + "'" + kRecords +
            "elcentro_1940_ns.at2' has a step of 0.02 s, h1 '" + kRecords +
            "fwn_firm_seed1.at2' 0.01 s; a pair must share one step"},
-      {eccentric, "  - " + kRecords + "fwn_firm_seed1.at2\n",
-       ":5:5: records[0]: one record cannot drive the plan model"},
       {degrading, kFirmPair,
        ":3:33: variants[0].isolation: degrading_bhm2 has no coupled bidirectional form: every "
-       "isolator of a plan building takes these laws as coupled laws"},
-      {fixed_base, kFirmPair,
-       ":3:" + std::to_string(fixed_base.find("true") + 1) +
-           ": variants[0].fixed_base: applies to a one-direction building"},
+       "isolator of a building in plan takes these laws as coupled laws"},
       {"  - {name: one_direction, model: " + kRoot + "/models/buildings/five_story_table9.yaml}\n",
        kFirmPair,
        ":3:34: variants[0].model: '" + kRoot +
-           "/models/buildings/five_story_table9.yaml' is a one-direction model and "
-           "the building '" +
-           kPlan + "' a plan one"},
+           "/models/buildings/five_story_table9.yaml' moves in one direction and the building '" +
+           kPlan + "' in plan (x, y and rotation)"},
       {eccentric, nan_angle,
        ":5:" + std::to_string(nan_angle.find(".nan") + 1) +
            ": records[0].angle: '.nan' is not a finite number"},
@@ -222,10 +223,29 @@ TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
   const Outcome run =
       RunIsolab("compare " + study.string() + " -o " + (folder / "out").string(), true);
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.output.find(study.string() + ":4:5: records[0]: a pair of records drives plan "
-                                             "models"),
+  EXPECT_NE(run.output.find(study.string() + ":4:5: records[0]: a pair of records drives a "
+                                             "building in plan"),
             std::string::npos)
       << run.output;
+}
+
+// A building in plan takes a single record (along x) and a fixed-base variant, as a building in
+// one direction does: the fixed base has no isolator and no base level.
+TEST(PlanCompareCommand, SingleRecordsAndAFixedBaseRun) {
+  const fs::path folder = FreshTestDirectory();
+  const fs::path study =
+      WriteStudy(folder, "  - {name: eccentric}\n  - {name: fixed, fixed_base: true}\n",
+                 "  - " + kRecords + "fwn_firm_seed1.at2\n");
+  const Outcome compare =
+      RunIsolab("compare " + study.string() + " -q -o " + (folder / "out").string());
+  ASSERT_EQ(compare.exit_code, 0) << compare.output;
+  const auto rows = CsvRows(folder / "out" / "summary.csv");
+  ASSERT_GE(rows.size(), 3u);
+  EXPECT_EQ(rows[1][3], "completed");
+  EXPECT_EQ(rows[2][3], "completed");
+  EXPECT_GT(std::stod(rows[1][4]), 10.0);  // the isolators move
+  EXPECT_TRUE(rows[2][4].empty());          // a fixed base has none
+  EXPECT_GT(std::stod(rows[2][5]), std::stod(rows[1][5]));  // and takes more base shear
 }
 
 }  // namespace

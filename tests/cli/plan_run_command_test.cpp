@@ -71,14 +71,27 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
   const auto p = nlohmann::json::parse(plan.output);
   const double expected = o["peaks"]["isolator_displacement"]["value"];
   ASSERT_GT(expected, 100.0);
+  ASSERT_EQ(p["isolators"].size(), 4u);
   for (const auto& [name, isolator] : p["isolators"].items()) {
-    EXPECT_NEAR(isolator["peak_resultant"].get<double>(), expected, 1e-9 * expected) << name;
+    EXPECT_NEAR(isolator["displacement"]["value"].get<double>(), expected, 1e-9 * expected)
+        << name;
   }
-  EXPECT_NEAR(p["peak_centre_resultant"].get<double>(), expected, 1e-9 * expected);
+  EXPECT_NEAR(p["peaks"]["base_centre_displacement"]["value"].get<double>(), expected,
+              1e-9 * expected);
   EXPECT_NEAR(p["torsional_amplification"].get<double>(), 1.0, 1e-12);
   // Four bearings, each the one-direction model's tributary bearing: four times its base shear.
-  EXPECT_NEAR(p["peak_base_shear"].get<double>(),
+  EXPECT_NEAR(p["peaks"]["base_shear"]["value"].get<double>(),
               4.0 * o["peaks"]["base_shear"]["value"].get<double>(), 1e-8 * 4.0 * expected);
+  // The superstructure too: the same drifts, the same roof acceleration.
+  for (const char* peak : {"story_drift", "roof_absolute_acceleration", "first_story_shear"}) {
+    const double one_peak = o["peaks"][peak]["value"];
+    const double scale = std::string(peak) == "first_story_shear" ? 4.0 : 1.0;
+    EXPECT_NEAR(p["peaks"][peak]["value"].get<double>(), scale * one_peak, 1e-8 * scale * one_peak)
+        << peak;
+  }
+  EXPECT_NEAR(p["residual_isolator_displacement"].get<double>(),
+              o["residual_isolator_displacement"].get<double>(),
+              1e-8 * expected);
   EXPECT_NEAR(p["energy_balance_error"].get<double>(), o["energy_balance_error"].get<double>(),
               1e-9);
 }
@@ -92,7 +105,7 @@ TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
   const std::vector<double> time = Doubles(output, "time");
   const std::vector<double> resultant = Doubles(output, "isolator/resultant");
   const std::vector<double> displacement = Doubles(output, "isolator/displacement");
-  const std::vector<double> peaks = Doubles(output, "isolator/peak_resultant");
+  const std::vector<double> peaks = Doubles(output, "peaks/isolators/displacement");
   ASSERT_EQ(peaks.size(), 4u);
   ASSERT_EQ(resultant.size(), 4 * time.size());
   ASSERT_EQ(displacement.size(), 8 * time.size());
@@ -111,22 +124,33 @@ TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
   const double amplification = summary["torsional_amplification"];
   EXPECT_GT(amplification, 1.01);
   EXPECT_DOUBLE_EQ(*std::max_element(peaks.begin(), peaks.end()),
-                   amplification * summary["peak_centre_resultant"].get<double>());
-  EXPECT_EQ(Doubles(output, "floor/rotation").size(), 6 * time.size());
-  EXPECT_EQ(Doubles(output, "floor/displacement").size(), 12 * time.size());
+                   amplification *
+                       summary["peaks"]["base_centre_displacement"]["value"].get<double>());
+  EXPECT_EQ(Doubles(output, "rotation").size(), 6 * time.size());
+  EXPECT_EQ(Doubles(output, "displacement").size(), 12 * time.size());
+  EXPECT_EQ(Doubles(output, "story/drift").size(), 10 * time.size());
+  EXPECT_EQ(Doubles(output, "story/twist").size(), 5 * time.size());
   EXPECT_EQ(Doubles(output, "energy/hysteretic").size(), time.size());
 }
 
-TEST(PlanRunCommand, RefusesOneDirectionOptionsAndCsv) {
-  const std::string out = " -o " + OwnTestFile("x.h5").string();
-  const Outcome record = RunIsolab(
-      "run " + kPlan + " --record " + kRoot + "/ground_motions/pulse_tp2.at2" + out, true);
-  EXPECT_EQ(record.exit_code, 2);
-  EXPECT_NE(record.output.find("--record: does not apply to a plan model"), std::string::npos)
-      << record.output;
-  const Outcome csv = RunIsolab("run " + kPlan + " -o " + OwnTestFile("x.csv").string(), true);
-  EXPECT_EQ(csv.exit_code, 2);
-  EXPECT_NE(csv.output.find("HDF5 only"), std::string::npos) << csv.output;
+// A building in plan takes what a one-direction building takes: its own record replaced
+// (--record, and --record-h2), CSV results.
+TEST(PlanRunCommand, TakesReplacedRecordsAndWritesCsv) {
+  const std::string record = kRoot + "/ground_motions/pulse_tp2.at2";
+  const Outcome one = RunIsolab("run " + kPlan + " --record " + record + " --json -o " +
+                                OwnTestFile("x.h5").string());
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  const auto summary = nlohmann::json::parse(one.output);
+  EXPECT_EQ(summary["record"].get<std::string>(), record);
+  EXPECT_FALSE(summary.contains("h2"));
+  const Outcome h2_alone = RunIsolab("run " + kPlan + " --record-h2 " + record, true);
+  EXPECT_EQ(h2_alone.exit_code, 2);
+  EXPECT_NE(h2_alone.output.find("--record-h2: needs --record"), std::string::npos)
+      << h2_alone.output;
+  const std::string csv = OwnTestFile("x.csv").string();
+  const Outcome written = RunIsolab("run " + kPlan + " --summary-only -o " + csv);
+  EXPECT_EQ(written.exit_code, 0) << written.output;
+  EXPECT_NE(ReadText(csv).find("# peak floor_rotation: "), std::string::npos);
 }
 
 // The bundled plan model on lighter bearings (one coupled BHM2 each, so that IDA's run takes a
@@ -155,9 +179,10 @@ TEST(PlanRunCommand, IdaAgreesWithNewmarkAndReportsItself) {
   const auto i = nlohmann::json::parse(ida.output);
   const auto n = nlohmann::json::parse(newmark.output);
   for (const auto& [name, isolator] : i["isolators"].items()) {
-    const double peak = isolator["peak_resultant"];
+    const double peak = isolator["displacement"]["value"];
     EXPECT_GT(peak, 50.0) << name;  // far past the bearings' yield
-    EXPECT_NEAR(n["isolators"][name]["peak_resultant"].get<double>() / peak, 1.0, 0.002) << name;
+    EXPECT_NEAR(n["isolators"][name]["displacement"]["value"].get<double>() / peak, 1.0, 0.002)
+        << name;
   }
   EXPECT_NEAR(n["torsional_amplification"].get<double>(),
               i["torsional_amplification"].get<double>(), 0.002);

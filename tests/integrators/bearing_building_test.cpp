@@ -61,7 +61,7 @@ structure::Structure Building(const Device& device) {
   building.stories = {{"s1", 0.025, 3200, story}, {"s2", 0.025, 3200, story}};
   building.damping.kind = structure::SuperstructureDamping::Kind::kRayleigh;
   building.damping.rayleigh_ratios[0] = building.damping.rayleigh_ratios[1] = 0.02;
-  return structure::BuildShearBuilding(building);
+  return structure::BuildShearBuilding(building).structure;
 }
 
 // A two-frequency ground acceleration (mm/s^2, peak about 0.2 g) over 8 s, sampled at 0.01 s.

@@ -31,7 +31,7 @@ TEST(BoucWenBenchmark, SineSweepWithinAQuarterPercentRms) {
       {"z", LawParameters::Make(LawType::kBoucWen, ParameterForm::kMathematical,
                                 std::vector<double>{5e4, 1e3, 0.8, -1.1, 1.0})},
   });
-  const auto sdof = structure::BuildSdof(2.0, 10.0, restoring);
+  const auto sdof = structure::BuildSdof(2.0, 10.0, restoring).structure;
   const double record_dt = 1.0 / 750.0;
   Excitation excitation;
   AppliedForce force{0, {record_dt, {}}};

@@ -41,7 +41,7 @@ TEST(ChopraCaseC, LinearSdofPeakDisplacements) {
   for (const Case& c : {Case{0.5, 0.02, 2.676}, Case{1.0, 0.02, 5.971}, Case{2.0, 0.02, 7.471},
                         Case{2.0, 0.0, 9.919}, Case{2.0, 0.05, 5.375}}) {
     const double m = 1.0, w = 2 * std::numbers::pi / c.period;
-    const auto sdof = structure::BuildSdof(m, 2 * c.zeta * w * m, Linear(w * w * m));
+    const auto sdof = structure::BuildSdof(m, 2 * c.zeta * w * m, Linear(w * w * m)).structure;
     ResponseHistory response;
     // dt = 0.005 s, a quarter of the record's step (linear between samples), output at 0.02 s
     // samples as the reference takes its peak.
@@ -63,7 +63,7 @@ TEST(ChopraCaseE, FiveStoryFramePeaksMatchTheModalSolution) {
     building.stories.push_back({"story", 100.0 / kGravity, 144.0, Linear(31.54)});
   building.damping.kind = structure::SuperstructureDamping::Kind::kModal;
   building.damping.modal_ratios = {0.05};
-  const auto frame = structure::BuildShearBuilding(building);
+  const auto frame = structure::BuildShearBuilding(building).structure;
   const Excitation excitation = ElCentro();
   ResponseHistory response;
   const int steps = static_cast<int>(excitation.duration() / 0.005);

@@ -10,7 +10,7 @@
 #include <numbers>
 
 #include "integrators/chopra_chapter5.h"
-#include "isolab/analysis/analysis_setup.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/integrators/newmark.h"
@@ -36,14 +36,14 @@ IdaOptions Tolerance(double rtol) {
 
 structure::Structure CaseB() {
   return structure::BuildSdof(kMass, kDamping,
-                              hysteresis::SingleLaw(LawType::kElastoplastic, {kStiffness, 0.75}));
+                              hysteresis::SingleLaw(LawType::kElastoplastic, {kStiffness, 0.75})).structure;
 }
 
 TEST(Ida, MatchesTheClosedFormOfALinearSdofToItsTolerance) {
   // Undamped SDOF under a step force p0 from rest: u = p0/k (1 - cos w t).
   const double m = 1.0, k = 4 * std::numbers::pi * std::numbers::pi, p0 = 3.0;
   const auto sdof =
-      structure::BuildSdof(m, 0.0, hysteresis::SingleLaw(LawType::kLinearSpring, {k}));
+      structure::BuildSdof(m, 0.0, hysteresis::SingleLaw(LawType::kLinearSpring, {k})).structure;
   Excitation excitation;
   excitation.forces.push_back({0, {2.0, {p0, p0}}});
   ResponseHistory response;
@@ -94,11 +94,11 @@ TEST(Ida, AgreesWithNewmarkOnTheIsolatedBuildingUnderElCentro) {
   const model::ModelFile model =
       model::LoadModelFile(ISOLAB_SOURCE_DIR "/models/buildings/five_story_table9.yaml");
   analysis::RunOverrides overrides;
-  overrides.record = record.string();
+  overrides.records.push_back({.file = record.string()});
   overrides.scale = 1.0;
   overrides.dt = 0.001;
   overrides.free_vibration = model::FreeVibration{false, 0.0};  // the record alone
-  const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(model, overrides);
+  const analysis::Problem setup = analysis::Prepare(model, overrides);
   ResponseHistory ida, newmark;
   const RunSummary ida_summary =
       RunIda(setup.structure, setup.excitation, setup.grid, Tolerance(1e-8), &ida);

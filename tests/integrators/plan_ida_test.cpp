@@ -1,4 +1,4 @@
-// IDA on plan models (src/integrators/plan_rate_form_system.h, ida.h):
+// IDA on buildings in plan (src/integrators/rate_form_system.h, ida.h):
 //  * the plan rate-form system's Jacobian against central differences of its residual, on an
 //    eccentric building whose four isolators carry a coupled series law (THM1), a coupled parallel
 //    law with a dashpot (BHM2), a friction pendulum and a heated lead-rubber bearing, at rest
@@ -19,7 +19,7 @@
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/structure/plan_building.h"
-#include "plan_rate_form_system.h"
+#include "rate_form_system.h"
 
 namespace isolab::integrators {
 namespace {
@@ -42,7 +42,7 @@ hysteresis::ParallelAssembly Linear(double k) {
 
 // kN, mm, s (1 t = 1e-3 kN s^2/mm). Two stories of 100 t on a 20 m x 12 m plan; centres of mass
 // and stiffness off the plan's centre in both directions; Rayleigh damping of the stories.
-structure::PlanStructure MixedIsolatorBuilding() {
+structure::LaidOutStructure MixedIsolatorBuilding() {
   const Vec2 centre{10000.0, 6000.0}, mass_at = centre + Vec2{800.0, -500.0};
   const double mass = 0.1, inertia = mass * (20000.0 * 20000.0 + 12000.0 * 12000.0) / 12.0;
   structure::PlanBuilding building;
@@ -89,10 +89,12 @@ SampledHistory Shaking(double amplitude, double f1, double f2) {
   return history;
 }
 
-TEST(PlanRateFormSystem, JacobianIsTheDerivativeOfTheResidual) {
-  const structure::PlanStructure building = MixedIsolatorBuilding();
-  const PlanExcitation excitation{Shaking(1500.0, 0.8, 2.1), Shaking(1000.0, 0.65, 1.9)};
-  PlanRateFormSystem system(building, excitation);
+TEST(RateFormSystem, JacobianIsTheDerivativeOfTheResidualOfABuildingInPlan) {
+  const structure::LaidOutStructure laid_out = MixedIsolatorBuilding();
+  const structure::Structure& building = laid_out.structure;
+  const Excitation excitation = Excitation::Horizontal(
+      laid_out.layout, Shaking(1500.0, 0.8, 2.1), Shaking(1000.0, 0.65, 1.9));
+  RateFormSystem system(building, excitation);
   const int n = system.size(), dofs = building.dofs();
   ASSERT_EQ(n, 2 * dofs + 2 + 2 + 2 + 3);  // THM1, BHM2, FPS: a slider each; LRB: and w
   // Floors displaced by up to 60 mm and 3e-3 rad (past every slider's strength), moving away
@@ -131,24 +133,24 @@ TEST(PlanRateFormSystem, JacobianIsTheDerivativeOfTheResidual) {
 struct Discrepancy {
   double isolator_peak = 0.0, rotation_peak = 0.0, translation_rms = 0.0, rotation_rms = 0.0;
 };
-Discrepancy Compare(const structure::PlanStructure& building, const ResponseHistory& ida,
+Discrepancy Compare(const structure::Structure& building, const ResponseHistory& ida,
                     const ResponseHistory& newmark) {
   Discrepancy d;
   const std::size_t dofs = building.dofs();
-  for (std::size_t i = 0; i < building.isolators().size(); ++i) {
+  for (std::size_t i = 0; i < building.coupled_members().size(); ++i) {
     double peak_ida = 0.0, peak_newmark = 0.0;
     for (int row = 0; row < ida.rows_written; ++row) {
       peak_ida =
           std::max(peak_ida,
-                   Norm(building.IsolatorDeformation(i, {ida.displacement.row(row).data(), dofs})));
-      peak_newmark = std::max(peak_newmark, Norm(building.IsolatorDeformation(
+                   Norm(building.CoupledDeformation(i, {ida.displacement.row(row).data(), dofs})));
+      peak_newmark = std::max(peak_newmark, Norm(building.CoupledDeformation(
                                                 i, {newmark.displacement.row(row).data(), dofs})));
     }
     EXPECT_GT(peak_ida, 100.0);  // every isolator far past its yield
     d.isolator_peak = std::max(d.isolator_peak, std::abs(peak_newmark / peak_ida - 1.0));
   }
   double rotation_error = 0.0, rotation_norm = 0.0;
-  for (int floor = 0; floor < building.floors(); ++floor) {
+  for (int floor = 0; floor < building.dofs() / structure::kPlanDofsPerFloor; ++floor) {
     const auto r_ida = ida.displacement.col(3 * floor + 2);
     const auto r_newmark = newmark.displacement.col(3 * floor + 2);
     EXPECT_GT(r_ida.cwiseAbs().maxCoeff(), 5e-3);  // the eccentricity twists every floor
@@ -175,8 +177,10 @@ Discrepancy Compare(const structure::PlanStructure& building, const ResponseHist
 // (docs/bidirectional.md), while IDA integrates the flow rule to its tolerance. So the test
 // asserts the levels at 0.5 ms and that halving the step halves the difference.
 TEST(PlanIda, AgreesWithNewmarkOnAnEccentricBuildingOnMixedIsolators) {
-  const structure::PlanStructure building = MixedIsolatorBuilding();
-  const PlanExcitation excitation{Shaking(1500.0, 0.8, 2.1), Shaking(1000.0, 0.65, 1.9)};
+  const structure::LaidOutStructure laid_out = MixedIsolatorBuilding();
+  const structure::Structure& building = laid_out.structure;
+  const Excitation excitation = Excitation::Horizontal(
+      laid_out.layout, Shaking(1500.0, 0.8, 2.1), Shaking(1000.0, 0.65, 1.9));
   const TimeGrid fine{0.0005, 20000, 20}, coarse{0.001, 10000, 10};  // 10 s, rows every 10 ms
   IdaOptions tight;
   tight.relative_tolerance = 1e-8;

@@ -1,4 +1,4 @@
-// Newmark on plan models (plan_building.h, plan_structure.h):
+// Newmark on buildings in plan (plan_building.h, structure.h):
 //  * the tangent of an eccentric building on coupled, uncoupled and linear isolators against
 //    central differences of its force, in every phase the sliders pass through;
 //  * a symmetric plan building under one component equals the one-direction building
@@ -90,7 +90,7 @@ structure::Structure OneDirection(int stories) {
   building.isolation = ParallelAssembly(
       {{"a", Bilinear(0.25)}, {"b", Bilinear(0.25)}, {"c", Bilinear(0.25)}, {"d", Bilinear(0.25)}});
   for (int s = 0; s < stories; ++s) building.stories.push_back({"s", 0.1, 3000, Linear(120.0)});
-  return structure::BuildShearBuilding(building);
+  return structure::BuildShearBuilding(building).structure;
 }
 
 // The stiffness of Building(stories, false, mass_offset, stiffness_offset, true), dense and
@@ -129,13 +129,13 @@ Eigen::MatrixXd LinearStiffness(int stories, Vec2 mass_offset, Vec2 stiffness_of
   return k;
 }
 
-TEST(PlanStructure, TangentMatchesCentralDifferencesOfTheForce) {
+TEST(PlanBuilding, TangentMatchesCentralDifferencesOfTheForce) {
   // Coupled and uncoupled bilinear isolators, and linear ones, whose terms (as the stories') only
   // ConstantTangent writes.
   for (const auto& [uncoupled, linear] : {std::pair{false, false}, {true, false}, {false, true}}) {
     PlanBuilding description = Building(2, uncoupled, {400, -300}, {-500, 200}, linear);
     description.damping = {true, {1.0, 0.2}, {0.05, 0.05}};
-    const structure::PlanStructure s = structure::BuildPlanBuilding(description);
+    const structure::Structure s = structure::BuildPlanBuilding(description).structure;
     const int n = s.dofs();
     std::vector<hysteresis::LawState> committed(s.law_count()), trial(s.law_count());
     std::vector<hysteresis::LawResponse> responses(s.law_count());
@@ -177,14 +177,16 @@ TEST(PlanNewmark, SymmetricBuildingUnderOneComponentEqualsTheOneDirectionModel) 
   const SampledHistory record = Shaking(3000.0, 0.4, 1.7);
   const TimeGrid grid{0.005, 1200, 1};
   ResponseHistory one;
-  ASSERT_TRUE(RunNewmark(OneDirection(3), Excitation{record, {}}, grid, {}, &one).ok());
+  ASSERT_TRUE(RunNewmark(OneDirection(3), Excitation::Uniform(record), grid, {}, &one).ok());
   const double peak = one.displacement.col(0).cwiseAbs().maxCoeff();
   ASSERT_GT(peak, 60.0);  // well past the isolators' yield (20 mm)
   for (const bool uncoupled : {false, true}) {
-    const structure::PlanStructure plan =
+    const structure::LaidOutStructure plan =
         structure::BuildPlanBuilding(Building(3, uncoupled, {}, {}));
     ResponseHistory two;
-    ASSERT_TRUE(RunNewmark(plan, PlanExcitation{record, {}}, grid, {}, &two).ok());
+    ASSERT_TRUE(RunNewmark(plan.structure, Excitation::Horizontal(plan.layout, record), grid, {},
+                           &two)
+                    .ok());
     for (int floor = 0; floor < 4; ++floor) {
       const double error =
           (two.displacement.col(3 * floor) - one.displacement.col(floor)).cwiseAbs().maxCoeff();
@@ -200,8 +202,9 @@ TEST(PlanNewmark, SymmetricBuildingUnderOneComponentEqualsTheOneDirectionModel) 
 }
 
 TEST(PlanNewmark, EccentricLinearBuildingMatchesItsModalSolution) {
-  const structure::PlanStructure plan =
+  const structure::LaidOutStructure laid_out =
       structure::BuildPlanBuilding(Building(2, false, {800, -500}, {-600, 300}, true));
+  const structure::Structure& plan = laid_out.structure;
   const int n = plan.dofs();
   const Eigen::MatrixXd k = LinearStiffness(2, {800, -500}, {-600, 300});
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(
@@ -211,11 +214,12 @@ TEST(PlanNewmark, EccentricLinearBuildingMatchesItsModalSolution) {
   // Two components at 30 degrees to the axes, different spectra.
   const SampledHistory h1 = Shaking(2500.0, 0.45, 1.3), h2 = Shaking(1800.0, 0.6, 2.2);
   const double angle = kPi / 6;
-  PlanExcitation excitation{h1, h2};
+  SampledHistory x = h1, y = h2;
   for (std::size_t k = 0; k < h1.values.size(); ++k) {
-    excitation.x.values[k] = std::cos(angle) * h1.values[k] - std::sin(angle) * h2.values[k];
-    excitation.y.values[k] = std::sin(angle) * h1.values[k] + std::cos(angle) * h2.values[k];
+    x.values[k] = std::cos(angle) * h1.values[k] - std::sin(angle) * h2.values[k];
+    y.values[k] = std::sin(angle) * h1.values[k] + std::cos(angle) * h2.values[k];
   }
+  const Excitation excitation = Excitation::Horizontal(laid_out.layout, x, y);
   // Modal superposition: q_n'' + w_n^2 q_n = -phi_n^T M (r_x a_gx + r_y a_gy), exact per step.
   const int samples = static_cast<int>(h1.values.size());
   Eigen::MatrixXd exact = Eigen::MatrixXd::Zero(samples, n);
@@ -230,8 +234,8 @@ TEST(PlanNewmark, EccentricLinearBuildingMatchesItsModalSolution) {
     const auto c = spectra::ExactStepCoefficients::For(w, 0.0, 0.01);
     double q = 0.0, q_rate = 0.0;
     for (int k = 1; k < samples; ++k) {
-      const double p0 = -(gx * excitation.x.values[k - 1] + gy * excitation.y.values[k - 1]);
-      const double p1 = -(gx * excitation.x.values[k] + gy * excitation.y.values[k]);
+      const double p0 = -(gx * x.values[k - 1] + gy * y.values[k - 1]);
+      const double p1 = -(gx * x.values[k] + gy * y.values[k]);
       const double q_next = c.a * q + c.b * q_rate + c.c * p0 + c.d * p1;
       q_rate = c.a_v * q + c.b_v * q_rate + c.c_v * p0 + c.d_v * p1;
       q = q_next;

@@ -43,7 +43,7 @@ structure::Structure EveryKernelBuilding() {
   building.stories = {{"s1", 25.0, 3200, story}, {"s2", 25.0, 3200, story}};
   building.damping.kind = structure::SuperstructureDamping::Kind::kRayleigh;
   building.damping.rayleigh_ratios[0] = building.damping.rayleigh_ratios[1] = 0.02;
-  return structure::BuildShearBuilding(building);
+  return structure::BuildShearBuilding(building).structure;
 }
 
 // A two-frequency ground acceleration (mm/s^2) over 8 s, sampled at 0.01 s.

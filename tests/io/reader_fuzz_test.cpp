@@ -29,7 +29,6 @@
 #include "isolab/io/shake_table_file.h"
 #include "isolab/model/fit_spec_file.h"
 #include "isolab/model/model_file.h"
-#include "isolab/model/plan_model_file.h"
 #include "isolab/model/study_file.h"
 #include "own_test_file.h"
 
@@ -208,7 +207,7 @@ TEST(ReaderFuzz, PlanModelFiles) {
   const auto corpus = Corpus({"models", "tests"}, ".yaml", is_plan);
   ASSERT_GE(corpus.size(), 1u);
   ExpectNoFindings(
-      Fuzz(corpus, "plan_model", [](const std::string& path) { model::LoadPlanModelFile(path); }));
+      Fuzz(corpus, "plan_model", [](const std::string& path) { model::LoadModelFile(path); }));
 }
 
 TEST(ReaderFuzz, Records) {

@@ -91,23 +91,22 @@ TEST_F(StudyFileTest, BundledStudyBuildsEachVariantOnTheBuilding) {
 
 TEST_F(StudyFileTest, BundledPlanStudyHasPairsAtItsAngles) {
   const StudyFile study = LoadStudyFile(Source("models/studies/five_story_plan_angles.yaml"));
-  EXPECT_TRUE(study.plan);
+  EXPECT_EQ(study.directions, 2);
+  EXPECT_TRUE(study.rotations);
   ASSERT_EQ(study.variants.size(), 1u);
-  ASSERT_TRUE(study.variants[0].plan.has_value());
-  EXPECT_EQ(study.variants[0].plan->building.isolators.size(), 4u);
-  EXPECT_FALSE(study.variants[0].model.structure.has_value());
+  ASSERT_TRUE(study.variants[0].model.structure.has_value());
+  EXPECT_EQ(study.variants[0].model.structure->plan.isolators.size(), 4u);
   ASSERT_EQ(study.records.size(), 4u);
   const double angles[] = {0, 45, 90, 135};
   for (std::size_t r = 0; r < 4; ++r) {
     const StudyRecord& record = study.records[r];
-    ASSERT_TRUE(record.pair.has_value()) << record.name;
+    ASSERT_EQ(record.components.size(), 2u) << record.name;
     EXPECT_EQ(record.name, "firm_at" + std::to_string(static_cast<int>(angles[r])));
-    EXPECT_EQ(record.pair->angle, angles[r]);
-    // Resolved against the study's folder, as a one-direction study's records are.
-    EXPECT_EQ(record.pair->h1.file, Source("ground_motions/fwn_firm_seed1.at2"));
-    EXPECT_EQ(record.pair->h2->file, Source("ground_motions/h2_fwn_firm_seed3.at2"));
-    EXPECT_EQ(record.pair->h1.scale, 1.0);
-    EXPECT_EQ(record.path, record.pair->h1.file);
+    EXPECT_EQ(record.angle, angles[r]);
+    // Resolved against the study's folder, as single records are.
+    EXPECT_EQ(record.components[0].file, Source("ground_motions/fwn_firm_seed1.at2"));
+    EXPECT_EQ(record.components[1].file, Source("ground_motions/h2_fwn_firm_seed3.at2"));
+    EXPECT_EQ(record.components[0].scale, 1.0);
   }
   EXPECT_EQ(study.scales, (std::vector<double>{0.6}));
 }
@@ -129,7 +128,7 @@ TEST_F(StudyFileTest, GlobsExpandInByteOrderAndKeepTheListOrder) {
   EXPECT_EQ(study.records[1].name, "B");  // byte order: upper case first, whatever the locale
   EXPECT_EQ(study.records[2].name, "a");
   EXPECT_EQ(study.records[3].name, "b");
-  EXPECT_EQ(study.records[2].path, (directory_ / "records" / "a.at2").string());
+  EXPECT_EQ(study.records[2].components[0].file, (directory_ / "records" / "a.at2").string());
   EXPECT_EQ(study.output_directory, "out");
 }
 
@@ -147,13 +146,13 @@ TEST_F(StudyFileTest, RecordEntriesGiveUnitsStepAndScale) {
       "scales: [1]\nfree_vibration: 20\n");
   const StudyFile study = LoadStudyFile(path);
   ASSERT_EQ(study.records.size(), 2u);
-  EXPECT_EQ(study.records[0].units, "gal");
-  EXPECT_DOUBLE_EQ(study.records[0].dt, 0.01);
-  EXPECT_EQ(study.records[0].scale, 1.5);
+  EXPECT_EQ(study.records[0].components[0].units, "gal");
+  EXPECT_DOUBLE_EQ(study.records[0].components[0].dt, 0.01);
+  EXPECT_EQ(study.records[0].components[0].scale, 1.5);
   EXPECT_NE(study.records[0].entry.find(":4:5: records[0]"), std::string::npos)
       << study.records[0].entry;
-  EXPECT_EQ(study.records[1].units, "");
-  EXPECT_EQ(study.records[1].scale, 1.0);
+  EXPECT_EQ(study.records[1].components[0].units, "");
+  EXPECT_EQ(study.records[1].components[0].scale, 1.0);
   ASSERT_TRUE(study.free_vibration.has_value());
   EXPECT_FALSE(study.free_vibration->automatic);
   EXPECT_EQ(study.free_vibration->duration, 20.0);

@@ -137,7 +137,7 @@ TEST(ExactLinearSdof, AgreesWithNewmarkAtAFineStep) {
       const double omega = 2 * kPi / period;
       const auto sdof = structure::BuildSdof(
           1.0, 2 * zeta * omega,
-          hysteresis::SingleLaw(hysteresis::LawType::kLinearSpring, {omega * omega}));
+          hysteresis::SingleLaw(hysteresis::LawType::kLinearSpring, {omega * omega})).structure;
       integrators::ResponseHistory response;
       ASSERT_TRUE(integrators::RunNewmark(sdof, excitation, {h, steps}, {}, &response).ok());
       const auto exact =

@@ -1,8 +1,9 @@
 // Structure's effective tangent, ConstantTangent's terms plus what Evaluate adds, against central
-// differences of Evaluate's force: connections whose laws have a constant tangent (a linear
-// spring, a trilinear spring with kh1 = kh2 and a finite corner, a dashpot), which only
-// ConstantTangent writes, beside ones that do not (a bilinear isolator, a trilinear spring),
-// grounded and between dofs, with viscous damping.
+// differences of Evaluate's force: members whose laws have a constant tangent (a linear spring, a
+// trilinear spring with kh1 = kh2 and a finite corner, a dashpot), which only ConstantTangent
+// writes, beside ones that do not (a bilinear isolator, a trilinear spring), grounded and between
+// dofs, a member on a combination of three dofs and a coupled law on a 2-vector map of them, with
+// viscous damping.
 #include "isolab/structure/structure.h"
 
 #include <gtest/gtest.h>
@@ -25,32 +26,50 @@ LawParameters Law(LawType type, std::vector<double> mathematical) {
 }
 
 Structure ThreeDofs() {
-  std::vector<Connection> connections;
-  connections.push_back({"isolator", kGround, 0,
-                         ParallelAssembly({{"slider", Law(LawType::kBhm1, {8.0, 1.0, 20.0})},
-                                           {"dashpot", Law(LawType::kDashpot, {0.3})}})});
-  connections.push_back(
-      {"linear story", 0, 1, ParallelAssembly({{"k", Law(LawType::kLinearSpring, {120.0})}})});
+  std::vector<Member> connections;
+  connections.push_back(Member::Between(
+      "isolator", kGround, 0,
+      ParallelAssembly({{"slider", Law(LawType::kBhm1, {8.0, 1.0, 20.0})},
+                        {"dashpot", Law(LawType::kDashpot, {0.3})}})));
+  connections.push_back(Member::Between(
+      "linear story", 0, 1, ParallelAssembly({{"k", Law(LawType::kLinearSpring, {120.0})}})));
   // kh1 = kh2 with a corner at 5: constant although the law is trilinear in form.
   connections.push_back(
-      {"straight trilinear story", 1, 2,
-       ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {90.0, 90.0, 5.0})},
-                         {"c", Law(LawType::kDashpot, {0.1})}})});
-  connections.push_back(
-      {"trilinear brace", 0, 2,
-       ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {40.0, 4.0, 5.0})}})});
+      Member::Between("straight trilinear story", 1, 2,
+                      ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {90.0, 90.0, 5.0})},
+                                        {"c", Law(LawType::kDashpot, {0.1})}})));
+  connections.push_back(Member::Between(
+      "trilinear brace", 0, 2,
+      ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {40.0, 4.0, 5.0})}})));
+  // A member on a weighted combination of three dofs (as a story of a building in plan acts on
+  // translations and rotations), yielding, beside the springs between two dofs.
+  Member combined;
+  combined.name = "combined";
+  combined.dofs = {0, 1, 2, kGround, kGround, kGround};
+  combined.coefficients = {-0.7, 1.3, 0.4, 0.0, 0.0, 0.0};
+  combined.assembly = ParallelAssembly({{"k", Law(LawType::kBhm2, {30.0, 3.0, 2.0})}});
+  connections.push_back(combined);
   const std::vector<Eigen::Triplet<double>> c{
       {0, 0, 0.5}, {1, 1, 0.7}, {0, 1, -0.2}, {1, 0, -0.2}, {2, 2, 0.4}};
   SparseMatrix damping(3, 3);
   damping.setFromTriplets(c.begin(), c.end());
-  return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(connections), damping);
+  // A coupled law on the deformation vector (u_0 - 0.5 u_2, u_1 + 0.8 u_2), as an isolator under
+  // a floor's (u_x, u_y, theta).
+  CoupledMember coupled;
+  coupled.name = "coupled";
+  coupled.dofs = {0, 1, 2, kGround, kGround, kGround};
+  coupled.columns = {Vec2{1.0, 0.0}, Vec2{0.0, 1.0}, Vec2{-0.5, 0.8}, Vec2{}, Vec2{}, Vec2{}};
+  coupled.assembly = hysteresis::PlanAssembly(
+      {{"slider", Law(LawType::kBhm2, {20.0, 2.0, 4.0}), std::nullopt},
+       {"dashpot", Law(LawType::kDashpot, {0.2}), std::nullopt}});
+  return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(connections), {coupled}, damping);
 }
 
 TEST(Structure, ConstantTangentPlusEvaluateIsTheDerivativeOfTheForce) {
   const Structure s = ThreeDofs();
   std::vector<hysteresis::LawState> committed(s.law_count()), trial(s.law_count());
   std::vector<hysteresis::LawResponse> responses(s.law_count());
-  std::vector<double> forces(s.connections().size());
+  std::vector<double> forces(s.force_columns());
   const TangentFactors factors{40.0, 0.7};
   Eigen::VectorXd f(3), f_plus(3), f_minus(3);
   // Elastic everywhere, then past the isolator's yield (20 mm) and both trilinear corners.

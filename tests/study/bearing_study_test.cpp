@@ -5,8 +5,8 @@
 
 #include <cstdio>
 
-#include "isolab/analysis/analysis_setup.h"
-#include "isolab/analysis/run_analysis.h"
+#include "isolab/analysis/problem.h"
+#include "isolab/analysis/solve.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/model/study_file.h"
 
@@ -22,11 +22,16 @@ integrators::ResponseHistory RunVariant(const model::StudyVariant& variant,
                                         model::AnalysisSection analysis,
                                         integrators::RunSummary* summary, double scale = 0.75) {
   analysis::RunOverrides overrides;
-  overrides.record = record.path;
+  overrides.records.push_back({.file = record.components[0].file});
   overrides.scale = scale;
-  const analysis::AnalysisSetup setup = analysis::PrepareAnalysis(variant.model, overrides);
+  const analysis::Problem problem = analysis::Prepare(variant.model, overrides);
   integrators::ResponseHistory response;
-  *summary = analysis::RunAnalysis(analysis, setup, &response);
+  integrators::HistoryRecorder recorder =
+      integrators::RecordHistory(problem.structure, problem.grid, &response);
+  integrators::ResponseObserver* const also[] = {&recorder};
+  analysis::SolveOptions options;
+  options.analysis = analysis;
+  *summary = analysis::Solve(options, problem, also).run;
   return response;
 }
 

@@ -44,9 +44,9 @@ integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_step
 // A record component replacing the model's ground motion.
 struct RecordOverride {
   std::string name = "--record";   // what gives it, for messages ("--record-h2", "records[2]")
-  std::string file;                // relative to the working directory
-  std::optional<io::Record> data;  // a record in memory (a numpy array), instead of a file
-  std::string units;               // its acceleration unit; empty: from its header
+  std::string file{};                // relative to the working directory
+  std::optional<io::Record> data{};  // a record in memory (a numpy array), instead of a file
+  std::string units{};               // its acceleration unit; empty: from its header
   double dt = 0.0;                 // its sampling step (model time unit); 0: from the file
   double scale = 1.0;
   std::string units_given_by = "--units";  // who gives `units` and `dt`, for messages

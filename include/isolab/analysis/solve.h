@@ -21,10 +21,12 @@
 
 namespace isolab::analysis {
 
-// Above this energy balance error (the largest |input - kinetic - damping - elastic -
-// hysteretic| over the largest input energy) a run is a failure: no passive structure integrated
-// faithfully loses a hundredth of its input.
-inline constexpr double kMaxEnergyBalanceError = 1e-2;
+// The energy balance error is the largest |input - kinetic - damping - elastic - hysteretic| over
+// the largest input energy. Above kEnergyBalanceWarning a run is warned about (a coarse step:
+// Chopra's ten-step Case B closes to 1.8e-2); above kMaxEnergyBalanceError it is a failure, since
+// no passive structure integrated faithfully loses a twentieth of its input.
+inline constexpr double kEnergyBalanceWarning = 1e-2;
+inline constexpr double kMaxEnergyBalanceError = 5e-2;
 
 struct SolveOptions {
   model::AnalysisSection analysis;  // the integrator and its options

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/structure/layout.h"
+
 namespace isolab::integrators {
 
 struct SampledHistory {
@@ -41,6 +43,10 @@ struct Excitation {
 
   // One component moving every dof: a one-direction structure's record.
   static Excitation Uniform(SampledHistory acceleration);
+  // The ground's acceleration along x and along y (empty for none; y only where the layout moves
+  // in two directions), moving the dofs the layout's influence vectors name.
+  static Excitation Horizontal(const structure::Layout& layout, SampledHistory x,
+                               SampledHistory y = {});
 
   double duration() const;
   // Effective load p(t) - M sum_c r_c a_c(t) for a lumped mass vector; writes into `load`.

@@ -1,6 +1,7 @@
-// Plan model files (plan_model_file.h) and the plan analysis set-up (plan_analysis.h): what a
-// valid file becomes, and bad input as a located error (file:line:col, key path, what).
-#include "isolab/model/plan_model_file.h"
+// Model files of buildings in plan (the `plan` section, plan_section.cpp) and their preparation
+// for a run (problem.h): what a valid file becomes, and bad input as a located error
+// (file:line:col, key path, what).
+#include "isolab/model/model_file.h"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -10,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "isolab/analysis/plan_analysis.h"
+#include "isolab/analysis/problem.h"
 #include "isolab/core/errors.h"
 #include "own_test_file.h"
 
@@ -63,8 +64,8 @@ std::string Write(const std::string& text, const std::string& name = "plan.yaml"
 std::string ErrorOf(const std::string& text, bool prepare = false) {
   const std::string path = Write(text);
   try {
-    const PlanModelFile model = LoadPlanModelFile(path);
-    if (prepare) analysis::PreparePlanAnalysis(model, {});
+    const ModelFile model = LoadModelFile(path);
+    if (prepare) analysis::Prepare(model, {});
   } catch (const InputError& error) {
     return error.what();
   }
@@ -80,9 +81,10 @@ void ExpectError(const std::string& message, const std::string& location, const 
 
 TEST(PlanModelFile, ReadsFloorsStoriesIsolatorsAndBothComponents) {
   const std::string path = Write(Model());
-  ASSERT_TRUE(IsPlanModelFile(path));
-  const PlanModelFile model = LoadPlanModelFile(path);
-  const structure::PlanBuilding& b = model.building;
+  const ModelFile model = LoadModelFile(path);
+  ASSERT_TRUE(model.structure.has_value());
+  ASSERT_EQ(model.structure->kind, StructureSection::Kind::kPlanBuilding);
+  const structure::PlanBuilding& b = model.structure->plan;
   EXPECT_DOUBLE_EQ(b.base.mass, 0.1);  // 100 t in kN s^2/mm
   EXPECT_DOUBLE_EQ(b.base.rotational_inertia, 0.1 * 6000.0 * 6000.0);
   ASSERT_EQ(b.stories.size(), 2u);
@@ -97,59 +99,39 @@ TEST(PlanModelFile, ReadsFloorsStoriesIsolatorsAndBothComponents) {
   ASSERT_EQ(b.isolators.size(), 2u);
   EXPECT_FALSE(b.isolators[0].assembly.components()[0].law_y.has_value());  // coupled
   EXPECT_TRUE(b.isolators[1].assembly.components()[0].law_y.has_value());   // uncoupled
-  ASSERT_TRUE(model.ground_motion.has_value());
-  EXPECT_DOUBLE_EQ(model.ground_motion->angle, 30.0);
-  EXPECT_EQ(model.isolation_along_x.size(), 2u);
-}
-
-// The kind is read from the top-level keys without parsing the file; the parsed answer is the
-// reference for every layout a model may have.
-TEST(PlanModelFile, IsPlanModelFileAgreesWithTheParsedMapInEveryLayout) {
-  const std::vector<std::pair<std::string, bool>> cases = {
-      {"units: {force: kN}\nplan:\n  base: {}\n", true},
-      {"# plan: in a comment\n%YAML 1.2\n---\nplan :\n  base: {}\n", true},
-      {"\"plan\": {base: {}}\n", true},
-      {"'plan': {}\n", true},
-      {"{units: {force: kN}, plan: {base: {}}}\n", true},
-      {"structure:\n  plan: 3\n", false},  // not top-level
-      {"description: |\n  plan: in a block scalar\nstructure: {}\n", false},
-      {"planned: 1\nplan_b: 2\n", false},
-      {"{structure: {plan: 1}}\n", false},
-      {"{unclosed: \n", false},  // not YAML: the one-direction reader says what is wrong
-      {"", false}};
-  for (const auto& [text, plan] : cases) {
-    const std::string path = Write(text, "kind.yaml");
-    EXPECT_EQ(IsPlanModelFile(path), plan) << text;
-    if (text.find("unclosed") == std::string::npos && !text.empty()) {
-      const YAML::Node root = YAML::LoadFile(path);
-      EXPECT_EQ(root.IsMap() && root["plan"].IsDefined(), plan) << text;
-    }
-  }
+  ASSERT_EQ(model.excitation.ground_motion.size(), 2u);
+  EXPECT_DOUBLE_EQ(model.excitation.angle, 30.0);
+  EXPECT_EQ(model.excitation.ground_motion[1].key, "excitation.ground_motion.h2");
+  EXPECT_EQ(model.isolation.size(), 0u);  // the isolators carry their laws
 }
 
 TEST(PlanModelFile, TurnsThePairToTheBuildingsAxes) {
-  const PlanModelFile model = LoadPlanModelFile(Write(Model()));
-  const analysis::PlanAnalysisSetup setup = analysis::PreparePlanAnalysis(model, {});
+  const ModelFile model = LoadModelFile(Write(Model()));
+  const analysis::Problem setup = analysis::Prepare(model, {});
   // Each component alone, from the same reader, for the rotation by 30 degrees.
-  const PlanModelFile h1_only = LoadPlanModelFile(Write(
+  const ModelFile h1_only = LoadModelFile(Write(
       Model("    h2: {file: " + kGroundMotions + "h2_fwn_firm_seed3.at2, scale: 0.5}\n", "")));
-  const analysis::PlanAnalysisSetup one = analysis::PreparePlanAnalysis(h1_only, {});
-  const PlanModelFile h2_as_h1 = LoadPlanModelFile(
+  const analysis::Problem one = analysis::Prepare(h1_only, {});
+  const ModelFile h2_as_h1 = LoadModelFile(
       Write(Model("    h1: {file: " + kGroundMotions +
                       "fwn_firm_seed1.at2, scale: 0.5}\n"
                       "    h2: {file: " +
                       kGroundMotions + "h2_fwn_firm_seed3.at2, scale: 0.5}\n",
                   "    h1: {file: " + kGroundMotions + "h2_fwn_firm_seed3.at2, scale: 0.5}\n")));
-  const analysis::PlanAnalysisSetup two = analysis::PreparePlanAnalysis(h2_as_h1, {});
+  const analysis::Problem two = analysis::Prepare(h2_as_h1, {});
   const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
-  ASSERT_EQ(setup.excitation.x.values.size(), 3001u);
+  const auto x = [](const analysis::Problem& p) { return p.excitation.ground[0].acceleration; };
+  const auto y = [](const analysis::Problem& p) { return p.excitation.ground[1].acceleration; };
+  ASSERT_EQ(setup.excitation.ground.size(), 2u);
+  ASSERT_EQ(x(setup).values.size(), 3001u);
   for (std::size_t k = 0; k < 3001; k += 50) {
     // one.x = cos * H1, one.y = sin * H1; two.x = cos * H2, two.y = sin * H2.
-    const double h1 = one.excitation.x.values[k] / c, h2 = two.excitation.x.values[k] / c;
-    EXPECT_NEAR(setup.excitation.x.values[k], c * h1 - s * h2, 1e-9);
-    EXPECT_NEAR(setup.excitation.y.values[k], s * h1 + c * h2, 1e-9);
+    const double h1 = x(one).values[k] / c, h2 = x(two).values[k] / c;
+    EXPECT_NEAR(x(setup).values[k], c * h1 - s * h2, 1e-9);
+    EXPECT_NEAR(y(setup).values[k], s * h1 + c * h2, 1e-9);
   }
-  EXPECT_EQ(setup.h2.path, kGroundMotions + "h2_fwn_firm_seed3.at2");
+  ASSERT_EQ(setup.records.size(), 2u);
+  EXPECT_EQ(setup.records[1].path, kGroundMotions + "h2_fwn_firm_seed3.at2");
 }
 
 TEST(PlanModelFile, AnIsolatorOutsideTheFootprintIsALocatedError) {
@@ -204,12 +186,43 @@ TEST(PlanModelFile, APairWithDifferentStepsOrLengthsIsALocatedError) {
               ":17:", "excitation.ground_motion.h2: 1000 samples, h1 has 3001");
 }
 
-TEST(PlanModelFile, OneDirectionCommandsRefuseAPlanModelAndSaySo) {
+TEST(PlanModelFile, APlanIsABuildingOfItsOwnAndCarriesItsIsolatorsLaws) {
+  ExpectError(ErrorOf("structure: {type: sdof, mass: 1}\n" + Model()), ":4:",
+              "plan: a model is either a building in plan (plan) or one in one direction");
+  ExpectError(ErrorOf(Model() + "isolation: {components: [{type: linear_spring, k: 1}]}\n"),
+              ":19:", "isolation: a building in plan carries its isolators' laws");
+}
+
+TEST(PlanModelFile, ASlabOnItsIsolatorsNeedsNoStory) {
+  std::string text = Model();
+  const std::size_t first = text.find("  stories:\n");
+  const std::size_t last = text.find("  isolators:\n");
+  text.erase(first, last - first);
+  const ModelFile model = LoadModelFile(Write(text));
+  EXPECT_TRUE(model.structure->plan.stories.empty());
+  const analysis::Problem problem = analysis::Prepare(model, {});
+  EXPECT_EQ(problem.structure.dofs(), 3);
+  EXPECT_EQ(problem.layout.levels.size(), 1u);
+  EXPECT_TRUE(problem.summary.fixed_base_modes.empty());
+}
+
+TEST(PlanModelFile, ASecondComponentOnAOneDirectionModelIsALocatedError) {
+  const std::string text =
+      "units: {force: kN, length: mm}\n"
+      "isolation: {components: [{type: linear_spring, k: 1}]}\n"
+      "structure: {type: sdof, mass: 0.1}\n"
+      "excitation:\n"
+      "  ground_motion:\n"
+      "    h1: {file: " + kGroundMotions + "fwn_firm_seed1.at2}\n"
+      "    h2: {file: " + kGroundMotions + "h2_fwn_firm_seed3.at2}\n";
   try {
-    LoadModelFile(Write(Model()));
+    LoadModelFile(Write(text, "one.yaml"));
     ADD_FAILURE() << "no error";
   } catch (const InputError& error) {
-    ExpectError(error.what(), ":3:", "plan: a plan model");
+    EXPECT_NE(std::string(error.what()).find("one.yaml:7:"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("the structure moves along x only"),
+              std::string::npos)
+        << error.what();
   }
 }
 
