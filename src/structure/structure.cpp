@@ -283,14 +283,12 @@ void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committe
   }
 }
 
-void Structure::Evaluate(std::span<const LawState> committed, double t, const Eigen::VectorXd& u,
-                         const Eigen::VectorXd& v, std::span<LawState> trial,
-                         std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
-                         std::span<double> member_forces, const TangentFactors& factors,
-                         SparseMatrix* tangent) const {
-  force->noalias() = viscous_damping_ * v;
-  double* values = tangent ? tangent->valuePtr() : nullptr;
-
+void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
+                                const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                std::span<LawState> trial,
+                                std::span<hysteresis::LawResponse> responses,
+                                Eigen::VectorXd* force, std::span<double> member_forces,
+                                double damping_factor, double* values) const {
   for (const Between& spring : between_) {
     const std::size_t k = spring.member;
     const bool grounded = spring.dof_i == kGround;
@@ -304,24 +302,17 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
     (*force)[spring.dof_j] += total.force;
     if (!grounded) (*force)[spring.dof_i] -= total.force;
     if (values && !member_constants_[k]) {
-      AddBetweenTangent(spring, total.stiffness + factors.damping * total.damping, values);
+      AddBetweenTangent(spring, total.stiffness + damping_factor * total.damping, values);
     }
   }
+}
 
-  for (const std::size_t k : general_) {
-    const Terms& terms = member_terms_[k];
-    double d = 0.0, d_rate = 0.0;
-    for (int a = 0; a < terms.count; ++a) {
-      d += terms.coefficients[a] * u[terms.dofs[a]];
-      d_rate += terms.coefficients[a] * v[terms.dofs[a]];
-    }
-    EvaluateMember(k, committed, {d, d_rate, t}, trial, responses, member_forces, factors.damping,
-                   values);
-    for (int a = 0; a < terms.count; ++a) {
-      (*force)[terms.dofs[a]] += terms.coefficients[a] * member_forces[k];
-    }
-  }
-
+void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
+                                const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                std::span<LawState> trial,
+                                std::span<hysteresis::LawResponse> responses,
+                                Eigen::VectorXd* force, std::span<double> member_forces,
+                                double damping_factor, double* values) const {
   for (std::size_t i = 0; i < coupled_.size(); ++i) {
     const CoupledTerms& terms = coupled_terms_[i];
     hysteresis::PlanLawInput in{{}, {}, t};
@@ -339,7 +330,7 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
       responses[offset] = {response.force.x, response.stiffness.xx, response.damping.xx};
       responses[offset + 1] = {response.force.y, response.stiffness.yy, response.damping.yy};
       f = f + response.force;
-      k_eff = k_eff + response.stiffness + factors.damping * response.damping;
+      k_eff = k_eff + response.stiffness + damping_factor * response.damping;
       offset += 2;
     }
     const std::size_t column = coupled_force_column(i);
@@ -347,6 +338,34 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
     member_forces[column + 1] = f.y;
     for (int a = 0; a < terms.count; ++a) (*force)[terms.dofs[a]] += Dot(terms.columns[a], f);
     if (values && !coupled_constants_[i]) AddCoupledTangent(i, k_eff, values);
+  }
+}
+
+void Structure::Evaluate(std::span<const LawState> committed, double t, const Eigen::VectorXd& u,
+                         const Eigen::VectorXd& v, std::span<LawState> trial,
+                         std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+                         std::span<double> member_forces, const TangentFactors& factors,
+                         SparseMatrix* tangent) const {
+  force->noalias() = viscous_damping_ * v;
+  double* values = tangent ? tangent->valuePtr() : nullptr;
+  EvaluateSprings(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
+                  values);
+  for (const std::size_t k : general_) {
+    const Terms& terms = member_terms_[k];
+    double d = 0.0, d_rate = 0.0;
+    for (int a = 0; a < terms.count; ++a) {
+      d += terms.coefficients[a] * u[terms.dofs[a]];
+      d_rate += terms.coefficients[a] * v[terms.dofs[a]];
+    }
+    EvaluateMember(k, committed, {d, d_rate, t}, trial, responses, member_forces, factors.damping,
+                   values);
+    for (int a = 0; a < terms.count; ++a) {
+      (*force)[terms.dofs[a]] += terms.coefficients[a] * member_forces[k];
+    }
+  }
+  if (!coupled_.empty()) {
+    EvaluateCoupled(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
+                    values);
   }
 }
 

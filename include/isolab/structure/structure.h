@@ -187,6 +187,19 @@ class Structure {
   void AddBetweenTangent(const Between& spring, double k_eff, double* values) const;
   void AddCoupledTangent(std::size_t coupled, const hysteresis::Mat2& k_eff,
                          double* values) const;
+  // Evaluate's parts: the springs between two dofs, and the coupled members.
+  void EvaluateSprings(std::span<const hysteresis::LawState> committed, double t,
+                       const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                       std::span<hysteresis::LawState> trial,
+                       std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+                       std::span<double> member_forces, double damping_factor,
+                       double* values) const;
+  void EvaluateCoupled(std::span<const hysteresis::LawState> committed, double t,
+                       const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                       std::span<hysteresis::LawState> trial,
+                       std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+                       std::span<double> member_forces, double damping_factor,
+                       double* values) const;
   void EvaluateMember(std::size_t k, std::span<const hysteresis::LawState> committed,
                       const hysteresis::LawInput& in, std::span<hysteresis::LawState> trial,
                       std::span<hysteresis::LawResponse> responses,
