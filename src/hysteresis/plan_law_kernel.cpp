@@ -30,7 +30,16 @@ PlanLawKernel CoupledKernel(const LawParameters& law) {
 }
 
 PlanLawKernel UncoupledKernel(const LawParameters& along_x, const LawParameters& along_y) {
-  return UncoupledPair{along_x.Kernel(), along_y.Kernel()};
+  UncoupledPair pair{along_x.Kernel(), along_y.Kernel()};
+  for (const LawKernel* kernel : {&pair.x, &pair.y}) {
+    if (StateSlots(*kernel) > 1) {
+      const LawType type = kernel == &pair.x ? along_x.type() : along_y.type();
+      throw std::invalid_argument(std::string(LawName(type)) +
+                                  " cannot be one direction of an uncoupled pair (its sliders in "
+                                  "series keep several states): use its coupled form");
+    }
+  }
+  return pair;
 }
 
 bool HasConstantTangent(const PlanLawKernel& kernel) {

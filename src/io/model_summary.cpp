@@ -49,7 +49,7 @@ double ModelSummary::LongestPeriod() const {
 double SecantStiffness(const hysteresis::ParallelAssembly& assembly, double displacement) {
   // Piecewise-linear laws update exactly in one call; the increments are for Bouc-Wen.
   constexpr int kIncrements = 200;
-  std::vector<hysteresis::LawState> committed(assembly.size()), trial(assembly.size());
+  std::vector<hysteresis::LawState> committed(assembly.state_size()), trial(assembly.state_size());
   std::vector<hysteresis::LawResponse> responses(assembly.size());
   double force = 0.0;
   for (int i = 1; i <= kIncrements; ++i) {

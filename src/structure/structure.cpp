@@ -60,10 +60,11 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Connection> connections,
         connection.dof_i >= n || connection.dof_i == connection.dof_j) {
       throw std::invalid_argument("connection '" + connection.name + "' joins invalid dofs");
     }
-    law_offsets_.push_back(law_offsets_.back() + connection.assembly.size());
+    law_offsets_.push_back(law_offsets_.back() + connection.assembly.state_size());
     for (const auto& kernel : connection.assembly.kernels()) {
       law_is_dashpot_.push_back(std::holds_alternative<hysteresis::Dashpot>(kernel));
     }
+    law_is_dashpot_.resize(law_offsets_.back(), false);  // the further states of sliders in series
   }
 
   std::vector<Eigen::Triplet<double>> entries;
@@ -124,7 +125,7 @@ void Structure::Evaluate(std::span<const hysteresis::LawState> committed, double
     const hysteresis::LawInput in{u[connection.dof_j] - (grounded ? 0.0 : u[connection.dof_i]),
                                   v[connection.dof_j] - (grounded ? 0.0 : v[connection.dof_i]), t};
     const std::size_t offset = law_offsets_[k];
-    const std::size_t count = connection.assembly.size();
+    const std::size_t count = connection.assembly.state_size();
     const hysteresis::AssemblyResponse total =
         connection.assembly.Update(committed.subspan(offset, count), in,
                                    trial.subspan(offset, count), responses.subspan(offset, count));
@@ -141,7 +142,7 @@ double Structure::StoredEnergy(std::span<const hysteresis::LawState> states) con
   double energy = 0.0;
   for (std::size_t k = 0; k < connections_.size(); ++k) {
     energy += connections_[k].assembly.StoredEnergy(
-        states.subspan(law_offsets_[k], connections_[k].assembly.size()));
+        states.subspan(law_offsets_[k], connections_[k].assembly.state_size()));
   }
   return energy;
 }
