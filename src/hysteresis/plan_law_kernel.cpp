@@ -23,6 +23,9 @@ PlanLawKernel CoupledKernel(const LawParameters& law) {
         if constexpr (std::is_same_v<Kernel, BoucWen>) return PlanBoucWen{kernel};
         if constexpr (std::is_same_v<Kernel, FrictionPendulum>) return PlanFrictionPendulum{kernel};
         if constexpr (std::is_same_v<Kernel, LeadRubber>) return PlanLeadRubber{kernel};
+        if constexpr (std::is_same_v<Kernel, SeriesArrangement>) {
+          return PlanSeriesArrangement{kernel};
+        }
         // DegradingSlider: excluded by HasCoupledForm above.
         throw std::logic_error("a 1-D kernel without a coupled form passed HasCoupledForm");
       },

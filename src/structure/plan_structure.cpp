@@ -49,7 +49,7 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
       if (std::holds_alternative<hysteresis::Dashpot>(kernel)) viscous_law_states_.push_back(state);
       ++state;
     }
-    law_offsets_.push_back(state);
+    law_offsets_.push_back(law_offsets_.back() + member.assembly.state_size());
   }
   for (const PlanIsolator& isolator : isolators_) {
     if (isolator.floor < 0 || isolator.floor >= floors()) {
@@ -69,6 +69,8 @@ PlanStructure::PlanStructure(Eigen::VectorXd mass, std::vector<PlanMember> membe
       }
       state += 2;
     }
+    // The further states of sliders in series, two LawStates each (plan_assembly.h).
+    state += 2 * (isolator.assembly.state_size() - isolator.assembly.size());
     law_offsets_.push_back(state);
   }
 
@@ -176,7 +178,7 @@ void PlanStructure::Evaluate(std::span<const LawState> committed, double t,
       d += terms.coefficients[a] * u[terms.dofs[a]];
       d_rate += terms.coefficients[a] * v[terms.dofs[a]];
     }
-    const std::size_t offset = law_offsets_[k], count = members_[k].assembly.size();
+    const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
     const hysteresis::AssemblyResponse total =
         members_[k].assembly.Update(committed.subspan(offset, count), {d, d_rate, t},
                                     trial.subspan(offset, count), responses.subspan(offset, count));
@@ -223,7 +225,7 @@ double PlanStructure::StoredEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
   for (std::size_t k = 0; k < members_.size(); ++k) {
     energy += members_[k].assembly.StoredEnergy(
-        states.subspan(law_offsets_[k], members_[k].assembly.size()));
+        states.subspan(law_offsets_[k], members_[k].assembly.state_size()));
   }
   for (std::size_t i = 0; i < isolators_.size(); ++i) {
     std::size_t offset = isolator_law_offset(i);
