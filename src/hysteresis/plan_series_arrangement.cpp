@@ -340,6 +340,37 @@ void PlanSeriesArrangement::Scatter(const PlanSeriesElementStates& elements,
   }
 }
 
+namespace {
+
+// Element k's pair in a flat LawState array (x at 2k, y at 2k + 1) as a PlanLawState and back.
+PlanLawState PairAt(std::span<const LawState> flat, int k) {
+  return {flat[2 * k], flat[2 * k + 1]};
+}
+
+}  // namespace
+
+void PlanSeriesArrangement::UpdateFlat(PlanLawStateView committed,
+                                       std::span<const LawState> committed_elements,
+                                       const PlanLawInput& in, PlanLawStateSlot trial,
+                                       std::span<LawState> trial_elements,
+                                       PlanLawResponse* response) const {
+  std::array<PlanLawState, kMaxSeriesElements> from{}, to{};
+  for (int k = 0; k < law.count; ++k) from[k] = PairAt(committed_elements, k);
+  Update(committed, std::span(from).first(law.count), in, trial, std::span(to).first(law.count),
+         response);
+  for (int k = 0; k < law.count; ++k) {
+    trial_elements[2 * k] = to[k].x;
+    trial_elements[2 * k + 1] = to[k].y;
+  }
+}
+
+double PlanSeriesArrangement::StoredEnergyFlat(PlanLawStateView state,
+                                               std::span<const LawState> elements) const {
+  std::array<PlanLawState, kMaxSeriesElements> pairs{};
+  for (int k = 0; k < law.count; ++k) pairs[k] = PairAt(elements, k);
+  return StoredEnergy(state, std::span(pairs).first(law.count));
+}
+
 void PlanSeriesArrangement::Update(PlanLawStateView committed,
                                    std::span<const PlanLawState> committed_elements,
                                    const PlanLawInput& in, PlanLawStateSlot trial,

@@ -428,6 +428,10 @@ TEST(DoublePendulum, BackboneIsTwoSinglePendulumsInSeries) {
     const double exact = Invert([&](double f) { return f / ke + sliding(f); }, breaks, u);
     EXPECT_NEAR(law.MoveTo(u).response.force, exact, 1e-12 * w) << "u = " << u;
   }
+  // A double pendulum has no triple pendulum's regimes.
+  const std::vector<LawState> block(3);
+  EXPECT_THROW(TriplePendulumRegime(SeriesOf(dfp.Kernel()), std::span(block).subspan(1)),
+               std::invalid_argument);
   // Both regimes where both surfaces slide: the combined law of the paper.
   const double f_mid = 0.1 * w, u_mid = f_mid / ke + sliding(f_mid);
   DrivenLaw fresh(dfp.Kernel());

@@ -154,6 +154,16 @@ TEST_P(PlanSeries, ReducesToItsOneDirectionLawAlongAnyLine) {
       }
       ExpectClose(plan.StoredEnergy(), line.StoredEnergy(), force_scale * c.scale,
                   at + "stored energy");
+      if (series.count == 4) {  // the triple pendulum's regime and capacity used, as in 1-D
+        const auto line_elements = std::span<const LawState>(one.state).subspan(1);
+        const auto plan_elements = std::span<const PlanLawState>(two.state).subspan(1);
+        EXPECT_EQ(TriplePendulumRegime(series, plan_elements),
+                  TriplePendulumRegime(series, line_elements))
+            << at;
+        const auto used_line = TriplePendulumCapacityUsed(series, line_elements);
+        const auto used_plan = TriplePendulumCapacityUsed(series, plan_elements);
+        for (int i = 0; i < 4; ++i) EXPECT_NEAR(used_plan[i], used_line[i], 1e-12) << at;
+      }
     }
     EXPECT_GT(tangents, 300) << c.name;
   }
@@ -385,6 +395,22 @@ TEST(PlanSeriesAssembly, ATriplePendulumBesideOtherLawsKeepsItsStatesAfterTheirs
             Dissipated(alone.committed()[0]) + Dissipated(committed[1]));
   EXPECT_NEAR(assembly.StoredEnergy(committed),
               alone.StoredEnergy() + PlanStoredEnergy(CoupledKernel(bhm2), committed[1]), 1e-9);
+  // A plan structure's flat storage (LawState pairs) gives the same update.
+  const PlanLawKernel kernel = CoupledKernel(triple);
+  const PlanSeriesArrangement& plan = std::get<PlanSeriesArrangement>(kernel);
+  std::vector<LawState> flat(2 * 5), flat_trial(2 * 5);
+  DrivenPlanLaw paired(CoupledKernel(triple));
+  for (const Vec2 u : CurvedPath(700, 200)) {
+    PlanLawResponse response;
+    plan.UpdateFlat({flat[0], flat[1]}, std::span(flat).subspan(2), {u, {}, 0.0},
+                    {flat_trial[0], flat_trial[1]}, std::span(flat_trial).subspan(2), &response);
+    const DrivenPlanLaw::Step step = paired.MoveTo(u);
+    EXPECT_EQ(response.force, step.response.force);
+    for (int k = 1; k <= 4; ++k) EXPECT_EQ(flat_trial[2 * k + 1].slider, step.state[k].y.slider);
+    std::swap(flat, flat_trial);
+  }
+  EXPECT_EQ(plan.StoredEnergyFlat({flat[0], flat[1]}, std::span(flat).subspan(2)),
+            paired.StoredEnergy());
   // An uncoupled pair cannot hold a law of several states.
   EXPECT_THROW(PlanAssembly({{"pair", triple, triple}}), std::invalid_argument);
 }

@@ -47,6 +47,7 @@
 #include <span>
 
 #include "isolab/hysteresis/law_state.h"
+#include "isolab/hysteresis/plan_law_state.h"
 #include "isolab/hysteresis/series_arrangement.h"
 
 namespace isolab::hysteresis {
@@ -80,7 +81,8 @@ enum class PendulumRegime { kSticking, kI, kII, kIII, kIV, kV, kBeyondV };
 // the regime of the peak), from its series model (TriplePendulum::Series) and its element states
 // (series_arrangement.h). A bearing whose outer surfaces reach their restrainers in the other
 // order, or that slides on 4 before 1 (mu4 < mu1), is reported by the same counts: IV is one
-// outer surface at its restrainer, II one outer surface sliding.
+// outer surface at its restrainer, II one outer surface sliding. These functions throw
+// std::invalid_argument for a series model that is not a triple pendulum's (four elements).
 PendulumRegime TriplePendulumRegime(const SeriesArrangement& series,
                                     std::span<const LawState> elements);
 
@@ -90,6 +92,15 @@ std::array<double, 4> TriplePendulumSurfaceDisplacements(const SeriesArrangement
                                                          std::span<const LawState> elements);
 std::array<double, 4> TriplePendulumCapacityUsed(const SeriesArrangement& series,
                                                  std::span<const LawState> elements);
+
+// The same in plan, from plan_series_arrangement.h's element states: a surface's displacement is
+// a vector, its capacity used |u_i| / d_i (1 to round-off at its restrainer ring).
+PendulumRegime TriplePendulumRegime(const SeriesArrangement& series,
+                                    std::span<const PlanLawState> elements);
+std::array<Vec2, 4> TriplePendulumSurfaceDisplacements(const SeriesArrangement& series,
+                                                       std::span<const PlanLawState> elements);
+std::array<double, 4> TriplePendulumCapacityUsed(const SeriesArrangement& series,
+                                                 std::span<const PlanLawState> elements);
 
 // Whether element k of a series law is against its stop (exactly: the update puts it there).
 bool StopEngaged(const SeriesArrangement& series, std::span<const LawState> elements, int k);
