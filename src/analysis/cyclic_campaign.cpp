@@ -49,7 +49,7 @@ std::vector<CyclicProtocol> CyclicProtocols(const model::ModelFile& model,
 std::vector<hysteresis::CyclicResult> RunCyclicCampaign(const model::ModelFile& model,
                                                         const CyclicRequest& request) {
   std::vector<hysteresis::CyclicResult> runs;
-  std::vector<hysteresis::LawState> state(model.isolation.size());
+  std::vector<hysteresis::LawState> state(model.isolation.state_size());
   for (const CyclicProtocol& protocol : CyclicProtocols(model, request)) {
     if (!request.sequential) std::fill(state.begin(), state.end(), hysteresis::LawState{});
     runs.push_back(hysteresis::RunCyclicTest(model.isolation, protocol, state));

@@ -50,7 +50,7 @@ const structure::IsolatorLayout* IsolatorOf(const structure::Layout& layout, int
 }
 
 Vec2 InitialStiffness(const hysteresis::PlanAssembly& assembly) {
-  std::vector<hysteresis::PlanLawState> rest(assembly.size()), trial(assembly.size());
+  std::vector<hysteresis::PlanLawState> rest(assembly.state_size()), trial(assembly.state_size());
   std::vector<hysteresis::PlanLawResponse> responses(assembly.size());
   const hysteresis::PlanResponse r = assembly.Update(rest, {}, trial, responses);
   return {r.stiffness.xx, r.stiffness.yy};
@@ -157,7 +157,8 @@ std::vector<double> ModelSummary::FixedBasePeriods() const {
 double SecantStiffness(const hysteresis::ParallelAssembly& assembly, double displacement) {
   // Piecewise-linear laws update exactly in one call; the increments are for Bouc-Wen.
   constexpr int kIncrements = 200;
-  std::vector<hysteresis::LawState> committed(assembly.size()), trial(assembly.size());
+  std::vector<hysteresis::LawState> committed(assembly.state_size()),
+      trial(assembly.state_size());
   std::vector<hysteresis::LawResponse> responses(assembly.size());
   double force = 0.0;
   for (int i = 1; i <= kIncrements; ++i) {
@@ -172,7 +173,8 @@ Vec2 SecantStiffness(const hysteresis::PlanAssembly& assembly, double displaceme
   constexpr int kIncrements = 200;
   Vec2 secant;
   for (const Vec2 direction : {Vec2{1.0, 0.0}, Vec2{0.0, 1.0}}) {
-    std::vector<hysteresis::PlanLawState> committed(assembly.size()), trial(assembly.size());
+    std::vector<hysteresis::PlanLawState> committed(assembly.state_size()),
+        trial(assembly.state_size());
     std::vector<hysteresis::PlanLawResponse> responses(assembly.size());
     double force = 0.0;
     for (int i = 1; i <= kIncrements; ++i) {

@@ -26,7 +26,7 @@ void CyclicProtocol::Validate() const {
 }
 
 CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtocol& protocol) {
-  std::vector<LawState> rest(assembly.size());
+  std::vector<LawState> rest(assembly.state_size());
   return RunCyclicTest(assembly, protocol, rest);
 }
 
@@ -46,7 +46,7 @@ CyclicResult RunCyclicTest(const ParallelAssembly& assembly, const CyclicProtoco
   loop.force.resize(samples);
   loop.component_force.resize(samples * n_components);
 
-  std::vector<LawState> committed(state.begin(), state.end()), trial(n_components);
+  std::vector<LawState> committed(state.begin(), state.end()), trial(assembly.state_size());
   std::vector<LawResponse> responses(n_components);
   std::vector<double> dissipated_at_cycle_start(n_components);
   for (std::size_t c = 0; c < n_components; ++c) dissipated_at_cycle_start[c] = state[c].dissipated;

@@ -8,6 +8,7 @@
 
 #include "bearing_parameters.h"
 #include "isolab/core/errors.h"
+#include "multiple_pendulum_parameters.h"
 #include "rule_checker.h"
 
 namespace isolab::hysteresis {
@@ -41,6 +42,8 @@ constexpr LawType kAllTypes[] = {
     LawType::kFrictionPendulum,
     LawType::kLeadRubber,
     LawType::kHdrBearing,
+    LawType::kDoubleFrictionPendulum,
+    LawType::kTripleFrictionPendulum,
 };
 
 // The breakpoint that may be omitted when the two slopes around it are equal (it then marks no
@@ -138,6 +141,10 @@ void ValidateMathematical(LawType type, const ParameterArray& v) {
     case LawType::kHdrBearing:
       ValidateBearing(type, ParameterForm::kMathematical, v);
       return;
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      ValidateMultiplePendulum(type, v);
+      return;
   }
 }
 
@@ -194,6 +201,10 @@ void ValidateMechanical(LawType type, const ParameterArray& v) {
     case LawType::kHdrBearing:
       ValidateBearing(type, ParameterForm::kMechanical, v);
       return;
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      ValidateMultiplePendulum(type, v);  // the same keys in both forms
+      return;
   }
 }
 
@@ -223,6 +234,9 @@ ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m)
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
       return ConvertBearing(type, ParameterForm::kMechanical, m);
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      return m;  // the same keys in both forms
   }
   return m;
 }
@@ -254,6 +268,9 @@ ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q)
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
       return ConvertBearing(type, ParameterForm::kMathematical, q);
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      return q;  // the same keys in both forms
   }
   return q;
 }
@@ -290,6 +307,10 @@ std::string_view LawName(LawType type) {
       return "lead_rubber";
     case LawType::kHdrBearing:
       return "hdr_bearing";
+    case LawType::kDoubleFrictionPendulum:
+      return "double_friction_pendulum";
+    case LawType::kTripleFrictionPendulum:
+      return "triple_friction_pendulum";
   }
   return "unknown";
 }
@@ -328,6 +349,9 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
       return BearingKeys(type, form);
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      return MultiplePendulumKeys(type);
   }
   return {};
 }
@@ -392,6 +416,9 @@ LawKernel LawParameters::Kernel() const {
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
       return BearingKernel(type_, q);
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      return MultiplePendulumKernel(type_, q);
   }
   return Dashpot{0.0};
 }

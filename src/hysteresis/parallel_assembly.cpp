@@ -8,25 +8,35 @@ ParallelAssembly::ParallelAssembly(std::vector<Component> components)
     : components_(std::move(components)) {
   kernels_.reserve(components_.size());
   for (const Component& component : components_) kernels_.push_back(component.parameters.Kernel());
+  state_size_ = kernels_.size();
+  for (std::size_t i = 0; i < kernels_.size(); ++i) {
+    element_offsets_.push_back(state_size_);
+    if (auto* series = std::get_if<SeriesArrangement>(&kernels_[i])) {
+      series->elements_at = static_cast<std::ptrdiff_t>(state_size_ - i);
+    }
+    state_size_ += StateSlots(kernels_[i]) - 1;
+  }
 }
 
 std::optional<AssemblyResponse> ParallelAssembly::ConstantTangent() const {
   for (const LawKernel& kernel : kernels_) {
     if (!HasConstantTangent(kernel)) return std::nullopt;
   }
-  const std::vector<LawState> rest(size());
-  std::vector<LawState> trial(size());
+  const std::vector<LawState> rest(state_size());
+  std::vector<LawState> trial(state_size());
   std::vector<LawResponse> responses(size());
   return Update(rest, {}, trial, responses);
 }
 
 double ParallelAssembly::StoredEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
-  for (std::size_t i = 0; i < kernels_.size(); ++i)
-    energy += hysteresis::StoredEnergy(kernels_[i], states[i]);
+  const LawState* state = states.data();
+  for (const LawKernel& kernel : kernels_) energy += StoredEnergyInPlace(kernel, *state++);
   return energy;
 }
 
+// The further states of sliders in series carry no dissipated energy (series_arrangement.h), so
+// the sum over every state counts each law's once.
 double ParallelAssembly::DissipatedEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
   for (const LawState& state : states) energy += state.dissipated;

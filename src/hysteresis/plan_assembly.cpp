@@ -11,14 +11,22 @@ PlanAssembly::PlanAssembly(std::vector<PlanComponent> components)
     kernels_.push_back(component.law_y ? UncoupledKernel(component.law, *component.law_y)
                                        : CoupledKernel(component.law));
   }
+  state_size_ = kernels_.size();
+  for (std::size_t i = 0; i < kernels_.size(); ++i) {
+    element_offsets_.push_back(state_size_);
+    if (auto* series = std::get_if<PlanSeriesArrangement>(&kernels_[i])) {
+      series->law.elements_at = static_cast<std::ptrdiff_t>(state_size_ - i);
+    }
+    state_size_ += PlanStateSlots(kernels_[i]) - 1;
+  }
 }
 
 std::optional<PlanResponse> PlanAssembly::ConstantTangent() const {
   for (const PlanLawKernel& kernel : kernels_) {
     if (!HasConstantTangent(kernel)) return std::nullopt;
   }
-  const std::vector<PlanLawState> rest(size());
-  std::vector<PlanLawState> trial(size());
+  const std::vector<PlanLawState> rest(state_size());
+  std::vector<PlanLawState> trial(state_size());
   std::vector<PlanLawResponse> responses(size());
   return Update(rest, {}, trial, responses);
 }
@@ -26,7 +34,7 @@ std::optional<PlanResponse> PlanAssembly::ConstantTangent() const {
 double PlanAssembly::StoredEnergy(std::span<const PlanLawState> states) const {
   double energy = 0.0;
   for (std::size_t i = 0; i < kernels_.size(); ++i) {
-    energy += PlanStoredEnergy(kernels_[i], states[i]);
+    energy += PlanStoredEnergyInPlace(kernels_[i], states[i]);
   }
   return energy;
 }

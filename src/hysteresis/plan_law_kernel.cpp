@@ -23,6 +23,9 @@ PlanLawKernel CoupledKernel(const LawParameters& law) {
         if constexpr (std::is_same_v<Kernel, BoucWen>) return PlanBoucWen{kernel};
         if constexpr (std::is_same_v<Kernel, FrictionPendulum>) return PlanFrictionPendulum{kernel};
         if constexpr (std::is_same_v<Kernel, LeadRubber>) return PlanLeadRubber{kernel};
+        if constexpr (std::is_same_v<Kernel, SeriesArrangement>) {
+          return PlanSeriesArrangement{kernel};
+        }
         // DegradingSlider: excluded by HasCoupledForm above.
         throw std::logic_error("a 1-D kernel without a coupled form passed HasCoupledForm");
       },
@@ -30,7 +33,16 @@ PlanLawKernel CoupledKernel(const LawParameters& law) {
 }
 
 PlanLawKernel UncoupledKernel(const LawParameters& along_x, const LawParameters& along_y) {
-  return UncoupledPair{along_x.Kernel(), along_y.Kernel()};
+  UncoupledPair pair{along_x.Kernel(), along_y.Kernel()};
+  for (const LawKernel* kernel : {&pair.x, &pair.y}) {
+    if (StateSlots(*kernel) > 1) {
+      const LawType type = kernel == &pair.x ? along_x.type() : along_y.type();
+      throw std::invalid_argument(std::string(LawName(type)) +
+                                  " cannot be one direction of an uncoupled pair (its sliders in "
+                                  "series keep several states): use its coupled form");
+    }
+  }
+  return pair;
 }
 
 bool HasConstantTangent(const PlanLawKernel& kernel) {

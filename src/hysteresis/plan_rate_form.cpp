@@ -1,5 +1,6 @@
 #include "isolab/hysteresis/plan_rate_form.h"
 
+#include <stdexcept>
 #include <type_traits>
 
 #include "plan_rate_form_laws.h"
@@ -32,6 +33,23 @@ void SetRate(PlanRateResponse* r, int row, Vec2 rate) {
 }
 
 namespace {
+
+// Sliders in series have their rate form in plan_series_rate_form.h, a variable pair per
+// element; HasPlanRateForm keeps them away from this contract, so these are never reached.
+[[noreturn]] void SeriesTakeTheirOwnRateForm() {
+  throw std::logic_error(
+      "sliders in series take plan_series_rate_form.h (HasPlanRateForm is false)");
+}
+PlanRateResponse Evaluate(const PlanSeriesArrangement&, const PlanLawPhase&, Vec2, Vec2,
+                          const double*, double) {
+  SeriesTakeTheirOwnRateForm();
+}
+void Roots(const PlanSeriesArrangement&, const PlanLawPhase&, Vec2, Vec2, const double*, double*) {
+  SeriesTakeTheirOwnRateForm();
+}
+void Switch(const PlanSeriesArrangement&, int, Vec2, Vec2, PlanPhaseSwitch*) {
+  SeriesTakeTheirOwnRateForm();
+}
 
 // Laws without roots, and the pair (handled below).
 void Roots(const PlanDashpot&, const PlanLawPhase&, Vec2, Vec2, const double*, double*) {}
@@ -109,13 +127,15 @@ void Switch(const UncoupledPair& pair, int root, Vec2 u, Vec2 v, PlanPhaseSwitch
 }  // namespace
 
 bool HasPlanRateForm(const PlanLawKernel& kernel) {
+  if (std::holds_alternative<PlanSeriesArrangement>(kernel)) return false;
   const auto* pair = std::get_if<UncoupledPair>(&kernel);
   return pair == nullptr || (HasRateForm(pair->x) && HasRateForm(pair->y));
 }
 
 int PlanInternalVariableCount(const PlanLawKernel& kernel) {
   if (std::holds_alternative<PlanElasticSpring>(kernel) ||
-      std::holds_alternative<PlanDashpot>(kernel)) {
+      std::holds_alternative<PlanDashpot>(kernel) ||
+      std::holds_alternative<PlanSeriesArrangement>(kernel)) {
     return 0;
   }
   if (const auto* law = std::get_if<PlanLeadRubber>(&kernel)) {

@@ -182,28 +182,38 @@ PhaseSwitch Switch(const BoucWen&, const LawPhase& phase, int, double, double, d
 }
 
 // The degrading law has two internal variables (slider and accumulated slip) and no rate form
-// yet; HasRateForm keeps it away from the IDA path, so these are never reached.
+// yet; sliders in series have one of their own (series_rate_form.h), with a variable per
+// element. HasRateForm keeps both away from this contract, so these are never reached.
+template <class Law>
 [[noreturn]] void NoRateForm() {
-  throw std::logic_error("degrading_bhm2 has no rate form (HasRateForm is false)");
+  throw std::logic_error(std::is_same_v<Law, DegradingSlider>
+                             ? "degrading_bhm2 has no rate form (HasRateForm is false)"
+                             : "sliders in series take series_rate_form.h (HasRateForm is false)");
 }
-RateResponse Evaluate(const DegradingSlider&, const LawPhase&, double, double, double) {
-  NoRateForm();
+template <class Law>
+requires std::is_same_v<Law, DegradingSlider> || std::is_same_v<Law, SeriesArrangement> RateResponse
+Evaluate(const Law&, const LawPhase&, double, double, double) {
+  NoRateForm<Law>();
 }
-void Roots(const DegradingSlider&, const LawPhase&, double, double, double, double*) {
-  NoRateForm();
-}
-PhaseSwitch Switch(const DegradingSlider&, const LawPhase&, int, double, double, double) {
-  NoRateForm();
+template <class Law>
+requires std::is_same_v<Law, DegradingSlider> || std::is_same_v<Law, SeriesArrangement>
+void Roots(const Law&, const LawPhase&, double, double, double, double*) { NoRateForm<Law>(); }
+template <class Law>
+requires std::is_same_v<Law, DegradingSlider> || std::is_same_v<Law, SeriesArrangement> PhaseSwitch
+Switch(const Law&, const LawPhase&, int, double, double, double) {
+  NoRateForm<Law>();
 }
 
 }  // namespace
 
 bool HasRateForm(const LawKernel& kernel) {
-  return !std::holds_alternative<DegradingSlider>(kernel);
+  return !std::holds_alternative<DegradingSlider>(kernel) &&
+         !std::holds_alternative<SeriesArrangement>(kernel);
 }
 
 int InternalVariableCount(const LawKernel& kernel) {
-  if (std::holds_alternative<ElasticSpring>(kernel) || std::holds_alternative<Dashpot>(kernel)) {
+  if (std::holds_alternative<ElasticSpring>(kernel) || std::holds_alternative<Dashpot>(kernel) ||
+      std::holds_alternative<SeriesArrangement>(kernel)) {
     return 0;
   }
   if (const auto* law = std::get_if<LeadRubber>(&kernel)) return law->heating.heats() ? 2 : 1;

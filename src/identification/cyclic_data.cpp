@@ -65,7 +65,8 @@ void Segment(CyclicTestData* test) {
 
 void SimulateForceFrom(const hysteresis::ParallelAssembly& assembly, const CyclicTestData& test,
                        std::span<hysteresis::LawState> state, std::span<double> force) {
-  std::vector<hysteresis::LawState> committed(state.begin(), state.end()), trial(assembly.size());
+  std::vector<hysteresis::LawState> committed(state.begin(), state.end()),
+      trial(assembly.state_size());
   std::vector<hysteresis::LawResponse> responses(assembly.size());
   for (std::size_t k = 0; k < force.size(); ++k) {
     const double dt = k > 0 ? test.time[k] - test.time[k - 1] : 0.0;
@@ -80,7 +81,7 @@ void SimulateForceFrom(const hysteresis::ParallelAssembly& assembly, const Cycli
 
 std::vector<double> SimulateForce(const hysteresis::ParallelAssembly& assembly,
                                   const CyclicTestData& test) {
-  std::vector<hysteresis::LawState> state(assembly.size());
+  std::vector<hysteresis::LawState> state(assembly.state_size());
   std::vector<double> force(test.displacement.size());
   SimulateForceFrom(assembly, test, state, force);
   return force;
@@ -90,7 +91,7 @@ std::vector<std::vector<double>> SimulateForces(const hysteresis::ParallelAssemb
                                                 std::span<const CyclicTestData> tests,
                                                 bool one_specimen) {
   std::vector<std::vector<double>> forces;
-  std::vector<hysteresis::LawState> state(assembly.size());
+  std::vector<hysteresis::LawState> state(assembly.state_size());
   for (const CyclicTestData& test : tests) {
     if (!one_specimen) std::fill(state.begin(), state.end(), hysteresis::LawState{});
     forces.emplace_back(test.displacement.size());

@@ -42,6 +42,8 @@ std::vector<std::string> CoordinateNames(LawType type) {
     case LawType::kFrictionPendulum:
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
       break;
   }
   throw std::invalid_argument(std::string(hysteresis::LawName(type)) +
@@ -238,6 +240,8 @@ void ModelParametrisation::Basis(std::span<const double> x, std::span<const Cycl
       case LawType::kFrictionPendulum:
       case LawType::kLeadRubber:
       case LawType::kHdrBearing:
+      case LawType::kDoubleFrictionPendulum:
+      case LawType::kTripleFrictionPendulum:
         throw std::logic_error("no basis: CoordinateNames refuses this law");
     }
   }

@@ -35,7 +35,7 @@ CyclicTestData TestFromLoop(const hysteresis::CyclicResult& result, bool name_pe
 std::vector<CyclicTestData> SyntheticTests(const hysteresis::ParallelAssembly& assembly,
                                            const SyntheticTestOptions& options) {
   std::vector<CyclicTestData> tests;
-  std::vector<hysteresis::LawState> state(assembly.size());
+  std::vector<hysteresis::LawState> state(assembly.state_size());
   for (const double period : options.periods) {
     for (const double amplitude : options.amplitudes) {
       if (!options.one_specimen) std::fill(state.begin(), state.end(), hysteresis::LawState{});

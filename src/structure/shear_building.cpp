@@ -109,7 +109,7 @@ SparseMatrix SuperstructureDampingMatrix(const std::vector<Story>& stories,
 }  // namespace
 
 double InitialStiffness(const hysteresis::ParallelAssembly& assembly) {
-  std::vector<hysteresis::LawState> rest(assembly.size()), trial(assembly.size());
+  std::vector<hysteresis::LawState> rest(assembly.state_size()), trial(assembly.state_size());
   std::vector<hysteresis::LawResponse> responses(assembly.size());
   return assembly.Update(rest, {0.0, 0.0}, trial, responses).stiffness;
 }

@@ -123,12 +123,14 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
   law_offsets_.push_back(0);
   for (const Member& member : members_) {
     check_dofs(member.name, member.dofs);
+    // Component c's own state at offset + c, the further states of sliders in series after
+    // all the components' own (parallel_assembly.h).
     std::size_t state = law_offsets_.back();
     for (const auto& kernel : member.assembly.kernels()) {
       if (std::holds_alternative<hysteresis::Dashpot>(kernel)) viscous_law_states_.push_back(state);
       ++state;
     }
-    law_offsets_.push_back(state);
+    law_offsets_.push_back(law_offsets_.back() + member.assembly.state_size());
   }
   for (const CoupledMember& member : coupled_) {
     check_dofs(member.name, member.dofs);
@@ -145,7 +147,8 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
       }
       state += 2;
     }
-    law_offsets_.push_back(state);
+    // The further states of sliders in series, two LawStates each (plan_assembly.h).
+    law_offsets_.push_back(law_offsets_.back() + 2 * member.assembly.state_size());
   }
 
   // The pattern: mass diagonal and viscous damping, every member's dofs pairwise; fixed for the
@@ -273,7 +276,7 @@ void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committe
                                std::span<hysteresis::LawResponse> responses,
                                std::span<double> member_forces, double damping_factor,
                                double* values) const {
-  const std::size_t offset = law_offsets_[k], count = members_[k].assembly.size();
+  const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
   const hysteresis::AssemblyResponse total =
       members_[k].assembly.Update(committed.subspan(offset, count), in,
                                   trial.subspan(offset, count), responses.subspan(offset, count));
@@ -294,7 +297,7 @@ void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
     const bool grounded = spring.dof_i == kGround;
     const hysteresis::LawInput in{u[spring.dof_j] - (grounded ? 0.0 : u[spring.dof_i]),
                                   v[spring.dof_j] - (grounded ? 0.0 : v[spring.dof_i]), t};
-    const std::size_t offset = law_offsets_[k], count = members_[k].assembly.size();
+    const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
     const hysteresis::AssemblyResponse total =
         members_[k].assembly.Update(committed.subspan(offset, count), in,
                                     trial.subspan(offset, count), responses.subspan(offset, count));
@@ -320,13 +323,25 @@ void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
       in.u = in.u + u[terms.dofs[a]] * terms.columns[a];
       in.v = in.v + v[terms.dofs[a]] * terms.columns[a];
     }
-    std::size_t offset = coupled_law_offset(i);
+    const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
+    const std::size_t first = coupled_law_offset(i);
+    std::size_t offset = first;
     Vec2 f;
     Mat2 k_eff;
-    for (const hysteresis::PlanLawKernel& kernel : coupled_[i].assembly.kernels()) {
+    for (std::size_t c = 0; c < assembly.size(); ++c) {
+      const hysteresis::PlanLawKernel& kernel = assembly.kernels()[c];
       hysteresis::PlanLawResponse response;
-      hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
-                                {trial[offset], trial[offset + 1]}, &response);
+      if (const auto* series = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel)) {
+        // Its elements' states, as LawState pairs after every component's own.
+        const std::size_t at = first + 2 * assembly.ElementStatesOffset(c);
+        const std::size_t count = 2 * static_cast<std::size_t>(series->state_slots() - 1);
+        series->UpdateFlat({committed[offset], committed[offset + 1]},
+                           committed.subspan(at, count), in, {trial[offset], trial[offset + 1]},
+                           trial.subspan(at, count), &response);
+      } else {
+        hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
+                                  {trial[offset], trial[offset + 1]}, &response);
+      }
       responses[offset] = {response.force.x, response.stiffness.xx, response.damping.xx};
       responses[offset + 1] = {response.force.y, response.stiffness.yy, response.damping.yy};
       f = f + response.force;
@@ -373,13 +388,22 @@ double Structure::StoredEnergy(std::span<const LawState> states) const {
   double energy = 0.0;
   for (std::size_t k = 0; k < members_.size(); ++k) {
     energy += members_[k].assembly.StoredEnergy(
-        states.subspan(law_offsets_[k], members_[k].assembly.size()));
+        states.subspan(law_offsets_[k], members_[k].assembly.state_size()));
   }
   for (std::size_t i = 0; i < coupled_.size(); ++i) {
-    std::size_t offset = coupled_law_offset(i);
-    for (const hysteresis::PlanLawKernel& kernel : coupled_[i].assembly.kernels()) {
-      energy += hysteresis::PlanStoredEnergy(kernel, {states[offset], states[offset + 1]});
-      offset += 2;
+    const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
+    const std::size_t first = coupled_law_offset(i);
+    for (std::size_t c = 0; c < assembly.size(); ++c) {
+      const hysteresis::PlanLawKernel& kernel = assembly.kernels()[c];
+      const std::size_t offset = first + 2 * c;
+      if (const auto* series = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel)) {
+        const std::size_t at = first + 2 * assembly.ElementStatesOffset(c);
+        energy += series->StoredEnergyFlat(
+            {states[offset], states[offset + 1]},
+            states.subspan(at, 2 * static_cast<std::size_t>(series->state_slots() - 1)));
+      } else {
+        energy += hysteresis::PlanStoredEnergy(kernel, {states[offset], states[offset + 1]});
+      }
     }
   }
   return energy;

@@ -84,6 +84,23 @@ std::vector<LawCase> Cases() {
        250,
        {11}},
       {"hdr_bearing", Math(LawType::kHdrBearing, {4e-4, 331831, 150, 0.15, 1.5, NAN}), 250, {}},
+      // Sliders in series, through every regime and beyond the last stop (capacity 900 mm):
+      // ke = 0.02 W / u_y = 40, then 1 / (1/ke + (R_a + R_b) / W) with the radii of the regime's
+      // two sliding surfaces (multiple_pendulum.h).
+      {"triple_friction_pendulum",
+       Math(LawType::kTripleFrictionPendulum,
+            {1000, 2100, 280, 280, 2100, 0.06, 0.02, 0.02, 0.10, 400, 50, 50, 400, 0.5}),
+       800,
+       {40, 1 / (1 / 40.0 + 0.56), 1 / (1 / 40.0 + 2.38), 1 / (1 / 40.0 + 4.2)}},
+      {"triple_friction_pendulum_unequal",
+       Math(LawType::kTripleFrictionPendulum,
+            {1200, 1800, 300, 250, 2400, 0.05, 0.01, 0.03, 0.09, 250, 60, 40, 350, 1.0}),
+       700,
+       {12, 1 / (1 / 12.0 + 0.25), 1 / (1 / 12.0 + 0.55 / 1.2), 1 / (1 / 12.0 + 2.05 / 1.2)}},
+      {"double_friction_pendulum",
+       Math(LawType::kDoubleFrictionPendulum, {800, 2000, 1500, 0.04, 0.07, 300, 250, 1}),
+       500,
+       {32, 1 / (1 / 32.0 + 2.5), 1 / (1 / 32.0 + 3500 / 800.0), 1 / (1 / 32.0 + 1.875)}},
   };
 }
 
@@ -105,20 +122,24 @@ std::vector<double> Path(double scale, int steps_per_unit_scale) {
   return path;
 }
 
+// A law's whole state: StateSlots(kernel) LawStates, the law's own first (law_kernel.h).
+using State = std::vector<LawState>;
+State Rest(const LawKernel& kernel) { return State(StateSlots(kernel)); }
+
 struct Step {
-  LawState state;
+  State state;
   LawResponse response;
 };
 
-Step Trial(const LawKernel& kernel, const LawState& committed, double u) {
-  Step step;
-  UpdateLaw(kernel, committed, {u, 0.0}, &step.state, &step.response);
+Step Trial(const LawKernel& kernel, const State& committed, double u) {
+  Step step{State(committed.size()), {}};
+  UpdateLaw(kernel, committed, {u, 0.0}, step.state, &step.response);
   return step;
 }
 
 // The committed state after following `path` from rest.
-LawState Follow(const LawKernel& kernel, const std::vector<double>& path) {
-  LawState state;
+State Follow(const LawKernel& kernel, const std::vector<double>& path) {
+  State state = Rest(kernel);
   for (const double u : path) state = Trial(kernel, state, u).state;
   return state;
 }
@@ -136,20 +157,21 @@ TEST_P(LawUpdate, OneCallEqualsAThousandSubIncrements) {
   const std::vector<std::vector<double>> histories = {
       {0.0}, {0.5 * s, 1.1 * s}, {-1.1 * s, -0.4 * s}, {1.1 * s, -1.1 * s, -0.9 * s}};
   for (const auto& history : histories) {
-    const LawState start = Follow(c.kernel, history);
+    const State start = Follow(c.kernel, history);
     for (const double target : {1.3 * s, -1.3 * s, 0.05 * s, 0.7 * s}) {
       const Step one = Trial(c.kernel, start, target);
-      LawState sub = start;
+      State sub = start;
       Step last;
       for (int k = 1; k <= 1000; ++k) {
-        last = Trial(c.kernel, sub, start.u + (target - start.u) * k / 1000.0);
+        last = Trial(c.kernel, sub, start[0].u + (target - start[0].u) * k / 1000.0);
         sub = last.state;
       }
       const std::string where =
-          c.name + " from " + std::to_string(start.u) + " to " + std::to_string(target);
+          c.name + " from " + std::to_string(start[0].u) + " to " + std::to_string(target);
       ExpectRelativelyEqual(one.response.force, last.response.force, 1e-3 * s, where + " force");
-      ExpectRelativelyEqual(one.state.slider, sub.slider, 1e-3 * s, where + " slider");
-      ExpectRelativelyEqual(one.state.dissipated, sub.dissipated, 1e-3 * s, where + " dissipated");
+      ExpectRelativelyEqual(one.state[0].slider, sub[0].slider, 1e-3 * s, where + " slider");
+      ExpectRelativelyEqual(one.state[0].dissipated, sub[0].dissipated, 1e-3 * s,
+                            where + " dissipated");
       ExpectRelativelyEqual(one.response.stiffness, last.response.stiffness, 1e-6,
                             where + " tangent");
     }
@@ -162,7 +184,7 @@ TEST_P(LawUpdate, TangentIsTheDerivativeOfTheUpdateInEveryPhase) {
   const double h = 1e-4 * c.scale;
   std::set<double> phases_seen;
   int checked = 0;
-  LawState committed;
+  State committed = Rest(c.kernel);
   for (const double u : Path(c.scale, 97)) {
     const Step at = Trial(c.kernel, committed, u);
     const double ahead = Trial(c.kernel, committed, u + h).response.force;
@@ -172,7 +194,7 @@ TEST_P(LawUpdate, TangentIsTheDerivativeOfTheUpdateInEveryPhase) {
     const double size = std::max({1.0, std::abs(left), std::abs(right)});
     if (std::abs(right - left) < 1e-5 * size) {  // no breakpoint within +-h: the update is smooth
       EXPECT_NEAR(at.response.stiffness, 0.5 * (left + right), 1e-5 * size)
-          << c.name << " at u = " << u << " from committed u = " << committed.u;
+          << c.name << " at u = " << u << " from committed u = " << committed[0].u;
       phases_seen.insert(std::round(at.response.stiffness * 1e4) / 1e4);
       ++checked;
     }
@@ -193,11 +215,11 @@ TEST_P(LawUpdate, AtNoIncrementTheTangentIsTheDerivativeOfContinuedMotion) {
   const LawCase& c = GetParam();
   const double h = 1e-4 * c.scale;
   int checked = 0, slipping = 0;
-  LawState committed;
+  State committed = Rest(c.kernel);
   for (const double u : Path(c.scale, 97)) {
     const Step step = Trial(c.kernel, committed, u);
-    const double direction = u >= committed.u ? 1.0 : -1.0;
-    const bool slipped = step.state.slider != committed.slider;
+    const double direction = u >= committed[0].u ? 1.0 : -1.0;
+    const bool slipped = step.state[0].slider != committed[0].slider;
     committed = step.state;
     const double at = Trial(c.kernel, committed, u).response.force;
     const double one = Trial(c.kernel, committed, u + direction * h).response.force;
@@ -215,7 +237,8 @@ TEST_P(LawUpdate, AtNoIncrementTheTangentIsTheDerivativeOfContinuedMotion) {
                           std::holds_alternative<ParallelSlider>(c.kernel) ||
                           std::holds_alternative<DegradingSlider>(c.kernel) ||
                           std::holds_alternative<FrictionPendulum>(c.kernel) ||
-                          std::holds_alternative<LeadRubber>(c.kernel);
+                          std::holds_alternative<LeadRubber>(c.kernel) ||
+                          std::holds_alternative<SeriesArrangement>(c.kernel);
   if (has_slider) {
     EXPECT_GT(slipping, 100) << c.name << ": too few corners after a slip";
   }
@@ -236,21 +259,21 @@ void ExpectAdmissibleSlider(double slider_force, double fs, double travel, doubl
 
 TEST_P(LawUpdate, SliderStaysAdmissibleAndDissipatesFsTimesItsTravel) {
   const LawCase& c = GetParam();
-  LawState state;
+  State state = Rest(c.kernel);
   for (const double u : Path(c.scale, 37)) {
     const Step next = Trial(c.kernel, state, u);
     const std::string where = c.name + " at u = " + std::to_string(u);
-    const double travel = next.state.slider - state.slider;
-    const double work = next.state.dissipated - state.dissipated;
+    const double travel = next.state[0].slider - state[0].slider;
+    const double work = next.state[0].dissipated - state[0].dissipated;
     if (const auto* series = std::get_if<SeriesSlider>(&c.kernel)) {
-      const double slider_force = next.response.force - series->spring.Force(next.state.slider);
+      const double slider_force = next.response.force - series->spring.Force(next.state[0].slider);
       if (series->fs > 0) ExpectAdmissibleSlider(slider_force, series->fs, travel, work, where);
       // Element 1 carries the force; ke (u - u_h) loses about eps ke |u| to cancellation.
-      EXPECT_NEAR(next.response.force, series->ke * (u - next.state.slider),
+      EXPECT_NEAR(next.response.force, series->ke * (u - next.state[0].slider),
                   1e-9 * (1 + std::abs(next.response.force)) + 1e-14 * series->ke * std::abs(u))
           << where;
     } else if (const auto* parallel = std::get_if<ParallelSlider>(&c.kernel)) {
-      const double branch_force = parallel->kp * (u - next.state.slider);
+      const double branch_force = parallel->kp * (u - next.state[0].slider);
       if (parallel->fs > 0) ExpectAdmissibleSlider(branch_force, parallel->fs, travel, work, where);
       EXPECT_NEAR(next.response.force,
                   branch_force * (parallel->fs > 0) + parallel->spring.Force(u),
@@ -258,15 +281,40 @@ TEST_P(LawUpdate, SliderStaysAdmissibleAndDissipatesFsTimesItsTravel) {
           << where;
     } else if (const auto* degrading = std::get_if<DegradingSlider>(&c.kernel)) {
       // The undamaged branch is an elastoplastic slider; the damage only scales its force.
-      const double branch_force = degrading->kp * (u - next.state.slider);
-      const double phi = degrading->Factor(next.state.accumulated_slip);
+      const double branch_force = degrading->kp * (u - next.state[0].slider);
+      const double phi = degrading->Factor(next.state[0].accumulated_slip);
       EXPECT_LE(std::abs(branch_force), degrading->fs * (1 + 1e-12)) << where;
-      EXPECT_NEAR(next.state.accumulated_slip - state.accumulated_slip, std::abs(travel), 1e-12)
+      EXPECT_NEAR(next.state[0].accumulated_slip - state[0].accumulated_slip, std::abs(travel),
+                  1e-12)
           << where;
       EXPECT_NEAR(next.response.force, phi * (branch_force + degrading->kh * u),
                   1e-9 * (1 + std::abs(next.response.force)))
           << where;
-      EXPECT_GE(work, -1e-9 * (1 + std::abs(next.state.dissipated))) << where;
+      EXPECT_GE(work, -1e-9 * (1 + std::abs(next.state[0].dissipated))) << where;
+    } else if (const auto* chain = std::get_if<SeriesArrangement>(&c.kernel)) {
+      // Every element carries the force: its slider force F - k z within +-f away from its stop,
+      // +-f in the direction it moved unless it ended at its stop, and outward at the stop.
+      double element_work = 0.0;
+      for (int k = 0; k < chain->count; ++k) {
+        const SeriesElement& e = chain->elements[k];
+        const double z = next.state[k + 1].slider, moved = z - state[k + 1].slider;
+        const double slider_force = next.response.force - e.stiffness * z;
+        const double tolerance = 1e-9 * (e.strength + std::abs(next.response.force));
+        EXPECT_LE(std::abs(z), e.stop) << where;
+        if (std::abs(z) < e.stop) {
+          EXPECT_LE(std::abs(slider_force), e.strength + tolerance) << where << " element " << k;
+          if (std::abs(moved) > 1e-12) {
+            EXPECT_NEAR(slider_force, moved > 0 ? e.strength : -e.strength, tolerance) << where;
+          }
+        } else {
+          EXPECT_GE(slider_force * (z > 0 ? 1 : -1), -e.strength - tolerance) << where;
+        }
+        element_work += e.strength * std::abs(moved);
+      }
+      EXPECT_NEAR(work, element_work, 1e-9 * (1.0 + work)) << where;
+      EXPECT_NEAR(next.state[0].slider, u - next.response.force / chain->ke,
+                  1e-9 * (1 + std::abs(u)))
+          << where;
     } else if (std::holds_alternative<FrictionPendulum>(c.kernel) ||
                std::holds_alternative<LeadRubber>(c.kernel)) {
       // The interface variable stays in [-1, 1]; a slider that moved sits at z = +-1 in the
@@ -274,12 +322,13 @@ TEST_P(LawUpdate, SliderStaysAdmissibleAndDissipatesFsTimesItsTravel) {
       const UnitSlider& slider = std::holds_alternative<LeadRubber>(c.kernel)
                                      ? std::get<LeadRubber>(c.kernel).slider
                                      : std::get<FrictionPendulum>(c.kernel).slider;
-      const double z = slider.Z(u, next.state.slider);
+      const double z = slider.Z(u, next.state[0].slider);
       EXPECT_LE(std::abs(z), 1 + 1e-9) << where;
       if (std::abs(travel) > 1e-12) {
         EXPECT_NEAR(z, travel > 0 ? 1 : -1, 1e-9) << where;
       }
-      EXPECT_NEAR(next.state.accumulated_slip - state.accumulated_slip, std::abs(travel), 1e-12)
+      EXPECT_NEAR(next.state[0].accumulated_slip - state[0].accumulated_slip, std::abs(travel),
+                  1e-12)
           << where;
     } else {
       EXPECT_EQ(work, 0.0) << where;
@@ -290,17 +339,18 @@ TEST_P(LawUpdate, SliderStaysAdmissibleAndDissipatesFsTimesItsTravel) {
 
 TEST_P(LawUpdate, WorkDoneEqualsStoredPlusDissipatedEnergy) {
   const LawCase& c = GetParam();
-  LawState state;
+  State state = Rest(c.kernel);
   double work = 0.0, work_scale = 0.0, force = 0.0;
   for (const double u : Path(c.scale, 20000)) {
     const Step next = Trial(c.kernel, state, u);
-    const double du = u - state.u;
+    const double du = u - state[0].u;
     work += 0.5 * (force + next.response.force) * du;
     work_scale += std::abs(0.5 * (force + next.response.force) * du);
     force = next.response.force;
     state = next.state;
   }
-  EXPECT_NEAR(work, StoredEnergy(c.kernel, state) + state.dissipated, 1e-6 * work_scale) << c.name;
+  EXPECT_NEAR(work, StoredEnergy(c.kernel, state) + state[0].dissipated, 1e-6 * work_scale)
+      << c.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(AllLaws, LawUpdate, ::testing::ValuesIn(Cases()),
@@ -331,7 +381,7 @@ TEST(DegenerateForms, Thm1SpringLimitStaysAccurateForVeryLargeK0) {
   // 3e-14 relative, so any larger difference is round-off in the update.
   const LawKernel thm1 = Math(LawType::kThm1, {1e10, 0.000282, 0.905635, 0, 136.491});
   const LawKernel spring = Math(LawType::kTrilinearElastic, {0.000282, 0.905635, 136.491});
-  LawState a, b;
+  State a = Rest(thm1), b = Rest(spring);
   for (const double u : Path(200.0, 50)) {
     const Step sa = Trial(thm1, a, u), sb = Trial(spring, b, u);
     EXPECT_NEAR(sa.response.force, sb.response.force, 1e-8 * (1e-3 + std::abs(sb.response.force)))
@@ -347,11 +397,11 @@ TEST(DegenerateForms, Thm1SpringLimitStaysAccurateForVeryLargeK0) {
 TEST(DegenerateForms, Thm1WithZeroYieldAndStiffK0IsTheTrilinearSpring) {
   const LawKernel thm1 = Math(LawType::kThm1, {1e6, 0.283532, 0.489882, 0, 64.809});
   const LawKernel spring = Math(LawType::kTrilinearElastic, {0.283532, 0.489882, 64.809});
-  LawState a, b;
+  State a = Rest(thm1), b = Rest(spring);
   for (const double u : Path(150.0, 50)) {
     const Step sa = Trial(thm1, a, u), sb = Trial(spring, b, u);
     EXPECT_NEAR(sa.response.force, sb.response.force, 2e-6 * (1 + std::abs(sb.response.force)));
-    EXPECT_EQ(sa.state.dissipated, 0.0);
+    EXPECT_EQ(sa.state[0].dissipated, 0.0);
     a = sa.state;
     b = sb.state;
   }

@@ -20,6 +20,8 @@
 //                      core's heating: lead_diameter, lead_height, lead_heat_capacity [, e2]
 //                      [, steel_conductivity, steel_diffusivity, shim_thickness]  (lead_rubber.h)
 //   hdr_bearing        g, area, tr, damping, strain [, yield_strain]  (hdr_bearing.h)
+//   double_friction_pendulum  w, r1, r2, mu1, mu2, d1, d2, uy            (multiple_pendulum.h)
+//   triple_friction_pendulum  w, r1..r4, mu1..mu4, d1..d4, uy            (multiple_pendulum.h)
 //
 // Units are whatever the caller uses consistently (the paper: kN, mm).
 #pragma once
@@ -45,12 +47,15 @@ enum class LawType {
   kElastoplastic,
   kBoucWen,
   kDegradingBhm2,
-  kFrictionPendulum,  // friction_pendulum.h
-  kLeadRubber,        // lead_rubber.h
-  kHdrBearing,        // hdr_bearing.h: BHM2 from design data
+  kFrictionPendulum,        // friction_pendulum.h
+  kLeadRubber,              // lead_rubber.h
+  kHdrBearing,              // hdr_bearing.h: BHM2 from design data
+  kDoubleFrictionPendulum,  // multiple_pendulum.h: two sliding surfaces in series
+  kTripleFrictionPendulum,  // multiple_pendulum.h: Fenz & Constantinou's series model
 };
 
-inline constexpr int kMaxLawParameters = 10;
+// The most keys a law takes (the triple pendulum's 14).
+inline constexpr int kMaxLawParameters = 14;
 
 enum class ParameterForm { kMathematical, kMechanical };
 

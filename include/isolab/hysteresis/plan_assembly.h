@@ -45,16 +45,26 @@ class PlanAssembly {
   explicit PlanAssembly(std::vector<PlanComponent> components);
 
   std::size_t size() const { return kernels_.size(); }
+  // PlanLawStates the assembly's state takes, >= size(): component i's own at i, the further
+  // states of sliders in series after all the components' own (parallel_assembly.h's layout).
+  std::size_t state_size() const { return state_size_; }
   const std::vector<PlanComponent>& components() const { return components_; }
   const std::vector<PlanLawKernel>& kernels() const { return kernels_; }
 
-  // Trial of every component at `in` from `committed`, writing `trial` and per-component
-  // `responses` (each of size()); returns the sums. Allocates nothing.
+  // Where component i's further states start (PlanStateSlots - 1 of them).
+  std::size_t ElementStatesOffset(std::size_t i) const { return element_offsets_[i]; }
+  template <class State>
+  std::span<State> ElementStates(std::size_t i, std::span<State> states) const {
+    return states.subspan(element_offsets_[i], PlanStateSlots(kernels_[i]) - 1);
+  }
+
+  // Trial of every component at `in` from `committed`, writing `trial` (each of state_size())
+  // and per-component `responses` (at least size()); returns the sums. Allocates nothing.
   PlanResponse Update(std::span<const PlanLawState> committed, const PlanLawInput& in,
                       std::span<PlanLawState> trial, std::span<PlanLawResponse> responses) const {
     PlanResponse total;
     for (std::size_t i = 0; i < kernels_.size(); ++i) {
-      UpdatePlanLaw(kernels_[i], committed[i], in, &trial[i], &responses[i]);
+      UpdatePlanLawInPlace(kernels_[i], committed[i], in, &trial[i], &responses[i]);
       total.force = total.force + responses[i].force;
       total.stiffness = total.stiffness + responses[i].stiffness;
       total.damping = total.damping + responses[i].damping;
@@ -74,6 +84,8 @@ class PlanAssembly {
  private:
   std::vector<PlanComponent> components_;
   std::vector<PlanLawKernel> kernels_;
+  std::vector<std::size_t> element_offsets_;  // per component; state_size_ for one-state laws
+  std::size_t state_size_ = 0;
 };
 
 }  // namespace isolab::hysteresis

@@ -57,8 +57,9 @@ struct RateResponse {
 
 inline constexpr int kMaxPhaseRoots = 2;
 
-// Whether the law has a rate form at all (the degrading BHM2 does not yet: the IDA path refuses
-// it and the incremental laws run it).
+// Whether the law has a rate form in this contract (the degrading BHM2 has none yet: the IDA path
+// refuses it and the incremental laws run it; sliders in series have theirs in
+// series_rate_form.h, a variable per element).
 bool HasRateForm(const LawKernel& kernel);
 
 // How many internal variables the law carries (0; 1: z; 2: z and w), and how many root
