@@ -56,18 +56,25 @@ double Excitation::duration() const {
   return duration;
 }
 
-void Excitation::EffectiveLoad(double t, const Eigen::VectorXd& mass, Eigen::VectorXd* load) const {
+std::vector<Eigen::VectorXd> Excitation::MassInfluence(const Eigen::VectorXd& mass) const {
+  std::vector<Eigen::VectorXd> mass_influence;
+  for (const GroundMotion& motion : ground) {
+    mass_influence.push_back(motion.influence.size() == 0 ? mass
+                                                          : mass.cwiseProduct(motion.influence));
+  }
+  return mass_influence;
+}
+
+void Excitation::EffectiveLoad(double t, const std::vector<Eigen::VectorXd>& mass_influence,
+                               Eigen::VectorXd* load) const {
   // The first component assigns: a one-direction record costs one pass over the dofs.
-  if (ground.empty()) load->setZero(mass.size());
+  if (ground.empty()) load->setZero();
   for (std::size_t c = 0; c < ground.size(); ++c) {
-    const GroundMotion& motion = ground[c];
-    const double a = motion.acceleration.At(t);
-    if (motion.influence.size() == 0) {
-      if (c == 0) *load = -a * mass;
-      else *load -= a * mass;
+    const double a = ground[c].acceleration.At(t);
+    if (c == 0) {
+      load->noalias() = -a * mass_influence[c];
     } else {
-      if (c == 0) *load = -a * mass.cwiseProduct(motion.influence);
-      else *load -= a * mass.cwiseProduct(motion.influence);
+      load->noalias() -= a * mass_influence[c];
     }
   }
   for (const AppliedForce& force : forces) (*load)[force.dof] += force.force.At(t);

@@ -69,6 +69,7 @@ class NewmarkRun {
         excitation_(excitation),
         options_(options),
         summary_(*summary),
+        mass_influence_(excitation.MassInfluence(structure.mass())),
         tangent_(structure.tangent_pattern()),
         constant_tangent_(structure.tangent_pattern()),
         solver_(structure.tangent_pattern()),
@@ -85,7 +86,7 @@ class NewmarkRun {
           &correction_, &viscous_, &viscous_trial_, &zero_, &roundoff_, &absolute_acceleration_}) {
       x->setZero(n);
     }
-    excitation_.EffectiveLoad(0.0, structure_.mass(), &load_);
+    excitation_.EffectiveLoad(0.0, mass_influence_, &load_);
     a_ = load_.cwiseQuotient(structure_.mass());  // at rest, M a0 = p_eff(0)
   }
 
@@ -135,7 +136,7 @@ class NewmarkRun {
     const double beta = options_.beta, gamma = options_.gamma;
     const double c0 = 1.0 / (beta * h * h), c1 = gamma / (beta * h);
     const structure::TangentFactors factors{c0, c1};
-    excitation_.EffectiveLoad(t0 + h, structure_.mass(), &load_trial_);
+    excitation_.EffectiveLoad(t0 + h, mass_influence_, &load_trial_);
     // The predictor carries the committed acceleration through the step: Newmark's relations
     // then give a_trial = a and v_trial = v + h a for any beta and gamma. Each law's first
     // tangent is then the one of the increment the step will most likely take: its phase, the
@@ -253,6 +254,7 @@ class NewmarkRun {
   const Excitation& excitation_;
   const NewmarkOptions& options_;
   RunSummary& summary_;
+  const std::vector<VectorXd> mass_influence_;  // M r of each ground component
   structure::SparseMatrix tangent_;
   structure::SparseMatrix constant_tangent_;  // StartTangent's terms, for constant_factors_
   std::optional<structure::TangentFactors> constant_factors_;

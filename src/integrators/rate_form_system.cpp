@@ -12,6 +12,7 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure,
                                const Excitation& excitation)
     : structure_(structure),
       excitation_(excitation),
+      mass_influence_(excitation.MassInfluence(structure.mass())),
       dofs_(structure.dofs()),
       dof_rows_(dofs_, structure.viscous_damping()) {
   const auto add_law = [&](LawBlock law, int q_count, int roots) {
@@ -183,7 +184,7 @@ void RateFormSystem::EvaluateLaws(double t, const double* y) {
 
 void RateFormSystem::Residual(double t, const double* y, const double* yp, double* residual) {
   EvaluateLaws(t, y);
-  excitation_.EffectiveLoad(t, structure_.mass(), &load_);
+  excitation_.EffectiveLoad(t, mass_influence_, &load_);
   dof_rows_.Residual(y, yp, structure_.mass(), force_, load_, residual);
   for (std::size_t l = 0; l < laws_.size(); ++l) {
     const int q0 = 2 * dofs_ + laws_[l].q0;
@@ -318,7 +319,7 @@ int RateFormSystem::SwitchPhases(const int* roots_found, double* y) {
 
 void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp) {
   EvaluateLaws(t, y);
-  excitation_.EffectiveLoad(t, structure_.mass(), &load_);
+  excitation_.EffectiveLoad(t, mass_influence_, &load_);
   dof_rows_.Derivative(y, structure_.mass(), force_, load_, yp);
   for (std::size_t l = 0; l < laws_.size(); ++l) {
     const int q0 = 2 * dofs_ + laws_[l].q0;
@@ -328,7 +329,7 @@ void RateFormSystem::ConsistentDerivative(double t, const double* y, double* yp)
 
 void RateFormSystem::EnergyRates(double t, const double* y, double* rates) {
   EvaluateLaws(t, y);
-  excitation_.EffectiveLoad(t, structure_.mass(), &load_);
+  excitation_.EffectiveLoad(t, mass_influence_, &load_);
   DofRows::PowerRates(load_, velocity_, viscous_, responses_, rates);
 }
 
@@ -353,7 +354,7 @@ ResponseRow RateFormSystem::Record(int step, double t, const double* y,
                                        const double* energy_integrals) {
   const Eigen::VectorXd& m = structure_.mass();
   EvaluateLaws(t, y);
-  excitation_.EffectiveLoad(t, m, &load_);
+  excitation_.EffectiveLoad(t, mass_influence_, &load_);
   acceleration_ = (load_ - force_).cwiseQuotient(m);
   absolute_acceleration_ = acceleration_;
   excitation_.AddGroundAcceleration(t, absolute_acceleration_);

@@ -97,6 +97,7 @@ class RateFormSystem {
 
   const structure::Structure& structure_;
   const Excitation& excitation_;
+  const std::vector<Eigen::VectorXd> mass_influence_;  // M r of each ground component
   int dofs_ = 0;
   DofRows dof_rows_;
   int internal_count_ = 0;

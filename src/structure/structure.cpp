@@ -209,6 +209,11 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
         packed.slots[a * packed.count + b] = SlotOf(pattern_, packed.dofs[a], packed.dofs[b]);
       }
     }
+    packed.under_floor = packed.count == 3 && packed.dofs[1] == packed.dofs[0] + 1 &&
+                         packed.dofs[2] == packed.dofs[0] + 2 &&
+                         packed.columns[0] == Vec2{1.0, 0.0} &&
+                         packed.columns[1] == Vec2{0.0, 1.0};
+    packed.arm = {packed.columns[2].y, -packed.columns[2].x};
     coupled_terms_.push_back(packed);
     coupled_constants_.push_back(member.assembly.ConstantTangent());
   }
@@ -234,6 +239,23 @@ void Structure::AddBetweenTangent(const Between& spring, double k_eff, double* v
 
 void Structure::AddCoupledTangent(std::size_t coupled, const Mat2& k_eff, double* values) const {
   const CoupledTerms& terms = coupled_terms_[coupled];
+  if (terms.under_floor) {
+    // T^T K T with T = [1 0 -a_y; 0 1 a_x], row-major over (u_x, u_y, theta).
+    const double ax = terms.arm.x, ay = terms.arm.y;
+    const double x_theta = -ay * k_eff.xx + ax * k_eff.xy, y_theta = -ay * k_eff.yx + ax * k_eff.yy;
+    const double theta_x = -ay * k_eff.xx + ax * k_eff.yx, theta_y = -ay * k_eff.xy + ax * k_eff.yy;
+    const int* slot = terms.slots.data();
+    values[slot[0]] += k_eff.xx;
+    values[slot[1]] += k_eff.xy;
+    values[slot[2]] += x_theta;
+    values[slot[3]] += k_eff.yx;
+    values[slot[4]] += k_eff.yy;
+    values[slot[5]] += y_theta;
+    values[slot[6]] += theta_x;
+    values[slot[7]] += theta_y;
+    values[slot[8]] += -ay * theta_x + ax * theta_y;
+    return;
+  }
   for (int b = 0; b < terms.count; ++b) {
     const Vec2 k_column = k_eff * terms.columns[b];
     for (int a = 0; a < terms.count; ++a) {
@@ -271,7 +293,8 @@ Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> 
   return d;
 }
 
-void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committed,
+// Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
+[[gnu::flatten]] void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committed,
                                const hysteresis::LawInput& in, std::span<LawState> trial,
                                std::span<hysteresis::LawResponse> responses,
                                std::span<double> member_forces, double damping_factor,
@@ -286,7 +309,8 @@ void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committe
   }
 }
 
-void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
+// Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
+[[gnu::flatten]] void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                 std::span<LawState> trial,
                                 std::span<hysteresis::LawResponse> responses,
@@ -310,7 +334,28 @@ void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
   }
 }
 
-void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
+void Structure::UpdateCoupledComponent(std::size_t coupled, std::size_t component,
+                                       std::span<const LawState> committed,
+                                       const hysteresis::PlanLawInput& in,
+                                       std::span<LawState> trial,
+                                       hysteresis::PlanLawResponse* response) const {
+  const hysteresis::PlanAssembly& assembly = coupled_[coupled].assembly;
+  const hysteresis::PlanLawKernel& kernel = assembly.kernels()[component];
+  const std::size_t first = coupled_law_offset(coupled), offset = first + 2 * component;
+  if (const auto* series = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel)) {
+    // Its elements' states, as LawState pairs after every component's own.
+    const std::size_t at = first + 2 * assembly.ElementStatesOffset(component);
+    const std::size_t count = 2 * static_cast<std::size_t>(series->state_slots() - 1);
+    series->UpdateFlat({committed[offset], committed[offset + 1]}, committed.subspan(at, count),
+                       in, {trial[offset], trial[offset + 1]}, trial.subspan(at, count), response);
+    return;
+  }
+  hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
+                            {trial[offset], trial[offset + 1]}, response);
+}
+
+// Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
+[[gnu::flatten]] void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                 std::span<LawState> trial,
                                 std::span<hysteresis::LawResponse> responses,
@@ -324,23 +369,17 @@ void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
       in.v = in.v + v[terms.dofs[a]] * terms.columns[a];
     }
     const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
-    const std::size_t first = coupled_law_offset(i);
-    std::size_t offset = first;
+    std::size_t offset = coupled_law_offset(i);
     Vec2 f;
     Mat2 k_eff;
+    const bool several = assembly.state_size() != assembly.size();
     for (std::size_t c = 0; c < assembly.size(); ++c) {
-      const hysteresis::PlanLawKernel& kernel = assembly.kernels()[c];
       hysteresis::PlanLawResponse response;
-      if (const auto* series = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel)) {
-        // Its elements' states, as LawState pairs after every component's own.
-        const std::size_t at = first + 2 * assembly.ElementStatesOffset(c);
-        const std::size_t count = 2 * static_cast<std::size_t>(series->state_slots() - 1);
-        series->UpdateFlat({committed[offset], committed[offset + 1]},
-                           committed.subspan(at, count), in, {trial[offset], trial[offset + 1]},
-                           trial.subspan(at, count), &response);
+      if (several) {
+        UpdateCoupledComponent(i, c, committed, in, trial, &response);
       } else {
-        hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
-                                  {trial[offset], trial[offset + 1]}, &response);
+        hysteresis::UpdatePlanLaw(assembly.kernels()[c], {committed[offset], committed[offset + 1]},
+                                  in, {trial[offset], trial[offset + 1]}, &response);
       }
       responses[offset] = {response.force.x, response.stiffness.xx, response.damping.xx};
       responses[offset + 1] = {response.force.y, response.stiffness.yy, response.damping.yy};
@@ -393,6 +432,14 @@ double Structure::StoredEnergy(std::span<const LawState> states) const {
   for (std::size_t i = 0; i < coupled_.size(); ++i) {
     const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
     const std::size_t first = coupled_law_offset(i);
+    if (assembly.state_size() == assembly.size()) {  // one state a law
+      std::size_t offset = first;
+      for (const hysteresis::PlanLawKernel& kernel : assembly.kernels()) {
+        energy += hysteresis::PlanStoredEnergy(kernel, {states[offset], states[offset + 1]});
+        offset += 2;
+      }
+      continue;
+    }
     for (std::size_t c = 0; c < assembly.size(); ++c) {
       const hysteresis::PlanLawKernel& kernel = assembly.kernels()[c];
       const std::size_t offset = first + 2 * c;

@@ -62,7 +62,15 @@ Structure ThreeDofs() {
   coupled.assembly = hysteresis::PlanAssembly(
       {{"slider", Law(LawType::kBhm2, {20.0, 2.0, 4.0}), std::nullopt},
        {"dashpot", Law(LawType::kDashpot, {0.2}), std::nullopt}});
-  return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(connections), {coupled}, damping);
+  // And one on any 2 x 2 map of two dofs (the tangent's general path).
+  CoupledMember skew;
+  skew.name = "skew";
+  skew.dofs = {2, 0, kGround, kGround, kGround, kGround};
+  skew.columns = {Vec2{0.6, 0.2}, Vec2{-0.3, 1.0}, Vec2{}, Vec2{}, Vec2{}, Vec2{}};
+  skew.assembly = hysteresis::PlanAssembly(
+      {{"slider", Law(LawType::kBhm2, {15.0, 1.5, 3.0}), std::nullopt}});
+  return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(connections), {coupled, skew},
+                   damping);
 }
 
 TEST(Structure, ConstantTangentPlusEvaluateIsTheDerivativeOfTheForce) {

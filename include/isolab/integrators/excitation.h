@@ -49,8 +49,11 @@ struct Excitation {
                                SampledHistory y = {});
 
   double duration() const;
-  // Effective load p(t) - M sum_c r_c a_c(t) for a lumped mass vector; writes into `load`.
-  void EffectiveLoad(double t, const Eigen::VectorXd& mass, Eigen::VectorXd* load) const;
+  // M r_c for every component c, given a lumped mass vector: what EffectiveLoad takes.
+  std::vector<Eigen::VectorXd> MassInfluence(const Eigen::VectorXd& mass) const;
+  // Effective load p(t) - sum_c (M r_c) a_c(t); writes into `load` (sized already).
+  void EffectiveLoad(double t, const std::vector<Eigen::VectorXd>& mass_influence,
+                     Eigen::VectorXd* load) const;
   // Adds the ground's acceleration at t to the dofs' relative accelerations: the absolute ones.
   void AddGroundAcceleration(double t, Eigen::Ref<Eigen::VectorXd> acceleration) const;
   // The first sample time of any history after t and before `horizon` (or `horizon`): where a

@@ -176,11 +176,16 @@ class Structure {
     int dof_i = kGround, dof_j = 0;
     int ii = -1, jj = -1, ij = -1, ji = -1;
   };
+  // A coupled member's terms, packed as a member's are. One under a rigid floor (its columns
+  // (1, 0), (0, 1) and (-arm.y, arm.x): UnderFloor) keeps its arm, for a tangent block written in
+  // closed form (the multiplications by the map's zeros and ones left out).
   struct CoupledTerms {
     int count = 0;
     std::array<int, kMaxTerms> dofs{};
     std::array<Vec2, kMaxTerms> columns{};
     std::array<int, kMaxTerms * kMaxTerms> slots{};
+    bool under_floor = false;
+    Vec2 arm;
   };
 
   void AddMemberTangent(std::size_t member, double k_eff, double* values) const;
@@ -200,6 +205,13 @@ class Structure {
                        std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                        std::span<double> member_forces, double damping_factor,
                        double* values) const;
+  // One component of an assembly with sliders in series, whose elements' states sit after every
+  // component's own (plan_assembly.h).
+  [[gnu::noinline]] void UpdateCoupledComponent(std::size_t coupled, std::size_t component,
+                                                std::span<const hysteresis::LawState> committed,
+                                                const hysteresis::PlanLawInput& in,
+                                                std::span<hysteresis::LawState> trial,
+                                                hysteresis::PlanLawResponse* response) const;
   void EvaluateMember(std::size_t k, std::span<const hysteresis::LawState> committed,
                       const hysteresis::LawInput& in, std::span<hysteresis::LawState> trial,
                       std::span<hysteresis::LawResponse> responses,
