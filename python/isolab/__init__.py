@@ -10,16 +10,36 @@
 Models are read and checked by the same reader as model files, whether loaded from a file or
 built from dicts (Model.from_dict); bad input raises InputError (a ValueError) whose message
 names the file, line, key and what was allowed. A run that stops early raises RunError with the
-partial result attached. Runs release the GIL: a thread pool of runs uses every core.
+partial result attached. What the command line warns about before a run (a PGA above 3 g, a period
+above 10 s, ...) is issued as an IsolabWarning, which Jupyter shows. Runs release the GIL: a
+thread pool of runs uses every core.
 """
 
+import math
+import numbers
 import os
+import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
 from ._isolab import _compare, _cyclic, _diagnose, _fit, _run, _spectrum
 
-__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "compare", "cyclic",
-           "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
+__all__ = ["CyclicResult", "InputError", "IsolabWarning", "Model", "Result", "RunError",
+           "compare", "cyclic", "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
+
+
+class IsolabWarning(UserWarning):
+    """A plausibility warning about a run's input (the command line prints it as "warning: ..."):
+    values no real building or record has, such as a PGA above 3 g or an isolator beyond 1.5 m.
+    The run goes on; warnings.simplefilter("error", isolab.IsolabWarning) makes them errors."""
+
+
+def _positive_finite(name, value):
+    """value as a float, or InputError naming the argument as the command line names its option."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InputError(f"{name}: {value!r} is not a number")
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"{name}: {value} (must be a finite number > 0)")
+    return float(value)
 
 
 def _as_list(value):
@@ -47,12 +67,17 @@ def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
     --trial-displacement, --integrator, --rtol and --atol.
 
     Returns a Result. A run that stops early raises RunError (its .result holds the rows up to
-    the failure) unless check=False.
+    the failure) unless check=False. Each plausibility warning of the run (result.warnings) is
+    issued as an IsolabWarning.
     """
+    if scale is not None:
+        scale = _positive_finite("scale", scale)
     result = _run(_model(model), record, units=units, record_dt=record_dt, scale=scale, dt=dt,
                   free_vibration=free_vibration, fixed_base=fixed_base,
                   trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
                   atol=atol)
+    for message in result.warnings:
+        warnings.warn(message, IsolabWarning, stacklevel=2)
     if check and not result.ok:
         error = RunError(f"the run stopped early: {result.message}")
         error.result = result

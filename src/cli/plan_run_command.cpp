@@ -128,7 +128,7 @@ int RunPlanRunCommand(const RunOptions& options, std::ostream& out) {
         model::ParseFreeVibration(options.free_vibration, model.units, "--free-vibration");
   }
   const analysis::PlanAnalysisSetup setup = analysis::PreparePlanAnalysis(model, overrides);
-  if (!options.json) PrintPreamble(model, setup, out);
+  if (!options.json && !options.quiet) PrintPreamble(model, setup, out);
   out.flush();
   integrators::ResponseHistory response;
   const integrators::RunSummary summary =

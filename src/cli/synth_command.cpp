@@ -73,6 +73,7 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s), (0, 30]");
   command->add_option("--oscillations", o.pulse.oscillations, "pulse: gamma, (1, 100]");
   command->add_option("--phase", o.pulse.phase, "pulse: nu (rad)");
+  command->add_flag("-q,--quiet", o.quiet, "Accepted by every command (synth prints nothing)");
 }
 
 void RunSynthCommand(const SynthOptions& o) {
