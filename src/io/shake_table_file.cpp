@@ -11,6 +11,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/core/text_file.h"
 
 namespace isolab::io {
 namespace {
@@ -57,13 +58,13 @@ std::pair<std::string, std::string> NameAndUnit(const std::string& header) {
 }  // namespace
 
 ShakeTableData ShakeTableData::Read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path}, "cannot open the shake-table data");
+  TextLines in(path);
+  if (!in.is_open()) throw InputError({path}, "cannot open the shake-table data");
   ShakeTableData data;
   data.path_ = path;
   int time_column = -1, line_number = 0, header_line = 0;
   std::vector<std::string> names;
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; in.Next(&line);) {
     ++line_number;
     line = Trim(line);
     if (line.empty() || line[0] == '#') continue;

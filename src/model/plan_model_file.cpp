@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "isolab/core/text_file.h"
 #include "model_sections.h"
 
 namespace isolab::model {
@@ -311,18 +312,18 @@ void ReplaceIsolation(PlanModelFile* model, const hysteresis::ParallelAssembly& 
 }
 
 bool IsPlanModelFile(const std::string& path) {
-  std::ifstream in(path);
+  TextLines in(path);
   // A block mapping's top-level keys start their lines; anything indented, a comment or a
   // document marker is not one. Parsing the whole file here would read every model twice (it
   // was 15 % of a one-step run's instructions), so only a flow mapping at the top is parsed.
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; in.Next(&line);) {
     if (line.empty() || std::isspace(static_cast<unsigned char>(line[0])) || line[0] == '#' ||
         line[0] == '%' || line.starts_with("---")) {
       continue;
     }
     if (line[0] == '{') {
       try {
-        const YAML::Node root = YAML::LoadFile(path);
+        const YAML::Node root = YAML::Load(ReadBoundedText(path));
         return root.IsMap() && root["plan"].IsDefined();
       } catch (const std::exception&) {
         return false;
