@@ -136,6 +136,31 @@ TEST(ModelFile, FrictionPendulumTakesItsPeriodInsteadOfItsRadius) {
               "isolation.components[0].period: give the radius r or the period, not both");
 }
 
+// Errors in the uniform shorthand `stories: {count: ...}` were located at 1:1 (the story was read
+// from a copy of its node, which has no marks): they are located at the key.
+TEST(ModelFile, ErrorsInUniformStoriesAreLocatedAtTheKey) {
+  const auto error_of = [](const std::string& stories) -> std::string {
+    try {
+      LoadModelText("units: {force: kN, length: mm, time: s}\n"
+                    "structure:\n"
+                    "  type: shear_building\n"
+                    "  stories: " +
+                        stories + "\n",
+                    "building.yaml");
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error_of("{count: 5, mass: 25 t,\n            stiffness: -76 kN/mm}"),
+            "building.yaml:5:24: structure.stories.stiffness: -76 (must be > 0)");
+  EXPECT_EQ(error_of("{count: 5, stiffness: 76 kN/mm}"),
+            "building.yaml:4:12: structure.stories: missing key 'mass'");
+  EXPECT_EQ(error_of("{count: 5, mass: 25 t, stiffness: 76 kN/mm, heigth: 3 m}").rfind(
+                "building.yaml:4:56: structure.stories.heigth: unknown key", 0),
+            0u);
+}
+
 // A lead core's heat capacity 10^6 times too small (kN/mm^2 read as MPa twice over) heated and
 // cooled the core within a fraction of a time step: Newmark's force kept the cold strength while
 // its heat account took almost none, an energy balance error of 68 % with exit 0. Material data
