@@ -21,7 +21,8 @@ import os
 import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _diagnose, _fit, _run, _spectrum
+from ._isolab import _compare, _cyclic, _diagnose, _fit, _parse_list, _parse_periods, _run
+from ._isolab import _spectrum
 
 __all__ = ["CyclicResult", "InputError", "IsolabWarning", "Model", "Result", "RunError",
            "compare", "cyclic", "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
@@ -107,6 +108,13 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     return runs if several else runs[0]
 
 
+def _spectrum_list(value, name, parse=_parse_list):
+    """A number, a sequence of numbers, or the command line's text ("0.05:5:0.05", "0.02,0.05")."""
+    if isinstance(value, str):
+        return parse(value, name)
+    return _as_list(value)
+
+
 def _default_periods():
     """The command line's default --periods 0.05:5:0.05, the same 100 numbers."""
     return [float(f"{0.05 + k * 0.05:.12g}") for k in range(100)]
@@ -119,23 +127,27 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
 
     record: a record file, or a numpy array of accelerations (then record_dt in s and units are
     required). periods (s; default the command line's 0.05 to 5 by 0.05), damping and ductility
-    (a number or a list), alpha, points_per_period, scale, units, record_dt and length_unit are the
+    (a number, a list, or the command line's text: periods="0.05:5:0.05" or "0.5,1,2",
+    damping="0.02,0.05"), alpha, points_per_period, scale, units, record_dt and length_unit are the
     command line's --periods, --damping, --ductility, --alpha, --points-per-period, --scale,
     --units, --dt and --length-unit; max_steps is --max-steps (a spectrum counted above it is
     refused before it starts).
 
     Returns a dict named as the HDF5 spectrum file: "period", "damping", "elastic" {"D", "V",
-    "A", "time_of_peak"} (damping x period arrays, lengths in length_unit, time in s) and, with
-    ductility, "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "u_m",
-    "achieved_ductility" (damping x ductility x period), ...}; "record" and "units".
+    "A", "A_g", "time_of_peak"} (damping x period arrays) and, with ductility,
+    "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "A_y_g", "u_m",
+    "achieved_ductility" (damping x ductility x period), ...}; "record" and "units", which gives
+    each array's unit as the command line's table does: D in length_unit, V in length_unit/s, A
+    in length_unit/s^2 (m/s^2 by default), A_g in g (units["g"] is g in length_unit/s^2).
 
     h2: the pair's second component (a file or an array, read as record is), as `isolab spectrum
     H1 H2`: then "h1", "h2", "geometric_mean", "rotd50" and "rotd100" (each as "elastic"; rotd100
     also "angle", degrees from H1 towards H2) replace "elastic", with "record_h2"; ductility is
     refused for a pair.
     """
-    return _spectrum(record, h2, _as_list(periods) or _default_periods(), _as_list(damping),
-                     _as_list(ductility), alpha, points_per_period, scale, units, record_dt,
+    return _spectrum(record, h2, _spectrum_list(periods, "periods", _parse_periods) or
+                     _default_periods(), _spectrum_list(damping, "damping"),
+                     _spectrum_list(ductility, "ductility"), alpha, points_per_period, scale, units, record_dt,
                      length_unit, max_steps)
 
 
