@@ -211,12 +211,11 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
             cube([](const ConstantDuctilityPoint& p) { return p.yield_pseudo_velocity; }),
         py::arg("A_y") =
             cube([](const ConstantDuctilityPoint& p) { return p.yield_pseudo_acceleration; }),
-        py::arg("A_y_g") = Table(inelastic->points, nz * nm, nt,
-                                 [g](const ConstantDuctilityPoint& p) {
-                                   return p.yield_pseudo_acceleration / g;
-                                 })
-                               .reshape(std::vector<py::ssize_t>{
-                                   py::ssize_t(nz), py::ssize_t(nm), py::ssize_t(nt)}),
+        py::arg("A_y_g") =
+            Table(inelastic->points, nz * nm, nt,
+                  [g](const ConstantDuctilityPoint& p) { return p.yield_pseudo_acceleration / g; })
+                .reshape(
+                    std::vector<py::ssize_t>{py::ssize_t(nz), py::ssize_t(nm), py::ssize_t(nt)}),
         py::arg("u_m") = cube([](const ConstantDuctilityPoint& p) { return p.peak_deformation; }),
         py::arg("achieved_ductility") =
             cube([](const ConstantDuctilityPoint& p) { return p.achieved_ductility; }));

@@ -128,8 +128,8 @@ void WriteAt2(const io::Record& record, const std::string& path) {
   }
   for (std::size_t k = 0; k < record.values.size(); ++k) {
     if (!std::isfinite(record.values[k])) {
-      throw std::invalid_argument(fmt::format("{}: sample {} of the record is {}", path, k + 1,
-                                              record.values[k]));
+      throw std::invalid_argument(
+          fmt::format("{}: sample {} of the record is {}", path, k + 1, record.values[k]));
     }
   }
   io::WriteTextFileAtomically(path, [&](std::ostream& out) {

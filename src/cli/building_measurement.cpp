@@ -59,11 +59,11 @@ std::vector<int> ParseLevels(const std::string& text) {
     // One channel for two levels would count its floor's inertia twice in the base shear.
     const auto first = std::find(channels.begin(), channels.end() - 1, channels.back());
     if (first != channels.end() - 1) {
-      throw InputError({"command line"},
-                       fmt::format("--levels {}: channel {} is given twice (levels {} and {}); "
-                                   "each level has its own channel",
-                                   text, channels.back(), first - channels.begin() + 1,
-                                   channels.size()));
+      throw InputError(
+          {"command line"},
+          fmt::format("--levels {}: channel {} is given twice (levels {} and {}); "
+                      "each level has its own channel",
+                      text, channels.back(), first - channels.begin() + 1, channels.size()));
     }
   }
   return channels;

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "diagnosis_report.h"
-#include "fit_data_checks.h"
 #include "finite_options.h"
+#include "fit_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/diagnose.h"
 #include "isolab/io/atomic_file.h"

@@ -13,7 +13,7 @@ namespace {
 // Whole bounds in full (2147483647, not 2.14748e+09), others in the shortest form.
 std::string Bound(double value) {
   return value == std::floor(value) && std::abs(value) < 1e15 ? fmt::format("{:.0f}", value)
-                                                               : fmt::format("{:g}", value);
+                                                              : fmt::format("{:g}", value);
 }
 
 }  // namespace

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "fit_data_checks.h"
 #include "finite_options.h"
+#include "fit_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
 #include "isolab/io/cyclic_test_file.h"

@@ -9,6 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "finite_options.h"
 #include "isolab/analysis/analysis_setup.h"
 #include "isolab/analysis/model_summary.h"
 #include "isolab/analysis/response_peaks.h"
@@ -21,7 +22,6 @@
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/model_file.h"
 #include "isolab/model/plan_model_file.h"
-#include "finite_options.h"
 #include "plan_run_command.h"
 #include "plot_script.h"
 #include "run_report.h"

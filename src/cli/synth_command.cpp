@@ -17,8 +17,8 @@ constexpr int kMinSamples = 10;
 // Bounds no earthquake approaches, an order of magnitude past the largest recorded (PGA about 3 g,
 // PGV about 3 m/s): what lies beyond is a unit slip, and near the largest doubles the samples
 // overflow to infinity.
-constexpr double kMaxPga = 10.0;    // g
-constexpr double kMaxPgv = 30.0;    // m/s
+constexpr double kMaxPga = 10.0;     // g
+constexpr double kMaxPgv = 30.0;     // m/s
 constexpr double kMaxPeriod = 60.0;  // s
 constexpr double kMaxOscillations = 100.0;
 
@@ -32,8 +32,8 @@ void CheckNoise(const analysis::FilteredNoiseSpec& s) {
   Require(s.pga > 0 && s.pga <= kMaxPga, "--pga", s.pga,
           fmt::format("must be > 0 and at most {:g} g", kMaxPga));
   Require(s.duration >= kMinSamples * s.dt && s.duration <= kMaxDuration, "--duration", s.duration,
-          fmt::format("must be at least {:g} s ({} samples) and at most {:g} s",
-                      kMinSamples * s.dt, kMinSamples, kMaxDuration));
+          fmt::format("must be at least {:g} s ({} samples) and at most {:g} s", kMinSamples * s.dt,
+                      kMinSamples, kMaxDuration));
   // RK4 integrates the site filter at dt: a quarter of the sampling rate keeps w dt < 1.6.
   const double highest = 0.25 / s.dt;
   Require(s.site_frequency > 0 && s.site_frequency <= highest, "--site-frequency", s.site_frequency,

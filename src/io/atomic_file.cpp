@@ -1,8 +1,8 @@
 #include "isolab/io/atomic_file.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <fmt/format.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -208,8 +208,8 @@ void AtomicFile::Commit() {
   if (std::rename(named.c_str(), path_.c_str()) != 0) {
     const int error = errno;
     if (fd_ >= 0) std::remove(named.c_str());
-    throw InputError({path_}, fmt::format("cannot rename {} to it ({})", named,
-                                          std::strerror(error)));
+    throw InputError({path_},
+                     fmt::format("cannot rename {} to it ({})", named, std::strerror(error)));
   }
   committed_ = true;
   // The rename itself; the output is in place whatever this says (some file systems cannot sync

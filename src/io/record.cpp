@@ -31,7 +31,8 @@ std::vector<std::string> Lines(const std::string& path) {
     throw InputError({path}, "is a directory, not a record");
   }
   TextLines in(path);
-  if (!in.is_open()) throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
+  if (!in.is_open())
+    throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
   std::vector<std::string> lines;
   for (std::string line; in.Next(&line);) lines.push_back(std::move(line));
   return lines;

@@ -78,9 +78,9 @@ void CheckMaterialData(const YamlReader& reader, const YAML::Node& node, const s
     reader.Fail(node[std::string(range.key)], "",
                 fmt::format("{} = {:g} {} = {:g} {} (must be {:g} to {:g} {}, {:g} to {:g} {}; "
                             "{}): a unit slip?",
-                            ChildPath(path, range.key), value, unit, value * factor, range.si_unit, range.low, range.high,
-                            range.si_unit, range.low / factor, range.high / factor, unit,
-                            range.typical));
+                            ChildPath(path, range.key), value, unit, value * factor, range.si_unit,
+                            range.low, range.high, range.si_unit, range.low / factor,
+                            range.high / factor, unit, range.typical));
   }
 }
 

@@ -136,22 +136,21 @@ TEST(BoundedInput, AYamlFileOverItsLimitIsRefusedBeforeReading) {
 TEST(BoundedInput, AByteOrderMarkChangesNothing) {
   const std::string bom = "\xEF\xBB\xBF";
   // A comment line first: with the mark kept it was read as the header.
-  const std::string cyclic = "# units: force kN, length mm\ntest,time,displacement,force\n"
-                             "a,0,0,0\na,0.1,1,x\n";
+  const std::string cyclic =
+      "# units: force kN, length mm\ntest,time,displacement,force\n"
+      "a,0,0,0\na,0.1,1,x\n";
   for (const std::string& prefix : {std::string(), bom}) {
-    const Outcome fit =
-        RunMeasured({"fit", Write("bom.csv", prefix + cyclic), "--model",
-                     kSource + "/tests/cli/data/fit/three_laws_spec.yaml", "-q"});
+    const Outcome fit = RunMeasured({"fit", Write("bom.csv", prefix + cyclic), "--model",
+                                     kSource + "/tests/cli/data/fit/three_laws_spec.yaml", "-q"});
     EXPECT_EQ(fit.exit_code, 2) << fit.output;
     EXPECT_NE(fit.output.find("bom.csv:4:"), std::string::npos) << fit.output;
     EXPECT_NE(fit.output.find("'x' is not a number"), std::string::npos) << fit.output;
 
-    const Outcome table = RunMeasured(
-        {"shaketable", Write("bom_table.csv", prefix + "# BNCS\ntime_s,a1_g\n0,x\n"), "--model",
-         kSource + "/models/bncs/bncs.yaml", "-q"});
+    const Outcome table =
+        RunMeasured({"shaketable", Write("bom_table.csv", prefix + "# BNCS\ntime_s,a1_g\n0,x\n"),
+                     "--model", kSource + "/models/bncs/bncs.yaml", "-q"});
     EXPECT_EQ(table.exit_code, 2) << table.output;
-    EXPECT_NE(table.output.find("bom_table.csv:3:2: column 'a1': 'x' is not a"),
-              std::string::npos)
+    EXPECT_NE(table.output.find("bom_table.csv:3:2: column 'a1': 'x' is not a"), std::string::npos)
         << table.output;
 
     // A model whose error is located by line and column, the same with the mark.
@@ -165,10 +164,10 @@ TEST(BoundedInput, AByteOrderMarkChangesNothing) {
   }
   // A CSV record reads the same with the mark: its header names its units.
   const std::string record = "time (s),acceleration (g)\n0,0\n0.01,0.1\n0.02,-0.05\n0.03,0\n";
-  const Outcome plain = RunMeasured({"spectrum", Write("plain.csv", record), "--periods",
-                                     "0.5:1:0.5", "--json", "-q"});
-  const Outcome marked = RunMeasured({"spectrum", Write("marked.csv", bom + record), "--periods",
-                                      "0.5:1:0.5", "--json", "-q"});
+  const Outcome plain = RunMeasured(
+      {"spectrum", Write("plain.csv", record), "--periods", "0.5:1:0.5", "--json", "-q"});
+  const Outcome marked = RunMeasured(
+      {"spectrum", Write("marked.csv", bom + record), "--periods", "0.5:1:0.5", "--json", "-q"});
   EXPECT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_EQ(marked.exit_code, 0) << marked.output;
   const auto numbers = [](std::string text) {  // the spectrum, up to the record's own name

@@ -158,7 +158,8 @@ TEST(OutputRefusal, RangesOfOptionsAreSaidReadably) {
   std::ofstream(folder / "study.yaml") << "building: m.yaml\n";
   std::ofstream(folder / "data.csv") << "test,time,displacement,force\n";
   std::ofstream(folder / "spec.yaml") << "units: {force: kN, length: mm, time: s}\n";
-  ExpectRefused(folder, "run m.yaml --trial-displacement 0", "--trial-displacement: 0 (must be > 0)");
+  ExpectRefused(folder, "run m.yaml --trial-displacement 0",
+                "--trial-displacement: 0 (must be > 0)");
   ExpectRefused(folder, "run m.yaml --every 0", "--every: 0 (must be > 0)");
   ExpectRefused(folder, "run m.yaml --scale -1", "--scale: -1 (must be > 0)");
   ExpectRefused(folder, "run m.yaml --rtol 1", "--rtol: 1 (must be in [1e-14, 0.09])");
@@ -185,8 +186,8 @@ TEST(OutputRefusal, EveryCommandTakesQuiet) {
   EXPECT_EQ(quiet.output.find("record:"), std::string::npos) << quiet.output;
   EXPECT_EQ(quiet.output.find("model:"), std::string::npos) << quiet.output;
   EXPECT_NE(quiet.output.find("peak isolator displacement"), std::string::npos) << quiet.output;
-  const auto loud = RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY +
-                                   " run m.yaml -o m.h5 2>&1");
+  const auto loud =
+      RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY + " run m.yaml -o m.h5 2>&1");
   EXPECT_NE(loud.output.find("record:"), std::string::npos) << loud.output;
   for (const char* command :
        {"cyclic iso.yaml -a 50 -q", "synth noise -q -o n.at2", "spectrum rec.at2 -q -o s.csv",

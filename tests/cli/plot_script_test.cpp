@@ -39,10 +39,10 @@ bool PlottingAvailable() {
   return std::system("/usr/bin/python3 -c 'import matplotlib, h5py' >/dev/null 2>&1") == 0;
 }
 
-#define REQUIRE_PLOTTING()                                                               \
-  if (!PlottingAvailable()) {                                                            \
+#define REQUIRE_PLOTTING()                                                                  \
+  if (!PlottingAvailable()) {                                                               \
     GTEST_FAIL() << "/usr/bin/python3 cannot import matplotlib and h5py: install Debian's " \
-                 << "python3-matplotlib and python3-h5py (scripts/setup.sh does)";        \
+                 << "python3-matplotlib and python3-h5py (scripts/setup.sh does)";          \
   }
 
 // A PNG's width and height in pixels (its IHDR chunk, big-endian), {0, 0} if it is none.
@@ -209,10 +209,10 @@ TEST(PlotScript, SpectrumPlotsFromCsvAndHdf5) {
     for (const double a : curve["A_y_g"]) largest_a = std::max(largest_a, a);
     for (const double d : curve["D_y"]) largest_d = std::max(largest_d, d);
   }
-  const auto plot = isolab::testing::RunCommandLine(
-      "/usr/bin/python3 " + Source("scripts/plot_spectrum.py") + " " +
-      (directory / "fwn.h5").string() + " --metadata -q -o " + (directory / "meta").string() +
-      " 2>&1");
+  const auto plot =
+      isolab::testing::RunCommandLine("/usr/bin/python3 " + Source("scripts/plot_spectrum.py") +
+                                      " " + (directory / "fwn.h5").string() + " --metadata -q -o " +
+                                      (directory / "meta").string() + " 2>&1");
   ASSERT_EQ(plot.exit_code, 0) << plot.output;
   const nlohmann::json a = Sidecar(directory / "meta" / "fwn_A.png")["axes"][0];
   EXPECT_EQ(a["ylabel"], "pseudo-acceleration A [g]");

@@ -86,8 +86,9 @@ TEST(Readme, TheModelFileRunsAsShown) {
   std::istringstream quoted(Fenced(Between(readme, "readme-model-output"), ""));
   int count = 0;
   for (std::string line; std::getline(quoted, line); ++count) {
-    EXPECT_NE(run.output.find(line), std::string::npos) << "the README quotes\n  " << line
-                                                        << "\nisolab printed\n" << run.output;
+    EXPECT_NE(run.output.find(line), std::string::npos)
+        << "the README quotes\n  " << line << "\nisolab printed\n"
+        << run.output;
   }
   EXPECT_GE(count, 3);
 }

@@ -236,8 +236,9 @@ TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
       {"gap.csv", header + Retimed(rows, 200, 100.0),
        "gap.csv:202:1: time 102 follows 1.99: a step of 100.01 s where the samples are 0.01 s "
        "apart"},
-      {"off_grid.csv", header + Retimed(rows, 100, 0.003).substr(0, Offset(rows, 101)) +
-                           rows.substr(Offset(rows, 101)),
+      {"off_grid.csv",
+       header + Retimed(rows, 100, 0.003).substr(0, Offset(rows, 101)) +
+           rows.substr(Offset(rows, 101)),
        "off_grid.csv:102:1: time 1.003 is 0.3 steps off the uniform step 0.01 s"},
       // One corrupt cell once decided the displacement reference and the peaks.
       {"corrupt.csv", header + WithCell(rows, 50, 4, "1e300"),

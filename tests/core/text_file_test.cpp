@@ -40,14 +40,14 @@ TEST(TextLines, ReadsLinesUpToTheLimitAsTheyAre) {
   EXPECT_EQ(lines[0], "# first");  // the mark gone, and the '\r'
   EXPECT_EQ(lines[1], nul);
   EXPECT_EQ(lines[2], std::string(10, 'x'));  // exactly the limit, before a '\r'
-  EXPECT_EQ(lines[3], "\xEF\xBB\xBFlast");   // a mark is only a mark at the start of the file
+  EXPECT_EQ(lines[3], "\xEF\xBB\xBFlast");    // a mark is only a mark at the start of the file
   EXPECT_TRUE(AllLines(Write("empty.txt", ""), 8).empty());
   EXPECT_EQ(AllLines(Write("newline.txt", "a\n"), 8), std::vector<std::string>{"a"});
 }
 
 TEST(TextLines, ALineOverTheLimitIsRefusedAtItsNumber) {
-  for (const std::string& tail : {std::string(9, 'x'), std::string(9, 'x') + "\n",
-                                  std::string(100000, '\0') + "\nnext\n"}) {
+  for (const std::string& tail :
+       {std::string(9, 'x'), std::string(9, 'x') + "\n", std::string(100000, '\0') + "\nnext\n"}) {
     const std::string path = Write("long.txt", "header\n" + tail);
     TextLines lines(path, 8);
     std::string line;

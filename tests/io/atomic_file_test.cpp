@@ -2,8 +2,8 @@
 // so, every writer has its own temporary file, and nothing is left behind.
 #include "isolab/io/atomic_file.h"
 
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -178,8 +178,8 @@ TEST(AtomicFile, TheNextWriterRemovesTheNamedTemporariesOfDeadWriters) {
   }
   WriteTextFileAtomically(target.string(), [](std::ostream& out) { out << "new"; });
   EXPECT_FALSE(fs::exists(folder / stale));
-  EXPECT_TRUE(fs::exists(folder / live));                          // a writer still at work
-  EXPECT_TRUE(fs::exists(folder / "out.h5.AbC123.tmp"));           // no pid: whose is unknown
+  EXPECT_TRUE(fs::exists(folder / live));                 // a writer still at work
+  EXPECT_TRUE(fs::exists(folder / "out.h5.AbC123.tmp"));  // no pid: whose is unknown
   EXPECT_TRUE(fs::exists(folder / fmt::format("other.h5.{}.AbC123.tmp", dead)));  // not ours
   EXPECT_EQ(Read(target), "new");
 }

@@ -68,8 +68,9 @@ TEST(ShakeTableFile, TimesMustBeEvenlySpaced) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.location().line, 14);  // the sample after the lost one (k = 13)
     EXPECT_EQ(error.location().column, 1);
-    EXPECT_NE(std::string(error.what()).find("time 0.04333 follows 0.03667: a step of 0.00666 s where the "
-                                             "samples are 0.00333 s apart"),
+    EXPECT_NE(std::string(error.what())
+                  .find("time 0.04333 follows 0.03667: a step of 0.00666 s where the "
+                        "samples are 0.00333 s apart"),
               std::string::npos)
         << error.what();
   }

@@ -141,12 +141,13 @@ TEST(ModelFile, FrictionPendulumTakesItsPeriodInsteadOfItsRadius) {
 TEST(ModelFile, ErrorsInUniformStoriesAreLocatedAtTheKey) {
   const auto error_of = [](const std::string& stories) -> std::string {
     try {
-      LoadModelText("units: {force: kN, length: mm, time: s}\n"
-                    "structure:\n"
-                    "  type: shear_building\n"
-                    "  stories: " +
-                        stories + "\n",
-                    "building.yaml");
+      LoadModelText(
+          "units: {force: kN, length: mm, time: s}\n"
+          "structure:\n"
+          "  type: shear_building\n"
+          "  stories: " +
+              stories + "\n",
+          "building.yaml");
     } catch (const InputError& error) {
       return error.what();
     }
@@ -156,8 +157,8 @@ TEST(ModelFile, ErrorsInUniformStoriesAreLocatedAtTheKey) {
             "building.yaml:5:24: structure.stories.stiffness: -76 (must be > 0)");
   EXPECT_EQ(error_of("{count: 5, stiffness: 76 kN/mm}"),
             "building.yaml:4:12: structure.stories: missing key 'mass'");
-  EXPECT_EQ(error_of("{count: 5, mass: 25 t, stiffness: 76 kN/mm, heigth: 3 m}").rfind(
-                "building.yaml:4:56: structure.stories.heigth: unknown key", 0),
+  EXPECT_EQ(error_of("{count: 5, mass: 25 t, stiffness: 76 kN/mm, heigth: 3 m}")
+                .rfind("building.yaml:4:56: structure.stories.heigth: unknown key", 0),
             0u);
 }
 
@@ -191,13 +192,15 @@ TEST(ModelFile, LeadCoreMaterialDataOutsideWhatMetalsHaveAreRefused) {
             "degC = 1.456 J/(m^3 degC) (must be 500000 to 5e+06 J/(m^3 degC), 0.0005 to 0.005 "
             "kN/mm^2 per degC; lead 1.456e6): a unit slip?");
   // Steel conducts 50 W/(m degC) = 0.05 kN/(s degC); 50 in kN/s is a thousand times that.
-  const std::string steel = "lead_heat_capacity: 1.456e-3, steel_diffusivity: 14.1, "
-                            "shim_thickness: 27, steel_conductivity: ";
+  const std::string steel =
+      "lead_heat_capacity: 1.456e-3, steel_diffusivity: 14.1, "
+      "shim_thickness: 27, steel_conductivity: ";
   EXPECT_EQ(error_of(steel + "0.05"), "");
-  EXPECT_NE(error_of(steel + "50").find(
-                "lrb.yaml:5:141: isolation.components[0].steel_conductivity = 50 kN/s per degC "
+  EXPECT_NE(
+      error_of(steel + "50")
+          .find("lrb.yaml:5:141: isolation.components[0].steel_conductivity = 50 kN/s per degC "
                 "= 50000 W/(m degC) (must be 1 to 500 W/(m degC)"),
-            std::string::npos)
+      std::string::npos)
       << error_of(steel + "50");
 }
 

@@ -186,8 +186,8 @@ TEST(PlanModelFile, ErrorsInUniformStoriesAreLocatedAtTheKey) {
       "    mass: 100 t\n"
       "    stiffness: {x: 300, y: -200, torsion: 3.0e10}\n";
   const std::string model = Model("  stories:\n", uniform);
-  const std::string text = model.substr(0, model.find("    - {name: s1")) +
-                           model.substr(model.find("  isolators:"));
+  const std::string text =
+      model.substr(0, model.find("    - {name: s1")) + model.substr(model.find("  isolators:"));
   ExpectError(ErrorOf(text), ":8:28:", "plan.stories.stiffness.y: -200 (must be > 0)");
 }
 

@@ -130,8 +130,8 @@ BncsIsolatorThirdCycle ClosedFormThirdCycle(double amplitude, double period, int
     return sum * h / 3.0;
   };
   const double kappa_start = 7.0 * (a - uy_d) + a - 2.0 * uy_d;
-  const double kappa_top = kappa_start + a;                        // up from 0 to A
-  const double kappa_bottom = kappa_top + 2.0 * a - 2.0 * uy_d;    // down from A - 2 uy to -A
+  const double kappa_top = kappa_start + a;                      // up from 0 to A
+  const double kappa_bottom = kappa_top + 2.0 * a - 2.0 * uy_d;  // down from A - 2 uy to -A
   const double w_degrading = slip_energy(kappa_start, 0.0, 1.0, a) +
                              slip_energy(kappa_top, a - 2.0 * uy_d, -1.0, 2.0 * a - 2.0 * uy_d) +
                              slip_energy(kappa_bottom, -a + 2.0 * uy_d, 1.0, a - 2.0 * uy_d);
@@ -143,10 +143,10 @@ BncsIsolatorThirdCycle ClosedFormThirdCycle(double amplitude, double period, int
     const double phase = 2.0 * pi * k / samples;
     const double u = a * std::sin(phase), v = a * omega * std::cos(phase);
     // Going up to +A (kappa from kappa_start) and, with the signs turned, down to -A.
-    const double up = fs_b + phi(kappa_start + u) * (fs_d + k1_d * u) + c * v + f_thm1 +
-                      thm1[2] * (u - a);
-    const double down = fs_b + phi(kappa_top + (a - 2.0 * uy_d) + u) * (fs_d + k1_d * u) +
-                        c * v + f_thm1 + thm1[2] * (u - a);
+    const double up =
+        fs_b + phi(kappa_start + u) * (fs_d + k1_d * u) + c * v + f_thm1 + thm1[2] * (u - a);
+    const double down = fs_b + phi(kappa_top + (a - 2.0 * uy_d) + u) * (fs_d + k1_d * u) + c * v +
+                        f_thm1 + thm1[2] * (u - a);
     cycle.peak_force = std::max({cycle.peak_force, up, down});
   }
   return cycle;
