@@ -43,8 +43,10 @@ void RequireFiniteNumbers(CLI::App& app) {
 CLI::Validator Positive() {
   return CLI::Validator(
       [](std::string& text) {
-        const std::optional<double> value = ParseFiniteNumber(text);
-        return value && *value > 0.0 ? std::string() : fmt::format("{} (must be > 0)", text);
+        std::string problem;  // not a finite number: said as RequireFiniteNumbers says it
+        const std::optional<double> value = ParseFiniteNumber(text, &problem);
+        if (!value) return problem;
+        return *value > 0.0 ? std::string() : fmt::format("{} (must be > 0)", text);
       },
       "> 0");
 }
@@ -52,8 +54,10 @@ CLI::Validator Positive() {
 CLI::Validator Between(double low, double high) {
   return CLI::Validator(
       [low, high](std::string& text) {
-        const std::optional<double> value = ParseFiniteNumber(text);
-        return value && *value >= low && *value <= high
+        std::string problem;
+        const std::optional<double> value = ParseFiniteNumber(text, &problem);
+        if (!value) return problem;
+        return *value >= low && *value <= high
                    ? std::string()
                    : fmt::format("{} (must be in [{}, {}])", text, Bound(low), Bound(high));
       },
