@@ -1,13 +1,15 @@
 #!/usr/bin/python3
-"""PNG plots of an `isolab run` result (HDF5; layout in include/isolab/analysis/results_file.h).
+"""Figures of an `isolab run` result (HDF5; layout in include/isolab/analysis/results_file.h).
 
-    scripts/plot_result.py RESULT.h5 [-o DIR] [-q]
+    scripts/plot_result.py RESULT.h5 [-o DIR] [-q] [--metadata]
 
-writes, named after the result file's stem:
+writes, named after the result file's stem, each as a 300 dpi PNG and a vector PDF (and, with
+--metadata, a JSON file of its axes' labels, units and data ranges):
     <stem>_overview.png    the isolator's loop and its displacement history, the free vibration
                            after the excitation shaded (isolated models only)
     <stem>_hysteresis.png  isolator force against isolator displacement: total and each component
-    <stem>_histories.png   displacement and absolute acceleration of the isolator (base) and roof
+    <stem>_histories.png   displacement and absolute acceleration (in g) of the isolator (base) and
+                           roof
     <stem>_envelopes.png   peaks over height: displacement, story drift, absolute acceleration,
                            story shear (buildings only)
     <stem>_energy.png      input energy against kinetic + damping + elastic + hysteretic, stacked
@@ -20,7 +22,7 @@ import math
 import os
 import sys
 
-from plot_common import import_modules, text
+from plot_common import g_per, import_modules, mark_reference, save, short_name, text, wrap_title
 
 
 def units_of(dataset):
@@ -67,10 +69,10 @@ class Result:
             self.energy_unit = units_of(f["energy/input"])
             self.excitation_end = float(f.attrs.get("excitation_end", self.time[-1]))
             self.residual = float(f.attrs.get("residual_isolator_displacement", math.nan))
-            self.title = os.path.basename(text(f.attrs.get("model_file", path)))
+            self.title = short_name(text(f.attrs.get("model_file", path)))
             record = text(f.attrs.get("record", ""))
             if record:
-                self.title += f" under {os.path.basename(record)}"
+                self.title += f" under {short_name(record)}"
             if text(f.attrs.get("termination", "completed")) != "completed":
                 self.title += " (run stopped early)"
         dofs = self.displacement.shape[1]
@@ -80,132 +82,129 @@ class Result:
         self.ground_acceleration = self.absolute_acceleration[:, 0] - self.relative_acceleration[:, 0]
 
 
-def plot_overview(plt, np, r, path):
+def acceleration_in_g(r, values):
+    """Accelerations in g where the unit is a length per s^2 (engineers read floors in g)."""
+    g = g_per(r.acceleration_unit)
+    return (values / g, "g") if g else (values, r.acceleration_unit)
+
+
+def plot_overview(plt, np, r, path, metadata):
     """The isolator's loop beside its displacement history: the run at a glance."""
-    fig, (loop, history) = plt.subplots(1, 2, figsize=(11, 3.8),
+    fig, (loop, history) = plt.subplots(1, 2, figsize=(7.2, 3.2), layout="constrained",
                                         gridspec_kw={"width_ratios": [1, 1.6]})
-    loop.plot(r.isolator_displacement, r.isolator_force, lw=0.7, color="C0")
+    loop.plot(r.isolator_displacement, r.isolator_force, lw=0.6, color="C0")
     loop.set_xlabel(f"isolator displacement [{r.length}]")
     loop.set_ylabel(f"isolator force [{r.force_unit}]")
-    loop.set_title("isolator hysteresis", fontsize=10)
-    history.plot(r.time, r.isolator_displacement, lw=0.7, color="C0")
+    loop.set_title("isolator hysteresis")
+    history.plot(r.time, r.isolator_displacement, lw=0.6, color="C0", label="isolator")
     if r.excitation_end < r.time[-1]:
-        history.axvspan(r.excitation_end, r.time[-1], color="0.9", zorder=0,
-                        label="free vibration")
+        mark_reference(history.axvspan(r.excitation_end, r.time[-1], color="0.9", zorder=0,
+                                       label="free vibration"))
     if not math.isnan(r.residual):
-        history.axhline(r.residual, color="C3", lw=0.8, ls="--",
-                        label=f"residual {r.residual:.3g} {r.length}")
-    history.legend(fontsize=8, loc="upper right")
+        mark_reference(history.axhline(r.residual, color="C3", lw=0.8, ls="--",
+                                       label=f"residual {r.residual:.3g} {r.length}"))
+    history.legend(loc="best")
     history.set_xlabel(f"time [{r.time_unit}]")
     history.set_ylabel(f"isolator displacement [{r.length}]")
-    history.set_title("isolator displacement", fontsize=10)
+    history.set_title("isolator displacement")
     for ax in (loop, history):
-        ax.axhline(0, color="0.7", lw=0.5)
-        ax.tick_params(labelsize=8)
-    fig.suptitle(r.title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+        mark_reference(ax.axhline(0, color="0.6", lw=0.5))
+    fig.suptitle(wrap_title(r.title, 7.2))
+    return save(plt, np, fig, path, metadata)
 
 
-def plot_hysteresis(plt, np, r, path):
+def plot_hysteresis(plt, np, r, path, metadata):
     panels = [("total", r.isolator_force)]
     if len(r.component_names) > 1:
         panels += [(name, r.component_force[:, c]) for c, name in enumerate(r.component_names)]
-    columns = min(4, len(panels))
+    columns = min(3, len(panels))
     rows = math.ceil(len(panels) / columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(3.6 * columns, 3.0 * rows), squeeze=False,
-                             sharex=True)
+    width = max(4.4, 2.5 * columns + 0.4)  # one panel (an SDOF's) as large as a report's figure
+    height = 3.6 if len(panels) == 1 else 2.3 * rows + 0.5
+    fig, axes = plt.subplots(rows, columns, figsize=(width, height), squeeze=False, sharex=True,
+                             layout="constrained")
     for k, (name, force) in enumerate(panels):
         ax = axes[k // columns][k % columns]
-        ax.plot(r.isolator_displacement, force, lw=0.7, color="C0" if k == 0 else "C1")
-        ax.set_title(name, fontsize=9)
-        ax.axhline(0, color="0.7", lw=0.5)
-        ax.axvline(0, color="0.7", lw=0.5)
-        ax.set_xlabel(f"isolator displacement [{r.length}]", fontsize=8)
-        ax.set_ylabel(f"force [{r.force_unit}]", fontsize=8)
-        ax.tick_params(labelsize=7)
+        ax.plot(r.isolator_displacement, force, lw=0.6, color="C0" if k == 0 else "C1")
+        ax.set_title(name if k == 0 else f"component {name}")
+        mark_reference(ax.axhline(0, color="0.6", lw=0.5), ax.axvline(0, color="0.6", lw=0.5))
+        ax.set_xlabel(f"isolator displacement [{r.length}]")
+        ax.set_ylabel(f"force [{r.force_unit}]")
+        ax.tick_params(labelbottom=True)  # every panel readable alone, whatever is hidden below
     for k in range(len(panels), rows * columns):
         axes[k // columns][k % columns].set_visible(False)
-    fig.suptitle(f"isolator hysteresis: {r.title}", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fig.suptitle(wrap_title(f"Isolator hysteresis: {r.title}", width))
+    return save(plt, np, fig, path, metadata)
 
 
-def plot_histories(plt, np, r, path):
+def plot_histories(plt, np, r, path, metadata):
     columns = []
     if r.base_dof is not None:
         columns.append(("isolator (base)", r.base_dof))
     columns.append(("roof" if r.stories else "mass", r.roof_dof))
-    fig, axes = plt.subplots(2, len(columns), figsize=(6.0 * len(columns), 5.5), squeeze=False,
-                             sharex=True)
+    width = 3.6 * len(columns) + 0.3
+    fig, axes = plt.subplots(2, len(columns), figsize=(width, 4.6), squeeze=False,
+                             sharex=True, layout="constrained")
     for c, (name, dof) in enumerate(columns):
         u = r.displacement[:, dof]
-        a = r.absolute_acceleration[:, dof]
-        axes[0][c].plot(r.time, u, lw=0.7)
-        axes[0][c].set_title(f"{name}: peak |u| = {np.max(np.abs(u)):.4g} {r.length}", fontsize=9)
+        a, a_unit = acceleration_in_g(r, r.absolute_acceleration[:, dof])
+        axes[0][c].plot(r.time, u, lw=0.6)
+        axes[0][c].set_title(f"{name}: peak |u| = {np.max(np.abs(u)):.4g} {r.length}")
         axes[0][c].set_ylabel(f"displacement [{r.length}]")
-        axes[1][c].plot(r.time, a, lw=0.7, color="C3")
-        axes[1][c].set_title(f"{name}: peak |a| = {np.max(np.abs(a)):.4g} {r.acceleration_unit}",
-                             fontsize=9)
-        axes[1][c].set_ylabel(f"absolute acceleration [{r.acceleration_unit}]")
+        axes[1][c].plot(r.time, a, lw=0.6, color="C3")
+        axes[1][c].set_title(f"{name}: peak |a| = {np.max(np.abs(a)):.3g} {a_unit}")
+        axes[1][c].set_ylabel(f"absolute acceleration [{a_unit}]")
         axes[1][c].set_xlabel(f"time [{r.time_unit}]")
         for ax in (axes[0][c], axes[1][c]):
-            ax.axhline(0, color="0.7", lw=0.5)
-    fig.suptitle(r.title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+            mark_reference(ax.axhline(0, color="0.6", lw=0.5))
+    fig.suptitle(wrap_title(r.title, width))
+    return save(plt, np, fig, path, metadata)
 
 
-def plot_envelopes(plt, np, r, path):
+def plot_envelopes(plt, np, r, path, metadata):
     n = r.stories
     levels = np.arange(n + 1)
     peak_u = np.max(np.abs(r.displacement), axis=0)
-    peak_a = np.max(np.abs(r.absolute_acceleration), axis=0)
-    pga = np.max(np.abs(r.ground_acceleration))
+    peak_a, a_unit = acceleration_in_g(r, np.max(np.abs(r.absolute_acceleration), axis=0))
+    pga, _ = acceleration_in_g(r, np.max(np.abs(r.ground_acceleration)))
     if r.base_dof is not None:  # level 0 is the base on the isolators
         u_levels, a_levels, ground = peak_u, peak_a, "base"
     else:  # fixed base: level 0 is the ground
         u_levels = np.concatenate([[0.0], peak_u])
         a_levels = np.concatenate([[pga], peak_a])
         ground = "ground"
-    fig, axes = plt.subplots(1, 4, figsize=(13, 4.2), sharey=True)
-    axes[0].plot(u_levels, levels, "o-")
+    fig, axes = plt.subplots(1, 4, figsize=(7.2, 3.0), sharey=True, layout="constrained")
+    axes[0].plot(u_levels, levels, "o-", ms=3)
     axes[0].set_xlabel(f"peak displacement [{r.length}]")
     axes[1].plot(*step_profile(np.max(np.abs(r.drift), axis=0)), "-", color="C1")
     axes[1].set_xlabel(f"peak story drift [{r.length}]")
-    axes[2].plot(a_levels, levels, "o-", color="C3")
-    axes[2].axvline(pga, color="0.5", lw=0.8, ls="--", label="peak ground")
-    axes[2].legend(fontsize=7)
-    axes[2].set_xlabel(f"peak absolute acceleration [{r.acceleration_unit}]")
+    axes[2].plot(a_levels, levels, "o-", ms=3, color="C3")
+    mark_reference(axes[2].axvline(pga, color="0.5", lw=0.8, ls="--", label="peak ground"))
+    axes[2].legend(loc="best")
+    axes[2].set_xlabel(f"peak absolute\nacceleration [{a_unit}]")
     axes[3].plot(*step_profile(np.max(np.abs(r.shear), axis=0)), "-", color="C2")
     axes[3].set_xlabel(f"peak story shear [{r.force_unit}]")
     axes[0].set_yticks(levels)
     axes[0].set_yticklabels([ground] + [f"floor {k}" for k in range(1, n + 1)])
+    axes[0].set_ylabel("level")
     for ax in axes:
         ax.set_xlim(left=0)
-        ax.grid(alpha=0.3)
-    fig.suptitle(f"peak envelopes: {r.title}", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fig.suptitle(wrap_title(f"Peak envelopes: {r.title}", 7.2))
+    return save(plt, np, fig, path, metadata)
 
 
-def plot_energy(plt, np, r, path):
+def plot_energy(plt, np, r, path, metadata):
     e = r.energy
-    fig, ax = plt.subplots(figsize=(9, 4.5))
+    fig, ax = plt.subplots(figsize=(7.2, 3.4), layout="constrained")
     ax.stackplot(r.time, e["kinetic"], e["damping"], e["elastic"], e["hysteretic"],
                  labels=["kinetic", "damping", "elastic", "hysteretic"], alpha=0.8)
     ax.plot(r.time, e["input"], color="k", lw=1.0, label="input")
     ax.set_xlabel(f"time [{r.time_unit}]")
     ax.set_ylabel(f"energy [{r.energy_unit}]")
-    ax.legend(loc="upper left", fontsize=8)
-    ax.set_title(f"energy balance: {r.title}", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    # Beside the axes: the stack fills the area a legend inside would cover.
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    ax.set_title(wrap_title(f"Energy balance: {r.title}", 6.0))
+    return save(plt, np, fig, path, metadata)
 
 
 def main():
@@ -214,6 +213,9 @@ def main():
     parser.add_argument("-o", "--output-dir", help="directory for the PNGs (default: the "
                         "result's)")
     parser.add_argument("-q", "--quiet", action="store_true", help="do not list the files")
+    parser.add_argument("--metadata", action="store_true",
+                        help="beside each figure, a JSON file of its axes: labels, units and "
+                        "the range of the data drawn")
     parser.add_argument("--check", action="store_true",
                         help="only check that matplotlib and h5py import")
     args = parser.parse_args()
@@ -238,10 +240,9 @@ def main():
         plots.append(("envelopes", plot_envelopes))
     plots.append(("energy", plot_energy))
     for name, plot in plots:
-        path = os.path.join(directory, f"{stem}_{name}.png")
-        plot(plt, np, r, path)
+        path = plot(plt, np, r, os.path.join(directory, f"{stem}_{name}.png"), args.metadata)
         if not args.quiet:
-            print(f"plot: {path}")
+            print(f"plot: {path} (and .pdf)")
     return 0
 
 

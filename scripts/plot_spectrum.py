@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""PNG plots of response spectra written by `isolab spectrum` (CSV or HDF5; formats in
+"""Figures of response spectra written by `isolab spectrum` (CSV or HDF5; formats in
 include/isolab/io/spectrum_file.h).
 
     scripts/plot_spectrum.py SPECTRUM.csv|SPECTRUM.h5 [-o DIR] [--velocity] [--log] [-q]
+                             [--metadata]
 
-writes, named after the spectrum file's stem:
+writes, named after the spectrum file's stem, each a 300 dpi PNG with a vector PDF beside it
+(and, with --metadata, a JSON file of its axes' labels, units and data ranges):
     <stem>_D.png         deformation: elastic D, and D_y = u_y per target ductility
     <stem>_V.png         pseudo-velocity V (and V_y), with --velocity
     <stem>_A.png         pseudo-acceleration A (and A_y) in g
@@ -21,7 +23,7 @@ import math
 import os
 import sys
 
-from plot_common import import_modules
+from plot_common import import_modules, save, short_name, wrap_title
 
 STYLES = ["-", "--", ":", "-."]
 # A pair's curves (spectrum_file.h): label and colour.
@@ -106,8 +108,8 @@ def read_hdf5(h5py, path):
     return s
 
 
-def plot_quantity(plt, s, key, label, path, log, title):
-    fig, ax = plt.subplots(figsize=(8, 5))
+def plot_quantity(plt, np, s, key, label, path, log, title, metadata):
+    fig, ax = plt.subplots(figsize=(6.5, 4.2), layout="constrained")
     zetas = sorted(set(s.elastic) | {zeta for (zeta, _) in s.inelastic} |
                    {zeta for (_, zeta) in s.pair})
     for zeta, c in sorted(s.elastic.items()):
@@ -136,11 +138,10 @@ def plot_quantity(plt, s, key, label, path, log, title):
     ax.set_xlabel("natural period T [s]")
     ax.set_ylabel(label)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7, ncol=2)
-    ax.set_title(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    # Beside the axes: a spectrum's curves fill the plot where a legend inside would go.
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    ax.set_title(wrap_title(title, 4.8, 9.5))
+    return save(plt, np, fig, path, metadata)
 
 
 def main():
@@ -150,6 +151,9 @@ def main():
     parser.add_argument("--velocity", action="store_true", help="also plot pseudo-velocity")
     parser.add_argument("--log", action="store_true", help="log-log axes")
     parser.add_argument("-q", "--quiet", action="store_true", help="do not list the files")
+    parser.add_argument("--metadata", action="store_true",
+                        help="beside each figure, a JSON file of its axes: labels, units and "
+                        "the range of the data drawn")
     parser.add_argument("--check", action="store_true",
                         help="only check that matplotlib and h5py import")
     args = parser.parse_args()
@@ -166,7 +170,7 @@ def main():
     directory = args.output_dir or os.path.dirname(args.spectrum) or "."
     os.makedirs(directory, exist_ok=True)
     stem = os.path.splitext(os.path.basename(args.spectrum))[0]
-    title = os.path.basename(args.spectrum)
+    title = short_name(args.spectrum)
     if s.inelastic:
         title += f" (constant ductility: alpha = {s.alpha:g}; yield values D_y, V_y, A_y)"
     L = s.length
@@ -177,18 +181,17 @@ def main():
     written = []
     for name, key, label in plots:
         path = os.path.join(directory, f"{stem}_{name}.png")
-        plot_quantity(plt, s, key, label, path, args.log, title)
-        written.append(path)
+        written.append(plot_quantity(plt, np, s, key, label, path, args.log, title, args.metadata))
     if s.inelastic:
         path = os.path.join(directory, f"{stem}_strength.png")
         only_inelastic = Spectra()
         only_inelastic.inelastic = s.inelastic
-        plot_quantity(plt, only_inelastic, "fy", "normalised yield strength f_y / f_o", path,
-                      args.log, title)
-        written.append(path)
+        written.append(plot_quantity(plt, np, only_inelastic, "fy",
+                                     "normalised yield strength f_y / f_o [1]", path, args.log,
+                                     title, args.metadata))
     if not args.quiet:
         for path in written:
-            print(f"plot: {path}")
+            print(f"plot: {path} (and .pdf)")
     return 0
 
 

@@ -1,5 +1,5 @@
-// What an interrupted or failed write could leave behind: AtomicFile's temporary files beside a
-// target ("<name>.<random>.tmp"). Tests expect none after any command.
+// What an interrupted or failed write could leave behind: AtomicFile's named temporary files beside
+// a target ("<name>.<pid>.<random>.tmp"). Tests expect none after any command.
 #pragma once
 
 #include <filesystem>

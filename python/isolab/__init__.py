@@ -10,16 +10,37 @@
 Models are read and checked by the same reader as model files, whether loaded from a file or
 built from dicts (Model.from_dict); bad input raises InputError (a ValueError) whose message
 names the file, line, key and what was allowed. A run that stops early raises RunError with the
-partial result attached. Runs release the GIL: a thread pool of runs uses every core.
+partial result attached. What the command line warns about before a run (a PGA above 3 g, a period
+above 10 s, ...) is issued as an IsolabWarning, which Jupyter shows. Runs release the GIL: a
+thread pool of runs uses every core.
 """
 
+import math
+import numbers
 import os
+import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _diagnose, _fit, _run, _spectrum
+from ._isolab import _compare, _cyclic, _diagnose, _fit, _parse_list, _parse_periods, _run
+from ._isolab import _spectrum
 
-__all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "compare", "cyclic",
-           "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
+__all__ = ["CyclicResult", "InputError", "IsolabWarning", "Model", "Result", "RunError",
+           "compare", "cyclic", "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
+
+
+class IsolabWarning(UserWarning):
+    """A plausibility warning about a run's input (the command line prints it as "warning: ..."):
+    values no real building or record has, such as a PGA above 3 g or an isolator beyond 1.5 m.
+    The run goes on; warnings.simplefilter("error", isolab.IsolabWarning) makes them errors."""
+
+
+def _positive_finite(name, value):
+    """value as a float, or InputError naming the argument as the command line names its option."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InputError(f"{name}: {value!r} is not a number")
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"{name}: {value} (must be a finite number > 0)")
+    return float(value)
 
 
 def _as_list(value):
@@ -47,12 +68,17 @@ def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
     --trial-displacement, --integrator, --rtol and --atol.
 
     Returns a Result. A run that stops early raises RunError (its .result holds the rows up to
-    the failure) unless check=False.
+    the failure) unless check=False. Each plausibility warning of the run (result.warnings) is
+    issued as an IsolabWarning.
     """
+    if scale is not None:
+        scale = _positive_finite("scale", scale)
     result = _run(_model(model), record, units=units, record_dt=record_dt, scale=scale, dt=dt,
                   free_vibration=free_vibration, fixed_base=fixed_base,
                   trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
                   atol=atol)
+    for message in result.warnings:
+        warnings.warn(message, IsolabWarning, stacklevel=2)
     if check and not result.ok:
         error = RunError(f"the run stopped early: {result.message}")
         error.result = result
@@ -82,6 +108,13 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     return runs if several else runs[0]
 
 
+def _spectrum_list(value, name, parse=_parse_list):
+    """A number, a sequence of numbers, or the command line's text ("0.05:5:0.05", "0.02,0.05")."""
+    if isinstance(value, str):
+        return parse(value, name)
+    return _as_list(value)
+
+
 def _default_periods():
     """The command line's default --periods 0.05:5:0.05, the same 100 numbers."""
     return [float(f"{0.05 + k * 0.05:.12g}") for k in range(100)]
@@ -94,23 +127,27 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
 
     record: a record file, or a numpy array of accelerations (then record_dt in s and units are
     required). periods (s; default the command line's 0.05 to 5 by 0.05), damping and ductility
-    (a number or a list), alpha, points_per_period, scale, units, record_dt and length_unit are the
+    (a number, a list, or the command line's text: periods="0.05:5:0.05" or "0.5,1,2",
+    damping="0.02,0.05"), alpha, points_per_period, scale, units, record_dt and length_unit are the
     command line's --periods, --damping, --ductility, --alpha, --points-per-period, --scale,
     --units, --dt and --length-unit; max_steps is --max-steps (a spectrum counted above it is
     refused before it starts).
 
     Returns a dict named as the HDF5 spectrum file: "period", "damping", "elastic" {"D", "V",
-    "A", "time_of_peak"} (damping x period arrays, lengths in length_unit, time in s) and, with
-    ductility, "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "u_m",
-    "achieved_ductility" (damping x ductility x period), ...}; "record" and "units".
+    "A", "A_g", "time_of_peak"} (damping x period arrays) and, with ductility,
+    "constant_ductility" {"ductility", "strength_ratio", "D_y", "V_y", "A_y", "A_y_g", "u_m",
+    "achieved_ductility" (damping x ductility x period), ...}; "record" and "units", which gives
+    each array's unit as the command line's table does: D in length_unit, V in length_unit/s, A
+    in length_unit/s^2 (m/s^2 by default), A_g in g (units["g"] is g in length_unit/s^2).
 
     h2: the pair's second component (a file or an array, read as record is), as `isolab spectrum
     H1 H2`: then "h1", "h2", "geometric_mean", "rotd50" and "rotd100" (each as "elastic"; rotd100
     also "angle", degrees from H1 towards H2) replace "elastic", with "record_h2"; ductility is
     refused for a pair.
     """
-    return _spectrum(record, h2, _as_list(periods) or _default_periods(), _as_list(damping),
-                     _as_list(ductility), alpha, points_per_period, scale, units, record_dt,
+    return _spectrum(record, h2, _spectrum_list(periods, "periods", _parse_periods) or
+                     _default_periods(), _spectrum_list(damping, "damping"),
+                     _spectrum_list(ductility, "ductility"), alpha, points_per_period, scale, units, record_dt,
                      length_unit, max_steps)
 
 

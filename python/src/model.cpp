@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "isolab/core/errors.h"
+
 namespace isolab::python {
 namespace {
 
@@ -115,7 +117,16 @@ void Model::Set(const std::string& key_path, const YAML::Node& value) {
   } else {
     Child(node, last, Describe(where), true) = value;
   }
-  *this = FromTree(tree, model_.path);
+  try {
+    *this = FromTree(tree, model_.path);
+  } catch (const InputError& error) {
+    // The reader located the error in the YAML written for the changed tree, which nobody sees
+    // and whose lines are not the original file's: name the key path set from Python instead.
+    const std::string where = error.location().Describe() + ": ";
+    std::string what = error.what();
+    if (what.rfind(where, 0) == 0) what.erase(0, where.size());
+    throw InputError({fmt::format("{}, set(\"{}\")", model_.path, key_path)}, what);
+  }
 }
 
 }  // namespace isolab::python

@@ -35,7 +35,8 @@ class Model {
   YAML::Node Get(const std::string& key_path) const;
   // Replaces (or adds) the value at `key_path` and reads the model again; on an InputError the
   // model is left as it was. Its text, and the lines errors name from then on, are the re-emitted
-  // YAML (Model::text()).
+  // YAML (Model::text()); an error the change itself causes names the model and the key path set
+  // ("m.yaml, set(\"isolation.components.lrb.qdd\"): ..."), no line.
   void Set(const std::string& key_path, const YAML::Node& value);
 
  private:

@@ -12,6 +12,7 @@
 #include "isolab/io/record.h"
 #include "isolab/spectra/constant_ductility.h"
 #include "isolab/spectra/elastic_spectrum.h"
+#include "isolab/spectra/period_list.h"
 #include "isolab/spectra/rotd_spectrum.h"
 #include "isolab/spectra/spectrum_work.h"
 #include "record_argument.h"
@@ -33,8 +34,9 @@ py::array_t<double> Table(const std::vector<Item>& values, std::size_t rows, std
   return array;
 }
 
-// {"D", "V", "A", "time_of_peak"} of an elastic curve, damping x period arrays.
-py::dict CurveDict(const spectra::ElasticSpectrum& e) {
+// {"D", "V", "A", "A_g", "time_of_peak"} of an elastic curve, damping x period arrays; `g` in the
+// spectra's length unit per s^2.
+py::dict CurveDict(const spectra::ElasticSpectrum& e, double g) {
   const std::size_t nz = e.damping_ratios.size(), nt = e.periods.size();
   using spectra::SpectralOrdinate;
   return py::dict(
@@ -44,6 +46,8 @@ py::dict CurveDict(const spectra::ElasticSpectrum& e) {
           Table(e.ordinates, nz, nt, [](const SpectralOrdinate& o) { return o.pseudo_velocity; }),
       py::arg("A") = Table(e.ordinates, nz, nt,
                            [](const SpectralOrdinate& o) { return o.pseudo_acceleration; }),
+      py::arg("A_g") = Table(e.ordinates, nz, nt,
+                             [g](const SpectralOrdinate& o) { return o.pseudo_acceleration / g; }),
       py::arg("time_of_peak") =
           Table(e.ordinates, nz, nt, [](const SpectralOrdinate& o) { return o.time_of_peak; }));
 }
@@ -81,7 +85,7 @@ Ground ReadGround(const py::object& record_argument, double scale,
 // A pair's spectra (rotd_spectrum.h): each curve as "elastic" is, and RotD100's direction.
 py::dict PairSpectrum(const Ground& h1, const Ground& h2, const std::vector<double>& periods,
                       const std::vector<double>& damping, int points_per_period, double max_steps,
-                      py::dict result) {
+                      double g, py::dict result) {
   try {
     spectra::ValidatePairInput(h1.acceleration, h2.acceleration, periods, damping);
   } catch (const InvalidParameter& error) {
@@ -99,11 +103,11 @@ py::dict PairSpectrum(const Ground& h1, const Ground& h2, const std::vector<doub
                                         {points_per_period});
   }
   result["record_h2"] = h2.description;
-  result["h1"] = CurveDict(pair->h1);
-  result["h2"] = CurveDict(pair->h2);
-  result["geometric_mean"] = CurveDict(pair->geometric_mean);
-  result["rotd50"] = CurveDict(pair->rotd50);
-  py::dict rotd100 = CurveDict(pair->rotd100);
+  result["h1"] = CurveDict(pair->h1, g);
+  result["h2"] = CurveDict(pair->h2, g);
+  result["geometric_mean"] = CurveDict(pair->geometric_mean, g);
+  result["rotd50"] = CurveDict(pair->rotd50, g);
+  py::dict rotd100 = CurveDict(pair->rotd100, g);
   rotd100["angle"] =
       Table(pair->rotd100_angle, damping.size(), periods.size(), [](double a) { return a; });
   result["rotd100"] = rotd100;
@@ -139,7 +143,15 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
   py::dict result;
   result["period"] = py::array_t<double>(periods.size(), periods.data());
   result["damping"] = py::array_t<double>(damping.size(), damping.data());
-  result["units"] = py::dict(py::arg("length") = length_unit, py::arg("time") = "s");
+  // Each array's unit, as the command line's table heads and CSV columns give them.
+  const double g = system->Convert(1.0, "g", dimension::kAcceleration);
+  const std::string L = length_unit;
+  result["units"] = py::dict(
+      py::arg("length") = L, py::arg("time") = "s", py::arg("g") = g, py::arg("period") = "s",
+      py::arg("D") = L, py::arg("V") = L + "/s", py::arg("A") = L + "/s^2", py::arg("A_g") = "g",
+      py::arg("time_of_peak") = "s", py::arg("angle") = "degrees", py::arg("D_y") = L,
+      py::arg("V_y") = L + "/s", py::arg("A_y") = L + "/s^2", py::arg("A_y_g") = "g",
+      py::arg("u_m") = L, py::arg("elastic_deformation") = L, py::arg("time_step") = "s");
   result["record"] = h1.description;
   if (!h2_argument.is_none()) {
     if (!ductility.empty()) {
@@ -148,7 +160,7 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
                        "responses (an inelastic oscillator is not linear): give one record");
     }
     return PairSpectrum(h1, ReadGround(h2_argument, scale, units, record_dt, *system), periods,
-                        damping, points_per_period, max_steps, result);
+                        damping, points_per_period, max_steps, g, result);
   }
   const integrators::SampledHistory& ground = h1.acceleration;
   try {
@@ -178,7 +190,7 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
     }
   }
   const std::size_t nz = damping.size(), nt = periods.size();
-  result["elastic"] = CurveDict(*elastic);
+  result["elastic"] = CurveDict(*elastic, g);
   if (inelastic) {
     // (damping x ductility) rows of periods, reshaped to (n_z, n_mu, n_T) as in the HDF5 file.
     const std::size_t nm = ductility.size();
@@ -199,6 +211,11 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
             cube([](const ConstantDuctilityPoint& p) { return p.yield_pseudo_velocity; }),
         py::arg("A_y") =
             cube([](const ConstantDuctilityPoint& p) { return p.yield_pseudo_acceleration; }),
+        py::arg("A_y_g") =
+            Table(inelastic->points, nz * nm, nt,
+                  [g](const ConstantDuctilityPoint& p) { return p.yield_pseudo_acceleration / g; })
+                .reshape(
+                    std::vector<py::ssize_t>{py::ssize_t(nz), py::ssize_t(nm), py::ssize_t(nt)}),
         py::arg("u_m") = cube([](const ConstantDuctilityPoint& p) { return p.peak_deformation; }),
         py::arg("achieved_ductility") =
             cube([](const ConstantDuctilityPoint& p) { return p.achieved_ductility; }));
@@ -209,6 +226,8 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
 }  // namespace
 
 void BindSpectrum(py::module_& module) {
+  module.def("_parse_periods", &spectra::ParsePeriods, py::arg("text"), py::arg("option"));
+  module.def("_parse_list", &spectra::ParseNumberList, py::arg("text"), py::arg("option"));
   module.def("_spectrum", &Spectrum, py::arg("record"), py::arg("h2"), py::arg("periods"),
              py::arg("damping"), py::arg("ductility"), py::arg("alpha"),
              py::arg("points_per_period"), py::arg("scale"), py::arg("units"), py::arg("record_dt"),

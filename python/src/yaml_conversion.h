@@ -9,7 +9,8 @@ namespace isolab::python {
 
 // dict -> map, list/tuple -> sequence, bool, int, float (shortest text that reads back
 // exactly), str, None -> null; numpy scalars as their Python values. Anything else: TypeError
-// naming `path`.
+// naming `path`; a dict or list inside itself, or nesting deeper than 64 levels: ValueError
+// naming the key path.
 YAML::Node ToYaml(pybind11::handle value, const std::string& path = "");
 
 // Scalars become int, float, bool or str, whichever reads the whole text (YAML 1.2 core rules).

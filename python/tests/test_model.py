@@ -79,3 +79,40 @@ def test_set_checks_and_keeps_the_model_on_error(repo):
     copy = model.copy()
     copy.set("analysis.dt", 0.0025)
     assert model.get("analysis.dt") == 0.005
+
+
+def test_a_key_typo_through_set_names_the_key_path_not_a_line(repo):
+    # The reader sees the YAML written for the changed tree, whose lines are not the file's: a
+    # line of the original file would point at text that does not contain the typo.
+    model = isolab.load_model(repo / FIVE_STORY)
+    with pytest.raises(isolab.InputError) as error:
+        model.set("isolation.components.c4.k11", 0.5)
+    message = str(error.value)
+    assert message.startswith(f'{repo / FIVE_STORY}, set("isolation.components.c4.k11"): '
+                              "isolation.components[3].k11: unknown key"), message
+    assert "yaml:" not in message  # no line or column
+    assert model.get("isolation.components.c4.k1") == 0.402485  # unchanged
+
+
+def test_a_dict_inside_itself_is_a_value_error():
+    model = sdof(k=400.0)
+    model["structure"]["again"] = model
+    with pytest.raises(ValueError, match=r"^structure.again: refers back to the model"):
+        isolab.Model.from_dict(model)
+    components = [{"name": "spring", "type": "linear_spring", "k": 400.0}]
+    components.append(components)
+    with pytest.raises(ValueError, match=r"isolation.components\[1\]: refers back to "
+                                         r"isolation.components"):
+        isolab.Model.from_dict({**sdof(k=400.0), "isolation": {"components": components}})
+
+
+def test_a_deep_nesting_is_a_value_error_not_a_crash():
+    deep = inner = {}
+    for _ in range(100_000):
+        inner["a"] = {}
+        inner = inner["a"]
+    with pytest.raises(ValueError, match="nested deeper than 64"):
+        isolab.Model.from_dict(deep)
+    model = isolab.Model.from_dict(sdof(k=400.0))
+    with pytest.raises(ValueError, match="nested deeper than 64"):
+        model.set("analysis.note", deep)

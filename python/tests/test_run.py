@@ -4,6 +4,7 @@ import math
 import sys
 import threading
 import time
+import warnings
 
 import h5py
 import numpy as np
@@ -127,6 +128,29 @@ def test_bad_run_input_raises_input_error(repo):
         isolab.run(repo / FIVE_STORY, "no_such.at2")
     with pytest.raises(isolab.InputError, match="integrator"):
         isolab.run(repo / FIVE_STORY, integrator="rk4")
+
+
+def test_a_scale_that_is_not_a_positive_finite_number_is_refused_before_the_run(repo):
+    # nan went through to the run and failed in Newton; 0 and -1 ran records of zeros or flipped.
+    for scale in (math.nan, math.inf, 0, -1.0):
+        with pytest.raises(isolab.InputError, match=r"^scale: .* \(must be a finite number > 0\)"):
+            isolab.run(repo / "models/sdof/table7_thm1_hard.yaml", scale=scale)
+    with pytest.raises(isolab.InputError, match="^scale: '2' is not a number"):
+        isolab.run(repo / "models/sdof/table7_thm1_hard.yaml", scale="2")
+
+
+def test_plausibility_warnings_are_issued_as_isolab_warnings(repo, tmp_path, isolab_cli):
+    # The Table 7 SDOF's record at 10 times its scale has a PGA of 3.5 g (0.35 g x 10): the command
+    # line warns, and so must Python, where a list in result.warnings went unseen.
+    model = repo / "models/sdof/table7_thm1_hard.yaml"
+    with pytest.warns(isolab.IsolabWarning, match="peak ground acceleration, 3.5 g, exceeds 3 g"):
+        result = isolab.run(model, scale=10, check=False)
+    cli = isolab_cli.json("run", model, "--scale", 10, "-o", tmp_path / "run.h5")
+    assert result.warnings == cli["warnings"] and len(cli["warnings"]) == 1
+    assert issubclass(isolab.IsolabWarning, UserWarning)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a run within plausible ranges warns about nothing
+        isolab.run(model, check=False)
 
 
 def test_a_failed_run_raises_run_error_with_the_partial_result(repo):

@@ -27,6 +27,31 @@ def test_spectrum_equals_the_command_line(repo, tmp_path, isolab_cli):
         assert mine["record"]["pga"] == pytest.approx(f.attrs["record_pga"], rel=1e-12)
 
 
+def test_the_command_lines_list_syntax_and_units(repo, isolab_cli):
+    # periods="0.05:5:0.05" crashed in float(); the same text gives the command line's numbers.
+    cli = isolab_cli.json("spectrum", PULSE, "--periods", "0.1:1:0.3", "--damping", "0.02,0.05",
+                          "--ductility", "2", "-q")
+    mine = isolab.spectrum(repo / PULSE, periods="0.1:1:0.3", damping="0.02,0.05", ductility="2")
+    assert mine["period"].tolist() == cli["periods"] == [0.1, 0.4, 0.7, 1.0]
+    assert mine["damping"].tolist() == [0.02, 0.05]
+    for d, curve in enumerate(cli["elastic"]):
+        for name in ("D", "A", "A_g"):
+            np.testing.assert_allclose(mine["elastic"][name][d], curve[name], rtol=1e-12)
+    np.testing.assert_allclose(mine["constant_ductility"]["A_y_g"][0, 0],
+                               cli["constant_ductility"][0]["A_y_g"], rtol=1e-12)
+    # Units as the command line's table heads give them: A in m/s^2, A_g in g = A / 9.80665.
+    assert mine["units"]["A"] == "m/s^2" and mine["units"]["A_g"] == "g"
+    assert mine["units"]["D"] == "m" and mine["units"]["V"] == "m/s"
+    assert mine["units"]["g"] == cli["units"]["g"] == 9.80665
+    np.testing.assert_allclose(mine["elastic"]["A_g"], mine["elastic"]["A"] / 9.80665, rtol=1e-15)
+    in_mm = isolab.spectrum(repo / PULSE, periods="0.5", length_unit="mm")
+    assert in_mm["units"]["A"] == "mm/s^2" and in_mm["units"]["g"] == 9806.65
+    with pytest.raises(isolab.InputError, match="^periods: '1:0.5:0.1': STOP = 0.5 must be >= "):
+        isolab.spectrum(repo / PULSE, periods="1:0.5:0.1")
+    with pytest.raises(isolab.InputError, match="^damping: 'x' is not a number"):
+        isolab.spectrum(repo / PULSE, periods=[1.0], damping="0.05,x")
+
+
 def test_undamped_sine_at_resonance_against_the_closed_form():
     # a_g = a0 sin(w t) on an undamped SDOF of the same w: u(t) = a0 / (2 w^2) (sin wt - wt cos wt)
     # (Chopra Eq. 3.1.13); its peak over 5 periods is at the last |cos| extreme, close to

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "isolab/io/atomic_file.h"
 
@@ -119,6 +120,18 @@ io::Record PulseRecord(const PulseSpec& spec) {
 }
 
 void WriteAt2(const io::Record& record, const std::string& path) {
+  // A record `isolab run` would refuse is never written: the callers' option checks keep the
+  // samples finite and at least two, and this says which sample if one slips through.
+  if (record.values.size() < 2) {
+    throw std::invalid_argument(
+        fmt::format("{}: a record of {} samples", path, record.values.size()));
+  }
+  for (std::size_t k = 0; k < record.values.size(); ++k) {
+    if (!std::isfinite(record.values[k])) {
+      throw std::invalid_argument(
+          fmt::format("{}: sample {} of the record is {}", path, k + 1, record.values[k]));
+    }
+  }
   io::WriteTextFileAtomically(path, [&](std::ostream& out) {
     fmt::print(out, "PEER NGA STRONG MOTION DATABASE RECORD (layout only: synthetic)\n");
     fmt::print(out, "{}\n", record.description);

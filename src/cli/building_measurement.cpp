@@ -56,6 +56,15 @@ std::vector<int> ParseLevels(const std::string& text) {
                                    "6,5,4,3,2,1 from the isolation slab up, or auto)",
                                    text, item));
     }
+    // One channel for two levels would count its floor's inertia twice in the base shear.
+    const auto first = std::find(channels.begin(), channels.end() - 1, channels.back());
+    if (first != channels.end() - 1) {
+      throw InputError(
+          {"command line"},
+          fmt::format("--levels {}: channel {} is given twice (levels {} and {}); "
+                      "each level has its own channel",
+                      text, channels.back(), first - channels.begin() + 1, channels.size()));
+    }
   }
   return channels;
 }

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "finite_options.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/study_file.h"
@@ -93,7 +94,7 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
   command
       ->add_option("-j,--jobs", options.jobs,
                    "Threads without mpirun (default: every hardware thread)")
-      ->check(CLI::PositiveNumber);
+      ->check(Positive());
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command->add_flag("--plot", options.plot,
                     "Bar charts of the summary in <output>/plots (plot_study.py)");

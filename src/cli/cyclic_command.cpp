@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "finite_options.h"
 #include "isolab/analysis/cyclic_campaign.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
@@ -189,12 +190,13 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   command
       ->add_option("--noise", options.noise,
                    "Gaussian force noise on --test-data, relative to each test's RMS force")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(Between(0.0, 1.0));
   command->add_option("--seed", options.seed, "Seed of the --noise generator");
   command->add_flag("--sequential", options.sequential,
                     "Run a model's tests one after another on one specimen, each from the state "
                     "the previous left (a campaign); --test-data then says '# specimen: one'");
   command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
+  command->add_flag("-q,--quiet", options.quiet, "No component table before the cycles");
 }
 
 void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
@@ -256,7 +258,10 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const bool first_of_model = i == 0 || runs[i - 1].model != runs[i].model;
-    if (first_of_model) fmt::print(out, "{}", i == 0 ? "" : "\n"), PrintModel(*runs[i].model, out);
+    if (first_of_model && options.quiet) fmt::print(out, "== {} ==\n", runs[i].model->path);
+    if (first_of_model && !options.quiet) {
+      fmt::print(out, "{}", i == 0 ? "" : "\n"), PrintModel(*runs[i].model, out);
+    }
     PrintRun(runs[i], out);
     const bool last_of_model = i + 1 == runs.size() || runs[i + 1].model != runs[i].model;
     if (last_of_model && !first_of_model) {

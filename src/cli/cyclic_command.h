@@ -26,6 +26,7 @@ struct CyclicOptions {
   unsigned seed = 1;        // of that noise
   bool sequential = false;  // a model's runs on one specimen, in order
   bool json = false;
+  bool quiet = false;  // -q: no component table before the cycles
 };
 
 void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "diagnosis_report.h"
+#include "finite_options.h"
 #include "fit_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/diagnose.h"
@@ -45,7 +46,7 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the diagnosis");
   AddSpecimenOption(command, &options.specimen);
   command->add_option("--budget", options.budget, "Model evaluations per fit (default 12000)")
-      ->check(CLI::Range(100L, 100000000L));
+      ->check(Between(100, 1e8));
   command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
   command->add_option("--length-unit", options.length_unit, "Length unit of the data (default mm)");
   command->add_flag("--json", options.json, "Print the report as JSON instead of a summary");

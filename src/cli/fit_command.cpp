@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "finite_options.h"
 #include "fit_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
@@ -88,7 +89,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
       ->check(CLI::ExistingFile);
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the fit exactly");
   command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
-      ->check(CLI::Range(100L, 1000000000L));
+      ->check(Between(100, 1e9));
   command->add_option("--cycles", options.cycles,
                       "Whole cycles to fit, 1-based, e.g. --cycles 3 as the paper fits HDRB tests "
                       "(default: every test's whole history)");

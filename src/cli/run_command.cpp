@@ -8,6 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "finite_options.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
@@ -121,12 +122,13 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   command->add_option("--record-dt", options.record_dt,
                       "The record's sampling step (s), for a single-column record; must agree "
                       "with the file's when it gives one");
-  command->add_option("--scale", options.scale, "Scale factor of the ground motion");
+  command->add_option("--scale", options.scale, "Scale factor of the ground motion, > 0")
+      ->check(Positive());
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
   command
       ->add_option("--max-steps", options.max_steps,
                    "Refuse runs of more analysis steps than this (default 10^7), before they start")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{std::numeric_limits<int>::max()}));
+      ->check(Between(1, std::numeric_limits<int>::max()));
   command->add_option("--free-vibration", options.free_vibration,
                       "Free vibration after the excitation: auto (5 x the longest period; the "
                       "default), a time in s, or 0");
@@ -134,14 +136,14 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
       ->add_option("--trial-displacement", options.trial_displacement,
                    "Isolator displacement (model length unit) for the isolated period printed "
                    "before the run (default 0.1 m)")
-      ->check(CLI::PositiveNumber);
+      ->check(Positive());
   command->add_option("-o,--output", options.output,
                       "Results file: .h5/.hdf5 (HDF5) or .csv (time histories)");
   command
       ->add_option("--every", options.every,
                    "Write every N-th analysis step (replaces output.every; peaks and energies "
                    "still see every step)")
-      ->check(CLI::PositiveNumber);
+      ->check(Positive());
   command
       ->add_option("--quantities", options.quantities,
                    "Histories to write, comma-separated (replaces output.quantities): "
@@ -162,10 +164,12 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                    "newmark or ida (replaces the model's analysis.integrator)")
       ->check(CLI::IsMember({"newmark", "ida"}));
   command->add_option("--rtol", options.rtol, "IDA relative tolerance (replaces analysis.ida.rtol)")
-      ->check(CLI::Range(1e-14, 0.09));
+      ->check(Between(1e-14, 0.09));
   command->add_option("--atol", options.atol, "IDA absolute tolerance (replaces analysis.ida.atol)")
-      ->check(CLI::PositiveNumber);
+      ->check(Positive());
   command->add_flag("--json", options.json, "Print the summary as JSON");
+  command->add_flag("-q,--quiet", options.quiet,
+                    "No preamble (record, model summary, grid) before the peaks");
   command->add_flag("--plot{}", options.plot,
                     "After writing, plot with plot_result.py; --plot=DIR puts the PNGs in DIR "
                     "(default: beside the results file)");
@@ -204,7 +208,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   solve.results_path = output;
   solve.version = ISOLAB_VERSION;
 
-  if (!options.json) analysis::PrintPreamble(problem, out);
+  if (!options.json && !options.quiet) analysis::PrintPreamble(problem, out);
   out.flush();
   PrintWarnings(problem.summary.warnings);
   const analysis::Summary summary = analysis::Solve(solve, problem);
@@ -217,7 +221,8 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   PrintWarnings({summary.warnings.begin() + static_cast<long>(problem.summary.warnings.size()),
                  summary.warnings.end()});
   if (options.plot) {
-    RunPlotScript("plot_result.py", {output, "-o", PlotDirectory(*options.plot, output)}, false);
+    RunPlotScript("plot_result.py", {output, "-o", PlotDirectory(*options.plot, output)},
+                  options.quiet);
   }
   return ExitCode(summary.run, problem.grid.dt, output);
 }

@@ -44,6 +44,7 @@ struct RunOptions {
   std::optional<double> rtol;  // IDA relative tolerance, overriding analysis.ida.rtol
   std::optional<double> atol;  // IDA absolute tolerance, overriding analysis.ida.atol
   bool json = false;
+  bool quiet = false;               // -q: no preamble (record, model, grid) before the peaks
   std::optional<std::string> plot;  // --plot[=DIR]: PNGs by plot_result.py (default DIR: beside
                                     // the results file); needs HDF5 results
 };

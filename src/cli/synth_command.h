@@ -17,6 +17,7 @@ struct SynthOptions {
   std::string output;
   analysis::FilteredNoiseSpec noise;
   analysis::PulseSpec pulse;
+  bool quiet = false;  // -q: accepted as by every command; synth prints nothing but errors
 };
 
 void RegisterSynthCommand(CLI::App& app, SynthOptions& options);

@@ -33,6 +33,51 @@ double LeadCoreHeating::HalfStepDecay(double t_n, double dt) const {
   return std::exp(-0.5 * dt * ConductionRate(t_n + 0.5 * dt));
 }
 
+LeadCoreHeating::Step LeadCoreHeating::Advance(double qd, double temperature_n, double t_n,
+                                               double t, double travel) const {
+  Step step;
+  const double dt = t - t_n;
+  const double h = conducts() && dt > 0.0 ? ConductionRate(t_n + 0.5 * dt) : 0.0;
+  if (h * dt > 1.0) {
+    // Implicit: C k T - C T_n - Qd0 exp(-E2 T) travel = 0 with k = 1 + h dt, increasing and
+    // concave in T, so Newton from the left of the root (T_n / k) climbs to it monotonically.
+    const double k = 1.0 + h * dt;
+    double temperature = temperature_n / k;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const double strength = qd * std::exp(-e2 * temperature);
+      const double g = capacity * (k * temperature - temperature_n) - strength * travel;
+      const double slope = capacity * k + e2 * strength * travel;
+      const double change = -g / slope;
+      temperature += change;
+      if (!(std::abs(change) > 1e-13 * (1.0 + temperature))) break;
+    }
+    step.temperature = temperature;
+    step.strength = qd * std::exp(-e2 * temperature);
+    step.strength_n = qd * std::exp(-e2 * temperature_n);
+    step.strength_a = step.strength;
+    step.heat = step.strength * travel;
+    step.softening =
+        e2 * step.strength * step.strength / (capacity * k + e2 * step.strength * travel);
+    return step;
+  }
+  const double decay = HalfStepDecay(t_n, dt);
+  const double t_a = temperature_n * decay;  // after the first half step's conduction
+  const double w_a = std::exp(e2 * t_a);
+  // After the increment's slip heats the core: w_b = w_a + E2 Qd0 travel / C, the rise taken as
+  // log1p so that many small increments add up to one large one to round-off.
+  const double growth = e2 * qd * travel / capacity;
+  const double w_b = w_a + growth;
+  const double rise = std::log1p(growth / w_a) / e2;
+  step.temperature = (t_a + rise) * decay;
+  step.strength_a = qd / w_a;
+  step.strength = decay == 1.0 ? qd / w_b : qd * std::exp(-e2 * step.temperature);
+  step.strength_n = decay == 1.0 ? step.strength_a : qd * std::exp(-e2 * temperature_n);
+  step.heat = capacity * rise;
+  // d T_1 / d travel = decay Qd0 / (C w_b), so the strength falls as E2 Qd(T_1) times that.
+  step.softening = e2 * step.strength * decay * qd / (capacity * w_b);
+  return step;
+}
+
 void LeadRubber::Update(const LawState& committed, const LawInput& in, LawState* trial,
                         LawResponse* response) const {
   const UnitSlider::Step step = slider.Update(committed.u, committed.slider, committed.slip, in.u);
@@ -51,35 +96,21 @@ void LeadRubber::Update(const LawState& committed, const LawInput& in, LawState*
     response->stiffness = kd + qd * step.dz_du;
     return;
   }
-  const double e2 = heating.e2;
-  const double decay = heating.HalfStepDecay(committed.t, in.t - committed.t);
-  const double t_n = committed.temperature;
-  const double t_a = t_n * decay;  // after the first half step's conduction
-  const double w_a = std::exp(e2 * t_a);
-  const double strength_a = qd / w_a;
-  // After the increment's slip heats the core: w_b = w_a + E2 Qd0 travel / C, the rise taken as
-  // log1p so that many small increments add up to one large one to round-off.
-  const double growth = e2 * qd * step.travel / heating.capacity;
-  const double w_b = w_a + growth;
-  const double rise = std::log1p(growth / w_a) / e2;
-  const double t_b = t_a + rise;
-  const double t_1 = t_b * decay;
-  const double strength = decay == 1.0 ? qd / w_b : Strength(t_1);
-  const double strength_n = decay == 1.0 ? strength_a : Strength(t_n);
-  trial->temperature = t_1;
+  const LeadCoreHeating::Step core =
+      heating.Advance(qd, committed.temperature, committed.t, in.t, step.travel);
+  trial->temperature = core.temperature;
 
   const double uy = slider.uy;
-  const double work =
-      0.5 * strength_a * uy * (step.z * step.z - z_n * z_n) + heating.capacity * rise;
-  const double stored_change = 0.5 * uy * (strength * step.z * step.z - strength_n * z_n * z_n);
+  const double work = 0.5 * core.strength_a * uy * (step.z * step.z - z_n * z_n) + core.heat;
+  const double stored_change =
+      0.5 * uy * (core.strength * step.z * step.z - core.strength_n * z_n * z_n);
   trial->dissipated = committed.dissipated + work - stored_change;
-  trial->force = response->force = kd * in.u + strength * step.z;
-  // Slipping, d travel / d u = z = s and d T_1 / d travel = decay Qd0 / (C w_b), so the strength
-  // falls as d Qd / d u = -E2 Qd(T_1) decay Qd0 s / (C w_b); z s = 1. Decided by the phase, not
-  // the travel, so that a slip going on from no increment has its slip-side tangent.
-  const double softening =
-      step.slip != 0 ? e2 * strength * decay * qd / (heating.capacity * w_b) : 0.0;
-  response->stiffness = kd + strength * step.dz_du - softening;
+  trial->force = response->force = kd * in.u + core.strength * step.z;
+  // Slipping, d travel / d u = z = s, so the strength falls as d Qd / d u = -softening s; z s =
+  // 1. Decided by the phase, not the travel, so that a slip going on from no increment has its
+  // slip-side tangent.
+  const double softening = step.slip != 0 ? core.softening : 0.0;
+  response->stiffness = kd + core.strength * step.dz_du - softening;
 }
 
 }  // namespace isolab::hysteresis

@@ -27,31 +27,20 @@ void PlanLeadRubber::Update(PlanLawStateView committed, const PlanLawInput& in,
     Store(in, next, trial);
     return;
   }
-  const double e2 = heating.e2, qd = law.qd;
-  const double decay = heating.HalfStepDecay(committed.x.t, in.t - committed.x.t);
-  const double t_n = committed.x.temperature;
-  const double t_a = t_n * decay;
-  const double w_a = std::exp(e2 * t_a);
-  const double strength_a = qd / w_a;
-  const double growth = e2 * qd * step.travel / heating.capacity;
-  const double w_b = w_a + growth;
-  const double rise = std::log1p(growth / w_a) / e2;
-  const double t_1 = (t_a + rise) * decay;
-  const double strength = decay == 1.0 ? qd / w_b : law.Strength(t_1);
-  const double strength_n = decay == 1.0 ? strength_a : law.Strength(t_n);
-  next.temperature = t_1;
+  const LeadCoreHeating::Step heat_step =
+      heating.Advance(law.qd, committed.x.temperature, committed.x.t, in.t, step.travel);
+  next.temperature = heat_step.temperature;
 
   const double uy = law.slider.uy;
   const double zz = Dot(step.z, step.z), zz_n = Dot(z_n, z_n);
-  const double work = 0.5 * strength_a * uy * (zz - zz_n) + heating.capacity * rise;
-  const double stored_change = 0.5 * uy * (strength * zz - strength_n * zz_n);
+  const double work = 0.5 * heat_step.strength_a * uy * (zz - zz_n) + heat_step.heat;
+  const double stored_change = 0.5 * uy * (heat_step.strength * zz - heat_step.strength_n * zz_n);
   next.dissipated = committed.x.dissipated + work - stored_change;
-  next.force = law.kd * in.u + strength * step.z;
+  next.force = law.kd * in.u + heat_step.strength * step.z;
   response->force = next.force;
-  const double softening =
-      step.travel > 0.0 ? e2 * strength * decay * qd / (heating.capacity * w_b) : 0.0;
+  const double softening = step.travel > 0.0 ? heat_step.softening : 0.0;
   response->stiffness =
-      Identity(law.kd) + strength * step.dz_du - softening * Outer(step.z, step.z);
+      Identity(law.kd) + heat_step.strength * step.dz_du - softening * Outer(step.z, step.z);
   Store(in, next, trial);
 }
 

@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -71,7 +73,73 @@ std::string RandomTag() {
   return tag;
 }
 
+// "<target>.<pid>.<tag>.tmp": the writer's process id in the name, so that the temporary files of
+// writers that were killed can be told from those of writers still at work.
+std::string NamedTemporary(const std::string& path) {
+  return fmt::format("{}.{}.{}.tmp", path, getpid(), RandomTag());
+}
+
+// Creates a named temporary file beside `path`, exclusively (the name is ours alone); 0666 lets
+// the umask set the permissions, as for any new file.
+std::string CreateNamedTemporary(const std::string& path) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string candidate = NamedTemporary(path);
+    const int fd = open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      close(fd);
+      return candidate;
+    }
+    if (errno != EEXIST) {
+      throw InputError({path}, fmt::format("cannot create a temporary file beside it ({})",
+                                           std::strerror(errno)));
+    }
+  }
+  throw InputError({path}, "cannot find a free temporary file name beside it");
+}
+
+// Gives the unnamed file that `proc_path` reaches a named temporary's name.
+std::string LinkNamedTemporary(const std::string& path, const std::string& proc_path) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string candidate = NamedTemporary(path);
+    if (linkat(AT_FDCWD, proc_path.c_str(), AT_FDCWD, candidate.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      return candidate;
+    }
+    if (errno != EEXIST) {
+      throw InputError({path}, fmt::format("cannot give the output a name beside it ({})",
+                                           std::strerror(errno)));
+    }
+  }
+  throw InputError({path}, "cannot find a free temporary file name beside it");
+}
+
+// The process id in a named temporary of `path` ("<target>.<pid>.<tag>.tmp"), or 0.
+pid_t WriterOf(const std::string& name, const std::string& target_name) {
+  if (!name.starts_with(target_name + ".") || !name.ends_with(".tmp")) return 0;
+  const std::string middle = name.substr(target_name.size() + 1,
+                                         name.size() - target_name.size() - 1 - 4);  // pid.tag
+  const auto dot = middle.find('.');
+  if (dot == std::string::npos || dot == 0 || middle.size() - dot - 1 != 6) return 0;
+  pid_t pid = 0;
+  const auto [end, error] = std::from_chars(middle.data(), middle.data() + dot, pid);
+  return error == std::errc() && end == middle.data() + dot && pid > 0 ? pid : 0;
+}
+
 }  // namespace
+
+void RemoveStaleTemporaries(const std::string& path) {
+  const std::filesystem::path target(path);
+  const std::string folder = Folder(path), target_name = target.filename().string();
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const pid_t pid = WriterOf(name, target_name);
+    // No such process: its writer was killed (a live one, or one of another user, answers 0 or
+    // EPERM).
+    if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH) {
+      std::filesystem::remove(entry.path(), error);
+    }
+  }
+}
 
 void CheckOutputPath(const std::string& path) {
   if (path.empty()) throw InputError({"output"}, "the output file name is empty");
@@ -94,27 +162,33 @@ void CheckOutputPath(const std::string& path) {
   CheckReplaceable(path);
 }
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+AtomicFile::AtomicFile(std::string path, Temporary temporary) : path_(std::move(path)) {
   CheckOutputPath(path_);
-  // O_EXCL: the name is ours alone; 0666 lets the umask set the permissions, as for any new file.
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    const std::string candidate = fmt::format("{}.{}.tmp", path_, RandomTag());
-    const int fd = open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) {
-      close(fd);
-      temporary_ = candidate;
+  RemoveStaleTemporaries(path_);
+  // A file without a name, linked to one only when complete: whatever ends the writer, even
+  // SIGKILL or a power cut, the kernel frees it and nothing is left in the folder. It is reached
+  // by a path through /proc (HDF5 opens files by name). File systems without O_TMPFILE, or a
+  // system without /proc, get a named temporary instead.
+  if (temporary == Temporary::kUnnamed && access("/proc/self/fd", X_OK) == 0) {
+    fd_ = open(Folder(path_).c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
+    if (fd_ >= 0) {
+      temporary_ = fmt::format("/proc/self/fd/{}", fd_);
       return;
     }
-    if (errno != EEXIST) {
+    if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) {
       throw InputError({path_}, fmt::format("cannot create a temporary file beside it ({})",
                                             std::strerror(errno)));
     }
   }
-  throw InputError({path_}, "cannot find a free temporary file name beside it");
+  temporary_ = CreateNamedTemporary(path_);
 }
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) std::remove(temporary_.c_str());
+  if (fd_ >= 0) {
+    close(fd_);
+  } else if (!committed_) {
+    std::remove(temporary_.c_str());
+  }
 }
 
 void AtomicFile::Commit() {
@@ -122,13 +196,20 @@ void AtomicFile::Commit() {
   // The content reaches the disk before the name does: after a crash or a power cut the target
   // is the old file or the new one, never a new name on missing data.
   // A failure here (EIO, ENOSPC on some file systems) is a lost output, reported as such.
-  if (const int error = SyncToDisk(temporary_); error != 0) {
-    throw ResourceError(
-        path_, fmt::format("cannot write {} to the disk ({})", temporary_, std::strerror(error)));
+  if (const int error = fd_ >= 0 ? (fsync(fd_) == 0 ? 0 : errno) : SyncToDisk(temporary_);
+      error != 0) {
+    throw ResourceError(path_,
+                        fmt::format("cannot write it to the disk ({})", std::strerror(error)));
   }
-  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+  // An unnamed file gets a name of its own first (a link cannot replace a file), then takes the
+  // target's by rename, atomically; only between the two could a kill leave that name behind,
+  // and the next writer of the target removes it (its pid is in the name).
+  const std::string named = fd_ >= 0 ? LinkNamedTemporary(path_, temporary_) : temporary_;
+  if (std::rename(named.c_str(), path_.c_str()) != 0) {
+    const int error = errno;
+    if (fd_ >= 0) std::remove(named.c_str());
     throw InputError({path_},
-                     fmt::format("cannot rename {} to it ({})", temporary_, std::strerror(errno)));
+                     fmt::format("cannot rename {} to it ({})", named, std::strerror(error)));
   }
   committed_ = true;
   // The rename itself; the output is in place whatever this says (some file systems cannot sync

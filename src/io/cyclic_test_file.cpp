@@ -12,6 +12,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/core/text_file.h"
 #include "isolab/io/atomic_file.h"
 
 namespace isolab::io {
@@ -68,14 +69,14 @@ void ReadSpecimenComment(const std::string& path, int line_number, const std::st
 
 void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& into,
               std::vector<CyclicTestData>* tests, bool* one_specimen) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path}, "cannot open the test data");
+  TextLines in(path);
+  if (!in.is_open()) throw InputError({path}, "cannot open the test data");
   std::map<std::string, int> column;
   std::map<std::string, std::size_t> test_index;
   double force_factor = 1.0, length_factor = 1.0;
   int line_number = 0, header_line = 0;
   const std::size_t tests_before = tests->size();
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; in.Next(&line);) {
     ++line_number;
     line = Trim(line);
     if (line.empty()) continue;

@@ -168,7 +168,7 @@ Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
   static const herr_t no_exit_handler = H5dont_atexit();
   (void)no_exit_handler;
   Impl& s = *impl_;
-  s.output.emplace(std::move(path));
+  s.output.emplace(std::move(path), AtomicFile::Temporary::kNamed);
   // HDF5 prints its error stack by default; errors here are reported through return codes. (The
   // setting is per thread in the thread-safe library Debian ships.)
   H5Eget_auto2(H5E_DEFAULT, &s.saved_handler, &s.saved_handler_data);

@@ -17,6 +17,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/core/text_file.h"
 #include "isolab/core/units.h"
 #include "record_header.h"
 
@@ -29,13 +30,11 @@ std::vector<std::string> Lines(const std::string& path) {
   if (std::filesystem::is_directory(path, ignored)) {
     throw InputError({path}, "is a directory, not a record");
   }
-  std::ifstream in(path);
-  if (!in) throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
+  TextLines in(path);
+  if (!in.is_open())
+    throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
   std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-  }
+  for (std::string line; in.Next(&line);) lines.push_back(std::move(line));
   return lines;
 }
 

@@ -11,6 +11,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/core/text_file.h"
 
 namespace isolab::io {
 namespace {
@@ -57,13 +58,13 @@ std::pair<std::string, std::string> NameAndUnit(const std::string& header) {
 }  // namespace
 
 ShakeTableData ShakeTableData::Read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path}, "cannot open the shake-table data");
+  TextLines in(path);
+  if (!in.is_open()) throw InputError({path}, "cannot open the shake-table data");
   ShakeTableData data;
   data.path_ = path;
   int time_column = -1, line_number = 0, header_line = 0;
   std::vector<std::string> names;
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; in.Next(&line);) {
     ++line_number;
     line = Trim(line);
     if (line.empty() || line[0] == '#') continue;
@@ -133,6 +134,7 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
                                        value, data.time_.back()));
         }
         data.time_.push_back(value);
+        data.sample_lines_.push_back(line_number);
       } else {
         data.columns_[channel++].values.push_back(value);
       }
@@ -143,7 +145,40 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
     throw InputError({path, line_number},
                      fmt::format("{} samples: too short for a history", data.time_.size()));
   }
+  data.CheckUniformStep(time_column + 1);
   return data;
+}
+
+// The table record written from these data must be one `isolab run` reads: evenly spaced
+// samples, each within a hundredth of a step of the uniform grid (record.cpp's rule; printed
+// times are rounded). A gap or a lost sample is named at its own line first, against the median
+// step, which a few bad steps do not move.
+void ShakeTableData::CheckUniformStep(int column) const {
+  const std::size_t n = time_.size();
+  std::vector<double> steps(n - 1);
+  for (std::size_t k = 1; k < n; ++k) steps[k - 1] = time_[k] - time_[k - 1];
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double median = steps[steps.size() / 2];
+  for (std::size_t k = 1; k < n; ++k) {
+    const double step = time_[k] - time_[k - 1];
+    if (std::abs(step - median) > 0.5 * median) {
+      throw InputError({path_, sample_lines_[k], column},
+                       fmt::format("time {} follows {}: a step of {:g} s where the samples are "
+                                   "{:g} s apart (the median step); the samples must be evenly "
+                                   "spaced: resample them, or cut the file at the gap",
+                                   time_[k], time_[k - 1], step, median));
+    }
+  }
+  const double dt = (time_.back() - time_.front()) / static_cast<double>(n - 1);
+  for (std::size_t k = 1; k < n; ++k) {
+    const double expected = time_.front() + static_cast<double>(k) * dt;
+    if (std::abs(time_[k] - expected) > 1e-2 * dt) {
+      throw InputError({path_, sample_lines_[k], column},
+                       fmt::format("time {} is {:.3g} steps off the uniform step {:g} s (at most "
+                                   "0.01 of a step): resample the data to a constant step",
+                                   time_[k], std::abs(time_[k] - expected) / dt, dt));
+    }
+  }
 }
 
 bool ShakeTableData::Has(const std::string& name) const {
@@ -163,8 +198,25 @@ std::vector<double> ShakeTableData::Channel(const std::string& name, Dimension d
                        fmt::format("channel '{}' is in {}, which is not a unit of {}", name,
                                    columns_[j].unit, DescribeDimension(dimension)));
     }
+    // One corrupt cell (1e300) would pass as data and decide the displacement reference and the
+    // peaks. No shake table moves a building by 10 m or shakes it at 10 g.
+    const double si = UnitSystem("kN", "m", "s").Convert(1.0, columns_[j].unit, dimension);
+    const double limit = dimension == dimension::kAcceleration ? 10.0 * 9.80665
+                         : dimension == dimension::kLength     ? 10.0
+                                                               : HUGE_VAL;
     std::vector<double> values = columns_[j].values;
-    for (double& v : values) v *= factor;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      if (std::abs(values[k] * si) > limit) {
+        throw InputError(
+            {path_, sample_lines_[k], header_columns_[j]},
+            fmt::format("channel '{}' = {:g} {} ({} the {} of any shake-table test: a corrupt "
+                        "value?)",
+                        name, values[k], columns_[j].unit,
+                        dimension == dimension::kAcceleration ? "above 10 g," : "beyond 10 m,",
+                        dimension == dimension::kAcceleration ? "accelerations" : "displacements"));
+      }
+      values[k] *= factor;
+    }
     return values;
   }
   std::string available;

@@ -40,7 +40,14 @@ GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node&
                   fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
     }
   }
-  if (motion["scale"]) ground.scale = reader.ReadNumber(motion["scale"], motion_path + ".scale");
+  if (motion["scale"]) {
+    // As a study's scales, --scale and Python's scale=: 0 runs no excitation at all.
+    ground.scale = reader.ReadNumber(motion["scale"], motion_path + ".scale");
+    if (!(ground.scale > 0.0)) {
+      reader.Fail(motion["scale"], motion_path + ".scale",
+                  fmt::format("{:g} (must be a finite number > 0)", ground.scale));
+    }
+  }
   if (motion["dt"]) {
     ground.dt = reader.ReadQuantity(motion["dt"], motion_path + ".dt", dimension::kTime, units);
     if (!(ground.dt > 0.0)) reader.Fail(motion["dt"], motion_path + ".dt", "must be > 0");

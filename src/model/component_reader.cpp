@@ -48,6 +48,42 @@ Dimension ParameterDimension(std::string_view key) {
   return dimension::kStiffness;
 }
 
+// The lead core's and the steel's material data, in SI per degC: what solids and metals have,
+// widely. A value outside is a unit slip (kN/mm^2 taken for MPa, W for kW), and it is no mere
+// miscalibration: the core would heat or cool within a fraction of a time step, so that no time
+// step resolves its temperature (a heat capacity 10^6 times too small made Newmark's heat and
+// force disagree by 68 % of the input energy).
+struct MaterialRange {
+  std::string_view key;
+  double low, high;  // SI
+  std::string_view si_unit, per, typical;
+};
+constexpr MaterialRange kMaterialRanges[] = {
+    {"lead_heat_capacity", 0.5e6, 5e6, "J/(m^3 degC)", " per degC", "lead 1.456e6"},
+    {"steel_conductivity", 1.0, 500.0, "W/(m degC)", " per degC", "steel 50, copper 400"},
+    {"steel_diffusivity", 1e-6, 2e-4, "m^2/s", "", "steel 1.41e-5, stainless 4e-6"},
+};
+
+void CheckMaterialData(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                       std::span<const std::string_view> keys, const std::vector<double>& values,
+                       const UnitSystem& units) {
+  for (const MaterialRange& range : kMaterialRanges) {
+    const auto key = std::find(keys.begin(), keys.end(), range.key);
+    if (key == keys.end() || std::isnan(values[key - keys.begin()])) continue;
+    const double value = values[key - keys.begin()];
+    const Dimension dimension = ParameterDimension(range.key);
+    const double factor = units.SiFactor(dimension);
+    if (value * factor >= range.low && value * factor <= range.high) continue;
+    const std::string unit = DescribeUnits(units, dimension) + std::string(range.per);
+    reader.Fail(node[std::string(range.key)], "",
+                fmt::format("{} = {:g} {} = {:g} {} (must be {:g} to {:g} {}, {:g} to {:g} {}; "
+                            "{}): a unit slip?",
+                            ChildPath(path, range.key), value, unit, value * factor, range.si_unit,
+                            range.low, range.high, range.si_unit, range.low / factor,
+                            range.high / factor, unit, range.typical));
+  }
+}
+
 // The keys a component of this type may carry in either form, for "unknown key" hints.
 std::vector<std::string_view> AllowedComponentKeys(LawType type) {
   std::vector<std::string_view> keys = {"name", "type"};
@@ -136,6 +172,7 @@ Component ReadComponent(const YamlReader& reader, const YAML::Node& node, const 
 
   if (*type == LawType::kFrictionPendulum)
     ReadPendulumPeriod(reader, node, path, units, keys, values);
+  CheckMaterialData(reader, node, path, keys, values, units);
 
   std::string name = fmt::format("c{}", index + 1);
   if (node["name"].IsDefined()) name = reader.ReadString(node["name"], ChildPath(path, "name"));

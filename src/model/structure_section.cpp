@@ -69,7 +69,9 @@ std::vector<structure::Story> ReadStories(const YamlReader& reader, const YAML::
   if (count < 1 || count > 2000) {
     reader.Fail(count_node, ChildPath(path, "count"), fmt::format("{} (must be 1 to 2000)", count));
   }
-  YAML::Node one = YAML::Clone(node);
+  // The node itself, not a clone: a clone has no marks, so every error in the story was
+  // located at 1:1. Removing count changes only the tree of this reading.
+  YAML::Node one = node;
   one.remove("count");
   for (int i = 0; i < count; ++i) stories.push_back(ReadStory(reader, one, path, units, i));
   return stories;

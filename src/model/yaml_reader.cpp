@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "isolab/core/text_file.h"
+
 namespace isolab::model {
 namespace {
 
@@ -108,20 +110,7 @@ YAML::Node YamlReader::LoadFile(std::string* text) const {
   return LoadText(content);
 }
 
-std::string YamlReader::ReadText() const {
-  // A directory opens as a stream on Linux and throws from its first read.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(file_, ignored)) {
-    throw InputError({file_}, "is a directory, not a file");
-  }
-  std::ifstream stream(file_);
-  if (!stream) throw InputError({file_}, fmt::format("cannot open ({})", std::strerror(errno)));
-  try {
-    return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
-  } catch (const std::ios_base::failure& error) {
-    throw InputError({file_}, fmt::format("cannot read ({})", error.what()));
-  }
-}
+std::string YamlReader::ReadText() const { return ReadBoundedText(file_); }
 
 YAML::Node YamlReader::LoadText(const std::string& content) const {
   try {

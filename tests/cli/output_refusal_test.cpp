@@ -138,4 +138,68 @@ TEST(OutputRefusal, CyclicAndShakeTableRefuseTheirModelsAndCheckEveryOutputFirst
   EXPECT_EQ(run.output.find("predicting"), std::string::npos) << run.output;
 }
 
+// `-o ''` ran and wrote the default file (m.h5) as if no -o had been given; an empty value is
+// refused for every option that takes one, before anything is read.
+TEST(OutputRefusal, AnEmptyOutputNameIsRefused) {
+  const fs::path folder = FreshFolder();
+  std::ofstream(folder / "study.yaml") << "building: m.yaml\n";
+  ExpectRefused(folder, "run m.yaml -o ''", "--output: an empty value");
+  ExpectRefused(folder, "spectrum rec.at2 -o ''", "--output: an empty value");
+  ExpectRefused(folder, "cyclic iso.yaml -a 50 --csv ''", "--csv: an empty value");
+  ExpectRefused(folder, "synth noise -o ''", "--output: an empty value");
+  ExpectRefused(folder, "compare study.yaml -o ''", "--output: an empty value");
+}
+
+// CLI11's range checks printed their bounds with %f: "Value 0 not in range 0.000000 to
+// 1797693134862315708145274237317043567980705675354411..." (309 digits). Each range reads as the
+// model reader writes one.
+TEST(OutputRefusal, RangesOfOptionsAreSaidReadably) {
+  const fs::path folder = FreshFolder();
+  std::ofstream(folder / "study.yaml") << "building: m.yaml\n";
+  std::ofstream(folder / "data.csv") << "test,time,displacement,force\n";
+  std::ofstream(folder / "spec.yaml") << "units: {force: kN, length: mm, time: s}\n";
+  ExpectRefused(folder, "run m.yaml --trial-displacement 0",
+                "--trial-displacement: 0 (must be > 0)");
+  ExpectRefused(folder, "run m.yaml --every 0", "--every: 0 (must be > 0)");
+  ExpectRefused(folder, "run m.yaml --scale -1", "--scale: -1 (must be > 0)");
+  ExpectRefused(folder, "run m.yaml --rtol 1", "--rtol: 1 (must be in [1e-14, 0.09])");
+  ExpectRefused(folder, "run m.yaml --max-steps 0", "--max-steps: 0 (must be in [1, 2147483647])");
+  ExpectRefused(folder, "cyclic iso.yaml -a 50 --noise 2 --test-data t.csv",
+                "--noise: 2 (must be in [0, 1])");
+  ExpectRefused(folder, "fit data.csv --model spec.yaml --budget 5",
+                "--budget: 5 (must be in [100, 1000000000])");
+  ExpectRefused(folder, "compare study.yaml -j 0", "--jobs: 0 (must be > 0)");
+  for (const char* command : {"run m.yaml --trial-displacement 0", "run m.yaml --rtol 1"}) {
+    const auto run =
+        RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY + " " + command + " 2>&1");
+    EXPECT_EQ(run.output.find("000000"), std::string::npos) << run.output;
+  }
+}
+
+// `isolab run -q` was refused while compare, fit and diagnose took it: every command takes
+// -q/--quiet, and run's leaves out the preamble before the peaks.
+TEST(OutputRefusal, EveryCommandTakesQuiet) {
+  const fs::path folder = FreshFolder();
+  const auto quiet = RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY +
+                                    " run m.yaml -q -o m.h5 2>&1");
+  EXPECT_EQ(quiet.exit_code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("record:"), std::string::npos) << quiet.output;
+  EXPECT_EQ(quiet.output.find("model:"), std::string::npos) << quiet.output;
+  EXPECT_NE(quiet.output.find("peak isolator displacement"), std::string::npos) << quiet.output;
+  const auto loud =
+      RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY + " run m.yaml -o m.h5 2>&1");
+  EXPECT_NE(loud.output.find("record:"), std::string::npos) << loud.output;
+  for (const char* command :
+       {"cyclic iso.yaml -a 50 -q", "synth noise -q -o n.at2", "spectrum rec.at2 -q -o s.csv",
+        "run m.yaml --quiet -o m2.h5", "cyclic iso.yaml -a 50 --quiet"}) {
+    const auto run =
+        RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY + " " + command + " 2>&1");
+    EXPECT_EQ(run.exit_code, 0) << command << "\n" << run.output;
+  }
+  const auto cyclic = RunCommandLine("cd " + folder.string() + " && " + ISOLAB_BINARY +
+                                     " cyclic iso.yaml -a 50 -q 2>&1");
+  EXPECT_EQ(cyclic.output.find("mathematical"), std::string::npos) << cyclic.output;  // no table
+  EXPECT_NE(cyclic.output.find("W_d"), std::string::npos) << cyclic.output;
+}
+
 }  // namespace

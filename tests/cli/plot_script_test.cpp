@@ -1,12 +1,19 @@
 // --plot end to end: `isolab run` on bundled models and `isolab spectrum` on a bundled record
-// write their PNGs through scripts/plot_result.py and scripts/plot_spectrum.py; a missing Python
-// stops the command before it computes or writes anything, saying what to install. Skips when
-// Debian's /usr/bin/python3 cannot import matplotlib and h5py.
+// write their figures (300 dpi PNG, vector PDF) through scripts/plot_result.py and
+// scripts/plot_spectrum.py; what the figures show is checked through the scripts' --metadata
+// sidecars against the run's and the spectrum's own numbers: each axis's quantity and unit
+// (accelerations in g) and the range of the data drawn. A missing Python stops the command
+// before it computes or writes anything, saying what to install. Debian's /usr/bin/python3
+// without matplotlib and h5py is a failure naming the packages (scripts/setup.sh installs them):
+// a skipped test would pass on a machine that cannot plot at all.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -32,20 +39,58 @@ bool PlottingAvailable() {
   return std::system("/usr/bin/python3 -c 'import matplotlib, h5py' >/dev/null 2>&1") == 0;
 }
 
-#define REQUIRE_PLOTTING()                                                                 \
-  if (!PlottingAvailable()) {                                                              \
-    GTEST_SKIP() << "/usr/bin/python3 cannot import matplotlib and h5py (Debian packages " \
-                 << "python3-matplotlib, python3-h5py)";                                   \
+#define REQUIRE_PLOTTING()                                                                  \
+  if (!PlottingAvailable()) {                                                               \
+    GTEST_FAIL() << "/usr/bin/python3 cannot import matplotlib and h5py: install Debian's " \
+                 << "python3-matplotlib and python3-h5py (scripts/setup.sh does)";          \
   }
 
-// A PNG file: its signature and more than a header's worth of bytes.
-void ExpectPng(const std::filesystem::path& path) {
-  ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  EXPECT_GT(std::filesystem::file_size(path), 2000u) << path;
+// A PNG's width and height in pixels (its IHDR chunk, big-endian), {0, 0} if it is none.
+std::pair<unsigned, unsigned> PngSize(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  char signature[8] = {};
-  in.read(signature, 8);
-  EXPECT_EQ(std::string(signature + 1, 3), "PNG") << path;
+  unsigned char header[24] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  if (!in || std::string(reinterpret_cast<char*>(header) + 1, 3) != "PNG") return {0, 0};
+  const auto word = [&](int at) {
+    return (unsigned(header[at]) << 24) | (unsigned(header[at + 1]) << 16) |
+           (unsigned(header[at + 2]) << 8) | unsigned(header[at + 3]);
+  };
+  return {word(16), word(20)};
+}
+
+// A figure for a report: a PNG of print resolution (a 300 dpi figure a few inches wide: more than
+// 1000 pixels each way; the drafts were 396 x 330) and a PDF beside it.
+void ExpectFigure(const std::filesystem::path& png) {
+  ASSERT_TRUE(std::filesystem::exists(png)) << png;
+  const auto [width, height] = PngSize(png);
+  EXPECT_GT(width, 1000u) << png;
+  EXPECT_GT(height, 800u) << png;
+  auto pdf = png;
+  pdf.replace_extension(".pdf");
+  ASSERT_TRUE(std::filesystem::exists(pdf)) << pdf;
+  std::ifstream in(pdf, std::ios::binary);
+  char signature[5] = {};
+  in.read(signature, 5);
+  EXPECT_EQ(std::string(signature, 5), "%PDF-") << pdf;
+}
+
+// A figure's sidecar (plot_common.py's --metadata), checked against its PNG's own size.
+nlohmann::json Sidecar(const std::filesystem::path& png) {
+  auto path = png;
+  path.replace_extension(".json");
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  const nlohmann::json sidecar = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_FALSE(sidecar.is_discarded()) << path;
+  const auto [width, height] = PngSize(png);
+  EXPECT_EQ(sidecar["dpi"], 300) << path;
+  EXPECT_EQ(sidecar["size_px"], nlohmann::json::array({width, height})) << path;
+  return sidecar;
+}
+
+// The largest absolute value of an axis's data range.
+double Extent(const nlohmann::json& range) {
+  return std::max(std::abs(range[0].get<double>()), std::abs(range[1].get<double>()));
 }
 
 TEST(PlotScript, IsolatedBuildingRunWritesEveryPlot) {
@@ -58,7 +103,69 @@ TEST(PlotScript, IsolatedBuildingRunWritesEveryPlot) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.output.front(), '{');  // the script's messages stay off stdout
   for (const char* name : {"overview", "hysteresis", "histories", "envelopes", "energy"}) {
-    ExpectPng(directory / "plots" / (std::string("five_story_") + name + ".png"));
+    ExpectFigure(directory / "plots" / (std::string("five_story_") + name + ".png"));
+  }
+}
+
+// What the figures show, against the run's own peaks (every step is written, so the histories
+// drawn reach them): the loop spans the peak isolator displacement and force, the histories give
+// the accelerations in g (peak / 9806.65 mm/s^2), every axis names its quantity and unit, and
+// the title names the model and the record in full.
+TEST(PlotScript, FiguresShowTheRunsNumbersWithTheirUnits) {
+  REQUIRE_PLOTTING();
+  const auto directory = FreshDirectory("content");
+  const auto result = directory / "five_story.h5";
+  const auto run = RunIsolab("run " + Source("models/buildings/five_story_table9.yaml") +
+                             " --json -o " + result.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json peaks = nlohmann::json::parse(run.output)["peaks"];
+  const auto plot = isolab::testing::RunCommandLine(
+      "/usr/bin/python3 " + Source("scripts/plot_result.py") + " " + result.string() +
+      " --metadata -q -o " + (directory / "plots").string() + " 2>&1");
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  const auto figure = [&](const char* name) {
+    const auto png = directory / "plots" / (std::string("five_story_") + name + ".png");
+    ExpectFigure(png);
+    return Sidecar(png);
+  };
+  const double peak_u = peaks["isolator_displacement"]["value"].get<double>();
+  const double peak_f = peaks["isolator_force"]["value"].get<double>();
+  const double peak_roof_g = peaks["roof_absolute_acceleration"]["value"].get<double>() / 9806.65;
+
+  const nlohmann::json hysteresis = figure("hysteresis");
+  EXPECT_NE(hysteresis["title"].get<std::string>().find(
+                "five_story_table9.yaml under fwn_firm_seed1.at2"),
+            std::string::npos)
+      << hysteresis["title"];
+  ASSERT_EQ(hysteresis["axes"].size(), 10u);  // the total and nine components
+  const nlohmann::json& total = hysteresis["axes"][0];
+  EXPECT_EQ(total["xlabel"], "isolator displacement [mm]");
+  EXPECT_EQ(total["ylabel"], "force [kN]");
+  EXPECT_NEAR(Extent(total["x_range"]), peak_u, 1e-9 * peak_u);
+  EXPECT_NEAR(Extent(total["y_range"]), peak_f, 1e-9 * peak_f);
+
+  const nlohmann::json histories = figure("histories");
+  ASSERT_EQ(histories["axes"].size(), 4u);  // base and roof: displacement, acceleration
+  const nlohmann::json& roof_acceleration = histories["axes"][3];
+  EXPECT_EQ(roof_acceleration["y_unit"], "g");
+  EXPECT_EQ(roof_acceleration["x_unit"], "s");
+  EXPECT_NEAR(Extent(roof_acceleration["y_range"]), peak_roof_g, 1e-9 * peak_roof_g);
+  EXPECT_NEAR(Extent(histories["axes"][0]["y_range"]), peak_u, 1e-9 * peak_u);
+
+  const nlohmann::json envelopes = figure("envelopes");
+  ASSERT_EQ(envelopes["axes"].size(), 4u);
+  // The peak absolute acceleration over height: the roof's among the levels', in g.
+  EXPECT_EQ(envelopes["axes"][2]["x_unit"], "g");
+  EXPECT_GE(envelopes["axes"][2]["x_range"][1].get<double>(), peak_roof_g * (1 - 1e-9));
+  EXPECT_LT(envelopes["axes"][2]["x_range"][1].get<double>(), 2 * peak_roof_g);
+
+  for (const char* name : {"overview", "hysteresis", "histories", "envelopes", "energy"}) {
+    for (const nlohmann::json& axis : figure(name)["axes"]) {
+      EXPECT_FALSE(axis["x_unit"].get<std::string>().empty()) << name << ": " << axis["xlabel"];
+      if (axis["ylabel"] != "level") {
+        EXPECT_FALSE(axis["y_unit"].get<std::string>().empty()) << name << ": " << axis["ylabel"];
+      }
+    }
   }
 }
 
@@ -70,7 +177,7 @@ TEST(PlotScript, SdofRunPlotsBesideItsResult) {
                              "/cli/data/run_base.yaml -o " + result.string() + " --plot");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   for (const char* name : {"hysteresis", "histories", "energy"}) {
-    ExpectPng(directory / (std::string("sdof_") + name + ".png"));
+    ExpectFigure(directory / (std::string("sdof_") + name + ".png"));
   }
   EXPECT_FALSE(std::filesystem::exists(directory / "sdof_envelopes.png"));  // no stories
 }
@@ -85,9 +192,37 @@ TEST(PlotScript, SpectrumPlotsFromCsvAndHdf5) {
                                output.string() + " --plot=" + (directory / extension).string());
     ASSERT_EQ(run.exit_code, 0) << run.output;
     for (const char* name : {"D", "A", "strength"}) {
-      ExpectPng(directory / extension / (std::string("fwn_") + name + ".png"));
+      ExpectFigure(directory / extension / (std::string("fwn_") + name + ".png"));
     }
   }
+  // The spectra drawn are the command line's: A in g up to its largest A_g or A_y_g, D in m.
+  const auto json = RunIsolab("spectrum " + Source("ground_motions/fwn_firm_seed1.at2") +
+                              " --periods 0.1:2:0.1 --damping 0.02,0.05 --ductility 2,4 -q --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const nlohmann::json spectrum = nlohmann::json::parse(json.output);
+  double largest_a = 0.0, largest_d = 0.0;
+  for (const nlohmann::json& curve : spectrum["elastic"]) {
+    for (const double a : curve["A_g"]) largest_a = std::max(largest_a, a);
+    for (const double d : curve["D"]) largest_d = std::max(largest_d, d);
+  }
+  for (const nlohmann::json& curve : spectrum["constant_ductility"]) {
+    for (const double a : curve["A_y_g"]) largest_a = std::max(largest_a, a);
+    for (const double d : curve["D_y"]) largest_d = std::max(largest_d, d);
+  }
+  const auto plot =
+      isolab::testing::RunCommandLine("/usr/bin/python3 " + Source("scripts/plot_spectrum.py") +
+                                      " " + (directory / "fwn.h5").string() + " --metadata -q -o " +
+                                      (directory / "meta").string() + " 2>&1");
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  const nlohmann::json a = Sidecar(directory / "meta" / "fwn_A.png")["axes"][0];
+  EXPECT_EQ(a["ylabel"], "pseudo-acceleration A [g]");
+  EXPECT_EQ(a["xlabel"], "natural period T [s]");
+  EXPECT_NEAR(a["y_range"][1].get<double>(), largest_a, 1e-9 * largest_a);
+  EXPECT_NEAR(a["x_range"][0].get<double>(), 0.1, 1e-12);
+  EXPECT_NEAR(a["x_range"][1].get<double>(), 2.0, 1e-12);
+  const nlohmann::json d = Sidecar(directory / "meta" / "fwn_D.png")["axes"][0];
+  EXPECT_EQ(d["y_unit"], "m");
+  EXPECT_NEAR(d["y_range"][1].get<double>(), largest_d, 1e-9 * largest_d);
 }
 
 TEST(PlotScript, PairSpectrumPlotsFromCsvAndHdf5) {
@@ -101,7 +236,7 @@ TEST(PlotScript, PairSpectrumPlotsFromCsvAndHdf5) {
                   output.string() + " --plot=" + (directory / extension).string());
     ASSERT_EQ(run.exit_code, 0) << run.output;
     for (const char* name : {"D", "A"}) {
-      ExpectPng(directory / extension / (std::string("pair_") + name + ".png"));
+      ExpectFigure(directory / extension / (std::string("pair_") + name + ".png"));
     }
   }
 }
@@ -114,7 +249,7 @@ TEST(PlotScript, PlotDoesNotTakeTheNextArgument) {
   const auto run = RunIsolab("run --plot " + std::string(ISOLAB_TEST_DATA_DIR) +
                              "/cli/data/run_base.yaml -o " + result.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  ExpectPng(directory / "sdof_hysteresis.png");
+  ExpectFigure(directory / "sdof_hysteresis.png");
 }
 
 TEST(PlotScript, IsolabPythonMayBeANameOnThePath) {
@@ -129,7 +264,7 @@ TEST(PlotScript, IsolabPythonMayBeANameOnThePath) {
       ISOLAB_BINARY + " run " + std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/run_base.yaml -o " +
       result.string() + " --plot 2>&1");
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  ExpectPng(directory / "sdof_energy.png");
+  ExpectFigure(directory / "sdof_energy.png");
 }
 
 TEST(PlotScript, MissingPythonStopsBeforeTheRun) {

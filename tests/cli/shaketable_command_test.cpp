@@ -20,6 +20,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/run_isolab.h"
 #include "own_test_file.h"
@@ -165,6 +166,40 @@ TEST(ShakeTableCommand, BncsExcerptSlabChannelReferenceAndIsolationPeriod) {
   EXPECT_LT(fitted["e2"].get<double>(), 0.06);
 }
 
+// The rows from `row` on shifted in time by `shift` seconds.
+std::string Retimed(const std::string& rows, int row, double shift) {
+  std::istringstream in(rows);
+  std::string out;
+  int k = 0;
+  for (std::string line; std::getline(in, line); ++k) {
+    if (k >= row) {
+      const auto comma = line.find(',');
+      line = std::to_string(std::stod(line.substr(0, comma)) + shift) + line.substr(comma);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+// Where row `row` starts.
+std::size_t Offset(const std::string& rows, int row) {
+  std::size_t at = 0;
+  for (int k = 0; k < row; ++k) at = rows.find('\n', at) + 1;
+  return at;
+}
+
+// The rows with field `field` (0-based) of row `row` replaced by `text`.
+std::string WithCell(const std::string& rows, int row, int field, const std::string& text) {
+  const std::size_t start = Offset(rows, row), end = rows.find('\n', start);
+  std::vector<std::string> fields;
+  std::istringstream in(rows.substr(start, end - start));
+  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+  fields[field] = text;
+  std::string line;
+  for (const std::string& f : fields) line += (line.empty() ? "" : ",") + f;
+  return rows.substr(0, start) + line + rows.substr(end);
+}
+
 TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
   const std::string model = WriteBuilding();
   const std::string header =
@@ -197,6 +232,17 @@ TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
        "time.csv:3:1: time 0 does not increase"},
       {"short.csv", header + rows.substr(0, rows.find('\n') + 1),
        "short.csv:2: 1 samples: too short"},
+      // A gap would be written out as a record that `isolab run` refuses; it is named at its line.
+      {"gap.csv", header + Retimed(rows, 200, 100.0),
+       "gap.csv:202:1: time 102 follows 1.99: a step of 100.01 s where the samples are 0.01 s "
+       "apart"},
+      {"off_grid.csv",
+       header + Retimed(rows, 100, 0.003).substr(0, Offset(rows, 101)) +
+           rows.substr(Offset(rows, 101)),
+       "off_grid.csv:102:1: time 1.003 is 0.3 steps off the uniform step 0.01 s"},
+      // One corrupt cell once decided the displacement reference and the peaks.
+      {"corrupt.csv", header + WithCell(rows, 50, 4, "1e300"),
+       "corrupt.csv:52:5: channel 'a2' = 1e+300 m/s^2 (above 10 g,"},
   };
   for (const Case& c : cases) {
     const auto path = Scratch(c.name);
@@ -209,6 +255,22 @@ TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
     EXPECT_NE(run.output.find(c.message), std::string::npos) << c.name << ": " << run.output;
     EXPECT_FALSE(std::filesystem::exists(isolator)) << c.name;
   }
+  // One channel for every level counted one floor's inertia six times in the base shear.
+  const auto path = Scratch("good.csv");
+  std::ofstream(path) << header + rows;
+  const auto isolator = Scratch("repeated_isolator.csv");
+  const auto repeated = RunIsolab("shaketable " + path.string() + " --model " + model +
+                                      " --levels 1,2,1,3 --isolator " + isolator.string() + " -q",
+                                  true);
+  EXPECT_EQ(repeated.exit_code, 2) << repeated.output;
+  EXPECT_NE(repeated.output.find("--levels 1,2,1,3: channel 1 is given twice (levels 1 and 3)"),
+            std::string::npos)
+      << repeated.output;
+  EXPECT_FALSE(std::filesystem::exists(isolator));
+  EXPECT_EQ(RunIsolab("shaketable " + path.string() + " --model " + model +
+                      " --levels 1,2,4,3 --isolator " + isolator.string() + " -q")
+                .exit_code,
+            0);
 }
 
 }  // namespace

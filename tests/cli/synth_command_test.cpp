@@ -67,18 +67,31 @@ TEST(SynthCommand, OptionsOutOfRangeExitTwoAndWriteNothing) {
   const struct {
     std::string arguments, message;
   } cases[] = {
-      {"noise --duration 0", "--duration: 0 (must be > 0 and at most 100000 s)"},
-      {"noise --duration 1e9", "--duration: 1e+09 (must be > 0 and at most 100000 s)"},
-      {"noise --pga 0", "--pga: 0 (must be > 0)"},
-      {"noise --pga -1", "--pga: -1 (must be > 0)"},
+      {"noise --duration 0",
+       "--duration: 0 (must be at least 0.1 s (10 samples) and at most "
+       "100000 s)"},
+      // One sample at t = 0, where the envelope is 0: scaled to the PGA it was written as -NAN.
+      {"noise --duration 0.001", "--duration: 0.001 (must be at least 0.1 s (10 samples)"},
+      {"noise --duration 1e9",
+       "--duration: 1e+09 (must be at least 0.1 s (10 samples) and at "
+       "most 100000 s)"},
+      {"noise --pga 0", "--pga: 0 (must be > 0 and at most 10 g)"},
+      {"noise --pga -1", "--pga: -1 (must be > 0 and at most 10 g)"},
+      {"noise --pga 1e308", "--pga: 1e+308 (must be > 0 and at most 10 g)"},
       {"noise --pga nan", "--pga"},
       {"noise --site-frequency 0", "--site-frequency: 0 (must be > 0 and at most 25 Hz)"},
       {"noise --site-frequency 60", "--site-frequency: 60 (must be > 0 and at most 25 Hz)"},
       {"noise --site-damping 0", "--site-damping: 0 (must be in (0, 1])"},
       {"noise --strong-end 1", "--strong-end: 1 (must be >= the envelope's rise time, 2 s)"},
-      {"pulse --pulse-period 0", "--pulse-period: 0 (must be >= 0.1 s, ten samples)"},
-      {"pulse --pgv 0", "--pgv: 0 (must be > 0)"},
-      {"pulse --oscillations 1", "--oscillations: 1 (must be > 1)"},
+      {"pulse --pulse-period 0",
+       "--pulse-period: 0 (must be >= 0.1 s, ten samples, and at most "
+       "60 s)"},
+      {"pulse --pulse-period 1e300", "--pulse-period: 1e+300 (must be >= 0.1 s"},
+      {"pulse --pgv 0", "--pgv: 0 (must be > 0 and at most 30 m/s)"},
+      // Its accelerations overflowed and were written as INF.
+      {"pulse --pgv 1e308", "--pgv: 1e+308 (must be > 0 and at most 30 m/s)"},
+      {"pulse --oscillations 1", "--oscillations: 1 (must be > 1 and at most 100)"},
+      {"pulse --oscillations 1e300", "--oscillations: 1e+300 (must be > 1 and at most 100)"},
   };
   const auto output = isolab::testing::OwnTestFile("bad.at2");
   for (const auto& c : cases) {

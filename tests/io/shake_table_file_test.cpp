@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -48,6 +49,45 @@ TEST(ShakeTableFile, ReadsUnitsFromSuffixesAndBrackets) {
     EXPECT_EQ(error.location().line, 2);
     EXPECT_EQ(error.location().column, 4);
   }
+}
+
+// Times printed to five decimals at 300 Hz (0.00333, 0.00667, 0.01) are a uniform step; a lost
+// sample is not, and is named at its line against the median step.
+TEST(ShakeTableFile, TimesMustBeEvenlySpaced) {
+  std::string rounded = "time_s,a1_g\n", lost = rounded;
+  for (int k = 0; k < 30; ++k) {
+    char line[64];
+    std::snprintf(line, sizeof line, "%.5f,0\n", k / 300.0);
+    rounded += line;
+    if (k != 12) lost += line;
+  }
+  EXPECT_EQ(ShakeTableData::Read(Write("rounded.csv", rounded)).time().size(), 30u);
+  try {
+    ShakeTableData::Read(Write("lost.csv", lost));
+    FAIL() << "a lost sample was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location().line, 14);  // the sample after the lost one (k = 13)
+    EXPECT_EQ(error.location().column, 1);
+    EXPECT_NE(std::string(error.what())
+                  .find("time 0.04333 follows 0.03667: a step of 0.00666 s where the "
+                        "samples are 0.00333 s apart"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(ShakeTableFile, AnAccelerationAbove10gIsACorruptValue) {
+  const ShakeTableData data =
+      ShakeTableData::Read(Write("spike.csv", "time_s,a1 [g],d1 [mm]\n0,0.5,3\n0.01,10.5,4\n"));
+  const UnitSystem si("kN", "m", "s");
+  try {
+    data.Channel("a1", dimension::kAcceleration, si);
+    FAIL() << "10.5 g was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location().line, 3);
+    EXPECT_EQ(error.location().column, 2);
+  }
+  EXPECT_NEAR(data.Channel("d1", dimension::kLength, si)[1], 0.004, 1e-15);
 }
 
 }  // namespace

@@ -159,6 +159,20 @@ TEST(PlanModelFile, MissingKeysAreLocatedErrors) {
               ":11:", "plan.isolators[0]: missing key 'position'");
 }
 
+// Errors in the uniform shorthand `stories: {count: ...}` were located at 1:1 (the story was read
+// from a copy of its node, which has no marks): they are located at the key.
+TEST(PlanModelFile, ErrorsInUniformStoriesAreLocatedAtTheKey) {
+  const std::string uniform =
+      "  stories:\n"
+      "    count: 3\n"
+      "    mass: 100 t\n"
+      "    stiffness: {x: 300, y: -200, torsion: 3.0e10}\n";
+  const std::string model = Model("  stories:\n", uniform);
+  const std::string text =
+      model.substr(0, model.find("    - {name: s1")) + model.substr(model.find("  isolators:"));
+  ExpectError(ErrorOf(text), ":8:28:", "plan.stories.stiffness.y: -200 (must be > 0)");
+}
+
 TEST(PlanModelFile, ALawWithoutACoupledFormMustBeUncoupled) {
   ExpectError(ErrorOf(Model("coupling: uncoupled,", "")), ":13:",
               "plan.isolators[1].components[0]: degrading_bhm2 has no coupled bidirectional form");

@@ -47,6 +47,7 @@ io::Record FilteredNoiseRecord(const FilteredNoiseSpec& spec);
 io::Record PulseRecord(const PulseSpec& spec);
 
 // Writes a record in PEER AT2 layout (NGA-West2 header, values in g, five per line), atomically.
+// Throws std::invalid_argument, writing nothing, for fewer than two samples or a non-finite one.
 void WriteAt2(const io::Record& record, const std::string& path);
 
 }  // namespace isolab::analysis

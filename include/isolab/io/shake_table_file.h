@@ -5,8 +5,9 @@
 // (suffixes: _s, _m, _cm, _mm, _in, _m_s2, _cm_s2, _mm_s2, _in_s2, _g). Lines starting with '#'
 // are comments. Errors name the file, line and column: a column without a unit, one channel
 // given twice in different units, a value that is not a finite number, a time that does not
-// increase, a channel asked for in the wrong dimension, a missing channel (with the columns the
-// file has).
+// increase or breaks the uniform step (a gap, or a time more than 0.01 of a step off the grid),
+// a channel asked for in the wrong dimension, an acceleration above 10 g or a displacement beyond
+// 10 m (a corrupt value), a missing channel (with the columns the file has).
 #pragma once
 
 #include <string>
@@ -42,7 +43,10 @@ class ShakeTableData {
   std::vector<double> time_;
   std::vector<ShakeTableColumn> columns_;  // every column but time
   std::vector<int> header_columns_;        // 1-based column of each entry of columns_
+  std::vector<int> sample_lines_;          // the file's line of each sample
   int header_line_ = 0;
+
+  void CheckUniformStep(int column) const;  // throws InputError at the first uneven sample
 };
 
 }  // namespace isolab::io
