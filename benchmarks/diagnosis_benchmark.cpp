@@ -1,7 +1,7 @@
 // Cost of a diagnosis on the hidden-effect cases (models/diagnosis/, the protocol of
 // scripts/generate_diagnosis_cases.sh: 12 tests, 7212 samples, 1 % noise) from a one-BHM2 base:
-// the base fit, the detectors on its residual, and each refit of a supported candidate. Target
-// (issue: discrepancy workflow): under two minutes per case on the 2-core machine.
+// the base fit, the detectors on its residual, and each refit of a supported candidate. Target:
+// under two minutes per case on the 2-core machine.
 #include <benchmark/benchmark.h>
 
 #include "diagnosis/hidden_effect_cases.h"

@@ -9,7 +9,7 @@
 //  * the set-up of such a building (masses, connections, Rayleigh damping from two modes);
 //  * the same five-story building on IDA at rtol 1e-4, 1e-6 and 1e-8 (60 s of record, output at
 //    0.01 s), with its internal steps and events per second of record.
-//  * plan models (issue #15): the five-story Table 9 building in plan on four coupled (and
+//  * buildings in plan: the five-story Table 9 building in plan on four coupled (and
 //    uncoupled) Table 9 bearings under two components, against the one-direction five-story
 //    model above (target within 5x), and a plan building of 5 to 1000 stories on four linear
 //    isolators (target: linear in stories); and both models on one lead-rubber bearing or

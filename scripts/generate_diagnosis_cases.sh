@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Cyclic test data with hidden effects for `isolab diagnose` (issue: discrepancy workflow): every
+# Cyclic test data with hidden effects for `isolab diagnose` every
 # truth in models/diagnosis/ (the bilinear base plus one effect, the base alone, and two effects
 # at once) driven at 10, 25, 50, 100, 150 and 200 mm, at periods 2 s and 0.5 s, three cycles of
 # 200 samples, with 1 % Gaussian force noise and a fixed seed per case, written as
 # test,time,displacement,force CSV. tests/diagnosis/hidden_effect_cases.h draws the same data in
 # process; keep the two in step.
-# Campaigns on one specimen (issue: real measurements): the degradation and the rate truths
+# Campaigns on one specimen: the degradation and the rate truths
 # driven through the same twelve tests one after another on one specimen (isolab cyclic
 # --sequential; each test starts from the state the previous left), written with the
 # "# specimen: one, in order" header as campaign_<truth>.csv; tests/diagnosis draws them in

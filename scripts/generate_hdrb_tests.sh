@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Synthetic HDRB cyclic tests for `isolab fit` (issue: identification): the paper's Table 9 THM1
+# Synthetic HDRB cyclic tests for `isolab fit`: the paper's Table 9 THM1
 # system driven at 5, 30, 50, 70, 100, 120, 140, 160, 180 and 200 mm, three cycles at 0.5 Hz,
 # written without noise and with 1 % Gaussian force noise (seed 1), in test,time,displacement,force
 # CSV. Usage: scripts/generate_hdrb_tests.sh [OUTPUT_DIR]   (default build/hdrb)

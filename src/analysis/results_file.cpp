@@ -6,7 +6,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "isolab/analysis/results_writer.h"
+#include "results_writer.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "isolab/analysis/result_series.h"
-#include "isolab/analysis/results_writer.h"
+#include "results_writer.h"
 
 namespace isolab::analysis {
 

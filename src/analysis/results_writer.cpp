@@ -1,4 +1,4 @@
-#include "isolab/analysis/results_writer.h"
+#include "results_writer.h"
 
 #include <algorithm>
 

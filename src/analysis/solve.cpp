@@ -6,7 +6,7 @@
 
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
-#include "isolab/analysis/results_writer.h"
+#include "results_writer.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/plan_rate_form.h"
 #include "isolab/hysteresis/rate_form.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "isolab/hysteresis/hdr_bearing.h"
+#include "hdr_bearing.h"
 
 namespace isolab::hysteresis {
 namespace {

@@ -1,4 +1,4 @@
-#include "isolab/hysteresis/hdr_bearing.h"
+#include "hdr_bearing.h"
 
 #include <numbers>
 

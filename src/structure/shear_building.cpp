@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "isolab/structure/tridiagonal_pencil.h"
+#include "tridiagonal_pencil.h"
 
 namespace isolab::structure {
 namespace {

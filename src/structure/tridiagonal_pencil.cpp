@@ -1,4 +1,4 @@
-#include "isolab/structure/tridiagonal_pencil.h"
+#include "tridiagonal_pencil.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // steps equal the full run's (and differ from peaks read off the thinned history), summary-only
 // files hold the peaks and final energies alone, levels and quantities pick the columns, CSV
 // follows the selection, and an abandoned writer leaves nothing behind.
-#include "isolab/analysis/results_writer.h"
+#include "results_writer.h"
 
 #include <gtest/gtest.h>
 #include <hdf5.h>

@@ -339,9 +339,9 @@ TEST(CompareCommand, PlotWritesBarCharts) {
 
 }  // namespace
 
-// Issue #18 item 5: a run that blew up (a negative-stiffness isolation layer, 4.4 m in 4 s) was
-// "completed" and entered its variant's means. It is now a failed run, its message says why, and
-// the means it would have entered are marked failed with no numbers.
+// A run that blows up (a negative-stiffness isolation layer, 4.4 m in 4 s) is a failed run, not a
+// "completed" one in its variant's means: its message says why, and the means it would have
+// entered are marked failed with no numbers.
 TEST(CompareCommand, ABlownUpRunFailsAndStaysOutOfTheMeans) {
   const fs::path folder = OutputFolder("blow_up");
   const Outcome run =

@@ -130,7 +130,7 @@ TEST(DiagnoseCommand, BadInputIsLocatedWithExitCodeTwoAndNoReport) {
 }
 
 TEST(DiagnoseCommand, DataTooFewForTheBaseModelAreRefused) {
-  // Issue #18 item 9: a header-only file was diagnosed (e^2 = 0 % over no test), exit 0.
+  // A header-only file has nothing to diagnose: no "e^2 = 0 % over no test", exit 0.
   const std::string fit_data = kSource + "/tests/cli/data/fit/";
   const auto stem = Scratch("too_few_for_the_base");
   auto run = RunIsolab("diagnose " + fit_data + "bad_header_only.csv --base " + kSource +

@@ -128,7 +128,7 @@ TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
       {"bad_never_reverses.csv", "test 'ramp': too short to identify anything"},
       {"bad_one_reversal.csv", "test 'once': too short to identify anything: 5 samples"},
       {"bad_time_repeats.csv", "bad_time_repeats.csv:5: column 'time': 2 does not increase"},
-      // Issue #18 item 9: these were fitted, "e^2 = 0 % over 0 tests" and "e^2 = 100 %", exit 0.
+      // Nothing to fit: not "e^2 = 0 % over 0 tests" or "e^2 = 100 %" with exit 0.
       {"bad_header_only.csv", "bad_header_only.csv:1: a header and no samples"},
       {"bad_constant_force.csv", "test 'u=50': the force is 3 throughout"},
       {"bad_constant_displacement.csv", "test 'u=0': the displacement is 7 throughout"},

@@ -249,7 +249,7 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
        "bad_unknown_integrator.yaml:8:34: analysis.integrator: 'rk4' is not an integrator "
        "(expected newmark or ida)"},
       {"bad_ida_rtol.yaml", "bad_ida_rtol.yaml:11:15: analysis.ida.rtol = 0 (must be in (0, 0.1))"},
-      // Issue #18 item 3: halving was recursive and unbounded (a stack overflow waiting).
+      // Halving is bounded, not recursive (an unbounded one is a stack overflow waiting).
       {"bad_max_step_cuts.yaml",
        "bad_max_step_cuts.yaml:11:28: analysis.newmark.max_step_cuts = 1e+08 (must be in [0, 20])"},
   };
@@ -594,9 +594,9 @@ double KineticToInputRatio(const std::filesystem::path& results) {
 
 }  // namespace
 
-// Issue #18 item 5: a divergent run used to exit 0 "completed" (peaks of 1e92 mm, NaN energies
-// printed as a balance error of 0). Both integrators now stop it with exit 1 and say why; the
-// results written up to there show the energy the model created, which a valid run never does.
+// A divergent run must not exit 0 "completed" (peaks of 1e92 mm, NaN energies printed as a
+// balance error of 0). Both integrators stop it with exit 1 and say why; the results written up
+// to there show the energy the model created, which a valid run never does.
 TEST(RunCommand, BlowUpsExitOneUnderBothIntegratorsAndValidRunsStayPassive) {
   const auto output = TemporaryFile("blow_up.h5");
   for (const char* integrator : {"newmark", "ida"}) {
@@ -622,8 +622,8 @@ TEST(RunCommand, BlowUpsExitOneUnderBothIntegratorsAndValidRunsStayPassive) {
   EXPECT_LE(KineticToInputRatio(output), 1.0 + 1e-3);
 }
 
-// Issue #18 item 6: `--scale nan`, `--scale inf` and `--rtol nan` used to be read (a range check
-// lets NaN through): every floating-point option now refuses them, exit 2, naming the option.
+// `--scale nan`, `--scale inf` and `--rtol nan` are not numbers (a range check lets NaN
+// through): every floating-point option refuses them, exit 2, naming the option.
 TEST(RunCommand, NonFiniteNumbersOnTheCommandLineExitTwo) {
   const auto output = TemporaryFile("non_finite.h5");
   const std::pair<const char*, const char*> cases[] = {

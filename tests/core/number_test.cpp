@@ -1,4 +1,4 @@
-// The one number reader (issue #18 item 6): finite decimal numbers are read exactly as written,
+// The one number reader: finite decimal numbers are read exactly as written,
 // every spelling of NaN and infinity that from_chars, strtod or YAML would accept is refused.
 #include "isolab/core/number.h"
 

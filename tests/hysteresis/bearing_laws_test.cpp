@@ -12,7 +12,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
-#include "isolab/hysteresis/hdr_bearing.h"
+#include "hdr_bearing.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/hysteresis/parallel_assembly.h"
 

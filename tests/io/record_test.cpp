@@ -202,7 +202,7 @@ TEST(ReadRecord, UnitsComeFromTheUnitsStatementOnly) {
       ReadRecord(DataFile("record_g_only_in_description.at2"), {"g", 0, "--units"});
   EXPECT_EQ(given.units, "g");
   EXPECT_EQ(given.units_source, "--units");
-  // Given units that disagree with the statement are still refused (#13's rule).
+  // Given units that disagree with the statement are still refused.
   EXPECT_NE(ErrorOf(DataFile("record_ft_beside_g.at2"), {"g", 0, "--units"})
                 .find("its header gives the units as ft/s^2 but --units gives g"),
             std::string::npos);

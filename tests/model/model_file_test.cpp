@@ -59,7 +59,7 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_empty.yaml", ":1:1:", "the file is empty");
   ExpectError("bad_nan_value.yaml",
               ":4:69:", "isolation.components[0].uyh: '.nan' is not a finite number");
-  // Issue #18 item 6: NaN and infinity spelled without YAML's dot used to be read as numbers.
+  // NaN and infinity spelled without YAML's dot are not numbers.
   ExpectError("bad_plain_nan_value.yaml",
               ":4:42:", "isolation.components[0].k1: 'nan' is not a finite number");
   ExpectError("bad_plain_inf_value.yaml",
@@ -204,7 +204,7 @@ TEST(ModelFile, LeadCoreMaterialDataOutsideWhatMetalsHaveAreRefused) {
       << error_of(steel + "50");
 }
 
-// Issue #18 item 2: a model whose isolation `file` names itself, or A -> B -> A, recursed until
+// A model whose isolation `file` names itself, or A -> B -> A, would recurse until
 // the stack overflowed. The file that closes the cycle is refused at its `file` key, naming the
 // chain; the same file spelled another way ("./a.yaml") is still the same file.
 TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {

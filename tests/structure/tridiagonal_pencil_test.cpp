@@ -3,7 +3,7 @@
 // eigenvalues of its tridiagonal K = k tridiag(-1, 2, -1) with a free top (for n = 5 they are
 // Chopra's Case E periods 2.000, 0.685, 0.435, 0.338, 0.297 s), and against Eigen's dense
 // generalized eigensolver on an irregular building.
-#include "isolab/structure/tridiagonal_pencil.h"
+#include "tridiagonal_pencil.h"
 
 #include <gtest/gtest.h>
 

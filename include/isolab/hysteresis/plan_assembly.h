@@ -4,7 +4,7 @@
 // (plan_law_kernel.h), dispatched with no virtual call; the assembly holds no state. Callers own
 // the committed and trial state arrays (one PlanLawState per component) and commit by swapping.
 //
-// For a structure in plan (issue #15, part B): an isolator at plan position (x_i, y_i) under a
+// For a structure in plan (structure.h): an isolator at plan position (x_i, y_i) under a
 // rigid floor with dofs q = (u_x, u_y, theta) about the floor's reference point deforms by
 //   u = T q,   T = [1 0 -(y_i - y_0); 0 1 (x_i - x_0)]   (relative to the ground, or to the floor
 // below with T for each), so the structure adds T^T f to its force vector and T^T (K + c_d D) T,

@@ -30,7 +30,7 @@
 //
 // The integrator's Jacobian takes force_u, force_v, force_q and rate_u, rate_v, rate_q as they
 // are: each is the exact partial derivative of what EvaluatePlanRate computes. A plan structure
-// (part B of issue #15) maps an isolator's u = T q_structure as in plan_assembly.h and adds
+// maps an isolator's u = T q_structure as in plan_assembly.h and adds
 // T^T force_u T, T^T force_q, rate_u T, ... to its fixed sparse pattern through precomputed slots,
 // q's PlanInternalVariableCount rows and columns per law.
 #pragma once
