@@ -6,14 +6,18 @@
 writes, named after the result file's stem, each as a 300 dpi PNG and a vector PDF (and, with
 --metadata, a JSON file of its axes' labels, units and data ranges):
     <stem>_overview.png    the isolator's loop and its displacement history, the free vibration
-                           after the excitation shaded (isolated models only)
+                           after the excitation shaded (isolated models only); for a building in
+                           plan, each isolator's orbit (x against y), the resultant of its
+                           displacement against time and each level's rotation against time
     <stem>_hysteresis.png  isolator force against isolator displacement: total and each component
     <stem>_histories.png   displacement and absolute acceleration (in g) of the isolator (base) and
                            roof
     <stem>_envelopes.png   peaks over height: displacement, story drift, absolute acceleration,
                            story shear (buildings only)
     <stem>_energy.png      input energy against kinetic + damping + elastic + hysteretic, stacked
-Panels that a model does not have (no isolator, no stories) are left out. Runs on Debian's
+A building in plan's histories and envelopes are of resultants |(x, y)|, its hysteresis each
+isolator's x and y loops. Panels that a model does not have (no isolator, no stories) are left
+out. Runs on Debian's
 /usr/bin/python3 with python3-matplotlib and python3-h5py (scripts/setup.sh installs them);
 `--check` only tests that they import (isolab run --plot calls it before the analysis).
 """
@@ -38,18 +42,39 @@ def step_profile(values):
     return xs, ys
 
 
+def columns_of(dataset):
+    return [text(c) for c in dataset.attrs.get("columns", [])]
+
+
+def resultants(np, values, two):
+    """Pairs of columns (x, y) as their resultants |(x, y)| in plan; the columns as they are in
+    one direction."""
+    if not two:
+        return values
+    return np.hypot(values[:, 0::2], values[:, 1::2])
+
+
 class Result:
-    """The datasets plot_result needs, and where the isolator and roof are."""
+    """The datasets plot_result needs, and where the isolator and roof are. In plan (`two`), every
+    translation has an x and a y column, kept as their resultant."""
 
     def __init__(self, h5py, np, path):
         with h5py.File(path, "r") as f:
             self.time = f["time"][:]
             self.time_unit = units_of(f["time"])
-            self.displacement = f["displacement"][:]
+            self.two = any(c.endswith(".y") for c in columns_of(f["displacement"]))
+            self.displacement = resultants(np, f["displacement"][:], self.two)
             self.length = units_of(f["displacement"])
-            self.relative_acceleration = f["acceleration"][:]
-            self.absolute_acceleration = f["absolute_acceleration"][:]
+            self.relative_acceleration = resultants(np, f["acceleration"][:], self.two)
+            self.absolute_acceleration = resultants(np, f["absolute_acceleration"][:], self.two)
             self.acceleration_unit = units_of(f["absolute_acceleration"])
+            ground = f["ground_acceleration"][:] if "ground_acceleration" in f else None
+            if ground is not None and ground.ndim == 2:
+                ground = np.hypot(ground[:, 0], ground[:, 1])
+            self.ground = ground
+            self.rotation = f["rotation"][:] if "rotation" in f else None
+            self.level_names = [c[:-2] for c in columns_of(f["displacement"])[0::2]] \
+                if self.two else columns_of(f["displacement"])
             self.isolated = "isolator" in f
             if self.isolated:
                 g = f["isolator"]
@@ -58,10 +83,14 @@ class Result:
                 self.force_unit = units_of(g["force"])
                 self.component_force = g["component_force"][:]
                 self.component_names = [text(n) for n in g["component_force"].attrs["columns"]]
+                self.isolator_names = [text(n) for n in g["resultant"].attrs["columns"]] \
+                    if self.two else ["isolator"]
+                if self.two:
+                    self.isolator_resultant = g["resultant"][:].reshape(len(self.time), -1)
             self.stories = 0
             if "story" in f:
-                self.drift = f["story/drift"][:]
-                self.shear = f["story/shear"][:]
+                self.drift = resultants(np, f["story/drift"][:], self.two)
+                self.shear = resultants(np, f["story/shear"][:], self.two)
                 self.force_unit = units_of(f["story/shear"])
                 self.stories = self.drift.shape[1]
             self.energy = {name: f["energy/" + name][:]
@@ -75,11 +104,13 @@ class Result:
                 self.title += f" under {short_name(record)}"
             if text(f.attrs.get("termination", "completed")) != "completed":
                 self.title += " (run stopped early)"
-        dofs = self.displacement.shape[1]
-        # Shear buildings: DOF 0 is the base when isolated, then the floors; an SDOF has one DOF.
-        self.base_dof = 0 if (self.isolated and dofs == self.stories + 1 and self.stories) else None
-        self.roof_dof = dofs - 1
-        self.ground_acceleration = self.absolute_acceleration[:, 0] - self.relative_acceleration[:, 0]
+        levels = self.displacement.shape[1]
+        # Level 0 is the base when isolated, then the floors; an SDOF has one level.
+        self.base_dof = 0 if (self.isolated and levels == self.stories + 1 and self.stories) \
+            else None
+        self.roof_dof = levels - 1
+        self.ground_acceleration = self.ground if self.ground is not None else \
+            self.absolute_acceleration[:, 0] - self.relative_acceleration[:, 0]
 
 
 def acceleration_in_g(r, values):
@@ -110,6 +141,60 @@ def plot_overview(plt, np, r, path, metadata):
     for ax in (loop, history):
         mark_reference(ax.axhline(0, color="0.6", lw=0.5))
     fig.suptitle(wrap_title(r.title, 7.2))
+    return save(plt, np, fig, path, metadata)
+
+
+def plot_plan_overview(plt, np, r, path, metadata):
+    """A building in plan at a glance: where each isolator went (its orbit), how far (the
+    resultant against time) and how the levels twisted."""
+    panels = 3 if r.rotation is not None else 2
+    fig, axes = plt.subplots(1, panels, figsize=(10.8, 3.4), layout="constrained",
+                             gridspec_kw={"width_ratios": [1.0] + [1.3] * (panels - 1)})
+    orbit, history = axes[0], axes[1]
+    for i, name in enumerate(r.isolator_names):
+        orbit.plot(r.isolator_displacement[:, 2 * i], r.isolator_displacement[:, 2 * i + 1],
+                   lw=0.5, label=name)
+        history.plot(r.time, r.isolator_resultant[:, i], lw=0.6, label=name)
+    orbit.set_aspect("equal", adjustable="datalim")
+    orbit.set_xlabel(f"isolator displacement x [{r.length}]")
+    orbit.set_ylabel(f"isolator displacement y [{r.length}]")
+    orbit.set_title("isolator orbits")
+    mark_reference(orbit.axhline(0, color="0.6", lw=0.5), orbit.axvline(0, color="0.6", lw=0.5))
+    if r.excitation_end < r.time[-1]:
+        mark_reference(history.axvspan(r.excitation_end, r.time[-1], color="0.9", zorder=0,
+                                       label="free vibration"))
+    history.legend(loc="upper right", fontsize=7, ncols=2)
+    history.set_xlabel(f"time [{r.time_unit}]")
+    history.set_ylabel(f"resultant displacement [{r.length}]")
+    history.set_title("isolator displacement |(x, y)|")
+    if r.rotation is not None:
+        twist = axes[2]
+        for k, name in enumerate(r.level_names):
+            twist.plot(r.time, 1000.0 * r.rotation[:, k], lw=0.5, label=name)
+        twist.legend(loc="upper right", fontsize=7, ncols=2)
+        twist.set_xlabel(f"time [{r.time_unit}]")
+        twist.set_ylabel("rotation [mrad]")
+        twist.set_title("level rotations")
+        mark_reference(twist.axhline(0, color="0.6", lw=0.5))
+    fig.suptitle(wrap_title(r.title, 10.8))
+    return save(plt, np, fig, path, metadata)
+
+
+def plot_plan_hysteresis(plt, np, r, path, metadata):
+    """Each isolator's force against its displacement, along x and along y."""
+    fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.4), layout="constrained", sharey=True)
+    for d, axis in enumerate("xy"):
+        ax = axes[d]
+        for i, name in enumerate(r.isolator_names):
+            ax.plot(r.isolator_displacement[:, 2 * i + d], r.isolator_force[:, 2 * i + d], lw=0.5,
+                    label=name)
+        ax.set_xlabel(f"isolator displacement {axis} [{r.length}]")
+        ax.set_ylabel(f"isolator force {axis} [{r.force_unit}]")
+        ax.set_title(f"along {axis}")
+        mark_reference(ax.axhline(0, color="0.6", lw=0.5), ax.axvline(0, color="0.6", lw=0.5))
+    axes[1].tick_params(labelleft=True)
+    axes[0].legend(loc="upper left", fontsize=7)
+    fig.suptitle(wrap_title(f"Isolator hysteresis: {r.title}", 7.2))
     return save(plt, np, fig, path, metadata)
 
 
@@ -186,6 +271,9 @@ def plot_envelopes(plt, np, r, path, metadata):
     axes[3].set_xlabel(f"peak story shear [{r.force_unit}]")
     axes[0].set_yticks(levels)
     axes[0].set_yticklabels([ground] + [f"floor {k}" for k in range(1, n + 1)])
+    if r.two:  # resultants of x and y
+        for ax in axes:
+            ax.set_xlabel(ax.get_xlabel().replace("peak ", "peak |(x, y)|\n", 1))
     axes[0].set_ylabel("level")
     for ax in axes:
         ax.set_xlim(left=0)
@@ -233,8 +321,8 @@ def main():
     r = Result(h5py, np, args.result)
     plots = []
     if r.isolated:
-        plots.append(("overview", plot_overview))
-        plots.append(("hysteresis", plot_hysteresis))
+        plots.append(("overview", plot_plan_overview if r.two else plot_overview))
+        plots.append(("hysteresis", plot_plan_hysteresis if r.two else plot_hysteresis))
     plots.append(("histories", plot_histories))
     if r.stories:
         plots.append(("envelopes", plot_envelopes))

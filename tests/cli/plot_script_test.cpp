@@ -169,6 +169,45 @@ TEST(PlotScript, FiguresShowTheRunsNumbersWithTheirUnits) {
   }
 }
 
+// A plan model's figures: the isolators' orbits and resultant displacement span the run's peak
+// resultant isolator displacement, the rotations axis (in mrad) its peak floor rotation, and the
+// hysteresis is drawn along x and along y.
+TEST(PlotScript, PlanRunShowsOrbitsResultantsAndRotations) {
+  REQUIRE_PLOTTING();
+  const auto directory = FreshDirectory("plan");
+  const auto result = directory / "plan.h5";
+  const auto run = RunIsolab("run " + Source("models/plan/five_story_table9_plan.yaml") +
+                             " --json -q -o " + result.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json peaks = nlohmann::json::parse(run.output)["peaks"];
+  const auto plot = isolab::testing::RunCommandLine(
+      "/usr/bin/python3 " + Source("scripts/plot_result.py") + " " + result.string() +
+      " --metadata -q -o " + (directory / "plots").string() + " 2>&1");
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  const auto figure = [&](const char* name) {
+    const auto png = directory / "plots" / (std::string("plan_") + name + ".png");
+    ExpectFigure(png);
+    return Sidecar(png);
+  };
+  const double peak_u = peaks["isolator_displacement"]["value"].get<double>();
+  const double peak_rotation = peaks["floor_rotation"]["value"].get<double>();
+
+  const nlohmann::json overview = figure("overview");
+  ASSERT_EQ(overview["axes"].size(), 3u);  // orbits, resultant displacement, rotations
+  EXPECT_EQ(overview["axes"][0]["xlabel"], "isolator displacement x [mm]");
+  EXPECT_EQ(overview["axes"][0]["ylabel"], "isolator displacement y [mm]");
+  EXPECT_LE(Extent(overview["axes"][0]["x_range"]), peak_u * (1 + 1e-9));
+  EXPECT_NEAR(overview["axes"][1]["y_range"][1].get<double>(), peak_u, 1e-9 * peak_u);
+  EXPECT_EQ(overview["axes"][2]["y_unit"], "mrad");
+  EXPECT_NEAR(Extent(overview["axes"][2]["y_range"]), 1e3 * peak_rotation, 1e-6 * peak_rotation);
+
+  const nlohmann::json hysteresis = figure("hysteresis");
+  ASSERT_EQ(hysteresis["axes"].size(), 2u);
+  EXPECT_EQ(hysteresis["axes"][0]["xlabel"], "isolator displacement x [mm]");
+  EXPECT_EQ(hysteresis["axes"][1]["xlabel"], "isolator displacement y [mm]");
+  for (const char* name : {"histories", "envelopes", "energy"}) figure(name);
+}
+
 TEST(PlotScript, SdofRunPlotsBesideItsResult) {
   REQUIRE_PLOTTING();
   const auto directory = FreshDirectory("sdof");
