@@ -26,6 +26,10 @@ constexpr std::string_view kElastoplasticMech[] = {"ke", "fs"};
 constexpr std::string_view kBoucWenKeys[] = {"alpha", "beta", "gamma", "delta", "nu"};
 constexpr std::string_view kDegradingMath[] = {"k0", "k1", "uy", "loss", "slip_scale"};
 constexpr std::string_view kDegradingMech[] = {"ke", "kh", "fs", "loss", "slip_scale"};
+constexpr std::string_view kAsymmetricMath[] = {"k0", "uy_pos", "uy_neg"};
+constexpr std::string_view kAsymmetricMech[] = {"ke", "fs_pos", "fs_neg"};
+constexpr std::string_view kBacklashMath[] = {"k0", "uy", "gap"};
+constexpr std::string_view kBacklashMech[] = {"ke", "fs", "gap"};
 
 constexpr LawType kAllTypes[] = {
     LawType::kLinearSpring,
@@ -41,6 +45,8 @@ constexpr LawType kAllTypes[] = {
     LawType::kFrictionPendulum,
     LawType::kLeadRubber,
     LawType::kHdrBearing,
+    LawType::kAsymmetricElastoplastic,
+    LawType::kBacklashElastoplastic,
 };
 
 // The breakpoint that may be omitted when the two slopes around it are equal (it then marks no
@@ -138,6 +144,16 @@ void ValidateMathematical(LawType type, const ParameterArray& v) {
     case LawType::kHdrBearing:
       ValidateBearing(type, ParameterForm::kMathematical, v);
       return;
+    case LawType::kAsymmetricElastoplastic:
+      r.Greater("k0", 0.0);
+      r.Greater("uy_pos", 0.0);
+      r.Greater("uy_neg", 0.0);
+      return;
+    case LawType::kBacklashElastoplastic:
+      r.Greater("k0", 0.0);
+      r.Greater("uy", 0.0);
+      r.AtLeast("gap", 0.0);
+      return;
   }
 }
 
@@ -194,6 +210,16 @@ void ValidateMechanical(LawType type, const ParameterArray& v) {
     case LawType::kHdrBearing:
       ValidateBearing(type, ParameterForm::kMechanical, v);
       return;
+    case LawType::kAsymmetricElastoplastic:
+      r.Greater("ke", 0.0);
+      r.Greater("fs_pos", 0.0);
+      r.Greater("fs_neg", 0.0);
+      return;
+    case LawType::kBacklashElastoplastic:
+      r.Greater("ke", 0.0);
+      r.Greater("fs", 0.0);
+      r.AtLeast("gap", 0.0);
+      return;
   }
 }
 
@@ -214,6 +240,10 @@ ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m)
       return {m[0], m[1], m[2], (m[0] - m[1]) * m[3], m[4]};
     case LawType::kElastoplastic:
       return {m[0], m[0] * m[1], NAN, NAN, NAN};
+    case LawType::kAsymmetricElastoplastic:  // k0, uy_pos, uy_neg -> ke, fs_pos, fs_neg
+      return {m[0], m[0] * m[1], m[0] * m[2], NAN, NAN};
+    case LawType::kBacklashElastoplastic:  // k0, uy, gap -> ke, fs, gap
+      return {m[0], m[0] * m[1], m[2], NAN, NAN};
     case LawType::kLinearSpring:
     case LawType::kDashpot:
     case LawType::kTrilinearElastic:
@@ -245,6 +275,10 @@ ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q)
       return {q[0], q[1], q[2], q[3] / (q[0] - q[1]), q[4]};
     case LawType::kElastoplastic:
       return {q[0], q[1] / q[0], NAN, NAN, NAN};
+    case LawType::kAsymmetricElastoplastic:
+      return {q[0], q[1] / q[0], q[2] / q[0], NAN, NAN};
+    case LawType::kBacklashElastoplastic:
+      return {q[0], q[1] / q[0], q[2], NAN, NAN};
     case LawType::kLinearSpring:
     case LawType::kDashpot:
     case LawType::kTrilinearElastic:
@@ -290,6 +324,10 @@ std::string_view LawName(LawType type) {
       return "lead_rubber";
     case LawType::kHdrBearing:
       return "hdr_bearing";
+    case LawType::kAsymmetricElastoplastic:
+      return "asymmetric_elastoplastic";
+    case LawType::kBacklashElastoplastic:
+      return "backlash_elastoplastic";
   }
   return "unknown";
 }
@@ -328,6 +366,10 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
       return BearingKeys(type, form);
+    case LawType::kAsymmetricElastoplastic:
+      return math ? Keys(kAsymmetricMath) : Keys(kAsymmetricMech);
+    case LawType::kBacklashElastoplastic:
+      return math ? Keys(kBacklashMath) : Keys(kBacklashMech);
   }
   return {};
 }
@@ -392,6 +434,10 @@ LawKernel LawParameters::Kernel() const {
     case LawType::kLeadRubber:
     case LawType::kHdrBearing:
       return BearingKernel(type_, q);
+    case LawType::kAsymmetricElastoplastic:
+      return PlaySlider{q[0], q[1], q[2], 0.0};
+    case LawType::kBacklashElastoplastic:
+      return PlaySlider{q[0], q[1], q[1], q[2]};
   }
   return Dashpot{0.0};
 }

@@ -181,10 +181,11 @@ PhaseSwitch Switch(const BoucWen&, const LawPhase& phase, int, double, double, d
   return {phase, z};
 }
 
-// The degrading law has two internal variables (slider and accumulated slip) and no rate form
-// yet; HasRateForm keeps it away from the IDA path, so these are never reached.
+// The degrading law has two internal variables (slider and accumulated slip) and the play
+// sliders a clearance, and neither has a rate form yet; HasRateForm keeps them away from the IDA
+// path, so these are never reached.
 [[noreturn]] void NoRateForm() {
-  throw std::logic_error("degrading_bhm2 has no rate form (HasRateForm is false)");
+  throw std::logic_error("the law has no rate form (HasRateForm is false)");
 }
 RateResponse Evaluate(const DegradingSlider&, const LawPhase&, double, double, double) {
   NoRateForm();
@@ -195,11 +196,17 @@ void Roots(const DegradingSlider&, const LawPhase&, double, double, double, doub
 PhaseSwitch Switch(const DegradingSlider&, const LawPhase&, int, double, double, double) {
   NoRateForm();
 }
+RateResponse Evaluate(const PlaySlider&, const LawPhase&, double, double, double) { NoRateForm(); }
+void Roots(const PlaySlider&, const LawPhase&, double, double, double, double*) { NoRateForm(); }
+PhaseSwitch Switch(const PlaySlider&, const LawPhase&, int, double, double, double) {
+  NoRateForm();
+}
 
 }  // namespace
 
 bool HasRateForm(const LawKernel& kernel) {
-  return !std::holds_alternative<DegradingSlider>(kernel);
+  return !std::holds_alternative<DegradingSlider>(kernel) &&
+         !std::holds_alternative<PlaySlider>(kernel);
 }
 
 int InternalVariableCount(const LawKernel& kernel) {

@@ -13,12 +13,13 @@
 #include "isolab/hysteresis/friction_pendulum.h"
 #include "isolab/hysteresis/lead_rubber.h"
 #include "isolab/hysteresis/parallel_slider.h"
+#include "isolab/hysteresis/play_slider.h"
 #include "isolab/hysteresis/series_slider.h"
 
 namespace isolab::hysteresis {
 
 using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen,
-                               DegradingSlider, FrictionPendulum, LeadRubber>;
+                               DegradingSlider, FrictionPendulum, LeadRubber, PlaySlider>;
 
 inline void UpdateLaw(const LawKernel& kernel, const LawState& committed, const LawInput& in,
                       LawState* trial, LawResponse* response) {
