@@ -13,6 +13,7 @@ names the file, line, key and what was allowed. A run that stops early raises Ru
 partial result attached. Runs release the GIL: a thread pool of runs uses every core.
 """
 
+import json
 import os
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
@@ -114,41 +115,48 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
                      length_unit, max_steps)
 
 
-def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit="kN",
-        length_unit="mm", quiet=False):
+def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit=None,
+        length_unit=None, threads=0, force=False, quiet=False):
     """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES).
 
     data: a cyclic-test CSV file or a list of them; model: the specification (component types
     and counts, YAML). seed, budget, cycles (1-based, a number or a list), specimen
-    ("sequential" or "independent"), force_unit, length_unit and quiet are the command line's
-    --seed, --budget, --cycles, --specimen, --force-unit, --length-unit and -q; progress goes to
-    stderr unless quiet.
+    ("sequential" or "independent"), force_unit and length_unit (both needed for a file without
+    a "# units:" line), threads (speed only: the result is the same), force (beyond the work
+    limit) and quiet are the command line's --seed, --budget, --cycles, --specimen,
+    --force-unit, --length-unit, --threads, --force and -q; progress goes to stderr unless quiet.
 
-    Returns a dict as `isolab fit --json`: "e2", "e2_per_test", "components" (name, type and the
-    mathematical parameters), "evaluations", "restarts", "seconds", "seed", "one_specimen".
+    Returns a dict as `isolab fit --json`: "e2" (the paper's sum over tests), "e2_mean",
+    "e2_per_test", "components" (name, type and the mathematical parameters), "evaluations",
+    "restarts", "seconds", "stop" ("converged" or "budget") and "stop_reason",
+    "identifiability" (findings, empty when none), "seed", "one_specimen".
     """
     data = _paths(data)
     cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
                                                          else [cycles])]
-    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit, length_unit,
-                quiet)
+    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit or "",
+                length_unit or "", threads, force, quiet)
 
 
-def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit="kN",
-             length_unit="mm", quiet=False):
+def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit=None,
+             length_unit=None, threads=0, force=False, quiet=False):
     """`isolab diagnose`: which physical effect a base model misses, from cyclic tests.
 
     data: a cyclic-test CSV file or a list of them; base: the base specification (YAML). seed,
-    budget (per fit), specimen, force_unit, length_unit and quiet are the command line's options;
-    progress goes to stderr unless quiet.
+    budget (per fit), specimen, force_unit, length_unit, threads, force and quiet are the command
+    line's options; progress goes to stderr unless quiet.
 
-    Returns a dict with the JSON report's numbers: "effects" (the effects added, or ["none"]),
-    "steps" (each effect with its evidence, e^2 and BIC before and after, the component added),
-    "base" and "final" (e2, bic, components), "noise_floor_e2", "stop_reason", "samples".
-    The report files (.md, .json, .model.yaml) stay with the command line.
+    Returns the report the command line writes as OUT.json, as a dict: "head" (its first lines:
+    the verdict on the residual and what the effects do and do not explain), "effects" (the
+    effects added, or ["none"]), "steps" (each with its evidence, the candidates weighed, e^2
+    and BIC before and after, the component added), "base" and "final" (e2, e2_mean,
+    e2_per_test, bic, components), "verdict" (kind "noise", "structured" or "unexplained",
+    headline, where, tables), "identifiability", "noise_floor_e2", "stop", "stop_reason",
+    "last_candidates", "loops", "samples". The files (.md, .model.yaml, residual CSV and plot)
+    stay with the command line.
     """
-    return _diagnose(_paths(data), str(base), seed, budget, specimen or "", force_unit,
-                     length_unit, quiet)
+    return json.loads(_diagnose(_paths(data), str(base), seed, budget, specimen or "",
+                                force_unit or "", length_unit or "", threads, force, quiet))
 
 
 def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):
