@@ -17,7 +17,7 @@ import json
 import os
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _diagnose, _fit, _run, _spectrum
+from ._isolab import _compare, _cyclic, _diagnose, _fit, _replay, _run, _spectrum
 
 __all__ = ["CyclicResult", "InputError", "Model", "Result", "RunError", "compare", "cyclic",
            "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
@@ -62,9 +62,10 @@ def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
 
 
 def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=None,
-           sequential=False, test_data=None, noise=0.0, seed=1):
+           sequential=False, test_data=None, noise=0.0, seed=1, path=None, orbit=None,
+           isolator=None, uncoupled=False, force_unit=None, length_unit=None):
     """`isolab cyclic` on one model: u(t) = u_a sin(2 pi t / T) imposed on its isolation
-    assembly.
+    assembly, or, with path or orbit, the model driven along a given path.
 
     amplitude and period (a number or a list), cycles and steps_per_cycle replace the model's
     cyclic section (the command line's -a, -T, -n and --steps-per-cycle; model units). sequential
@@ -76,7 +77,25 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     Returns a CyclicResult (the loop: time, displacement, force, component_force; per cycle the
     dissipated energy, peak force and each component's slider at +u_a), or a list of them, periods
     outer and amplitudes inner, when amplitude or period is a list.
+
+    path (a CSV file or a list: time and displacement, or displacement_x and displacement_y, with
+    the measured force when there is one; --path) or orbit ("circle" or "figure8" of radius
+    amplitude, period, cycles, steps_per_cycle; --orbit) drives the model along it instead: a
+    measured test predicted blind, or a biaxial path through the laws' coupled forms (uncoupled:
+    each law along x and y; --uncoupled). model may then also be a plan model file's path, whose
+    isolators are driven (isolator: only that one; --isolator). force_unit and length_unit are
+    the units of path files without a "# units:" line. Returns a list of dicts, one per model
+    (isolator) and path, as `isolab cyclic --path --json` has them, with the histories as numpy
+    arrays: "time", "displacement", "force" (n or n x 2), "component_force" (one array per
+    component), "measured" and "comparison" (e2, nrmse, peak_measured, peak_modelled) when the
+    path has a force, "dissipated", "peak_force", "peak_displacement", "cycles" (an orbit's).
     """
+    if path is not None or orbit is not None:
+        target = model if isinstance(model, Model) else str(model)
+        paths = [] if path is None else _paths(path)
+        return _replay(target, paths, orbit or "", _as_list(amplitude), _as_list(period), cycles,
+                       steps_per_cycle, isolator or "", uncoupled, force_unit or "",
+                       length_unit or "")
     runs = _cyclic(_model(model), _as_list(amplitude), _as_list(period), cycles, steps_per_cycle,
                    sequential, "" if test_data is None else str(test_data), noise, seed)
     several = hasattr(amplitude, "__len__") or hasattr(period, "__len__")
