@@ -140,7 +140,13 @@ ResidualVerdict JudgeResidual(const Discrepancy& d, double e2, double noise_floo
         const std::size_t cell =
             i * kStateCells + (s.direction * kBands + s.band) * kPhases + s.phase;
         state.Add(cell, r);
-        if (half_index[k] >= 0) alternate[(half_index[k] / 2) % 2].Add(cell, r);
+        // Pairs of half-cycles alternate between the sets; the stretch before the first
+        // reversal counts as pair -1, the one after the last as the pair after it.
+        const int h = half_index[k] >= 0 ? half_index[k]
+                      : k < test.half_cycles.front().begin
+                          ? -2
+                          : static_cast<int>(test.half_cycles.size());
+        alternate[((h >= 0 ? h / 2 : -1) % 2 + 2) % 2].Add(cell, r);
         direction_band.Add(s.direction * kBands + s.band, r);
         direction_phase.Add(s.direction * kPhases + s.phase, r);
         branch_band.Add(s.branch * kBands + s.band, r);
