@@ -190,7 +190,8 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
     RunPlotScript(
         kPlotScript,
         {context.residual_file, "-o", context.plot_file, "--title",
-         fmt::format("{}: {}", std::filesystem::path(options.data.front()).filename().string(),
+         fmt::format("{}: the final residual is {}",
+                     std::filesystem::path(options.data.front()).filename().string(),
                      diagnosis::VerdictName(result.verdict.kind))},
         options.quiet || options.json);
   }

@@ -475,6 +475,8 @@ Evidence Backlash(const Discrepancy& d) {
         (to + 1) * width, 100 * rise / initial, initial, model_rise);
     e.supporting.push_back(
         {"distance from the reversal where it stiffens again (length)", to * width});
+    // The contact re-engages at u_y + gap from the reversal: most of that distance is the gap.
+    e.start = {{"gap", 0.8 * to * width}, {"uy", std::max(0.2 * to * width, 0.5 * width)}};
   } else {
     e.finding = fmt::format(
         "after reversals the measured tangent stiffness does not rise again before the loop's "

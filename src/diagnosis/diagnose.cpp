@@ -135,26 +135,31 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
 
   Diagnosis diagnosis;
   diagnosis.samples = SampleCount(data);
-  // Each test's noise: the lowest estimate seen, from the force and from every fit's residual.
-  for (const auto& test : data.tests) diagnosis.noise.push_back(EstimateForceNoise(test));
+  // Each test's noise: the lower of the estimates from its force and from the current model's
+  // residual (discrepancy.h). Not the lowest over every fit: each estimate scatters, and the
+  // least of many would read below the noise.
+  std::vector<NoiseEstimate> force_noise;
+  for (const auto& test : data.tests) force_noise.push_back(EstimateForceNoise(test));
   const auto residual_of = [&](const hysteresis::ParallelAssembly& assembly) {
-    Discrepancy d = Discrepancy::Of(assembly, data, &diagnosis.noise);
+    return Discrepancy::Of(assembly, data, &force_noise);
+  };
+  const auto set_floor = [&](const Discrepancy& d) {
     diagnosis.noise = d.noise;
     std::vector<double> sigma;
     for (const NoiseEstimate& n : diagnosis.noise) sigma.push_back(n.sigma);
     diagnosis.noise_floor = NoiseFloor(data, sigma);
-    return d;
   };
   const auto evaluate = [&](Fitted* fitted) {
     const Discrepancy d = residual_of(fitted->assembly);
     fitted->model.effective_samples = EffectiveSamples(d);
     fitted->model.bic = InformationCriterion(
         fitted->model.fit.error.total, fitted->model.effective_samples, fitted->model.parameters);
+    return d;
   };
 
   unsigned seed = options.seed;
   Fitted current = FitModel(std::move(base), data, scales, seed, options);
-  evaluate(&current);
+  set_floor(evaluate(&current));
   diagnosis.base = current.model;
   say(fmt::format("base model: e^2 = {:.4g} %, BIC = {:.1f}, {}",
                   100 * diagnosis.base.fit.error.total, diagnosis.base.bic,
@@ -163,6 +168,7 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
 
   while (true) {
     const Discrepancy discrepancy = residual_of(current.assembly);
+    set_floor(discrepancy);
     std::vector<Candidate> candidates;
     for (const Effect effect : remaining) candidates.push_back({Detect(effect, discrepancy)});
     std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
@@ -196,6 +202,9 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
       std::vector<ComponentSpec> components = current.model.components;
       ComponentSpec added = EffectComponent(candidate.evidence.effect);
       added.name = UniqueName(components, added.name);
+      for (const auto& [coordinate, value] : candidate.evidence.start) {
+        if (!added.fixed.count(coordinate)) added.start[coordinate] = value;
+      }
       components.push_back(added);
       seed += 1;
       Fitted refit = FitModel(std::move(components), data, scales, seed, options);
@@ -280,8 +289,9 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
     current = std::move(best_model);
   }
   diagnosis.final_model = current.model;
-  // The verdict and identifiability on the final model, with the noise as the search left it.
+  // The verdict and identifiability on the final model, with its own floor.
   const Discrepancy final_residual = residual_of(current.assembly);
+  set_floor(final_residual);
   diagnosis.verdict = JudgeResidual(final_residual, current.model.fit.error.total,
                                     diagnosis.noise_floor, {options.noise_margin});
   diagnosis.identifiability = identification::AssessIdentifiability(

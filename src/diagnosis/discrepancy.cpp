@@ -139,25 +139,31 @@ NoiseEstimate EstimateNoise(const CyclicTestData& test, const std::vector<double
   constexpr double kQuantile = 0.25;
   const double quantile_of_mean = -std::log(1.0 - kQuantile);
   double integral = 0.0, first_level = -1.0;
-  std::vector<double> levels;
+  // Quarter octaves, so the integral follows a spectrum that rolls off, as a load cell's filter
+  // makes it, and a quantile within a band does not read its low end; but at least 128 bins each:
+  // neighbouring ordinates of a windowed, padded periodogram move together, and a quantile of a
+  // few independent ones reads high (16 bins of a 601-sample test read white noise 16 % high).
+  constexpr double kBandBins = 128.0;
+  std::vector<double> first_octave;
   for (double lo = band_low; lo < nyquist;) {
-    double hi = std::min(2.0 * lo, nyquist);
-    if (nyquist - hi < 0.5 * (hi - lo)) hi = nyquist;  // no sliver of an octave at the top
+    double hi = std::min(lo * std::pow(2.0, 0.25), nyquist);
+    hi = std::min(std::max(hi, lo + kBandBins * bin), nyquist);
+    if (nyquist - hi < 0.5 * (hi - lo)) hi = nyquist;  // no sliver of a band at the top
     std::vector<double> ordinates;
     for (std::size_t k = static_cast<std::size_t>(std::ceil(lo / bin));
-         k < power.size() && double(k) * bin <= hi; ++k) {
+         k < power.size() && double(k) * bin < hi; ++k) {
       ordinates.push_back(power[k]);
     }
-    if (ordinates.size() >= 8) {
+    if (ordinates.size() >= 4) {
       const auto at =
           ordinates.begin() + static_cast<std::ptrdiff_t>(kQuantile * double(ordinates.size() - 1));
       std::nth_element(ordinates.begin(), at, ordinates.end());
       const double level = *at / quantile_of_mean;
-      levels.push_back(level);
+      if (lo < 2.0 * band_low) first_octave.push_back(level);
       if (first_level < 0.0) first_level = level;
       integral += level * (hi - lo);
     } else if (first_level >= 0.0) {
-      integral += first_level * (hi - lo);  // too few bins to read: as the first octave
+      integral += first_level * (hi - lo);  // too few bins to read: as the first band
     }
     lo = hi;
   }
@@ -167,10 +173,9 @@ NoiseEstimate EstimateNoise(const CyclicTestData& test, const std::vector<double
     estimate.sigma = SecondDifferenceNoise(series);
     return estimate;
   }
-  // Below the band the noise is taken at the lower of the first two octaves' levels: lines of
-  // the loops' harmonics can only raise a level, and white or filter-flat noise has the same
-  // level in both.
-  if (levels.size() > 1) first_level = std::min(levels[0], levels[1]);
+  // Below the band the noise is taken at the median level of the first octave above it: lines of
+  // the loops' harmonics raise a few bands' levels, which the median passes over.
+  if (!first_octave.empty()) first_level = Median(first_octave);
   estimate.sigma = std::sqrt((first_level * band_low + integral) / nyquist);
   estimate.source = NoiseEstimate::Source::kBand;
   estimate.band_low = band_low;

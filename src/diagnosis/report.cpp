@@ -120,13 +120,10 @@ json VerdictJson(const ResidualVerdict& v) {
 
 json IdentifiabilityJson(const identification::Identifiability& id,
                          const std::vector<identification::ComponentSpec>& components) {
-  json out = {{"findings", id.Findings()},
-              {"singular", id.singular},
-              {"device_peak_force", id.device_peak_force},
-              {"components", json::array()},
-              {"cancelling", json::array()},
-              {"at_bounds", json::array()},
-              {"correlated", json::array()}};
+  json out = {{"findings", id.Findings()},   {"singular", id.singular},
+              {"unseen", id.unseen},         {"device_peak_force", id.device_peak_force},
+              {"components", json::array()}, {"cancelling", json::array()},
+              {"at_bounds", json::array()},  {"correlated", json::array()}};
   for (const auto& c : id.components) {
     out["components"].push_back({{"name", c.name},
                                  {"rms_force", c.rms_force},

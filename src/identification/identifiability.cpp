@@ -1,6 +1,7 @@
 #include "isolab/identification/identifiability.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -75,13 +76,19 @@ std::vector<std::string> Identifiability::Findings() const {
   }
   if (singular) {
     findings.push_back(
-        "the Jacobian is singular: some combination of parameters changes nothing the data see");
+        fmt::format("the data do not see one combination of {} at all (the "
+                    "Jacobian is singular there)",
+                    fmt::join(unseen, ", ")));
   }
-  for (const CorrelatedPair& pair : correlated) {
+  for (std::size_t k = 0; k < correlated.size() && k < 3; ++k) {
     findings.push_back(
         fmt::format("{} and {} are correlated {:+.3f}: the data fix a combination "
                     "of the two, not each",
-                    pair.a, pair.b, pair.correlation));
+                    correlated[k].a, correlated[k].b, correlated[k].correlation));
+  }
+  if (correlated.size() > 3) {
+    findings.push_back(
+        fmt::format("{} more pairs are correlated beyond the threshold", correlated.size() - 3));
   }
   return findings;
 }
@@ -221,6 +228,11 @@ Identifiability AssessIdentifiability(const ModelParametrisation& model, const F
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(normal);
   const double largest = eigen.eigenvalues().maxCoeff();
   result.singular = !(eigen.eigenvalues().minCoeff() > 1e-12 * largest);
+  if (result.singular) {  // eigenvalues ascend: the first vector is the unseen direction
+    for (Eigen::Index k = 0; k < p; ++k) {
+      if (std::abs(eigen.eigenvectors()(k, 0)) > 0.3) result.unseen.push_back(names[k]);
+    }
+  }
   // A regularised inverse: a direction the data do not see gives correlations of +-1 instead of
   // infinities.
   Eigen::VectorXd inverse = eigen.eigenvalues();

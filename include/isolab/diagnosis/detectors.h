@@ -38,6 +38,7 @@
 //                        again only past the loop's centre, where |u| passes its breakpoint).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,11 @@ struct Evidence {
   double threshold = 0.0;  // the value it must reach to support the effect
   std::string finding;     // one sentence with the numbers, for the report
   std::vector<Statistic> supporting;
+  // Where the data place the effect's component, as starting values of its shape coordinates
+  // (the refit's first island starts there): backlash reads the clearance off the distance at
+  // which the stiffness rises again, so the search does not begin in the basin of a clearance a
+  // third as wide.
+  std::map<std::string, double> start{};
 
   bool Supported() const { return value >= threshold; }
   double Strength() const { return value / threshold; }  // ranks candidates

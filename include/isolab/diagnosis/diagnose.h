@@ -84,8 +84,8 @@ std::string_view StopReasonName(StopReason reason);
 struct Diagnosis {
   long samples = 0;
   // The e^2 that the measurement noise alone leaves (NoiseFloor), from each test's noise: the
-  // lowest estimate over the data's force and the residuals of every model fitted
-  // (discrepancy.h), so a model's harmonic lines cannot inflate it.
+  // lower of the estimates from the data's force and from the final model's residual
+  // (discrepancy.h), so the loops' harmonic lines the model takes out cannot inflate it.
   double noise_floor = 0.0;
   std::vector<NoiseEstimate> noise;  // per test
   FittedModel base;

@@ -42,10 +42,11 @@ struct CycleRecord {
 //  * band: otherwise, from the Hann-windowed periodogram of the force above the band of the
 //    device's response, f_c = 10 f_u, where f_u bounds 99 % of the displacement's power (its
 //    loops' harmonics decay past that), and at most half the Nyquist frequency. Above f_c the
-//    noise level is read octave by octave as a low quantile of the periodogram (the 25th
-//    percentile, over the chi-squared spread of periodogram ordinates: harmonic lines of the
-//    loops occupy few bins and do not move it); below f_c the noise is taken as flat at the first
-//    octave's level. The variance is that spectrum's mean over the whole band [0, Nyquist]. For
+//    noise level is read quarter octave by quarter octave as a low quantile of the periodogram
+//    (the 25th percentile, over the chi-squared spread of periodogram ordinates: harmonic lines
+//    of the loops occupy few bins and do not move it); below f_c the noise is taken as flat at
+//    the first octave's median level. The variance is that spectrum's mean over the whole band
+//    [0, Nyquist]. For
 //    white noise this is its variance at any rate; for noise band-limited by a load cell's
 //    filter above f_c it is the filtered noise's variance; decimation folds noise into the kept
 //    band without changing its variance, and the estimate follows.

@@ -63,12 +63,15 @@ struct Identifiability {
   std::vector<CancellingPair> cancelling;
   std::vector<BoundParameter> at_bounds;
   std::vector<CorrelatedPair> correlated;  // strongest first
-  // The Jacobian has a direction the data do not see at all (singular to round-off).
+  // The Jacobian has a direction the data do not see at all (singular to round-off), and the
+  // parameters that direction moves most (weights above 0.3 of the unit direction).
   bool singular = false;
+  std::vector<std::string> unseen;
 
   bool Cancels(std::size_t component) const;
-  // Sentences for a reader: cancelling pairs, components far larger than the device, bounds,
-  // correlated pairs; empty when nothing is wrong.
+  // Sentences for a reader: cancelling pairs, components far larger than the device, bounds, the
+  // unseen combination, the three most correlated pairs (all are in `correlated`); empty when
+  // nothing is wrong.
   std::vector<std::string> Findings() const;
 };
 
