@@ -3,7 +3,7 @@
 # the isolator's measured history of both motions (isolab shaketable), the isolation layer fitted
 # to ICA50 as a BHM2 and as a Table 9-style THM1 assembly (isolab fit; writes the fitted files in
 # models/bncs/), LAC100 predicted with each (isolab shaketable --predict) and the plots in
-# docs/images/. With --diagnose also isolab diagnose on the ICA50 isolator history (about 12
+# docs/images/. With --diagnose also isolab diagnose on the ICA50 isolator history (about 2.5
 # minutes on a 2-core machine; writes models/bncs/bncs_diagnosed.fitted.yaml) and the predictions
 # of the diagnosed model.
 # Usage: scripts/bncs_study.sh [--diagnose] [DATA_DIR]   (default ../shared/measured/bncs)

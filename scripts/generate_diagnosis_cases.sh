@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Cyclic test data with hidden effects for `isolab diagnose` every
-# truth in models/diagnosis/ (the bilinear base plus one effect, the base alone, and two effects
-# at once) driven at 10, 25, 50, 100, 150 and 200 mm, at periods 2 s and 0.5 s, three cycles of
+# Cyclic test data with hidden effects for `isolab diagnose`: every truth in models/diagnosis/
+# (the bilinear base plus one effect, the base alone, two effects at once, and the real devices'
+# asymmetric strength and backlash) driven at 10, 25, 50, 100, 150 and 200 mm, at periods 2 s and
+# 0.5 s, three cycles of
 # 200 samples, with 1 % Gaussian force noise and a fixed seed per case, written as
 # test,time,displacement,force CSV. tests/diagnosis/hidden_effect_cases.h draws the same data in
 # process; keep the two in step.
@@ -17,7 +18,7 @@ out="${1:-build/diagnosis}"
 mkdir -p "$out"
 seed=11
 for truth in null rate_dependence amplitude_dependent_dissipation large_amplitude_hardening \
-             cyclic_degradation two_effects; do
+             cyclic_degradation two_effects asymmetric_strength backlash; do
   build/isolab cyclic "models/diagnosis/$truth.yaml" -a 10,25,50,100,150,200 -T 2,0.5 -n 3 \
     --steps-per-cycle 200 --test-data "$out/$truth.csv" --noise 0.01 --seed "$seed" > /dev/null
   echo "$out/$truth.csv"

@@ -15,14 +15,15 @@ above 10 s, ...) is issued as an IsolabWarning, which Jupyter shows. Runs releas
 thread pool of runs uses every core.
 """
 
+import json
 import math
 import numbers
 import os
 import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _diagnose, _fit, _parse_list, _parse_periods, _run
-from ._isolab import _spectrum
+from ._isolab import _compare, _cyclic, _diagnose, _fit, _parse_list, _parse_periods, _replay
+from ._isolab import _run, _spectrum
 
 __all__ = ["CyclicResult", "InputError", "IsolabWarning", "Model", "Result", "RunError",
            "compare", "cyclic", "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
@@ -87,9 +88,10 @@ def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
 
 
 def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=None,
-           sequential=False, test_data=None, noise=0.0, seed=1):
+           sequential=False, test_data=None, noise=0.0, seed=1, path=None, orbit=None,
+           isolator=None, uncoupled=False, force_unit=None, length_unit=None):
     """`isolab cyclic` on one model: u(t) = u_a sin(2 pi t / T) imposed on its isolation
-    assembly.
+    assembly, or, with path or orbit, the model driven along a given path.
 
     amplitude and period (a number or a list), cycles and steps_per_cycle replace the model's
     cyclic section (the command line's -a, -T, -n and --steps-per-cycle; model units). sequential
@@ -101,7 +103,25 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     Returns a CyclicResult (the loop: time, displacement, force, component_force; per cycle the
     dissipated energy, peak force and each component's slider at +u_a), or a list of them, periods
     outer and amplitudes inner, when amplitude or period is a list.
+
+    path (a CSV file or a list: time and displacement, or displacement_x and displacement_y, with
+    the measured force when there is one; --path) or orbit ("circle" or "figure8" of radius
+    amplitude, period, cycles, steps_per_cycle; --orbit) drives the model along it instead: a
+    measured test predicted blind, or a biaxial path through the laws' coupled forms (uncoupled:
+    each law along x and y; --uncoupled). model may then also be a plan model file's path, whose
+    isolators are driven (isolator: only that one; --isolator). force_unit and length_unit are
+    the units of path files without a "# units:" line. Returns a list of dicts, one per model
+    (isolator) and path, as `isolab cyclic --path --json` has them, with the histories as numpy
+    arrays: "time", "displacement", "force" (n or n x 2), "component_force" (one array per
+    component), "measured" and "comparison" (e2, nrmse, peak_measured, peak_modelled) when the
+    path has a force, "dissipated", "peak_force", "peak_displacement", "cycles" (an orbit's).
     """
+    if path is not None or orbit is not None:
+        target = model if isinstance(model, Model) else str(model)
+        paths = [] if path is None else _paths(path)
+        return _replay(target, paths, orbit or "", _as_list(amplitude), _as_list(period), cycles,
+                       steps_per_cycle, isolator or "", uncoupled, force_unit or "",
+                       length_unit or "")
     runs = _cyclic(_model(model), _as_list(amplitude), _as_list(period), cycles, steps_per_cycle,
                    sequential, "" if test_data is None else str(test_data), noise, seed)
     several = hasattr(amplitude, "__len__") or hasattr(period, "__len__")
@@ -151,41 +171,48 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
                      length_unit, max_steps)
 
 
-def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit="kN",
-        length_unit="mm", quiet=False):
+def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit=None,
+        length_unit=None, threads=0, force=False, quiet=False):
     """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES).
 
     data: a cyclic-test CSV file or a list of them; model: the specification (component types
     and counts, YAML). seed, budget, cycles (1-based, a number or a list), specimen
-    ("sequential" or "independent"), force_unit, length_unit and quiet are the command line's
-    --seed, --budget, --cycles, --specimen, --force-unit, --length-unit and -q; progress goes to
-    stderr unless quiet.
+    ("sequential" or "independent"), force_unit and length_unit (both needed for a file without
+    a "# units:" line), threads (speed only: the result is the same), force (beyond the work
+    limit) and quiet are the command line's --seed, --budget, --cycles, --specimen,
+    --force-unit, --length-unit, --threads, --force and -q; progress goes to stderr unless quiet.
 
-    Returns a dict as `isolab fit --json`: "e2", "e2_per_test", "components" (name, type and the
-    mathematical parameters), "evaluations", "restarts", "seconds", "seed", "one_specimen".
+    Returns a dict as `isolab fit --json`: "e2" (the paper's sum over tests), "e2_mean",
+    "e2_per_test", "components" (name, type and the mathematical parameters), "evaluations",
+    "restarts", "seconds", "stop" ("converged" or "budget") and "stop_reason",
+    "identifiability" (findings, empty when none), "seed", "one_specimen".
     """
     data = _paths(data)
     cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
                                                          else [cycles])]
-    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit, length_unit,
-                quiet)
+    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit or "",
+                length_unit or "", threads, force, quiet)
 
 
-def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit="kN",
-             length_unit="mm", quiet=False):
+def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit=None,
+             length_unit=None, threads=0, force=False, quiet=False):
     """`isolab diagnose`: which physical effect a base model misses, from cyclic tests.
 
     data: a cyclic-test CSV file or a list of them; base: the base specification (YAML). seed,
-    budget (per fit), specimen, force_unit, length_unit and quiet are the command line's options;
-    progress goes to stderr unless quiet.
+    budget (per fit), specimen, force_unit, length_unit, threads, force and quiet are the command
+    line's options; progress goes to stderr unless quiet.
 
-    Returns a dict with the JSON report's numbers: "effects" (the effects added, or ["none"]),
-    "steps" (each effect with its evidence, e^2 and BIC before and after, the component added),
-    "base" and "final" (e2, bic, components), "noise_floor_e2", "stop_reason", "samples".
-    The report files (.md, .json, .model.yaml) stay with the command line.
+    Returns the report the command line writes as OUT.json, as a dict: "head" (its first lines:
+    the verdict on the residual and what the effects do and do not explain), "effects" (the
+    effects added, or ["none"]), "steps" (each with its evidence, the candidates weighed, e^2
+    and BIC before and after, the component added), "base" and "final" (e2, e2_mean,
+    e2_per_test, bic, components), "verdict" (kind "noise", "structured" or "unexplained",
+    headline, where, tables), "identifiability", "noise_floor_e2", "stop", "stop_reason",
+    "last_candidates", "loops", "samples". The files (.md, .model.yaml, residual CSV and plot)
+    stay with the command line.
     """
-    return _diagnose(_paths(data), str(base), seed, budget, specimen or "", force_unit,
-                     length_unit, quiet)
+    return json.loads(_diagnose(_paths(data), str(base), seed, budget, specimen or "",
+                                force_unit or "", length_unit or "", threads, force, quiet))
 
 
 def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):

@@ -1,4 +1,5 @@
-// isolab.cyclic: `isolab cyclic` on one model, each loop as numpy views.
+// isolab.cyclic: `isolab cyclic` on one model, each loop as numpy views; with a path or an orbit,
+// the model driven along it (analysis/path_replay.h), each run as a dict of numpy arrays.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -7,11 +8,14 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "isolab/analysis/cyclic_campaign.h"
+#include "isolab/analysis/path_replay.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/cyclic_test_file.h"
+#include "isolab/io/displacement_path_file.h"
+#include "isolab/model/model_file.h"
 #include "model.h"
 
 namespace py = pybind11;
@@ -51,6 +55,174 @@ std::vector<std::shared_ptr<CyclicRun>> Cyclic(
   std::vector<std::shared_ptr<CyclicRun>> runs;
   for (hysteresis::CyclicResult& loop : loops) {
     runs.push_back(std::make_shared<CyclicRun>(CyclicRun{std::move(loop), components, file.units}));
+  }
+  return runs;
+}
+
+py::array Vectors(const std::vector<hysteresis::Vec2>& values, bool plan) {
+  py::array_t<double> array(plan ? std::vector<py::ssize_t>{py::ssize_t(values.size()), 2}
+                                 : std::vector<py::ssize_t>{py::ssize_t(values.size())});
+  double* data = array.mutable_data();
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (plan) {
+      data[2 * k] = values[k].x, data[2 * k + 1] = values[k].y;
+    } else {
+      data[k] = values[k].x;
+    }
+  }
+  return array;
+}
+
+py::dict ReplayDict(const std::string& model, const analysis::ReplayResult& r,
+                    const UnitSystem& units) {
+  py::dict out;
+  out["model"] = model;
+  out["path"] = r.name;
+  out["plan"] = r.plan;
+  out["units"] = py::dict(py::arg("force") = units.force(), py::arg("length") = units.length(),
+                          py::arg("time") = units.time());
+  out["time"] = py::array_t<double>(py::ssize_t(r.time.size()), r.time.data());
+  out["displacement"] = Vectors(r.displacement, r.plan);
+  out["force"] = Vectors(r.force, r.plan);
+  out["components"] = r.components;
+  const std::size_t m = r.components.size();
+  py::list components;
+  for (std::size_t c = 0; c < m; ++c) {
+    std::vector<hysteresis::Vec2> force;
+    for (std::size_t k = 0; k < r.time.size(); ++k) force.push_back(r.component_force[k * m + c]);
+    components.append(Vectors(force, r.plan));
+  }
+  out["component_force"] = components;
+  out["dissipated"] = py::array_t<double>(py::ssize_t(r.dissipated.size()), r.dissipated.data());
+  out["peak_displacement"] = r.peak_displacement;
+  out["peak_force"] = r.peak_force;
+  if (!r.measured.empty()) out["measured"] = Vectors(r.measured, r.plan);
+  if (r.comparison) {
+    out["comparison"] =
+        py::dict(py::arg("e2") = r.comparison->e2, py::arg("nrmse") = r.comparison->nrmse,
+                 py::arg("peak_measured") = r.comparison->peak_measured,
+                 py::arg("peak_modelled") = r.comparison->peak_modelled);
+  }
+  py::list cycles;
+  for (const auto& c : r.cycles) {
+    cycles.append(py::dict(
+        py::arg("cycle") = c.index, py::arg("dissipated") = c.dissipated,
+        py::arg("peak_force") = c.peak_force,
+        py::arg("displacement_at_end") =
+            std::vector<double>{c.displacement_at_end.x, c.displacement_at_end.y},
+        py::arg("force_at_end") = std::vector<double>{c.force_at_end.x, c.force_at_end.y}));
+  }
+  out["cycles"] = cycles;
+  return out;
+}
+
+// A model (or a plan model file's path) along paths from files, or round orbits; one dict per
+// run, as `isolab cyclic --path/--orbit --json` lists them, with the histories as arrays.
+py::list Replay(const py::object& model, const std::vector<std::string>& paths,
+                const std::string& orbit, const std::vector<double>& amplitudes,
+                const std::vector<double>& periods, std::optional<int> cycles,
+                std::optional<int> steps_per_cycle, const std::string& isolator, bool uncoupled,
+                const std::string& force_unit, const std::string& length_unit) {
+  struct Target {
+    std::string name;
+    std::optional<hysteresis::ParallelAssembly> one;
+    std::optional<hysteresis::PlanAssembly> plan;
+  };
+  std::vector<Target> targets;
+  UnitSystem units{"kN", "mm", "s"};
+  std::optional<hysteresis::CyclicProtocol> section;
+  const auto one_direction = [&](const model::ModelFile& file) {
+    if (file.isolation.size() == 0) throw InputError({file.path}, "no isolation section");
+    units = file.units;
+    section = file.cyclic;
+    targets.push_back({file.path, file.isolation, std::nullopt});
+  };
+  const auto drive = [&](const model::ModelFile& file) {
+    if (!file.structure || file.structure->kind != model::StructureSection::Kind::kPlanBuilding) {
+      one_direction(file);
+      return;
+    }
+    units = file.units;
+    for (const auto& site : file.structure->plan.isolators) {
+      if (!isolator.empty() && site.name != isolator) continue;
+      targets.push_back({file.path + ": isolator " + site.name, std::nullopt, site.assembly});
+    }
+    if (targets.empty()) throw InputError({"isolator"}, "no isolator '" + isolator + "'");
+  };
+  if (py::isinstance<Model>(model)) {
+    drive(model.cast<const Model&>().file());
+  } else {
+    drive(model::LoadModelFile(py::str(model)));
+  }
+  std::vector<io::DisplacementPath> sources;
+  std::vector<std::vector<std::size_t>> marks;
+  if (!paths.empty()) {
+    io::DisplacementPathSet set =
+        io::ReadDisplacementPaths(paths, force_unit.empty() ? units.force() : force_unit,
+                                  length_unit.empty() ? units.length() : length_unit, units);
+    if (!set.without_units.empty() && (force_unit.empty() || length_unit.empty())) {
+      throw InputError({set.without_units.front()},
+                       "no '# units: force ..., length ...' line: give the path's units in the "
+                       "file or as force_unit= and length_unit=");
+    }
+    sources = std::move(set.paths);
+    marks.resize(sources.size());
+  } else {
+    analysis::OrbitProtocol protocol;
+    if (orbit == "circle") {
+      protocol.shape = analysis::OrbitShape::kCircle;
+    } else if (orbit == "figure8") {
+      protocol.shape = analysis::OrbitShape::kFigureEight;
+    } else {
+      throw InputError({"orbit"}, "'" + orbit + "' (expected circle or figure8)");
+    }
+    if (section) {
+      protocol.period = section->period;
+      protocol.cycles = section->cycles;
+      protocol.steps_per_cycle = section->steps_per_cycle;
+    }
+    if (cycles) protocol.cycles = *cycles;
+    if (steps_per_cycle) protocol.steps_per_cycle = *steps_per_cycle;
+    std::vector<double> a = amplitudes;
+    if (a.empty() && section) a.push_back(section->amplitude);
+    if (a.empty()) throw InputError({"amplitude"}, "an orbit needs an amplitude");
+    for (const double period : periods.empty() ? std::vector<double>{protocol.period} : periods) {
+      for (const double amplitude : a) {
+        protocol.amplitude = amplitude;
+        protocol.period = period;
+        std::vector<std::size_t> m;
+        try {
+          sources.push_back(analysis::OrbitPath(protocol, &m));
+        } catch (const InvalidParameter& error) {
+          throw InputError({"orbit"}, error.violation().Describe());
+        }
+        marks.push_back(std::move(m));
+      }
+    }
+  }
+  py::list runs;
+  for (const Target& target : targets) {
+    for (std::size_t p = 0; p < sources.size(); ++p) {
+      analysis::ReplayResult result;
+      {
+        py::gil_scoped_release release;
+        if (target.plan) {
+          io::DisplacementPath path = sources[p];
+          path.plan = true;
+          result = analysis::Replay(*target.plan, path, marks[p]);
+        } else if (!sources[p].plan) {
+          result = analysis::Replay(*target.one, sources[p], marks[p]);
+        } else {
+          try {
+            result = analysis::Replay(analysis::PlanFromIsolation(*target.one, !uncoupled),
+                                      sources[p], marks[p]);
+          } catch (const std::invalid_argument& error) {
+            throw InputError({target.name}, error.what());
+          }
+        }
+      }
+      runs.append(ReplayDict(target.name, result, units));
+    }
   }
   return runs;
 }
@@ -121,6 +293,10 @@ void BindCyclic(py::module_& module) {
   module.def("_cyclic", &Cyclic, py::arg("model"), py::arg("amplitudes"), py::arg("periods"),
              py::arg("cycles"), py::arg("steps_per_cycle"), py::arg("sequential"),
              py::arg("test_data"), py::arg("noise"), py::arg("seed"));
+  module.def("_replay", &Replay, py::arg("model"), py::arg("paths"), py::arg("orbit"),
+             py::arg("amplitudes"), py::arg("periods"), py::arg("cycles"),
+             py::arg("steps_per_cycle"), py::arg("isolator"), py::arg("uncoupled"),
+             py::arg("force_unit"), py::arg("length_unit"));
 }
 
 }  // namespace isolab::python

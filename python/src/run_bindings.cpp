@@ -49,13 +49,8 @@ struct RunOptions {
 };
 
 std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
-  model::AnalysisSection analysis = model.file().analysis;
-  if (options.integrator == "ida") analysis.integrator = model::AnalysisSection::Integrator::kIda;
-  if (options.integrator == "newmark") {
-    analysis.integrator = model::AnalysisSection::Integrator::kNewmark;
-  }
-  if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
-  if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
+  const model::AnalysisSection analysis = analysis::ChooseIntegrator(
+      model.file().analysis, {options.integrator.value_or(""), options.rtol, options.atol}, "");
   std::shared_ptr<RunResult> result;
   {
     py::gil_scoped_release release;  // a thread pool of runs scales

@@ -72,3 +72,29 @@ def test_a_sequential_campaign_writes_the_command_lines_test_data(repo, tmp_path
     assert runs[3].cycles[0]["dissipated"] < 0.99 * fresh.cycles[0]["dissipated"]
     assert isolab.cyclic(DEGRADING, [50], period=2, cycles=2)[0].cycles[0]["dissipated"] == \
         fresh.cycles[0]["dissipated"]
+
+
+def test_a_path_and_an_orbit_as_the_command_line_drives_them(repo, tmp_path, isolab_cli):
+    # A measured test, replayed blind: the command line's JSON and the module's dict agree, and
+    # the module's arrays hold the histories behind them.
+    data = tmp_path / "tests.csv"
+    isolab_cli("cyclic", DEGRADING, "-a", "25,100", "-T", 2, "-n", 2, "--steps-per-cycle", 200,
+               "--noise", 0.01, "--seed", 3, "--test-data", data)
+    cli = isolab_cli.json("cyclic", DEGRADING, "--path", data)["runs"]
+    mine = isolab.cyclic(repo / DEGRADING, path=data)
+    assert [r["path"] for r in mine] == [r["path"] for r in cli] == ["u=25", "u=100"]
+    for a, b in zip(mine, cli):
+        assert a["comparison"]["e2"] == pytest.approx(b["comparison"]["e2"], rel=1e-12)
+        assert a["dissipated"][-1] == pytest.approx(b["dissipated"], rel=1e-12)
+        assert a["force"].shape == a["measured"].shape == a["time"].shape
+        error = np.sum((a["measured"] - a["force"]) ** 2) / np.sum(a["measured"] ** 2)
+        assert a["comparison"]["e2"] == pytest.approx(error, rel=1e-12)
+    # The truth itself against its own noisy data: the 1 % noise is what is left.
+    assert mine[1]["comparison"]["e2"] == pytest.approx(1e-4, rel=0.2)
+    # Round a circle, a bilinear bearing's coupled slider carries fs exactly while it slips.
+    orbit = isolab.cyclic(isolab.Model.from_dict(BILINEAR), 150, orbit="circle", cycles=2,
+                          steps_per_cycle=1000)[0]
+    assert orbit["force"].shape[1] == 2
+    slider = orbit["component_force"][0]  # the one component: spring kh u plus the slider
+    u_end = orbit["displacement"][-1]
+    assert np.linalg.norm(slider[-1] - 0.80653 * u_end) == pytest.approx(18.146, rel=1e-9)

@@ -1,5 +1,6 @@
 """isolab.diagnose against the command line's JSON report, on tests generated from a known
-truth (a degrading bearing) that it must name."""
+truth (a degrading bearing) that it must name: both render the one report the library builds,
+candidates, verdict and identifiability included."""
 
 import pytest
 
@@ -13,11 +14,17 @@ def test_diagnose_equals_the_command_line(repo, tmp_path, isolab_cli):
     data = tmp_path / "tests.csv"
     isolab_cli("cyclic", TRUTH, "-a", "25,100,200", "-T", 2, "-n", 3, "--steps-per-cycle", 100,
                "--noise", 0.01, "--seed", 15, "--test-data", data)
-    cli = isolab_cli.json("diagnose", data, "--base", BASE, "--budget", 1500, "-q",
+    cli = isolab_cli.json("diagnose", data, "--base", BASE, "--budget", 1500, "-q", "--no-plot",
                           "--out", tmp_path / "report")
     mine = isolab.diagnose(data, repo / BASE, budget=1500, quiet=True)
     assert mine["effects"] == cli["effects"] == ["cyclic_degradation"]  # the data's truth
     assert mine["stop_reason"] == cli["stop_reason"]
+    assert mine["head"] == cli["head"]
+    assert mine["head"][0].startswith("Verdict: ")
+    assert mine["verdict"]["kind"] == cli["verdict"]["kind"]
+    assert mine["identifiability"]["findings"] == cli["identifiability"]["findings"]
+    assert [c["effect"] for c in mine["steps"][0]["candidates"]] == \
+        [c["effect"] for c in cli["steps"][0]["candidates"]]
     assert mine["noise_floor_e2"] == pytest.approx(cli["noise_floor_e2"], rel=1e-9)
     for which in ("base", "final"):
         assert mine[which]["e2"] == pytest.approx(cli[which]["e2"], rel=1e-9)
@@ -32,3 +39,9 @@ def test_diagnose_equals_the_command_line(repo, tmp_path, isolab_cli):
 def test_diagnose_bad_input(repo, tmp_path):
     with pytest.raises(isolab.InputError, match="no_such.csv"):
         isolab.diagnose(tmp_path / "no_such.csv", repo / BASE, quiet=True)
+    bare = tmp_path / "bare.csv"
+    bare.write_text("test,time,displacement,force\n" +
+                    "".join(f"u,{k},{[0, 1, 0, -1][k % 4]},{[0, 1, 0, -1][k % 4]}\n"
+                            for k in range(20)))
+    with pytest.raises(isolab.InputError, match="force_unit= and length_unit="):
+        isolab.diagnose(bare, repo / BASE, quiet=True)

@@ -18,6 +18,11 @@ def test_fit_equals_the_command_line(repo, tmp_path, isolab_cli):
     assert mine["e2"] == pytest.approx(cli["e2"], rel=1e-9, abs=1e-15)
     assert mine["e2_per_test"] == pytest.approx(cli["e2_per_test"], rel=1e-9, abs=1e-15)
     assert mine["evaluations"] == cli["evaluations"]
+    assert mine["e2_mean"] == pytest.approx(cli["e2_mean"], rel=1e-9, abs=1e-15)
+    assert mine["stop_reason"] == cli["stop_reason"]
+    # The thread count changes the speed, never the result.
+    again = isolab.fit(data, repo / SPEC, budget=3000, seed=5, cycles=3, quiet=True, threads=1)
+    assert again["e2"] == mine["e2"]
     for a, b in zip(mine["components"], cli["components"]):
         assert (a["name"], a["type"]) == (b["name"], b["type"])
         assert a["parameters"] == pytest.approx(b["parameters"], rel=1e-9, abs=1e-12)

@@ -13,6 +13,12 @@ using hysteresis::CyclicProtocol;
 
 std::vector<CyclicProtocol> CyclicProtocols(const model::ModelFile& model,
                                             const CyclicRequest& request) {
+  if (model.structure && model.structure->kind == model::StructureSection::Kind::kPlanBuilding) {
+    throw InputError({model.path},
+                     "a building in plan: its isolators are driven along an orbit or a path "
+                     "(cyclic --orbit or --path; orbit= or path= in Python); the sinusoidal test "
+                     "along one direction is a one-direction model's");
+  }
   if (model.isolation.size() == 0) {
     throw InputError({model.path}, "no isolation section: nothing to test cyclically");
   }

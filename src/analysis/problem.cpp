@@ -177,13 +177,20 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
 
   const std::vector<Component> components = ChooseComponents(model, overrides);
   const double angle = overrides.records.empty() ? model.excitation.angle : overrides.angle;
-  if (static_cast<int>(components.size()) > layout.directions ||
-      (layout.directions == 1 && angle != 0.0)) {
-    const Component& extra = components.size() > 1 ? components[1] : components.front();
-    throw InputError(extra.motion.location,
-                     fmt::format("{}: the structure moves along x only: one component, along x "
-                                 "(a second component or an angle needs a building in plan)",
-                                 extra.motion.key));
+  // A command-line component's location is its option already; a model's names file and line.
+  const auto key_of = [](const Component& c) {
+    return c.motion.location.file == c.motion.key ? std::string() : c.motion.key + ": ";
+  };
+  if (static_cast<int>(components.size()) > layout.directions) {
+    throw InputError(components[1].motion.location,
+                     fmt::format("{}the structure moves along x only: one component, along x "
+                                 "(a second component needs a building in plan)",
+                                 key_of(components[1])));
+  }
+  if (layout.directions == 1 && angle != 0.0) {
+    throw InputError(overrides.records.empty() ? SourceLocation{model.path} : SourceLocation{"--angle"},
+                     "the structure moves along x only: an angle of the record to the x axis "
+                     "needs a building in plan");
   }
   std::vector<integrators::SampledHistory> histories(components.size());
   for (std::size_t i = 0; i < components.size(); ++i) {
@@ -194,14 +201,14 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
     const integrators::SampledHistory& h1 = histories[0];
     if (std::abs(histories[i].dt - h1.dt) > 1e-9 * h1.dt) {
       throw InputError(c.motion.location,
-                       fmt::format("{}: its step {:g} differs from h1's {:g}; a pair must share "
+                       fmt::format("{}its step {:g} differs from h1's {:g}; a pair must share "
                                    "one step",
-                                   c.motion.key, histories[i].dt, h1.dt));
+                                   key_of(c), histories[i].dt, h1.dt));
     }
     if (histories[i].values.size() != h1.values.size()) {
       throw InputError(c.motion.location,
-                       fmt::format("{}: {} samples, h1 has {}; a pair must have the same length",
-                                   c.motion.key, histories[i].values.size(), h1.values.size()));
+                       fmt::format("{}{} samples, h1 has {}; a pair must have the same length",
+                                   key_of(c), histories[i].values.size(), h1.values.size()));
     }
   }
   problem.angle = angle;

@@ -108,6 +108,22 @@ Summary Solve(const SolveOptions& options, const Problem& problem,
   return summary;
 }
 
+model::AnalysisSection ChooseIntegrator(model::AnalysisSection analysis,
+                                        const IntegratorChoice& choice,
+                                        const std::string& option_prefix) {
+  using Integrator = model::AnalysisSection::Integrator;
+  if (choice.integrator == "ida") analysis.integrator = Integrator::kIda;
+  if (choice.integrator == "newmark") analysis.integrator = Integrator::kNewmark;
+  if (analysis.integrator != Integrator::kIda && (choice.rtol || choice.atol)) {
+    throw InputError({option_prefix + (choice.rtol ? "rtol" : "atol")},
+                     "a tolerance of the IDA integrator, and this run integrates with "
+                     "Newmark-beta (choose IDA: integrator ida)");
+  }
+  if (choice.rtol) analysis.ida.relative_tolerance = *choice.rtol;
+  if (choice.atol) analysis.ida.absolute_tolerance = *choice.atol;
+  return analysis;
+}
+
 std::string DescribeIntegrator(const model::AnalysisSection& analysis, double dt) {
   if (analysis.integrator == model::AnalysisSection::Integrator::kIda) {
     const integrators::IdaOptions& o = analysis.ida;

@@ -10,11 +10,13 @@
 
 #include "finite_options.h"
 #include "isolab/analysis/cyclic_campaign.h"
+#include "isolab/analysis/path_replay.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
+#include "isolab/io/displacement_path_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/model_file.h"
 
@@ -24,6 +26,7 @@ namespace {
 using hysteresis::CyclicProtocol;
 using hysteresis::CyclicResult;
 using hysteresis::ParameterForm;
+using Vec2Alias = hysteresis::Vec2;
 
 struct Run {
   const model::ModelFile* model;
@@ -163,6 +166,301 @@ std::string CsvPath(const std::string& csv, const Run& run, std::size_t index, b
   return (base.parent_path() / name).string();
 }
 
+// --path and --orbit: the model driven along given paths (analysis/path_replay.h).
+struct Replayed {
+  std::string model;  // the file, and the isolator of a plan model
+  UnitSystem units;
+  analysis::ReplayResult result;
+};
+
+std::string Vector(Vec2Alias v, bool plan) {
+  return plan ? fmt::format("({:.6g}, {:.6g})", v.x, v.y) : fmt::format("{:.6g}", v.x);
+}
+
+void PrintReplay(const Replayed& run, std::ostream& out) {
+  const auto& r = run.result;
+  const UnitSystem& u = run.units;
+  fmt::print(out, "\n== {} along '{}' ({} samples, {:.6g} {}, {}) ==\n", run.model, r.name,
+             r.time.size(), r.time.back() - r.time.front(), u.time(),
+             r.plan ? "two directions" : "one direction");
+  fmt::print(out, "peak |u| = {:.6g} {}, peak |F| = {:.6g} {}, dissipated {:.6g} {}*{}\n",
+             r.peak_displacement, u.length(), r.peak_force, u.force(), r.dissipated.back(),
+             u.force(), u.length());
+  if (r.comparison) {
+    const auto& c = *r.comparison;
+    fmt::print(out,
+               "against the measured force: e^2 = {:.4g} %, NRMSE = {:.4g} % of its range, peak "
+               "|F| measured {:.6g}, modelled {:.6g} ({:+.1f} %)\n",
+               100 * c.e2, 100 * c.nrmse, c.peak_measured, c.peak_modelled,
+               100 * (c.peak_modelled / c.peak_measured - 1));
+  }
+  if (!r.cycles.empty()) {
+    fmt::print(out, "{:>5} {:>16} {:>14}   {:<28} {}\n", "cycle",
+               fmt::format("W_d [{}*{}]", u.force(), u.length()),
+               fmt::format("peak|F| [{}]", u.force()), fmt::format("u at end [{}]", u.length()),
+               fmt::format("F at end [{}]", u.force()));
+    for (const auto& c : r.cycles) {
+      fmt::print(out, "{:>5} {:>16.6g} {:>14.6g}   {:<28} {}\n", c.index, c.dissipated,
+                 c.peak_force, Vector(c.displacement_at_end, r.plan),
+                 Vector(c.force_at_end, r.plan));
+    }
+  }
+}
+
+nlohmann::json ReplayJson(const Replayed& run) {
+  const auto& r = run.result;
+  const auto vec = [&](Vec2Alias v) {
+    return r.plan ? nlohmann::json::array({v.x, v.y}) : nlohmann::json(v.x);
+  };
+  nlohmann::json json = {
+      {"model", run.model},
+      {"path", r.name},
+      {"plan", r.plan},
+      {"units",
+       {{"force", run.units.force()}, {"length", run.units.length()}, {"time", run.units.time()}}},
+      {"samples", r.time.size()},
+      {"components", r.components},
+      {"peak_displacement", r.peak_displacement},
+      {"peak_force", r.peak_force},
+      {"dissipated", r.dissipated.back()},
+      {"final_force", vec(r.force.back())},
+      {"cycles", nlohmann::json::array()}};
+  for (const auto& c : r.cycles) {
+    json["cycles"].push_back({{"cycle", c.index},
+                              {"dissipated", c.dissipated},
+                              {"peak_force", c.peak_force},
+                              {"displacement_at_end", vec(c.displacement_at_end)},
+                              {"force_at_end", vec(c.force_at_end)}});
+  }
+  if (r.comparison) {
+    json["comparison"] = {{"e2", r.comparison->e2},
+                          {"nrmse", r.comparison->nrmse},
+                          {"peak_measured", r.comparison->peak_measured},
+                          {"peak_modelled", r.comparison->peak_modelled}};
+  }
+  return json;
+}
+
+void WriteReplayCsv(const Replayed& run, const std::string& path) {
+  const auto& r = run.result;
+  const UnitSystem& u = run.units;
+  const std::vector<std::string> axes =
+      r.plan ? std::vector<std::string>{"_x", "_y"} : std::vector<std::string>{""};
+  io::WriteTextFileAtomically(path, [&](std::ostream& out) {
+    fmt::print(out, "time_{}", u.time());
+    for (const auto& a : axes) fmt::print(out, ",u{}_{}", a, u.length());
+    for (const auto& a : axes) fmt::print(out, ",force{}_{}", a, u.force());
+    for (const auto& c : r.components) {
+      for (const auto& a : axes) fmt::print(out, ",force_{}{}_{}", c, a, u.force());
+    }
+    if (!r.measured.empty()) {
+      for (const auto& a : axes) fmt::print(out, ",measured{}_{}", a, u.force());
+    }
+    fmt::print(out, "\n");
+    const std::size_t m = r.components.size();
+    const auto put = [&](Vec2Alias v) {
+      fmt::print(out, ",{:.10g}", v.x);
+      if (r.plan) fmt::print(out, ",{:.10g}", v.y);
+    };
+    for (std::size_t k = 0; k < r.time.size(); ++k) {
+      fmt::print(out, "{:.10g}", r.time[k]);
+      put(r.displacement[k]);
+      put(r.force[k]);
+      for (std::size_t c = 0; c < m; ++c) put(r.component_force[k * m + c]);
+      if (!r.measured.empty()) put(r.measured[k]);
+      fmt::print(out, "\n");
+    }
+  });
+}
+
+// Options of one mode given in the other are refused, not ignored: the sinusoidal test of a
+// one-direction isolation (-a, -T, -n, --steps-per-cycle, --test-data with its --noise, --seed and
+// --sequential) and a path (--path with its units, or --orbit shaped by -a, -T, -n,
+// --steps-per-cycle; --isolator of a plan model, --uncoupled of a one-direction one).
+void RefuseOptionsOfTheOtherMode(const CyclicOptions& options) {
+  const auto refuse = [](const char* option, const char* why) {
+    throw InputError({option}, why);
+  };
+  const bool path = !options.paths.empty(), orbit = !options.orbit.empty();
+  if (path || orbit) {
+    const char* sinusoidal = "writes the sinusoidal tests (without --path or --orbit) as test data";
+    if (!options.test_data.empty()) refuse("--test-data", sinusoidal);
+    if (options.noise != 0.0) refuse("--noise", sinusoidal);
+    if (options.seed) refuse("--seed", sinusoidal);
+    if (options.sequential) refuse("--sequential", "runs the sinusoidal tests on one specimen");
+  } else {
+    const char* along = "applies to a model driven along --path or --orbit";
+    if (!options.isolator.empty()) refuse("--isolator", along);
+    if (options.uncoupled) refuse("--uncoupled", along);
+    if (!options.force_unit.empty()) refuse("--force-unit", "the units of a --path file");
+    if (!options.length_unit.empty()) refuse("--length-unit", "the units of a --path file");
+    if (options.test_data.empty() && (options.noise != 0.0 || options.seed)) {
+      refuse(options.noise != 0.0 ? "--noise" : "--seed", "noise on --test-data, which is not given");
+    }
+  }
+  if (path) {
+    const char* shaped = "shapes an --orbit or the sinusoidal test; a --path gives its own history";
+    if (!options.amplitudes.empty()) refuse("--amplitude", shaped);
+    if (!options.periods.empty()) refuse("--period", shaped);
+    if (options.cycles) refuse("--cycles", shaped);
+    if (options.steps_per_cycle) refuse("--steps-per-cycle", shaped);
+  }
+  if (orbit && (!options.force_unit.empty() || !options.length_unit.empty())) {
+    refuse(options.force_unit.empty() ? "--length-unit" : "--force-unit",
+           "the units of a --path file; an --orbit is in the model's units");
+  }
+}
+
+void RunReplay(const CyclicOptions& options, std::ostream& out) {
+  if (!options.paths.empty() && !options.orbit.empty()) {
+    throw InputError({"command line"}, "--path and --orbit: give one or the other");
+  }
+  // The paths to follow: read once per model's units, or the orbits the options ask for.
+  struct Source {
+    std::vector<io::DisplacementPath> paths;
+    std::vector<std::vector<std::size_t>> cycles;
+  };
+  const auto sources = [&](const UnitSystem& units, const model::ModelFile* model) {
+    Source source;
+    if (!options.paths.empty()) {
+      io::DisplacementPathSet set = io::ReadDisplacementPaths(
+          options.paths, options.force_unit.empty() ? units.force() : options.force_unit,
+          options.length_unit.empty() ? units.length() : options.length_unit, units);
+      if (!set.without_units.empty() &&
+          (options.force_unit.empty() || options.length_unit.empty())) {
+        throw InputError({set.without_units.front()},
+                         "no '# units: force ..., length ...' line: give the path's units in "
+                         "the file or with --force-unit and --length-unit");
+      }
+      source.paths = std::move(set.paths);
+      source.cycles.resize(source.paths.size());
+      return source;
+    }
+    analysis::OrbitProtocol protocol;
+    if (options.orbit == "circle") {
+      protocol.shape = analysis::OrbitShape::kCircle;
+    } else if (options.orbit == "figure8") {
+      protocol.shape = analysis::OrbitShape::kFigureEight;
+    } else {
+      throw InputError({"command line"},
+                       fmt::format("--orbit {} (expected circle or figure8)", options.orbit));
+    }
+    if (model != nullptr && model->cyclic) {
+      protocol.period = model->cyclic->period;
+      protocol.cycles = model->cyclic->cycles;
+      protocol.steps_per_cycle = model->cyclic->steps_per_cycle;
+    }
+    if (options.cycles) protocol.cycles = *options.cycles;
+    if (options.steps_per_cycle) protocol.steps_per_cycle = *options.steps_per_cycle;
+    std::vector<double> amplitudes = options.amplitudes;
+    if (amplitudes.empty() && model != nullptr && model->cyclic) {
+      amplitudes.push_back(model->cyclic->amplitude);
+    }
+    if (amplitudes.empty()) throw InputError({"command line"}, "--orbit needs --amplitude");
+    const std::vector<double> periods =
+        options.periods.empty() ? std::vector<double>{protocol.period} : options.periods;
+    for (const double period : periods) {
+      for (const double amplitude : amplitudes) {
+        protocol.amplitude = amplitude;
+        protocol.period = period;
+        std::vector<std::size_t> cycles;
+        try {
+          source.paths.push_back(analysis::OrbitPath(protocol, &cycles));
+        } catch (const InvalidParameter& error) {
+          throw InputError({"command line"}, error.violation().Describe());
+        }
+        source.paths.back().name += fmt::format("_A={:g}_T={:g}", amplitude, period);
+        source.cycles.push_back(std::move(cycles));
+      }
+    }
+    return source;
+  };
+
+  std::vector<Replayed> runs;
+  std::vector<std::string> inputs;
+  for (const std::string& file : options.models) {
+    inputs.push_back(file);
+    const model::ModelFile model = model::LoadModelFile(file);
+    inputs.insert(inputs.end(), model.included_files.begin(), model.included_files.end());
+    if (model.structure && model.structure->kind == model::StructureSection::Kind::kPlanBuilding) {
+      if (options.uncoupled) {
+        throw InputError({"--uncoupled"},
+                         fmt::format("{} is a building in plan: its isolators' laws are coupled "
+                                     "or not as the model says",
+                                     file));
+      }
+      const UnitSystem& units = model.units;
+      const Source source = sources(units, &model);
+      bool found = options.isolator.empty();
+      for (const auto& isolator : model.structure->plan.isolators) {
+        if (!options.isolator.empty() && isolator.name != options.isolator) continue;
+        found = true;
+        for (std::size_t p = 0; p < source.paths.size(); ++p) {
+          io::DisplacementPath path = source.paths[p];
+          path.plan = true;  // a plan isolator moves in plan, whatever the path's columns
+          runs.push_back({file + ": isolator " + isolator.name, units,
+                          analysis::Replay(isolator.assembly, path, source.cycles[p])});
+        }
+      }
+      if (!found) {
+        throw InputError(
+            {"command line"},
+            fmt::format("--isolator {}: {} has no isolator of that name", options.isolator, file));
+      }
+      continue;
+    }
+    if (model.isolation.size() == 0) {
+      throw InputError({file}, "no isolation section: nothing to drive along a path");
+    }
+    if (!options.isolator.empty()) {
+      throw InputError({"--isolator"}, fmt::format("{} is not a building in plan: its isolation "
+                                                   "is one assembly, driven whole",
+                                                   file));
+    }
+    const Source source = sources(model.units, &model);
+    for (std::size_t p = 0; p < source.paths.size(); ++p) {
+      const io::DisplacementPath& path = source.paths[p];
+      if (!path.plan) {
+        runs.push_back(
+            {file, model.units, analysis::Replay(model.isolation, path, source.cycles[p])});
+        continue;
+      }
+      try {
+        runs.push_back(
+            {file, model.units,
+             analysis::Replay(analysis::PlanFromIsolation(model.isolation, !options.uncoupled),
+                              path, source.cycles[p])});
+      } catch (const std::invalid_argument& error) {
+        throw InputError({file}, error.what());
+      }
+    }
+  }
+  inputs.insert(inputs.end(), options.paths.begin(), options.paths.end());
+  std::vector<std::string> outputs;
+  if (!options.csv.empty()) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      if (runs.size() == 1) {
+        outputs.push_back(options.csv);
+      } else {
+        const std::filesystem::path base(options.csv);
+        outputs.push_back(
+            (base.parent_path() / fmt::format("{}_{}_{}{}", base.stem().string(), i + 1,
+                                              runs[i].result.name, base.extension().string()))
+                .string());
+      }
+    }
+  }
+  io::CheckOutputs(inputs, outputs);
+  for (std::size_t i = 0; i < outputs.size(); ++i) WriteReplayCsv(runs[i], outputs[i]);
+  if (options.json) {
+    nlohmann::json json = {{"runs", nlohmann::json::array()}};
+    for (const Replayed& run : runs) json["runs"].push_back(ReplayJson(run));
+    out << json.dump(2) << "\n";
+    return;
+  }
+  for (const Replayed& run : runs) PrintReplay(run, out);
+}
+
 }  // namespace
 
 void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
@@ -195,11 +493,36 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   command->add_flag("--sequential", options.sequential,
                     "Run a model's tests one after another on one specimen, each from the state "
                     "the previous left (a campaign); --test-data then says '# specimen: one'");
+  command
+      ->add_option("--path", options.paths,
+                   "Drive the model along displacement paths instead: CSV of time and "
+                   "displacement (or displacement_x, displacement_y), with the measured force "
+                   "(force, or force_x, force_y) when there is one")
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--orbit", options.orbit,
+                   "Drive the model round a circle or figure8 in plan, of radius -a, period "
+                   "-T, -n cycles")
+      ->check(CLI::IsMember({"circle", "figure8"}));
+  command->add_option("--isolator", options.isolator,
+                      "A plan model's isolator to drive (default: each of them)");
+  command->add_flag("--uncoupled", options.uncoupled,
+                    "In two directions, each law of a one-direction model along x and y "
+                    "separately (default: its coupled form)");
+  command->add_option("--force-unit", options.force_unit,
+                      "Force unit of path files without a '# units:' line (with --length-unit)");
+  command->add_option("--length-unit", options.length_unit,
+                      "Length unit of path files without a '# units:' line (with --force-unit)");
   command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
   command->add_flag("-q,--quiet", options.quiet, "No component table before the cycles");
 }
 
 void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
+  RefuseOptionsOfTheOtherMode(options);
+  if (!options.paths.empty() || !options.orbit.empty()) {
+    RunReplay(options, out);
+    return;
+  }
   std::vector<model::ModelFile> models;
   models.reserve(options.models.size());
   for (const std::string& path : options.models) models.push_back(model::LoadModelFile(path));
@@ -245,7 +568,7 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
             std::filesystem::path(runs[i].model->path).stem().string() + ":" + tests[i].name;
       }
     }
-    identification::AddForceNoise(&tests, options.noise, options.seed);
+    identification::AddForceNoise(&tests, options.noise, options.seed.value_or(1));
     io::WriteCyclicTests(options.test_data, tests, models.front().units,
                          options.sequential && models.size() == 1);
   }

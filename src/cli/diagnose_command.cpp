@@ -7,23 +7,58 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "diagnosis_report.h"
 #include "finite_options.h"
-#include "fit_data_checks.h"
+#include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/diagnose.h"
+#include "isolab/diagnosis/report.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/fit_spec_file.h"
 #include "isolab/model/fitted_model_file.h"
+#include "plot_script.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
 namespace {
 
+constexpr const char* kPlotScript = "plot_diagnosis.py";
+
 void WriteText(const std::string& path, const std::string& text) {
   io::WriteTextFileAtomically(path, [&](std::ostream& out) { out << text; });
+}
+
+// The final model as a model file; a component the fit left a simpler law is written as that law
+// (identification::SimplifyComponents), with a note. Returns the notes.
+std::vector<std::string> WriteFinalModel(const std::string& path, const DiagnoseOptions& options,
+                                         const model::FitSpec& base,
+                                         const diagnosis::Diagnosis& result) {
+  model::FittedModel model;
+  model.comment.push_back(fmt::format("Diagnosed by isolab diagnose from {} (base {}, seed {}).",
+                                      fmt::join(options.data, ", "), options.base, options.seed));
+  std::string effects;
+  for (const auto& step : result.steps) {
+    effects += fmt::format("{}{}", effects.empty() ? "" : ", ", diagnosis::EffectName(step.effect));
+  }
+  model.comment.push_back(
+      fmt::format("Effects added: {}; e^2 = {:.6g} % (base {:.6g} %); the residual is {}.",
+                  effects.empty() ? "none" : effects, 100 * result.final_model.fit.error.total,
+                  100 * result.base.fit.error.total, diagnosis::VerdictName(result.verdict.kind)));
+  model.description = fmt::format("Diagnosed from {}", fmt::join(options.data, ", "));
+  model.specification = options.base;
+  model.units = base.units;
+  model.components = result.final_model.components;
+  std::vector<std::string> names;
+  std::vector<hysteresis::LawType> types;
+  for (const auto& c : model.components) names.push_back(c.name), types.push_back(c.type);
+  model.mathematical = result.final_model.fit.mathematical;
+  std::vector<std::string> notes =
+      identification::SimplifyComponents(names, &types, &model.mathematical);
+  for (std::size_t c = 0; c < types.size(); ++c) model.components[c].type = types[c];
+  for (const std::string& note : notes) model.comment.push_back(note + ".");
+  model::WriteFittedModel(path, model);
+  return notes;
 }
 
 }  // namespace
@@ -41,14 +76,24 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--out", options.out,
-                      "Report stem: writes OUT.md, OUT.json and OUT.model.yaml "
-                      "(default: <first data file>.diagnosis)");
+                      "Report stem: writes OUT.md, OUT.json, OUT.model.yaml, OUT.residual.csv "
+                      "and OUT.residual.png (default: <first data file>.diagnosis)");
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the diagnosis");
   AddSpecimenOption(command, &options.specimen);
   command->add_option("--budget", options.budget, "Model evaluations per fit (default 12000)")
       ->check(Between(100, 1e8));
-  command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
-  command->add_option("--length-unit", options.length_unit, "Length unit of the data (default mm)");
+  command->add_option("--force-unit", options.force_unit,
+                      "Force unit of data files without a '# units:' line (with --length-unit)");
+  command->add_option("--length-unit", options.length_unit,
+                      "Length unit of data files without a '# units:' line (with --force-unit)");
+  command
+      ->add_option("--threads", options.threads,
+                   "Threads (default: every hardware thread); the result does not depend on it")
+      ->check(CLI::Range(0, 1024));
+  command->add_flag("!--no-plot", options.plot, "Do not plot the residual");
+  command->add_flag("--force", options.force,
+                    "Diagnose even when one fit's work (evaluations x samples x laws) is beyond "
+                    "the limit");
   command->add_flag("--json", options.json, "Print the report as JSON instead of a summary");
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
 }
@@ -59,29 +104,65 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
       !options.out.empty()
           ? options.out
           : std::filesystem::path(options.data.front()).replace_extension().string() + ".diagnosis";
+  diagnosis::ReportContext context;
+  context.data_files = options.data;
+  context.base_file = options.base;
+  context.model_file = stem + ".model.yaml";
+  context.residual_file = stem + ".residual.csv";
+  context.seed = options.seed;
+  context.force_unit = base.units.force();
+  context.length_unit = base.units.length();
   std::vector<std::string> inputs = options.data;
   inputs.push_back(options.base);
-  io::CheckOutputs(inputs, {stem + ".model.yaml", stem + ".json", stem + ".md"});
+  std::vector<std::string> outputs = {context.model_file, stem + ".json", stem + ".md",
+                                      context.residual_file};
+  if (options.plot) outputs.push_back(stem + ".residual.png");
+  io::CheckOutputs(inputs, outputs);
+  const bool units_given = !options.force_unit.empty() && !options.length_unit.empty();
   io::CyclicTestSet set =
-      io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
+      io::ReadCyclicTests(options.data,
+                          {options.force_unit.empty() ? "kN" : options.force_unit,
+                           options.length_unit.empty() ? "mm" : options.length_unit},
+                          base.units);
+  analysis::RequireUnits(set, units_given, "--force-unit and --length-unit");
+  analysis::RequireFiniteSquares(set);
   const identification::FitData data = diagnosis::AllCycles(
       std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
-
-  try {
-    RequireMoreSamplesThanParameters(
-        data, identification::ModelParametrisation(base.components, identification::ScalesOf(data)),
-        options.base);
-  } catch (const std::invalid_argument& error) {
-    throw InputError({options.base}, error.what());
-  }
 
   diagnosis::DiagnoseOptions settings;
   settings.seed = options.seed;
   settings.budget = options.budget;
+  settings.threads = options.threads;
+  try {
+    const identification::ModelParametrisation parametrisation(base.components,
+                                                               identification::ScalesOf(data));
+    analysis::RequireMoreSamplesThanParameters(data, parametrisation, options.base);
+    identification::FitOptions fit;
+    fit.budget = options.budget;
+    fit.threads = options.threads;
+    const analysis::FitWork work = analysis::EstimateFitWork(parametrisation, data, fit);
+    analysis::RequireWorkWithin(work, analysis::kWorkLimit, options.force,
+                                "command line (--force)");
+    if (!options.quiet) {
+      fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n  base fit's {}\n",
+                 data.tests.size(),
+                 data.one_specimen ? "one specimen, in order" : "independent specimens",
+                 options.base, work.Describe(analysis::kWorkLimit));
+    }
+  } catch (const std::invalid_argument& error) {
+    throw InputError({options.base}, error.what());
+  }
+  // The plot needs Python's matplotlib: without it the report says so and goes on.
+  bool plot = options.plot;
+  if (plot) {
+    try {
+      CheckPlotScript(kPlotScript);
+    } catch (const InputError& error) {
+      plot = false;
+      context.notes.push_back(fmt::format("no residual plot: {}", error.what()));
+    }
+  }
   if (!options.quiet) {
-    fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n", data.tests.size(),
-               data.one_specimen ? "one specimen, in order" : "independent specimens",
-               options.base);
     settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
   diagnosis::Diagnosis result;
@@ -91,48 +172,39 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
     throw InputError({options.base}, error.what());
   }
 
-  DiagnosisContext context{options.data, options.base, stem + ".model.yaml", options.seed,
-                           base.units};
-
-  model::FittedModel model;
-  model.comment.push_back(fmt::format("Diagnosed by isolab diagnose from {} (base {}, seed {}).",
-                                      fmt::join(options.data, ", "), options.base, options.seed));
-  std::string effects;
-  for (const auto& step : result.steps) {
-    effects += fmt::format("{}{}", effects.empty() ? "" : ", ", diagnosis::EffectName(step.effect));
+  // The model first: a model isolab would refuse is a note in the report, not a lost diagnosis.
+  try {
+    for (std::string& note : WriteFinalModel(context.model_file, options, base, result)) {
+      context.notes.push_back(std::move(note));
+    }
+  } catch (const InputError& error) {
+    context.notes.push_back(fmt::format("the final model was not written: {}", error.what()));
+    context.model_file.clear();
   }
-  model.comment.push_back(fmt::format(
-      "Effects added: {}; e^2 = {:.6g} % (base {:.6g} %).", effects.empty() ? "none" : effects,
-      100 * result.final_model.fit.error.total, 100 * result.base.fit.error.total));
-  model.description = fmt::format("Diagnosed from {}", fmt::join(options.data, ", "));
-  model.specification = options.base;
-  model.units = base.units;
-  model.components = result.final_model.components;
-  model.mathematical = result.final_model.fit.mathematical;
-  // Every text first, then the files: a failure while composing leaves none behind.
-  const nlohmann::json json = DiagnosisJson(result, data, context);
-  const std::string markdown = DiagnosisMarkdown(result, data, context);
-  model::WriteFittedModel(context.model_file, model);
-  WriteText(stem + ".json", json.dump(2) + "\n");
-  WriteText(stem + ".md", markdown);
+  if (plot) context.plot_file = stem + ".residual.png";
+  const diagnosis::DiagnosisReport report = diagnosis::BuildReport(result, data, context);
+  const std::string json = diagnosis::RenderJson(report);
+  WriteText(context.residual_file, diagnosis::RenderResidualCsv(report));
+  WriteText(stem + ".json", json);
+  WriteText(stem + ".md", diagnosis::RenderMarkdown(report));
+  if (plot) {
+    RunPlotScript(
+        kPlotScript,
+        {context.residual_file, "-o", context.plot_file, "--title",
+         fmt::format("{}: the final residual is {}",
+                     std::filesystem::path(options.data.front()).filename().string(),
+                     diagnosis::VerdictName(result.verdict.kind))},
+        options.quiet || options.json);
+  }
 
   if (options.json) {
-    out << json.dump(2) << "\n";
+    out << json;
     return;
   }
-  fmt::print(out, "base e^2 = {:.4g} %   noise floor {:.4g} %\n", 100 * result.base.fit.error.total,
-             100 * result.noise_floor);
-  if (result.steps.empty()) fmt::print(out, "effect: none\n");
-  for (std::size_t k = 0; k < result.steps.size(); ++k) {
-    const auto& s = result.steps[k];
-    fmt::print(out,
-               "step {}: {:<32} evidence {:.4g} (threshold {:.3g})   e^2 {:.4g} % -> {:.4g} %\n",
-               k + 1, diagnosis::EffectName(s.effect), s.evidence.value, s.evidence.threshold,
-               100 * s.e2_before, 100 * s.e2_after);
-  }
-  fmt::print(out, "stopped: {}\n", result.stop_reason);
-  fmt::print(out, "report: {}.md, {}.json; final model: {} ({:.1f} s)\n", stem, stem,
-             context.model_file, result.seconds);
+  out << diagnosis::RenderSummary(report);
+  fmt::print(out, "report: {}.md, {}.json, {}{}; final model: {}\n", stem, stem,
+             context.residual_file, plot ? ", " + context.plot_file : "",
+             context.model_file.empty() ? "not written" : context.model_file);
 }
 
 }  // namespace isolab::cli

@@ -1,6 +1,7 @@
 // `isolab diagnose`: fits a base isolator model to measured cyclic tests, names the physical
-// effects it lacks one by one (diagnosis/diagnose.h), and writes a Markdown and a JSON report and
-// the final model file.
+// effects it lacks one by one (diagnosis/diagnose.h), judges what remains, and writes the report
+// (diagnosis/report.h) as Markdown and JSON, the residual as CSV with its plot, and the final
+// model file.
 #pragma once
 
 #include <ostream>
@@ -16,11 +17,16 @@ namespace isolab::cli {
 struct DiagnoseOptions {
   std::vector<std::string> data;  // CSV files of cyclic tests
   std::string base;               // --base: component types, bounds optional (fit specification)
-  std::string out;                // report stem: OUT.md, OUT.json, OUT.model.yaml
+  // Report stem: OUT.md, OUT.json, OUT.model.yaml, OUT.residual.csv, OUT.residual.png.
+  std::string out;
   unsigned seed = 1;
   std::string specimen;  // "sequential", "independent"; empty: the data's header
   long budget = 12000;   // evaluations per fit
-  std::string force_unit = "kN", length_unit = "mm";  // of the data, unless its header says
+  // Of the data, unless a file's "# units:" line says; a file without one needs both.
+  std::string force_unit, length_unit;
+  int threads = 0;     // 0: every hardware thread (speed only)
+  bool plot = true;    // the residual plot (needs Python's matplotlib; skipped with a note)
+  bool force = false;  // beyond the work limit
   bool json = false;
   bool quiet = false;
 };

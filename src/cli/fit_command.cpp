@@ -4,6 +4,7 @@
 #include <fmt/ostream.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,9 +12,10 @@
 #include <stdexcept>
 
 #include "finite_options.h"
-#include "fit_data_checks.h"
+#include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
+#include "isolab/identification/identifiability.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/fit_spec_file.h"
@@ -55,14 +57,19 @@ std::vector<EnergyRow> EnergyTable(const hysteresis::ParallelAssembly& model, co
   return rows;
 }
 
-void WriteFittedModel(const std::string& path, const model::FitSpec& spec,
-                      const FitOptions& options, const FitResult& result, const FitData& data) {
+// Writes the fitted model: components the fit gave no stiffness dropped, those it left a
+// simpler law written as that law (identification::SimplifyComponents). Returns the notes.
+std::vector<std::string> WriteFittedModel(const std::string& path, const model::FitSpec& spec,
+                                          const FitOptions& options, const FitResult& result,
+                                          const std::vector<identification::ComponentSpec>& kept,
+                                          const FitData& data) {
   model::FittedModel model;
   model.comment.push_back(
       fmt::format("Identified by isolab fit from {} (specification {}, seed {}, {} evaluations).",
                   fmt::join(options.data, ", "), spec.path, options.seed, result.evaluations));
-  std::string errors =
-      fmt::format("e^2 = {:.6g} % (Markou & Manolis 2016, Eq. 20)", 100 * result.error.total);
+  std::string errors = fmt::format(
+      "e^2 = {:.6g} % per test on average, {:.6g} % summed (Markou & Manolis 2016, Eq. 20)",
+      100 * result.error.Mean(), 100 * result.error.total);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     errors += fmt::format("{}{}: {:.4g} %", i == 0 ? "; per test: " : ", ", data.tests[i].name,
                           100 * result.error.per_test[i]);
@@ -71,9 +78,18 @@ void WriteFittedModel(const std::string& path, const model::FitSpec& spec,
   model.description = fmt::format("Fitted to {}", fmt::join(options.data, ", "));
   model.specification = spec.path;
   model.units = spec.units;
-  model.components = spec.components;
-  model.mathematical = result.mathematical;
+  std::vector<std::string> names;
+  std::vector<hysteresis::LawType> types;
+  for (const auto& component : kept)
+    names.push_back(component.name), types.push_back(component.type);
+  std::vector<std::vector<double>> mathematical = result.mathematical;
+  std::vector<std::string> notes = identification::SimplifyComponents(names, &types, &mathematical);
+  model.components = kept;
+  for (std::size_t c = 0; c < kept.size(); ++c) model.components[c].type = types[c];
+  model.mathematical = mathematical;
+  for (const std::string& note : notes) model.comment.push_back(note + ".");
   model::WriteFittedModel(path, model);
+  return notes;
 }
 
 }  // namespace
@@ -95,8 +111,16 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                       "(default: every test's whole history)");
   AddSpecimenOption(command, &options.specimen);
   command->add_option("-o,--output", options.output, "Fitted model file (YAML)");
-  command->add_option("--force-unit", options.force_unit, "Force unit of the data (default kN)");
-  command->add_option("--length-unit", options.length_unit, "Length unit of the data (default mm)");
+  command->add_option("--force-unit", options.force_unit,
+                      "Force unit of data files without a '# units:' line (with --length-unit)");
+  command->add_option("--length-unit", options.length_unit,
+                      "Length unit of data files without a '# units:' line (with --force-unit)");
+  command
+      ->add_option("--threads", options.threads,
+                   "Threads (default: every hardware thread); the result does not depend on it")
+      ->check(CLI::Range(0, 1024));
+  command->add_flag("--force", options.force,
+                    "Fit even when the work (evaluations x samples x laws) is beyond the limit");
   command->add_flag("--json", options.json, "Print the result as JSON");
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
 }
@@ -110,8 +134,14 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   std::vector<std::string> inputs = options.data;
   inputs.push_back(options.spec);
   io::CheckOutputs(inputs, {output});
+  const bool units_given = !options.force_unit.empty() && !options.length_unit.empty();
   io::CyclicTestSet set =
-      io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, spec.units);
+      io::ReadCyclicTests(options.data,
+                          {options.force_unit.empty() ? "kN" : options.force_unit,
+                           options.length_unit.empty() ? "mm" : options.length_unit},
+                          spec.units);
+  analysis::RequireUnits(set, units_given, "--force-unit and --length-unit");
+  analysis::RequireFiniteSquares(set);
   const bool one_specimen = io::OneSpecimen(options.specimen, set.one_specimen);
   FitData data;
   try {
@@ -125,29 +155,63 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   } catch (const std::invalid_argument& error) {
     throw InputError({spec.path}, error.what());
   }
-  RequireMoreSamplesThanParameters(data, *model, spec.path);
+  analysis::RequireMoreSamplesThanParameters(data, *model, spec.path);
 
   identification::FitOptions fit;
   fit.seed = options.seed;
   fit.budget = options.budget;
+  fit.threads = options.threads;
+  const analysis::FitWork work = analysis::EstimateFitWork(*model, data, fit);
+  analysis::RequireWorkWithin(work, analysis::kWorkLimit, options.force, "command line (--force)");
   if (!options.quiet) {
     fmt::print(stderr,
-               "isolab fit: {} tests ({}), {} shape coordinates and {} stiffnesses, budget {}\n",
+               "isolab fit: {} tests ({}), {} shape coordinates and {} stiffnesses, budget {}\n  "
+               "{}\n",
                data.tests.size(), one_specimen ? "one specimen, in order" : "independent specimens",
-               model->dimension(), model->amplitude_count(), options.budget);
+               model->dimension(), model->amplitude_count(), options.budget,
+               work.Describe(analysis::kWorkLimit));
     fit.progress = [](const identification::FitProgress& p) {
       fmt::print(stderr, "  {} generation {:5d}, {:8d} evaluations, best e^2 = {:.6g} %\n",
                  p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations,
                  100 * p.best);
     };
   }
-  const FitResult result = identification::Fit(*model, data, fit);
-  WriteFittedModel(output, spec, options, result, data);
+  FitResult result;
+  try {
+    result = identification::Fit(*model, data, fit);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({options.data.front()}, error.what());
+  }
+  const identification::Identifiability identifiability =
+      identification::AssessIdentifiability(*model, data, result);
   const auto energy = EnergyTable(model->Assembly(result.point, result.amplitudes), data);
+  // Components the fit gave no stiffness carry no force: dropped, with a note, e^2 unchanged.
+  const std::vector<std::size_t> zero = identification::ZeroComponents(*model, result.amplitudes);
+  std::vector<std::string> notes;
+  for (const std::size_t c : zero) {
+    notes.push_back(fmt::format(
+        "{} ({}) was dropped: the fit gave it no stiffness, so the data need no such component",
+        spec.components[c].name, hysteresis::LawName(spec.components[c].type)));
+  }
+  FitResult written = result;
+  std::vector<identification::ComponentSpec> kept = spec.components;
+  if (!zero.empty()) {
+    if (zero.size() == spec.components.size()) {
+      throw InputError({spec.path},
+                       "the fit gave every component zero stiffness: the data have "
+                       "no force these laws can carry");
+    }
+    kept = identification::DropComponents(*model, zero, &written);
+  }
+  for (std::string& note : WriteFittedModel(output, spec, options, written, kept, data)) {
+    notes.push_back(std::move(note));
+  }
+  const std::vector<std::string> findings = identifiability.Findings();
 
   if (options.json) {
     nlohmann::json json;
     json["e2"] = result.error.total;
+    json["e2_mean"] = result.error.Mean();
     for (std::size_t i = 0; i < data.tests.size(); ++i) {
       json["e2_per_test"][data.tests[i].name] = result.error.per_test[i];
     }
@@ -172,14 +236,24 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     json["evaluations"] = result.evaluations;
     json["restarts"] = result.restarts;
     json["seconds"] = result.seconds;
+    json["stop"] = result.stop == identification::FitStop::kConverged ? "converged" : "budget";
+    json["stop_reason"] = result.stop_reason;
+    json["identifiability"] = findings;
+    json["notes"] = notes;
+    json["work"] = work.Work();
     json["seed"] = options.seed;
     json["one_specimen"] = one_specimen;
     json["output"] = output;
     out << json.dump(2) << "\n";
     return;
   }
-  fmt::print(out, "e^2 = {:.4g} % over {} tests ({} evaluations, {:.1f} s)\n\n",
-             100 * result.error.total, data.tests.size(), result.evaluations, result.seconds);
+  const auto [low, high] =
+      std::minmax_element(result.error.per_test.begin(), result.error.per_test.end());
+  fmt::print(out,
+             "e^2 per test: {:.4g} % on average ({:.4g} to {:.4g} % over {} tests; the paper's sum "
+             "{:.4g} %)\n{} ({:.1f} s)\n\n",
+             100 * result.error.Mean(), 100 * *low, 100 * *high, data.tests.size(),
+             100 * result.error.total, result.stop_reason, result.seconds);
   fmt::print(out, "{:<14} {:>12} {:>16} {:>16} {:>9} {:>10}\n", "test", "amplitude", "W_d measured",
              "W_d fitted", "diff", "e^2");
   std::size_t test_index = 0;
@@ -200,7 +274,12 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     }
     fmt::print(out, "\n");
   }
-  fmt::print(out, "\nfitted model: {}\n", output);
+  if (!findings.empty()) {
+    fmt::print(out, "\nidentifiability:\n");
+    for (const std::string& finding : findings) fmt::print(out, "  {}\n", finding);
+  }
+  for (const std::string& note : notes) fmt::print(out, "\nnote: {}", note);
+  fmt::print(out, "{}\nfitted model: {}\n", notes.empty() ? "" : "\n", output);
 }
 
 }  // namespace isolab::cli

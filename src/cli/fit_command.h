@@ -1,6 +1,7 @@
 // `isolab fit`: identifies an assembly's parameters from measured cyclic tests with CMA-ES
-// (identification/fit.h) and writes the fitted model file, with e^2 overall and per test and a
-// table of energy per cycle against amplitude, measured and fitted.
+// (identification/fit.h) and writes the fitted model file, with e^2 per test and their mean (and
+// the paper's sum), why the search stopped, what the data do not identify, and a table of energy
+// per cycle against amplitude, measured and fitted.
 #pragma once
 
 #include <optional>
@@ -22,7 +23,10 @@ struct FitOptions {
   std::vector<int> cycles;  // 1-based; empty: SelectCycles' default
   std::string specimen;     // "sequential", "independent"; empty: the data's header
   std::string output;       // fitted model file; default: <spec stem>.fitted.yaml
-  std::string force_unit = "kN", length_unit = "mm";  // of the data, unless its header says
+  // Of the data, unless a file's "# units:" line says; a file without one needs both.
+  std::string force_unit, length_unit;
+  int threads = 0;     // 0: every hardware thread (speed only: the result is the same)
+  bool force = false;  // fit beyond the work limit (analysis/test_data_checks.h)
   bool json = false;
   bool quiet = false;
 };

@@ -203,7 +203,8 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   }
   const analysis::Problem problem = analysis::Prepare(model, ChooseOverrides(model, options));
   analysis::SolveOptions solve;
-  solve.analysis = ChooseIntegrator(options, model.analysis);
+  solve.analysis = analysis::ChooseIntegrator(
+      model.analysis, {options.integrator, options.rtol, options.atol}, "--");
   solve.output = ChooseOutput(model, options, problem);
   solve.results_path = output;
   solve.version = ISOLAB_VERSION;

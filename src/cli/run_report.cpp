@@ -7,17 +7,6 @@
 
 namespace isolab::cli {
 
-model::AnalysisSection ChooseIntegrator(const RunOptions& options,
-                                        model::AnalysisSection analysis) {
-  if (options.integrator == "ida") analysis.integrator = model::AnalysisSection::Integrator::kIda;
-  if (options.integrator == "newmark") {
-    analysis.integrator = model::AnalysisSection::Integrator::kNewmark;
-  }
-  if (options.rtol) analysis.ida.relative_tolerance = *options.rtol;
-  if (options.atol) analysis.ida.absolute_tolerance = *options.atol;
-  return analysis;
-}
-
 std::string ChooseResultsPath(const RunOptions& options, const std::string& model_output_file) {
   if (!options.output.empty()) return options.output;
   if (!model_output_file.empty()) return model_output_file;

@@ -1,5 +1,4 @@
-// What the commands that run a model share: the command line's choice of integrator and
-// tolerances, the results path, and the message and exit code of a run that stopped early. The
+// What the commands that run a model share: the results path, and the message and exit code of a run that stopped early. The
 // text and JSON summaries are analysis::PrintSummary's and analysis::RunReport's.
 #pragma once
 
@@ -10,9 +9,6 @@
 #include "run_command.h"
 
 namespace isolab::cli {
-
-// The model's analysis section with --integrator, --rtol and --atol over it.
-model::AnalysisSection ChooseIntegrator(const RunOptions& options, model::AnalysisSection analysis);
 
 // -o, else the model's output.file, else <model stem>.h5.
 std::string ChooseResultsPath(const RunOptions& options, const std::string& model_output_file);

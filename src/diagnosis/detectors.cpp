@@ -16,6 +16,11 @@ constexpr double kRateThreshold = 0.05;         // partial R^2
 constexpr double kDissipationThreshold = 0.03;  // rise of ln(energy ratio)
 constexpr double kHardeningThreshold = 0.03;    // rise of ln(secant ratio)
 constexpr double kDegradationThreshold = 0.02;  // extra fall of ln(energy) in an amplitude group
+constexpr double kAsymmetryThreshold = 0.05;    // partial R^2 of a constant per test
+constexpr double kBacklashThreshold = 0.10;     // re-stiffening after reversal / initial stiffness
+
+// Distance-since-reversal bins of the backlash detector: this share of the largest half-cycle's
+// range each, as fine as the reversal band that splits half-cycles.
 
 // A group of half-cycles of one test at one amplitude (within kGroupWidth of the group's
 // smallest): a sinusoidal test at one amplitude is one group, a seismic history gives one group
@@ -310,6 +315,177 @@ Evidence Degradation(const Discrepancy& d, const std::vector<TestSummary>& tests
   return e;
 }
 
+// A per-test constant force: what no odd-symmetric law can make. Each test's residual mean, as a
+// share of its residual (the e^2 weights), summed over tests. Read over whole cycles between
+// reversals, an even number of half-cycles from the first: every test starts from rest moving
+// one way, so a model whose virgin loading differs from the device's leaves a residual of one
+// sign there in every test, and an odd number of half-cycles leaves half a cycle's odd residual
+// unpaired; neither is a strength that differs by direction.
+Evidence AsymmetricStrength(const Discrepancy& d) {
+  Evidence e;
+  e.statistic = "share of the residual explained by a constant force per test (partial R^2)";
+  e.threshold = kAsymmetryThreshold;
+  double explained = 0.0, total = 0.0, offset = 0.0, weights = 0.0;
+  int positive = 0, tests = 0;
+  for (std::size_t i = 0; i < d.data->tests.size(); ++i) {
+    const auto& test = d.data->tests[i];
+    std::vector<double> r;
+    const std::size_t pairs = test.half_cycles.size() / 2;
+    if (pairs == 0) continue;
+    for (const CycleSpan& span : d.data->fitted[i]) {
+      const std::size_t first = std::max(span.begin, test.half_cycles.front().begin);
+      const std::size_t last = std::min(span.end, test.half_cycles[2 * pairs - 1].end - 1);
+      for (std::size_t k = first; k < last; ++k) r.push_back(test.force[k] - d.model_force[i][k]);
+    }
+    if (r.empty()) continue;
+    double norm = 0.0;
+    for (const CycleSpan& span : d.data->fitted[i]) {
+      for (std::size_t k = span.begin; k < span.end; ++k) {
+        norm += std::pow(d.data->tests[i].force[k], 2);
+      }
+    }
+    const double w = norm > 0.0 ? 1.0 / norm : 1.0;
+    double sum = 0.0, square = 0.0;
+    for (const double v : r) sum += v, square += v * v;
+    const double mean = sum / double(r.size());
+    explained += w * double(r.size()) * mean * mean;
+    total += w * square;
+    offset += w * double(r.size()) * mean;
+    weights += w * double(r.size());
+    positive += mean > 0.0;
+    ++tests;
+  }
+  e.value = total > 0.0 ? explained / total : 0.0;
+  const double mean_offset = weights > 0.0 ? offset / weights : 0.0;
+  // The reversal forces: mean force at the top and at the bottom reversals, measured and modelled.
+  double top[2] = {0, 0}, bottom[2] = {0, 0};
+  int tops = 0, bottoms = 0;
+  for (const CycleRecord& c : d.cycles) {
+    const auto& test = d.data->tests[c.test];
+    const CycleSpan span = test.half_cycles[c.cycle - 1];
+    const bool rising = test.displacement[span.end - 1] > test.displacement[span.begin];
+    if (rising) {
+      top[0] += c.measured.end_force, top[1] += c.modelled.end_force, ++tops;
+    } else {
+      bottom[0] += c.measured.end_force, bottom[1] += c.modelled.end_force, ++bottoms;
+    }
+  }
+  e.finding = fmt::format(
+      "a constant force per test explains {:.1f} % of the residual; the mean offset is {:+.4g} "
+      "(force), of one sign in {} of {} tests",
+      100 * e.value, mean_offset, mean_offset >= 0 ? positive : tests - positive, tests);
+  e.supporting.push_back({"mean residual offset (force)", mean_offset});
+  if (tops > 0 && bottoms > 0) {
+    const double measured = 0.5 * (top[0] / tops + bottom[0] / bottoms);
+    const double modelled = 0.5 * (top[1] / tops + bottom[1] / bottoms);
+    e.finding += fmt::format(
+        "; at the reversals the measured force is {:+.4g} and {:+.4g} on average (midpoint "
+        "{:+.4g}), the model's {:+.4g} and {:+.4g}",
+        top[0] / tops, bottom[0] / bottoms, measured, top[1] / tops, bottom[1] / bottoms);
+    e.supporting.push_back(
+        {"midpoint of the reversal forces, measured less modelled (force)", measured - modelled});
+  }
+  return e;
+}
+
+// Backlash: a tangent stiffness that drops and then rises again before the loop's centre, at a
+// distance from the reversal that does not grow with the amplitude. Per half-cycle, the slope of
+// force against displacement over bins of distance d since the reversal (absolute, kBin of the
+// largest range each), in the first half of the half-cycle (d < its amplitude): there every law
+// of the rest of the catalogue stiffens monotonically less (a hardening spring stiffens again
+// only past the centre). Averaged over half-cycles, the largest rise from a nearer bin to a
+// farther one, less twice its standard error, measured less modelled, over the model's stiffness
+// right after the reversal.
+constexpr double kBin = 0.01;
+
+Evidence Backlash(const Discrepancy& d) {
+  Evidence e;
+  e.statistic =
+      "re-stiffening after a reversal: rise of the tangent before the loop's centre, measured "
+      "less modelled, over the stiffness after the reversal";
+  e.threshold = kBacklashThreshold;
+  double largest = 0.0;
+  for (const CycleRecord& c : d.cycles) largest = std::max(largest, 2.0 * c.amplitude);
+  const double width = kBin * largest;
+  if (!(width > 0.0)) return e;
+  // Per bin: sum, sum of squares and count of the half-cycles' slopes, measured and modelled.
+  struct Accumulator {
+    double sum = 0, square = 0, count = 0;
+    void Add(double v) { sum += v, square += v * v, count += 1; }
+    double Mean() const { return sum / count; }
+    double Variance() const {  // of the mean
+      return count > 1 ? std::max(square / count - Mean() * Mean(), 0.0) / (count - 1) : INFINITY;
+    }
+  };
+  std::map<int, Accumulator> measured, modelled;
+  for (const CycleRecord& c : d.cycles) {
+    const auto& test = d.data->tests[c.test];
+    const CycleSpan span = test.half_cycles[c.cycle - 1];
+    const double start = test.displacement[span.begin];
+    const int bins = static_cast<int>(c.amplitude / width);  // the first half only
+    for (int b = 0; b < bins; ++b) {
+      // Least-squares slope of force on displacement over the bin's samples.
+      double su = 0, sf = 0, sg = 0, suu = 0, suf = 0, sug = 0, n = 0;
+      for (std::size_t k = span.begin; k < span.end; ++k) {
+        const double distance = std::abs(test.displacement[k] - start);
+        if (distance < b * width || distance >= (b + 1) * width) continue;
+        const double u = test.displacement[k], f = test.force[k], g = d.model_force[c.test][k];
+        su += u, sf += f, sg += g, suu += u * u, suf += u * f, sug += u * g, n += 1;
+      }
+      const double spread = suu - su * su / std::max(n, 1.0);
+      if (n < 3 || !(spread > 0.0)) continue;
+      measured[b].Add((suf - su * sf / n) / spread);
+      modelled[b].Add((sug - su * sg / n) / spread);
+    }
+  }
+  // The largest rise over bins with at least two half-cycles (a scatter to judge by).
+  const auto largest_rise = [](const std::map<int, Accumulator>& slopes, bool with_error, int* from,
+                               int* to) {
+    double rise = 0.0;
+    for (const auto& [i, a] : slopes) {
+      if (a.count < 2) continue;
+      for (const auto& [j, b] : slopes) {
+        if (j <= i || b.count < 2) continue;
+        const double value =
+            b.Mean() - a.Mean() - (with_error ? 2.0 * std::sqrt(a.Variance() + b.Variance()) : 0.0);
+        if (value > rise) rise = value, *from = i, *to = j;
+      }
+    }
+    return rise;
+  };
+  int from = -1, to = -1, model_from = -1, model_to = -1;
+  const double rise = largest_rise(measured, true, &from, &to);
+  const double model_rise = largest_rise(modelled, false, &model_from, &model_to);
+  const auto first = modelled.find(0);
+  const double initial =
+      first != modelled.end() && first->second.count > 0 ? std::abs(first->second.Mean()) : 0.0;
+  if (!(initial > 0.0)) {
+    e.finding = "no half-cycle long enough to read the stiffness after its reversal";
+    return e;
+  }
+  e.value = std::max(0.0, (rise - model_rise) / initial);
+  e.supporting.push_back({"stiffness after the reversal, modelled (force/length)", initial});
+  if (from >= 0) {
+    e.finding = fmt::format(
+        "after reversals the measured tangent stiffness falls to {:.4g} at {:.3g}-{:.3g} from the "
+        "reversal and rises again to {:.4g} at {:.3g}-{:.3g} (length), a rise of {:.1f} % of the "
+        "stiffness after the reversal ({:.4g}) beyond twice its scatter; the model's rises by "
+        "{:.4g}",
+        measured[from].Mean(), from * width, (from + 1) * width, measured[to].Mean(), to * width,
+        (to + 1) * width, 100 * rise / initial, initial, model_rise);
+    e.supporting.push_back(
+        {"distance from the reversal where it stiffens again (length)", to * width});
+    // The contact re-engages at u_y + gap from the reversal: most of that distance is the gap.
+    e.start = {{"gap", 0.8 * to * width}, {"uy", std::max(0.2 * to * width, 0.5 * width)}};
+  } else {
+    e.finding = fmt::format(
+        "after reversals the measured tangent stiffness does not rise again before the loop's "
+        "centre (bins of {:.3g} from the reversal)",
+        width);
+  }
+  return e;
+}
+
 }  // namespace
 
 Evidence Detect(Effect effect, const Discrepancy& discrepancy) {
@@ -327,6 +503,12 @@ Evidence Detect(Effect effect, const Discrepancy& discrepancy) {
       break;
     case Effect::kCyclicDegradation:
       evidence = Degradation(discrepancy, tests);
+      break;
+    case Effect::kAsymmetricStrength:
+      evidence = AsymmetricStrength(discrepancy);
+      break;
+    case Effect::kBacklash:
+      evidence = Backlash(discrepancy);
       break;
   }
   evidence.effect = effect;

@@ -1,8 +1,13 @@
 #include "isolab/diagnosis/discrepancy.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
+
+#include "spectral.h"
 
 namespace isolab::diagnosis {
 namespace {
@@ -34,9 +39,20 @@ LoopMeasure Measure(const std::vector<double>& u, const std::vector<double>& f, 
   const auto [u_b, f_b] = ReversalMean(u, f, span, span.end - 1, range);
   const std::size_t a = span.begin, b = span.end - 1;
   const double chord_correction = 0.5 * (f[a] + f[b] - f_a - f_b) * (u[b] - u[a]);
-  return {identification::HalfCycleEnergy(u, f, span) + chord_correction,
-          (f_b - f_a) / (u_b - u_a)};
+  return {identification::HalfCycleEnergy(u, f, span) + chord_correction, (f_b - f_a) / (u_b - u_a),
+          f_a, f_b};
 }
+
+double Median(std::vector<double> values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// Samples at rest: the displacement within this share of its range of its first value, at least
+// this many of them.
+constexpr double kRestBand = 1e-3;
+constexpr std::size_t kRestSamples = 64;
 
 std::vector<double> CentralVelocity(const CyclicTestData& test) {
   const std::size_t n = test.time.size();
@@ -51,21 +67,120 @@ std::vector<double> CentralVelocity(const CyclicTestData& test) {
 
 }  // namespace
 
-double ForceNoise(const CyclicTestData& test) {
+double SecondDifferenceNoise(const CyclicTestData& test) {
   const std::vector<double>& f = test.force;
   if (f.size() < 5) return 0.0;
   std::vector<double> second;
   second.reserve(f.size());
   for (std::size_t k = 1; k + 1 < f.size(); ++k) second.push_back(f[k + 1] - 2.0 * f[k] + f[k - 1]);
-  const auto median = [](std::vector<double> values) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-  };
-  const double center = median(second);
+  const double center = Median(second);
   for (double& d : second) d = std::abs(d - center);
   // 1.4826 MAD is the standard deviation of a Gaussian.
-  return 1.4826 * median(second) / std::sqrt(6.0);
+  return 1.4826 * Median(second) / std::sqrt(6.0);
+}
+
+std::string NoiseEstimate::Describe() const {
+  switch (source) {
+    case Source::kRest:
+      return fmt::format("rest, {} samples", rest_samples);
+    case Source::kBand:
+      return fmt::format("band {:.3g}-{:.4g} per unit time", band_low, nyquist);
+    case Source::kNone:
+      break;
+  }
+  return "second differences (no band above the response)";
+}
+
+NoiseEstimate EstimateForceNoise(const CyclicTestData& test) {
+  return EstimateNoise(test, test.force);
+}
+
+NoiseEstimate EstimateNoise(const CyclicTestData& test, const std::vector<double>& f) {
+  NoiseEstimate estimate;
+  const std::vector<double>& u = test.displacement;
+  const std::size_t n = f.size();
+  if (n < 8) return estimate;
+  const auto [low, high] = std::minmax_element(u.begin(), u.end());
+  const double range = *high - *low;
+  // Samples at rest before the motion starts: the channel with nothing to measure.
+  std::size_t rest = 0;
+  while (rest < n && std::abs(u[rest] - u[0]) <= kRestBand * range) ++rest;
+  if (rest >= kRestSamples) {
+    double sum = 0.0, square = 0.0;
+    for (std::size_t k = 0; k < rest; ++k) sum += f[k], square += f[k] * f[k];
+    const double mean = sum / double(rest);
+    estimate.sigma = std::sqrt(std::max(square / double(rest) - mean * mean, 0.0) * double(rest) /
+                               double(rest - 1));
+    estimate.source = NoiseEstimate::Source::kRest;
+    estimate.rest_samples = static_cast<long>(rest);
+    return estimate;
+  }
+  const double dt = (test.time.back() - test.time.front()) / double(n - 1);
+  if (!(dt > 0.0)) return estimate;
+  const double nyquist = 0.5 / dt;
+  const std::size_t m = PaddedLength(n);
+  const double bin = 1.0 / (double(m) * dt);
+  // The band of the device's response: ten times the frequency below which 99 % of the
+  // displacement's power lies.
+  const std::vector<double> motion = Periodogram(u);
+  const double total = std::accumulate(motion.begin(), motion.end(), 0.0);
+  double cumulative = 0.0, motion_band = 0.0;
+  for (std::size_t k = 0; k < motion.size(); ++k) {
+    cumulative += motion[k];
+    if (cumulative >= 0.99 * total) {
+      motion_band = (double(k) + 1.0) * bin;
+      break;
+    }
+  }
+  const double band_low = std::min(10.0 * motion_band, 0.5 * nyquist);
+  const std::vector<double> power = Periodogram(f);
+  // Octave by octave above the band: a low quantile over the periodogram's chi-squared (2
+  // degrees of freedom, exponential) spread, which harmonic lines in a few bins do not move.
+  constexpr double kQuantile = 0.25;
+  const double quantile_of_mean = -std::log(1.0 - kQuantile);
+  double integral = 0.0, first_level = -1.0;
+  // Quarter octaves, so the integral follows a spectrum that rolls off, as a load cell's filter
+  // makes it, and a quantile within a band does not read its low end; but at least 128 bins each:
+  // neighbouring ordinates of a windowed, padded periodogram move together, and a quantile of a
+  // few independent ones reads high (16 bins of a 601-sample test read white noise 16 % high).
+  constexpr double kBandBins = 128.0;
+  std::vector<double> first_octave;
+  for (double lo = band_low; lo < nyquist;) {
+    double hi = std::min(lo * std::pow(2.0, 0.25), nyquist);
+    hi = std::min(std::max(hi, lo + kBandBins * bin), nyquist);
+    if (nyquist - hi < 0.5 * (hi - lo)) hi = nyquist;  // no sliver of a band at the top
+    std::vector<double> ordinates;
+    for (std::size_t k = static_cast<std::size_t>(std::ceil(lo / bin));
+         k < power.size() && double(k) * bin < hi; ++k) {
+      ordinates.push_back(power[k]);
+    }
+    if (ordinates.size() >= 4) {
+      const auto at =
+          ordinates.begin() + static_cast<std::ptrdiff_t>(kQuantile * double(ordinates.size() - 1));
+      std::nth_element(ordinates.begin(), at, ordinates.end());
+      const double level = *at / quantile_of_mean;
+      if (lo < 2.0 * band_low) first_octave.push_back(level);
+      if (first_level < 0.0) first_level = level;
+      integral += level * (hi - lo);
+    } else if (first_level >= 0.0) {
+      integral += first_level * (hi - lo);  // too few bins to read: as the first band
+    }
+    lo = hi;
+  }
+  if (first_level < 0.0) {  // no band above the response to read
+    CyclicTestData series = test;
+    series.force = f;
+    estimate.sigma = SecondDifferenceNoise(series);
+    return estimate;
+  }
+  // Below the band the noise is taken at the median level of the first octave above it: lines of
+  // the loops' harmonics raise a few bands' levels, which the median passes over.
+  if (!first_octave.empty()) first_level = Median(first_octave);
+  estimate.sigma = std::sqrt((first_level * band_low + integral) / nyquist);
+  estimate.source = NoiseEstimate::Source::kBand;
+  estimate.band_low = band_low;
+  estimate.nyquist = nyquist;
+  return estimate;
 }
 
 double NoiseFloor(const identification::FitData& data, const std::vector<double>& force_noise) {
@@ -97,28 +212,34 @@ identification::FitData AllCycles(std::vector<CyclicTestData> tests, bool one_sp
   return data;
 }
 
-double ResidualCorrelation(const Discrepancy& d) {
-  double lagged = 0.0, square = 0.0;
-  for (std::size_t i = 0; i < d.data->tests.size(); ++i) {
-    const auto& test = d.data->tests[i];
-    double norm = 0.0, test_lagged = 0.0, test_square = 0.0;
-    for (const CycleSpan& span : d.data->fitted[i]) {
-      for (std::size_t k = span.begin; k < span.end; ++k) {
-        const double r = test.force[k] - d.model_force[i][k];
-        norm += test.force[k] * test.force[k];
-        test_square += r * r;
-        if (k > span.begin) test_lagged += r * (test.force[k - 1] - d.model_force[i][k - 1]);
-      }
+std::vector<double> Discrepancy::Residual(std::size_t test) const {
+  std::vector<double> residual;
+  const auto& t = data->tests[test];
+  for (const CycleSpan& span : data->fitted[test]) {
+    for (std::size_t k = span.begin; k < span.end; ++k) {
+      residual.push_back(t.force[k] - model_force[test][k]);
     }
-    const double w = norm > 0.0 ? 1.0 / norm : 0.0;
-    lagged += w * test_lagged;
-    square += w * test_square;
   }
-  return square > 0.0 ? std::clamp(lagged / square, 0.0, 0.99) : 0.0;
+  return residual;
 }
 
-double EffectiveSamples(long samples, double rho) {
-  return static_cast<double>(samples) * (1.0 - rho) / (1.0 + rho);
+std::vector<double> CorrelationTimes(const Discrepancy& d) {
+  std::vector<double> times;
+  for (std::size_t i = 0; i < d.data->tests.size(); ++i) {
+    times.push_back(IntegratedCorrelationTime(d.Residual(i)));
+  }
+  return times;
+}
+
+double EffectiveSamples(const Discrepancy& d) {
+  const std::vector<double> times = CorrelationTimes(d);
+  double effective = 0.0;
+  for (std::size_t i = 0; i < d.data->tests.size(); ++i) {
+    long samples = 0;
+    for (const CycleSpan& span : d.data->fitted[i]) samples += long(span.end - span.begin);
+    effective += double(samples) / times[i];
+  }
+  return std::max(effective, 1.0);
 }
 
 long SampleCount(const identification::FitData& data) {
@@ -130,14 +251,24 @@ long SampleCount(const identification::FitData& data) {
 }
 
 Discrepancy Discrepancy::Of(const hysteresis::ParallelAssembly& model,
-                            const identification::FitData& data) {
+                            const identification::FitData& data,
+                            const std::vector<NoiseEstimate>* noise) {
   Discrepancy d;
   d.data = &data;
   d.model_force = identification::SimulateForces(model, data.tests, data.one_specimen);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];
     d.velocity.push_back(CentralVelocity(test));
-    d.force_noise.push_back(ForceNoise(test));
+    // The residual's noise reads lower than the force's where the model has taken out the
+    // loops' harmonics; neither can read below the noise itself, so the lower one is kept.
+    std::vector<double> residual(test.force.size());
+    for (std::size_t k = 0; k < residual.size(); ++k)
+      residual[k] = test.force[k] - d.model_force[i][k];
+    NoiseEstimate estimate = EstimateNoise(test, residual);
+    const NoiseEstimate& force = noise ? (*noise)[i] : EstimateForceNoise(test);
+    if (force.sigma < estimate.sigma) estimate = force;
+    d.noise.push_back(estimate);
+    d.force_noise.push_back(estimate.sigma);
     for (std::size_t h = 0; h < test.half_cycles.size(); ++h) {
       const CycleSpan half = test.half_cycles[h];
       const bool fitted = std::any_of(

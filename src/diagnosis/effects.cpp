@@ -4,10 +4,9 @@ namespace isolab::diagnosis {
 namespace {
 
 constexpr Effect kAllEffects[] = {
-    Effect::kRateDependence,
-    Effect::kAmplitudeDependentDissipation,
-    Effect::kLargeAmplitudeHardening,
-    Effect::kCyclicDegradation,
+    Effect::kRateDependence,          Effect::kAmplitudeDependentDissipation,
+    Effect::kLargeAmplitudeHardening, Effect::kCyclicDegradation,
+    Effect::kAsymmetricStrength,      Effect::kBacklash,
 };
 
 }  // namespace
@@ -24,6 +23,10 @@ std::string_view EffectName(Effect effect) {
       return "large_amplitude_hardening";
     case Effect::kCyclicDegradation:
       return "cyclic_degradation";
+    case Effect::kAsymmetricStrength:
+      return "asymmetric_strength";
+    case Effect::kBacklash:
+      return "backlash";
   }
   return "unknown";
 }
@@ -51,6 +54,19 @@ std::string_view EffectExplanation(Effect effect) {
              "stiffness fall with the slip accumulated (scragging / Mullins softening of filled "
              "rubber, heating of a lead core). A BHM2 element whose force falls with its "
              "accumulated slip (degrading_bhm2) carries it.";
+    case Effect::kAsymmetricStrength:
+      return "The device is stronger one way than the other: its friction or yield force differs "
+             "between the directions of motion, so the force is offset by a constant while it "
+             "slips (a friction damper whose pads bear unevenly, a sliding bearing on a slope). "
+             "Every other law in the catalogue is odd-symmetric and cannot carry it. An "
+             "elastoplastic element whose strength differs by direction "
+             "(asymmetric_elastoplastic) carries it.";
+    case Effect::kBacklash:
+      return "The device has play: after every reversal its force falls to near zero while the "
+             "displacement crosses a clearance, then it engages again and stiffens. The tangent "
+             "stiffness after a reversal first drops and then rises, which no law in the rest of "
+             "the catalogue does before the loop's centre. An elastoplastic element engaged "
+             "through a clearance (backlash_elastoplastic) carries it.";
   }
   return "";
 }
@@ -68,6 +84,10 @@ identification::ComponentSpec EffectComponent(Effect effect) {
       return {"hardening", LawType::kTrilinearElastic, {}, {}, {}};
     case Effect::kCyclicDegradation:
       return {"degrading", LawType::kDegradingBhm2, {}, {}, {}};
+    case Effect::kAsymmetricStrength:
+      return {"asymmetric", LawType::kAsymmetricElastoplastic, {}, {}, {}};
+    case Effect::kBacklash:
+      return {"play", LawType::kBacklashElastoplastic, {}, {}, {}};
   }
   return {};
 }

@@ -27,6 +27,10 @@ constexpr std::string_view kElastoplasticMech[] = {"ke", "fs"};
 constexpr std::string_view kBoucWenKeys[] = {"alpha", "beta", "gamma", "delta", "nu"};
 constexpr std::string_view kDegradingMath[] = {"k0", "k1", "uy", "loss", "slip_scale"};
 constexpr std::string_view kDegradingMech[] = {"ke", "kh", "fs", "loss", "slip_scale"};
+constexpr std::string_view kAsymmetricMath[] = {"k0", "uy_pos", "uy_neg"};
+constexpr std::string_view kAsymmetricMech[] = {"ke", "fs_pos", "fs_neg"};
+constexpr std::string_view kBacklashMath[] = {"k0", "uy", "gap"};
+constexpr std::string_view kBacklashMech[] = {"ke", "fs", "gap"};
 
 constexpr LawType kAllTypes[] = {
     LawType::kLinearSpring,
@@ -44,6 +48,8 @@ constexpr LawType kAllTypes[] = {
     LawType::kHdrBearing,
     LawType::kDoubleFrictionPendulum,
     LawType::kTripleFrictionPendulum,
+    LawType::kAsymmetricElastoplastic,
+    LawType::kBacklashElastoplastic,
 };
 
 // The breakpoint that may be omitted when the two slopes around it are equal (it then marks no
@@ -145,6 +151,16 @@ void ValidateMathematical(LawType type, const ParameterArray& v) {
     case LawType::kTripleFrictionPendulum:
       ValidateMultiplePendulum(type, v);
       return;
+    case LawType::kAsymmetricElastoplastic:
+      r.Greater("k0", 0.0);
+      r.Greater("uy_pos", 0.0);
+      r.Greater("uy_neg", 0.0);
+      return;
+    case LawType::kBacklashElastoplastic:
+      r.Greater("k0", 0.0);
+      r.Greater("uy", 0.0);
+      r.AtLeast("gap", 0.0);
+      return;
   }
 }
 
@@ -205,6 +221,16 @@ void ValidateMechanical(LawType type, const ParameterArray& v) {
     case LawType::kTripleFrictionPendulum:
       ValidateMultiplePendulum(type, v);  // the same keys in both forms
       return;
+    case LawType::kAsymmetricElastoplastic:
+      r.Greater("ke", 0.0);
+      r.Greater("fs_pos", 0.0);
+      r.Greater("fs_neg", 0.0);
+      return;
+    case LawType::kBacklashElastoplastic:
+      r.Greater("ke", 0.0);
+      r.Greater("fs", 0.0);
+      r.AtLeast("gap", 0.0);
+      return;
   }
 }
 
@@ -225,6 +251,10 @@ ParameterArray MechanicalFromMathematical(LawType type, const ParameterArray& m)
       return {m[0], m[1], m[2], (m[0] - m[1]) * m[3], m[4]};
     case LawType::kElastoplastic:
       return {m[0], m[0] * m[1], NAN, NAN, NAN};
+    case LawType::kAsymmetricElastoplastic:  // k0, uy_pos, uy_neg -> ke, fs_pos, fs_neg
+      return {m[0], m[0] * m[1], m[0] * m[2], NAN, NAN};
+    case LawType::kBacklashElastoplastic:  // k0, uy, gap -> ke, fs, gap
+      return {m[0], m[0] * m[1], m[2], NAN, NAN};
     case LawType::kLinearSpring:
     case LawType::kDashpot:
     case LawType::kTrilinearElastic:
@@ -259,6 +289,10 @@ ParameterArray MathematicalFromMechanical(LawType type, const ParameterArray& q)
       return {q[0], q[1], q[2], q[3] / (q[0] - q[1]), q[4]};
     case LawType::kElastoplastic:
       return {q[0], q[1] / q[0], NAN, NAN, NAN};
+    case LawType::kAsymmetricElastoplastic:
+      return {q[0], q[1] / q[0], q[2] / q[0], NAN, NAN};
+    case LawType::kBacklashElastoplastic:
+      return {q[0], q[1] / q[0], q[2], NAN, NAN};
     case LawType::kLinearSpring:
     case LawType::kDashpot:
     case LawType::kTrilinearElastic:
@@ -311,6 +345,10 @@ std::string_view LawName(LawType type) {
       return "double_friction_pendulum";
     case LawType::kTripleFrictionPendulum:
       return "triple_friction_pendulum";
+    case LawType::kAsymmetricElastoplastic:
+      return "asymmetric_elastoplastic";
+    case LawType::kBacklashElastoplastic:
+      return "backlash_elastoplastic";
   }
   return "unknown";
 }
@@ -352,6 +390,10 @@ std::span<const std::string_view> ParameterKeys(LawType type, ParameterForm form
     case LawType::kDoubleFrictionPendulum:
     case LawType::kTripleFrictionPendulum:
       return MultiplePendulumKeys(type);
+    case LawType::kAsymmetricElastoplastic:
+      return math ? Keys(kAsymmetricMath) : Keys(kAsymmetricMech);
+    case LawType::kBacklashElastoplastic:
+      return math ? Keys(kBacklashMath) : Keys(kBacklashMech);
   }
   return {};
 }
@@ -419,6 +461,10 @@ LawKernel LawParameters::Kernel() const {
     case LawType::kDoubleFrictionPendulum:
     case LawType::kTripleFrictionPendulum:
       return MultiplePendulumKernel(type_, q);
+    case LawType::kAsymmetricElastoplastic:
+      return PlaySlider{q[0], q[1], q[2], 0.0};
+    case LawType::kBacklashElastoplastic:
+      return PlaySlider{q[0], q[1], q[1], q[2]};
   }
   return Dashpot{0.0};
 }

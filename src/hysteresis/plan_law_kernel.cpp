@@ -6,7 +6,11 @@
 
 namespace isolab::hysteresis {
 
-bool HasCoupledForm(LawType type) { return type != LawType::kDegradingBhm2; }
+bool HasCoupledForm(LawType type) {
+  // The play sliders' direction-dependent strength and clearance have no 2-D form yet.
+  return type != LawType::kDegradingBhm2 && type != LawType::kAsymmetricElastoplastic &&
+         type != LawType::kBacklashElastoplastic;
+}
 
 PlanLawKernel CoupledKernel(const LawParameters& law) {
   if (!HasCoupledForm(law.type())) {

@@ -181,25 +181,31 @@ PhaseSwitch Switch(const BoucWen&, const LawPhase& phase, int, double, double, d
   return {phase, z};
 }
 
-// The degrading law has two internal variables (slider and accumulated slip) and no rate form
-// yet; sliders in series have one of their own (series_rate_form.h), with a variable per
-// element. HasRateForm keeps both away from this contract, so these are never reached.
+// The degrading law has two internal variables (slider and accumulated slip) and the play
+// sliders a clearance, and neither has a rate form yet; sliders in series have one of their own
+// (series_rate_form.h), with a variable per element. HasRateForm keeps them all away from this
+// contract, so these are never reached.
+template <class Law>
+concept WithoutRateContract = std::is_same_v<Law, DegradingSlider> ||
+                              std::is_same_v<Law, SeriesArrangement> ||
+                              std::is_same_v<Law, PlaySlider>;
+
 template <class Law>
 [[noreturn]] void NoRateForm() {
-  throw std::logic_error(std::is_same_v<Law, DegradingSlider>
-                             ? "degrading_bhm2 has no rate form (HasRateForm is false)"
-                             : "sliders in series take series_rate_form.h (HasRateForm is false)");
+  throw std::logic_error(std::is_same_v<Law, SeriesArrangement>
+                             ? "sliders in series take series_rate_form.h (HasRateForm is false)"
+                             : "the law has no rate form (HasRateForm is false)");
 }
 template <class Law>
-requires std::is_same_v<Law, DegradingSlider> || std::is_same_v<Law, SeriesArrangement> RateResponse
+requires WithoutRateContract<Law> RateResponse
 Evaluate(const Law&, const LawPhase&, double, double, double) {
   NoRateForm<Law>();
 }
 template <class Law>
-requires std::is_same_v<Law, DegradingSlider> || std::is_same_v<Law, SeriesArrangement>
+requires WithoutRateContract<Law>
 void Roots(const Law&, const LawPhase&, double, double, double, double*) { NoRateForm<Law>(); }
 template <class Law>
-requires std::is_same_v<Law, DegradingSlider> || std::is_same_v<Law, SeriesArrangement> PhaseSwitch
+requires WithoutRateContract<Law> PhaseSwitch
 Switch(const Law&, const LawPhase&, int, double, double, double) {
   NoRateForm<Law>();
 }
@@ -208,7 +214,8 @@ Switch(const Law&, const LawPhase&, int, double, double, double) {
 
 bool HasRateForm(const LawKernel& kernel) {
   return !std::holds_alternative<DegradingSlider>(kernel) &&
-         !std::holds_alternative<SeriesArrangement>(kernel);
+         !std::holds_alternative<SeriesArrangement>(kernel) &&
+         !std::holds_alternative<PlaySlider>(kernel);
 }
 
 int InternalVariableCount(const LawKernel& kernel) {

@@ -1,9 +1,14 @@
 #include "isolab/identification/parametrisation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
+
+#include "parallel_for.h"
 
 namespace isolab::identification {
 
@@ -38,6 +43,10 @@ std::vector<std::string> CoordinateNames(LawType type) {
     case LawType::kLinearSpring:
     case LawType::kDashpot:
       return {};
+    case LawType::kAsymmetricElastoplastic:
+      return {"uy_pos", "uy_neg"};
+    case LawType::kBacklashElastoplastic:
+      return {"uy", "gap"};
     case LawType::kBoucWen:
     case LawType::kFrictionPendulum:
     case LawType::kLeadRubber:
@@ -51,6 +60,25 @@ std::vector<std::string> CoordinateNames(LawType type) {
 }
 
 namespace {
+
+// What each amplitude of a law type is, in the law's mathematical parameters.
+std::vector<const char*> AmplitudeKeys(LawType type) {
+  switch (type) {
+    case LawType::kThm2:
+      return {"k0-k1", "k1", "k2"};
+    case LawType::kBhm2:
+    case LawType::kDegradingBhm2:
+      return {"k0-k1", "k1"};
+    case LawType::kTrilinearElastic:
+      return {"k1", "k2"};
+    case LawType::kLinearSpring:
+      return {"k"};
+    case LawType::kDashpot:
+      return {"c"};
+    default:
+      return {"k0"};
+  }
+}
 
 // Amplitudes of a law type and whether each must be >= 0: THM2 and BHM2 (k0 - k1, k1, [k2]),
 // trilinear (k1, k2), and one stiffness (or c) for the others.
@@ -72,7 +100,8 @@ CoordinateRange DefaultRange(const std::string& name, const DataScales& s) {
   const double u = s.displacement;
   if (name == "k1_ratio") return {1e-5, 0.99, true};
   if (name == "k2_ratio") return {-3.0, 0.99, false};
-  if (name == "uy") return {1e-4 * u, u, true};
+  if (name == "uy" || name == "uy_pos" || name == "uy_neg") return {1e-4 * u, u, true};
+  if (name == "gap") return {1e-3 * u, u, true};
   if (name == "uyh" || name == "uyh_gap") return {1e-2 * u, 2 * u, true};
   if (name == "loss") return {0.0, 0.95, false};
   // A cycle of amplitude u slips about 4 u: from a fraction of a cycle to many cycles.
@@ -82,14 +111,14 @@ CoordinateRange DefaultRange(const std::string& name, const DataScales& s) {
 
 double Clamp(double u, double limit) { return std::clamp(u, -limit, limit); }
 
-// Force of one law with unit amplitude driven through the tests, into column `column` of each
-// test's basis.
-void UnitLawForce(LawType type, std::vector<double> mathematical,
-                  std::span<const CyclicTestData> tests, bool one_specimen, Eigen::Index column,
+// One law with unit amplitude driven through tests [first, last) into column `column` of each
+// test's basis: each from rest, or, for one specimen, in order from the state the previous test
+// left (then the range is all tests).
+void UnitLawForce(const hysteresis::ParallelAssembly& law, std::span<const CyclicTestData> tests,
+                  std::size_t first, std::size_t last, bool one_specimen, Eigen::Index column,
                   std::vector<Eigen::MatrixXd>* bases) {
-  const hysteresis::ParallelAssembly law = hysteresis::SingleLaw(type, std::move(mathematical));
   std::vector<hysteresis::LawState> state(1);
-  for (std::size_t i = 0; i < tests.size(); ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     if (!one_specimen) state[0] = {};
     Eigen::MatrixXd& basis = (*bases)[i];
     // Column-major storage: a column is contiguous.
@@ -160,14 +189,23 @@ std::vector<std::vector<double>> ModelParametrisation::ShapeValues(
 }
 
 void ModelParametrisation::Basis(std::span<const double> x, std::span<const CyclicTestData> tests,
-                                 bool one_specimen, std::vector<Eigen::MatrixXd>* bases) const {
+                                 bool one_specimen, std::vector<Eigen::MatrixXd>* bases,
+                                 int threads) const {
   const auto shapes = ShapeValues(x);
   bases->resize(tests.size());
   for (std::size_t i = 0; i < tests.size(); ++i) {
     (*bases)[i].resize(static_cast<Eigen::Index>(tests[i].displacement.size()), amplitude_count());
   }
+  // The laws' runs through the tests, the costly part, are collected first and shared among the
+  // threads; each writes its own column. A run carries state from test to test for one specimen,
+  // so it then covers every test; else each test is a run of its own.
+  struct Run {
+    hysteresis::ParallelAssembly law;
+    Eigen::Index column;
+  };
+  std::vector<Run> runs;
   const auto unit = [&](LawType type, std::vector<double> mathematical, Eigen::Index column) {
-    UnitLawForce(type, std::move(mathematical), tests, one_specimen, column, bases);
+    runs.push_back({hysteresis::SingleLaw(type, std::move(mathematical)), column});
   };
   // Columns that are a function of each sample's displacement (and rate) alone.
   const auto each_test = [&](auto fill) {
@@ -177,6 +215,8 @@ void ModelParametrisation::Basis(std::span<const double> x, std::span<const Cycl
            (*bases)[i]);
     }
   };
+  // Columns formed from others once every run is done.
+  std::vector<std::function<void()>> afterwards;
   for (std::size_t c = 0; c < components_.size(); ++c) {
     const std::vector<double>& s = shapes[c];
     const int a = first_amplitude_[c];
@@ -208,14 +248,20 @@ void ModelParametrisation::Basis(std::span<const double> x, std::span<const Cycl
       case LawType::kElastoplastic:
         unit(LawType::kElastoplastic, {1.0, s[0]}, a);
         break;
+      case LawType::kAsymmetricElastoplastic:
+      case LawType::kBacklashElastoplastic:
+        unit(components_[c].type, {1.0, s[0], s[1]}, a);
+        break;
       case LawType::kDegradingBhm2:
         // phi(kappa) x [elastoplastic, k0 = 1] and phi(kappa) u; the slip, so phi, does not
         // depend on the stiffnesses, and the second column is 2 f(k1 = 1/2) - f(k1 = 0).
         unit(LawType::kDegradingBhm2, {1.0, 0.0, s[0], s[1], s[2]}, a);
         unit(LawType::kDegradingBhm2, {1.0, 0.5, s[0], s[1], s[2]}, a + 1);
-        for (Eigen::MatrixXd& basis : *bases) {
-          basis.col(a + 1) = 2.0 * basis.col(a + 1) - basis.col(a);
-        }
+        afterwards.push_back([bases, a] {
+          for (Eigen::MatrixXd& basis : *bases) {
+            basis.col(a + 1) = 2.0 * basis.col(a + 1) - basis.col(a);
+          }
+        });
         break;
       case LawType::kTrilinearElastic:
         clamped(s[0], a);
@@ -245,6 +291,24 @@ void ModelParametrisation::Basis(std::span<const double> x, std::span<const Cycl
         throw std::logic_error("no basis: CoordinateNames refuses this law");
     }
   }
+  const std::size_t per_run = one_specimen ? 1 : tests.size();
+  ParallelFor(runs.size() * per_run, threads, [&](std::size_t task) {
+    const Run& run = runs[task / per_run];
+    const std::size_t first = one_specimen ? 0 : task % per_run;
+    const std::size_t last = one_specimen ? tests.size() : first + 1;
+    UnitLawForce(run.law, tests, first, last, one_specimen, run.column, bases);
+  });
+  for (const auto& step : afterwards) step();
+}
+
+std::vector<std::string> ModelParametrisation::AmplitudeNames() const {
+  std::vector<std::string> names;
+  for (const ComponentSpec& spec : components_) {
+    for (const char* amplitude : AmplitudeKeys(spec.type)) {
+      names.push_back(spec.name + "." + amplitude);
+    }
+  }
+  return names;
 }
 
 std::vector<std::vector<double>> ModelParametrisation::Mathematical(
@@ -272,6 +336,10 @@ std::vector<std::vector<double>> ModelParametrisation::Mathematical(
         break;
       case LawType::kElastoplastic:
         result.push_back({a[0], s[0]});
+        break;
+      case LawType::kAsymmetricElastoplastic:
+      case LawType::kBacklashElastoplastic:
+        result.push_back({a[0], s[0], s[1]});
         break;
       case LawType::kTrilinearElastic:
         result.push_back({a[0], a[1], s[0]});
@@ -310,6 +378,34 @@ std::vector<double> ModelParametrisation::StartPoint() const {
     x.push_back(it != spec.start.end() ? slot.range.Inverse(it->second) : 0.5);
   }
   return x;
+}
+
+}  // namespace isolab::identification
+
+namespace isolab::identification {
+
+std::vector<std::string> SimplifyComponents(const std::vector<std::string>& names,
+                                            std::vector<LawType>* types,
+                                            std::vector<std::vector<double>>* mathematical) {
+  std::vector<std::string> notes;
+  for (std::size_t c = 0; c < types->size(); ++c) {
+    std::vector<double>& m = (*mathematical)[c];
+    const LawType type = (*types)[c];
+    const bool slider_gone =
+        (type == LawType::kBhm2 || type == LawType::kThm2 || type == LawType::kDegradingBhm2) &&
+        m[0] == m[1];
+    if (!slider_gone) continue;
+    const LawType reduced =
+        type == LawType::kThm2 ? LawType::kTrilinearElastic : LawType::kLinearSpring;
+    notes.push_back(fmt::format(
+        "{} ({}): the fit gave its slider no stiffness (k0 - k1 = 0), so it is written as the "
+        "{} that remains",
+        names[c], hysteresis::LawName(type), hysteresis::LawName(reduced)));
+    m = reduced == LawType::kTrilinearElastic ? std::vector<double>{m[1], m[2], m[4]}
+                                              : std::vector<double>{m[1]};
+    (*types)[c] = reduced;
+  }
+  return notes;
 }
 
 }  // namespace isolab::identification

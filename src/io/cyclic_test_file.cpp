@@ -39,10 +39,10 @@ std::vector<std::string> Split(const std::string& line) {
   return fields;
 }
 
-// "# units: force kN, length mm" (either order, either part).
-void ReadUnitsComment(const std::string& line, CyclicTestUnits* units) {
+// "# units: force kN, length mm" (either order, either part). True when the line is one.
+bool ReadUnitsComment(const std::string& line, CyclicTestUnits* units) {
   const auto colon = line.find(':');
-  if (Lower(line).find("units") == std::string::npos || colon == std::string::npos) return;
+  if (Lower(line).find("units") == std::string::npos || colon == std::string::npos) return false;
   for (const std::string& part : Split(line.substr(colon + 1))) {
     std::stringstream words(part);
     std::string what, unit;
@@ -50,6 +50,7 @@ void ReadUnitsComment(const std::string& line, CyclicTestUnits* units) {
     if (Lower(what) == "force") units->force = unit;
     if (Lower(what) == "length") units->length = unit;
   }
+  return true;
 }
 
 // "# specimen: one, in order" (or "independent").
@@ -68,7 +69,7 @@ void ReadSpecimenComment(const std::string& path, int line_number, const std::st
 }
 
 void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& into,
-              std::vector<CyclicTestData>* tests, bool* one_specimen) {
+              std::vector<CyclicTestData>* tests, bool* one_specimen, bool* has_units) {
   TextLines in(path);
   if (!in.is_open()) throw InputError({path}, "cannot open the test data");
   std::map<std::string, int> column;
@@ -82,7 +83,7 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
     if (line.empty()) continue;
     if (line[0] == '#') {
       if (column.empty()) {
-        ReadUnitsComment(line, &units);
+        *has_units = ReadUnitsComment(line, &units) || *has_units;
         ReadSpecimenComment(path, line_number, line, one_specimen);
       }
       continue;
@@ -160,7 +161,10 @@ CyclicTestSet ReadCyclicTests(const std::vector<std::string>& paths,
   std::vector<CyclicTestData>& tests = set.tests;
   for (const std::string& path : paths) {
     const std::size_t first = tests.size();
-    ReadFile(path, file_units, into, &tests, &set.one_specimen);
+    bool has_units = false;
+    ReadFile(path, file_units, into, &tests, &set.one_specimen, &has_units);
+    if (!has_units) set.without_units.push_back(path);
+    set.source.resize(tests.size(), path);
     for (std::size_t i = first; i < tests.size(); ++i) {
       CyclicTestData& test = tests[i];
       if (RangeOf(test.force) == 0.0) {

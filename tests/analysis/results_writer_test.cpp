@@ -1,4 +1,4 @@
-// Results streamed while the run advances (results_writer.h, run_analysis.h's RunAndRecord)
+// Results streamed while the run advances (results_writer.h, solve.h's Solve)
 // against the same run held in memory (ResponseHistory): the datasets equal bit for bit through
 // buffer boundaries, every N-th row is the in-memory run's row N k, peaks with output every 10
 // steps equal the full run's (and differ from peaks read off the thinned history), summary-only

@@ -1,12 +1,18 @@
-// `isolab cyclic` end to end: the binary's output, exit codes and files.
+// `isolab cyclic` end to end: the binary's output, exit codes and files; --path and --orbit: a
+// model driven along cyclic's own sinusoid (its loop again, to the digits the CSV keeps), round a
+// circle (the coupled slider's closed forms), a plan model's isolator along a biaxial path, and
+// the errors.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
@@ -104,6 +110,129 @@ TEST(CyclicCommand, BadOptionsExitWithCodeTwo) {
             2);  // no amplitude
   EXPECT_EQ(RunIsolab("cyclic /nonexistent.yaml", true).exit_code, 2);
   EXPECT_EQ(RunIsolab("frobnicate", true).exit_code, 2);
+}
+
+std::filesystem::path Scratch(const std::string& name) {
+  const auto directory = isolab::testing::OwnTestDirectory();
+  std::filesystem::create_directories(directory);
+  const auto path = directory / name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+// Rows of a CSV with one header line, as numbers.
+std::vector<std::vector<double>> ReadRows(const std::filesystem::path& csv, int skip = 1) {
+  std::ifstream in(csv);
+  std::string line;
+  for (int k = 0; k < skip; ++k) std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(CyclicCommand, APathReplaysCyclicsOwnSinusoidToTheDigitsItsCsvKeeps) {
+  const auto loop = Scratch("loop.csv");
+  ASSERT_EQ(RunIsolab("cyclic " + Model("table9_thm1_system.yaml") + " -a 150 -n 2 --csv " +
+                      loop.string())
+                .exit_code,
+            0);
+  const auto rows = ReadRows(loop);
+  const auto path = Scratch("sinusoid_path.csv");
+  {
+    std::ofstream out(path);
+    out.precision(12);  // every digit of the loop's CSV (10 significant)
+    out << "# units: force kN, length mm\ntime,displacement,force\n";
+    for (const auto& row : rows) out << row[0] << "," << row[1] << "," << row[2] << "\n";
+  }
+  const auto replayed = Scratch("replayed.csv");
+  const Outcome run = RunIsolab("cyclic " + Model("table9_thm1_system.yaml") + " --path " +
+                                path.string() + " --json --csv " + replayed.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto json = nlohmann::json::parse(run.output)["runs"][0];
+  EXPECT_FALSE(json["plan"].get<bool>());
+  // The displacements to the 10 digits the loop's CSV keeps: the same forces to about as many
+  // (the series springs' k0 = 1e6 amplify a displacement's last digit a millionfold at most).
+  EXPECT_LT(json["comparison"]["e2"].get<double>(), 1e-14);
+  const auto again = ReadRows(replayed);
+  ASSERT_EQ(again.size(), rows.size());
+  for (std::size_t k = 0; k < rows.size(); k += 7) {
+    EXPECT_NEAR(again[k][2], rows[k][2], 1e-7 * (1 + std::abs(rows[k][2]))) << k;
+  }
+}
+
+TEST(CyclicCommand, RoundACircleTheCoupledSliderMeetsItsClosedForms) {
+  const auto model = Scratch("slider.yaml");
+  std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
+                          "isolation:\n  components:\n"
+                          "    - {name: slider, type: elastoplastic, k0: 9, uy: 1}\n";
+  const int steps = 2000;
+  const Outcome run =
+      RunIsolab("cyclic " + model.string() + " --orbit circle -a 10 -T 1 -n 2 --steps-per-cycle " +
+                std::to_string(steps) + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto cycle = nlohmann::json::parse(run.output)["runs"][0]["cycles"][1];
+  const double fx = cycle["force_at_end"][0], fy = cycle["force_at_end"][1];
+  EXPECT_NEAR(std::hypot(fx, fy), 9.0, 1e-9);  // fs, slipping
+  EXPECT_NEAR(M_PI / 2 - std::atan2(fy, fx), std::asin(0.1), 2 * M_PI / steps);
+  const double rho = std::sqrt(99.0);
+  EXPECT_NEAR(cycle["dissipated"].get<double>() / (2 * M_PI * 9.0 * rho), 1.0,
+              2 * M_PI / (steps * rho));
+  const Outcome text = RunIsolab("cyclic " + model.string() + " --orbit figure8 -a 10 -n 1");
+  EXPECT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("two directions"), std::string::npos) << text.output;
+}
+
+TEST(CyclicCommand, APlanModelsIsolatorFollowsABiaxialPath) {
+  const auto path = Scratch("biaxial.csv");
+  {
+    std::ofstream out(path);
+    out << "# units: force kN, length mm\ntime,displacement_x,displacement_y\n";
+    for (int k = 0; k <= 800; ++k) {
+      const double t = 0.005 * k;
+      out << t << "," << 80 * std::sin(2.1 * t) << "," << 50 * std::sin(3.3 * t) << "\n";
+    }
+  }
+  const std::string plan =
+      std::string(ISOLAB_SOURCE_DIR) + "/models/plan/five_story_table9_plan.yaml";
+  const Outcome run =
+      RunIsolab("cyclic " + plan + " --isolator sw --path " + path.string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto json = nlohmann::json::parse(run.output)["runs"];
+  ASSERT_EQ(json.size(), 1u);
+  EXPECT_TRUE(json[0]["plan"].get<bool>());
+  EXPECT_EQ(json[0]["components"].size(), 9u);
+  EXPECT_GT(json[0]["dissipated"].get<double>(), 0.0);
+  const Outcome missing =
+      RunIsolab("cyclic " + plan + " --isolator nowhere --path " + path.string(), true);
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("--isolator nowhere"), std::string::npos) << missing.output;
+}
+
+TEST(CyclicCommand, PathsAreCheckedAndErrorsLocated) {
+  const auto bare = Scratch("bare_path.csv");
+  std::ofstream(bare) << "time,displacement\n0,0\n1,5\n2,0\n";
+  const std::string table7 = Model("table7_thm1_hard.yaml");
+  Outcome run = RunIsolab("cyclic " + table7 + " --path " + bare.string(), true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("bare_path.csv: no '# units:"), std::string::npos) << run.output;
+  EXPECT_EQ(RunIsolab("cyclic " + table7 + " --path " + bare.string() +
+                      " --force-unit kN --length-unit mm")
+                .exit_code,
+            0);
+  run = RunIsolab("cyclic " + table7 + " --path " + bare.string() + " --orbit circle -a 5", true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  const auto broken = Scratch("broken_path.csv");
+  std::ofstream(broken) << "# units: force kN, length mm\ntime,displacement\n0,0\n1,x\n";
+  run = RunIsolab("cyclic " + table7 + " --path " + broken.string(), true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("broken_path.csv:4: column 2"), std::string::npos) << run.output;
+  run = RunIsolab("cyclic " + table7 + " --orbit circle", true);  // the file's amplitude is used
+  EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
 }  // namespace

@@ -40,11 +40,12 @@ std::string Generate(const std::string& truth, unsigned seed) {
 TEST(DiagnoseCommand, NamesCyclicDegradationAndWritesReportAndModel) {
   const std::string data = Generate("cyclic_degradation", 15);
   const auto stem = Scratch("degradation");
-  for (const char* suffix : {".md", ".json", ".model.yaml"}) {
+  for (const char* suffix : {".md", ".json", ".model.yaml", ".residual.csv"}) {
     std::filesystem::remove(stem.string() + suffix);
   }
-  const auto run = RunIsolab("diagnose " + data + " --base " + kSource +
-                             "/models/diagnosis/base_bhm2.yaml --json -q --out " + stem.string());
+  const auto run =
+      RunIsolab("diagnose " + data + " --base " + kSource +
+                "/models/diagnosis/base_bhm2.yaml --json -q --no-plot --out " + stem.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto json = nlohmann::json::parse(run.output);
   ASSERT_EQ(json["effects"], nlohmann::json::array({"cyclic_degradation"}));
@@ -64,6 +65,21 @@ TEST(DiagnoseCommand, NamesCyclicDegradationAndWritesReportAndModel) {
   const std::string text((std::istreambuf_iterator<char>(markdown)), {});
   EXPECT_NE(text.find("**cyclic_degradation**"), std::string::npos);
   EXPECT_NE(text.find("## Where the residual lies"), std::string::npos);
+  // The report opens with the verdict on what is left; here the degradation closes the gap.
+  EXPECT_EQ(text.find("**Verdict: the residual is noise"), text.find("\n\n") + 2) << text;
+  EXPECT_EQ(json["verdict"]["kind"], "noise");
+  EXPECT_EQ(json["stop"], "at_noise_floor");
+  EXPECT_FALSE(json["head"].empty());
+  // The residual, sample by sample, with its units.
+  std::ifstream residual(stem.string() + ".residual.csv");
+  std::string units, header;
+  std::getline(residual, units);
+  std::getline(residual, header);
+  EXPECT_EQ(units, "# units: force kN, length mm");
+  EXPECT_EQ(header, "test,time,displacement,velocity,measured,base,final,residual,noise");
+  int rows = 0;
+  for (std::string line; std::getline(residual, line);) ++rows;
+  EXPECT_EQ(rows, 6 * 2 * 601);
   const std::string model = stem.string() + ".model.yaml";
   const auto cyclic = RunIsolab("cyclic " + model + " -a 100 --json");
   EXPECT_EQ(cyclic.exit_code, 0) << cyclic.output;

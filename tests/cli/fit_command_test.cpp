@@ -60,6 +60,8 @@ TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
   EXPECT_NEAR(c["uyh"].get<double>(), 120, 1e-2);
   const auto cyclic = RunIsolab("cyclic " + fitted.string() + " -a 100 --json");
   EXPECT_EQ(cyclic.exit_code, 0) << cyclic.output;
+  // e^2 is the paper's sum over tests; per test, and their mean, is what reads right.
+  EXPECT_NEAR(json["e2_mean"].get<double>(), json["e2"].get<double>() / 4, 1e-15);
   // A building model takes the fitted isolator with isolation: {file: fitted.yaml}.
   const auto building = fitted.parent_path() / "building_on_fitted.yaml";
   std::filesystem::copy_file(Data("building_on_fitted.yaml"), building,
@@ -148,23 +150,95 @@ TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
   }
 }
 
-TEST(FitCommand, AModelIsolabWouldRefuseIsNotWritten) {
-  // A linear spring's data (F = 0.5 u) need only the trilinear spring (k1 = k2 = 0.5): the
-  // elastoplastic components get k0 = 0, which isolab cyclic refuses (k0 must be > 0). The fit
-  // used to write that model and exit 0.
+TEST(FitCommand, AComponentFittedToZeroIsDroppedWithANoteAndTheModelWritten) {
+  // A linear spring's data (F = 0.5 u) need only the trilinear spring (k1 = k2 = 0.5): an
+  // elastoplastic component gets no stiffness. The fit drops it with a note and writes the rest,
+  // a model isolab cyclic reads, rather than refusing the whole fit.
   const auto output = isolab::testing::OwnTestFile("linear_spring.fitted.yaml");
-  const auto run =
-      RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
-                    " --budget 300 -q -o " + output.string(),
-                true);
-  EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("three_laws_spec.yaml: the identified model is not one isolab can use "
-                            "(isolation.components["),
+  std::filesystem::remove(output);
+  const auto run = RunIsolab("fit " + Data("linear_spring.csv") + " --model " +
+                             Data("three_laws_spec.yaml") + " --budget 300 -o " + output.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("(elastoplastic) was dropped: the fit gave it no stiffness"),
             std::string::npos)
       << run.output;
-  // Which of the two elastoplastic components is left without stiffness is the fit's choice.
-  EXPECT_NE(run.output.find("].k0 = 0 (must be > 0))"), std::string::npos) << run.output;
+  ASSERT_TRUE(std::filesystem::exists(output));
+  const auto cyclic = RunIsolab("cyclic " + output.string() + " -a 50 --json");
+  EXPECT_EQ(cyclic.exit_code, 0) << cyclic.output;
+}
+
+TEST(FitCommand, DataWithoutUnitsAreRefusedUnlessTheCommandLineGivesThem) {
+  // Read silently as kN and mm, data in kip and in would give k0 5.7 times too large with the
+  // same e^2: a file without a units line needs both units on the command line.
+  const auto bare = TemporaryFile("no_units.csv");
+  {
+    std::ifstream in(Data("linear_spring.csv"));
+    std::ofstream out(bare);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("#", 0) != 0) out << line << "\n";
+    }
+  }
+  const auto output = TemporaryFile("no_units.yaml");
+  const std::string command = "fit " + bare.string() + " --model " + Data("three_laws_spec.yaml") +
+                              " --budget 300 -q -o " + output.string();
+  auto run = RunIsolab(command, true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("no_units.csv: no '# units: force ..., length ...' line: give the "
+                            "data's units in the file or with --force-unit and --length-unit"),
+            std::string::npos)
+      << run.output;
   EXPECT_FALSE(std::filesystem::exists(output));
+  run = RunIsolab(command + " --force-unit kN", true);  // one unit is not enough
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  run = RunIsolab(command + " --force-unit kN --length-unit mm --json");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+}
+
+TEST(FitCommand, DataBeyondWhatSquaresHoldAreLocated) {
+  const auto huge = TemporaryFile("huge.csv");
+  {
+    std::ifstream in(Data("linear_spring.csv"));
+    std::ofstream out(huge);
+    int row = 0;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("u=50,", 0) == 0 && ++row == 3)
+        line = line.substr(0, line.rfind(',')) + ",1e300";
+      out << line << "\n";
+    }
+  }
+  const auto run = RunIsolab("fit " + huge.string() + " --model " + Data("three_laws_spec.yaml") +
+                                 " -q -o " + TemporaryFile("huge.yaml").string(),
+                             true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("huge.csv: test 'u=50': column 'force' reaches 1e+300"),
+            std::string::npos)
+      << run.output;
+}
+
+TEST(FitCommand, WorkBeyondTheLimitIsRefusedBeforeTheFitAndSaidOtherwise) {
+  const std::string spec = " --model " + Data("three_laws_spec.yaml");
+  const auto output = TemporaryFile("work.yaml");
+  // 60,001 samples, two laws run per evaluation (the elastoplastic elements; the trilinear
+  // spring is a clamp of u): 10^7 evaluations are 1.2e12 sample-law runs, beyond 1e11.
+  const auto dense = TemporaryFile("dense.csv");
+  ASSERT_EQ(RunIsolab("cyclic " + Data("three_laws.yaml") +
+                      " -a 50 -T 2 -n 3 --steps-per-cycle 20000 --test-data " + dense.string())
+                .exit_code,
+            0);
+  auto run = RunIsolab(
+      "fit " + dense.string() + spec + " --budget 10000000 -q -o " + output.string(), true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("work: up to 10000000 evaluations x 60001 samples x 2 laws = 1.2e+12"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("beyond the limit"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(output));
+  // Within it, the estimate goes to stderr before the fit starts.
+  run = RunIsolab("fit " + Data("linear_spring.csv") + spec + " --budget 300 -o " + output.string(),
+                  true);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("work: up to 300 evaluations x 41 samples x 2 laws"), std::string::npos)
+      << run.output;
 }
 
 TEST(FitCommand, BadSpecificationsAreLocatedBeforeTheFit) {

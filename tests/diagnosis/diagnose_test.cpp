@@ -1,7 +1,9 @@
 // The diagnosis workflow on data with hidden effects (models/diagnosis/, 1 % noise): given only
 // the data and a one-BHM2 base it must name the effect the truth has over the base, nothing in
-// the null case, and both effects, larger first, in the two-effect case; the e^2 after the
-// addition must be at most a quarter of the base's or within 1.5 x the noise floor.
+// the null case, and both effects, larger first, in the two-effect case, and bring e^2 to the
+// noise floor, the residual judged noise. A device outside the catalogue (a force in phase with
+// the acceleration) must name nothing and say that a structured residual remains. The stop
+// reasons and max_steps are checked, and the options' checks.
 #include "isolab/diagnosis/diagnose.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +13,7 @@
 #include <random>
 
 #include "diagnosis/hidden_effect_cases.h"
+#include "isolab/core/errors.h"
 
 namespace isolab::diagnosis {
 namespace {
@@ -54,11 +57,16 @@ void ExpectNamesOnly(const Diagnosis& d, const std::vector<Effect>& effects) {
   }
 }
 
+// The truths are the base plus catalogue components, so the final model can match them: what is
+// left is the noise, and the search stops only once e^2 is within noise_margin (1.2) of the
+// floor. The verdict must then call the residual noise. (A quarter of the base's e^2, the
+// earlier criterion, passes a model left at 20 times the noise.)
 void ExpectGapClosed(const Diagnosis& d) {
   const double final_e2 = d.final_model.fit.error.total;
-  EXPECT_TRUE(final_e2 <= 0.25 * d.base.fit.error.total || final_e2 <= 1.5 * d.noise_floor)
-      << "base e^2 " << d.base.fit.error.total << ", final " << final_e2 << ", noise floor "
-      << d.noise_floor;
+  EXPECT_LE(final_e2, 1.2 * d.noise_floor) << "base e^2 " << d.base.fit.error.total << ", final "
+                                           << final_e2 << ", noise floor " << d.noise_floor;
+  EXPECT_EQ(d.stop, StopReason::kAtNoiseFloor) << d.stop_reason;
+  EXPECT_EQ(d.verdict.kind, ResidualVerdict::Kind::kNoise) << d.verdict.headline;
 }
 
 TEST(Diagnose, NullCaseNamesNothing) {
@@ -70,6 +78,8 @@ TEST(Diagnose, NullCaseNamesNothing) {
   }
   // The base fits to the noise: its e^2 is the noise floor, which the estimate must see.
   EXPECT_NEAR(d.base.fit.error.total / d.noise_floor, 1.0, 0.15);
+  EXPECT_EQ(d.stop, StopReason::kAtNoiseFloor);
+  EXPECT_EQ(d.verdict.kind, ResidualVerdict::Kind::kNoise);
 }
 
 // Band-limited noise (3 %, a 25-sample moving average, as a load cell's anti-alias filter leaves
@@ -158,7 +168,7 @@ void ExpectCampaignDiagnosed(const HiddenEffectCase& c, Effect effect) {
   ExpectCarriedStateMatters(c);
   const Diagnosis d = DiagnoseCase(c, 5000);  // a third of the default: seconds, not minutes
   ExpectNamesOnly(d, {effect});
-  EXPECT_LE(d.final_model.fit.error.total, 1.5 * d.noise_floor);
+  ExpectGapClosed(d);
 }
 
 TEST(Diagnose, OneSpecimenCampaignWithAccumulatingDegradation) {
@@ -176,6 +186,109 @@ TEST(Diagnose, FindsTwoEffectsLargerFirst) {
   ASSERT_EQ(d.steps.size(), 2u);
   // Larger first: the first step closes more of the gap than the second.
   EXPECT_GT(d.steps[0].e2_before - d.steps[0].e2_after, d.steps[1].e2_before - d.steps[1].e2_after);
+}
+
+// Effects of real friction devices that no odd-symmetric law carries: a strength that differs by
+// direction (+14 and -22 kN) and a clearance of 20 mm after every reversal.
+TEST(Diagnose, FindsAsymmetricStrength) {
+  const Diagnosis d = DiagnoseCase({"asymmetric_strength.yaml", 17}, 5000);
+  ExpectNamesOnly(d, {Effect::kAsymmetricStrength});
+  ExpectGapClosed(d);
+  // The added element's strengths: the truth's +4 and -12 kN come back with the base's slider
+  // (10 kN) traded between the two (a combination the identifiability report names), so their
+  // difference is what the data fix: 8 kN between the directions.
+  const auto& p = d.steps[0].added_parameters;  // k0, uy_pos, uy_neg
+  EXPECT_NEAR(p[0] * (p[2] - p[1]), 8.0, 0.4);
+}
+
+TEST(Diagnose, FindsBacklash) {
+  const Diagnosis d = DiagnoseCase({"backlash.yaml", 18});
+  ExpectNamesOnly(d, {Effect::kBacklash});
+  ExpectGapClosed(d);
+  const auto& p = d.steps[0].added_parameters;  // k0, uy, gap: the truth's 1, 5, 20
+  EXPECT_NEAR(p[2], 20.0, 0.5);
+  EXPECT_NEAR(p[0] * p[1], 5.0, 0.2);
+}
+
+// Outside the catalogue: the loading head's inertia left in the force (m a, m = 0.63 t), a
+// stiffness that falls with the test's frequency squared. No catalogue component carries it: a
+// hardening spring, supported by the secant statistics, gains nothing in BIC. The diagnosis must
+// name nothing and say a structured residual remains, following the state of motion.
+TEST(Diagnose, AnEffectOutsideTheCatalogueIsNamedNothingAndLeftStructured) {
+  const model::ModelFile truth = HiddenEffectTruth({"null.yaml", 31});
+  identification::SyntheticTestOptions protocol = DiagnosisProtocol(31);
+  protocol.noise = 0.0;
+  auto tests = identification::SyntheticTests(truth.isolation, protocol);
+  constexpr double kMass = 6.3e-4;  // kN s^2/mm
+  for (auto& test : tests) {
+    const auto u = test.displacement;
+    for (std::size_t k = 1; k + 1 < u.size(); ++k) {
+      const double dt = test.time[k + 1] - test.time[k];
+      test.force[k] += kMass * (u[k + 1] - 2 * u[k] + u[k - 1]) / (dt * dt);
+    }
+  }
+  identification::AddForceNoise(&tests, 0.01, 31);
+  const identification::FitData data = AllCycles(std::move(tests));
+  DiagnoseOptions options;
+  options.seed = 7;
+  options.budget = 5000;
+  const Diagnosis d = Diagnose(OneBhm2(), data, options);
+  std::printf("inertia: base e^2 = %.4g %%, floor %.4g %%; %s; %s\n", 100 * d.base.fit.error.total,
+              100 * d.noise_floor, d.stop_reason.c_str(), d.verdict.headline.c_str());
+  ExpectNamesOnly(d, {});
+  EXPECT_NE(d.stop, StopReason::kAtNoiseFloor);
+  EXPECT_EQ(d.verdict.kind, ResidualVerdict::Kind::kStructured) << d.verdict.headline;
+  EXPECT_GT(d.verdict.ratio, 10.0);
+  EXPECT_FALSE(d.verdict.where.empty());
+}
+
+// max_steps ends the search with its own reason; the larger effect is the one named.
+TEST(Diagnose, MaxStepsEndsTheSearchWithItsReason) {
+  const identification::FitData data = HiddenEffectData({"two_effects.yaml", 16});
+  DiagnoseOptions options;
+  options.seed = 7;
+  options.budget = 5000;
+  options.max_steps = 1;
+  const Diagnosis d = Diagnose(OneBhm2(), data, options);
+  ExpectNamesOnly(d, {Effect::kLargeAmplitudeHardening});
+  EXPECT_EQ(d.stop, StopReason::kMaxSteps);
+  EXPECT_EQ(d.stop_reason, "1 effects added, the limit");
+  // The weak dashpot is left: more than noise, and judged so.
+  EXPECT_TRUE(d.verdict.Structured()) << d.verdict.headline;
+  options.max_steps = 0;
+  const Diagnosis none = Diagnose(OneBhm2(), data, options);
+  EXPECT_TRUE(none.steps.empty());
+  EXPECT_EQ(none.stop, StopReason::kMaxSteps);
+}
+
+TEST(DiagnoseOptions, ValidateNamesTheFieldAtFault) {
+  const auto key_of = [](DiagnoseOptions options) {
+    try {
+      options.Validate();
+    } catch (const InvalidParameter& error) {
+      return error.violation().key;
+    }
+    return std::string("none");
+  };
+  EXPECT_EQ(key_of({}), "none");
+  DiagnoseOptions o;
+  o.budget = 10;
+  EXPECT_EQ(key_of(o), "budget");
+  o = {};
+  o.noise_margin = 0.5;
+  EXPECT_EQ(key_of(o), "noise_margin");
+  o = {};
+  o.bic_margin = 0;
+  EXPECT_EQ(key_of(o), "bic_margin");
+  o = {};
+  o.max_steps = 7;
+  EXPECT_EQ(key_of(o), "max_steps");
+  o = {};
+  o.min_closure = 1;
+  EXPECT_EQ(key_of(o), "min_closure");
+  o = {};
+  o.equal_bic = -1;
+  EXPECT_EQ(key_of(o), "equal_bic");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Identification from cyclic tests: cycle splitting, the paper's error, parameter recovery of a
 // known three-component model, and the paper's finding on the HDRB tests (Table 9 THM1 system
-// against a six-component THM2 fit).
+// against a six-component THM2 fit); the options' checks, the same fit on 1 and 4 threads, more
+// budget never worse and never overrun, the convergence stop, and components fitted to zero.
 #include "isolab/identification/fit.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <random>
 
 #include "identification/table9_assembly.h"
+#include "isolab/core/errors.h"
 #include "isolab/identification/synthetic_tests.h"
 
 namespace isolab::identification {
@@ -148,8 +150,12 @@ TEST(Fit, NineComponentThm1FitsTheHdrbTestsAndSixThm2DoNot) {
               "30-parameter THM2 e^2 = %.3f %% (%.1f s)\n",
               100 * thm1.error.total, thm1.evaluations, thm1.seconds, 100 * thm2.error.total,
               thm2.seconds);
-  EXPECT_LE(thm1.error.total, 0.01);
-  EXPECT_GE(thm2.error.total, 2 * thm1.error.total);
+  // The truth is inside the nine-component class and the data are noise-free: the default budget
+  // reaches 0.023 % (on any machine: the island count is fixed), far below THM2's 2.8 %. The
+  // search cannot reach zero within the budget (21 shape coordinates, a multimodal landscape),
+  // but a regression of the search shows here: three times what it reaches.
+  EXPECT_LE(thm1.error.total, 7e-4);
+  EXPECT_GE(thm2.error.total, 50 * thm1.error.total);
 
   const auto thm1_energy = EnergyPerTest(thm1_model, data);
   const auto thm2_energy = EnergyPerTest(thm2_model, data);
@@ -174,6 +180,160 @@ TEST(Fit, NineComponentThm1FitsTheHdrbTestsAndSixThm2DoNot) {
     worst = std::max(worst, std::abs(fitted / measured - 1));
   }
   EXPECT_GT(worst, 0.05);
+}
+
+TEST(FitOptions, ValidateNamesTheFieldAtFault) {
+  const auto key_of = [](FitOptions options) {
+    try {
+      options.Validate();
+    } catch (const InvalidParameter& error) {
+      return error.violation().key;
+    }
+    return std::string("none");
+  };
+  EXPECT_EQ(key_of({}), "none");
+  FitOptions o;
+  o.budget = 99;
+  EXPECT_EQ(key_of(o), "budget");
+  o = {};
+  o.islands = 0;
+  EXPECT_EQ(key_of(o), "islands");
+  o = {};
+  o.threads = -1;
+  EXPECT_EQ(key_of(o), "threads");
+  o = {};
+  o.polish_share = 1.0;
+  EXPECT_EQ(key_of(o), "polish_share");
+  o = {};
+  o.stop_window = -1;
+  EXPECT_EQ(key_of(o), "stop_window");
+  o = {};
+  o.stop_window_share = 1.5;
+  EXPECT_EQ(key_of(o), "stop_window_share");
+  o = {};
+  o.stop_e2 = 1.0;
+  EXPECT_EQ(key_of(o), "stop_e2");
+  o = {};
+  o.stop_step = -0.1;
+  EXPECT_EQ(key_of(o), "stop_step");
+}
+
+// Noisy BHM2 tests and a two-component model to fit to them: the test models below.
+FitData NoisyBhm2Data(int per_cycle, std::vector<double> amplitudes = {25, 100, 200}) {
+  const auto truth = hysteresis::SingleLaw(LawType::kBhm2, {1.5, 0.25, 8});
+  return SelectCycles(SyntheticTests(truth, {amplitudes, {2.0}, 3, per_cycle, 0.01, 5}), {});
+}
+
+const std::vector<ComponentSpec> kBhm2AndElastoplastic = {
+    {"bilinear", LawType::kBhm2, {}, {}, {}}, {"extra", LawType::kElastoplastic, {}, {}, {}}};
+
+// The islands share nothing and each evaluation's laws write their own columns, summed in one
+// order: so the thread count, which differs from machine to machine, cannot change the result.
+// Large enough data (2 laws x 120,000 samples) that each evaluation is shared too.
+TEST(Fit, TheSameSeedGivesTheSameFitToTheLastDigitOnOneAndFourThreads) {
+  const FitData data = NoisyBhm2Data(20000, {50, 200});
+  const ModelParametrisation model(kBhm2AndElastoplastic, ScalesOf(data));
+  const auto fit = [&](int threads) {
+    FitOptions options;
+    options.seed = 3;
+    options.budget = 600;
+    options.threads = threads;
+    return Fit(model, data, options);
+  };
+  const FitResult one = fit(1), four = fit(4);
+  EXPECT_EQ(one.error.total, four.error.total);
+  EXPECT_EQ(one.evaluations, four.evaluations);
+  EXPECT_EQ(one.point, four.point);
+  EXPECT_EQ(one.mathematical, four.mathematical);
+}
+
+// The CMA-ES stage runs whole chunks while the budget allows, the same chunks for a larger
+// budget, and the polish starts from the best point and keeps its best: a larger budget can only
+// find a lower e^2. Every evaluation counts, the polish's included.
+TEST(Fit, MoreBudgetNeverGivesAWorseFitAndNeverOverrunsIt) {
+  const FitData data = NoisyBhm2Data(200);
+  const ModelParametrisation model(kBhm2AndElastoplastic, ScalesOf(data));
+  for (const long window : {0L, 3000L}) {
+    double previous = INFINITY;
+    for (const long budget : {100L, 400L, 1500L, 6000L}) {
+      FitOptions options;
+      options.seed = 2;
+      options.budget = budget;
+      options.stop_window = window;
+      const FitResult result = Fit(model, data, options);
+      EXPECT_LE(result.evaluations, budget) << "window " << window;
+      EXPECT_LE(result.error.total, previous * (1 + 1e-12))
+          << "budget " << budget << ", window " << window;
+      previous = result.error.total;
+    }
+  }
+}
+
+// Noise-free data from a law inside the model class: the search finds the truth long before the
+// default budget, and the convergence stop ends it there, saying so.
+TEST(Fit, TheConvergenceStopEndsASettledSearchAndSaysWhy) {
+  const auto truth = hysteresis::SingleLaw(LawType::kBhm2, {1.5, 0.25, 8});
+  const FitData data = SelectCycles(SyntheticTests(truth, {{25, 100, 200}, {2.0}, 3, 200}), {});
+  const ModelParametrisation model({{"bilinear", LawType::kBhm2, {}, {}, {}}}, ScalesOf(data));
+  FitOptions options;
+  options.budget = 60000;
+  const FitResult result = Fit(model, data, options);
+  EXPECT_EQ(result.stop, FitStop::kConverged);
+  EXPECT_LT(result.evaluations, 15000);
+  EXPECT_NE(result.stop_reason.find("converged after"), std::string::npos) << result.stop_reason;
+  // Settled: below 1e-12, an RMS force error of 1e-6, which fixes uy to about 1e-5 of itself.
+  EXPECT_LT(result.error.total, 1e-12);
+  EXPECT_NEAR(result.mathematical[0][2], 8.0, 1e-4);
+  options.stop_window = 0;
+  options.budget = 2000;
+  const FitResult full = Fit(model, data, options);
+  EXPECT_EQ(full.stop, FitStop::kBudget);
+  EXPECT_NE(full.stop_reason.find("budget of 2000"), std::string::npos) << full.stop_reason;
+}
+
+// A fit whose sign-constrained solve set every stiffness of two components to zero (the
+// amplitudes at a shape point, as Fit returns them): those two are the zero components, and
+// dropping them leaves the forces, so e^2, exactly as they were.
+TEST(Fit, ComponentsFittedToZeroAreDroppedWithoutChangingTheForces) {
+  const auto spring = hysteresis::SingleLaw(LawType::kLinearSpring, {0.5});
+  const FitData data = SelectCycles(SyntheticTests(spring, {{20, 60}, {2.0}, 2, 200}), {});
+  const std::vector<ComponentSpec> specs = {{"a", LawType::kElastoplastic, {}, {}, {}},
+                                            {"b", LawType::kBhm2, {}, {}, {}},
+                                            {"c", LawType::kTrilinearElastic, {}, {}, {}},
+                                            {"d", LawType::kElastoplastic, {}, {}, {}}};
+  const ModelParametrisation model(specs, ScalesOf(data));
+  FitResult result;
+  result.point = model.StartPoint();
+  result.amplitudes = Eigen::VectorXd::Zero(model.amplitude_count());
+  result.amplitudes[model.first_amplitude(1) + 1] = 0.3;  // b's k1 alone: a BHM2 without slider
+  result.amplitudes[model.first_amplitude(2)] = 0.2;      // c's k1
+  result.amplitudes[model.first_amplitude(3)] = 0.4;      // d's k0
+  result.mathematical = model.Mathematical(result.point, result.amplitudes);
+  const double e2 = ComputeFitError(model.Assembly(result.point, result.amplitudes), data).total;
+  const auto zero = ZeroComponents(model, result.amplitudes);
+  EXPECT_EQ(zero, std::vector<std::size_t>{0});  // b has a stiffness left: not zero
+  const auto kept = DropComponents(model, zero, &result);
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[0].name, "b");
+  const ModelParametrisation smaller(kept, ScalesOf(data));
+  ASSERT_EQ(static_cast<int>(result.point.size()), smaller.dimension());
+  // Equal but for the hair (1e-12 of the largest stiffness) that Assembly keeps a zero stiffness
+  // above zero, so the dropped laws are valid.
+  EXPECT_NEAR(ComputeFitError(smaller.Assembly(result.point, result.amplitudes), data).total, e2,
+              1e-9 * e2);
+  EXPECT_EQ(result.mathematical[0][1], 0.3);  // b's k1
+}
+
+TEST(Fit, ALawLeftWithoutItsSliderIsWrittenAsTheLawThatRemains) {
+  std::vector<LawType> types = {LawType::kBhm2, LawType::kThm2, LawType::kBhm2};
+  std::vector<std::vector<double>> values = {{0.3, 0.3, 5}, {0.7, 0.7, 0.9, 4, 50}, {1.5, 0.25, 8}};
+  const auto notes = SimplifyComponents({"a", "b", "c"}, &types, &values);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(types, (std::vector<LawType>{LawType::kLinearSpring, LawType::kTrilinearElastic,
+                                         LawType::kBhm2}));
+  EXPECT_EQ(values[0], std::vector<double>{0.3});
+  EXPECT_EQ(values[1], (std::vector<double>{0.7, 0.9, 50}));
+  EXPECT_NE(notes[0].find("linear_spring"), std::string::npos) << notes[0];
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -55,6 +56,18 @@ struct Summary {
 // starts, and for a results file that cannot be written after it.
 Summary Solve(const SolveOptions& options, const Problem& problem,
               std::span<integrators::ResponseObserver* const> observers = {});
+
+// The integrator a run's caller chose over the model's analysis section: "newmark", "ida" or empty
+// (the model's), and IDA's tolerances. A tolerance for a run that integrates with Newmark-beta is
+// refused (InputError at `option_prefix` + "rtol" or "atol": "--" on the command line, "" in
+// Python) rather than ignored.
+struct IntegratorChoice {
+  std::string integrator;
+  std::optional<double> rtol, atol;
+};
+model::AnalysisSection ChooseIntegrator(model::AnalysisSection analysis,
+                                        const IntegratorChoice& choice,
+                                        const std::string& option_prefix);
 
 // e.g. "newmark beta=0.25 gamma=0.5 newton=full ... dt=0.005" or "ida rtol=1e-06 atol=1e-09 ...".
 std::string DescribeIntegrator(const model::AnalysisSection& analysis, double dt);

@@ -22,8 +22,23 @@
 //                        half-cycle of an amplitude group than the modelled one, averaged over
 //                        groups. Supporting: the same for the secant stiffness, and the change
 //                        of the residual between those half-cycles relative to noise.
+//   asymmetric_strength: the share of the residual a constant force per test explains (partial
+//                        R^2). Every odd-symmetric law leaves a residual of mean near zero over
+//                        whole cycles; a device stronger one way leaves its offset. Supporting:
+//                        the mean offset and its sign across tests, and the midpoint of the
+//                        forces at the top and bottom reversals, measured against modelled.
+//   backlash:            the tangent stiffness after a reversal, read per half-cycle over bins
+//                        of distance from the reversal (1 % of the largest range each) in the
+//                        first half of the half-cycle and averaged: the largest rise from a
+//                        nearer bin to a farther one, less twice its standard error, measured
+//                        less modelled, over the model's stiffness right after the reversal. A
+//                        clearance makes the stiffness drop and rise again at a distance from the
+//                        reversal that does not grow with the amplitude; every other catalogue
+//                        law stiffens monotonically less there (a hardening spring stiffens
+//                        again only past the loop's centre, where |u| passes its breakpoint).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -44,6 +59,11 @@ struct Evidence {
   double threshold = 0.0;  // the value it must reach to support the effect
   std::string finding;     // one sentence with the numbers, for the report
   std::vector<Statistic> supporting;
+  // Where the data place the effect's component, as starting values of its shape coordinates
+  // (the refit's first island starts there): backlash reads the clearance off the distance at
+  // which the stiffness rises again, so the search does not begin in the basin of a clearance a
+  // third as wide.
+  std::map<std::string, double> start{};
 
   bool Supported() const { return value >= threshold; }
   double Strength() const { return value / threshold; }  // ranks candidates

@@ -1,5 +1,7 @@
 // The catalogue of physical effects a bilinear or trilinear isolator model can lack, each with
-// the component that carries it when added in parallel and a plain-language explanation.
+// the component that carries it when added in parallel and a plain-language explanation. The
+// first four are odd-symmetric, as every law before the play sliders is; asymmetric strength and
+// backlash are what real friction devices add (play_slider.h).
 #pragma once
 
 #include <span>
@@ -14,6 +16,8 @@ enum class Effect {
   kAmplitudeDependentDissipation,  // loop area grows faster than linearly: a softening THM1
   kLargeAmplitudeHardening,        // stiffening at large strain: a trilinear hardening spring
   kCyclicDegradation,              // loops shrink cycle after cycle: a degrading BHM2
+  kAsymmetricStrength,  // strength differs by direction (an offset): asymmetric_elastoplastic
+  kBacklash,            // a clearance after every reversal: backlash_elastoplastic
 };
 
 std::span<const Effect> AllEffects();

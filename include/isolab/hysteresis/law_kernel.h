@@ -20,13 +20,15 @@
 #include "isolab/hysteresis/friction_pendulum.h"
 #include "isolab/hysteresis/lead_rubber.h"
 #include "isolab/hysteresis/parallel_slider.h"
+#include "isolab/hysteresis/play_slider.h"
 #include "isolab/hysteresis/series_arrangement.h"
 #include "isolab/hysteresis/series_slider.h"
 
 namespace isolab::hysteresis {
 
 using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen,
-                               DegradingSlider, FrictionPendulum, LeadRubber, SeriesArrangement>;
+                               DegradingSlider, FrictionPendulum, LeadRubber, PlaySlider,
+                               SeriesArrangement>;
 
 // Whether a kernel's state takes more than one LawState.
 template <class Kernel>

@@ -13,6 +13,8 @@
 //
 // Bouc-Wen (bouc_wen.h) takes alpha, beta, gamma, delta, nu in both forms. The degrading BHM2
 // (degrading_slider.h) takes BHM2's k0, k1, uy (ke, kh, fs) and its damage's loss, slip_scale.
+// The play sliders (play_slider.h): asymmetric_elastoplastic k0, uy_pos, uy_neg (ke, fs_pos,
+// fs_neg = k0 uy_pos, k0 uy_neg); backlash_elastoplastic k0, uy, gap (ke, fs = k0 uy, gap).
 //
 // The bearing presets take the engineer's data, the same keys in both forms unless noted:
 //   friction_pendulum  w, r, uy and mu, or mu_slow, mu_fast, a   (friction_pendulum.h)
@@ -52,6 +54,10 @@ enum class LawType {
   kHdrBearing,              // hdr_bearing.h: BHM2 from design data
   kDoubleFrictionPendulum,  // multiple_pendulum.h: two sliding surfaces in series
   kTripleFrictionPendulum,  // multiple_pendulum.h: Fenz & Constantinou's series model
+  // play_slider.h: a strength that differs by direction, and a slider engaged through a
+  // clearance.
+  kAsymmetricElastoplastic,
+  kBacklashElastoplastic,
 };
 
 // The most keys a law takes (the triple pendulum's 14).

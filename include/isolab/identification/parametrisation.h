@@ -8,6 +8,8 @@
 //                       + k2 x (u - clamp(u, +-uyh))     shape: uy, uyh
 //   bhm2:               (k0 - k1) x [elastoplastic, uy] + k1 x u          shape: uy
 //   elastoplastic:      k0 x [elastoplastic, uy]          shape: uy
+//   asymmetric_elastoplastic:  k0 x [its law, k0 = 1]     shape: uy_pos, uy_neg
+//   backlash_elastoplastic:    k0 x [its law, k0 = 1]     shape: uy, gap
 //   degrading_bhm2:     (k0 - k1) x phi [elastoplastic, uy] + k1 x phi u
 //                                                         shape: uy, loss, slip_scale
 //   trilinear_elastic:  k1 x clamp(u, +-uyh) + k2 x (u - clamp(u, +-uyh))  shape: uyh
@@ -57,6 +59,15 @@ struct DataScales {
 // cannot be identified (Bouc-Wen).
 std::vector<std::string> CoordinateNames(hysteresis::LawType type);
 
+// Fitted components as laws isolab reads. A part the fit gave no stiffness leaves a law whose
+// rule fails (a BHM2 whose slider got k0 - k1 = 0 has k1 = k0); such a component is written as
+// the law that remains (a BHM2 or degrading BHM2 without its slider is the linear spring k1, a
+// THM2 without it the trilinear elastic spring k1, k2, uyh). Changes `types` and `mathematical`
+// in place and returns one note per change.
+std::vector<std::string> SimplifyComponents(const std::vector<std::string>& names,
+                                            std::vector<hysteresis::LawType>* types,
+                                            std::vector<std::vector<double>>* mathematical);
+
 class ModelParametrisation {
  public:
   // Throws std::invalid_argument for an unknown coordinate name or an empty range.
@@ -72,8 +83,19 @@ class ModelParametrisation {
   // Basis forces of every amplitude at shape point x (in [0, 1]^dimension()), one matrix per
   // test with one column per amplitude and one row per sample: the laws driven through the tests,
   // each from rest, or, for one specimen, in order with their state carried from test to test.
+  // `threads` (>= 1) share the laws' runs, each into its own column: the result is the same for
+  // any count.
   void Basis(std::span<const double> x, std::span<const CyclicTestData> tests, bool one_specimen,
-             std::vector<Eigen::MatrixXd>* bases) const;
+             std::vector<Eigen::MatrixXd>* bases, int threads = 1) const;
+
+  // The component each free coordinate belongs to, and the first amplitude of component c
+  // (first_amplitude(size) is amplitude_count()).
+  int free_component(int k) const { return free_[k].component; }
+  int first_amplitude(std::size_t c) const { return first_amplitude_[c]; }
+  // "base.k0-k1"-style names of the amplitudes, in order.
+  std::vector<std::string> AmplitudeNames() const;
+  // Each free coordinate's range.
+  const CoordinateRange& free_range(int k) const { return free_[k].range; }
 
   // Mathematical parameters (ParameterKeys order) of every component at x with `amplitudes`.
   std::vector<std::vector<double>> Mathematical(std::span<const double> x,

@@ -26,6 +26,8 @@ struct CyclicTestUnits {
 struct CyclicTestSet {
   std::vector<identification::CyclicTestData> tests;  // in file order
   bool one_specimen = false;                          // a file's "# specimen: one" header
+  std::vector<std::string> source;                    // per test: the file it was read from
+  std::vector<std::string> without_units;             // files with no "# units:" line
 };
 
 // Throws InputError.
