@@ -56,14 +56,16 @@ def _model(model):
     return model if isinstance(model, Model) else load_model(str(model))
 
 
-def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
-        free_vibration=None, fixed_base=False, trial_displacement=None, integrator=None,
+def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, scale=None,
+        dt=None, free_vibration=None, fixed_base=False, trial_displacement=None, integrator=None,
         rtol=None, atol=None, check=True):
     """Time-history analysis: `isolab run` with its options as keyword arguments.
 
     model: a Model or a model file's path. record: a record file replacing the model's, or a
     numpy array of ground accelerations (then record_dt, its step in s, and units, e.g. "g" or
-    "m/s^2", are required). scale, dt (the analysis step, model time unit), free_vibration
+    "m/s^2", are required); for a building in plan, its H1 component. h2 and angle: the pair's
+    second component (a file, or an array like record's) and the angle in degrees from x to H1,
+    the command line's --record-h2 and --angle. scale, dt (the analysis step, model time unit), free_vibration
     ("auto" or a time in s), fixed_base, trial_displacement, integrator ("newmark" or "ida"),
     rtol and atol are the command line's --scale, --dt, --free-vibration, --fixed-base,
     --trial-displacement, --integrator, --rtol and --atol.
@@ -74,8 +76,8 @@ def run(model, record=None, *, units=None, record_dt=None, scale=None, dt=None,
     """
     if scale is not None:
         scale = _positive_finite("scale", scale)
-    result = _run(_model(model), record, units=units, record_dt=record_dt, scale=scale, dt=dt,
-                  free_vibration=free_vibration, fixed_base=fixed_base,
+    result = _run(_model(model), record, h2, angle=angle, units=units, record_dt=record_dt,
+                  scale=scale, dt=dt, free_vibration=free_vibration, fixed_base=fixed_base,
                   trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
                   atol=atol)
     for message in result.warnings:

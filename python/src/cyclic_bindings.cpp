@@ -15,6 +15,7 @@
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/displacement_path_file.h"
+#include "isolab/model/build_structure.h"
 #include "isolab/model/model_file.h"
 #include "model.h"
 
@@ -138,12 +139,21 @@ py::list Replay(const py::object& model, const std::vector<std::string>& paths,
     targets.push_back({file.path, file.isolation, std::nullopt});
   };
   const auto drive = [&](const model::ModelFile& file) {
-    if (!file.structure || file.structure->kind != model::StructureSection::Kind::kPlanBuilding) {
+    const auto* isolators = model::PlanIsolators(file);
+    if (isolators == nullptr) {
+      if (!isolator.empty()) {
+        throw InputError({"isolator"}, file.path + " is not a building in plan: its isolation is "
+                                                   "one assembly, driven whole");
+      }
       one_direction(file);
       return;
     }
+    if (uncoupled) {
+      throw InputError({"uncoupled"}, file.path + " is a building in plan: its isolators' laws "
+                                                  "are coupled or not as the model says");
+    }
     units = file.units;
-    for (const auto& site : file.structure->plan.isolators) {
+    for (const auto& site : *isolators) {
       if (!isolator.empty() && site.name != isolator) continue;
       targets.push_back({file.path + ": isolator " + site.name, std::nullopt, site.assembly});
     }

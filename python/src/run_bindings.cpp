@@ -170,23 +170,33 @@ void BindRun(py::module_& module) {
 
   module.def(
       "_run",
-      [](const Model& model, const py::object& record, const std::optional<std::string>& units,
+      [](const Model& model, const py::object& record, const py::object& h2,
+         std::optional<double> angle, const std::optional<std::string>& units,
          std::optional<double> record_dt, std::optional<double> scale, std::optional<double> dt,
          const py::object& free_vibration, bool fixed_base,
          std::optional<double> trial_displacement, const std::optional<std::string>& integrator,
          std::optional<double> rtol, std::optional<double> atol) {
         RunOptions options;
         analysis::RunOverrides& o = options.overrides;
-        if (!record.is_none()) {
+        if (!h2.is_none() && record.is_none()) {
+          throw InputError({"h2"}, "needs record: the pair's first component");
+        }
+        if (angle && record.is_none()) {
+          throw InputError({"angle"}, "needs record (the model's own pair has its angle)");
+        }
+        // A pair's two components are both files or both arrays (sharing record_dt and units).
+        for (const auto& [component, name] : {std::pair{&record, "record"}, {&h2, "h2"}}) {
+          if (component->is_none()) continue;
           analysis::RecordOverride given;
-          given.name = "record";
-          if (IsRecordFile(record)) {
-            given.file = py::str(record).cast<std::string>();
+          given.name = name;
+          if (IsRecordFile(*component)) {
+            given.file = py::str(*component).cast<std::string>();
           } else {
-            given.data = ArrayRecord(record, record_dt, units);
+            given.data = ArrayRecord(*component, record_dt, units);
           }
           o.records.push_back(std::move(given));
         }
+        o.angle = angle.value_or(0.0);
         if (record.is_none() || IsRecordFile(record)) {
           if (units) o.record_units = *units;
           if (record_dt) {
@@ -212,7 +222,8 @@ void BindRun(py::module_& module) {
         options.atol = atol;
         return Run(model, options);
       },
-      py::arg("model"), py::arg("record") = py::none(), py::arg("units") = py::none(),
+      py::arg("model"), py::arg("record") = py::none(), py::arg("h2") = py::none(),
+      py::arg("angle") = py::none(), py::arg("units") = py::none(),
       py::arg("record_dt") = py::none(), py::arg("scale") = py::none(), py::arg("dt") = py::none(),
       py::arg("free_vibration") = py::none(), py::arg("fixed_base") = false,
       py::arg("trial_displacement") = py::none(), py::arg("integrator") = py::none(),

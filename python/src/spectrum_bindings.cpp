@@ -129,6 +129,11 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
     if (!(mu >= 1.0)) throw InputError({"ductility"}, "ductilities must be >= 1");
   }
   if (!(alpha >= 0.0 && alpha < 1.0)) throw InputError({"alpha"}, "must be in [0, 1)");
+  if (alpha != 0.0 && ductility.empty()) {
+    throw InputError({"alpha"},
+                     "the post-yield stiffness ratio of the constant-ductility spectra: give "
+                     "ductility");
+  }
   if (points_per_period < 1) throw InputError({"points_per_period"}, "must be >= 1");
   if (!(scale > 0.0) || !std::isfinite(scale)) {
     throw InputError({"scale"}, "must be finite and > 0");

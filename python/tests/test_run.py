@@ -62,6 +62,42 @@ def test_run_equals_the_command_line(repo, tmp_path, isolab_cli, five_story_scal
             cli[key], float) else summary[key] == cli[key], key
 
 
+PLAN = "models/plan/five_story_table9_plan.yaml"
+H1, H2 = "ground_motions/fwn_firm_seed1.at2", "ground_motions/h2_fwn_firm_seed3.at2"
+
+
+@pytest.mark.parametrize("pair", [(), (H2, H1, 30.0)], ids=["own_pair", "given_pair_at_30"])
+def test_a_plan_run_equals_the_command_line(repo, tmp_path, isolab_cli, pair):
+    """A building in plan, under its own pair and under a pair given with its angle (H1 and H2
+    swapped, turned 30 degrees): the histories and the summary are the command line's."""
+    h5 = tmp_path / "cli.h5"
+    options = ["--record", pair[0], "--record-h2", pair[1], "--angle", pair[2]] if pair else []
+    cli = isolab_cli.json("run", PLAN, "--free-vibration", 2, "-o", h5, *options)
+    given = {"record": repo / pair[0], "h2": repo / pair[1], "angle": pair[2]} if pair else {}
+    result = isolab.run(repo / PLAN, free_vibration=2.0, **given)
+    with h5py.File(h5) as f:
+        for name in result.names:
+            np.testing.assert_allclose(result[name], f[name][...], rtol=1e-12, atol=0, err_msg=name)
+        assert "rotation" in result.names and "isolator/resultant" in result.names
+    assert cli["angle"] == (pair[2] if pair else 0.0)
+    assert cli["h2"]["record"].endswith(pair[1] if pair else H2)
+    for key, peak in cli["peaks"].items():
+        expected = peak["value"] if isinstance(peak, dict) else peak
+        mine = result.peaks[key]["value"] if isinstance(peak, dict) else result.peaks[key]
+        assert mine == pytest.approx(expected, rel=1e-12), key
+    assert result.summary["torsional_amplification"] == pytest.approx(
+        cli["torsional_amplification"], rel=1e-12)
+
+
+def test_a_second_component_or_an_angle_needs_a_record_and_a_building_in_plan(repo):
+    with pytest.raises(isolab.InputError, match="h2: needs record"):
+        isolab.run(repo / PLAN, h2=repo / H2)
+    with pytest.raises(isolab.InputError, match="angle: needs record"):
+        isolab.run(repo / PLAN, angle=30)
+    with pytest.raises(isolab.InputError, match="h2: the structure moves along x only"):
+        isolab.run(repo / FIVE_STORY, repo / H1, repo / H2)
+
+
 def test_save_writes_the_command_lines_file(repo, tmp_path, isolab_cli, five_story_scaled):
     isolab_cli("run", FIVE_STORY, "--scale", 0.3, "--free-vibration", 2, "-o", tmp_path / "cli.csv")
     result = isolab.run(repo / FIVE_STORY, **five_story_scaled)

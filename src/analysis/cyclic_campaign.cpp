@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "isolab/core/errors.h"
+#include "isolab/model/build_structure.h"
 #include "isolab/identification/synthetic_tests.h"
 
 namespace isolab::analysis {
@@ -13,7 +14,7 @@ using hysteresis::CyclicProtocol;
 
 std::vector<CyclicProtocol> CyclicProtocols(const model::ModelFile& model,
                                             const CyclicRequest& request) {
-  if (model.structure && model.structure->kind == model::StructureSection::Kind::kPlanBuilding) {
+  if (model::PlanIsolators(model) != nullptr) {
     throw InputError({model.path},
                      "a building in plan: its isolators are driven along an orbit or a path "
                      "(cyclic --orbit or --path; orbit= or path= in Python); the sinusoidal test "

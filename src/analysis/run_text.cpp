@@ -148,6 +148,8 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
     const int level = peaks.level_rotation.index;
     line("peak floor rotation", peaks.level_rotation, "rad",
          level < 0 ? std::string() : fmt::format(" ({})", layout.levels[level].name));
+  }
+  if (layout.rotations && layout.isolated()) {
     fmt::print(out, "{:<34} {:>12.4g} (the largest isolator displacement over the base's "
                "centre of mass's, {:.5g} {})\n",
                "torsional amplification", peaks.torsional_amplification,

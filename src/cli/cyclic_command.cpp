@@ -18,6 +18,7 @@
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/displacement_path_file.h"
 #include "isolab/io/output_check.h"
+#include "isolab/model/build_structure.h"
 #include "isolab/model/model_file.h"
 
 namespace isolab::cli {
@@ -382,7 +383,7 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
     inputs.push_back(file);
     const model::ModelFile model = model::LoadModelFile(file);
     inputs.insert(inputs.end(), model.included_files.begin(), model.included_files.end());
-    if (model.structure && model.structure->kind == model::StructureSection::Kind::kPlanBuilding) {
+    if (const auto* isolators = model::PlanIsolators(model)) {
       if (options.uncoupled) {
         throw InputError({"--uncoupled"},
                          fmt::format("{} is a building in plan: its isolators' laws are coupled "
@@ -392,7 +393,7 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
       const UnitSystem& units = model.units;
       const Source source = sources(units, &model);
       bool found = options.isolator.empty();
-      for (const auto& isolator : model.structure->plan.isolators) {
+      for (const auto& isolator : *isolators) {
         if (!options.isolator.empty() && isolator.name != options.isolator) continue;
         found = true;
         for (std::size_t p = 0; p < source.paths.size(); ++p) {

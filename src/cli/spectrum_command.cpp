@@ -54,6 +54,11 @@ Inputs ParseInputs(const SpectrumOptions& options) {
   if (!(options.alpha >= 0.0 && options.alpha < 1.0)) {
     throw InputError({"--alpha"}, fmt::format("{:g} must be in [0, 1)", options.alpha));
   }
+  if (options.alpha != 0.0 && inputs.ductilities.empty()) {
+    throw InputError({"--alpha"},
+                     "the post-yield stiffness ratio of the constant-ductility spectra: give "
+                     "--ductility");
+  }
   if (options.points_per_period < 1) {
     throw InputError({"--points-per-period"},
                      fmt::format("{} must be >= 1", options.points_per_period));

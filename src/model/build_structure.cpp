@@ -47,4 +47,10 @@ int Directions(const ModelFile& model) {
   return model.structure && model.structure->kind == StructureSection::Kind::kPlanBuilding ? 2 : 1;
 }
 
+const std::vector<structure::PlanIsolatorSite>* PlanIsolators(const ModelFile& model) {
+  const bool plan =
+      model.structure && model.structure->kind == StructureSection::Kind::kPlanBuilding;
+  return plan ? &model.structure->plan.isolators : nullptr;
+}
+
 }  // namespace isolab::model

@@ -91,8 +91,8 @@ QuantityValues MeasureQuantities(const analysis::Problem& problem,
                                    [](const structure::StoryLayout& s) { return s.height > 0.0; });
   if (heights) set(Quantity::kStoryDriftRatio, 100.0 * peaks.largest_drift_ratio);
   set(Quantity::kFloorAcceleration, peaks.floor_acceleration.value / g);
-  if (layout.rotations) {
-    set(Quantity::kFloorRotation, peaks.level_rotation.value);
+  if (layout.rotations) set(Quantity::kFloorRotation, peaks.level_rotation.value);
+  if (layout.rotations && layout.isolated()) {
     set(Quantity::kTorsionalAmplification, peaks.torsional_amplification);
   }
   return values;

@@ -3,6 +3,8 @@
 // Everything after it reads the structure and its layout, whatever the kind.
 #pragma once
 
+#include <vector>
+
 #include "isolab/model/model_file.h"
 #include "isolab/structure/layout.h"
 
@@ -16,5 +18,9 @@ structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_ba
 // The horizontal directions the model's structure moves in, as BuildStructure lays it out: 1, or
 // 2 for a building in plan (whose levels also rotate); 1 without a structure section.
 int Directions(const ModelFile& model);
+
+// A building in plan's isolators, each its own assembly at its own position; nullptr for a model
+// whose isolation is one assembly (an SDOF, a shear building) or that has none.
+const std::vector<structure::PlanIsolatorSite>* PlanIsolators(const ModelFile& model);
 
 }  // namespace isolab::model
