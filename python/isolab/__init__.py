@@ -90,7 +90,7 @@ def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, 
 
 
 def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=None,
-           sequential=False, test_data=None, noise=0.0, seed=1, path=None, orbit=None,
+           sequential=False, test_data=None, noise=0.0, seed=None, path=None, orbit=None,
            isolator=None, uncoupled=False, force_unit=None, length_unit=None):
     """`isolab cyclic` on one model: u(t) = u_a sin(2 pi t / T) imposed on its isolation
     assembly, or, with path or orbit, the model driven along a given path.
@@ -100,7 +100,8 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     runs the tests one after another on one specimen, each from the state the last one left
     (--sequential); otherwise each starts from rest. test_data writes the loops as cyclic test
     data for fit and diagnose (--test-data), with Gaussian force noise relative to each test's RMS
-    force (--noise) from seed (--seed).
+    force (--noise) from seed (--seed, default 1). Arguments of the other mode (path and orbit,
+    or the sinusoidal test) raise InputError naming them.
 
     Returns a CyclicResult (the loop: time, displacement, force, component_force; per cycle the
     dissipated energy, peak force and each component's slider at +u_a), or a list of them, periods
@@ -118,6 +119,23 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     component), "measured" and "comparison" (e2, nrmse, peak_measured, peak_modelled) when the
     path has a force, "dissipated", "peak_force", "peak_displacement", "cycles" (an orbit's).
     """
+    given = {"sequential": sequential, "test_data": test_data is not None, "noise": noise != 0.0,
+             "seed": seed is not None, "isolator": isolator is not None, "uncoupled": uncoupled,
+             "force_unit": force_unit is not None, "length_unit": length_unit is not None,
+             "amplitude": amplitude is not None, "period": period is not None,
+             "cycles": cycles is not None, "steps_per_cycle": steps_per_cycle is not None}
+    if path is not None or orbit is not None:
+        other = ["sequential", "test_data", "noise", "seed"]
+        if path is not None:  # the path gives its own history
+            other += ["amplitude", "period", "cycles", "steps_per_cycle"]
+    else:
+        other = ["isolator", "uncoupled", "force_unit", "length_unit"]
+        if test_data is None:
+            other += ["noise", "seed"]
+    for name in other:
+        if given[name]:
+            raise InputError(f"{name}: does not apply to this cyclic test "
+                             "(path and orbit, or the sinusoidal test with its test data)")
     if path is not None or orbit is not None:
         target = model if isinstance(model, Model) else str(model)
         paths = [] if path is None else _paths(path)
@@ -125,7 +143,8 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
                        steps_per_cycle, isolator or "", uncoupled, force_unit or "",
                        length_unit or "")
     runs = _cyclic(_model(model), _as_list(amplitude), _as_list(period), cycles, steps_per_cycle,
-                   sequential, "" if test_data is None else str(test_data), noise, seed)
+                   sequential, "" if test_data is None else str(test_data), noise,
+                   1 if seed is None else seed)
     several = hasattr(amplitude, "__len__") or hasattr(period, "__len__")
     return runs if several else runs[0]
 

@@ -1,5 +1,5 @@
 // isolab.cyclic: `isolab cyclic` on one model, each loop as numpy views; with a path or an orbit,
-// the model driven along it (analysis/path_replay.h), each run as a dict of numpy arrays.
+// the model driven along it (analysis/model_replay.h), each run as a dict of numpy arrays.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -8,14 +8,12 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "isolab/analysis/cyclic_campaign.h"
-#include "isolab/analysis/path_replay.h"
+#include "isolab/analysis/model_replay.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/displacement_path_file.h"
-#include "isolab/model/build_structure.h"
 #include "isolab/model/model_file.h"
 #include "model.h"
 
@@ -119,122 +117,20 @@ py::dict ReplayDict(const std::string& model, const analysis::ReplayResult& r,
 
 // A model (or a plan model file's path) along paths from files, or round orbits; one dict per
 // run, as `isolab cyclic --path/--orbit --json` lists them, with the histories as arrays.
-py::list Replay(const py::object& model, const std::vector<std::string>& paths,
-                const std::string& orbit, const std::vector<double>& amplitudes,
-                const std::vector<double>& periods, std::optional<int> cycles,
-                std::optional<int> steps_per_cycle, const std::string& isolator, bool uncoupled,
-                const std::string& force_unit, const std::string& length_unit) {
-  struct Target {
-    std::string name;
-    std::optional<hysteresis::ParallelAssembly> one;
-    std::optional<hysteresis::PlanAssembly> plan;
-  };
-  std::vector<Target> targets;
-  UnitSystem units{"kN", "mm", "s"};
-  std::optional<hysteresis::CyclicProtocol> section;
-  const auto one_direction = [&](const model::ModelFile& file) {
-    if (file.isolation.size() == 0) throw InputError({file.path}, "no isolation section");
-    units = file.units;
-    section = file.cyclic;
-    targets.push_back({file.path, file.isolation, std::nullopt});
-  };
-  const auto drive = [&](const model::ModelFile& file) {
-    const auto* isolators = model::PlanIsolators(file);
-    if (isolators == nullptr) {
-      if (!isolator.empty()) {
-        throw InputError({"isolator"}, file.path + " is not a building in plan: its isolation is "
-                                                   "one assembly, driven whole");
-      }
-      one_direction(file);
-      return;
-    }
-    if (uncoupled) {
-      throw InputError({"uncoupled"}, file.path + " is a building in plan: its isolators' laws "
-                                                  "are coupled or not as the model says");
-    }
-    units = file.units;
-    for (const auto& site : *isolators) {
-      if (!isolator.empty() && site.name != isolator) continue;
-      targets.push_back({file.path + ": isolator " + site.name, std::nullopt, site.assembly});
-    }
-    if (targets.empty()) throw InputError({"isolator"}, "no isolator '" + isolator + "'");
-  };
-  if (py::isinstance<Model>(model)) {
-    drive(model.cast<const Model&>().file());
-  } else {
-    drive(model::LoadModelFile(py::str(model)));
+py::list Replay(const py::object& model, const analysis::ReplayRequest& request) {
+  const model::ModelFile file = py::isinstance<Model>(model)
+                                    ? model.cast<const Model&>().file()
+                                    : model::LoadModelFile(py::str(model));
+  std::vector<analysis::ReplayRun> runs;
+  {
+    py::gil_scoped_release release;
+    runs = analysis::ReplayModel(file, request, analysis::OptionStyle::kPython);
   }
-  std::vector<io::DisplacementPath> sources;
-  std::vector<std::vector<std::size_t>> marks;
-  if (!paths.empty()) {
-    io::DisplacementPathSet set =
-        io::ReadDisplacementPaths(paths, force_unit.empty() ? units.force() : force_unit,
-                                  length_unit.empty() ? units.length() : length_unit, units);
-    if (!set.without_units.empty() && (force_unit.empty() || length_unit.empty())) {
-      throw InputError({set.without_units.front()},
-                       "no '# units: force ..., length ...' line: give the path's units in the "
-                       "file or as force_unit= and length_unit=");
-    }
-    sources = std::move(set.paths);
-    marks.resize(sources.size());
-  } else {
-    analysis::OrbitProtocol protocol;
-    if (orbit == "circle") {
-      protocol.shape = analysis::OrbitShape::kCircle;
-    } else if (orbit == "figure8") {
-      protocol.shape = analysis::OrbitShape::kFigureEight;
-    } else {
-      throw InputError({"orbit"}, "'" + orbit + "' (expected circle or figure8)");
-    }
-    if (section) {
-      protocol.period = section->period;
-      protocol.cycles = section->cycles;
-      protocol.steps_per_cycle = section->steps_per_cycle;
-    }
-    if (cycles) protocol.cycles = *cycles;
-    if (steps_per_cycle) protocol.steps_per_cycle = *steps_per_cycle;
-    std::vector<double> a = amplitudes;
-    if (a.empty() && section) a.push_back(section->amplitude);
-    if (a.empty()) throw InputError({"amplitude"}, "an orbit needs an amplitude");
-    for (const double period : periods.empty() ? std::vector<double>{protocol.period} : periods) {
-      for (const double amplitude : a) {
-        protocol.amplitude = amplitude;
-        protocol.period = period;
-        std::vector<std::size_t> m;
-        try {
-          sources.push_back(analysis::OrbitPath(protocol, &m));
-        } catch (const InvalidParameter& error) {
-          throw InputError({"orbit"}, error.violation().Describe());
-        }
-        marks.push_back(std::move(m));
-      }
-    }
+  py::list dicts;
+  for (const analysis::ReplayRun& run : runs) {
+    dicts.append(ReplayDict(run.model, run.result, run.units));
   }
-  py::list runs;
-  for (const Target& target : targets) {
-    for (std::size_t p = 0; p < sources.size(); ++p) {
-      analysis::ReplayResult result;
-      {
-        py::gil_scoped_release release;
-        if (target.plan) {
-          io::DisplacementPath path = sources[p];
-          path.plan = true;
-          result = analysis::Replay(*target.plan, path, marks[p]);
-        } else if (!sources[p].plan) {
-          result = analysis::Replay(*target.one, sources[p], marks[p]);
-        } else {
-          try {
-            result = analysis::Replay(analysis::PlanFromIsolation(*target.one, !uncoupled),
-                                      sources[p], marks[p]);
-          } catch (const std::invalid_argument& error) {
-            throw InputError({target.name}, error.what());
-          }
-        }
-      }
-      runs.append(ReplayDict(target.name, result, units));
-    }
-  }
-  return runs;
+  return dicts;
 }
 
 }  // namespace
@@ -303,10 +199,19 @@ void BindCyclic(py::module_& module) {
   module.def("_cyclic", &Cyclic, py::arg("model"), py::arg("amplitudes"), py::arg("periods"),
              py::arg("cycles"), py::arg("steps_per_cycle"), py::arg("sequential"),
              py::arg("test_data"), py::arg("noise"), py::arg("seed"));
-  module.def("_replay", &Replay, py::arg("model"), py::arg("paths"), py::arg("orbit"),
-             py::arg("amplitudes"), py::arg("periods"), py::arg("cycles"),
-             py::arg("steps_per_cycle"), py::arg("isolator"), py::arg("uncoupled"),
-             py::arg("force_unit"), py::arg("length_unit"));
+  module.def(
+      "_replay",
+      [](const py::object& model, const std::vector<std::string>& paths, const std::string& orbit,
+         const std::vector<double>& amplitudes, const std::vector<double>& periods,
+         std::optional<int> cycles, std::optional<int> steps_per_cycle,
+         const std::string& isolator, bool uncoupled, const std::string& force_unit,
+         const std::string& length_unit) {
+        return Replay(model, {paths, orbit, amplitudes, periods, cycles, steps_per_cycle,
+                              isolator, uncoupled, force_unit, length_unit});
+      },
+      py::arg("model"), py::arg("paths"), py::arg("orbit"), py::arg("amplitudes"),
+      py::arg("periods"), py::arg("cycles"), py::arg("steps_per_cycle"), py::arg("isolator"),
+      py::arg("uncoupled"), py::arg("force_unit"), py::arg("length_unit"));
 }
 
 }  // namespace isolab::python

@@ -98,3 +98,24 @@ def test_a_path_and_an_orbit_as_the_command_line_drives_them(repo, tmp_path, iso
     slider = orbit["component_force"][0]  # the one component: spring kh u plus the slider
     u_end = orbit["displacement"][-1]
     assert np.linalg.norm(slider[-1] - 0.80653 * u_end) == pytest.approx(18.146, rel=1e-9)
+
+
+def test_arguments_of_the_other_mode_are_refused_by_name(repo):
+    """As the command line does: path and orbit, or the sinusoidal test, each with its own
+    arguments; one of the other mode is an InputError naming it, never ignored."""
+    bilinear = isolab.Model.from_dict(BILINEAR)
+    for name, value in [("test_data", repo / "unused.csv"), ("noise", 0.1), ("seed", 3),
+                        ("sequential", True)]:
+        with pytest.raises(isolab.InputError, match=f"^{name}: "):
+            isolab.cyclic(bilinear, 150, orbit="circle", **{name: value})
+    for name, value in [("isolator", "ne"), ("uncoupled", True), ("force_unit", "kN")]:
+        with pytest.raises(isolab.InputError, match=f"^{name}: "):
+            isolab.cyclic(bilinear, 150, **{name: value})
+    with pytest.raises(isolab.InputError, match="^isolator: .* is not a building in plan"):
+        isolab.cyclic(bilinear, 150, orbit="circle", isolator="ne")
+    plan = repo / "models/plan/five_story_table9_plan.yaml"
+    with pytest.raises(isolab.InputError, match="^uncoupled: .* is a building in plan"):
+        isolab.cyclic(plan, 100, orbit="circle", uncoupled=True)
+    with pytest.raises(isolab.InputError, match="a building in plan: its isolators are driven"):
+        isolab.cyclic(plan, 100)
+    assert len(isolab.cyclic(plan, 100, orbit="circle", cycles=1, isolator="ne")) == 1

@@ -10,15 +10,13 @@
 
 #include "finite_options.h"
 #include "isolab/analysis/cyclic_campaign.h"
-#include "isolab/analysis/path_replay.h"
+#include "isolab/analysis/model_replay.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
-#include "isolab/io/displacement_path_file.h"
 #include "isolab/io/output_check.h"
-#include "isolab/model/build_structure.h"
 #include "isolab/model/model_file.h"
 
 namespace isolab::cli {
@@ -168,11 +166,7 @@ std::string CsvPath(const std::string& csv, const Run& run, std::size_t index, b
 }
 
 // --path and --orbit: the model driven along given paths (analysis/path_replay.h).
-struct Replayed {
-  std::string model;  // the file, and the isolator of a plan model
-  UnitSystem units;
-  analysis::ReplayResult result;
-};
+using Replayed = analysis::ReplayRun;
 
 std::string Vector(Vec2Alias v, bool plan) {
   return plan ? fmt::format("({:.6g}, {:.6g})", v.x, v.y) : fmt::format("{:.6g}", v.x);
@@ -316,124 +310,26 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
   if (!options.paths.empty() && !options.orbit.empty()) {
     throw InputError({"command line"}, "--path and --orbit: give one or the other");
   }
-  // The paths to follow: read once per model's units, or the orbits the options ask for.
-  struct Source {
-    std::vector<io::DisplacementPath> paths;
-    std::vector<std::vector<std::size_t>> cycles;
-  };
-  const auto sources = [&](const UnitSystem& units, const model::ModelFile* model) {
-    Source source;
-    if (!options.paths.empty()) {
-      io::DisplacementPathSet set = io::ReadDisplacementPaths(
-          options.paths, options.force_unit.empty() ? units.force() : options.force_unit,
-          options.length_unit.empty() ? units.length() : options.length_unit, units);
-      if (!set.without_units.empty() &&
-          (options.force_unit.empty() || options.length_unit.empty())) {
-        throw InputError({set.without_units.front()},
-                         "no '# units: force ..., length ...' line: give the path's units in "
-                         "the file or with --force-unit and --length-unit");
-      }
-      source.paths = std::move(set.paths);
-      source.cycles.resize(source.paths.size());
-      return source;
-    }
-    analysis::OrbitProtocol protocol;
-    if (options.orbit == "circle") {
-      protocol.shape = analysis::OrbitShape::kCircle;
-    } else if (options.orbit == "figure8") {
-      protocol.shape = analysis::OrbitShape::kFigureEight;
-    } else {
-      throw InputError({"command line"},
-                       fmt::format("--orbit {} (expected circle or figure8)", options.orbit));
-    }
-    if (model != nullptr && model->cyclic) {
-      protocol.period = model->cyclic->period;
-      protocol.cycles = model->cyclic->cycles;
-      protocol.steps_per_cycle = model->cyclic->steps_per_cycle;
-    }
-    if (options.cycles) protocol.cycles = *options.cycles;
-    if (options.steps_per_cycle) protocol.steps_per_cycle = *options.steps_per_cycle;
-    std::vector<double> amplitudes = options.amplitudes;
-    if (amplitudes.empty() && model != nullptr && model->cyclic) {
-      amplitudes.push_back(model->cyclic->amplitude);
-    }
-    if (amplitudes.empty()) throw InputError({"command line"}, "--orbit needs --amplitude");
-    const std::vector<double> periods =
-        options.periods.empty() ? std::vector<double>{protocol.period} : options.periods;
-    for (const double period : periods) {
-      for (const double amplitude : amplitudes) {
-        protocol.amplitude = amplitude;
-        protocol.period = period;
-        std::vector<std::size_t> cycles;
-        try {
-          source.paths.push_back(analysis::OrbitPath(protocol, &cycles));
-        } catch (const InvalidParameter& error) {
-          throw InputError({"command line"}, error.violation().Describe());
-        }
-        source.paths.back().name += fmt::format("_A={:g}_T={:g}", amplitude, period);
-        source.cycles.push_back(std::move(cycles));
-      }
-    }
-    return source;
-  };
-
+  analysis::ReplayRequest request;
+  request.paths = options.paths;
+  request.orbit = options.orbit;
+  request.amplitudes = options.amplitudes;
+  request.periods = options.periods;
+  request.cycles = options.cycles;
+  request.steps_per_cycle = options.steps_per_cycle;
+  request.isolator = options.isolator;
+  request.uncoupled = options.uncoupled;
+  request.force_unit = options.force_unit;
+  request.length_unit = options.length_unit;
   std::vector<Replayed> runs;
   std::vector<std::string> inputs;
   for (const std::string& file : options.models) {
-    inputs.push_back(file);
     const model::ModelFile model = model::LoadModelFile(file);
+    inputs.push_back(file);
     inputs.insert(inputs.end(), model.included_files.begin(), model.included_files.end());
-    if (const auto* isolators = model::PlanIsolators(model)) {
-      if (options.uncoupled) {
-        throw InputError({"--uncoupled"},
-                         fmt::format("{} is a building in plan: its isolators' laws are coupled "
-                                     "or not as the model says",
-                                     file));
-      }
-      const UnitSystem& units = model.units;
-      const Source source = sources(units, &model);
-      bool found = options.isolator.empty();
-      for (const auto& isolator : *isolators) {
-        if (!options.isolator.empty() && isolator.name != options.isolator) continue;
-        found = true;
-        for (std::size_t p = 0; p < source.paths.size(); ++p) {
-          io::DisplacementPath path = source.paths[p];
-          path.plan = true;  // a plan isolator moves in plan, whatever the path's columns
-          runs.push_back({file + ": isolator " + isolator.name, units,
-                          analysis::Replay(isolator.assembly, path, source.cycles[p])});
-        }
-      }
-      if (!found) {
-        throw InputError(
-            {"command line"},
-            fmt::format("--isolator {}: {} has no isolator of that name", options.isolator, file));
-      }
-      continue;
-    }
-    if (model.isolation.size() == 0) {
-      throw InputError({file}, "no isolation section: nothing to drive along a path");
-    }
-    if (!options.isolator.empty()) {
-      throw InputError({"--isolator"}, fmt::format("{} is not a building in plan: its isolation "
-                                                   "is one assembly, driven whole",
-                                                   file));
-    }
-    const Source source = sources(model.units, &model);
-    for (std::size_t p = 0; p < source.paths.size(); ++p) {
-      const io::DisplacementPath& path = source.paths[p];
-      if (!path.plan) {
-        runs.push_back(
-            {file, model.units, analysis::Replay(model.isolation, path, source.cycles[p])});
-        continue;
-      }
-      try {
-        runs.push_back(
-            {file, model.units,
-             analysis::Replay(analysis::PlanFromIsolation(model.isolation, !options.uncoupled),
-                              path, source.cycles[p])});
-      } catch (const std::invalid_argument& error) {
-        throw InputError({file}, error.what());
-      }
+    for (Replayed& run :
+         analysis::ReplayModel(model, request, analysis::OptionStyle::kCommandLine)) {
+      runs.push_back(std::move(run));
     }
   }
   inputs.insert(inputs.end(), options.paths.begin(), options.paths.end());
