@@ -15,7 +15,7 @@
 
 namespace isolab::analysis {
 
-struct Series;  // one history of the file (private to io)
+struct Series;  // one history of the file (private to the writers)
 
 class ResultsWriter final : public integrators::ResponseObserver {
  public:

@@ -363,8 +363,9 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
 void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
   CLI::App* command = app.add_subcommand(
       "cyclic",
-      "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report "
-      "energy per cycle, peak force and slider displacements");
+      "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report energy "
+      "per cycle, peak force and slider displacements; or drive a model's isolation, or a plan "
+      "model's isolators, along a path (--path) or an orbit (--orbit)");
   command->add_option("models", options.models, "Model files (YAML) with an isolation section")
       ->required()
       ->check(CLI::ExistingFile);

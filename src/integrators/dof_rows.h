@@ -1,4 +1,4 @@
-// What a rate-form system (rate_form_system.h, plan_rate_form_system.h) writes for the structure's
+// What the rate-form system (rate_form_system.h) writes for the structure's
 // dofs whatever its laws: the rows u' - v = 0 and M v' + C v + f - p = 0 (M diagonal), their
 // constant Jacobian entries (cj I and -I in the u rows, cj M and C in the v rows) at slots of the
 // system's fixed pattern, y' consistent with y, and the response row the observer sees. y holds

@@ -1,4 +1,4 @@
-// A rate-form system's Jacobian (rate_form_system.h, plan_rate_form_system.h) against central
+// A rate-form system's Jacobian (rate_form_system.h) against central
 // differences of its residual, at a given state or at one inside the phases every law starts in,
 // shared by the tests of the systems' structures.
 #pragma once

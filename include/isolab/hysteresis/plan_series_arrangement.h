@@ -73,7 +73,7 @@ struct PlanSeriesArrangement {
   double StoredEnergy(PlanLawStateView state, std::span<const PlanLawState> elements) const;
 
   // The same with the element states kept as LawState pairs in a flat array, element k's x at
-  // 2k and y at 2k + 1 (a plan structure's state array, plan_structure.h).
+  // 2k and y at 2k + 1 (a structure's state array, structure/structure.h).
   void UpdateFlat(PlanLawStateView committed, std::span<const LawState> committed_elements,
                   const PlanLawInput& in, PlanLawStateSlot trial,
                   std::span<LawState> trial_elements, PlanLawResponse* response) const;
