@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
+#include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/plan_law_kernel.h"
 
 namespace isolab::analysis {
@@ -117,20 +118,8 @@ std::vector<std::string> Names(const auto& components) {
 }  // namespace
 
 void OrbitProtocol::Validate() const {
-  if (!(amplitude > 0.0 && std::isfinite(amplitude))) {
-    throw InvalidParameter({"amplitude", amplitude, "must be > 0 and finite"});
-  }
-  if (!(period > 0.0 && std::isfinite(period))) {
-    throw InvalidParameter({"period", period, "must be > 0 and finite"});
-  }
-  if (cycles < 1) throw InvalidParameter({"cycles", double(cycles), "must be >= 1"});
-  if (steps_per_cycle < 4 || steps_per_cycle % 4 != 0) {
-    throw InvalidParameter({"steps_per_cycle", double(steps_per_cycle), "must be a multiple of 4"});
-  }
-  if (double(cycles) * steps_per_cycle > 1e8) {
-    throw InvalidParameter(
-        {"steps_per_cycle", double(steps_per_cycle), "times cycles must be <= 1e8 samples"});
-  }
+  // The same fields and bounds as a sinusoidal test's.
+  hysteresis::CyclicProtocol{amplitude, period, cycles, steps_per_cycle}.Validate();
 }
 
 io::DisplacementPath OrbitPath(const OrbitProtocol& p, std::vector<std::size_t>* cycles) {

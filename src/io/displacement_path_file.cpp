@@ -8,30 +8,12 @@
 #include <map>
 #include <sstream>
 
+#include "csv_fields.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
 
 namespace isolab::io {
 namespace {
-
-std::string Trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  const auto last = text.find_last_not_of(" \t\r");
-  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
-}
-
-std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::vector<std::string> Split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream stream(line);
-  for (std::string field; std::getline(stream, field, ',');) fields.push_back(Trim(field));
-  return fields;
-}
 
 // The first of `names` that is a column, or -1.
 int Column(const std::map<std::string, int>& columns, std::initializer_list<const char*> names) {

@@ -9,26 +9,13 @@
 #include <sstream>
 #include <utility>
 
+#include "csv_fields.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
 #include "isolab/core/text_file.h"
 
 namespace isolab::io {
 namespace {
-
-std::string Trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  const auto last = text.find_last_not_of(" \t\r");
-  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
-}
-
-std::vector<std::string> Split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream stream(line);
-  for (std::string field; std::getline(stream, field, ',');) fields.push_back(Trim(field));
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
-}
 
 // Unit suffixes of column names, longest first so "_m_s2" is not read as "_s2".
 constexpr std::pair<const char*, const char*> kSuffixes[] = {
