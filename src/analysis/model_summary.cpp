@@ -8,6 +8,8 @@
 #include <limits>
 #include <numbers>
 
+#include "isolab/hysteresis/friction_pendulum.h"
+#include "isolab/hysteresis/law_kernel.h"
 #include "isolab/structure/shear_building.h"
 
 namespace isolab::analysis {
@@ -233,6 +235,82 @@ std::vector<Mode> RigidModes(const structure::Structure& s, const structure::Lay
   return modes;
 }
 
+namespace {
+
+bool Outside(double value, const double (&range)[2]) {
+  return !(value >= range[0] && value <= range[1]);
+}
+
+// Friction pendulums among a component's laws, with the name to warn about.
+void WarnAboutPendulum(const std::string& name, const hysteresis::LawParameters& parameters,
+                       const UnitSystem& units, double total_weight,
+                       std::vector<std::string>* warnings) {
+  const hysteresis::LawKernel kernel = parameters.Kernel();
+  const auto* pendulum = std::get_if<hysteresis::FrictionPendulum>(&kernel);
+  if (pendulum == nullptr) return;
+  if (pendulum->weight > 1.5 * total_weight) {
+    warnings->push_back(fmt::format(
+        "friction pendulum '{}' carries W = {:.4g} {}, more than the whole structure weighs "
+        "({:.4g} {}): check its units",
+        name, pendulum->weight, units.force(), total_weight, units.force()));
+  }
+  if (pendulum->stiffness == 0.0) return;  // a flat slider
+  const double radius_m =
+      pendulum->weight / pendulum->stiffness / units.Convert(1.0, "m", dimension::kLength);
+  if (Outside(radius_m, kPlausiblePendulumRadius)) {
+    warnings->push_back(fmt::format(
+        "friction pendulum '{}' has a radius of {:.4g} m, outside the {:g} to {:g} m of "
+        "bearings built: check its units",
+        name, radius_m, kPlausiblePendulumRadius[0], kPlausiblePendulumRadius[1]));
+  }
+}
+
+// Story heights, level masses and pendulum bearings no real building has: almost always a value
+// given without its unit, read in the model's.
+void WarnAboutDimensions(const structure::Structure& s, const structure::Layout& layout,
+                         const UnitSystem& units, double total_weight,
+                         std::vector<std::string>* warnings) {
+  const double metre = units.Convert(1.0, "m", dimension::kLength);
+  const double tonne = units.Convert(1.0, "t", dimension::kMass);
+  if (!layout.stories.empty()) {
+    for (std::size_t i = 0; i < layout.stories.size(); ++i) {
+      const double height = layout.stories[i].height;
+      if (height > 0.0 && Outside(height / metre, kPlausibleStoryHeight)) {
+        warnings->push_back(fmt::format(
+            "story {}'s height, {:g} {} ({:.3g} m), is outside the {:g} to {:g} m of real "
+            "stories: a height without a unit is in {}",
+            i + 1, height, units.length(), height / metre, kPlausibleStoryHeight[0],
+            kPlausibleStoryHeight[1], units.length()));
+        break;
+      }
+    }
+    for (const structure::Level& level : layout.levels) {
+      const double mass = s.mass()[level.dofs[structure::kX]] / tonne;
+      if (Outside(mass, kPlausibleLevelMass)) {
+        warnings->push_back(fmt::format(
+            "the mass of {}, {:.4g} t, is outside the {:g} to {:g} t of real floors: a mass "
+            "without a unit is in force*time^2/length of the model's units ({}*{}^2/{})",
+            level.name, mass, kPlausibleLevelMass[0], kPlausibleLevelMass[1], units.force(),
+            units.time(), units.length()));
+        break;
+      }
+    }
+  }
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    if (isolator.member >= 0) {
+      for (const auto& component : s.members()[isolator.member].assembly.components()) {
+        WarnAboutPendulum(component.name, component.parameters, units, total_weight, warnings);
+      }
+    } else {
+      for (const auto& component : s.coupled_members()[isolator.coupled].assembly.components()) {
+        WarnAboutPendulum(component.name, component.law, units, total_weight, warnings);
+      }
+    }
+  }
+}
+
+}  // namespace
+
 ModelSummary SummariseModel(const structure::Structure& s, const structure::Layout& layout,
                             const structure::LaidOutStructure* fixed_base, const UnitSystem& units,
                             double pga, double trial_displacement) {
@@ -282,6 +360,7 @@ ModelSummary SummariseModel(const structure::Structure& s, const structure::Layo
         "any building's: {}",
         summary.fixed_base_modes.front().period, units.time(), kMaxPlausiblePeriod, check));
   }
+  WarnAboutDimensions(s, layout, units, summary.total_weight, &summary.warnings);
   if (summary.isolated && summary.isolated_period > kMaxPlausiblePeriod * seconds) {
     summary.warnings.push_back(fmt::format(
         "the period at {:g} {}, {:.4g} {}, exceeds {:g} s, longer than any isolated structure's: "

@@ -42,7 +42,11 @@ void PrintGrid(const integrators::TimeGrid& grid, double excitation_end, double 
 
 void PrintRunOutcome(const model::AnalysisSection& analysis, const integrators::RunSummary& run,
                      const std::string& output, std::ostream& out) {
-  fmt::print(out, "energy balance error: {:.2e} of the input energy\n", run.energy_balance_error);
+  if (std::isnan(run.energy_balance_error)) {
+    fmt::print(out, "energy balance error: undefined (the input energy is not finite)\n");
+  } else {
+    fmt::print(out, "energy balance error: {:.2e} of the input energy\n", run.energy_balance_error);
+  }
   if (analysis.integrator == model::AnalysisSection::Integrator::kIda) {
     fmt::print(out,
                "IDA: {} steps, {} phase-change events, {} Jacobians, {} error-test failures; "

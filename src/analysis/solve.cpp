@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 
 #include "isolab/analysis/result_series.h"
@@ -95,14 +96,22 @@ Summary Solve(const SolveOptions& options, const Problem& problem,
   list.insert(list.end(), observers.begin(), observers.end());
   integrators::ObserverList all(std::move(list));
   summary.run = Integrate(options.analysis, problem, all);
-  if (summary.run.ok() && summary.run.energy_balance_error > kMaxEnergyBalanceError) {
+  summary.peaks = tracker.Peaks();
+  const double input = summary.peaks.energies.input;
+  if (summary.run.ok() && !std::isfinite(input)) {
+    summary.run.termination = integrators::RunSummary::Termination::kFailed;
+    summary.run.message = fmt::format(
+        "the input energy is not finite ({}): the response overflowed (check the laws' "
+        "parameters and the record's units)",
+        input);
+  }
+  if (summary.run.ok() && !(summary.run.energy_balance_error <= kMaxEnergyBalanceError)) {
     summary.run.termination = integrators::RunSummary::Termination::kFailed;
     summary.run.message = fmt::format(
         "the energy balance does not close: its error, {:.3g} of the input energy, exceeds {:g} "
         "(the response is not to be trusted: refine dt, or check the laws' parameters)",
         summary.run.energy_balance_error, kMaxEnergyBalanceError);
   }
-  summary.peaks = tracker.Peaks();
   if (writer) writer->Finish(summary.run, summary.peaks);
   summary.warnings = RunWarnings(run);
   return summary;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
@@ -288,7 +289,10 @@ RunSummary Run(const structure::Structure& structure, const Excitation& excitati
     }
   }
   run.CollectStatistics();
-  summary.energy_balance_error = max_input > 0.0 ? max_balance / max_input : 0.0;
+  // Undefined (NaN) when the input energy overflowed: a run the caller must not call completed.
+  summary.energy_balance_error = !std::isfinite(max_input) ? std::numeric_limits<double>::quiet_NaN()
+                                 : max_input > 0.0         ? max_balance / max_input
+                                                           : 0.0;
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

@@ -96,6 +96,32 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
               1e-9);
 }
 
+// Nothing moves under a record of zeros: every peak is 0 at t = 0 (no peak index is left unset),
+// the torsional amplification of a base that does not move is 0, and the run completes, in text,
+// JSON and CSV.
+TEST(PlanRunCommand, AZeroRecordMovesNothingAndCompletes) {
+  const std::string folder = OwnTestDirectory().string() + "/zero_";
+  {
+    std::ofstream record(folder + "record.txt");
+    for (int k = 0; k < 3000; ++k) record << "0\n";
+  }
+  const std::string run = "run " + kPlan + " --record " + folder + "record.txt" +
+                          " --record-dt 0.01 --units g -q -o " + folder + "out.csv";
+  const Outcome text = RunIsolab(run);
+  EXPECT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("peak floor rotation"), std::string::npos) << text.output;
+  const Outcome json = RunIsolab(run + " --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const nlohmann::json summary = nlohmann::json::parse(json.output);
+  EXPECT_EQ(summary["termination"], "completed");
+  for (const char* peak : {"isolator_displacement", "floor_rotation", "base_shear",
+                           "roof_absolute_acceleration", "story_drift"}) {
+    EXPECT_EQ(summary["peaks"][peak]["value"], 0.0) << peak;
+    EXPECT_EQ(summary["peaks"][peak]["time"], 0.0) << peak;
+  }
+  EXPECT_EQ(summary["torsional_amplification"], 0.0);
+}
+
 TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
   const std::string output = OwnTestFile("five_story_table9_plan.h5").string();
   const Outcome run = RunIsolab("run " + kPlan + " --json -o " + output);

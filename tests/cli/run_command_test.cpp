@@ -352,6 +352,49 @@ TEST(RunCommand, ModelSummaryIsPrintedAndImplausibleValuesWarned) {
       << warnings;
 }
 
+// Dimensions typed without their units, each warned about by name with what it was read as: a
+// story height of 3.5 in a mm model (3.5 mm), a floor mass of 500 (500 kN s^2/mm, 500,000 t), and
+// friction pendulums of W = 1e300 kN and R = 1e-300 mm. The runs go on: the engineer decides.
+TEST(RunCommand, DimensionsNoBuildingHasAreWarnedAbout) {
+  const auto model = TemporaryFile("slips.yaml");
+  const auto write = [&](const std::string& stories, const std::string& bearing) {
+    std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
+                         << "structure:\n  type: shear_building\n  base_mass: 25 t\n"
+                         << "  stories: {count: 2, " << stories << ", stiffness: 76 kN/mm}\n"
+                         << "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
+                         << "isolation:\n  components:\n    - {name: fps, type: friction_pendulum, "
+                         << bearing << ", uy: 0.5, mu: 0.05}\n"
+                         << "excitation:\n  ground_motion: {file: " << Source("ground_motions/pulse_tp2.at2")
+                         << "}\nanalysis: {dt: 0.01}\n";
+  };
+  const auto warnings = [&] {
+    const auto json = RunJson("run " + model.string() + " --free-vibration 0 -o " +
+                              TemporaryFile("slips.h5").string());
+    std::string all;
+    if (!json.is_null()) {
+      for (const auto& warning : json["warnings"]) all += warning.get<std::string>() + "\n";
+    }
+    return all;
+  };
+  write("mass: 25 t, height: 3.2 m", "w: 735, r: 2000");
+  EXPECT_EQ(warnings(), "");  // a real building on real bearings
+  write("mass: 25 t, height: 3.5", "w: 735, r: 2000");
+  EXPECT_NE(warnings().find("story 1's height, 3.5 mm (0.0035 m), is outside the 1 to 20 m of real "
+                            "stories: a height without a unit is in mm"),
+            std::string::npos);
+  write("mass: 500, height: 3.2 m", "w: 735, r: 2000");
+  EXPECT_NE(warnings().find("the mass of floor 1, 5e+05 t, is outside the 1 to 100000 t"),
+            std::string::npos);
+  write("mass: 25 t, height: 3.2 m", "w: 1e300, r: 2000");
+  EXPECT_NE(warnings().find("friction pendulum 'fps' carries W = 1e+300 kN, more than the whole "
+                            "structure weighs (735.5 kN)"),
+            std::string::npos);
+  write("mass: 25 t, height: 3.2 m", "w: 735, r: 1e-300");
+  EXPECT_NE(warnings().find("friction pendulum 'fps' has a radius of 1e-303 m, outside the 0.1 to "
+                            "50 m"),
+            std::string::npos);
+}
+
 TEST(RunCommand, ResidualDisplacementAfterFreeVibrationMatchesTheClosedForm) {
   // residual_step_force.yaml derives both numbers: the offset the yielded SDOF swings about after
   // release (its residual), and where it stands at release (what was read before free vibration).

@@ -7,6 +7,10 @@
 // strong):
 //   * a peak ground acceleration above kMaxPlausiblePga (3 g);
 //   * a fixed-base or isolated period above kMaxPlausiblePeriod (10 s);
+//   * a story height outside kPlausibleStoryHeight (1 to 20 m: `height: 3.5` in a mm model is
+//     3.5 mm) and a level's mass outside kPlausibleLevelMass (1 to 10^5 t);
+//   * a friction pendulum carrying more than the structure weighs, or of a radius outside
+//     kPlausiblePendulumRadius (0.1 to 50 m);
 //   * after the run, a peak isolator displacement above kMaxBearingDisplacement (1.5 m, beyond
 //     the capacity of any bearing built).
 // Warnings never stop a run: the engineer decides.
@@ -25,6 +29,9 @@ namespace isolab::analysis {
 inline constexpr double kMaxPlausiblePga = 3.0;           // g
 inline constexpr double kMaxPlausiblePeriod = 10.0;       // s
 inline constexpr double kMaxBearingDisplacement = 1.5;    // m
+inline constexpr double kPlausibleStoryHeight[] = {1.0, 20.0};     // m
+inline constexpr double kPlausibleLevelMass[] = {1.0, 1e5};        // t
+inline constexpr double kPlausiblePendulumRadius[] = {0.1, 50.0};  // m
 inline constexpr double kDefaultTrialDisplacement = 0.1;  // m
 // Structures of more dofs than this get no modes of the whole structure (a dense eigensolution's
 // cost grows with the cube of its size); a chain of springs in one direction always does.
