@@ -37,7 +37,7 @@ def blocks(page):
     lines = page.read_text(encoding="utf-8").splitlines()
     found = []
     for i, line in enumerate(lines):
-        marker = MARKER.search(line)
+        marker = MARKER.fullmatch(line.strip())  # a marker is a line of its own
         if not marker:
             continue
         start = i + 1
