@@ -1,33 +1,78 @@
 #!/usr/bin/env bash
-# Throughput of `isolab compare` (runs per second) on the bundled study, on 1 and 2 MPI ranks and
-# on 1 and 2 threads: each configuration REPEAT times (default 7), median and best of the rate
-# isolab reports (first job handed out to last result; MPI start-up and the summary excluded).
-# Run by hand on a quiet machine (docs/benchmarks.md); never in CI.
-#   benchmarks/compare_throughput.sh [STUDY] [REPEAT]
+# Throughput of `isolab compare` (runs per second) on 1 and 2 threads and on 1 and 2 MPI ranks,
+# with per-run files (full histories, summaries only) and without: each configuration REPEAT
+# times (default 7), alternating, median and range of the rate isolab reports (first job handed
+# out to last result; MPI start-up and the summary excluded), the speed-up of 2 over 1 from the
+# medians, and the share of the jobs' time their threads spent on their files (writing them, or
+# waiting to hand them to the writer threads: time outside the computation, the Amdahl bound).
+# Output goes to tmpfs (/dev/shm) where there is one, so the cost measured is isolab's and
+# HDF5's, not a disk's. Run by hand, on as quiet a machine as there is (docs/benchmarks.md); the
+# load average is printed before and after; never in CI.
+#   benchmarks/compare_throughput.sh [STUDY] [REPEAT] [RUNS...]
+#   (default: benchmarks/five_story_40_runs.yaml, 7, "full summary none")
 set -euo pipefail
 cd "$(dirname "$0")/.."
-study=${1:-models/studies/five_story_isolators.yaml}
+study=${1:-benchmarks/five_story_40_runs.yaml}
 repeat=${2:-7}
-out=$(mktemp -d)
+shift $(($# < 2 ? $# : 2))
+modes=("$@")
+[ ${#modes[@]} -eq 0 ] && modes=(full summary none)
+base=/dev/shm
+[ -d "$base" ] || base=${TMPDIR:-/tmp}
+out=$(mktemp -d "$base/isolab_throughput.XXXXXX")
 trap 'rm -rf "$out"' EXIT
-
-rate() {  # runs/s from isolab's closing stderr line: "36 runs in 0.21 s on 2 threads: 171.4 runs/s; 0 failed"
-  "$@" 2>&1 >/dev/null | sed -n 's/.*: \([0-9.]*\) runs\/s;.*/\1/p'
-}
-
-measure() {
-  local label=$1
-  shift
-  local rates=()
-  for _ in $(seq "$repeat"); do rates+=("$(rate "$@")"); done
-  printf '%s\n' "${rates[@]}" | sort -g | awk -v label="$label" '
-    { r[NR] = $1 }
-    END { printf "%-12s median %7.1f runs/s   best %7.1f runs/s   (%d repeats)\n", label, r[int((NR + 1) / 2)], r[NR], NR }'
-}
 
 mpi=(mpirun --oversubscribe)
 if [ "$(id -u)" -eq 0 ]; then mpi+=(--allow-run-as-root); fi
-measure "mpi -np 1" "${mpi[@]}" -np 1 build/isolab compare "$study" -o "$out/m1"
-measure "mpi -np 2" "${mpi[@]}" -np 2 build/isolab compare "$study" -o "$out/m2"
-measure "threads 1" build/isolab compare "$study" -j 1 -o "$out/t1"
-measure "threads 2" build/isolab compare "$study" -j 2 -o "$out/t2"
+
+# One run: prints "RATE SHARE" from isolab's closing stderr lines:
+#   "40 runs in 0.21 s on 2 threads: 190.4 runs/s; 0 failed"
+#   "per-run files (full): 1.2 % of the jobs' time on their threads; ..."
+once() {
+  local folder=$1
+  shift
+  rm -rf "$folder"
+  "$@" -o "$folder" 2>&1 >/dev/null | awk '
+    /runs\/s;/ { for (i = 1; i <= NF; ++i) if ($i == "runs/s;") rate = $(i - 1) }
+    /of the jobs.* time/ { for (i = 1; i <= NF; ++i) if ($i == "%") share = $(i - 1) }
+    END { printf "%s %s\n", rate, share == "" ? "-" : share }'
+}
+
+# Median, range and the files' share for each configuration, the configurations alternating.
+declare -A rates shares
+configurations=()
+add() { configurations+=("$1"); }
+for runs in "${modes[@]}"; do
+  add "$runs|threads 1|build/isolab compare $study --runs $runs -j 1"
+  add "$runs|threads 2|build/isolab compare $study --runs $runs -j 2"
+  add "$runs|mpi -np 1|${mpi[*]} -np 1 build/isolab compare $study --runs $runs"
+  add "$runs|mpi -np 2|${mpi[*]} -np 2 build/isolab compare $study --runs $runs"
+done
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+for _ in $(seq "$repeat"); do
+  for c in "${configurations[@]}"; do
+    IFS='|' read -r runs label command <<<"$c"
+    # shellcheck disable=SC2086
+    read -r rate share < <(once "$out/run" $command)
+    rates[$c]+="$rate "
+    shares[$c]+="$share "
+  done
+done
+echo "load average after:  $(cut -d' ' -f1-3 /proc/loadavg)"
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ r[NR] = $1 } END { print r[int((NR + 1) / 2)] }'; }
+lowest() { tr ' ' '\n' | grep -v '^$' | sort -g | head -1; }
+highest() { tr ' ' '\n' | grep -v '^$' | sort -g | tail -1; }
+declare -A medians
+for c in "${configurations[@]}"; do
+  IFS='|' read -r runs label _ <<<"$c"
+  m=$(median <<<"${rates[$c]}")
+  medians[$runs|$label]=$m
+  printf 'runs %-8s %-10s median %7.1f runs/s  range %7.1f-%-7.1f  files: %s %% of job time\n' \
+    "$runs" "$label" "$m" "$(lowest <<<"${rates[$c]}")" "$(highest <<<"${rates[$c]}")" \
+    "$(median <<<"${shares[$c]}")"
+done
+for runs in "${modes[@]}"; do
+  awk -v r="$runs" -v t1="${medians[$runs|threads 1]}" -v t2="${medians[$runs|threads 2]}" \
+    -v m1="${medians[$runs|mpi -np 1]}" -v m2="${medians[$runs|mpi -np 2]}" \
+    'BEGIN { printf "runs %-8s speed-up of 2 over 1: threads %.2f, MPI ranks %.2f\n", r, t2 / t1, m2 / m1 }'
+done

@@ -236,16 +236,18 @@ def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit=None
                                 force_unit or "", length_unit or "", threads, force, quiet))
 
 
-def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):
+def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, runs=None):
     """`isolab compare`: a study's isolator variants under its records and scale factors.
 
     study: the study file (YAML). output (the folder; default the study's output.directory, else
     its file name's stem), jobs (threads; 0: every hardware thread), quiet and free_vibration
-    ("auto" or a time in s) are the command line's -o, -j, -q and --free-vibration; progress goes
-    to stderr unless quiet. Runs on local threads, the GIL released (MPI stays with the command
+    ("auto" or a time in s) and runs ("none", "summary" or "full": the per-run files; default the
+    study's output.runs, else "full") are the command line's -o, -j, -q, --free-vibration and
+    --runs; progress goes to stderr unless quiet. Runs on local threads, the GIL released (MPI stays with the command
     line under mpirun).
 
-    Writes what the command line writes: runs/<variant>/<record>_x<scale>.h5 and summary.csv and
+    Writes what the command line writes: runs/<variant>/<record>_x<scale>.h5 (unless runs is
+    "none") and summary.csv and
     summary.h5 in the output folder. Returns a dict: "runs" (one row per run in job order:
     variant, record, scale, completed, message, file, record_units, pga and each quantity with
     its "ratio <quantity>" to the reference variant) and "statistics" (one row per variant and
@@ -256,7 +258,8 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None):
     amplification), a one-direction study's its five; "units" lists them.
     """
     return _compare(str(study), "" if output is None else str(output), jobs, quiet,
-                    None if free_vibration is None else str(free_vibration))
+                    None if free_vibration is None else str(free_vibration),
+                    None if runs is None else str(runs))
 
 
 def _paths(data):

@@ -99,8 +99,10 @@ py::dict StatisticColumns(const study::Summary& summary) {
 }
 
 py::dict Compare(const std::string& study_path, const std::string& output, int jobs, bool quiet,
-                 const std::optional<std::string>& free_vibration) {
+                 const std::optional<std::string>& free_vibration,
+                 const std::optional<std::string>& runs) {
   model::StudyFile study = model::LoadStudyFile(study_path);
+  if (runs) study.runs = model::ParseRunFiles(*runs, "runs");
   if (free_vibration) {
     study.free_vibration =
         model::ParseFreeVibration(*free_vibration, study.units, "free_vibration");
@@ -114,11 +116,10 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
   {
     // The runs touch no Python object; progress goes to stderr as the command line's does.
     py::gil_scoped_release release;
-    outcome = study::MakeThreadScheduler(threads)->Run(
-        expanded.size(),
-        [&](std::size_t job) {
-          return study::RunJob(study, expanded[job], folder, ISOLAB_VERSION);
-        },
+    // As the command line: several threads hand their runs' files to as many writer threads.
+    const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
+    outcome = study::RunStudy(
+        study, expanded, folder, ISOLAB_VERSION, *scheduler, threads > 1 ? threads : 0,
         [&](const study::JobResult& result, std::size_t done, std::size_t total) {
           if (!quiet) {
             fmt::print(stderr, "{}\n",
@@ -151,7 +152,7 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
 
 void BindCompare(py::module_& module) {
   module.def("_compare", &Compare, py::arg("study"), py::arg("output"), py::arg("jobs"),
-             py::arg("quiet"), py::arg("free_vibration"));
+             py::arg("quiet"), py::arg("free_vibration"), py::arg("runs"));
 }
 
 }  // namespace isolab::python

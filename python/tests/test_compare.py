@@ -64,6 +64,23 @@ def test_failed_runs_are_reported_with_nan_quantities(repo, tmp_path):
         assert completed or math.isnan(value)
 
 
+def test_runs_chooses_the_per_run_files_and_keeps_the_quantities(repo, tmp_path):
+    full = isolab.compare(repo / SMALL, output=tmp_path / "full", jobs=2, quiet=True)
+    none = isolab.compare(repo / SMALL, output=tmp_path / "none", jobs=2, quiet=True, runs="none")
+    summary = isolab.compare(repo / SMALL, output=tmp_path / "summary", jobs=1, quiet=True,
+                             runs="summary")
+    assert not (tmp_path / "none" / "runs").exists()
+    assert all(f == "" for f in none["runs"]["file"])
+    assert list(summary["runs"]["file"]) == list(full["runs"]["file"])
+    for key in full["units"]:
+        np.testing.assert_equal(none["runs"][key], full["runs"][key])
+        np.testing.assert_equal(summary["runs"][key], full["runs"][key])
+    one = "runs/thm1/pulse_tp2_x1.h5"
+    assert (tmp_path / "summary" / one).stat().st_size * 4 < (tmp_path / "full" / one).stat().st_size
+    with pytest.raises(isolab.InputError, match="runs"):
+        isolab.compare(repo / SMALL, output=tmp_path / "bad", runs="all")
+
+
 def test_bad_input_raises_input_error_with_its_location(repo, tmp_path):
     with pytest.raises(isolab.InputError, match=r"bad_study_key.yaml:5:1: refrence: unknown key"):
         isolab.compare(repo / "tests/study/data/bad_study_key.yaml", output=tmp_path)

@@ -41,9 +41,24 @@ void WriteResultsFile(const std::string& path, const RunDescription& run,
                       const integrators::ResponseHistory& history) {
   RunDescription rows_as_they_are = run;
   rows_as_they_are.selection.every = history.output_every;
-  ResultsWriter writer(path, rows_as_they_are);
+  // The rows are in memory already: so is the file, written out at once (results_writer.h).
+  ResultsWriter writer(path, rows_as_they_are, 0, ResultsWriter::Mode::kHeld);
   for (int row = 0; row < history.rows_written; ++row) writer.Observe(history.Row(row));
   writer.Finish(*run.summary, *run.peaks);
+}
+
+HeldResultsFile::HeldResultsFile(const std::string& path, const RunDescription& run)
+    : writer_(std::make_unique<ResultsWriter>(path, run, 0, ResultsWriter::Mode::kHeld)) {}
+
+HeldResultsFile::~HeldResultsFile() = default;
+HeldResultsFile::HeldResultsFile(HeldResultsFile&&) noexcept = default;
+HeldResultsFile& HeldResultsFile::operator=(HeldResultsFile&&) noexcept = default;
+
+void HeldResultsFile::Observe(const integrators::ResponseRow& row) { writer_->Observe(row); }
+
+void HeldResultsFile::Write(const RunDescription& run) {
+  writer_->Finish(run);
+  writer_.reset();
 }
 
 std::vector<std::string> RunWarnings(const RunDescription& run) {

@@ -133,14 +133,24 @@ void WriteSelectionAttributes(io::Hdf5File& file, const RunDescription& run) {
   file.WriteStringsAttribute("/", "output_levels", RecordedLevels(selection, *run.problem));
 }
 
+// A file holding one chunk of each series, and about 1 MiB of everything else.
+std::size_t ExpectedBytes(const std::vector<Series>& series, std::size_t chunk_rows) {
+  std::size_t values = 0;
+  for (const Series& s : series) values += s.width() * chunk_rows;
+  return values * sizeof(double) + (std::size_t{1} << 20);
+}
+
 class Hdf5Sink final : public ResultsWriter::Sink {
  public:
-  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t expected_rows)
-      : file_(path) {
+  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t chunk_rows,
+           bool whole_in_memory)
+      : file_(path,
+              whole_in_memory ? io::Hdf5File::Storage::kInMemory : io::Hdf5File::Storage::kOnDisk,
+              ExpectedBytes(series, chunk_rows)) {
     groups_ = CreateSeriesGroups(file_, series);
     for (const Series& s : series) {
       widths_.push_back(s.width());
-      rows_.push_back(file_.CreateRows(s.name, s.columns.size(), s.units, expected_rows));
+      rows_.push_back(file_.CreateRows(s.name, s.columns.size(), s.units, chunk_rows));
       if (!s.columns.empty()) file_.WriteStringsAttribute(s.name, "columns", s.columns);
     }
   }
@@ -182,8 +192,8 @@ class Hdf5Sink final : public ResultsWriter::Sink {
 
 std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
                                                   const std::vector<Series>& series,
-                                                  std::size_t expected_rows) {
-  return std::make_unique<Hdf5Sink>(path, series, expected_rows);
+                                                  std::size_t chunk_rows, bool whole_in_memory) {
+  return std::make_unique<Hdf5Sink>(path, series, chunk_rows, whole_in_memory);
 }
 
 }  // namespace isolab::analysis

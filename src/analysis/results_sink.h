@@ -23,10 +23,11 @@ class ResultsWriter::Sink {
 // True for a .csv path, false for .h5/.hdf5; throws InputError for any other (results_file.h).
 bool IsCsvPath(const std::string& path);
 
-// `expected_rows` sizes HDF5's chunks (more rows may come).
+// Chunks of `chunk_rows` rows: the writer's block, so that each Write fills whole chunks.
+// `whole_in_memory`: the file is built in memory and written at Finish (io::Hdf5File::Storage).
 std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
                                                   const std::vector<Series>& series,
-                                                  std::size_t expected_rows);
+                                                  std::size_t chunk_rows, bool whole_in_memory);
 std::unique_ptr<ResultsWriter::Sink> OpenCsvSink(const std::string& path,
                                                  const std::vector<Series>& series);
 

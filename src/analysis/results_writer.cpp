@@ -7,8 +7,8 @@
 namespace isolab::analysis {
 
 ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
-                             std::size_t buffer_rows)
-    : run_(run) {
+                             std::size_t buffer_rows, Mode mode)
+    : run_(run), path_(path), mode_(mode) {
   CheckResultsPath(path);
   series_ = ResultSeries(*run.problem, run.selection);
   std::size_t width = 0;
@@ -18,12 +18,19 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
                                        1, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
   const int every = std::max(run.selection.every, 1);
   const std::size_t expected_rows = static_cast<std::size_t>(run.problem->grid.steps / every + 1);
-  buffer_rows_ = std::min(buffer_rows_, expected_rows);
+  buffer_rows_ = mode == Mode::kHeld ? expected_rows : std::min(buffer_rows_, expected_rows);
   for (const Series& s : series_) buffers_.emplace_back(buffer_rows_ * s.width());
-  if (IsCsvPath(path)) {
-    sink_ = OpenCsvSink(path, series_);
+  if (mode_ == Mode::kStreaming) OpenSink();
+}
+
+void ResultsWriter::OpenSink() {
+  if (IsCsvPath(path_)) {
+    sink_ = OpenCsvSink(path_, series_);
+  } else if (mode_ == Mode::kHeld) {
+    // One chunk per history: the rows held are written whole, in one call each.
+    sink_ = OpenHdf5Sink(path_, series_, std::max<std::size_t>(buffered_, 1), true);
   } else {
-    sink_ = OpenHdf5Sink(path, series_, expected_rows);
+    sink_ = OpenHdf5Sink(path_, series_, buffer_rows_, false);
   }
 }
 
@@ -31,11 +38,17 @@ ResultsWriter::~ResultsWriter() = default;
 
 void ResultsWriter::Observe(const integrators::ResponseRow& row) {
   if (row.step % std::max(run_.selection.every, 1) != 0 || series_.empty()) return;
+  if (buffered_ == buffer_rows_) {  // held: more rows than the grid's (never with Newmark or IDA)
+    buffer_rows_ *= 2;
+    for (std::size_t s = 0; s < series_.size(); ++s) {
+      buffers_[s].resize(buffer_rows_ * series_[s].width());
+    }
+  }
   for (std::size_t s = 0; s < series_.size(); ++s) {
     series_[s].fill(row, buffers_[s].data() + buffered_ * series_[s].width());
   }
   ++rows_;
-  if (++buffered_ == buffer_rows_) Flush();
+  if (++buffered_ == buffer_rows_ && mode_ == Mode::kStreaming) Flush();
 }
 
 void ResultsWriter::Flush() {
@@ -45,9 +58,16 @@ void ResultsWriter::Flush() {
 }
 
 void ResultsWriter::Finish(const integrators::RunSummary& summary, const ResponsePeaks& peaks) {
+  RunDescription run = run_;
+  run.summary = &summary;
+  run.peaks = &peaks;
+  Finish(run);
+}
+
+void ResultsWriter::Finish(const RunDescription& run) {
+  run_ = run;
+  if (!sink_) OpenSink();
   Flush();
-  run_.summary = &summary;
-  run_.peaks = &peaks;
   sink_->Finish(run_);
 }
 

@@ -1,9 +1,11 @@
 // A results file written while the run advances: a ResponseObserver that keeps every N-th row of
 // the selected series (output_selection.h) in a bounded buffer and writes it out whenever the
-// buffer fills (HDF5: appended to chunked, extendable datasets; CSV: to an anonymous temporary
-// file, since its header comes before the rows). Memory stays the buffer's whatever the record's
-// length or the building's size. Finish writes the summary and makes the file appear at once
-// (atomic_file.h); a writer destroyed without Finish leaves nothing behind.
+// buffer fills (HDF5: appended to chunked, extendable datasets whose chunks are the buffer's
+// rows, so that each write is one call per series of whole new chunks, neither filled first nor
+// read back; CSV: to an anonymous temporary file, since its header comes before the rows). Memory
+// stays the buffer's whatever the record's length or the building's size. Finish writes the summary
+// and makes the file appear at once (atomic_file.h); a writer destroyed without Finish leaves
+// nothing behind.
 #pragma once
 
 #include <memory>
@@ -19,13 +21,22 @@ struct Series;  // one history of the file (private to the writers)
 
 class ResultsWriter final : public integrators::ResponseObserver {
  public:
-  // Rows buffered when none are asked for: as many as fit in this many bytes, at least one.
-  static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+  // Rows buffered when none are asked for: as many as fit in this many bytes, at least one (the
+  // fewer the blocks, the fewer the calls into HDF5 per row).
+  static constexpr std::size_t kBufferBytes = std::size_t{4} << 20;
 
-  // Creates `path` (its extension chooses the format, results_file.h) under a temporary name for
+  // kStreaming: the file is created at once and written block by block as the run goes.
+  // kHeld: every row stays in the buffer (grown as needed: the histories of one run, as compact
+  // as the file holds them), nothing is created before Finish, which builds the whole HDF5 file
+  // in memory (io::Hdf5File::Storage) and writes it in one call. For a run whose file is written
+  // after it, elsewhere (a study's writer threads) or from rows already in memory.
+  enum class Mode { kStreaming, kHeld };
+
+  // For `path` (its extension chooses the format, results_file.h), under a temporary name, for
   // the run `run` describes (its summary and peaks are not read), recording run.selection.
   // Throws InputError for a bad path or a level the structure does not have.
-  ResultsWriter(const std::string& path, const RunDescription& run, std::size_t buffer_rows = 0);
+  ResultsWriter(const std::string& path, const RunDescription& run, std::size_t buffer_rows = 0,
+                Mode mode = Mode::kStreaming);
   ~ResultsWriter() override;
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
@@ -35,6 +46,9 @@ class ResultsWriter final : public integrators::ResponseObserver {
   // Writes what is buffered, the summary, peaks and attributes, and renames the file to its path.
   // Throws InputError when the file cannot be written.
   void Finish(const integrators::RunSummary& summary, const ResponsePeaks& peaks);
+  // The same for a description of the whole run (its summary and peaks, and what else it points
+  // to, replace those given at construction, which need not live until then).
+  void Finish(const RunDescription& run);
 
   // The rows written so far (and buffered), and the rows the buffer holds.
   int rows() const { return rows_; }
@@ -44,8 +58,11 @@ class ResultsWriter final : public integrators::ResponseObserver {
 
  private:
   void Flush();
+  void OpenSink();
 
   RunDescription run_;
+  std::string path_;
+  Mode mode_ = Mode::kStreaming;
   std::vector<Series> series_;
   std::unique_ptr<Sink> sink_;
   std::size_t buffer_rows_ = 0;

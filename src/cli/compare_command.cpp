@@ -56,7 +56,11 @@ void WriteSummary(const CompareOptions& options, const model::StudyFile& study_f
   if (!study_file.description.empty()) fmt::print(out, "{}\n", study_file.description);
   fmt::print(out, "\n");
   study::PrintSummaryTable(summary, out);
-  fmt::print(out, "\nsummary: {}, {}\nruns: {}\n", csv, h5, (folder / "runs").string());
+  fmt::print(out, "\nsummary: {}, {}\n", csv, h5);
+  if (study_file.runs != model::RunFiles::kNone) {
+    fmt::print(out, "runs: {}{}\n", (folder / "runs").string(),
+               study_file.runs == model::RunFiles::kSummary ? " (summaries only)" : "");
+  }
   if (summary.failed() > 0) {
     fmt::print(out, "{} of {} runs failed (see the summary's status and message)\n",
                summary.failed(), summary.runs.size());
@@ -64,6 +68,12 @@ void WriteSummary(const CompareOptions& options, const model::StudyFile& study_f
 }
 
 constexpr int kThreadsPerHardwareThread = 8;
+
+int LocalThreads(const CompareOptions& options) {
+  const int threads =
+      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  return std::max(threads, 1);
+}
 
 std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, bool mpi) {
   if (mpi) {
@@ -74,9 +84,7 @@ std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, b
     }
     return study::MakeMpiScheduler();
   }
-  const int threads =
-      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  return study::MakeThreadScheduler(std::max(threads, 1));
+  return study::MakeThreadScheduler(LocalThreads(options));
 }
 
 }  // namespace
@@ -101,6 +109,11 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
   command->add_option("--free-vibration", options.free_vibration,
                       "Free vibration after each record, where the residual displacement is "
                       "read: auto (5 x the longest period; the default), a time in s, or 0");
+  command
+      ->add_option("--runs", options.runs,
+                   "Per-run files: none, summary (peaks and attributes) or full (every "
+                   "history; the default unless the study's output.runs says otherwise)")
+      ->check(CLI::IsMember({"none", "summary", "full"}));
 }
 
 int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
@@ -123,6 +136,7 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
       study_file.free_vibration =
           model::ParseFreeVibration(options.free_vibration, study_file.units, "--free-vibration");
     }
+    if (!options.runs.empty()) study_file.runs = model::ParseRunFiles(options.runs, "--runs");
     if (options.plot) CheckPlotScript("plot_study.py");  // before the runs, not after
     directory = study::PrepareOutputFolder(options.output, options.study, study_file);
   } catch (const InputError&) {
@@ -149,12 +163,14 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
       fmt::print(stderr, "{}\n",
                  study::JobProgressLine(study_file, jobs[result.job], result, done, total));
     };
-    const study::ScheduleOutcome outcome = scheduler->Run(
-        jobs.size(),
-        [&](std::size_t job) {
-          return study::RunJob(study_file, jobs[job], directory, ISOLAB_VERSION);
-        },
-        progress);
+    // Several local threads hand their runs to as many writer threads; one thread, or an MPI
+    // rank, writes each run's file after computing it (run_files.h).
+    const int writer_threads = !mpi && LocalThreads(options) > 1 ? LocalThreads(options) : 0;
+    const bool background_writer = writer_threads > 0;
+    double writing_seconds = 0.0;
+    const study::ScheduleOutcome outcome =
+        study::RunStudy(study_file, jobs, directory, ISOLAB_VERSION, *scheduler, writer_threads,
+                        progress, &writing_seconds);
     failed = outcome.failed;
     // Rank 0 reports failed runs in its summary and exit code. A worker leaving with 1 would
     // make mpirun abort the job while rank 0 may still be plotting.
@@ -167,6 +183,21 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
                      ? static_cast<double>(jobs.size()) / outcome.wall_seconds
                      : 0.0,
                  failed);
+      // What the jobs' threads spent on their files (writing them, or waiting to hand them
+      // over): the share of a job's time outside its computation.
+      double job_seconds = 0.0, output_seconds = 0.0;
+      for (const study::JobResult& result : outcome.results) {
+        job_seconds += result.wall_seconds;
+        output_seconds += result.output_seconds;
+      }
+      if (study_file.runs != model::RunFiles::kNone) {
+        fmt::print(stderr,
+                   "per-run files ({}): {:.1f} % of the jobs' time on their threads; {:.2f} s "
+                   "writing{}\n",
+                   model::RunFilesName(study_file.runs),
+                   job_seconds > 0.0 ? 100.0 * output_seconds / job_seconds : 0.0, writing_seconds,
+                   background_writer ? " on the writer threads" : "");
+      }
     }
     for (const study::JobResult& result : outcome.results) {
       for (const std::string& warning : result.warnings) {

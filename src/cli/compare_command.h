@@ -20,6 +20,7 @@ struct CompareOptions {
   bool quiet = false;          // no progress on stderr
   bool plot = false;           // bar charts by scripts/plot_study.py after the summary
   std::string free_vibration;  // "auto" or a time (s) after each record; empty: the study's
+  std::string runs;            // "none", "summary" or "full"; empty: the study's output.runs
 };
 
 void RegisterCompareCommand(CLI::App& app, CompareOptions& options);

@@ -1,9 +1,13 @@
 #include "isolab/io/hdf5_file.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <hdf5.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -79,10 +83,31 @@ std::vector<const char*> Pointers(std::span<const std::string> values) {
   return pointers;
 }
 
+// The whole file at once (Storage::kInMemory), outside HDF5.
+void WriteImage(const std::string& path, std::span<const char> image) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) throw ResourceError(path, fmt::format("cannot write ({})", std::strerror(errno)));
+  std::size_t written = 0;
+  while (written < image.size()) {
+    const ssize_t n = ::write(fd, image.data() + written, image.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      throw ResourceError(path, fmt::format("cannot write ({})", std::strerror(error)));
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) {
+    throw ResourceError(path, fmt::format("cannot write ({})", std::strerror(errno)));
+  }
+}
+
 }  // namespace
 
 struct Hdf5File::Impl {
   std::optional<AtomicFile> output;
+  Storage storage = Storage::kOnDisk;
   hid_t file = -1;
   hid_t dataset_create = -1;  // no timestamps
   hid_t group_create = -1;
@@ -160,7 +185,8 @@ struct Hdf5File::Impl {
   }
 };
 
-Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
+Hdf5File::Hdf5File(std::string path, Storage storage, std::size_t expected_bytes)
+    : impl_(std::make_unique<Impl>()) {
   // HDF5 1.10 (Debian 12) frees a file whose close failed (a full disk) but keeps its identifier,
   // and its exit handler then closes it again: a crash after the error was reported (fixed in
   // HDF5 1.14, HDFGroup/hdf5#2291). Without the handler nothing is closed twice; isolab closes
@@ -168,6 +194,7 @@ Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
   static const herr_t no_exit_handler = H5dont_atexit();
   (void)no_exit_handler;
   Impl& s = *impl_;
+  s.storage = storage;
   s.output.emplace(std::move(path), AtomicFile::Temporary::kNamed);
   // HDF5 prints its error stack by default; errors here are reported through return codes. (The
   // setting is per thread in the thread-safe library Debian ships.)
@@ -187,6 +214,12 @@ Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
     }
     // Closing with objects still open is an error (Commit's check), not a silent deferral.
     s.Check(H5Pset_fclose_degree(file_access.get(), H5F_CLOSE_SEMI), "property lists");
+    if (storage == Storage::kInMemory) {
+      // Grown by the expected size at a time (each growth copies the image and zeroes the new
+      // part), never written by HDF5 (Commit writes the image).
+      const std::size_t increment = std::max(expected_bytes, std::size_t{1} << 20);
+      s.Check(H5Pset_fapl_core(file_access.get(), increment, false), "property lists");
+    }
     s.file = H5Fcreate(s.output->temporary_path().c_str(), H5F_ACC_TRUNC, file_create.get(),
                        file_access.get());
     s.Check(s.file, "cannot create the file");
@@ -273,12 +306,9 @@ void Hdf5File::WriteDoublesAttribute(const std::string& object, const std::strin
 }
 
 Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns,
-                                    const std::string& units, std::size_t expected_rows) {
+                                    const std::string& units, std::size_t chunk_rows) {
   const Impl& s = *impl_;
-  const std::size_t width = std::max<std::size_t>(columns, 1);
-  // Chunks of at most 1 MiB (HDF5's default chunk cache) and no longer than the history expected.
-  const std::size_t chunk_rows =
-      std::max<std::size_t>(1, std::min(expected_rows, (std::size_t{1} << 17) / width));
+  chunk_rows = std::max<std::size_t>(chunk_rows, 1);
   const int rank = columns == 0 ? 1 : 2;
   const hsize_t initial[2] = {0, columns};
   const hsize_t maximum[2] = {H5S_UNLIMITED, columns};
@@ -288,6 +318,11 @@ Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns
   Handle create(H5Pcopy(s.dataset_create), H5Pclose);
   s.Check(create.get(), "property list of " + name);
   s.Check(H5Pset_chunk(create.get(), rank, chunk), "chunks of " + name);
+  if (s.storage == Storage::kInMemory) {
+    // Built in memory, a file's histories are appended whole: no chunk is left part-written, so
+    // none needs its fill first.
+    s.Check(H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER), "fill of " + name);
+  }
   const hid_t dataset = H5Dcreate2(s.file, name.c_str(), H5T_NATIVE_DOUBLE, space.get(),
                                    H5P_DEFAULT, create.get(), H5P_DEFAULT);
   s.Check(dataset, "dataset " + name);
@@ -308,9 +343,23 @@ void Hdf5File::Commit() {
     H5Pclose(*plist);
     *plist = -1;
   }
+  std::unique_ptr<char[]> image;  // every byte written by HDF5: not zeroed first
+  std::size_t image_size = 0;
+  if (s.storage == Storage::kInMemory) {
+    s.Check(H5Fflush(s.file, H5F_SCOPE_LOCAL), "flushing the file");
+    const ssize_t size = H5Fget_file_image(s.file, nullptr, 0);
+    s.Check(static_cast<herr_t>(size < 0 ? -1 : 0), "the file's image");
+    image_size = static_cast<std::size_t>(size);
+    image.reset(new char[std::max<std::size_t>(image_size, 1)]);
+    s.Check(static_cast<herr_t>(H5Fget_file_image(s.file, image.get(), image_size) < 0 ? -1 : 0),
+            "the file's image");
+  }
   const herr_t status = H5Fclose(s.file);
   s.file = -1;
   s.Check(status, "closing (flushing) the file");
+  if (s.storage == Storage::kInMemory) {
+    WriteImage(s.output->temporary_path(), std::span<const char>(image.get(), image_size));
+  }
   s.output->Commit();
 }
 

@@ -411,11 +411,40 @@ StudyFile LoadStudyFile(const std::string& path) {
   if (root["output"]) {
     const YAML::Node output = root["output"];
     reader.RequireMap(output, "output");
-    reader.CheckKeys(output, "output", {"directory"});
-    study.output_directory =
-        reader.ReadString(reader.Require(output, "output", "directory"), "output.directory");
+    reader.CheckKeys(output, "output", {"directory", "runs"});
+    if (output["directory"]) {
+      study.output_directory = reader.ReadString(output["directory"], "output.directory");
+    }
+    if (output["runs"]) {
+      const std::string runs = reader.ReadString(output["runs"], "output.runs");
+      try {
+        study.runs = ParseRunFiles(runs, "output.runs");
+      } catch (const InputError&) {
+        throw InputError(reader.Locate(output["runs"]),
+                         fmt::format("output.runs = {} (must be none, summary or full)", runs));
+      }
+    }
   }
   return study;
+}
+
+RunFiles ParseRunFiles(const std::string& text, const std::string& key) {
+  for (const RunFiles runs : {RunFiles::kNone, RunFiles::kSummary, RunFiles::kFull}) {
+    if (text == RunFilesName(runs)) return runs;
+  }
+  throw InputError({key}, fmt::format("{} (must be none, summary or full)", text));
+}
+
+const char* RunFilesName(RunFiles runs) {
+  switch (runs) {
+    case RunFiles::kNone:
+      return "none";
+    case RunFiles::kSummary:
+      return "summary";
+    case RunFiles::kFull:
+      return "full";
+  }
+  return "?";
 }
 
 }  // namespace isolab::model

@@ -60,6 +60,7 @@ std::vector<char> Serialize(const JobResult& result) {
   Put(&bytes, static_cast<std::uint8_t>(result.completed ? 1 : 0));
   for (const double value : result.values) Put(&bytes, value);
   Put(&bytes, result.wall_seconds);
+  Put(&bytes, result.output_seconds);
   Put(&bytes, result.pga);
   PutString(&bytes, result.message);
   PutString(&bytes, result.file);
@@ -76,6 +77,7 @@ JobResult Deserialize(std::span<const char> bytes) {
   result.completed = reader.Get<std::uint8_t>() != 0;
   for (double& value : result.values) value = reader.Get<double>();
   result.wall_seconds = reader.Get<double>();
+  result.output_seconds = reader.Get<double>();
   result.pga = reader.Get<double>();
   result.message = reader.GetString();
   result.file = reader.GetString();

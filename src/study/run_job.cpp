@@ -6,6 +6,10 @@
 #include <chrono>
 #include <exception>
 #include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
 
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
@@ -35,7 +39,7 @@ std::string PrepareRunFile(const model::StudyFile& study, const Job& job,
 }
 
 JobResult RunJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
-                 const std::string& version) {
+                 const std::string& version, RunFileWriter* files) {
   const auto start = std::chrono::steady_clock::now();
   JobResult result;
   result.job = job.index;
@@ -61,7 +65,9 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
     overrides.angle = record.angle;
     overrides.fixed_base = variant.fixed_base;
     overrides.free_vibration = StudyFreeVibration(study, model.units);
-    const analysis::Problem problem = analysis::Prepare(model, overrides);
+    const auto prepared =
+        std::make_shared<const analysis::Problem>(analysis::Prepare(model, overrides));
+    const analysis::Problem& problem = *prepared;
     const double g = model.units.Convert(1.0, "g", dimension::kAcceleration);
     double pga = 0.0;
     for (const io::AppliedRecord& applied : problem.records) {
@@ -75,10 +81,37 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
     result.pga = pga / g;
     analysis::SolveOptions options;
     options.analysis = model.analysis;
-    options.results_path = PrepareRunFile(study, job, output_directory);
     options.version = version;
-    const analysis::Summary summary = analysis::Solve(options, problem);
-    result.file = RunFileName(study, job);
+    options.output.summary_only = study.runs == model::RunFiles::kSummary;
+    // The run goes to memory, its file is written from there afterwards (run_files.h).
+    RunFile file;
+    std::vector<integrators::ResponseObserver*> observers;
+    if (study.runs != model::RunFiles::kNone) {
+      file.job = job.index;
+      file.path = PrepareRunFile(study, job, output_directory);
+      file.problem = prepared;
+      file.analysis = options.analysis;
+      file.selection = options.output;
+      file.version = version;
+      file.held.emplace(file.path, analysis::RunDescription{&problem, &file.analysis, nullptr,
+                                                            nullptr, version, file.selection});
+      if (study.runs == model::RunFiles::kFull) observers.push_back(&*file.held);
+    }
+    const analysis::Summary summary = analysis::Solve(options, problem, observers);
+    if (study.runs != model::RunFiles::kNone) {
+      file.run = summary.run;
+      // The one machine-dependent value of a results file: unknown here, so that a study's files
+      // are the same bytes whichever thread, rank or machine ran them.
+      file.run.wall_seconds = std::numeric_limits<double>::quiet_NaN();
+      file.peaks = summary.peaks;
+      if (files != nullptr) {
+        result.output_seconds = files->Submit(std::move(file));
+      } else {
+        RunFileWriter inline_writer(0, 1);
+        result.output_seconds = inline_writer.Submit(std::move(file));
+      }
+      result.file = RunFileName(study, job);
+    }
     result.warnings = summary.warnings;
     if (summary.ok()) {
       result.completed = true;
@@ -93,6 +126,33 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+ScheduleOutcome RunStudy(const model::StudyFile& study, const std::vector<Job>& jobs,
+                         const std::string& output_directory, const std::string& version,
+                         Scheduler& scheduler, int writer_threads, const ProgressFunction& progress,
+                         double* writing_seconds) {
+  // Room for two files per writer (one being written, one waiting): a job that finishes while
+  // the writers are busy hands its run over and starts the next, and memory holds a few runs
+  // (those computing, those in the queue), not the study.
+  const std::size_t writers = study.runs == model::RunFiles::kNone
+                                  ? 0
+                                  : static_cast<std::size_t>(std::max(writer_threads, 0));
+  RunFileWriter files(writers, 2 * writers);
+  ScheduleOutcome outcome = scheduler.Run(
+      jobs.size(),
+      [&](std::size_t job) { return RunJob(study, jobs[job], output_directory, version, &files); },
+      progress);
+  for (const auto& [job, message] : files.Finish()) {
+    JobResult& result = outcome.results[job];
+    if (result.completed) ++outcome.failed;
+    result.completed = false;
+    result.values = NoValues();
+    result.file.clear();
+    result.message = message;
+  }
+  if (writing_seconds != nullptr) *writing_seconds = files.writing_seconds();
+  return outcome;
 }
 
 }  // namespace isolab::study

@@ -65,6 +65,24 @@ void ExpectSameSummaries(const fs::path& a, const fs::path& b) {
   EXPECT_TRUE(h5 == ReadText(b / "summary.h5")) << a << " vs " << b;
 }
 
+// Every per-run file of `a` is in `b` with the same bytes, and `b` has no other.
+void ExpectSameRunFiles(const fs::path& a, const fs::path& b) {
+  std::size_t files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(a / "runs")) {
+    if (!entry.is_regular_file()) continue;
+    ++files;
+    const fs::path relative = fs::relative(entry.path(), a);
+    ASSERT_TRUE(fs::exists(b / relative)) << relative;
+    EXPECT_TRUE(ReadText(entry.path()) == ReadText(b / relative)) << relative;
+  }
+  std::size_t others = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(b / "runs")) {
+    if (entry.is_regular_file()) ++others;
+  }
+  EXPECT_GT(files, 0u);
+  EXPECT_EQ(files, others);
+}
+
 TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
   const fs::path one = OutputFolder("threads1"), two = OutputFolder("threads2");
   const Outcome run1 =
@@ -84,6 +102,84 @@ TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
   for (std::size_t i = 1; i <= 24; ++i) {
     EXPECT_EQ(rows[i][3], "completed") << i;
     EXPECT_TRUE(fs::exists(one / rows[i].back())) << rows[i].back();
+  }
+  // The per-run files too: the same bytes whichever thread (or writer thread) wrote them.
+  ExpectSameRunFiles(one, two);
+}
+
+TEST(CompareCommand, RunsOptionKeepsTheSummaryAndChoosesThePerRunFiles) {
+  const fs::path full = OutputFolder("runs_full"), summary = OutputFolder("runs_summary"),
+                 none = OutputFolder("runs_none");
+  const std::string study = "compare " + StudyData("small_study.yaml") + " -q -j 2 -o ";
+  ASSERT_EQ(RunIsolab(study + full.string()).exit_code, 0);
+  const Outcome summary_run = RunIsolab(study + summary.string() + " --runs summary");
+  ASSERT_EQ(summary_run.exit_code, 0) << summary_run.output;
+  const Outcome none_run = RunIsolab(study + none.string() + " --runs none");
+  ASSERT_EQ(none_run.exit_code, 0) << none_run.output;
+  // The summary is the same but for the files named: none without per-run files.
+  EXPECT_EQ(ReadText(full / "summary.csv"), ReadText(summary / "summary.csv"));
+  const auto full_rows = CsvRows(full / "summary.csv");
+  const auto none_rows = CsvRows(none / "summary.csv");
+  ASSERT_EQ(full_rows.size(), none_rows.size());
+  const std::size_t file_column =
+      std::find(full_rows[0].begin(), full_rows[0].end(), "file") - full_rows[0].begin();
+  ASSERT_LT(file_column, full_rows[0].size());
+  for (std::size_t i = 1; i < full_rows.size(); ++i) {
+    auto expected = full_rows[i];
+    if (file_column < expected.size()) expected[file_column].clear();
+    EXPECT_EQ(none_rows[i], expected) << i;
+  }
+  EXPECT_FALSE(fs::exists(none / "runs"));
+  EXPECT_EQ(none_run.output.find("runs: "), std::string::npos) << none_run.output;
+  // Summary-only run files: the peaks without histories, far smaller than the full ones.
+  const fs::path one = "runs/thm1/pulse_tp2_x1.h5";
+  ASSERT_TRUE(fs::exists(summary / one));
+  EXPECT_LT(fs::file_size(summary / one) * 4, fs::file_size(full / one));
+  EXPECT_NE(summary_run.output.find("(summaries only)"), std::string::npos);
+
+  // The study file says the same (output.runs), and the flag overrides it. (A copy of the study
+  // elsewhere, its relative paths made absolute.)
+  std::string text = ReadText(StudyData("small_study.yaml"));
+  const auto replace_all = [&text](const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+  };
+  const std::string data = fs::path(StudyData("small_study.yaml")).parent_path().string() + "/";
+  replace_all("../../../", Source(""));
+  replace_all("building: small_building.yaml", "building: " + data + "small_building.yaml");
+  const fs::path copy = isolab::testing::OwnTestDirectory() / "runs_study.yaml";
+  std::ofstream(copy) << text << "\noutput: {runs: none}\n";
+  const fs::path from_study = OutputFolder("runs_from_study"),
+                 overridden = OutputFolder("runs_overridden");
+  const Outcome by_study = RunIsolab("compare " + copy.string() + " -q -o " + from_study.string());
+  const Outcome by_flag =
+      RunIsolab("compare " + copy.string() + " -q --runs full -o " + overridden.string());
+  ASSERT_EQ(by_study.exit_code, 0) << by_study.output;
+  ASSERT_EQ(by_flag.exit_code, 0) << by_flag.output;
+  EXPECT_FALSE(fs::exists(from_study / "runs"));
+  EXPECT_TRUE(fs::exists(overridden / one));
+
+  const Outcome bad = RunIsolab(study + none.string() + " --runs some");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+}
+
+TEST(CompareCommand, ARunFileThatCannotBeWrittenFailsItsRunOnEveryThreadCount) {
+  for (const char* threads : {"1", "2"}) {
+    const fs::path folder = OutputFolder(std::string("unwritable_") + threads);
+    // A folder where the run's file should go: the file cannot be created there.
+    fs::create_directories(folder / "runs/thm1/pulse_tp2_x1.h5");
+    const Outcome run = RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j " + threads +
+                                  " -o " + folder.string());
+    EXPECT_EQ(run.exit_code, 1) << threads << ": " << run.output;
+    const auto rows = CsvRows(folder / "summary.csv");
+    const auto* row = FindRow(rows, "thm1", "pulse_tp2", "1");
+    ASSERT_NE(row, nullptr) << threads;
+    EXPECT_EQ((*row)[3], "failed") << threads;
+    const auto* other = FindRow(rows, "thm1", "pulse_tp2", "0.5");
+    ASSERT_NE(other, nullptr);
+    EXPECT_EQ((*other)[3], "completed") << threads;
   }
 }
 
@@ -132,6 +228,7 @@ TEST(CompareCommand, MpiRanksWriteTheSameSummaryAsOneProcess) {
       RunShell(Mpirun(2) + " compare " + StudyData("small_study.yaml") + " -q -o " + mpi.string());
   ASSERT_EQ(two.exit_code, 0) << two.output;
   ExpectSameSummaries(local, mpi);
+  ExpectSameRunFiles(local, mpi);
   EXPECT_NE(two.output.find("scale 0.5 (ratios to thm1)"), std::string::npos);
   EXPECT_EQ(two.output.find("scale 0.5", two.output.find("scale 0.5") + 1), std::string::npos)
       << "the table is printed once, by rank 0";

@@ -186,6 +186,26 @@ TEST_F(StudyFileTest, ModelVariantsAndReferenceByName) {
   EXPECT_TRUE(study.variants[2].fixed_base);
 }
 
+TEST_F(StudyFileTest, OutputRunsChoosesThePerRunFiles) {
+  EXPECT_EQ(LoadStudyFile(Study("variants: [{name: a}]\n" + kRecords + "scales: [1]\n")).runs,
+            RunFiles::kFull);
+  for (const RunFiles runs : {RunFiles::kNone, RunFiles::kSummary, RunFiles::kFull}) {
+    const StudyFile study =
+        LoadStudyFile(Study("variants: [{name: a}]\n" + kRecords +
+                            "scales: [1]\noutput: {runs: " + RunFilesName(runs) + "}\n"));
+    EXPECT_EQ(study.runs, runs) << RunFilesName(runs);
+    EXPECT_TRUE(study.output_directory.empty());
+  }
+  const StudyFile both = LoadStudyFile(Study("variants: [{name: a}]\n" + kRecords +
+                                             "scales: [1]\noutput: {directory: d, runs: none}\n"));
+  EXPECT_EQ(both.output_directory, "d");
+  EXPECT_EQ(both.runs, RunFiles::kNone);
+  ExpectError("variants: [{name: a}]\n" + kRecords + "scales: [1]\noutput: {runs: all}\n",
+              ":5:16:", "output.runs = all (must be none, summary or full)");
+  EXPECT_EQ(ParseRunFiles("summary", "--runs"), RunFiles::kSummary);
+  EXPECT_THROW(ParseRunFiles("Full", "--runs"), InputError);
+}
+
 TEST_F(StudyFileTest, MalformedStudiesAreLocated) {
   ExpectError("variants: [{name: a}]\n" + kRecords + "scale: [1]\n", ":4:1:",
               "scale: unknown key (did you mean 'scales'?); expected one of: description, "

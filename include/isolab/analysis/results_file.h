@@ -40,6 +40,7 @@
 // streams them while the run advances.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,30 @@ void CheckResultsPath(const std::string& path);
 // (or CheckResultsPath fails).
 void WriteResultsFile(const std::string& path, const RunDescription& run,
                       const integrators::ResponseHistory& history);
+
+class ResultsWriter;
+
+// A results file written after its run, by whichever thread: its rows, observed as the run goes,
+// stay in memory as compact as the file holds them (the selected histories of one run), and
+// Write builds the whole file in memory and writes it out in one call. A study's runs use it so
+// that no HDF5 call happens while a run computes.
+class HeldResultsFile final : public integrators::ResponseObserver {
+ public:
+  // As ResultsWriter (results_writer.h): checks the path and the selection (InputError), creates
+  // nothing yet. `run.problem` must outlive this object; the rest of `run` is read only here.
+  HeldResultsFile(const std::string& path, const RunDescription& run);
+  ~HeldResultsFile() override;
+  HeldResultsFile(HeldResultsFile&&) noexcept;
+  HeldResultsFile& operator=(HeldResultsFile&&) noexcept;
+
+  void Observe(const integrators::ResponseRow& row) override;
+  // Writes the file of the run `run` describes, complete (summary and peaks); once. Throws
+  // InputError or ResourceError when it cannot be written.
+  void Write(const RunDescription& run);
+
+ private:
+  std::unique_ptr<ResultsWriter> writer_;
+};
 
 // Every warning about the model and the run (model_summary.h), for printing and the files.
 std::vector<std::string> RunWarnings(const RunDescription& run);

@@ -26,9 +26,20 @@ class Hdf5File {
  public:
   class Rows;
 
+  // Where HDF5 builds the file. kOnDisk: in the temporary file itself, as it goes (memory stays
+  // HDF5's caches). kInMemory: in memory, the whole file, written out by Commit in one call
+  // outside any HDF5 call: for a file whose contents are in memory anyway, so that threads
+  // sharing HDF5's global lock hold it for HDF5's own work only, not for the system's write.
+  // Rows' chunks are then not filled before they are written: append whole chunks only (a
+  // history written in one Append of one chunk), or the rest of a chunk holds what memory held.
+  enum class Storage { kOnDisk, kInMemory };
+
   // Throws InputError when the path cannot be an output (atomic_file.h) or the file cannot be
   // created.
-  explicit Hdf5File(std::string path);
+  // `expected_bytes`: about how large a file kInMemory will grow (its memory grows by that much,
+  // at least 1 MiB, at a time).
+  explicit Hdf5File(std::string path, Storage storage = Storage::kOnDisk,
+                    std::size_t expected_bytes = 0);
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
@@ -58,10 +69,11 @@ class Hdf5File {
   void WriteDoublesAttribute(const std::string& object, const std::string& name,
                              std::span<const double> values);
 
-  // A float64 dataset of `columns` columns (0: a vector) whose rows are appended. Expected rows
-  // size its chunks (no more than needed for short histories); more may be appended.
+  // A float64 dataset of `columns` columns (0: a vector) whose rows are appended, stored in chunks
+  // of `chunk_rows` rows (at least one). Appending whole chunks at a chunk's start writes them
+  // straight through: HDF5 neither fills a new chunk first nor reads one back.
   Rows CreateRows(const std::string& name, std::size_t columns, const std::string& units,
-                  std::size_t expected_rows);
+                  std::size_t chunk_rows);
 
   // Closes (flushes) the file and renames it to its path. Every Rows must be gone by then.
   // Throws InputError on failure.

@@ -67,6 +67,14 @@ struct StudyRecord {
   double angle = 0.0;  // degrees from x to H1
 };
 
+// What a study writes per run beside its summary: nothing, each run's summary (peaks, final
+// energies, attributes: `isolab run --summary-only`'s file) or every history as well.
+enum class RunFiles { kNone, kSummary, kFull };
+
+// "none", "summary" or "full"; InputError({key}, ...) naming the three otherwise.
+RunFiles ParseRunFiles(const std::string& text, const std::string& key);
+const char* RunFilesName(RunFiles runs);
+
 struct StudyFile {
   std::string path;
   std::string description;
@@ -79,6 +87,7 @@ struct StudyFile {
   std::vector<StudyRecord> records;
   std::vector<double> scales;
   std::string output_directory;                 // empty: not given
+  RunFiles runs = RunFiles::kFull;              // output.runs
   std::optional<FreeVibration> free_vibration;  // (the building's time unit); empty: the models'
 };
 
