@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace isolab::analysis {
 namespace {
@@ -52,6 +53,13 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   const auto capacity = static_cast<std::size_t>(std::floor(problem.residual_window / dt)) + 2;
   window_.assign(isolators, std::vector<Sample>(capacity));
   at_excitation_end_.assign(isolators, Vec2{});
+  const std::size_t bearings = problem.structure.axial_loads().bearings.size();
+  for (std::size_t j = 0; j < bearings; ++j) {
+    peaks_.axial_load_minima.push_back(
+        {std::numeric_limits<double>::infinity(), 0.0, static_cast<int>(j)});
+  }
+  peaks_.uplift_durations.assign(bearings, 0.0);
+  peaks_.first_uplift_times.assign(bearings, -1.0);
 }
 
 Vec2 PeakTracker::IsolatorDisplacement(std::size_t isolator,
@@ -153,6 +161,19 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
              t, 0);
   }
   peaks.energies = row.energies;
+  // A row without axial loads (a history read back) leaves them as they are.
+  if (row.axial_load.size() == peaks.axial_load_minima.size()) {
+    for (std::size_t j = 0; j < row.axial_load.size(); ++j) {
+      const double n = row.axial_load[j];
+      Peak& least = peaks.axial_load_minima[j];
+      if (n < least.value) least = {n, t, static_cast<int>(j)};
+      if (n <= 0.0) {
+        if (peaks.first_uplift_times[j] < 0.0) peaks.first_uplift_times[j] = t;
+        if (peaks.rows > 0) peaks.uplift_durations[j] += t - last_time_;
+      }
+    }
+  }
+  last_time_ = t;
   ++peaks.rows;
 }
 

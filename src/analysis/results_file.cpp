@@ -51,6 +51,17 @@ std::vector<std::string> RunWarnings(const RunDescription& run) {
   const std::string bearing =
       IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.problem->units());
   if (!bearing.empty()) warnings.push_back(bearing);
+  const structure::AxialLoads& axial = run.problem->structure.axial_loads();
+  const ResponsePeaks& peaks = *run.peaks;
+  for (std::size_t j = 0; j < peaks.first_uplift_times.size(); ++j) {
+    if (peaks.first_uplift_times[j] < 0.0) continue;
+    warnings.push_back(fmt::format(
+        "isolator {} uplifted (axial load N <= 0, least {:.4g} {}) first at t = {:.6g} {}, for "
+        "{:.4g} {} in all: it carried no shear meanwhile",
+        axial.bearings[j].name, peaks.axial_load_minima[j].value, run.problem->units().force(),
+        peaks.first_uplift_times[j], run.problem->units().time(), peaks.uplift_durations[j],
+        run.problem->units().time()));
+  }
   const double error = run.summary->energy_balance_error;
   if (run.summary->ok() && error > kEnergyBalanceWarning) {
     warnings.push_back(fmt::format(

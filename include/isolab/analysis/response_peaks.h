@@ -59,6 +59,11 @@ struct ResponsePeaks {
   double residual_isolator_displacement = 0.0;
   double residual_oscillation = 0.0;
   double isolator_displacement_at_excitation_end = 0.0;
+  // Per bearing of the structure's axial loads (structure/axial_load.h; empty without them): the
+  // least axial load N (signed; its time; index: the bearing), the time spent at N <= 0 (uplift:
+  // the bearing carries no shear) summed over the rows, and when uplift first happened (-1: never).
+  std::vector<Peak> axial_load_minima;
+  std::vector<double> uplift_durations, first_uplift_times;
   integrators::Energies energies;  // at the last row seen (zero before any)
   int rows = 0;                    // rows seen
 };
@@ -89,6 +94,7 @@ class PeakTracker final : public integrators::ResponseObserver {
   std::vector<std::vector<Sample>> window_;
   std::size_t window_start_ = 0, window_size_ = 0;
   std::vector<hysteresis::Vec2> at_excitation_end_;
+  double last_time_ = 0.0;  // of the previous row
 };
 
 // The peaks of a history's rows (a PeakTracker fed with them).
