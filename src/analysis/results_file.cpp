@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <array>
 #include <filesystem>
 
 #include "results_writer.h"
@@ -60,6 +61,20 @@ std::vector<std::string> RunWarnings(const RunDescription& run) {
         "{:.4g} {} in all: it carried no shear meanwhile",
         axial.bearings[j].name, peaks.axial_load_minima[j].value, run.problem->units().force(),
         peaks.first_uplift_times[j], run.problem->units().time(), peaks.uplift_durations[j],
+        run.problem->units().time()));
+  }
+  for (std::size_t i = 0; i < peaks.first_stop_times.size(); ++i) {
+    if (peaks.first_stop_times[i] < 0.0) continue;
+    const std::array<double, 4>& used = peaks.capacity_used[i];
+    std::string surfaces;
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (used[k] < 1.0 - 1e-9) continue;
+      surfaces += fmt::format("{}{}", surfaces.empty() ? "" : ", ", k + 1);
+    }
+    warnings.push_back(fmt::format(
+        "isolator {}: a triple pendulum surface reached its restrainer (its displacement "
+        "capacity d_i; surfaces {}) first at t = {:.6g} {}: the bearing stiffens there",
+        run.problem->layout.isolators[i].name, surfaces, peaks.first_stop_times[i],
         run.problem->units().time()));
   }
   const double error = run.summary->energy_balance_error;

@@ -1,5 +1,8 @@
 #include "isolab/analysis/run_report.h"
 
+#include <algorithm>
+#include <array>
+
 namespace isolab::analysis {
 namespace {
 
@@ -99,6 +102,12 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
           {"residual", peaks.isolator_residuals[i]}};
     }
     json["isolators"] = isolators;
+  }
+  for (std::size_t i = 0; i < peaks.capacity_used.size(); ++i) {
+    const std::array<double, 4>& used = peaks.capacity_used[i];
+    if (std::all_of(used.begin(), used.end(), [](double x) { return x == 0.0; })) continue;
+    json["isolators"][layout.isolators[i].name]["capacity_used"] = used;
+    json["isolators"][layout.isolators[i].name]["first_stop"] = peaks.first_stop_times[i];
   }
   const structure::AxialLoads& axial = problem.structure.axial_loads();
   for (std::size_t j = 0; j < peaks.axial_load_minima.size(); ++j) {

@@ -127,7 +127,7 @@ class NewmarkRun {
       return std::span<const double>(x.data(), static_cast<std::size_t>(x.size()));
     };
     observer.Observe({step, t, view(u_), view(v_), view(a_), view(absolute_acceleration_),
-                      member_forces_, law_forces_, energies_, axial_load_});
+                      member_forces_, law_forces_, energies_, axial_load_, committed_});
   }
 
   const Energies& energies() const { return energies_; }

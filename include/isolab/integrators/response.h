@@ -49,6 +49,9 @@ struct ResponseRow {
   // Per bearing of the structure's axial loads (structure/axial_load.h), the axial load N its
   // laws were scaled by over the step that reached this row (force); empty without axial loads.
   std::span<const double> axial_load{};
+  // Every law's committed state (the structure's state array), where the integrator keeps them
+  // (Newmark); empty otherwise.
+  std::span<const hysteresis::LawState> law_states{};
 };
 
 // Sees the response as the integrator advances: Newmark calls it at rest and after every step,
