@@ -275,6 +275,38 @@ TEST(AxialLoad, UpliftCarriesNoShearAndWarns) {
   EXPECT_TRUE(warned);
 }
 
+// A triple pendulum driven past its outer surface's capacity: the surface's capacity used reaches
+// 1 (its restrainer, d_1 = 0.1 m) and the run warns with the time; under its axial load the
+// bearing's force at rest equals its law's times N / w.
+TEST(AxialLoad, TriplePendulumCapacityUsedAndStops) {
+  const std::string h1 =
+      WriteRecord("h1.txt", 6.0, [](double t) { return 4.0 * std::sin(2.0 * kPi * 0.4 * t); });
+  const Solution run = Solved(
+      "units: {force: kN, length: m, time: s}\n"
+      "isolation:\n"
+      "  components: [{name: tp, type: triple_friction_pendulum, w: 3923, r1: 2.1, r2: 0.28, "
+      "r3: 0.28, r4: 2.1, mu1: 0.06, mu2: 0.02, mu3: 0.02, mu4: 0.10, d1: 0.1, d2: 0.02, d3: "
+      "0.02, d4: 0.1, uy: 0.0005}]\n"
+      "structure: {type: shear_building, base_mass: 400 t}\n"
+      "excitation:\n"
+      "  ground_motion: {file: " + h1 + ", units: m/s^2}\n"
+      "analysis: {dt: 0.005, free_vibration: 0}\n"
+      "axial_load: {}\n");
+  ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
+  const ResponsePeaks& peaks = run.summary.peaks;
+  ASSERT_EQ(peaks.capacity_used.size(), 1u);
+  EXPECT_NEAR(peaks.capacity_used[0][0], 1.0, 1e-9);
+  EXPECT_LE(peaks.capacity_used[0][1], 1.0 + 1e-9);
+  EXPECT_GT(peaks.first_stop_times[0], 0.0);
+  const bool warned = std::any_of(
+      run.summary.warnings.begin(), run.summary.warnings.end(), [](const std::string& warning) {
+        return warning.find("reached its restrainer") != std::string::npos &&
+               warning.find("surfaces 1") != std::string::npos;
+      });
+  EXPECT_TRUE(warned);
+  for (const Row& row : run.rows) ASSERT_DOUBLE_EQ(row.axial[0], kMass * kG);
+}
+
 // What cannot be run is refused, naming the key.
 TEST(AxialLoad, Refusals) {
   const std::string h1 = WriteRecord("h1.txt", 1.0, [](double) { return 1.0; });
