@@ -24,36 +24,54 @@ struct Component {
 
 // The components to apply: the model's (files relative to the model's folder), or the overrides'
 // (the model's units, dt and scale were given for the model's own record and do not carry over).
+Component FromOverride(const RecordOverride& record) {
+  Component c;
+  c.motion.file = record.data ? record.data->path : record.file;
+  c.motion.units = record.units;
+  c.motion.dt = record.dt;
+  c.motion.scale = record.scale;
+  c.motion.key = record.name;
+  c.motion.location = {record.name};
+  c.units_given_by = record.units_given_by;
+  c.dt_given_by = record.dt_given_by;
+  c.data = record.data ? &*record.data : nullptr;
+  return c;
+}
+
+Component FromModel(const model::ModelFile& model, const model::GroundMotionSection& motion) {
+  Component c;
+  c.motion = motion;
+  if (std::filesystem::path(motion.file).is_relative()) {
+    c.motion.file =
+        (std::filesystem::path(model.path).parent_path() / motion.file).lexically_normal().string();
+  }
+  const std::string in_model = fmt::format(" in {}", model.path);
+  c.units_given_by = motion.key + ".units" + in_model;
+  c.dt_given_by = motion.key + ".dt" + in_model;
+  return c;
+}
+
+// The horizontal components, then the vertical one when there is one (the last entry, flagged by
+// `vertical`).
 std::vector<Component> ChooseComponents(const model::ModelFile& model,
-                                        const RunOverrides& overrides) {
+                                        const RunOverrides& overrides, bool* vertical) {
   std::vector<Component> components;
+  *vertical = false;
   if (!overrides.records.empty()) {
     for (const RecordOverride& record : overrides.records) {
-      Component c;
-      c.motion.file = record.data ? record.data->path : record.file;
-      c.motion.units = record.units;
-      c.motion.dt = record.dt;
-      c.motion.scale = record.scale;
-      c.motion.key = record.name;
-      c.motion.location = {record.name};
-      c.units_given_by = record.units_given_by;
-      c.dt_given_by = record.dt_given_by;
-      c.data = record.data ? &*record.data : nullptr;
-      components.push_back(std::move(c));
+      components.push_back(FromOverride(record));
+    }
+    if (overrides.vertical) {
+      components.push_back(FromOverride(*overrides.vertical));
+      *vertical = true;
     }
   } else {
     for (const model::GroundMotionSection& motion : model.excitation.ground_motion) {
-      Component c;
-      c.motion = motion;
-      if (std::filesystem::path(motion.file).is_relative()) {
-        c.motion.file = (std::filesystem::path(model.path).parent_path() / motion.file)
-                            .lexically_normal()
-                            .string();
-      }
-      const std::string in_model = fmt::format(" in {}", model.path);
-      c.units_given_by = motion.key + ".units" + in_model;
-      c.dt_given_by = motion.key + ".dt" + in_model;
-      components.push_back(std::move(c));
+      components.push_back(FromModel(model, motion));
+    }
+    if (model.excitation.vertical) {
+      components.push_back(FromModel(model, *model.excitation.vertical));
+      *vertical = true;
     }
   }
   if (components.empty() && (!overrides.record_units.empty() || overrides.record_dt)) {
@@ -175,7 +193,32 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   const structure::Layout& layout = problem.layout;
   const int dofs = problem.structure.dofs();
 
-  const std::vector<Component> components = ChooseComponents(model, overrides);
+  if (overrides.vertical && overrides.records.empty()) {
+    throw InputError({overrides.vertical->name}, "needs --record: the record's first component");
+  }
+  bool has_vertical = false;
+  std::vector<Component> components = ChooseComponents(model, overrides, &has_vertical);
+  const bool vertical_asked = model.axial_load && model.axial_load->vertical;
+  if (has_vertical && !vertical_asked) {
+    throw InputError(components.back().motion.location,
+                     fmt::format("{}: a vertical component acts only through the axial loads of "
+                                 "friction pendulum bearings: the model needs axial_load: "
+                                 "{{vertical: true}}",
+                                 components.back().motion.key));
+  }
+  if (vertical_asked && !has_vertical) {
+    throw InputError(model.axial_load->location,
+                     overrides.records.empty()
+                         ? std::string("axial_load.vertical: the record has no vertical component "
+                                       "(excitation.ground_motion.v)")
+                         : std::string("axial_load.vertical: the record replacing the model's has "
+                                       "no vertical component (give --record-v)"));
+  }
+  std::optional<Component> vertical;
+  if (has_vertical) {
+    vertical = std::move(components.back());
+    components.pop_back();
+  }
   const double angle = overrides.records.empty() ? model.excitation.angle : overrides.angle;
   // A command-line component's location is its option already; a model's names file and line.
   const auto key_of = [](const Component& c) {
@@ -213,6 +256,26 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   }
   problem.angle = angle;
   AddGroundMotion(histories, angle, layout, &problem.excitation);
+  if (vertical) {
+    const Component& c = *vertical;
+    problem.vertical_record = ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
+                                          &problem.excitation.vertical, c.data);
+    if (histories.empty()) {
+      throw InputError(c.motion.location,
+                       fmt::format("{}a vertical component needs the horizontal h1 beside it",
+                                   key_of(c)));
+    }
+    const integrators::SampledHistory& h1 = histories[0];
+    if (std::abs(problem.excitation.vertical.dt - h1.dt) > 1e-9 * h1.dt ||
+        problem.excitation.vertical.values.size() != h1.values.size()) {
+      throw InputError(c.motion.location,
+                       fmt::format("{}its step {:g} and {} samples differ from h1's {:g} and {}; "
+                                   "the record's components must share their step and length",
+                                   key_of(c), problem.excitation.vertical.dt,
+                                   problem.excitation.vertical.values.size(), h1.dt,
+                                   h1.values.size()));
+    }
+  }
   double record_dt = histories.empty() ? 0.0 : histories[0].dt;
 
   // A fixed-base variant loses the base's dofs: applied forces shift down by them.

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <variant>
+
+#include "isolab/hysteresis/multiple_pendulum.h"
 
 namespace isolab::analysis {
 namespace {
@@ -52,6 +56,44 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   const auto capacity = static_cast<std::size_t>(std::floor(problem.residual_window / dt)) + 2;
   window_.assign(isolators, std::vector<Sample>(capacity));
   at_excitation_end_.assign(isolators, Vec2{});
+  const std::size_t bearings = problem.structure.axial_loads().bearings.size();
+  for (std::size_t j = 0; j < bearings; ++j) {
+    peaks_.axial_load_minima.push_back(
+        {std::numeric_limits<double>::infinity(), 0.0, static_cast<int>(j)});
+  }
+  peaks_.uplift_durations.assign(bearings, 0.0);
+  peaks_.first_uplift_times.assign(bearings, -1.0);
+  peaks_.capacity_used.assign(isolators, {0.0, 0.0, 0.0, 0.0});
+  peaks_.first_stop_times.assign(isolators, -1.0);
+  const structure::Structure& s = problem.structure;
+  for (std::size_t i = 0; i < isolators; ++i) {
+    const structure::IsolatorLayout& isolator = layout.isolators[i];
+    if (isolator.member >= 0) {
+      const hysteresis::ParallelAssembly& assembly = s.members()[isolator.member].assembly;
+      for (std::size_t c = 0; c < assembly.size(); ++c) {
+        const auto* law = std::get_if<hysteresis::SeriesArrangement>(&assembly.kernels()[c]);
+        if (law && assembly.components()[c].parameters.type() ==
+                       hysteresis::LawType::kTripleFrictionPendulum) {
+          triples_.push_back({i, law,
+                              s.law_offset(isolator.member) + assembly.ElementStatesOffset(c),
+                              false});
+        }
+      }
+    } else {
+      const hysteresis::PlanAssembly& assembly = s.coupled_members()[isolator.coupled].assembly;
+      for (std::size_t c = 0; c < assembly.size(); ++c) {
+        const auto* law =
+            std::get_if<hysteresis::PlanSeriesArrangement>(&assembly.kernels()[c]);
+        if (law && assembly.components()[c].law.type() ==
+                       hysteresis::LawType::kTripleFrictionPendulum) {
+          triples_.push_back({i, &law->law,
+                              s.coupled_law_offset(isolator.coupled) +
+                                  2 * assembly.ElementStatesOffset(c),
+                              true});
+        }
+      }
+    }
+  }
 }
 
 Vec2 PeakTracker::IsolatorDisplacement(std::size_t isolator,
@@ -153,6 +195,43 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
              t, 0);
   }
   peaks.energies = row.energies;
+  // A row without axial loads (a history read back) leaves them as they are.
+  if (row.axial_load.size() == peaks.axial_load_minima.size()) {
+    for (std::size_t j = 0; j < row.axial_load.size(); ++j) {
+      const double n = row.axial_load[j];
+      Peak& least = peaks.axial_load_minima[j];
+      if (n < least.value) least = {n, t, static_cast<int>(j)};
+      if (n <= 0.0) {
+        if (peaks.first_uplift_times[j] < 0.0) peaks.first_uplift_times[j] = t;
+        if (peaks.rows > 0) peaks.uplift_durations[j] += t - last_time_;
+      }
+    }
+  }
+  last_time_ = t;
+  if (!row.law_states.empty()) {
+    for (const TriplePendulum& triple : triples_) {
+      std::array<double, 4> used{};
+      if (triple.plan) {
+        std::array<hysteresis::PlanLawState, 4> elements;
+        for (std::size_t k = 0; k < 4; ++k) {
+          elements[k] = {row.law_states[triple.elements + 2 * k],
+                         row.law_states[triple.elements + 2 * k + 1]};
+        }
+        used = hysteresis::TriplePendulumCapacityUsed(*triple.law, elements);
+      } else {
+        used = hysteresis::TriplePendulumCapacityUsed(*triple.law,
+                                                      row.law_states.subspan(triple.elements, 4));
+      }
+      std::array<double, 4>& largest = peaks.capacity_used[triple.isolator];
+      for (std::size_t k = 0; k < 4; ++k) {
+        largest[k] = std::max(largest[k], used[k]);
+        // At its restrainer the update puts a surface exactly at its capacity (to round-off).
+        if (used[k] >= 1.0 - 1e-9 && peaks.first_stop_times[triple.isolator] < 0.0) {
+          peaks.first_stop_times[triple.isolator] = t;
+        }
+      }
+    }
+  }
   ++peaks.rows;
 }
 

@@ -199,6 +199,12 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
                         }
                       }});
   }
+  if (!problem.excitation.vertical.values.empty()) {
+    series.push_back(Vector("vertical_ground_acceleration", acceleration,
+                            [&problem](const ResponseRow& row) {
+                              return problem.excitation.vertical.At(row.time);
+                            }));
+  }
   const auto per_dof = [&](const char* name, const std::string& units, RowValues values) {
     if (selection.Records(name)) {
       series.push_back(Columns(name, units, translation_names, values, translations));
@@ -274,6 +280,19 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
                                                isolator.member, row.displacement))
                                          : Norm(problem.structure.CoupledDeformation(
                                                isolator.coupled, row.displacement));
+                          }
+                        }});
+    }
+    const structure::AxialLoads& axial = s.axial_loads();
+    if (!axial.empty()) {
+      std::vector<std::string> bearings;
+      for (const structure::AxialBearing& bearing : axial.bearings) bearings.push_back(bearing.name);
+      series.push_back({"isolator/axial_load", force, Named(bearings),
+                        [count = axial.bearings.size()](const ResponseRow& row, double* out) {
+                          for (std::size_t j = 0; j < count; ++j) {
+                            out[j] = j < row.axial_load.size()
+                                         ? row.axial_load[j]
+                                         : std::numeric_limits<double>::quiet_NaN();
                           }
                         }});
     }

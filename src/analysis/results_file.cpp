@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <array>
 #include <filesystem>
 
 #include "results_writer.h"
@@ -66,6 +67,31 @@ std::vector<std::string> RunWarnings(const RunDescription& run) {
   const std::string bearing =
       IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.problem->units());
   if (!bearing.empty()) warnings.push_back(bearing);
+  const structure::AxialLoads& axial = run.problem->structure.axial_loads();
+  const ResponsePeaks& peaks = *run.peaks;
+  for (std::size_t j = 0; j < peaks.first_uplift_times.size(); ++j) {
+    if (peaks.first_uplift_times[j] < 0.0) continue;
+    warnings.push_back(fmt::format(
+        "isolator {} uplifted (axial load N <= 0, least {:.4g} {}) first at t = {:.6g} {}, for "
+        "{:.4g} {} in all: it carried no shear meanwhile",
+        axial.bearings[j].name, peaks.axial_load_minima[j].value, run.problem->units().force(),
+        peaks.first_uplift_times[j], run.problem->units().time(), peaks.uplift_durations[j],
+        run.problem->units().time()));
+  }
+  for (std::size_t i = 0; i < peaks.first_stop_times.size(); ++i) {
+    if (peaks.first_stop_times[i] < 0.0) continue;
+    const std::array<double, 4>& used = peaks.capacity_used[i];
+    std::string surfaces;
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (used[k] < 1.0 - 1e-9) continue;
+      surfaces += fmt::format("{}{}", surfaces.empty() ? "" : ", ", k + 1);
+    }
+    warnings.push_back(fmt::format(
+        "isolator {}: a triple pendulum surface reached its restrainer (its displacement "
+        "capacity d_i; surfaces {}) first at t = {:.6g} {}: the bearing stiffens there",
+        run.problem->layout.isolators[i].name, surfaces, peaks.first_stop_times[i],
+        run.problem->units().time()));
+  }
   const double error = run.summary->energy_balance_error;
   if (run.summary->ok() && error > kEnergyBalanceWarning) {
     warnings.push_back(fmt::format(

@@ -1,5 +1,8 @@
 #include "isolab/analysis/run_report.h"
 
+#include <algorithm>
+#include <array>
+
 namespace isolab::analysis {
 namespace {
 
@@ -53,6 +56,7 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
   json["model"] = problem.model.path;
   json.update(RecordJson(problem.records.empty() ? io::AppliedRecord{} : problem.records[0], g));
   if (problem.records.size() > 1) json["h2"] = RecordJson(problem.records[1], g);
+  if (problem.vertical_record) json["v"] = RecordJson(*problem.vertical_record, g);
   if (layout.directions > 1) json["angle"] = problem.angle;
   json["dt"] = problem.grid.dt;
   json["steps"] = problem.grid.steps;
@@ -99,6 +103,20 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
     }
     json["isolators"] = isolators;
   }
+  for (std::size_t i = 0; i < peaks.capacity_used.size(); ++i) {
+    const std::array<double, 4>& used = peaks.capacity_used[i];
+    if (std::all_of(used.begin(), used.end(), [](double x) { return x == 0.0; })) continue;
+    json["isolators"][layout.isolators[i].name]["capacity_used"] = used;
+    json["isolators"][layout.isolators[i].name]["first_stop"] = peaks.first_stop_times[i];
+  }
+  const structure::AxialLoads& axial = problem.structure.axial_loads();
+  for (std::size_t j = 0; j < peaks.axial_load_minima.size(); ++j) {
+    json["axial_loads"][axial.bearings[j].name] = {
+        {"static", axial.bearings[j].static_load},
+        {"minimum", PeakJson(peaks.axial_load_minima[j])},
+        {"uplift_duration", peaks.uplift_durations[j]},
+        {"first_uplift", peaks.first_uplift_times[j]}};
+  }
   if (peaks.rows > 0) {
     const integrators::Energies& e = peaks.energies;
     json["energy"] = {{"input", e.input},
@@ -106,6 +124,7 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
                       {"damping", e.damping},
                       {"elastic", e.elastic},
                       {"hysteretic", e.hysteretic}};
+    if (!axial.empty()) json["energy"]["axial"] = e.axial;
   }
   const integrators::RunSummary& run = summary.run;
   json["termination"] = run.ok() ? "completed" : "failed";

@@ -75,6 +75,14 @@ void PrintPreamble(const Problem& problem, std::ostream& out) {
     PrintRecord(problem.records[0], "record H1", u, out);
     PrintRecord(problem.records[1], "record H2", u, out);
   }
+  if (problem.vertical_record) PrintRecord(*problem.vertical_record, "record V", u, out);
+  const structure::AxialLoads& axial = problem.structure.axial_loads();
+  if (!axial.empty()) {
+    const model::AxialLoadSection& asked = *problem.model.axial_load;
+    fmt::print(out, "axial loads N(t) of {} pendulum bearings: static share{}{}\n",
+               axial.bearings.size(), asked.vertical ? ", vertical component" : "",
+               asked.overturning ? ", overturning (Newmark: from the step's start)" : "");
+  }
   if (layout.directions > 1 && !problem.records.empty()) {
     fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle,
                problem.angle + 90.0);
@@ -158,6 +166,17 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
                "centre of mass's, {:.5g} {})\n",
                "torsional amplification", peaks.torsional_amplification,
                peaks.base_centre_displacement.value, length);
+  }
+  const structure::AxialLoads& axial = problem.structure.axial_loads();
+  for (std::size_t j = 0; j < peaks.axial_load_minima.size(); ++j) {
+    fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {} (static {:.5g}{})\n",
+               "least axial load " + axial.bearings[j].name, peaks.axial_load_minima[j].value,
+               problem.units().force(), peaks.axial_load_minima[j].time, time,
+               axial.bearings[j].static_load,
+               peaks.uplift_durations[j] > 0.0 || peaks.first_uplift_times[j] >= 0.0
+                   ? fmt::format("; uplift for {:.4g} {} from t = {:.4g}",
+                                 peaks.uplift_durations[j], time, peaks.first_uplift_times[j])
+                   : std::string());
   }
   if (layout.isolated()) {
     fmt::print(out, "{:<34} {:>12.5g} {:<8} ", "residual isolator displacement",

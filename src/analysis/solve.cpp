@@ -82,6 +82,13 @@ Summary Solve(const SolveOptions& options, const Problem& problem,
               std::span<integrators::ResponseObserver* const> observers) {
   options.Validate();
   if (options.analysis.integrator == model::AnalysisSection::Integrator::kIda) {
+    if (!problem.structure.axial_loads().empty() || !problem.excitation.vertical.values.empty()) {
+      throw InputError({"integrator ida"},
+                       fmt::format("cannot run the axial loads of friction pendulum bearings "
+                                   "(axial_load in {}): they run with Newmark "
+                                   "(analysis.integrator: newmark, or --integrator newmark)",
+                                   problem.model.path));
+    }
     RequireRateForms(problem.structure);
   }
   Summary summary;

@@ -63,6 +63,9 @@ analysis::RunOverrides ChooseOverrides(const model::ModelFile& model, const RunO
   if (!options.record_h2.empty() && options.record.empty()) {
     throw InputError({"--record-h2"}, "needs --record: the pair's first component");
   }
+  if (!options.record_v.empty() && options.record.empty()) {
+    throw InputError({"--record-v"}, "needs --record: the record's first horizontal component");
+  }
   if (options.angle && options.record.empty()) {
     throw InputError({"--angle"}, "needs --record (the model's own pair has its angle)");
   }
@@ -75,6 +78,12 @@ analysis::RunOverrides ChooseOverrides(const model::ModelFile& model, const RunO
       h2.name = "--record-h2";
       h2.file = options.record_h2;
       overrides.records.push_back(h2);
+    }
+    if (!options.record_v.empty()) {
+      analysis::RecordOverride v;
+      v.name = "--record-v";
+      v.file = options.record_v;
+      overrides.vertical = v;
     }
     overrides.angle = options.angle.value_or(0.0);
   }
@@ -113,6 +122,9 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                       "scale do not apply to it); with a building in plan, its H1 component");
   command->add_option("--record-h2", options.record_h2,
                       "With --record, the second horizontal component H2 (a building in plan)");
+  command->add_option("--record-v", options.record_v,
+                      "With --record, the vertical component (upwards), for a model with "
+                      "axial_load: {vertical: true} (friction pendulum bearings' axial loads)");
   command->add_option("--angle", options.angle,
                       "With --record, the angle from the x axis to H1 in degrees (H2 at +90; "
                       "default 0)");
@@ -186,6 +198,7 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   if (!options.record.empty()) {
     inputs.push_back(options.record);
     if (!options.record_h2.empty()) inputs.push_back(options.record_h2);
+    if (!options.record_v.empty()) inputs.push_back(options.record_v);
   } else {
     for (const model::GroundMotionSection& motion : model.excitation.ground_motion) {
       inputs.push_back(

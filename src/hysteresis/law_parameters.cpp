@@ -469,4 +469,21 @@ LawKernel LawParameters::Kernel() const {
   return Dashpot{0.0};
 }
 
+std::optional<double> PendulumWeight(const LawParameters& law) {
+  switch (law.type()) {
+    case LawType::kFrictionPendulum:
+    case LawType::kDoubleFrictionPendulum:
+    case LawType::kTripleFrictionPendulum:
+      break;
+    default:
+      return std::nullopt;
+  }
+  const auto keys = ParameterKeys(law.type(), ParameterForm::kMechanical);
+  const std::vector<double> values = law.Values(ParameterForm::kMechanical);
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (keys[k] == "w") return values[k];
+  }
+  return std::nullopt;
+}
+
 }  // namespace isolab::hysteresis

@@ -53,7 +53,7 @@ double Excitation::duration() const {
     duration = std::max(duration, motion.acceleration.duration());
   }
   for (const AppliedForce& force : forces) duration = std::max(duration, force.force.duration());
-  return duration;
+  return std::max(duration, vertical.duration());
 }
 
 std::vector<Eigen::VectorXd> Excitation::MassInfluence(const Eigen::VectorXd& mass) const {

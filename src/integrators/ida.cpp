@@ -266,6 +266,10 @@ class IdaRun {
 RunSummary Run(const structure::Structure& structure, const Excitation& excitation,
                const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer) {
   options.Validate();
+  if (!structure.axial_loads().empty() || !excitation.vertical.values.empty()) {
+    throw std::invalid_argument(
+        "IDA does not take bearings' axial loads or a vertical ground motion: run Newmark");
+  }
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   IdaRun run(structure, excitation, options, &summary);

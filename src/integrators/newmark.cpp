@@ -88,6 +88,7 @@ class NewmarkRun {
     }
     excitation_.EffectiveLoad(0.0, mass_influence_, &load_);
     a_ = load_.cwiseQuotient(structure_.mass());  // at rest, M a0 = p_eff(0)
+    if (!axial_.empty()) StartAxialLoads();
   }
 
   // Advances from t0 by h, cutting a sub-step in halves while Newton fails on it. The sub-steps
@@ -126,7 +127,7 @@ class NewmarkRun {
       return std::span<const double>(x.data(), static_cast<std::size_t>(x.size()));
     };
     observer.Observe({step, t, view(u_), view(v_), view(a_), view(absolute_acceleration_),
-                      member_forces_, law_forces_, energies_});
+                      member_forces_, law_forces_, energies_, axial_load_, committed_});
   }
 
   const Energies& energies() const { return energies_; }
@@ -137,6 +138,7 @@ class NewmarkRun {
     const double c0 = 1.0 / (beta * h * h), c1 = gamma / (beta * h);
     const structure::TangentFactors factors{c0, c1};
     excitation_.EffectiveLoad(t0 + h, mass_influence_, &load_trial_);
+    if (!axial_.empty()) AxialLoadsAt(t0, h);
     // The predictor carries the committed acceleration through the step: Newmark's relations
     // then give a_trial = a and v_trial = v + h a for any beta and gamma. Each law's first
     // tangent is then the one of the increment the step will most likely take: its phase, the
@@ -158,7 +160,7 @@ class NewmarkRun {
           refactor && options_.newton != NewmarkOptions::Newton::kModifiedInitial;
       if (tangent_here) StartTangent(factors);
       structure_.Evaluate(committed_, t0 + h, u_trial_, v_trial_, trial_, responses_, &force_,
-                          member_forces_, factors, tangent_here ? &tangent_ : nullptr);
+                          member_forces_, factors, tangent_here ? &tangent_ : nullptr, scales_);
       residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
       last_scale_ = std::max(
           {MaxAbs(load_trial_), MaxAbs(force_), MaxAbs(structure_.mass().cwiseProduct(a_trial_))});
@@ -248,6 +250,62 @@ class NewmarkRun {
     energies_.elastic = structure_.StoredEnergy(committed_);
     energies_.hysteretic = structure_.HystereticEnergy(committed_);
     energies_.damping = viscous_energy_ + structure_.DashpotEnergy(committed_);
+    if (!axial_.empty()) CommitAxialLoads();
+  }
+
+  // The bearings' loads and scales at rest (the record's first vertical sample, no overturning:
+  // the structure at rest has no absolute acceleration).
+  void StartAxialLoads() {
+    scales_.assign(structure_.slots(), 1.0);
+    const std::size_t count = axial_.bearings.size();
+    for (std::vector<double>* x : {&axial_load_, &axial_load_trial_, &axial_scale_,
+                                   &axial_scale_trial_, &axial_stored_, &axial_dissipated_,
+                                   &axial_scaled_dissipated_}) {
+      x->assign(count, 0.0);
+    }
+    committed_absolute_.setZero(structure_.dofs());
+    const double vertical = excitation_.vertical.At(0.0);
+    for (std::size_t j = 0; j < count; ++j) {
+      axial_load_[j] = axial_.Load(
+          j, vertical,
+          {committed_absolute_.data(), static_cast<std::size_t>(committed_absolute_.size())});
+      axial_scale_[j] = axial_.Scale(j, axial_load_[j]);
+    }
+  }
+
+  // The loads over the step from t0 to t0 + h: the vertical ground acceleration at its end, the
+  // overturning from the inertial forces at its start (axial_load.h: explicit in the moment).
+  void AxialLoadsAt(double t0, double h) {
+    committed_absolute_ = a_;
+    excitation_.AddGroundAcceleration(t0, committed_absolute_);
+    const std::span<const double> absolute(committed_absolute_.data(),
+                                           static_cast<std::size_t>(committed_absolute_.size()));
+    const double vertical = excitation_.vertical.At(t0 + h);
+    for (std::size_t j = 0; j < axial_.bearings.size(); ++j) {
+      axial_load_trial_[j] = axial_.Load(j, vertical, absolute);
+      axial_scale_trial_[j] = scales_[axial_.bearings[j].slot] =
+          axial_.Scale(j, axial_load_trial_[j]);
+    }
+  }
+
+  // The energies of the scaled bearings: stored s E and dissipated sum s dD, from their laws' own
+  // (unscaled) E and D, and the axial loads' work sum E ds (trapezoidal, as the input's).
+  void CommitAxialLoads() {
+    for (std::size_t j = 0; j < axial_.bearings.size(); ++j) {
+      const std::size_t slot = axial_.bearings[j].slot;
+      const double stored = structure_.SlotStoredEnergy(slot, committed_);
+      const double dissipated = structure_.SlotDissipatedEnergy(slot, committed_);
+      const double s0 = axial_scale_[j], s1 = axial_scale_trial_[j];
+      axial_scaled_dissipated_[j] += 0.5 * (s0 + s1) * (dissipated - axial_dissipated_[j]);
+      axial_work_ += 0.5 * (axial_stored_[j] + stored) * (s1 - s0);
+      energies_.elastic += (s1 - 1.0) * stored;
+      energies_.hysteretic += axial_scaled_dissipated_[j] - dissipated;
+      axial_stored_[j] = stored;
+      axial_dissipated_[j] = dissipated;
+      axial_scale_[j] = s1;
+      axial_load_[j] = axial_load_trial_[j];
+    }
+    energies_.axial = axial_work_;
   }
 
   const Structure& structure_;
@@ -263,6 +321,15 @@ class NewmarkRun {
   std::vector<LawResponse> responses_;
   std::vector<double> member_forces_, law_forces_;
   std::vector<int> pending_levels_;  // halving levels of the sub-steps Advance has still to take
+  // Axial loads (structure/axial_load.h); all empty without them. Per slot, the scale of the
+  // step being tried; per bearing, the committed and trial load and scale, and the committed
+  // unscaled stored and dissipated energies and the scaled dissipated energy.
+  const structure::AxialLoads& axial_ = structure_.axial_loads();
+  std::vector<double> scales_;
+  std::vector<double> axial_load_, axial_load_trial_, axial_scale_, axial_scale_trial_,
+      axial_stored_, axial_dissipated_, axial_scaled_dissipated_;
+  VectorXd committed_absolute_;
+  double axial_work_ = 0.0;
   VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
       correction_, viscous_, viscous_trial_, zero_, roundoff_, absolute_acceleration_;
   Energies energies_;

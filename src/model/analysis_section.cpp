@@ -66,18 +66,22 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
     const std::string motion_path = "excitation.ground_motion";
     const YAML::Node motion = node["ground_motion"];
     reader.RequireMap(motion, motion_path);
-    if (motion["h1"] || motion["h2"] || motion["angle"]) {
+    if (motion["h1"] || motion["h2"] || motion["v"] || motion["angle"]) {
       if (motion["file"]) {
         reader.Fail(motion, motion_path,
                     "give one record {file, units, scale, dt} or the components h1 and h2 "
                     "(each {file, units, scale, dt}) with the angle of h1 from x, not both");
       }
-      reader.CheckKeys(motion, motion_path, {"h1", "h2", "angle"});
+      reader.CheckKeys(motion, motion_path, {"h1", "h2", "v", "angle"});
       section.ground_motion.push_back(ReadGroundMotion(
           reader, reader.Require(motion, motion_path, "h1"), ChildPath(motion_path, "h1"), units));
       if (motion["h2"]) {
         section.ground_motion.push_back(
             ReadGroundMotion(reader, motion["h2"], ChildPath(motion_path, "h2"), units));
+      }
+      if (motion["v"]) {
+        section.vertical =
+            ReadGroundMotion(reader, motion["v"], ChildPath(motion_path, "v"), units);
       }
       if (motion["angle"]) {
         section.angle = reader.ReadNumber(motion["angle"], ChildPath(motion_path, "angle"));

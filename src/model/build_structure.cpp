@@ -2,12 +2,85 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace isolab::model {
+namespace {
 
-structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base) {
+// The W of an isolator's pendulum laws (their sum: they scale together), 0 for an isolator with
+// none; an isolator that mixes pendulums with other laws is refused (the other laws' forces do
+// not scale with the axial load, and splitting the load among them would be a guess).
+template <class Components, class Laws>
+double IsolatorWeight(const Components& components, Laws laws, const std::string& isolator,
+                      const AxialLoadSection& section) {
+  double weight = 0.0;
+  std::size_t pendulums = 0, others = 0;
+  for (const auto& component : components) {
+    for (const hysteresis::LawParameters* law : laws(component)) {
+      if (const std::optional<double> w = hysteresis::PendulumWeight(*law)) {
+        weight += *w;
+        ++pendulums;
+      } else {
+        ++others;
+      }
+    }
+  }
+  if (pendulums > 0 && others > 0) {
+    throw InputError(section.location,
+                     fmt::format("axial_load: isolator {} mixes friction pendulum laws with "
+                                 "others; an axial load scales an isolator whose laws are all "
+                                 "pendulums (friction_pendulum, double_friction_pendulum, "
+                                 "triple_friction_pendulum)",
+                                 isolator));
+  }
+  return weight;
+}
+
+// The axial loads the model asks for, on the structure as laid out.
+void AddAxialLoads(const ModelFile& model, structure::LaidOutStructure* built) {
+  const AxialLoadSection& section = *model.axial_load;
+  const structure::Layout& layout = built->layout;
+  std::vector<double> weights;
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    if (isolator.member >= 0) {
+      const auto& assembly = built->structure.members()[isolator.member].assembly;
+      weights.push_back(IsolatorWeight(
+          assembly.components(),
+          [](const hysteresis::Component& c) {
+            return std::vector<const hysteresis::LawParameters*>{&c.parameters};
+          },
+          isolator.name, section));
+    } else {
+      const auto& assembly = built->structure.coupled_members()[isolator.coupled].assembly;
+      weights.push_back(IsolatorWeight(
+          assembly.components(),
+          [](const hysteresis::PlanComponent& c) {
+            std::vector<const hysteresis::LawParameters*> laws{&c.law};
+            if (c.law_y) laws.push_back(&*c.law_y);
+            return laws;
+          },
+          isolator.name, section));
+    }
+  }
+  if (std::none_of(weights.begin(), weights.end(), [](double w) { return w > 0.0; })) {
+    throw InputError(section.location,
+                     "axial_load: no isolator is a friction pendulum bearing to take it");
+  }
+  structure::AxialLoadOptions options;
+  options.gravity = model.units.Convert(9.80665, "m/s^2", dimension::kAcceleration);
+  options.overturning = section.overturning;
+  options.base_height = section.base_height;
+  try {
+    built->structure.SetAxialLoads(
+        structure::RigidSlabAxialLoads(built->structure, layout, weights, options));
+  } catch (const std::invalid_argument& error) {
+    throw InputError(section.location, fmt::format("axial_load: {}", error.what()));
+  }
+}
+
+structure::LaidOutStructure BuildLaidOut(const ModelFile& model, bool fixed_base) {
   if (!model.structure) {
     throw InputError({model.path},
                      "no structure section: nothing to analyse in time (give structure or plan)");
@@ -41,6 +114,14 @@ structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_ba
     throw InputError({model.path}, fmt::format("{}{}", plan ? "plan." : "", error.what()));
   }
   throw std::logic_error("unknown structure kind");
+}
+
+}  // namespace
+
+structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base) {
+  structure::LaidOutStructure built = BuildLaidOut(model, fixed_base);
+  if (model.axial_load && built.layout.isolated()) AddAxialLoads(model, &built);
+  return built;
 }
 
 int Directions(const ModelFile& model) {

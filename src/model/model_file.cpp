@@ -127,6 +127,25 @@ void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const Mo
                 "the structure moves along x only: one component, along x (a second component "
                 "or an angle needs a building in plan)");
   }
+  if (model.excitation.vertical && !(model.axial_load && model.axial_load->vertical)) {
+    reader.Fail(motion["v"], "excitation.ground_motion.v",
+                "a vertical component acts only through the axial loads of friction pendulum "
+                "bearings: give axial_load: {vertical: true} (or leave v out)");
+  }
+  if (model.axial_load && model.axial_load->vertical && !model.excitation.vertical &&
+      !model.excitation.ground_motion.empty()) {
+    reader.Fail(root["axial_load"]["vertical"], "axial_load.vertical",
+                "needs the record's vertical component, excitation.ground_motion.v");
+  }
+  if (model.axial_load && model.axial_load->overturning && extent.directions == 1) {
+    reader.Fail(root["axial_load"]["overturning"], "axial_load.overturning",
+                "a one-direction model has no layout of bearings to share the overturning "
+                "moment: overturning needs a building in plan");
+  }
+  if (model.axial_load && model.analysis.integrator == AnalysisSection::Integrator::kIda) {
+    reader.Fail(root["axial_load"], "axial_load",
+                "the bearings' axial loads run with Newmark only (analysis.integrator: newmark)");
+  }
   const YAML::Node levels = root["output"] ? root["output"]["levels"] : YAML::Node();
   for (std::size_t i = 0; i < model.output.levels.size(); ++i) {
     const int level = model.output.levels[i];
@@ -147,6 +166,35 @@ void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const Mo
           fmt::format("{} (the structure's degrees of freedom are 0 to {})", dof, extent.dofs - 1));
     }
   }
+}
+
+// The axial_load section: {vertical, overturning, base_height}, each optional.
+AxialLoadSection ReadAxialLoad(const YamlReader& reader, const YAML::Node& node,
+                               const UnitSystem& units) {
+  const std::string path = "axial_load";
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"vertical", "overturning", "base_height"});
+  AxialLoadSection section;
+  section.location = reader.Locate(node);
+  const auto flag = [&](const char* key) {
+    const YAML::Node value = node[key];
+    bool result = false;
+    if (!value) return result;
+    if (!value.IsScalar() || !YAML::convert<bool>::decode(value, result)) {
+      reader.Fail(value, ChildPath(path, key), "expected true or false");
+    }
+    return result;
+  };
+  section.vertical = flag("vertical");
+  section.overturning = flag("overturning");
+  if (node["base_height"]) {
+    section.base_height = reader.ReadQuantity(node["base_height"], "axial_load.base_height",
+                                              dimension::kLength, units);
+    if (!(section.base_height >= 0.0)) {
+      reader.Fail(node["base_height"], "axial_load.base_height", "must be >= 0");
+    }
+  }
+  return section;
 }
 
 // The output section: the results file and what goes into it (output_selection.h).
@@ -208,7 +256,7 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   reader.RequireMap(root, "");
   reader.CheckKeys(root, "",
                    {"description", "units", "isolation", "structure", "plan", "excitation",
-                    "analysis", "output", "cyclic"});
+                    "analysis", "output", "cyclic", "axial_load"});
   if (root["plan"] && root["structure"]) {
     reader.Fail(root["plan"], "plan",
                 "a model is either a building in plan (plan) or one in one direction "
@@ -233,6 +281,7 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   if (root["excitation"])
     model.excitation = ReadExcitation(reader, root["excitation"], model.units);
   if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], model.units);
+  if (root["axial_load"]) model.axial_load = ReadAxialLoad(reader, root["axial_load"], model.units);
   if (root["output"]) ReadOutput(reader, root["output"], &model);
   if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);
   if (!model.structure && model.isolation.size() == 0) {

@@ -293,16 +293,37 @@ Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> 
   return d;
 }
 
+namespace {
+
+// A slot's summed response and its laws' responses times s (a pendulum under its axial load).
+void ScaleResponses(double s, hysteresis::AssemblyResponse* total,
+                    std::span<hysteresis::LawResponse> responses) {
+  total->force *= s;
+  total->stiffness *= s;
+  total->damping *= s;
+  for (hysteresis::LawResponse& response : responses) {
+    response.force *= s;
+    response.stiffness *= s;
+    response.damping *= s;
+  }
+}
+
+}  // namespace
+
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
+template <bool kScaled>
 [[gnu::flatten]] void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committed,
                                const hysteresis::LawInput& in, std::span<LawState> trial,
                                std::span<hysteresis::LawResponse> responses,
                                std::span<double> member_forces, double damping_factor,
-                               double* values) const {
+                               double* values, const double* scales) const {
   const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
-  const hysteresis::AssemblyResponse total =
+  hysteresis::AssemblyResponse total =
       members_[k].assembly.Update(committed.subspan(offset, count), in,
                                   trial.subspan(offset, count), responses.subspan(offset, count));
+  if constexpr (kScaled) {
+    ScaleResponses(scales[k], &total, responses.subspan(offset, members_[k].assembly.size()));
+  }
   member_forces[k] = total.force;
   if (values && !member_constants_[k]) {
     AddMemberTangent(k, total.stiffness + damping_factor * total.damping, values);
@@ -310,21 +331,26 @@ Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> 
 }
 
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
+template <bool kScaled>
 [[gnu::flatten]] void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                 std::span<LawState> trial,
                                 std::span<hysteresis::LawResponse> responses,
                                 Eigen::VectorXd* force, std::span<double> member_forces,
-                                double damping_factor, double* values) const {
+                                double damping_factor, double* values,
+                                const double* scales) const {
   for (const Between& spring : between_) {
     const std::size_t k = spring.member;
     const bool grounded = spring.dof_i == kGround;
     const hysteresis::LawInput in{u[spring.dof_j] - (grounded ? 0.0 : u[spring.dof_i]),
                                   v[spring.dof_j] - (grounded ? 0.0 : v[spring.dof_i]), t};
     const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
-    const hysteresis::AssemblyResponse total =
+    hysteresis::AssemblyResponse total =
         members_[k].assembly.Update(committed.subspan(offset, count), in,
                                     trial.subspan(offset, count), responses.subspan(offset, count));
+    if constexpr (kScaled) {
+      ScaleResponses(scales[k], &total, responses.subspan(offset, members_[k].assembly.size()));
+    }
     member_forces[k] = total.force;
     (*force)[spring.dof_j] += total.force;
     if (!grounded) (*force)[spring.dof_i] -= total.force;
@@ -355,12 +381,14 @@ void Structure::UpdateCoupledComponent(std::size_t coupled, std::size_t componen
 }
 
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
+template <bool kScaled>
 [[gnu::flatten]] void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                 std::span<LawState> trial,
                                 std::span<hysteresis::LawResponse> responses,
                                 Eigen::VectorXd* force, std::span<double> member_forces,
-                                double damping_factor, double* values) const {
+                                double damping_factor, double* values,
+                                const double* scales) const {
   for (std::size_t i = 0; i < coupled_.size(); ++i) {
     const CoupledTerms& terms = coupled_terms_[i];
     hysteresis::PlanLawInput in{{}, {}, t};
@@ -387,6 +415,16 @@ void Structure::UpdateCoupledComponent(std::size_t coupled, std::size_t componen
       k_eff = k_eff + response.stiffness + damping_factor * response.damping;
       offset += 2;
     }
+    if constexpr (kScaled) {
+      const double s = scales[members_.size() + i];
+      f = s * f;
+      k_eff = s * k_eff;
+      for (std::size_t l = coupled_law_offset(i); l < offset; ++l) {
+        responses[l].force *= s;
+        responses[l].stiffness *= s;
+        responses[l].damping *= s;
+      }
+    }
     const std::size_t column = coupled_force_column(i);
     member_forces[column] = f.x;
     member_forces[column + 1] = f.y;
@@ -399,11 +437,30 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
                          const Eigen::VectorXd& v, std::span<LawState> trial,
                          std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                          std::span<double> member_forces, const TangentFactors& factors,
-                         SparseMatrix* tangent) const {
-  force->noalias() = viscous_damping_ * v;
+                         SparseMatrix* tangent, std::span<const double> scales) const {
   double* values = tangent ? tangent->valuePtr() : nullptr;
-  EvaluateSprings(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
-                  values);
+  if (scales.empty()) {
+    EvaluateAll<false>(committed, t, u, v, trial, responses, force, member_forces,
+                       factors.damping, values, nullptr);
+  } else {
+    if (scales.size() != slots()) {
+      throw std::invalid_argument("Structure::Evaluate: one scale per slot, or none");
+    }
+    EvaluateAll<true>(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
+                      values, scales.data());
+  }
+}
+
+template <bool kScaled>
+void Structure::EvaluateAll(std::span<const LawState> committed, double t,
+                            const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                            std::span<LawState> trial,
+                            std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+                            std::span<double> member_forces, double damping_factor,
+                            double* values, const double* scales) const {
+  force->noalias() = viscous_damping_ * v;
+  EvaluateSprings<kScaled>(committed, t, u, v, trial, responses, force, member_forces,
+                           damping_factor, values, scales);
   for (const std::size_t k : general_) {
     const Terms& terms = member_terms_[k];
     double d = 0.0, d_rate = 0.0;
@@ -411,16 +468,48 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
       d += terms.coefficients[a] * u[terms.dofs[a]];
       d_rate += terms.coefficients[a] * v[terms.dofs[a]];
     }
-    EvaluateMember(k, committed, {d, d_rate, t}, trial, responses, member_forces, factors.damping,
-                   values);
+    EvaluateMember<kScaled>(k, committed, {d, d_rate, t}, trial, responses, member_forces,
+                            damping_factor, values, scales);
     for (int a = 0; a < terms.count; ++a) {
       (*force)[terms.dofs[a]] += terms.coefficients[a] * member_forces[k];
     }
   }
   if (!coupled_.empty()) {
-    EvaluateCoupled(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
-                    values);
+    EvaluateCoupled<kScaled>(committed, t, u, v, trial, responses, force, member_forces,
+                             damping_factor, values, scales);
   }
+}
+
+double Structure::SlotStoredEnergy(std::size_t slot, std::span<const LawState> states) const {
+  if (slot < members_.size()) {
+    return members_[slot].assembly.StoredEnergy(
+        states.subspan(law_offsets_[slot], members_[slot].assembly.state_size()));
+  }
+  const std::size_t i = slot - members_.size();
+  const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
+  const std::size_t first = coupled_law_offset(i);
+  double energy = 0.0;
+  for (std::size_t c = 0; c < assembly.size(); ++c) {
+    const hysteresis::PlanLawKernel& kernel = assembly.kernels()[c];
+    const std::size_t offset = first + 2 * c;
+    if (const auto* series = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel)) {
+      const std::size_t at = first + 2 * assembly.ElementStatesOffset(c);
+      energy += series->StoredEnergyFlat(
+          {states[offset], states[offset + 1]},
+          states.subspan(at, 2 * static_cast<std::size_t>(series->state_slots() - 1)));
+    } else {
+      energy += hysteresis::PlanStoredEnergy(kernel, {states[offset], states[offset + 1]});
+    }
+  }
+  return energy;
+}
+
+double Structure::SlotDissipatedEnergy(std::size_t slot, std::span<const LawState> states) const {
+  double energy = 0.0;
+  for (std::size_t l = law_offsets_[slot]; l < law_offsets_[slot + 1]; ++l) {
+    energy += states[l].dissipated;
+  }
+  return energy;
 }
 
 double Structure::StoredEnergy(std::span<const LawState> states) const {

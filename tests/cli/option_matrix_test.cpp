@@ -101,6 +101,18 @@ TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
   }
   ExpectRefused(run + "--record-h2 " + kH2, "--record-h2");  // without --record
   ExpectRefused(run + "--angle 30", "--angle");               // the model's pair has its own
+  // A vertical component: refused where no friction pendulum takes it (axial_load), and without
+  // --record; applied on the plan building on friction pendulums (docs/axial_load.md).
+  const std::string kV = kRoot + "/ground_motions/v_fwn_firm_seed4.at2";
+  ExpectRefused(run + "--record " + kH1 + " --record-v " + kV, "--record-v");
+  ExpectRefused(run + "--record-v " + kV, "--record-v");
+  if (kind.plan) {
+    const std::string fp = kRoot + "/models/plan/five_story_fp_plan.yaml --json -q -o " +
+                           (folder / "fp.h5").string() + " ";
+    EXPECT_TRUE(EndsWith(Applied("run " + fp + pair + " --record-v " + kV)["v"]["record"],
+                         "v_fwn_firm_seed4.at2"));
+    ExpectRefused("run " + fp + pair, "--record-v");  // the model asks for the vertical
+  }
 
   // The AT2 header says g and 0.01 s: the options must agree with it, and are checked.
   EXPECT_EQ(Applied(run + "--record " + kH1 + " --units g")["record_units"], "g");

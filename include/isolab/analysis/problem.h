@@ -56,6 +56,9 @@ struct RecordOverride {
 struct RunOverrides {
   // H1 (and H2) replacing the model's ground motion; empty: the model's own.
   std::vector<RecordOverride> records;
+  // With `records`, the vertical component (upwards) replacing the model's (--record-v); it needs
+  // axial_load: {vertical: true} in the model.
+  std::optional<RecordOverride> vertical;
   double angle = 0.0;  // with `records`: degrees from the x axis to H1
   // The units and step of every component in use (the model's own, or `records`'), which must
   // agree with what its header or its entry says.
@@ -84,6 +87,7 @@ struct Problem {
   // (time) the window at the end of the run whose mid-range is the residual displacement
   // (response_peaks.h): the structure's longest period, within the free vibration.
   double residual_window = 0.0;
+  std::optional<io::AppliedRecord> vertical_record{};  // the vertical component as applied
 
   const UnitSystem& units() const { return model.units; }
 };

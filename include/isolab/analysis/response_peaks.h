@@ -15,6 +15,7 @@
 // buffers sized before the run.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "isolab/analysis/problem.h"
@@ -59,6 +60,16 @@ struct ResponsePeaks {
   double residual_isolator_displacement = 0.0;
   double residual_oscillation = 0.0;
   double isolator_displacement_at_excitation_end = 0.0;
+  // Per bearing of the structure's axial loads (structure/axial_load.h; empty without them): the
+  // least axial load N (signed; its time; index: the bearing), the time spent at N <= 0 (uplift:
+  // the bearing carries no shear) summed over the rows, and when uplift first happened (-1: never).
+  std::vector<Peak> axial_load_minima;
+  std::vector<double> uplift_durations, first_uplift_times;
+  // Per isolator: the largest fraction of its displacement capacity a triple friction pendulum's
+  // surfaces used (|u_i| / d_i, surfaces 1 to 4; multiple_pendulum.h), all zero for an isolator
+  // without one, and when a surface first reached its restrainer (|u_i| = d_i; -1: never).
+  std::vector<std::array<double, 4>> capacity_used;
+  std::vector<double> first_stop_times;
   integrators::Energies energies;  // at the last row seen (zero before any)
   int rows = 0;                    // rows seen
 };
@@ -89,6 +100,16 @@ class PeakTracker final : public integrators::ResponseObserver {
   std::vector<std::vector<Sample>> window_;
   std::size_t window_start_ = 0, window_size_ = 0;
   std::vector<hysteresis::Vec2> at_excitation_end_;
+  double last_time_ = 0.0;  // of the previous row
+  // The triple pendulums among the isolators' components: the isolator, the law, and where its
+  // elements' states start in the structure's state array (LawState pairs in plan).
+  struct TriplePendulum {
+    std::size_t isolator = 0;
+    const hysteresis::SeriesArrangement* law = nullptr;
+    std::size_t elements = 0;
+    bool plan = false;
+  };
+  std::vector<TriplePendulum> triples_;
 };
 
 // The peaks of a history's rows (a PeakTracker fed with them).

@@ -99,4 +99,12 @@ class LawParameters {
   std::array<double, kMaxLawParameters> mechanical_;
 };
 
+// The weight W a friction pendulum bearing (friction_pendulum, double_friction_pendulum,
+// triple_friction_pendulum) carries; nullopt for every other law. Each of these laws' strengths
+// (mu W) and stiffnesses (W / R, the pre-slide mu W / u_y) is W times a constant, and their
+// sliders' decisions compare forces with strengths only, so the displacement history a law's state
+// follows does not depend on W: under an axial load N its force, tangent and work are exactly
+// N / W times those at W (the axial load scaling of structure/axial_load.h).
+std::optional<double> PendulumWeight(const LawParameters& law);
+
 }  // namespace isolab::hysteresis

@@ -40,6 +40,10 @@ struct GroundMotion {
 struct Excitation {
   std::vector<GroundMotion> ground;
   std::vector<AppliedForce> forces;
+  // The ground's vertical acceleration (length/time^2, upwards; empty for none). The structure has
+  // no vertical dofs: it loads nothing directly, and acts only through the axial loads of the
+  // bearings that take them (structure/axial_load.h), as N_0 (1 + a_v / g).
+  SampledHistory vertical;
 
   // One component moving every dof: a one-direction structure's record.
   static Excitation Uniform(SampledHistory acceleration);

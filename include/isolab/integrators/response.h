@@ -21,7 +21,11 @@ struct Energies {
   double damping = 0.0;     // viscous: damping matrix and dashpot components
   double elastic = 0.0;     // recoverable energy of every law
   double hysteretic = 0.0;  // slider work of every law
-  double Balance() const { return input - kinetic - damping - elastic - hysteretic; }
+  // Work of the varying axial loads on the pendulum bearings that take them
+  // (structure/axial_load.h): raising N at a displaced position raises the pendulum's stored
+  // energy N u^2 / (2 R) with no horizontal work. 0 without axial loads.
+  double axial = 0.0;
+  double Balance() const { return input + axial - kinetic - damping - elastic - hysteretic; }
 };
 
 // Steps of dt from rest, k = 0..steps; the response is recorded every `output_every` steps (an
@@ -42,6 +46,12 @@ struct ResponseRow {
   std::span<const double> connection_force;  // per force column of the structure's members
   std::span<const double> law_force;                             // per law component
   Energies energies;
+  // Per bearing of the structure's axial loads (structure/axial_load.h), the axial load N its
+  // laws were scaled by over the step that reached this row (force); empty without axial loads.
+  std::span<const double> axial_load{};
+  // Every law's committed state (the structure's state array), where the integrator keeps them
+  // (Newmark); empty otherwise.
+  std::span<const hysteresis::LawState> law_states{};
 };
 
 // Sees the response as the integrator advances: Newmark calls it at rest and after every step,

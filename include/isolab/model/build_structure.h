@@ -10,7 +10,8 @@
 
 namespace isolab::model {
 
-// `fixed_base`: the superstructure without its isolation, the base held. Throws InputError
+// `fixed_base`: the superstructure without its isolation, the base held. With axial_load, the
+// friction pendulum bearings take their axial loads (structure/axial_load.h). Throws InputError
 // (naming the model) for a model without a structure section, for `fixed_base` on an SDOF, and
 // for a description the builder refuses.
 structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base = false);

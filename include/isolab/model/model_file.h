@@ -18,7 +18,9 @@
 //   excitation:
 //     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}      # one component, or
 //     ground_motion: {h1: {file: ...}, h2: {file: ...}, angle: 0}         # a pair (plan models)
+//     ground_motion: {h1: {...}, h2: {...}, v: {file: ...}}               # with a vertical one
 //     forces: [{dof: 0, dt: 0.1, values: [...]}]
+//   axial_load: {vertical: true, overturning: true, base_height: 600}  # pendulums' N(t)
 //   analysis: {dt: 0.005, duration: 30, integrator: newmark,   # or ida
 //              free_vibration: auto,                         # or a time, 0 for none
 //              newmark: {beta: 0.25, gamma: 0.5, newton: full, ...},
@@ -76,8 +78,22 @@ struct ForceSection {
 struct ExcitationSection {
   // The record's horizontal components: H1, and H2 at angle + 90 degrees when there is a pair.
   std::vector<GroundMotionSection> ground_motion;
+  // Its vertical component (upwards), `v` beside h1 and h2; it acts only through the axial loads
+  // of friction pendulum bearings (axial_load.vertical).
+  std::optional<GroundMotionSection> vertical;
   double angle = 0.0;  // degrees from the x axis to H1
   std::vector<ForceSection> forces;
+};
+
+// The axial loads N(t) of friction pendulum bearings (structure/axial_load.h): given at all, every
+// pendulum bearing's laws are scaled by N / W, N its static share of the weight from rigid-slab
+// statics of the bearing layout (a one-direction model: the whole weight on its layer), plus what
+// is asked here. Absent: every law keeps its own W, as before.
+struct AxialLoadSection {
+  bool vertical = false;     // N_0 (1 + a_v / g) with the record's vertical component
+  bool overturning = false;  // the story inertial forces' moments (a building in plan)
+  double base_height = 0.0;  // the base level's mass above the bearing plane (length), >= 0
+  SourceLocation location;   // where `axial_load` is given
 };
 
 // How long the structure vibrates freely after the excitation ends, so that the residual
@@ -109,6 +125,7 @@ struct ModelFile {
   hysteresis::ParallelAssembly isolation;
   std::optional<StructureSection> structure;
   ExcitationSection excitation;
+  std::optional<AxialLoadSection> axial_load;
   AnalysisSection analysis;
   std::string output_file;  // empty: not given
   OutputSelection output;

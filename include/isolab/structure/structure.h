@@ -34,6 +34,7 @@
 
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/hysteresis/plan_assembly.h"
+#include "isolab/structure/axial_load.h"
 
 namespace isolab::structure {
 
@@ -128,6 +129,18 @@ class Structure {
     return members_.size() + 2 * coupled;
   }
 
+  // Slots: one per member, then one per coupled member (the order of law offsets). A slot's
+  // response may be scaled (Evaluate's `scales`: a pendulum bearing under its axial load).
+  std::size_t slots() const { return members_.size() + coupled_.size(); }
+  // The recoverable and the dissipated energy of one slot's laws (at their own W: unscaled).
+  double SlotStoredEnergy(std::size_t slot, std::span<const hysteresis::LawState> states) const;
+  double SlotDissipatedEnergy(std::size_t slot, std::span<const hysteresis::LawState> states) const;
+
+  // The axial loads its pendulum bearings take (axial_load.h); empty: every law at its own W.
+  // An integrator that runs the structure scales those bearings' slots by AxialLoads::Scale.
+  void SetAxialLoads(AxialLoads loads) { axial_loads_ = std::move(loads); }
+  const AxialLoads& axial_loads() const { return axial_loads_; }
+
   // The effective tangent's sparsity: mass diagonal, members, viscous damping. Fixed for the
   // structure's life, so a solver analyses it once.
   const SparseMatrix& tangent_pattern() const { return pattern_; }
@@ -144,12 +157,14 @@ class Structure {
   // tangent and damping), the resisting force (members plus C v) into `force`, each force column
   // into `member_forces` (force_columns()), and, when `tangent` is not null, adds the terms of the
   // effective tangent with `factors` that depend on the state to its values, which must hold
-  // ConstantTangent(factors). Allocates nothing.
+  // ConstantTangent(factors). `scales`, when not empty, has one factor per slot (slots()): each
+  // slot's force, tangent and law responses are its laws' times that factor (the laws' states stay
+  // those at their own W). Allocates nothing.
   void Evaluate(std::span<const hysteresis::LawState> committed, double t, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
                 std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                 std::span<double> member_forces, const TangentFactors& factors,
-                SparseMatrix* tangent) const;
+                SparseMatrix* tangent, std::span<const double> scales = {}) const;
 
   // A member's deformation, and a coupled member's deformation vector, at dofs u.
   double MemberDeformation(std::size_t member, std::span<const double> u) const;
@@ -192,19 +207,29 @@ class Structure {
   void AddBetweenTangent(const Between& spring, double k_eff, double* values) const;
   void AddCoupledTangent(std::size_t coupled, const hysteresis::Mat2& k_eff,
                          double* values) const;
-  // Evaluate's parts: the springs between two dofs, and the coupled members.
+  // Evaluate's parts: the springs between two dofs, and the coupled members; kScaled: each slot's
+  // response times scales[slot] (a separate instantiation, so an unscaled run pays nothing).
+  template <bool kScaled>
+  void EvaluateAll(std::span<const hysteresis::LawState> committed, double t,
+                   const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                   std::span<hysteresis::LawState> trial,
+                   std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+                   std::span<double> member_forces, double damping_factor, double* values,
+                   const double* scales) const;
+  template <bool kScaled>
   void EvaluateSprings(std::span<const hysteresis::LawState> committed, double t,
                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                        std::span<hysteresis::LawState> trial,
                        std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                        std::span<double> member_forces, double damping_factor,
-                       double* values) const;
+                       double* values, const double* scales) const;
+  template <bool kScaled>
   void EvaluateCoupled(std::span<const hysteresis::LawState> committed, double t,
                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                        std::span<hysteresis::LawState> trial,
                        std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                        std::span<double> member_forces, double damping_factor,
-                       double* values) const;
+                       double* values, const double* scales) const;
   // One component of an assembly with sliders in series, whose elements' states sit after every
   // component's own (plan_assembly.h).
   [[gnu::noinline]] void UpdateCoupledComponent(std::size_t coupled, std::size_t component,
@@ -212,11 +237,12 @@ class Structure {
                                                 const hysteresis::PlanLawInput& in,
                                                 std::span<hysteresis::LawState> trial,
                                                 hysteresis::PlanLawResponse* response) const;
+  template <bool kScaled>
   void EvaluateMember(std::size_t k, std::span<const hysteresis::LawState> committed,
                       const hysteresis::LawInput& in, std::span<hysteresis::LawState> trial,
                       std::span<hysteresis::LawResponse> responses,
                       std::span<double> member_forces, double damping_factor,
-                      double* values) const;
+                      double* values, const double* scales) const;
 
   Eigen::VectorXd mass_;
   std::vector<Member> members_;
@@ -234,6 +260,7 @@ class Structure {
   // state.
   std::vector<std::optional<hysteresis::AssemblyResponse>> member_constants_;
   std::vector<std::optional<hysteresis::PlanResponse>> coupled_constants_;
+  AxialLoads axial_loads_;
 };
 
 }  // namespace isolab::structure
