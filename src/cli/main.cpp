@@ -19,6 +19,7 @@
 #include <string_view>
 #include <utility>
 
+#include "bounds_command.h"
 #include "cyclic_command.h"
 #include "finite_options.h"
 #include "isolab/core/errors.h"
@@ -101,6 +102,8 @@ int main(int argc, char** argv) {
 #endif
   isolab::cli::ShakeTableOptions shaketable;
   isolab::cli::RegisterShakeTableCommand(app, shaketable);
+  isolab::cli::BoundsOptions bounds;
+  isolab::cli::RegisterBoundsCommand(app, bounds);
   isolab::cli::RequireFiniteNumbers(app);
 
   try {
@@ -125,6 +128,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("shaketable")) {
       isolab::cli::RunShakeTableCommand(shaketable, std::cout);
     }
+    if (app.got_subcommand("bounds")) isolab::cli::RunBoundsCommand(bounds, std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;

@@ -94,16 +94,20 @@ structure::LaidOutStructure BuildLaidOut(const ModelFile& model, bool fixed_base
                            "applies to a building on isolators; an SDOF has no base to hold");
         }
         double c = section.damping_coefficient;
-        if (section.damping_ratio) {
+        if (section.damping_ratio) {  // on the initial stiffness of every bearing together
           c = 2.0 * *section.damping_ratio *
-              std::sqrt(structure::InitialStiffness(model.isolation) * section.mass);
+              std::sqrt(structure::InitialStiffness(model.isolation) *
+                        model.isolation_count.value_or(1) * section.mass);
         }
-        return structure::BuildSdof(section.mass, c, model.isolation);
+        return structure::BuildSdof(section.mass, c, model.isolation, IsolationBearings(model));
       }
       case StructureSection::Kind::kShearBuilding: {
         structure::ShearBuilding building = section.building;
         building.isolated = !fixed_base && model.isolation.size() > 0;
-        if (building.isolated) building.isolation = model.isolation;
+        if (building.isolated) {
+          building.isolation = model.isolation;
+          building.bearings = IsolationBearings(model);
+        }
         return structure::BuildShearBuilding(building);
       }
       case StructureSection::Kind::kPlanBuilding:

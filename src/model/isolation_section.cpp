@@ -41,16 +41,58 @@ std::string CycleTo(const std::string& other) {
 
 }  // namespace
 
+int ReadBearingCount(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
+  const int count = reader.ReadInteger(node, path);
+  if (count < 1) {
+    reader.Fail(node, path, fmt::format("{} (expected a number of bearings >= 1)", count));
+  }
+  return count;
+}
+
+std::vector<std::string> IsolationBearings(const ModelFile& model) {
+  std::vector<std::string> names;
+  if (!model.isolation_count) return names;
+  for (int i = 1; i <= *model.isolation_count; ++i) {
+    names.push_back(fmt::format("{}_{}", model.isolation_name, i));
+  }
+  return names;
+}
+
 hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
                                            const std::string& path,
                                            const std::filesystem::path& directory,
                                            const UnitSystem& units,
-                                           std::vector<std::string>* included_files) {
+                                           std::vector<std::string>* included_files,
+                                           BearingGroup* group) {
   reader.RequireMap(isolation, path);
-  reader.CheckKeys(isolation, path, {"components", "file"});
+  if (group) {
+    reader.CheckKeys(isolation, path, {"components", "file", "count", "name", "modification"});
+    if (isolation["count"]) {
+      group->count = ReadBearingCount(reader, isolation["count"], ChildPath(path, "count"));
+    }
+    if (isolation["name"]) {
+      if (!isolation["count"]) {
+        reader.Fail(isolation["name"], ChildPath(path, "name"),
+                    "names the bearings of a count; give count too");
+      }
+      group->name = reader.ReadString(isolation["name"], ChildPath(path, "name"));
+    }
+  } else {
+    reader.CheckKeys(isolation, path, {"components", "file"});
+  }
   if (!isolation["file"]) {
-    return ReadAssembly(reader, reader.Require(isolation, path, "components"),
-                        ChildPath(path, "components"), units);
+    const YAML::Node components = reader.Require(isolation, path, "components");
+    hysteresis::ParallelAssembly laws =
+        ReadAssembly(reader, components, ChildPath(path, "components"), units);
+    if (group && isolation["modification"]) {
+      group->modification = ReadModification(reader, isolation["modification"],
+                                             ChildPath(path, "modification"), laws, components);
+    }
+    return laws;
+  }
+  if (isolation["modification"]) {
+    reader.Fail(isolation["modification"], ChildPath(path, "modification"),
+                "modifies the components given here, not those of a file (copy them here)");
   }
   // The isolation section of another model file (e.g. one written by isolab fit), relative to
   // the file that names it; in the same units, since its numbers are read in its own.

@@ -152,9 +152,9 @@ void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const Mo
     const int lowest = extent.level_zero ? 0 : 1;
     const int highest = lowest + extent.levels - 1;
     if (level != kRoofLevel && (level > highest || level < lowest)) {
-      reader.Fail(levels[i], IndexPath("output.levels", i),
-                  fmt::format("{} (the structure's levels are {} to {}, or roof)", level, lowest,
-                              highest));
+      reader.Fail(
+          levels[i], IndexPath("output.levels", i),
+          fmt::format("{} (the structure's levels are {} to {}, or roof)", level, lowest, highest));
     }
   }
   const YAML::Node forces = root["excitation"] ? root["excitation"]["forces"] : YAML::Node();
@@ -272,12 +272,20 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   }
   model.units = ReadUnits(reader, root);
   if (root["isolation"]) {
+    BearingGroup group;
     model.isolation = ReadIsolation(reader, root["isolation"], "isolation",
                                     std::filesystem::path(path).parent_path(), model.units,
-                                    &model.included_files);
+                                    &model.included_files, &group);
+    model.isolation_count = group.count;
+    model.isolation_name = group.name;
+    if (!group.modification.empty()) {
+      model.modifications.push_back({"isolation", std::nullopt, std::move(group.modification)});
+    }
   }
   if (root["structure"]) model.structure = ReadStructure(reader, root["structure"], model.units);
-  if (root["plan"]) model.structure = ReadPlan(reader, root["plan"], model.units);
+  if (root["plan"]) {
+    model.structure = ReadPlan(reader, root["plan"], model.units, &model.modifications);
+  }
   if (root["excitation"])
     model.excitation = ReadExcitation(reader, root["excitation"], model.units);
   if (root["analysis"]) model.analysis = ReadAnalysis(reader, root["analysis"], model.units);

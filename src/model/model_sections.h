@@ -21,20 +21,40 @@ UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
 hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
                                           const std::string& path, const UnitSystem& units);
 
+// How many bearings of a type a one-direction layer has, and their name (a model's isolation).
+struct BearingGroup {
+  std::optional<int> count;
+  std::string name = "bearing";
+  std::vector<PropertyFactors> modification;  // its property modification factors
+};
+
 // `{components: [...]}` or `{file: other.yaml}` (relative to `directory`, in the same `units`), at
 // key path `path` ("isolation", "variants[2].isolation"). The files it reads are appended to
-// `included_files` when given.
+// `included_files` when given. With `group`, the keys `count` (>= 1), `name` and `modification`
+// are also read into it.
 hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
                                            const std::string& path,
                                            const std::filesystem::path& directory,
                                            const UnitSystem& units,
-                                           std::vector<std::string>* included_files = nullptr);
+                                           std::vector<std::string>* included_files = nullptr,
+                                           BearingGroup* group = nullptr);
+
+// A count of bearings at `map[key]`: a whole number >= 1 (0 is a located error).
+int ReadBearingCount(const YamlReader& reader, const YAML::Node& node, const std::string& path);
+
+// `modification` at key path `path`: factors of the properties of `laws`, whose YAML list is
+// `components` (modification_section.cpp).
+std::vector<PropertyFactors> ReadModification(const YamlReader& reader, const YAML::Node& node,
+                                              const std::string& path,
+                                              const hysteresis::ParallelAssembly& laws,
+                                              const YAML::Node& components);
 
 StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
                                const UnitSystem& units);
 // The `plan` section: a building in plan (plan_section.cpp).
-StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& node,
-                          const UnitSystem& units);
+// Its isolator entries' property modification factors are appended to `modifications`.
+StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& node, const UnitSystem& units,
+                          std::vector<BearingModification>* modifications);
 // `{file, units, scale, dt}` at key path `path`.
 GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& node,
                                      const std::string& path, const UnitSystem& units);

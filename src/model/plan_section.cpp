@@ -17,9 +17,11 @@
 //     damping: {type: rayleigh, periods: [0.6, 0.1], ratios: [0.05, 0.05]}   # or none (default)
 //     isolators:
 //       - name: sw
-//         position: [0, 0]
+//         position: [0, 0]                        # or positions: [[x1, y1], [x2, y2], ...]:
+//                                                 # this type at each, named sw_1, sw_2, ...
 //         coupling: coupled                       # or uncoupled: each law along x and along y
 //         components: [{type: bhm2, k0: 2, k1: 0.25, uy: 20}]
+//         modification: {c1: {k0: {min: 0.9, max: 1.2}}}   # property_modification.h
 #include <fmt/format.h>
 
 #include <cmath>
@@ -195,16 +197,46 @@ hysteresis::PlanAssembly IsolatorAssembly(const hysteresis::ParallelAssembly& la
   return hysteresis::PlanAssembly(std::move(components));
 }
 
-structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::Node& node,
-                                         const std::string& path, std::size_t index,
-                                         const Footprint& footprint, const UnitSystem& units) {
+// An isolator entry: one isolator at `position`, or its type at each of `positions` (a group,
+// named "<name>_1" ... "<name>_<count>").
+std::vector<structure::PlanIsolatorSite> ReadIsolators(
+    const YamlReader& reader, const YAML::Node& node, const std::string& path, std::size_t index,
+    const Footprint& footprint, const UnitSystem& units,
+    std::vector<BearingModification>* modifications) {
   reader.RequireMap(node, path);
-  reader.CheckKeys(node, path, {"name", "position", "coupling", "components"});
-  structure::PlanIsolatorSite site;
-  site.name = node["name"] ? reader.ReadString(node["name"], ChildPath(path, "name"))
-                           : fmt::format("isolator{}", index + 1);
-  reader.Require(node, path, "position");
-  site.position = ReadInside(reader, node, path, "position", footprint, units);
+  reader.CheckKeys(node, path,
+                   {"name", "position", "positions", "coupling", "components", "modification"});
+  const std::string name = node["name"] ? reader.ReadString(node["name"], ChildPath(path, "name"))
+                                        : fmt::format("isolator{}", index + 1);
+  std::vector<hysteresis::Vec2> positions;
+  if (node["positions"]) {
+    if (node["position"]) {
+      reader.Fail(node["positions"], ChildPath(path, "positions"),
+                  "give position (one isolator) or positions (a group), not both");
+    }
+    const std::string list_path = ChildPath(path, "positions");
+    const YAML::Node list = node["positions"];
+    reader.RequireSequence(list, list_path);
+    if (list.size() == 0) {
+      reader.Fail(list, list_path,
+                  "the list is empty: a group of 0 bearings (give at least one position)");
+    }
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string point_path = IndexPath(list_path, i);
+      const Vec2 point = ReadPoint(reader, list[i], point_path, units);
+      if (!footprint.Contains(point)) {
+        reader.Fail(
+            list[i], point_path,
+            fmt::format("[{:g}, {:g}] is outside the footprint [[{:g}, {:g}], [{:g}, {:g}]]",
+                        point.x, point.y, footprint.low.x, footprint.low.y, footprint.high.x,
+                        footprint.high.y));
+      }
+      positions.push_back(point);
+    }
+  } else {
+    reader.Require(node, path, "position");
+    positions.push_back(ReadInside(reader, node, path, "position", footprint, units));
+  }
   bool uncoupled = false;
   if (node["coupling"]) {
     const std::string coupling = reader.ReadString(node["coupling"], ChildPath(path, "coupling"));
@@ -224,8 +256,18 @@ structure::PlanIsolatorSite ReadIsolator(const YamlReader& reader, const YAML::N
                             "independently)",
                             NoCoupledForm(laws, c)));
   }
-  site.assembly = IsolatorAssembly(laws, uncoupled);
-  return site;
+  if (node["modification"]) {
+    modifications->push_back({name, index,
+                              ReadModification(reader, node["modification"],
+                                               ChildPath(path, "modification"), laws, list)});
+  }
+  const hysteresis::PlanAssembly assembly = IsolatorAssembly(laws, uncoupled);
+  std::vector<structure::PlanIsolatorSite> sites;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    sites.push_back(
+        {node["positions"] ? fmt::format("{}_{}", name, i + 1) : name, positions[i], assembly});
+  }
+  return sites;
 }
 
 structure::PlanDamping ReadDamping(const YamlReader& reader, const YAML::Node& node,
@@ -291,8 +333,8 @@ void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws
   }
 }
 
-StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& plan,
-                          const UnitSystem& units) {
+StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& plan, const UnitSystem& units,
+                          std::vector<BearingModification>* modifications) {
   reader.RequireMap(plan, "plan");
   reader.CheckKeys(plan, "plan", {"footprint", "base", "stories", "damping", "isolators"});
   StructureSection section;
@@ -312,15 +354,17 @@ StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& plan,
     reader.Fail(isolators, "plan.isolators", "the list is empty; give at least one isolator");
   }
   for (std::size_t i = 0; i < isolators.size(); ++i) {
-    building.isolators.push_back(ReadIsolator(reader, isolators[i],
-                                              IndexPath("plan.isolators", i), i, footprint,
-                                              units));
-    for (std::size_t j = 0; j + 1 < building.isolators.size(); ++j) {
-      if (building.isolators[j].name == building.isolators.back().name) {
-        reader.Fail(isolators[i], IndexPath("plan.isolators", i),
-                    fmt::format("name '{}' is already used by isolator {}",
-                                building.isolators[j].name, j));
+    const std::size_t first = building.isolators.size();
+    for (structure::PlanIsolatorSite& site :
+         ReadIsolators(reader, isolators[i], IndexPath("plan.isolators", i), i, footprint, units,
+                       modifications)) {
+      for (std::size_t j = 0; j < first; ++j) {
+        if (building.isolators[j].name == site.name) {
+          reader.Fail(isolators[i], IndexPath("plan.isolators", i),
+                      fmt::format("name '{}' is already used by isolator {}", site.name, j));
+        }
       }
+      building.isolators.push_back(std::move(site));
     }
   }
   return section;

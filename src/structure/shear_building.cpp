@@ -142,9 +142,15 @@ LaidOutStructure BuildShearBuilding(const ShearBuilding& building) {
   std::vector<Member> members;
   if (building.isolated) {
     mass[0] = building.base_mass;
-    members.push_back(Member::Between("isolation", kGround, 0, building.isolation));
+    const std::vector<std::string> bearings =
+        building.bearings.empty() ? std::vector<std::string>{"isolation"} : building.bearings;
+    for (const std::string& bearing : bearings) {
+      const int member = static_cast<int>(members.size());
+      members.push_back(Member::Between(bearing, kGround, 0, building.isolation));
+      layout.isolators.push_back({bearing, member, -1, 0, {}});
+      layout.base_shear.push_back({member, -1, kX});
+    }
     layout.levels.push_back({"base", {0, kGround, kGround}, {}});
-    layout.isolators.push_back({"isolation", 0, -1, 0, {}});
   }
   for (int s = 0; s < stories; ++s) {
     const Story& story = building.stories[s];
@@ -156,8 +162,8 @@ LaidOutStructure BuildShearBuilding(const ShearBuilding& building) {
     members.push_back(Member::Between(story.name, below, dof, story.assembly));
     layout.levels.push_back({"floor " + std::to_string(s + 1), {dof, kGround, kGround}, {}});
   }
-  // The force into the ground: the isolators', or the first story's on a fixed base.
-  layout.base_shear.push_back({0, -1, kX});
+  // The force into the ground: the isolators' (above), or the first story's on a fixed base.
+  if (!building.isolated) layout.base_shear.push_back({0, -1, kX});
 
   // C = T^T C_s T, where T maps the DOFs to floor motion relative to the base,
   // x_s = u_s - u_base 1 (isolated), or x_s = u_s (fixed base).
@@ -178,15 +184,20 @@ LaidOutStructure BuildShearBuilding(const ShearBuilding& building) {
 }
 
 LaidOutStructure BuildSdof(double mass, double damping_coefficient,
-                           hysteresis::ParallelAssembly restoring) {
+                           hysteresis::ParallelAssembly restoring,
+                           const std::vector<std::string>& bearings) {
   SparseMatrix c(1, 1);
   if (damping_coefficient != 0.0) c.insert(0, 0) = damping_coefficient;
   std::vector<Member> members;
-  members.push_back(Member::Between("restoring", kGround, 0, std::move(restoring)));
   Layout layout;
   layout.levels.push_back({"mass", {0, kGround, kGround}, {}});
-  layout.isolators.push_back({"restoring", 0, -1, 0, {}});
-  layout.base_shear.push_back({0, -1, kX});
+  for (const std::string& bearing :
+       bearings.empty() ? std::vector<std::string>{"restoring"} : bearings) {
+    const int member = static_cast<int>(members.size());
+    members.push_back(Member::Between(bearing, kGround, 0, restoring));
+    layout.isolators.push_back({bearing, member, -1, 0, {}});
+    layout.base_shear.push_back({member, -1, kX});
+  }
   return {Structure(Eigen::VectorXd::Constant(1, mass), std::move(members), {}, c),
           std::move(layout)};
 }

@@ -5,9 +5,14 @@
 //   description: free text
 //   units: {force: kN, length: mm, time: s}          # required
 //   isolation:                                       # the isolation layer, or an SDOF's spring
+//     name: lrb                                      # optional, with count: the bearing's name
+//     count: 16                                      # optional: the layer is 16 such bearings in
+//                                                    # parallel, isolators lrb_1 ... lrb_16
 //     components:                                    # a parallel assembly, one entry per law
 //       - {name: c1, type: thm1, k0: 1.0, k1: 0.2, k2: 0.45, uy: 20, uyh: 120}
 //       - {name: c2, type: thm2, ke: "1 kN/mm", kh1: 0.2, kh2: 0.05, fs: 16, uc: 120}
+//     modification: {c1: {k0: {testing: [0.9, 1.1], ageing: [1, 1.2], specification: [0.9,
+//                    1.1]}}}                         # property_modification.h, bounds.h
 //   structure:                                       # one direction (structure_section.cpp)
 //     type: sdof                                     # mass, damping: {ratio | coefficient}
 //     type: shear_building                           # stories (list, uniform, or none: a slab
@@ -45,6 +50,7 @@
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/model/output_selection.h"
+#include "isolab/model/property_modification.h"
 #include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 
@@ -123,6 +129,15 @@ struct ModelFile {
   // A one-direction model's isolation layer (or an SDOF's spring); empty when it has none, and in
   // a plan model, whose isolators carry their own laws.
   hysteresis::ParallelAssembly isolation;
+  // The one-direction layer as `isolation`'s type used `count` times in parallel (isolation.count,
+  // isolation.name): isolators "<name>_1" ... "<name>_<count>" (IsolationBearings). Without a
+  // count, the layer is the one isolator "isolation" (an SDOF's "restoring").
+  std::optional<int> isolation_count;
+  std::string isolation_name = "bearing";
+  // Property modification factors per bearing type (isolation.modification,
+  // plan.isolators[i].modification): what bounds.h turns into upper- and lower-bound models. A
+  // run uses the nominal properties.
+  std::vector<BearingModification> modifications;
   std::optional<StructureSection> structure;
   ExcitationSection excitation;
   std::optional<AxialLoadSection> axial_load;
@@ -131,6 +146,10 @@ struct ModelFile {
   OutputSelection output;
   std::optional<hysteresis::CyclicProtocol> cyclic;
 };
+
+// The names of a one-direction layer's bearings: "<name>_1" ... "<name>_<count>"; empty without a
+// count (the layer is then one isolator).
+std::vector<std::string> IsolationBearings(const ModelFile& model);
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types or
 // units, and parameters that break a law's or a section's rules.

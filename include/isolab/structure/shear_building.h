@@ -38,6 +38,9 @@ struct ShearBuilding {
   bool isolated = false;
   double base_mass = 0.0;                  // isolated only
   hysteresis::ParallelAssembly isolation;  // isolated only: force against base displacement
+  // Isolated only: the layer as bearings of `isolation`'s type in parallel, one isolator each,
+  // named so; empty: the layer as the one isolator "isolation".
+  std::vector<std::string> bearings;
   SuperstructureDamping damping;
 };
 
@@ -54,13 +57,15 @@ struct Modes {
 Modes FixedBaseModes(const std::vector<Story>& stories);
 
 // The structure and its layout: levels "base" (isolated) and "floor 1" to "floor N", the stories
-// (their members: x only), the isolation layer as the one isolator "isolation"; an SDOF is one
-// level "mass" on its spring "restoring", which counts as its isolator. An isolated building may
+// (their members: x only), the isolation layer as the one isolator "isolation" (or one isolator
+// per named bearing, each a member of its own); an SDOF is one level "mass" on its spring
+// "restoring" (or on its named bearings), which counts as its isolator. An isolated building may
 // have no story (a rigid slab on its isolators). Throws std::invalid_argument with the field at
 // fault when the description is inconsistent.
 LaidOutStructure BuildShearBuilding(const ShearBuilding& building);
 LaidOutStructure BuildSdof(double mass, double damping_coefficient,
-                           hysteresis::ParallelAssembly restoring);
+                           hysteresis::ParallelAssembly restoring,
+                           const std::vector<std::string>& bearings = {});
 
 // Initial stiffness of an assembly: its tangent at rest.
 double InitialStiffness(const hysteresis::ParallelAssembly& assembly);

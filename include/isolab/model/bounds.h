@@ -1,0 +1,36 @@
+// Nominal, upper-bound and lower-bound models of a model with property modification factors
+// (property_modification.h), as model files that run alone: the model's own text with every
+// named property times its combined lambda_max (upper) or lambda_min (lower), the modification
+// sections removed, the files it names (records, an included isolation) made absolute, and a
+// results file named for the bound.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "isolab/model/model_file.h"
+
+namespace isolab::model {
+
+struct BoundModel {
+  std::string bound;  // "nominal", "upper", "lower"
+  std::string text;   // the model file's YAML
+};
+
+// One modified property and the values its bound models take (in the text's own unit).
+struct BoundProperty {
+  std::string bearing, component, key;
+  FactorPair lambda;
+  std::string nominal, lower, upper;  // the values as written
+};
+
+struct BoundModels {
+  std::vector<BoundModel> models;  // nominal, upper, lower
+  std::vector<BoundProperty> properties;
+};
+
+// Throws InputError for a model without modification factors and for a bound model that breaks
+// a law's rules (e.g. ku > kd of a lead-rubber bearing whose kd is raised), naming the bound.
+BoundModels MakeBoundModels(const ModelFile& model);
+
+}  // namespace isolab::model

@@ -1,0 +1,58 @@
+#include "bounds_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <vector>
+
+#include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
+#include "isolab/model/bounds.h"
+#include "isolab/model/model_file.h"
+
+namespace isolab::cli {
+
+void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
+  CLI::App* command = app.add_subcommand(
+      "bounds",
+      "Write a model's nominal, upper-bound and lower-bound models from its property "
+      "modification factors (ASCE 7-16 17.2.8.4)");
+  command->add_option("model", o.model, "Model file (YAML) with modification factors")->required();
+  command
+      ->add_option("-o,--output", o.output,
+                   "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to")
+      ->required();
+  command->add_flag("-q,--quiet", o.quiet, "Print nothing");
+}
+
+void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
+  const model::ModelFile model = model::LoadModelFile(o.model);
+  if (!std::filesystem::is_directory(o.output)) {
+    throw InputError({"--output"}, fmt::format("'{}' is not a folder", o.output));
+  }
+  const model::BoundModels bounds = model::MakeBoundModels(model);
+  const std::string stem = std::filesystem::path(o.model).stem().string();
+  std::vector<std::string> paths;
+  for (const model::BoundModel& bound : bounds.models) {
+    paths.push_back(
+        (std::filesystem::path(o.output) / (stem + "_" + bound.bound + ".yaml")).string());
+    io::CheckOutputPath(paths.back());
+  }
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const std::string& text = bounds.models[i].text;
+    io::WriteTextFileAtomically(paths[i], [&text](std::ostream& file) { file << text; });
+  }
+  if (o.quiet) return;
+  fmt::print(out, "{}: property modification factors (ASCE 7-16 17.2.8.4)\n", o.model);
+  fmt::print(out, "{:<12} {:<12} {:<8} {:>10} {:>10} {:>14} {:>14} {:>14}\n", "bearing",
+             "component", "property", "lambda_min", "lambda_max", "lower", "nominal", "upper");
+  for (const model::BoundProperty& p : bounds.properties) {
+    fmt::print(out, "{:<12} {:<12} {:<8} {:>10.4g} {:>10.4g} {:>14} {:>14} {:>14}\n", p.bearing,
+               p.component, p.key, p.lambda.min, p.lambda.max, p.lower, p.nominal, p.upper);
+  }
+  for (const std::string& path : paths) fmt::print(out, "wrote {}\n", path);
+}
+
+}  // namespace isolab::cli
