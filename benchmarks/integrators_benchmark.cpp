@@ -48,7 +48,8 @@ Excitation Noise() {
   const io::Record record = analysis::FilteredNoiseRecord(spec);
   Excitation excitation = Excitation::Uniform({});
   excitation.ground[0].acceleration.dt = record.dt;
-  for (const double a : record.values) excitation.ground[0].acceleration.values.push_back(a * 9806.65);
+  for (const double a : record.values)
+    excitation.ground[0].acceleration.values.push_back(a * 9806.65);
   return excitation;
 }
 
@@ -78,7 +79,8 @@ void RunSteps(benchmark::State& state, const structure::Structure& structure, in
 void BM_SdofThm1(benchmark::State& state) {
   // 31.7 t on the Table 7 THM1 (hardening) law, in kN, mm, s.
   const auto sdof =
-      structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120})).structure;
+      structure::BuildSdof(0.0317, 0.0, Single(LawType::kThm1, {1.0, 0.2, 0.45, 20, 120}))
+          .structure;
   RunSteps(state, sdof, 10000);
 }
 
@@ -161,7 +163,8 @@ void FiveStoryTable9Floor(benchmark::State& state) {
     return;
   }
   solves = 0;
-  for (auto _ : state) solves += floor.Run(excitation.ground[0].acceleration, 0.01, kSteps, &output);
+  for (auto _ : state)
+    solves += floor.Run(excitation.ground[0].acceleration, 0.01, kSteps, &output);
   CountSteps(state, kSteps, solves);
 }
 
@@ -232,8 +235,7 @@ structure::PlanBuilding BundledPlanBuilding() {
 }
 
 // A plan building under PlanNoise().
-void RunPlanSteps(benchmark::State& state, const structure::LaidOutStructure& building,
-                  int steps) {
+void RunPlanSteps(benchmark::State& state, const structure::LaidOutStructure& building, int steps) {
   RunSteps(state, building.structure, steps, PlanNoise(building.layout));
 }
 

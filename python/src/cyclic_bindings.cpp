@@ -118,9 +118,8 @@ py::dict ReplayDict(const std::string& model, const analysis::ReplayResult& r,
 // A model (or a plan model file's path) along paths from files, or round orbits; one dict per
 // run, as `isolab cyclic --path/--orbit --json` lists them, with the histories as arrays.
 py::list Replay(const py::object& model, const analysis::ReplayRequest& request) {
-  const model::ModelFile file = py::isinstance<Model>(model)
-                                    ? model.cast<const Model&>().file()
-                                    : model::LoadModelFile(py::str(model));
+  const model::ModelFile file = py::isinstance<Model>(model) ? model.cast<const Model&>().file()
+                                                             : model::LoadModelFile(py::str(model));
   std::vector<analysis::ReplayRun> runs;
   {
     py::gil_scoped_release release;
@@ -203,11 +202,10 @@ void BindCyclic(py::module_& module) {
       "_replay",
       [](const py::object& model, const std::vector<std::string>& paths, const std::string& orbit,
          const std::vector<double>& amplitudes, const std::vector<double>& periods,
-         std::optional<int> cycles, std::optional<int> steps_per_cycle,
-         const std::string& isolator, bool uncoupled, const std::string& force_unit,
-         const std::string& length_unit) {
-        return Replay(model, {paths, orbit, amplitudes, periods, cycles, steps_per_cycle,
-                              isolator, uncoupled, force_unit, length_unit});
+         std::optional<int> cycles, std::optional<int> steps_per_cycle, const std::string& isolator,
+         bool uncoupled, const std::string& force_unit, const std::string& length_unit) {
+        return Replay(model, {paths, orbit, amplitudes, periods, cycles, steps_per_cycle, isolator,
+                              uncoupled, force_unit, length_unit});
       },
       py::arg("model"), py::arg("paths"), py::arg("orbit"), py::arg("amplitudes"),
       py::arg("periods"), py::arg("cycles"), py::arg("steps_per_cycle"), py::arg("isolator"),

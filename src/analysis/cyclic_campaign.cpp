@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "isolab/core/errors.h"
-#include "isolab/model/build_structure.h"
 #include "isolab/identification/synthetic_tests.h"
+#include "isolab/model/build_structure.h"
 
 namespace isolab::analysis {
 

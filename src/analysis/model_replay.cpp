@@ -29,11 +29,11 @@ Paths ReadPaths(const ReplayRequest& request, const UnitSystem& units, OptionSty
       request.paths, request.force_unit.empty() ? units.force() : request.force_unit,
       request.length_unit.empty() ? units.length() : request.length_unit, units);
   if (!set.without_units.empty() && (request.force_unit.empty() || request.length_unit.empty())) {
-    throw InputError({set.without_units.front()},
-                     fmt::format("no '# units: force ..., length ...' line: give the path's units "
-                                 "in the file or with {} and {}",
-                                 OptionName("force_unit", style),
-                                 OptionName("length_unit", style)));
+    throw InputError(
+        {set.without_units.front()},
+        fmt::format("no '# units: force ..., length ...' line: give the path's units "
+                    "in the file or with {} and {}",
+                    OptionName("force_unit", style), OptionName("length_unit", style)));
   }
   read.paths = std::move(set.paths);
   read.cycle_starts.resize(read.paths.size());
@@ -106,9 +106,9 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
       }
     }
     if (runs.empty()) {
-      throw InputError({OptionName("isolator", style)},
-                       fmt::format("{}: {} has no isolator of that name", request.isolator,
-                                   model.path));
+      throw InputError(
+          {OptionName("isolator", style)},
+          fmt::format("{}: {} has no isolator of that name", request.isolator, model.path));
     }
     return runs;
   }
@@ -124,11 +124,10 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
   for (std::size_t p = 0; p < along.paths.size(); ++p) {
     const io::DisplacementPath& path = along.paths[p];
     try {
-      runs.push_back(
-          {model.path, model.units,
-           path.plan ? Replay(PlanFromIsolation(model.isolation, !request.uncoupled), path,
-                              along.cycle_starts[p])
-                     : Replay(model.isolation, path, along.cycle_starts[p])});
+      runs.push_back({model.path, model.units,
+                      path.plan ? Replay(PlanFromIsolation(model.isolation, !request.uncoupled),
+                                         path, along.cycle_starts[p])
+                                : Replay(model.isolation, path, along.cycle_starts[p])});
     } catch (const std::invalid_argument& error) {
       throw InputError({model.path}, error.what());
     }

@@ -105,9 +105,8 @@ std::vector<Mode> Modes(const structure::Structure& s, const structure::Layout& 
   const Eigen::VectorXd& m = s.mass();
   const std::vector<Eigen::Triplet<double>> entries =
       StiffnessEntries(s, layout, displacement, Members::kAll);
-  const bool chain = std::all_of(entries.begin(), entries.end(), [](const auto& e) {
-    return std::abs(e.row() - e.col()) <= 1;
-  });
+  const bool chain = std::all_of(entries.begin(), entries.end(),
+                                 [](const auto& e) { return std::abs(e.row() - e.col()) <= 1; });
   std::vector<Mode> modes;
   if (chain && layout.directions == 1 && !layout.rotations) {
     Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
@@ -159,8 +158,7 @@ std::vector<double> ModelSummary::FixedBasePeriods() const {
 double SecantStiffness(const hysteresis::ParallelAssembly& assembly, double displacement) {
   // Piecewise-linear laws update exactly in one call; the increments are for Bouc-Wen.
   constexpr int kIncrements = 200;
-  std::vector<hysteresis::LawState> committed(assembly.state_size()),
-      trial(assembly.state_size());
+  std::vector<hysteresis::LawState> committed(assembly.state_size()), trial(assembly.state_size());
   std::vector<hysteresis::LawResponse> responses(assembly.size());
   double force = 0.0;
   for (int i = 1; i <= kIncrements; ++i) {
@@ -206,7 +204,8 @@ std::vector<Mode> RigidModes(const structure::Structure& s, const structure::Lay
       r(level.dofs[structure::kY], 1) = 1.0;
       if (layout.rotations) r(level.dofs[structure::kY], theta) = arm.x;
     }
-    if (level.dofs[structure::kRotation] != kGround) r(level.dofs[structure::kRotation], theta) = 1.0;
+    if (level.dofs[structure::kRotation] != kGround)
+      r(level.dofs[structure::kRotation], theta) = 1.0;
   }
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(s.dofs(), s.dofs());
   for (const auto& e : StiffnessEntries(s, layout, displacement, Members::kIsolatorsOnly)) {
@@ -224,7 +223,8 @@ std::vector<Mode> RigidModes(const structure::Structure& s, const structure::Lay
     int direction = 0;
     double largest = -1.0;
     for (int i = 0; i < rigid; ++i) {
-      const double share = m_rigid(i, i) * solver.eigenvectors()(i, j) * solver.eigenvectors()(i, j);
+      const double share =
+          m_rigid(i, i) * solver.eigenvectors()(i, j) * solver.eigenvectors()(i, j);
       if (share > largest) {
         largest = share;
         direction = i == theta ? structure::kRotation : i;
@@ -334,8 +334,7 @@ ModelSummary SummariseModel(const structure::Structure& s, const structure::Layo
       summary.secant_stiffness +=
           isolator.member >= 0
               ? SecantStiffness(s.members()[isolator.member].assembly, trial_displacement)
-              : SecantStiffness(s.coupled_members()[isolator.coupled].assembly,
-                                trial_displacement)
+              : SecantStiffness(s.coupled_members()[isolator.coupled].assembly, trial_displacement)
                     .x;
     }
     summary.rigid_modes = RigidModes(s, layout, trial_displacement);

@@ -231,15 +231,16 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
                                  key_of(components[1])));
   }
   if (layout.directions == 1 && angle != 0.0) {
-    throw InputError(overrides.records.empty() ? SourceLocation{model.path} : SourceLocation{"--angle"},
-                     "the structure moves along x only: an angle of the record to the x axis "
-                     "needs a building in plan");
+    throw InputError(
+        overrides.records.empty() ? SourceLocation{model.path} : SourceLocation{"--angle"},
+        "the structure moves along x only: an angle of the record to the x axis "
+        "needs a building in plan");
   }
   std::vector<integrators::SampledHistory> histories(components.size());
   for (std::size_t i = 0; i < components.size(); ++i) {
     const Component& c = components[i];
-    problem.records.push_back(ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
-                                          &histories[i], c.data));
+    problem.records.push_back(
+        ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units, &histories[i], c.data));
     if (i == 0) continue;
     const integrators::SampledHistory& h1 = histories[0];
     if (std::abs(histories[i].dt - h1.dt) > 1e-9 * h1.dt) {
@@ -261,19 +262,19 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
     problem.vertical_record = ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
                                           &problem.excitation.vertical, c.data);
     if (histories.empty()) {
-      throw InputError(c.motion.location,
-                       fmt::format("{}a vertical component needs the horizontal h1 beside it",
-                                   key_of(c)));
+      throw InputError(
+          c.motion.location,
+          fmt::format("{}a vertical component needs the horizontal h1 beside it", key_of(c)));
     }
     const integrators::SampledHistory& h1 = histories[0];
     if (std::abs(problem.excitation.vertical.dt - h1.dt) > 1e-9 * h1.dt ||
         problem.excitation.vertical.values.size() != h1.values.size()) {
-      throw InputError(c.motion.location,
-                       fmt::format("{}its step {:g} and {} samples differ from h1's {:g} and {}; "
-                                   "the record's components must share their step and length",
-                                   key_of(c), problem.excitation.vertical.dt,
-                                   problem.excitation.vertical.values.size(), h1.dt,
-                                   h1.values.size()));
+      throw InputError(
+          c.motion.location,
+          fmt::format("{}its step {:g} and {} samples differ from h1's {:g} and {}; "
+                      "the record's components must share their step and length",
+                      key_of(c), problem.excitation.vertical.dt,
+                      problem.excitation.vertical.values.size(), h1.dt, h1.values.size()));
     }
   }
   double record_dt = histories.empty() ? 0.0 : histories[0].dt;
@@ -312,9 +313,8 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   }
   double pga = 0.0;
   for (const io::AppliedRecord& record : problem.records) pga = std::max(pga, record.pga);
-  problem.summary =
-      SummariseModel(problem.structure, problem.layout, fixed_base ? &*fixed_base : nullptr,
-                     model.units, pga, trial);
+  problem.summary = SummariseModel(problem.structure, problem.layout,
+                                   fixed_base ? &*fixed_base : nullptr, model.units, pga, trial);
 
   problem.excitation_end = problem.excitation.duration();
   double duration = model.analysis.duration;

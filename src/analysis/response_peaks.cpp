@@ -74,22 +74,19 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
         const auto* law = std::get_if<hysteresis::SeriesArrangement>(&assembly.kernels()[c]);
         if (law && assembly.components()[c].parameters.type() ==
                        hysteresis::LawType::kTripleFrictionPendulum) {
-          triples_.push_back({i, law,
-                              s.law_offset(isolator.member) + assembly.ElementStatesOffset(c),
-                              false});
+          triples_.push_back(
+              {i, law, s.law_offset(isolator.member) + assembly.ElementStatesOffset(c), false});
         }
       }
     } else {
       const hysteresis::PlanAssembly& assembly = s.coupled_members()[isolator.coupled].assembly;
       for (std::size_t c = 0; c < assembly.size(); ++c) {
-        const auto* law =
-            std::get_if<hysteresis::PlanSeriesArrangement>(&assembly.kernels()[c]);
-        if (law && assembly.components()[c].law.type() ==
-                       hysteresis::LawType::kTripleFrictionPendulum) {
-          triples_.push_back({i, &law->law,
-                              s.coupled_law_offset(isolator.coupled) +
-                                  2 * assembly.ElementStatesOffset(c),
-                              true});
+        const auto* law = std::get_if<hysteresis::PlanSeriesArrangement>(&assembly.kernels()[c]);
+        if (law &&
+            assembly.components()[c].law.type() == hysteresis::LawType::kTripleFrictionPendulum) {
+          triples_.push_back(
+              {i, &law->law,
+               s.coupled_law_offset(isolator.coupled) + 2 * assembly.ElementStatesOffset(c), true});
         }
       }
     }
@@ -138,8 +135,7 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   ResponsePeaks& peaks = peaks_;
 
   // The residual window: drop the samples older than it, then add this row's.
-  while (window_size_ > 0 &&
-         window_.front()[window_start_].t < t - problem_.residual_window) {
+  while (window_size_ > 0 && window_.front()[window_start_].t < t - problem_.residual_window) {
     window_start_ = (window_start_ + 1) % window_.front().size();
     --window_size_;
   }
@@ -165,7 +161,8 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
       (term.direction == structure::kX ? base_shear.x : base_shear.y) += f;
     } else {
       const std::size_t column = problem_.structure.coupled_force_column(term.coupled);
-      base_shear = base_shear + Vec2{row.connection_force[column], row.connection_force[column + 1]};
+      base_shear =
+          base_shear + Vec2{row.connection_force[column], row.connection_force[column + 1]};
     }
   }
   Consider(&peaks.base_shear, Magnitude(base_shear), t);
@@ -185,8 +182,9 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   }
   if (layout.rotations) {
     for (std::size_t l = 0; l < layout.levels.size(); ++l) {
-      Consider(&peaks.level_rotations[l], row.displacement[layout.levels[l].dofs[structure::kRotation]],
-               t, static_cast<int>(l));
+      Consider(&peaks.level_rotations[l],
+               row.displacement[layout.levels[l].dofs[structure::kRotation]], t,
+               static_cast<int>(l));
     }
     const structure::Level& base = layout.levels.front();
     Consider(&peaks.base_centre_displacement,
@@ -267,7 +265,8 @@ ResponsePeaks PeakTracker::Peaks() const {
     const bool one_direction = layout.isolators[i].member >= 0;
     peaks.isolator_residuals.push_back(one_direction ? middle.x : Norm(middle));
     peaks.isolator_oscillations.push_back(one_direction ? half.x : Norm(half));
-    if (i == 0 || std::abs(peaks.isolator_residuals[i]) > std::abs(peaks.residual_isolator_displacement)) {
+    if (i == 0 ||
+        std::abs(peaks.isolator_residuals[i]) > std::abs(peaks.residual_isolator_displacement)) {
       peaks.residual_isolator_displacement = peaks.isolator_residuals[i];
       peaks.residual_oscillation = peaks.isolator_oscillations[i];
     }

@@ -104,10 +104,10 @@ std::vector<int> SelectedLevels(const model::OutputSelection& selection,
   for (const int level : selection.levels) {
     const int index = level == model::kRoofLevel ? levels - 1 : has_level_zero ? level : level - 1;
     if (index < 0 || index >= levels) {
-      throw InputError({key}, fmt::format("level {} is not in the structure (its levels are {} to "
-                                          "{}, or roof)",
-                                          level, has_level_zero ? 0 : 1,
-                                          has_level_zero ? levels - 1 : levels));
+      throw InputError(
+          {key}, fmt::format("level {} is not in the structure (its levels are {} to "
+                             "{}, or roof)",
+                             level, has_level_zero ? 0 : 1, has_level_zero ? levels - 1 : levels));
     }
     selected.push_back(index);
   }
@@ -169,7 +169,8 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
   // Torsion members' forces are torques: they are the stories' torque, not connection forces.
   std::vector<bool> torque(s.members().size(), false);
   for (const structure::StoryLayout& story : layout.stories) {
-    if (story.members[structure::kRotation] >= 0) torque[story.members[structure::kRotation]] = true;
+    if (story.members[structure::kRotation] >= 0)
+      torque[story.members[structure::kRotation]] = true;
   }
   const MemberLevels member_levels = LevelsOfMembers(problem);
   std::vector<int> force_columns;
@@ -200,10 +201,9 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
                       }});
   }
   if (!problem.excitation.vertical.values.empty()) {
-    series.push_back(Vector("vertical_ground_acceleration", acceleration,
-                            [&problem](const ResponseRow& row) {
-                              return problem.excitation.vertical.At(row.time);
-                            }));
+    series.push_back(Vector(
+        "vertical_ground_acceleration", acceleration,
+        [&problem](const ResponseRow& row) { return problem.excitation.vertical.At(row.time); }));
   }
   const auto per_dof = [&](const char* name, const std::string& units, RowValues values) {
     if (selection.Records(name)) {
@@ -219,8 +219,8 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
   per_dof("acceleration", acceleration, &ResponseRow::acceleration);
   per_dof("absolute_acceleration", acceleration, &ResponseRow::absolute_acceleration);
   if (selection.Records("connection_force") && !force_columns.empty()) {
-    series.push_back(Columns("connection_force", force, force_names,
-                             &ResponseRow::connection_force, force_columns));
+    series.push_back(Columns("connection_force", force, force_names, &ResponseRow::connection_force,
+                             force_columns));
   }
 
   if (layout.isolated() && selection.Records("isolator")) {
@@ -268,25 +268,25 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
       }
     };
     series.push_back({"isolator/displacement", length, Named(names), deformations});
-    series.push_back(Columns("isolator/force", force, Named(names), &ResponseRow::connection_force,
-                             force_of));
+    series.push_back(
+        Columns("isolator/force", force, Named(names), &ResponseRow::connection_force, force_of));
     if (any_coupled) {
-      series.push_back({"isolator/resultant", length, Named(resultants),
-                        [&problem](const ResponseRow& row, double* out) {
-                          for (const structure::IsolatorLayout& isolator :
-                               problem.layout.isolators) {
-                            *out++ = isolator.member >= 0
-                                         ? std::abs(problem.structure.MemberDeformation(
-                                               isolator.member, row.displacement))
-                                         : Norm(problem.structure.CoupledDeformation(
-                                               isolator.coupled, row.displacement));
-                          }
-                        }});
+      series.push_back(
+          {"isolator/resultant", length, Named(resultants),
+           [&problem](const ResponseRow& row, double* out) {
+             for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+               *out++ = isolator.member >= 0 ? std::abs(problem.structure.MemberDeformation(
+                                                   isolator.member, row.displacement))
+                                             : Norm(problem.structure.CoupledDeformation(
+                                                   isolator.coupled, row.displacement));
+             }
+           }});
     }
     const structure::AxialLoads& axial = s.axial_loads();
     if (!axial.empty()) {
       std::vector<std::string> bearings;
-      for (const structure::AxialBearing& bearing : axial.bearings) bearings.push_back(bearing.name);
+      for (const structure::AxialBearing& bearing : axial.bearings)
+        bearings.push_back(bearing.name);
       series.push_back({"isolator/axial_load", force, Named(bearings),
                         [count = axial.bearings.size()](const ResponseRow& row, double* out) {
                           for (std::size_t j = 0; j < count; ++j) {
@@ -334,21 +334,20 @@ std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSele
       return Series{std::move(name), std::move(units), std::move(columns),
                     [&problem, chosen_members, factors](const ResponseRow& row, double* out) {
                       for (std::size_t c = 0; c < chosen_members.size(); ++c) {
-                        out[c] = factors[c] * problem.structure.MemberDeformation(
-                                                  chosen_members[c], row.displacement);
+                        out[c] = factors[c] * problem.structure.MemberDeformation(chosen_members[c],
+                                                                                  row.displacement);
                       }
                     }};
     };
-    series.push_back(drifts("story/drift", length, members, names,
-                            std::vector<double>(members.size(), 1.0)));
-    if (heights) series.push_back(drifts("story/drift_ratio", "%", members, names, per_height));
     series.push_back(
-        Columns("story/shear", force, names, &ResponseRow::connection_force, members));
+        drifts("story/drift", length, members, names, std::vector<double>(members.size(), 1.0)));
+    if (heights) series.push_back(drifts("story/drift_ratio", "%", members, names, per_height));
+    series.push_back(Columns("story/shear", force, names, &ResponseRow::connection_force, members));
     if (!twists.empty()) {
       series.push_back(drifts("story/twist", "rad", twists, twist_names,
                               std::vector<double>(twists.size(), 1.0)));
-      series.push_back(Columns("story/torque", energy, twist_names,
-                               &ResponseRow::connection_force, twists));
+      series.push_back(
+          Columns("story/torque", energy, twist_names, &ResponseRow::connection_force, twists));
     }
   }
   if (selection.Records("energy")) {

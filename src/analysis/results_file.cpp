@@ -3,15 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <filesystem>
 
-#include "results_writer.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "results_sink.h"
+#include "results_writer.h"
 
 namespace isolab::analysis {
 namespace {

@@ -48,9 +48,10 @@ void WriteRunAttributes(io::Hdf5File& file, const RunDescription& run) {
   const UnitSystem& units = problem.units();
   const double g = units.Convert(1.0, "g", dimension::kAcceleration);
   WriteProgramAttributes(file, run.version, problem.model.path, units);
-  io::WriteRecordAttributes(file, problem.records.empty() ? io::AppliedRecord{} : problem.records[0],
-                            g);
-  if (problem.records.size() > 1) io::WriteRecordAttributes(file, problem.records[1], g, "record_h2");
+  io::WriteRecordAttributes(file,
+                            problem.records.empty() ? io::AppliedRecord{} : problem.records[0], g);
+  if (problem.records.size() > 1)
+    io::WriteRecordAttributes(file, problem.records[1], g, "record_h2");
   if (problem.layout.directions > 1) file.WriteAttribute("/", "incidence_angle", problem.angle);
   WriteIntegratorAttributes(file, *run.analysis, problem.grid.dt, summary);
   file.WriteAttribute("/", "excitation_end", problem.excitation_end);
@@ -105,8 +106,7 @@ void WritePeaks(io::Hdf5File& file, const RunDescription& run) {
                       values(peaks.isolator_displacements), length);
     file.WriteDoubles("peaks/isolators/force", {names.size()}, values(peaks.isolator_forces),
                       DescribeUnits(units, dimension::kForce));
-    file.WriteDoubles("peaks/isolators/residual", {names.size()}, peaks.isolator_residuals,
-                      length);
+    file.WriteDoubles("peaks/isolators/residual", {names.size()}, peaks.isolator_residuals, length);
     for (const char* name : {"displacement", "force", "residual"}) {
       file.WriteStringsAttribute(fmt::format("peaks/isolators/{}", name), "columns", names);
     }

@@ -38,8 +38,9 @@ nlohmann::json ModesJson(const std::vector<Mode>& modes) {
 }
 
 nlohmann::json RecordJson(const io::AppliedRecord& r, double g) {
-  return {{"record", r.path},         {"scale", r.scale}, {"record_units", r.units},
-          {"record_units_source", r.units_source}, {"record_dt", r.dt}, {"pga", r.pga},
+  return {{"record", r.path},        {"scale", r.scale},
+          {"record_units", r.units}, {"record_units_source", r.units_source},
+          {"record_dt", r.dt},       {"pga", r.pga},
           {"pga_g", r.pga / g}};
 }
 
@@ -62,8 +63,7 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
   json["steps"] = problem.grid.steps;
   json["excitation_end"] = problem.excitation_end;
   json["free_vibration"] = problem.free_vibration;
-  json["units"] = {
-      {"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
+  json["units"] = {{"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
   json["model_summary"] = {{"total_mass", m.total_mass},
                            {"total_weight", m.total_weight},
                            {"fixed_base_periods", m.FixedBasePeriods()},

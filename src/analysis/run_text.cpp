@@ -84,8 +84,7 @@ void PrintPreamble(const Problem& problem, std::ostream& out) {
                asked.overturning ? ", overturning (Newmark: from the step's start)" : "");
   }
   if (layout.directions > 1 && !problem.records.empty()) {
-    fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle,
-               problem.angle + 90.0);
+    fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle, problem.angle + 90.0);
   }
   const double tonnes = m.total_mass * u.SiFactor(dimension::kMass) / 1000.0;
   fmt::print(out, "model: ");
@@ -105,8 +104,8 @@ void PrintPreamble(const Problem& problem, std::ostream& out) {
                DescribeUnits(u, dimension::kStiffness));
   }
   fmt::print(out, "\n");
-  PrintGrid(problem.grid, problem.excitation_end, problem.free_vibration,
-            problem.structure.dofs(), u, out);
+  PrintGrid(problem.grid, problem.excitation_end, problem.free_vibration, problem.structure.dofs(),
+            u, out);
 }
 
 void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis,
@@ -162,7 +161,8 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
          level < 0 ? std::string() : fmt::format(" ({})", layout.levels[level].name));
   }
   if (layout.rotations && layout.isolated()) {
-    fmt::print(out, "{:<34} {:>12.4g} (the largest isolator displacement over the base's "
+    fmt::print(out,
+               "{:<34} {:>12.4g} (the largest isolator displacement over the base's "
                "centre of mass's, {:.5g} {})\n",
                "torsional amplification", peaks.torsional_amplification,
                peaks.base_centre_displacement.value, length);
@@ -192,11 +192,11 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
       const double d = peaks.isolator_displacement.value;
       double k = 0.0;
       for (const structure::IsolatorLayout& isolator : layout.isolators) {
-        k += isolator.member >= 0
-                 ? SecantStiffness(problem.structure.members()[isolator.member].assembly, d)
-                 : SecantStiffness(problem.structure.coupled_members()[isolator.coupled].assembly,
-                                   d)
-                       .x;
+        k +=
+            isolator.member >= 0
+                ? SecantStiffness(problem.structure.members()[isolator.member].assembly, d)
+                : SecantStiffness(problem.structure.coupled_members()[isolator.coupled].assembly, d)
+                      .x;
       }
       if (k > 0.0) {
         double period = 0.0;

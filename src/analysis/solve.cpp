@@ -7,12 +7,12 @@
 
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
-#include "results_writer.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/plan_rate_form.h"
 #include "isolab/hysteresis/rate_form.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
+#include "results_writer.h"
 
 namespace isolab::analysis {
 namespace {
@@ -93,8 +93,8 @@ Summary Solve(const SolveOptions& options, const Problem& problem,
   }
   Summary summary;
   summary.results_path = options.results_path;
-  const RunDescription run{&problem,        &options.analysis, &summary.run, &summary.peaks,
-                           options.version, options.output};
+  const RunDescription run{&problem,       &options.analysis, &summary.run,
+                           &summary.peaks, options.version,   options.output};
   PeakTracker tracker(problem);
   std::optional<ResultsWriter> writer;
   if (!options.results_path.empty()) writer.emplace(options.results_path, run, options.buffer_rows);

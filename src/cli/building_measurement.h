@@ -15,8 +15,8 @@ namespace isolab::cli {
 using Series = analysis::Signal;
 
 struct Measured : analysis::BuildingMeasurements {
-  std::vector<int> channels;         // channel number of each level
-  std::string reference_note;        // how the displacement reference was decided
+  std::vector<int> channels;   // channel number of each level
+  std::string reference_note;  // how the displacement reference was decided
 };
 
 // Reads options.data for a building of `levels` levels. Throws InputError.

@@ -273,9 +273,7 @@ void WriteReplayCsv(const Replayed& run, const std::string& path) {
 // --sequential) and a path (--path with its units, or --orbit shaped by -a, -T, -n,
 // --steps-per-cycle; --isolator of a plan model, --uncoupled of a one-direction one).
 void RefuseOptionsOfTheOtherMode(const CyclicOptions& options) {
-  const auto refuse = [](const char* option, const char* why) {
-    throw InputError({option}, why);
-  };
+  const auto refuse = [](const char* option, const char* why) { throw InputError({option}, why); };
   const bool path = !options.paths.empty(), orbit = !options.orbit.empty();
   if (path || orbit) {
     const char* sinusoidal = "writes the sinusoidal tests (without --path or --orbit) as test data";
@@ -290,7 +288,8 @@ void RefuseOptionsOfTheOtherMode(const CyclicOptions& options) {
     if (!options.force_unit.empty()) refuse("--force-unit", "the units of a --path file");
     if (!options.length_unit.empty()) refuse("--length-unit", "the units of a --path file");
     if (options.test_data.empty() && (options.noise != 0.0 || options.seed)) {
-      refuse(options.noise != 0.0 ? "--noise" : "--seed", "noise on --test-data, which is not given");
+      refuse(options.noise != 0.0 ? "--noise" : "--seed",
+             "noise on --test-data, which is not given");
     }
   }
   if (path) {

@@ -25,14 +25,14 @@ struct CyclicOptions {
   std::optional<int> cycles;           // overrides cyclic.cycles
   std::optional<int> steps_per_cycle;  // overrides cyclic.steps_per_cycle
   std::string csv;                     // loop output; one file per run, suffixed when several
-  std::string test_data;    // the runs as test,time,displacement,force CSV (for isolab fit)
-  double noise = 0.0;       // force noise on test_data, relative to each test's RMS force
-  std::optional<unsigned> seed;  // of that noise (default 1)
-  bool sequential = false;  // a model's runs on one specimen, in order
-  std::vector<std::string> paths;       // --path: displacement paths (CSV) to drive the model along
-  std::string orbit;                    // --orbit: "circle" or "figure8"
-  std::string isolator;                 // --isolator: one isolator of a plan model (default: all)
-  bool uncoupled = false;               // a one-direction model's laws in two directions, uncoupled
+  std::string test_data;           // the runs as test,time,displacement,force CSV (for isolab fit)
+  double noise = 0.0;              // force noise on test_data, relative to each test's RMS force
+  std::optional<unsigned> seed;    // of that noise (default 1)
+  bool sequential = false;         // a model's runs on one specimen, in order
+  std::vector<std::string> paths;  // --path: displacement paths (CSV) to drive the model along
+  std::string orbit;               // --orbit: "circle" or "figure8"
+  std::string isolator;            // --isolator: one isolator of a plan model (default: all)
+  bool uncoupled = false;          // a one-direction model's laws in two directions, uncoupled
   std::string force_unit, length_unit;  // of path files without a "# units:" line
   bool json = false;
   bool quiet = false;  // -q: no component table before the cycles

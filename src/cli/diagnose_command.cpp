@@ -188,13 +188,12 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   WriteText(stem + ".json", json);
   WriteText(stem + ".md", diagnosis::RenderMarkdown(report));
   if (plot) {
-    RunPlotScript(
-        kPlotScript,
-        {context.residual_file, "-o", context.plot_file, "--title",
-         fmt::format("{}: the final residual is {}",
-                     std::filesystem::path(options.data.front()).filename().string(),
-                     diagnosis::VerdictName(result.verdict.kind))},
-        options.quiet || options.json);
+    RunPlotScript(kPlotScript,
+                  {context.residual_file, "-o", context.plot_file, "--title",
+                   fmt::format("{}: the final residual is {}",
+                               std::filesystem::path(options.data.front()).filename().string(),
+                               diagnosis::VerdictName(result.verdict.kind))},
+                  options.quiet || options.json);
   }
 
   if (options.json) {

@@ -28,7 +28,7 @@ struct RunOptions {
   std::string record_h2;  // with `record`, its second horizontal component (buildings in plan)
   std::string record_v;   // with `record`, its vertical component (axial_load: {vertical: true})
   std::optional<double> angle;  // with `record`, degrees from x to H1
-  std::string units;   // the record's acceleration unit; must agree with its header if it has one
+  std::string units;  // the record's acceleration unit; must agree with its header if it has one
   std::optional<double> record_dt;  // the record's sampling step (s), for a single column
   std::optional<double> scale;
   std::optional<double> dt;                             // analysis step (model time unit)

@@ -1,5 +1,6 @@
-// What the commands that run a model share: the results path, and the message and exit code of a run that stopped early. The
-// text and JSON summaries are analysis::PrintSummary's and analysis::RunReport's.
+// What the commands that run a model share: the results path, and the message and exit code of a
+// run that stopped early. The text and JSON summaries are analysis::PrintSummary's and
+// analysis::RunReport's.
 #pragma once
 
 #include <string>

@@ -187,8 +187,7 @@ PhaseSwitch Switch(const BoucWen&, const LawPhase& phase, int, double, double, d
 // contract, so these are never reached.
 template <class Law>
 concept WithoutRateContract = std::is_same_v<Law, DegradingSlider> ||
-                              std::is_same_v<Law, SeriesArrangement> ||
-                              std::is_same_v<Law, PlaySlider>;
+    std::is_same_v<Law, SeriesArrangement> || std::is_same_v<Law, PlaySlider>;
 
 template <class Law>
 [[noreturn]] void NoRateForm() {
@@ -197,16 +196,16 @@ template <class Law>
                              : "the law has no rate form (HasRateForm is false)");
 }
 template <class Law>
-requires WithoutRateContract<Law> RateResponse
-Evaluate(const Law&, const LawPhase&, double, double, double) {
+requires WithoutRateContract<Law> RateResponse Evaluate(const Law&, const LawPhase&, double, double,
+                                                        double) {
   NoRateForm<Law>();
 }
 template <class Law>
 requires WithoutRateContract<Law>
 void Roots(const Law&, const LawPhase&, double, double, double, double*) { NoRateForm<Law>(); }
 template <class Law>
-requires WithoutRateContract<Law> PhaseSwitch
-Switch(const Law&, const LawPhase&, int, double, double, double) {
+requires WithoutRateContract<Law> PhaseSwitch Switch(const Law&, const LawPhase&, int, double,
+                                                     double, double) {
   NoRateForm<Law>();
 }
 

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -67,8 +67,8 @@ std::string FlagName(int flag) {
 
 class IdaRun {
  public:
-  IdaRun(const structure::Structure& structure, const Excitation& excitation, const IdaOptions& options,
-         RunSummary* summary)
+  IdaRun(const structure::Structure& structure, const Excitation& excitation,
+         const IdaOptions& options, RunSummary* summary)
       : system_(structure, excitation), excitation_(excitation), summary_(*summary) {
     SUNContext raw_context = nullptr;
     if (SUNContext_Create(nullptr, &raw_context) != 0) {
@@ -294,9 +294,10 @@ RunSummary Run(const structure::Structure& structure, const Excitation& excitati
   }
   run.CollectStatistics();
   // Undefined (NaN) when the input energy overflowed: a run the caller must not call completed.
-  summary.energy_balance_error = !std::isfinite(max_input) ? std::numeric_limits<double>::quiet_NaN()
-                                 : max_input > 0.0         ? max_balance / max_input
-                                                           : 0.0;
+  summary.energy_balance_error = !std::isfinite(max_input)
+                                     ? std::numeric_limits<double>::quiet_NaN()
+                                 : max_input > 0.0 ? max_balance / max_input
+                                                   : 0.0;
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

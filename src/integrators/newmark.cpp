@@ -174,8 +174,8 @@ class NewmarkRun {
       if (refactor) {
         if (options_.newton == NewmarkOptions::Newton::kModifiedInitial) {
           StartTangent(factors);
-          structure_.Evaluate(rest_, 0.0, zero_, zero_, trial_, responses_, &force_,
-                              member_forces_, factors, &tangent_);
+          structure_.Evaluate(rest_, 0.0, zero_, zero_, trial_, responses_, &force_, member_forces_,
+                              factors, &tangent_);
         }
         ++summary_.factorisations;
         factored_step_ = h;
@@ -258,9 +258,9 @@ class NewmarkRun {
   void StartAxialLoads() {
     scales_.assign(structure_.slots(), 1.0);
     const std::size_t count = axial_.bearings.size();
-    for (std::vector<double>* x : {&axial_load_, &axial_load_trial_, &axial_scale_,
-                                   &axial_scale_trial_, &axial_stored_, &axial_dissipated_,
-                                   &axial_scaled_dissipated_}) {
+    for (std::vector<double>* x :
+         {&axial_load_, &axial_load_trial_, &axial_scale_, &axial_scale_trial_, &axial_stored_,
+          &axial_dissipated_, &axial_scaled_dissipated_}) {
       x->assign(count, 0.0);
     }
     committed_absolute_.setZero(structure_.dofs());
@@ -363,9 +363,10 @@ RunSummary Run(const Structure& structure, const Excitation& excitation, const T
     }
   }
   // Undefined (NaN) when the input energy overflowed: a run the caller must not call completed.
-  summary.energy_balance_error = !std::isfinite(max_input) ? std::numeric_limits<double>::quiet_NaN()
-                                 : max_input > 0.0         ? max_balance / max_input
-                                                           : 0.0;
+  summary.energy_balance_error = !std::isfinite(max_input)
+                                     ? std::numeric_limits<double>::quiet_NaN()
+                                 : max_input > 0.0 ? max_balance / max_input
+                                                   : 0.0;
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

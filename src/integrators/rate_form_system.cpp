@@ -8,8 +8,7 @@ using hysteresis::Vec2;
 using structure::kGround;
 using structure::SlotOf;
 
-RateFormSystem::RateFormSystem(const structure::Structure& structure,
-                               const Excitation& excitation)
+RateFormSystem::RateFormSystem(const structure::Structure& structure, const Excitation& excitation)
     : structure_(structure),
       excitation_(excitation),
       mass_influence_(excitation.MassInfluence(structure.mass())),
@@ -111,8 +110,8 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure,
 }
 
 void RateFormSystem::Deformation(const LawBlock& law, const double* y,
-                                     std::array<double, kMaxRows>* u,
-                                     std::array<double, kMaxRows>* v) const {
+                                 std::array<double, kMaxRows>* u,
+                                 std::array<double, kMaxRows>* v) const {
   for (int i = 0; i < law.rows; ++i) {
     double d = 0.0, rate = 0.0;
     for (int a = 0; a < law.terms; ++a) {
@@ -125,7 +124,7 @@ void RateFormSystem::Deformation(const LawBlock& law, const double* y,
 }
 
 RateFormSystem::BlockResponse RateFormSystem::EvaluateLaw(const LawBlock& law, double t,
-                                                                  const double* y) const {
+                                                          const double* y) const {
   std::array<double, kMaxRows> u{}, v{};
   Deformation(law, y, &u, &v);
   const double* q = y + 2 * dofs_ + law.q0;
@@ -351,7 +350,7 @@ double RateFormSystem::LawStoredEnergy(const LawBlock& law, double t, const doub
 }
 
 ResponseRow RateFormSystem::Record(int step, double t, const double* y,
-                                       const double* energy_integrals) {
+                                   const double* energy_integrals) {
   const Eigen::VectorXd& m = structure_.mass();
   EvaluateLaws(t, y);
   excitation_.EffectiveLoad(t, mass_influence_, &load_);

@@ -156,8 +156,7 @@ StructureSection ReadStructure(const YamlReader& reader, const YAML::Node& node,
     reader.CheckKeys(node, path, {"type", "stories", "base_mass", "damping"});
     section.kind = StructureSection::Kind::kShearBuilding;
     if (node["stories"]) {
-      section.building.stories =
-          ReadStories(reader, node["stories"], "structure.stories", units);
+      section.building.stories = ReadStories(reader, node["stories"], "structure.stories", units);
     }
     if (node["base_mass"]) {
       section.building.base_mass =

@@ -284,8 +284,7 @@ void AddRecord(const YamlReader& reader, const YAML::Node& node, const std::stri
     reader.Fail(node, path,
                 fmt::format("'{}' has the name '{}' of '{}' (record names are file stems, or a "
                             "pair's name, and must be unique)",
-                            record.components[0].file, record.name,
-                            same->components[0].file));
+                            record.components[0].file, record.name, same->components[0].file));
   }
   records->push_back(std::move(record));
 }

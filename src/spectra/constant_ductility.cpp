@@ -82,8 +82,10 @@ DuctilityDemand::DuctilityDemand(const integrators::Excitation& excitation, doub
   grid_.steps = static_cast<int>(std::lround(ground.duration() / grid_.dt));
   grid_.output_every = 1;  // the peak needs every step
   const double k = omega_ * omega_;
-  elastic_deformation_ = PeakOf(structure::BuildSdof(
-      1.0, 2.0 * zeta_ * omega_, hysteresis::SingleLaw(LawType::kLinearSpring, {k})).structure);
+  elastic_deformation_ =
+      PeakOf(structure::BuildSdof(1.0, 2.0 * zeta_ * omega_,
+                                  hysteresis::SingleLaw(LawType::kLinearSpring, {k}))
+                 .structure);
 }
 
 double DuctilityDemand::PeakOf(const structure::Structure& sdof) {

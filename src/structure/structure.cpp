@@ -211,8 +211,7 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
     }
     packed.under_floor = packed.count == 3 && packed.dofs[1] == packed.dofs[0] + 1 &&
                          packed.dofs[2] == packed.dofs[0] + 2 &&
-                         packed.columns[0] == Vec2{1.0, 0.0} &&
-                         packed.columns[1] == Vec2{0.0, 1.0};
+                         packed.columns[0] == Vec2{1.0, 0.0} && packed.columns[1] == Vec2{0.0, 1.0};
     packed.arm = {packed.columns[2].y, -packed.columns[2].x};
     coupled_terms_.push_back(packed);
     coupled_constants_.push_back(member.assembly.ConstantTangent());
@@ -313,10 +312,12 @@ void ScaleResponses(double s, hysteresis::AssemblyResponse* total,
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
 template <bool kScaled>
 [[gnu::flatten]] void Structure::EvaluateMember(std::size_t k, std::span<const LawState> committed,
-                               const hysteresis::LawInput& in, std::span<LawState> trial,
-                               std::span<hysteresis::LawResponse> responses,
-                               std::span<double> member_forces, double damping_factor,
-                               double* values, const double* scales) const {
+                                                const hysteresis::LawInput& in,
+                                                std::span<LawState> trial,
+                                                std::span<hysteresis::LawResponse> responses,
+                                                std::span<double> member_forces,
+                                                double damping_factor, double* values,
+                                                const double* scales) const {
   const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
   hysteresis::AssemblyResponse total =
       members_[k].assembly.Update(committed.subspan(offset, count), in,
@@ -333,12 +334,13 @@ template <bool kScaled>
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
 template <bool kScaled>
 [[gnu::flatten]] void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
-                                const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                                std::span<LawState> trial,
-                                std::span<hysteresis::LawResponse> responses,
-                                Eigen::VectorXd* force, std::span<double> member_forces,
-                                double damping_factor, double* values,
-                                const double* scales) const {
+                                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                                 std::span<LawState> trial,
+                                                 std::span<hysteresis::LawResponse> responses,
+                                                 Eigen::VectorXd* force,
+                                                 std::span<double> member_forces,
+                                                 double damping_factor, double* values,
+                                                 const double* scales) const {
   for (const Between& spring : between_) {
     const std::size_t k = spring.member;
     const bool grounded = spring.dof_i == kGround;
@@ -372,8 +374,8 @@ void Structure::UpdateCoupledComponent(std::size_t coupled, std::size_t componen
     // Its elements' states, as LawState pairs after every component's own.
     const std::size_t at = first + 2 * assembly.ElementStatesOffset(component);
     const std::size_t count = 2 * static_cast<std::size_t>(series->state_slots() - 1);
-    series->UpdateFlat({committed[offset], committed[offset + 1]}, committed.subspan(at, count),
-                       in, {trial[offset], trial[offset + 1]}, trial.subspan(at, count), response);
+    series->UpdateFlat({committed[offset], committed[offset + 1]}, committed.subspan(at, count), in,
+                       {trial[offset], trial[offset + 1]}, trial.subspan(at, count), response);
     return;
   }
   hysteresis::UpdatePlanLaw(kernel, {committed[offset], committed[offset + 1]}, in,
@@ -383,12 +385,13 @@ void Structure::UpdateCoupledComponent(std::size_t coupled, std::size_t componen
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
 template <bool kScaled>
 [[gnu::flatten]] void Structure::EvaluateCoupled(std::span<const LawState> committed, double t,
-                                const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                                std::span<LawState> trial,
-                                std::span<hysteresis::LawResponse> responses,
-                                Eigen::VectorXd* force, std::span<double> member_forces,
-                                double damping_factor, double* values,
-                                const double* scales) const {
+                                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                                 std::span<LawState> trial,
+                                                 std::span<hysteresis::LawResponse> responses,
+                                                 Eigen::VectorXd* force,
+                                                 std::span<double> member_forces,
+                                                 double damping_factor, double* values,
+                                                 const double* scales) const {
   for (std::size_t i = 0; i < coupled_.size(); ++i) {
     const CoupledTerms& terms = coupled_terms_[i];
     hysteresis::PlanLawInput in{{}, {}, t};
@@ -440,8 +443,8 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
                          SparseMatrix* tangent, std::span<const double> scales) const {
   double* values = tangent ? tangent->valuePtr() : nullptr;
   if (scales.empty()) {
-    EvaluateAll<false>(committed, t, u, v, trial, responses, force, member_forces,
-                       factors.damping, values, nullptr);
+    EvaluateAll<false>(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
+                       values, nullptr);
   } else {
     if (scales.size() != slots()) {
       throw std::invalid_argument("Structure::Evaluate: one scale per slot, or none");
@@ -452,12 +455,11 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
 }
 
 template <bool kScaled>
-void Structure::EvaluateAll(std::span<const LawState> committed, double t,
-                            const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                            std::span<LawState> trial,
+void Structure::EvaluateAll(std::span<const LawState> committed, double t, const Eigen::VectorXd& u,
+                            const Eigen::VectorXd& v, std::span<LawState> trial,
                             std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
-                            std::span<double> member_forces, double damping_factor,
-                            double* values, const double* scales) const {
+                            std::span<double> member_forces, double damping_factor, double* values,
+                            const double* scales) const {
   force->noalias() = viscous_damping_ * v;
   EvaluateSprings<kScaled>(committed, t, u, v, trial, responses, force, member_forces,
                            damping_factor, values, scales);

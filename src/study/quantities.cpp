@@ -35,9 +35,9 @@ const QuantityInfo& InfoOf(Quantity quantity) {
 }
 
 std::vector<Quantity> StudyQuantities(bool rotations) {
-  std::vector<Quantity> quantities = {
-      Quantity::kIsolatorDisplacement, Quantity::kBaseShear, Quantity::kStoryDriftRatio,
-      Quantity::kFloorAcceleration, Quantity::kResidualIsolatorDisplacement};
+  std::vector<Quantity> quantities = {Quantity::kIsolatorDisplacement, Quantity::kBaseShear,
+                                      Quantity::kStoryDriftRatio, Quantity::kFloorAcceleration,
+                                      Quantity::kResidualIsolatorDisplacement};
   if (rotations) {
     quantities.push_back(Quantity::kFloorRotation);
     quantities.push_back(Quantity::kTorsionalAmplification);

@@ -32,9 +32,9 @@ StudyShape ShapeOf(const model::StudyFile& study) {
   for (const model::StudyRecord& record : study.records) {
     shape.records.push_back(record.name);
     const auto& c = record.components;
-    shape.record_files.push_back(c.size() > 1 ? fmt::format("{} + {} at {:g} degrees", c[0].file,
-                                                            c[1].file, record.angle)
-                                              : c[0].file);
+    shape.record_files.push_back(
+        c.size() > 1 ? fmt::format("{} + {} at {:g} degrees", c[0].file, c[1].file, record.angle)
+                     : c[0].file);
   }
   shape.quantities = StudyQuantities(study.rotations);
   shape.scales = study.scales;

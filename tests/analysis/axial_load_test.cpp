@@ -91,7 +91,8 @@ std::string Block(const std::string& h1, const std::string& v, const std::string
          "    - {name: ne, position: [4, 2], components: *fp}\n"
          "excitation:\n"
          "  ground_motion:\n"
-         "    h1: {file: " + h1 + ", units: m/s^2}\n" +
+         "    h1: {file: " +
+         h1 + ", units: m/s^2}\n" +
          (v.empty() ? std::string() : "    v: {file: " + v + ", units: m/s^2}\n") +
          "analysis: {dt: 0.005, free_vibration: 0}\n" + axial;
 }
@@ -104,8 +105,7 @@ TEST(AxialLoad, RigidBlockFrictionIsMuNUnderVerticalShaking) {
   const double av = 0.5 * kG, wv = 2.0 * kPi * 2.0;
   const std::string h1 =
       WriteRecord("h1.txt", 6.0, [](double t) { return 3.0 * std::sin(2.0 * kPi * 0.5 * t); });
-  const std::string v =
-      WriteRecord("v.txt", 6.0, [&](double t) { return av * std::sin(wv * t); });
+  const std::string v = WriteRecord("v.txt", 6.0, [&](double t) { return av * std::sin(wv * t); });
   const Solution run = Solved(Block(h1, v, "axial_load: {vertical: true}\n"));
   ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
   EXPECT_LT(run.summary.run.energy_balance_error, 1e-2);
@@ -155,7 +155,9 @@ TEST(AxialLoad, OneDirectionLayerCarriesTheWholeWeight) {
       "  components: [{name: fp, type: friction_pendulum, w: 3000, r: 2, mu: 0.05, uy: 0.0005}]\n"
       "structure: {type: shear_building, base_mass: 400 t}\n"
       "excitation:\n"
-      "  ground_motion: {file: " + h1 + ", units: m/s^2}\n"
+      "  ground_motion: {file: " +
+      h1 +
+      ", units: m/s^2}\n"
       "analysis: {dt: 0.005, free_vibration: 0}\n"
       "axial_load: {}\n");
   ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
@@ -200,8 +202,12 @@ TEST(AxialLoad, OverturningFromStoryForcesByRigidSlabStatics) {
       "    - {name: ne, position: [6, 4], components: *fp}\n"
       "excitation:\n"
       "  ground_motion:\n"
-      "    h1: {file: " + h1 + ", units: m/s^2}\n"
-      "    h2: {file: " + h2 + ", units: m/s^2}\n"
+      "    h1: {file: " +
+      h1 +
+      ", units: m/s^2}\n"
+      "    h2: {file: " +
+      h2 +
+      ", units: m/s^2}\n"
       "analysis: {dt: 0.005, free_vibration: 0}\n"
       "axial_load: {overturning: true, base_height: 0.5}\n");
   ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
@@ -222,8 +228,8 @@ TEST(AxialLoad, OverturningFromStoryForcesByRigidSlabStatics) {
     largest_moment = std::max(largest_moment, std::abs(moment_x));
     double sum = 0.0, sum_x = 0.0, sum_y = 0.0;
     for (int j = 0; j < 4; ++j) {
-      const double hand = weight / 4.0 - x[j] * moment_x / (4.0 * a * a) -
-                          y[j] * moment_y / (4.0 * b * b);
+      const double hand =
+          weight / 4.0 - x[j] * moment_x / (4.0 * a * a) - y[j] * moment_y / (4.0 * b * b);
       largest_error = std::max(largest_error, std::abs(row.axial[j] - hand) / weight);
       sum += row.axial[j];
       sum_x += x[j] * row.axial[j];
@@ -245,8 +251,7 @@ TEST(AxialLoad, UpliftCarriesNoShearAndWarns) {
   const double av = 1.3 * kG, wv = 2.0 * kPi * 1.0;
   const std::string h1 =
       WriteRecord("h1.txt", 4.0, [](double t) { return 3.0 * std::sin(2.0 * kPi * 0.5 * t); });
-  const std::string v =
-      WriteRecord("v.txt", 4.0, [&](double t) { return av * std::sin(wv * t); });
+  const std::string v = WriteRecord("v.txt", 4.0, [&](double t) { return av * std::sin(wv * t); });
   const Solution run = Solved(Block(h1, v, "axial_load: {vertical: true}\n"));
   ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
   const structure::Structure& s = run.problem.structure;
@@ -289,7 +294,9 @@ TEST(AxialLoad, TriplePendulumCapacityUsedAndStops) {
       "0.02, d4: 0.1, uy: 0.0005}]\n"
       "structure: {type: shear_building, base_mass: 400 t}\n"
       "excitation:\n"
-      "  ground_motion: {file: " + h1 + ", units: m/s^2}\n"
+      "  ground_motion: {file: " +
+      h1 +
+      ", units: m/s^2}\n"
       "analysis: {dt: 0.005, free_vibration: 0}\n"
       "axial_load: {}\n");
   ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
@@ -333,21 +340,27 @@ TEST(AxialLoad, Refusals) {
   // IDA.
   refused(Block(h1, v, "axial_load: {vertical: true}\n"), "axial_load");
   // Overturning in one direction.
-  refused("units: {force: kN, length: m, time: s}\n"
-          "isolation:\n"
-          "  components: [{type: friction_pendulum, w: 3000, r: 2, mu: 0.05, uy: 0.0005}]\n"
-          "structure: {type: shear_building, base_mass: 400 t}\n"
-          "excitation: {ground_motion: {file: " + h1 + ", units: m/s^2}}\n"
+  refused(
+      "units: {force: kN, length: m, time: s}\n"
+      "isolation:\n"
+      "  components: [{type: friction_pendulum, w: 3000, r: 2, mu: 0.05, uy: 0.0005}]\n"
+      "structure: {type: shear_building, base_mass: 400 t}\n"
+      "excitation: {ground_motion: {file: " +
+          h1 +
+          ", units: m/s^2}}\n"
           "axial_load: {overturning: true}\n",
-          "axial_load.overturning");
+      "axial_load.overturning");
   // No pendulum to take it.
-  refused("units: {force: kN, length: m, time: s}\n"
-          "isolation:\n"
-          "  components: [{type: bhm2, k0: 20, k1: 2, uy: 0.01}]\n"
-          "structure: {type: shear_building, base_mass: 400 t}\n"
-          "excitation: {ground_motion: {file: " + h1 + ", units: m/s^2}}\n"
+  refused(
+      "units: {force: kN, length: m, time: s}\n"
+      "isolation:\n"
+      "  components: [{type: bhm2, k0: 20, k1: 2, uy: 0.01}]\n"
+      "structure: {type: shear_building, base_mass: 400 t}\n"
+      "excitation: {ground_motion: {file: " +
+          h1 +
+          ", units: m/s^2}}\n"
           "axial_load: {}\n",
-          "no isolator is a friction pendulum");
+      "no isolator is a friction pendulum");
 }
 
 }  // namespace

@@ -85,8 +85,7 @@ class RunOptions : public ::testing::TestWithParam<Kind> {};
 TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
   const Kind& kind = GetParam();
   const fs::path folder = Folder(std::string("run_records_") + kind.name);
-  const std::string run =
-      "run " + kind.model + " --json -q -o " + (folder / "r.h5").string() + " ";
+  const std::string run = "run " + kind.model + " --json -q -o " + (folder / "r.h5").string() + " ";
   const nlohmann::json base = Applied(run);
 
   EXPECT_TRUE(EndsWith(Applied(run + "--record " + kH2)["record"], "h2_fwn_firm_seed3.at2"));
@@ -100,7 +99,7 @@ TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
     ExpectRefused(run + turned, "--angle");
   }
   ExpectRefused(run + "--record-h2 " + kH2, "--record-h2");  // without --record
-  ExpectRefused(run + "--angle 30", "--angle");               // the model's pair has its own
+  ExpectRefused(run + "--angle 30", "--angle");              // the model's pair has its own
   // A vertical component: refused where no friction pendulum takes it (axial_load), and without
   // --record; applied on the plan building on friction pendulums (docs/axial_load.md).
   const std::string kV = kRoot + "/ground_motions/v_fwn_firm_seed4.at2";
@@ -129,8 +128,7 @@ TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
 TEST_P(RunOptions, EachAnalysisOptionIsAppliedOrRefused) {
   const Kind& kind = GetParam();
   const fs::path folder = Folder(std::string("run_analysis_") + kind.name);
-  const std::string run =
-      "run " + kind.model + " --json -q -o " + (folder / "r.h5").string() + " ";
+  const std::string run = "run " + kind.model + " --json -q -o " + (folder / "r.h5").string() + " ";
   const nlohmann::json base = Applied(run);
 
   const nlohmann::json fine = Applied(run + "--dt 0.0025");
@@ -194,9 +192,8 @@ TEST_P(RunOptions, EachOutputOptionIsAppliedOrRefused) {
 TEST_P(RunOptions, PlotIsApplied) {
   const Kind& kind = GetParam();
   const fs::path folder = Folder(std::string("run_plot_") + kind.name);
-  const Outcome outcome = RunIsolab("run " + kind.model + " -q -o " +
-                                    (folder / "r.h5").string() + " --plot=" +
-                                    (folder / "plots").string());
+  const Outcome outcome = RunIsolab("run " + kind.model + " -q -o " + (folder / "r.h5").string() +
+                                    " --plot=" + (folder / "plots").string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
   EXPECT_TRUE(fs::exists(folder / "plots" / "r_histories.png"));
   EXPECT_EQ(fs::exists(folder / "plots" / "r_overview.png"), true);
@@ -239,9 +236,9 @@ TEST_P(CompareOptions, EachOptionIsApplied) {
 
   // --free-vibration 0: the residual is read where the record ends, as `isolab run` reads it.
   ASSERT_EQ(RunIsolab(compare + (folder / "end").string() + " -q --free-vibration 0").exit_code, 0);
-  const nlohmann::json run = Applied("run " + kind.model + " --json -q --scale 0.6 -o " +
-                                     (folder / "r.h5").string() + " --free-vibration 0 --record " +
-                                     kH1 + (kind.plan ? " --record-h2 " + kH2 : ""));
+  const nlohmann::json run =
+      Applied("run " + kind.model + " --json -q --scale 0.6 -o " + (folder / "r.h5").string() +
+              " --free-vibration 0 --record " + kH1 + (kind.plan ? " --record-h2 " + kH2 : ""));
   const std::vector<std::vector<std::string>> rows = CsvRows(folder / "end" / "summary.csv");
   ASSERT_GE(rows.size(), 2u);
   std::size_t residual = 0;
@@ -299,8 +296,7 @@ class CyclicPathOptions : public ::testing::TestWithParam<Kind> {};
 TEST_P(CyclicPathOptions, EachOptionIsAppliedOrRefused) {
   const Kind& kind = GetParam();
   const fs::path folder = Folder(std::string("cyclic_path_") + kind.name);
-  const std::string model =
-      kind.plan ? kind.model : kRoot + "/models/sdof/table7_thm1_hard.yaml";
+  const std::string model = kind.plan ? kind.model : kRoot + "/models/sdof/table7_thm1_hard.yaml";
   const std::string orbit = "cyclic " + model + " --json --orbit circle -a 40 -T 2 ";
 
   const nlohmann::json one = Applied(orbit + "-n 1 --steps-per-cycle 40");
@@ -374,7 +370,7 @@ TEST_P(SpectrumOptions, EachOptionIsAppliedOrRefused) {
   ExpectRefused(spectrum + "--max-steps 100", "--max-steps");
   EXPECT_EQ(Applied(spectrum + "--units g")["record_units"], "g");
   ExpectRefused(spectrum + "--units m/s^2", "--units");
-  ExpectRefused(spectrum + "--dt 0.02", "--dt");  // the AT2 file says 0.01 s
+  ExpectRefused(spectrum + "--dt 0.02", "--dt");       // the AT2 file says 0.01 s
   ExpectRefused(spectrum + "--alpha 0.1", "--alpha");  // without --ductility
 
   if (pair) {

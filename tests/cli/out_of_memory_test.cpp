@@ -40,8 +40,8 @@ TEST(OutOfMemory, ARunBeyondTheMemoryLimitExitsThreeAndWritesNothing) {
   EXPECT_TRUE(fs::exists(fits));
 
   const fs::path output = isolab::testing::OwnTestFile("too_large.h5");
-  const auto run = RunUnder400Mb("run " + kPlanModel +
-                                 " --dt 5e-7 --max-steps 100000000 -o " + output.string());
+  const auto run =
+      RunUnder400Mb("run " + kPlanModel + " --dt 5e-7 --max-steps 100000000 -o " + output.string());
   EXPECT_EQ(run.exit_code, 3) << run.output;
   EXPECT_EQ(run.output.rfind("isolab: out of memory", 0), 0u) << run.output;
   EXPECT_FALSE(fs::exists(output));

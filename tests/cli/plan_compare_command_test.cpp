@@ -243,8 +243,8 @@ TEST(PlanCompareCommand, SingleRecordsAndAFixedBaseRun) {
   ASSERT_GE(rows.size(), 3u);
   EXPECT_EQ(rows[1][3], "completed");
   EXPECT_EQ(rows[2][3], "completed");
-  EXPECT_GT(std::stod(rows[1][4]), 10.0);  // the isolators move
-  EXPECT_TRUE(rows[2][4].empty());          // a fixed base has none
+  EXPECT_GT(std::stod(rows[1][4]), 10.0);                   // the isolators move
+  EXPECT_TRUE(rows[2][4].empty());                          // a fixed base has none
   EXPECT_GT(std::stod(rows[2][5]), std::stod(rows[1][5]));  // and takes more base shear
 }
 

@@ -73,8 +73,7 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
   ASSERT_GT(expected, 100.0);
   ASSERT_EQ(p["isolators"].size(), 4u);
   for (const auto& [name, isolator] : p["isolators"].items()) {
-    EXPECT_NEAR(isolator["displacement"]["value"].get<double>(), expected, 1e-9 * expected)
-        << name;
+    EXPECT_NEAR(isolator["displacement"]["value"].get<double>(), expected, 1e-9 * expected) << name;
   }
   EXPECT_NEAR(p["peaks"]["base_centre_displacement"]["value"].get<double>(), expected,
               1e-9 * expected);
@@ -90,8 +89,7 @@ TEST(PlanRunCommand, SymmetricUncoupledUnderOneComponentGivesTheOneDirectionPeak
         << peak;
   }
   EXPECT_NEAR(p["residual_isolator_displacement"].get<double>(),
-              o["residual_isolator_displacement"].get<double>(),
-              1e-8 * expected);
+              o["residual_isolator_displacement"].get<double>(), 1e-8 * expected);
   EXPECT_NEAR(p["energy_balance_error"].get<double>(), o["energy_balance_error"].get<double>(),
               1e-9);
 }
@@ -149,9 +147,9 @@ TEST(PlanRunCommand, WritesItsLayoutAndTheSummaryAgreesWithIt) {
   // of the centre of mass moves most (ne or se), more than the base's centre of mass.
   const double amplification = summary["torsional_amplification"];
   EXPECT_GT(amplification, 1.01);
-  EXPECT_DOUBLE_EQ(*std::max_element(peaks.begin(), peaks.end()),
-                   amplification *
-                       summary["peaks"]["base_centre_displacement"]["value"].get<double>());
+  EXPECT_DOUBLE_EQ(
+      *std::max_element(peaks.begin(), peaks.end()),
+      amplification * summary["peaks"]["base_centre_displacement"]["value"].get<double>());
   EXPECT_EQ(Doubles(output, "rotation").size(), 6 * time.size());
   EXPECT_EQ(Doubles(output, "displacement").size(), 12 * time.size());
   EXPECT_EQ(Doubles(output, "story/drift").size(), 10 * time.size());

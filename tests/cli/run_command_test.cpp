@@ -16,8 +16,8 @@
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
-#include "reference_data.h"
 #include "own_test_file.h"
+#include "reference_data.h"
 
 namespace {
 
@@ -364,8 +364,8 @@ TEST(RunCommand, DimensionsNoBuildingHasAreWarnedAbout) {
                          << "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
                          << "isolation:\n  components:\n    - {name: fps, type: friction_pendulum, "
                          << bearing << ", uy: 0.5, mu: 0.05}\n"
-                         << "excitation:\n  ground_motion: {file: " << Source("ground_motions/pulse_tp2.at2")
-                         << "}\nanalysis: {dt: 0.01}\n";
+                         << "excitation:\n  ground_motion: {file: "
+                         << Source("ground_motions/pulse_tp2.at2") << "}\nanalysis: {dt: 0.01}\n";
   };
   const auto warnings = [&] {
     const auto json = RunJson("run " + model.string() + " --free-vibration 0 -o " +

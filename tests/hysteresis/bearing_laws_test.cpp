@@ -10,9 +10,9 @@
 #include <numbers>
 #include <vector>
 
+#include "hdr_bearing.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
-#include "hdr_bearing.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/hysteresis/parallel_assembly.h"
 

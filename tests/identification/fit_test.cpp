@@ -28,7 +28,7 @@ Component Law(std::string name, LawType type, std::vector<double> math) {
 }
 
 const std::vector<double> kHdrbAmplitudes(std::begin(testing::kTestAmplitudes),
-                                           std::end(testing::kTestAmplitudes));
+                                          std::end(testing::kTestAmplitudes));
 
 hysteresis::ParallelAssembly Table9() { return testing::Table9ExactAssembly(); }
 
@@ -87,13 +87,12 @@ TEST(Fit, RecoversTheParametersOfAKnownThreeComponentModel) {
   const hysteresis::ParallelAssembly model({Law("a", LawType::kElastoplastic, truth[0]),
                                             Law("b", LawType::kElastoplastic, truth[1]),
                                             Law("c", LawType::kTrilinearElastic, truth[2])});
-  const FitData data = SelectCycles(SyntheticTests(model, {kHdrbAmplitudes, {2.0}, 3, 200, 0.0, 1}),
-                                    {3});
-  const ModelParametrisation parametrisation(
-      {{"a", LawType::kElastoplastic, {}, {}, {}},
-       {"b", LawType::kElastoplastic, {}, {}, {}},
-       {"c", LawType::kTrilinearElastic, {}, {}, {}}},
-      ScalesOf(data));
+  const FitData data =
+      SelectCycles(SyntheticTests(model, {kHdrbAmplitudes, {2.0}, 3, 200, 0.0, 1}), {3});
+  const ModelParametrisation parametrisation({{"a", LawType::kElastoplastic, {}, {}, {}},
+                                              {"b", LawType::kElastoplastic, {}, {}, {}},
+                                              {"c", LawType::kTrilinearElastic, {}, {}, {}}},
+                                             ScalesOf(data));
   FitOptions options;
   options.seed = 7;
   options.budget = 20000;
@@ -107,8 +106,8 @@ TEST(Fit, RecoversTheParametersOfAKnownThreeComponentModel) {
   for (std::size_t c = 0; c < truth.size(); ++c) {
     for (std::size_t p = 0; p < truth[c].size(); ++p) {
       EXPECT_NEAR(result.mathematical[c][p] / truth[c][p], 1.0, 0.02)
-          << "component " << c << " parameter " << p << ": " << result.mathematical[c][p]
-          << " vs " << truth[c][p];
+          << "component " << c << " parameter " << p << ": " << result.mathematical[c][p] << " vs "
+          << truth[c][p];
     }
   }
 }
@@ -139,17 +138,19 @@ TEST(Fit, NineComponentThm1FitsTheHdrbTestsAndSixThm2DoNot) {
   // 0.5 Hz, the third fitted; noise-free.
   const FitData data =
       SelectCycles(SyntheticTests(Table9(), {kHdrbAmplitudes, {2.0}, 3, 200, 0.0, 1}), {3});
-  const auto thm1_specs = Specs({{LawType::kTrilinearElastic, 3}, {LawType::kThm1, 4},
-                                 {LawType::kElastoplastic, 2}});
+  const auto thm1_specs =
+      Specs({{LawType::kTrilinearElastic, 3}, {LawType::kThm1, 4}, {LawType::kElastoplastic, 2}});
   const auto thm2_specs = Specs({{LawType::kThm2, 6}});
   const FitResult thm1 = FitHdrb(data, thm1_specs, 60000);
   const FitResult thm2 = FitHdrb(data, thm2_specs, 60000);
-  const auto thm1_model = ModelParametrisation(thm1_specs, ScalesOf(data)).Assembly(thm1.point, thm1.amplitudes);
-  const auto thm2_model = ModelParametrisation(thm2_specs, ScalesOf(data)).Assembly(thm2.point, thm2.amplitudes);
-  std::printf("HDRB fits: 33-parameter THM1 e^2 = %.3f %% (%ld evaluations, %.1f s); "
-              "30-parameter THM2 e^2 = %.3f %% (%.1f s)\n",
-              100 * thm1.error.total, thm1.evaluations, thm1.seconds, 100 * thm2.error.total,
-              thm2.seconds);
+  const auto thm1_model =
+      ModelParametrisation(thm1_specs, ScalesOf(data)).Assembly(thm1.point, thm1.amplitudes);
+  const auto thm2_model =
+      ModelParametrisation(thm2_specs, ScalesOf(data)).Assembly(thm2.point, thm2.amplitudes);
+  std::printf(
+      "HDRB fits: 33-parameter THM1 e^2 = %.3f %% (%ld evaluations, %.1f s); "
+      "30-parameter THM2 e^2 = %.3f %% (%.1f s)\n",
+      100 * thm1.error.total, thm1.evaluations, thm1.seconds, 100 * thm2.error.total, thm2.seconds);
   // The truth is inside the nine-component class and the data are noise-free: the default budget
   // reaches 0.023 % (on any machine: the island count is fixed), far below THM2's 2.8 %. The
   // search cannot reach zero within the budget (21 shape coordinates, a multimodal landscape),
@@ -161,10 +162,11 @@ TEST(Fit, NineComponentThm1FitsTheHdrbTestsAndSixThm2DoNot) {
   const auto thm2_energy = EnergyPerTest(thm2_model, data);
   for (std::size_t i = 0; i < kHdrbAmplitudes.size(); ++i) {
     const auto [measured, fitted] = thm1_energy[i];
-    std::printf("  u = %5.0f mm: W_d measured %9.1f, THM1 fit %9.1f (%+.1f %%), THM2 fit %9.1f "
-                "(%+.1f %%)\n",
-                kHdrbAmplitudes[i], measured, fitted, 100 * (fitted / measured - 1),
-                thm2_energy[i].second, 100 * (thm2_energy[i].second / measured - 1));
+    std::printf(
+        "  u = %5.0f mm: W_d measured %9.1f, THM1 fit %9.1f (%+.1f %%), THM2 fit %9.1f "
+        "(%+.1f %%)\n",
+        kHdrbAmplitudes[i], measured, fitted, 100 * (fitted / measured - 1), thm2_energy[i].second,
+        100 * (thm2_energy[i].second / measured - 1));
     EXPECT_NEAR(fitted / measured, 1.0, 0.05) << "u = " << kHdrbAmplitudes[i];
   }
   // The paper's finding: THM2's energy per cycle, 4 sum fs_i (u_a - uy_i) past yield, is

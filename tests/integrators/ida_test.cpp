@@ -36,7 +36,8 @@ IdaOptions Tolerance(double rtol) {
 
 structure::Structure CaseB() {
   return structure::BuildSdof(kMass, kDamping,
-                              hysteresis::SingleLaw(LawType::kElastoplastic, {kStiffness, 0.75})).structure;
+                              hysteresis::SingleLaw(LawType::kElastoplastic, {kStiffness, 0.75}))
+      .structure;
 }
 
 TEST(Ida, MatchesTheClosedFormOfALinearSdofToItsTolerance) {

@@ -55,7 +55,8 @@ TEST(ChopraChapter5, CaseALinearAverageAndLinearAcceleration) {
 
 TEST(ChopraChapter5, CaseBElastoplasticNewtonAndModifiedNewton) {
   const auto sdof =
-      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75})).structure;
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75}))
+          .structure;
   NewmarkOptions modified;
   modified.newton = NewmarkOptions::Newton::kModifiedStep;
   RunSummary full_summary, modified_summary;
@@ -87,8 +88,9 @@ TEST(ChopraChapter5, CaseBElastoplasticNewtonAndModifiedNewton) {
 // knee the sharper the larger nu.
 structure::Structure BoucWenSdof(double nu) {
   return structure::BuildSdof(
-      kMass, kDamping,
-      Single(LawType::kBoucWen, {kStiffness, kStiffness / std::pow(7.5, nu), 0.5, 0.5, nu})).structure;
+             kMass, kDamping,
+             Single(LawType::kBoucWen, {kStiffness, kStiffness / std::pow(7.5, nu), 0.5, 0.5, nu}))
+      .structure;
 }
 
 // On the smooth law full Newton converges quadratically, modified Newton on the step's first
@@ -118,7 +120,8 @@ TEST(Newmark, ModifiedNewtonFactorisesOnceAStepAndReachesFullNewtonsResponse) {
 TEST(Newmark, ElastoplasticPeakConvergesToChoprasFineStepValue) {
   // Chopra Ex. 5.5 recomputed with dt = 0.001 s: the converged peak is 2.2338 in at t = 0.690 s.
   const auto sdof =
-      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75})).structure;
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, 0.75}))
+          .structure;
   const auto response = Simulate(sdof, HalfSinePulse(0.001), {0.001, 1000}, NewmarkOptions{});
   Eigen::Index peak = 0;
   response.displacement.col(0).maxCoeff(&peak);
@@ -140,7 +143,8 @@ TEST(Newmark, ConvergesAtSecondOrderOnALinearSdof) {
   const double m = 1.0, k = 4.0 * std::numbers::pi * std::numbers::pi, zeta = 0.05;
   const double big_omega = 2.0 * std::numbers::pi * 0.7, duration = 4.0;
   const auto sdof =
-      structure::BuildSdof(m, 2 * zeta * std::sqrt(k * m), Single(LawType::kLinearSpring, {k})).structure;
+      structure::BuildSdof(m, 2 * zeta * std::sqrt(k * m), Single(LawType::kLinearSpring, {k}))
+          .structure;
   std::vector<double> errors;
   for (const double dt : {0.02, 0.01, 0.005, 0.0025}) {
     const int steps = static_cast<int>(std::round(duration / dt));
@@ -164,7 +168,8 @@ TEST(Newmark, ConvergesAtSecondOrderOnALinearSdof) {
 
 TEST(Newmark, EnergyBalancesForAHystereticSdofUnderAPulse) {
   const auto sdof =
-      structure::BuildSdof(kMass, kDamping, Single(LawType::kThm1, {10.0, 2.0, 4.5, 0.5, 1.5})).structure;
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kThm1, {10.0, 2.0, 4.5, 0.5, 1.5}))
+          .structure;
   RunSummary summary;
   const auto response =
       Simulate(sdof, HalfSinePulse(0.001), {0.001, 3000}, NewmarkOptions{}, &summary);
@@ -190,7 +195,8 @@ TEST(Newmark, AContinuedSlipTakesOneSolvePerStep) {
   const double uy = 0.75, fy = kStiffness * uy, dt = 0.01;
   const int steps = 1000;
   const auto sdof =
-      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, uy})).structure;
+      structure::BuildSdof(kMass, kDamping, Single(LawType::kElastoplastic, {kStiffness, uy}))
+          .structure;
   const Excitation harmonic = SampledForce(
       dt, steps, [](double t) { return 10.0 * std::sin(2.0 * std::numbers::pi * t / 1.3); });
   RunSummary summary;

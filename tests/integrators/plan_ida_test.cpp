@@ -92,8 +92,8 @@ SampledHistory Shaking(double amplitude, double f1, double f2) {
 TEST(RateFormSystem, JacobianIsTheDerivativeOfTheResidualOfABuildingInPlan) {
   const structure::LaidOutStructure laid_out = MixedIsolatorBuilding();
   const structure::Structure& building = laid_out.structure;
-  const Excitation excitation = Excitation::Horizontal(
-      laid_out.layout, Shaking(1500.0, 0.8, 2.1), Shaking(1000.0, 0.65, 1.9));
+  const Excitation excitation = Excitation::Horizontal(laid_out.layout, Shaking(1500.0, 0.8, 2.1),
+                                                       Shaking(1000.0, 0.65, 1.9));
   RateFormSystem system(building, excitation);
   const int n = system.size(), dofs = building.dofs();
   ASSERT_EQ(n, 2 * dofs + 2 + 2 + 2 + 3);  // THM1, BHM2, FPS: a slider each; LRB: and w
@@ -140,9 +140,8 @@ Discrepancy Compare(const structure::Structure& building, const ResponseHistory&
   for (std::size_t i = 0; i < building.coupled_members().size(); ++i) {
     double peak_ida = 0.0, peak_newmark = 0.0;
     for (int row = 0; row < ida.rows_written; ++row) {
-      peak_ida =
-          std::max(peak_ida,
-                   Norm(building.CoupledDeformation(i, {ida.displacement.row(row).data(), dofs})));
+      peak_ida = std::max(
+          peak_ida, Norm(building.CoupledDeformation(i, {ida.displacement.row(row).data(), dofs})));
       peak_newmark = std::max(peak_newmark, Norm(building.CoupledDeformation(
                                                 i, {newmark.displacement.row(row).data(), dofs})));
     }
@@ -179,8 +178,8 @@ Discrepancy Compare(const structure::Structure& building, const ResponseHistory&
 TEST(PlanIda, AgreesWithNewmarkOnAnEccentricBuildingOnMixedIsolators) {
   const structure::LaidOutStructure laid_out = MixedIsolatorBuilding();
   const structure::Structure& building = laid_out.structure;
-  const Excitation excitation = Excitation::Horizontal(
-      laid_out.layout, Shaking(1500.0, 0.8, 2.1), Shaking(1000.0, 0.65, 1.9));
+  const Excitation excitation = Excitation::Horizontal(laid_out.layout, Shaking(1500.0, 0.8, 2.1),
+                                                       Shaking(1000.0, 0.65, 1.9));
   const TimeGrid fine{0.0005, 20000, 20}, coarse{0.001, 10000, 10};  // 10 s, rows every 10 ms
   IdaOptions tight;
   tight.relative_tolerance = 1e-8;

@@ -184,9 +184,9 @@ TEST(PlanNewmark, SymmetricBuildingUnderOneComponentEqualsTheOneDirectionModel) 
     const structure::LaidOutStructure plan =
         structure::BuildPlanBuilding(Building(3, uncoupled, {}, {}));
     ResponseHistory two;
-    ASSERT_TRUE(RunNewmark(plan.structure, Excitation::Horizontal(plan.layout, record), grid, {},
-                           &two)
-                    .ok());
+    ASSERT_TRUE(
+        RunNewmark(plan.structure, Excitation::Horizontal(plan.layout, record), grid, {}, &two)
+            .ok());
     for (int floor = 0; floor < 4; ++floor) {
       const double error =
           (two.displacement.col(3 * floor) - one.displacement.col(floor)).cwiseAbs().maxCoeff();

@@ -128,16 +128,19 @@ TEST(ExactLinearSdof, AgreesWithNewmarkAtAFineStep) {
       io::ReadRecord(std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/fwn_firm_seed1.at2");
   integrators::Excitation excitation = integrators::Excitation::Uniform({});
   excitation.ground[0].acceleration.dt = record.dt;
-  for (const double a : record.values) excitation.ground[0].acceleration.values.push_back(a * 9.80665);
+  for (const double a : record.values)
+    excitation.ground[0].acceleration.values.push_back(a * 9.80665);
   for (const double period : {0.2, 0.5, 1.0, 3.0}) {
     const int substeps = SubstepsPerSample(record.dt, period, 2000);
     const double h = record.dt / substeps;
     const int steps = static_cast<int>(record.values.size() - 1) * substeps;
     for (const double zeta : {0.0, 0.05}) {
       const double omega = 2 * kPi / period;
-      const auto sdof = structure::BuildSdof(
-          1.0, 2 * zeta * omega,
-          hysteresis::SingleLaw(hysteresis::LawType::kLinearSpring, {omega * omega})).structure;
+      const auto sdof =
+          structure::BuildSdof(
+              1.0, 2 * zeta * omega,
+              hysteresis::SingleLaw(hysteresis::LawType::kLinearSpring, {omega * omega}))
+              .structure;
       integrators::ResponseHistory response;
       ASSERT_TRUE(integrators::RunNewmark(sdof, excitation, {h, steps}, {}, &response).ok());
       const auto exact =

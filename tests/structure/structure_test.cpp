@@ -27,10 +27,10 @@ LawParameters Law(LawType type, std::vector<double> mathematical) {
 
 Structure ThreeDofs() {
   std::vector<Member> connections;
-  connections.push_back(Member::Between(
-      "isolator", kGround, 0,
-      ParallelAssembly({{"slider", Law(LawType::kBhm1, {8.0, 1.0, 20.0})},
-                        {"dashpot", Law(LawType::kDashpot, {0.3})}})));
+  connections.push_back(
+      Member::Between("isolator", kGround, 0,
+                      ParallelAssembly({{"slider", Law(LawType::kBhm1, {8.0, 1.0, 20.0})},
+                                        {"dashpot", Law(LawType::kDashpot, {0.3})}})));
   connections.push_back(Member::Between(
       "linear story", 0, 1, ParallelAssembly({{"k", Law(LawType::kLinearSpring, {120.0})}})));
   // kh1 = kh2 with a corner at 5: constant although the law is trilinear in form.
@@ -59,16 +59,16 @@ Structure ThreeDofs() {
   coupled.name = "coupled";
   coupled.dofs = {0, 1, 2, kGround, kGround, kGround};
   coupled.columns = {Vec2{1.0, 0.0}, Vec2{0.0, 1.0}, Vec2{-0.5, 0.8}, Vec2{}, Vec2{}, Vec2{}};
-  coupled.assembly = hysteresis::PlanAssembly(
-      {{"slider", Law(LawType::kBhm2, {20.0, 2.0, 4.0}), std::nullopt},
-       {"dashpot", Law(LawType::kDashpot, {0.2}), std::nullopt}});
+  coupled.assembly =
+      hysteresis::PlanAssembly({{"slider", Law(LawType::kBhm2, {20.0, 2.0, 4.0}), std::nullopt},
+                                {"dashpot", Law(LawType::kDashpot, {0.2}), std::nullopt}});
   // And one on any 2 x 2 map of two dofs (the tangent's general path).
   CoupledMember skew;
   skew.name = "skew";
   skew.dofs = {2, 0, kGround, kGround, kGround, kGround};
   skew.columns = {Vec2{0.6, 0.2}, Vec2{-0.3, 1.0}, Vec2{}, Vec2{}, Vec2{}, Vec2{}};
-  skew.assembly = hysteresis::PlanAssembly(
-      {{"slider", Law(LawType::kBhm2, {15.0, 1.5, 3.0}), std::nullopt}});
+  skew.assembly =
+      hysteresis::PlanAssembly({{"slider", Law(LawType::kBhm2, {15.0, 1.5, 3.0}), std::nullopt}});
   return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(connections), {coupled, skew},
                    damping);
 }

@@ -34,8 +34,8 @@ TEST(TridiagonalPencil, UniformShearBuildingMatchesTheClosedForm) {
     const double tolerance = 16.0 * std::numeric_limits<double>::epsilon() * 4.0 * k / m;
     for (const int j : {1, 2, 3, n / 2 + 1, n}) {
       if (j > n) continue;
-      const double w = 2.0 * std::sqrt(k / m) *
-                       std::sin((2 * j - 1) * std::numbers::pi / (2.0 * (2 * n + 1)));
+      const double w =
+          2.0 * std::sqrt(k / m) * std::sin((2 * j - 1) * std::numbers::pi / (2.0 * (2 * n + 1)));
       EXPECT_NEAR(pencil.Eigenvalue(j), w * w, tolerance) << n << " stories, mode " << j;
       EXPECT_NEAR(std::sqrt(pencil.Eigenvalue(j)) / w, 1.0, 1e-9) << n << " stories, mode " << j;
     }

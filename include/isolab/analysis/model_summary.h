@@ -26,13 +26,13 @@
 
 namespace isolab::analysis {
 
-inline constexpr double kMaxPlausiblePga = 3.0;           // g
-inline constexpr double kMaxPlausiblePeriod = 10.0;       // s
-inline constexpr double kMaxBearingDisplacement = 1.5;    // m
+inline constexpr double kMaxPlausiblePga = 3.0;                    // g
+inline constexpr double kMaxPlausiblePeriod = 10.0;                // s
+inline constexpr double kMaxBearingDisplacement = 1.5;             // m
 inline constexpr double kPlausibleStoryHeight[] = {1.0, 20.0};     // m
 inline constexpr double kPlausibleLevelMass[] = {1.0, 1e5};        // t
 inline constexpr double kPlausiblePendulumRadius[] = {0.1, 50.0};  // m
-inline constexpr double kDefaultTrialDisplacement = 0.1;  // m
+inline constexpr double kDefaultTrialDisplacement = 0.1;           // m
 // Structures of more dofs than this get no modes of the whole structure (a dense eigensolution's
 // cost grows with the cube of its size); a chain of springs in one direction always does.
 inline constexpr int kMaxDenseModalDofs = 1500;
@@ -49,7 +49,7 @@ struct ModelSummary {
   // The superstructure on a fixed base with its initial story stiffnesses, longest first; empty
   // for an SDOF or a slab on isolators.
   std::vector<Mode> fixed_base_modes;
-  bool isolated = false;  // isolators (or an SDOF's restoring force) carry it
+  bool isolated = false;            // isolators (or an SDOF's restoring force) carry it
   double trial_displacement = 0.0;  // (length) D
   // (force/length) F(D)/D of every isolator pushed along x from rest to D, summed.
   double secant_stiffness = 0.0;
@@ -73,14 +73,13 @@ struct ModelSummary {
 // `structure` as it runs (on its isolators, or on a fixed base); `fixed_base` the superstructure
 // on a fixed base, when the run's structure is isolated and has one. `pga` of the scaled record in
 // model units (0 without one); `trial_displacement` in model length units.
-ModelSummary SummariseModel(const structure::Structure& structure,
-                            const structure::Layout& layout,
+ModelSummary SummariseModel(const structure::Structure& structure, const structure::Layout& layout,
                             const structure::LaidOutStructure* fixed_base, const UnitSystem& units,
                             double pga, double trial_displacement);
 
 // The rigid modes at displacement D (ModelSummary::rigid_modes), e.g. at a run's peak.
-std::vector<Mode> RigidModes(const structure::Structure& structure,
-                             const structure::Layout& layout, double displacement);
+std::vector<Mode> RigidModes(const structure::Structure& structure, const structure::Layout& layout,
+                             double displacement);
 
 // F(D)/D of an assembly pushed monotonically from rest to D (force/length), and of a plan
 // assembly pushed along x and along y.

@@ -43,11 +43,11 @@ integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_step
 
 // A record component replacing the model's ground motion.
 struct RecordOverride {
-  std::string name = "--record";   // what gives it, for messages ("--record-h2", "records[2]")
+  std::string name = "--record";     // what gives it, for messages ("--record-h2", "records[2]")
   std::string file{};                // relative to the working directory
   std::optional<io::Record> data{};  // a record in memory (a numpy array), instead of a file
   std::string units{};               // its acceleration unit; empty: from its header
-  double dt = 0.0;                 // its sampling step (model time unit); 0: from the file
+  double dt = 0.0;                   // its sampling step (model time unit); 0: from the file
   double scale = 1.0;
   std::string units_given_by = "--units";  // who gives `units` and `dt`, for messages
   std::string dt_given_by = "--record-dt";
@@ -65,12 +65,12 @@ struct RunOverrides {
   std::string record_units;
   std::optional<double> record_dt;  // (model time unit)
   std::string units_given_by = "--units", dt_given_by = "--record-dt";
-  std::optional<double> scale;  // replaces every component's scale
-  std::optional<double> dt;     // replaces analysis.dt (model time unit)
-  bool fixed_base = false;      // analyse the superstructure without its isolation
-  std::optional<double> trial_displacement;           // model length; default 0.1 m
+  std::optional<double> scale;               // replaces every component's scale
+  std::optional<double> dt;                  // replaces analysis.dt (model time unit)
+  bool fixed_base = false;                   // analyse the superstructure without its isolation
+  std::optional<double> trial_displacement;  // model length; default 0.1 m
   std::optional<model::FreeVibration> free_vibration;  // replaces analysis.free_vibration
-  std::int64_t max_steps = kDefaultMaxSteps;          // the most analysis steps (StepGrid)
+  std::int64_t max_steps = kDefaultMaxSteps;           // the most analysis steps (StepGrid)
 };
 
 struct Problem {

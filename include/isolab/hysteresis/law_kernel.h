@@ -26,9 +26,9 @@
 
 namespace isolab::hysteresis {
 
-using LawKernel = std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen,
-                               DegradingSlider, FrictionPendulum, LeadRubber, PlaySlider,
-                               SeriesArrangement>;
+using LawKernel =
+    std::variant<SeriesSlider, ParallelSlider, ElasticSpring, Dashpot, BoucWen, DegradingSlider,
+                 FrictionPendulum, LeadRubber, PlaySlider, SeriesArrangement>;
 
 // Whether a kernel's state takes more than one LawState.
 template <class Kernel>

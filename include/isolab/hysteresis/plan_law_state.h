@@ -27,10 +27,10 @@ struct PlanLawState {
 };
 
 // A plan state where it lives, for the laws to read (committed) or write (trial) in place: a
-// PlanLawState, or two adjacent LawStates of a structure's state array (structure/structure.h, which
-// would otherwise copy 144 bytes in and out of every component at every evaluation). They are for
-// parameters: a view outliving the state it refers to dangles, and an update's committed and trial
-// never share storage.
+// PlanLawState, or two adjacent LawStates of a structure's state array (structure/structure.h,
+// which would otherwise copy 144 bytes in and out of every component at every evaluation). They are
+// for parameters: a view outliving the state it refers to dangles, and an update's committed and
+// trial never share storage.
 struct PlanLawStateView {
   const LawState& x;
   const LawState& y;

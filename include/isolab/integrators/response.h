@@ -44,7 +44,7 @@ struct ResponseRow {
   std::span<const double> displacement, velocity, acceleration;  // per DOF, relative
   std::span<const double> absolute_acceleration;                 // per DOF
   std::span<const double> connection_force;  // per force column of the structure's members
-  std::span<const double> law_force;                             // per law component
+  std::span<const double> law_force;         // per law component
   Energies energies;
   // Per bearing of the structure's axial loads (structure/axial_load.h), the axial load N its
   // laws were scaled by over the step that reached this row (force); empty without axial loads.

@@ -80,7 +80,7 @@ struct StudyFile {
   std::string description;
   std::string building_path;
   UnitSystem units{"kN", "mm", "s"};  // the building's: summary quantities are in these
-  int directions = 1;    // horizontal directions of the building's structure: 1, or 2 in plan
+  int directions = 1;      // horizontal directions of the building's structure: 1, or 2 in plan
   bool rotations = false;  // its levels rotate (a building in plan)
   std::vector<StudyVariant> variants;
   std::size_t reference = 0;  // index into variants

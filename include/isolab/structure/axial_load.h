@@ -37,9 +37,9 @@ struct Layout;
 class Structure;
 
 struct AxialBearing {
-  std::string name;      // the isolator's
-  std::size_t slot = 0;  // its member in Structure's order: members, then coupled members
-  double weight = 0.0;   // W its laws take (force), > 0: its response scales by N / W
+  std::string name;          // the isolator's
+  std::size_t slot = 0;      // its member in Structure's order: members, then coupled members
+  double weight = 0.0;       // W its laws take (force), > 0: its response scales by N / W
   double static_load = 0.0;  // N_0, its share of the weight at rest (force)
   // (dof, c): N's change per unit absolute acceleration of the dof (mass*length/length: force
   // per acceleration); empty without overturning.
@@ -66,9 +66,9 @@ struct AxialLoads {
 };
 
 struct AxialLoadOptions {
-  double gravity = 0.0;       // g in the model's units (length/time^2), > 0
-  bool overturning = false;   // the story inertial forces' moments (a building in plan only)
-  double base_height = 0.0;   // height of the base level's mass above the bearing plane (length)
+  double gravity = 0.0;      // g in the model's units (length/time^2), > 0
+  bool overturning = false;  // the story inertial forces' moments (a building in plan only)
+  double base_height = 0.0;  // height of the base level's mass above the bearing plane (length)
 };
 
 // The axial loads of a laid-out structure's isolators: `weights` has one entry per isolator (the

@@ -205,8 +205,7 @@ class Structure {
 
   void AddMemberTangent(std::size_t member, double k_eff, double* values) const;
   void AddBetweenTangent(const Between& spring, double k_eff, double* values) const;
-  void AddCoupledTangent(std::size_t coupled, const hysteresis::Mat2& k_eff,
-                         double* values) const;
+  void AddCoupledTangent(std::size_t coupled, const hysteresis::Mat2& k_eff, double* values) const;
   // Evaluate's parts: the springs between two dofs, and the coupled members; kScaled: each slot's
   // response times scales[slot] (a separate instantiation, so an unscaled run pays nothing).
   template <bool kScaled>
@@ -221,15 +220,15 @@ class Structure {
                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                        std::span<hysteresis::LawState> trial,
                        std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
-                       std::span<double> member_forces, double damping_factor,
-                       double* values, const double* scales) const;
+                       std::span<double> member_forces, double damping_factor, double* values,
+                       const double* scales) const;
   template <bool kScaled>
   void EvaluateCoupled(std::span<const hysteresis::LawState> committed, double t,
                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                        std::span<hysteresis::LawState> trial,
                        std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
-                       std::span<double> member_forces, double damping_factor,
-                       double* values, const double* scales) const;
+                       std::span<double> member_forces, double damping_factor, double* values,
+                       const double* scales) const;
   // One component of an assembly with sliders in series, whose elements' states sit after every
   // component's own (plan_assembly.h).
   [[gnu::noinline]] void UpdateCoupledComponent(std::size_t coupled, std::size_t component,
@@ -240,9 +239,8 @@ class Structure {
   template <bool kScaled>
   void EvaluateMember(std::size_t k, std::span<const hysteresis::LawState> committed,
                       const hysteresis::LawInput& in, std::span<hysteresis::LawState> trial,
-                      std::span<hysteresis::LawResponse> responses,
-                      std::span<double> member_forces, double damping_factor,
-                      double* values, const double* scales) const;
+                      std::span<hysteresis::LawResponse> responses, std::span<double> member_forces,
+                      double damping_factor, double* values, const double* scales) const;
 
   Eigen::VectorXd mass_;
   std::vector<Member> members_;
@@ -253,8 +251,8 @@ class Structure {
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
   std::vector<Terms> member_terms_;
-  std::vector<Between> between_;        // the members that are springs between two dofs
-  std::vector<std::size_t> general_;    // the others
+  std::vector<Between> between_;      // the members that are springs between two dofs
+  std::vector<std::size_t> general_;  // the others
   std::vector<CoupledTerms> coupled_terms_;
   // Per member and coupled member: its laws' stiffness and damping if they do not depend on the
   // state.
