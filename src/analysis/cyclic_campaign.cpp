@@ -14,6 +14,7 @@ using hysteresis::CyclicProtocol;
 
 std::vector<CyclicProtocol> CyclicProtocols(const model::ModelFile& model,
                                             const CyclicRequest& request) {
+  model::RefuseAxialLoads(model, "a cyclic test");
   if (model::PlanIsolators(model) != nullptr) {
     throw InputError({model.path},
                      "a building in plan: its isolators are driven along an orbit or a path "

@@ -86,6 +86,7 @@ Paths Orbits(const ReplayRequest& request, const model::ModelFile& model, Option
 
 std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRequest& request,
                                    OptionStyle style) {
+  model::RefuseAxialLoads(model, "a path or an orbit");
   const Paths along = request.paths.empty() ? Orbits(request, model, style)
                                             : ReadPaths(request, model.units, style);
   std::vector<ReplayRun> runs;

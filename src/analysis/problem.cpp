@@ -182,6 +182,11 @@ integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_step
 }
 
 Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
+  if (overrides.fixed_base && model.axial_load) {
+    throw InputError(model.axial_load->location,
+                     "axial_load: the run is on a fixed base (--fixed-base, fixed_base): no "
+                     "bearing carries the weight; leave one of the two out");
+  }
   structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
   // The superstructure on a fixed base, for its periods: the run's own structure, or built once
   // more (an SDOF and a slab on isolators have none).

@@ -138,4 +138,13 @@ const std::vector<structure::PlanIsolatorSite>* PlanIsolators(const ModelFile& m
   return plan ? &model.structure->plan.isolators : nullptr;
 }
 
+void RefuseAxialLoads(const ModelFile& model, const std::string& what) {
+  if (!model.axial_load) return;
+  throw InputError(model.axial_load->location,
+                   fmt::format("axial_load: {} drives the bearings by their laws, each at its own "
+                               "w, not at the axial loads a time-history run gives them (isolab "
+                               "run); leave axial_load out to test the bearings at w",
+                               what));
+}
+
 }  // namespace isolab::model

@@ -95,9 +95,19 @@ Extent ExtentOf(const ModelFile& model) {
 // Checks that need more than one section.
 void CheckConsistency(const YamlReader& reader, const YAML::Node& root, const ModelFile& model) {
   const YAML::Node motion = root["excitation"] ? root["excitation"]["ground_motion"] : YAML::Node();
+  if (model.axial_load && !model.structure) {
+    reader.Fail(root["axial_load"], "axial_load",
+                "needs a structure whose weight the bearings carry (structure or plan); a model "
+                "of the isolation alone (isolab cyclic, fit) has none");
+  }
   if (!model.structure) return;
   const StructureSection& section = *model.structure;
   const YAML::Node structure = root["structure"];
+  if (model.axial_load && section.kind == StructureSection::Kind::kShearBuilding &&
+      model.isolation.size() == 0) {
+    reader.Fail(root["axial_load"], "axial_load",
+                "a building without isolation has no bearings to carry its weight");
+  }
   if (section.kind == StructureSection::Kind::kSdof && model.isolation.size() == 0) {
     reader.Fail(structure, "structure",
                 "an sdof takes its restoring force from isolation.components, which is missing");

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "../own_test_file.h"
+#include "isolab/analysis/cyclic_campaign.h"
+#include "isolab/analysis/model_replay.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
@@ -361,6 +363,78 @@ TEST(AxialLoad, Refusals) {
           ", units: m/s^2}}\n"
           "axial_load: {}\n",
       "no isolator is a friction pendulum");
+}
+
+// Where nothing would take the axial loads, `axial_load` is refused at its own line and column
+// rather than ignored: a model of the isolation alone (a bearing for isolab cyclic or fit), a
+// building without isolation, a run on a fixed base, and cyclic tests, paths and orbits, which
+// drive the bearings' laws at their own w.
+TEST(AxialLoad, RefusedWhereNothingCarriesTheLoad) {
+  const std::string h1 = WriteRecord("h1.txt", 1.0, [](double) { return 1.0; });
+  const std::string path = (isolab::testing::OwnTestDirectory() / "carried.yaml").string();
+  const auto located = [&](const InputError& error, const std::string& what) {
+    EXPECT_NE(std::string(error.what()).find(what), std::string::npos) << error.what();
+    EXPECT_EQ(error.location().file, path);
+    EXPECT_EQ(error.location().line, 5) << error.what();  // axial_load's own line
+    EXPECT_EQ(error.location().column, 13) << error.what();
+  };
+  const auto load = [&](const std::string& text) {
+    std::ofstream(path) << text;
+    return model::LoadModelFile(path);
+  };
+  const std::string units = "units: {force: kN, length: m, time: s}\n";
+  const std::string pendulum =
+      "isolation:\n"
+      "  components: [{type: friction_pendulum, w: 3000, r: 2, mu: 0.05, uy: 0.0005}]\n"
+      "cyclic: {amplitude: 0.1}\n";
+  const std::string motion = "excitation: {ground_motion: {file: " + h1 + ", units: m/s^2}}\n";
+  // The isolation alone.
+  try {
+    load(units + pendulum + "axial_load: {}\n");
+    ADD_FAILURE() << "an isolation alone took axial_load";
+  } catch (const InputError& error) {
+    located(error, "axial_load: needs a structure whose weight the bearings carry");
+  }
+  // A building without isolation.
+  try {
+    load(units +
+         "structure: {type: shear_building, stories: [{mass: 100 t, stiffness: 200000}]}\n" +
+         motion + "\naxial_load: {}\n");
+    ADD_FAILURE() << "a fixed-base building took axial_load";
+  } catch (const InputError& error) {
+    located(error, "axial_load: a building without isolation has no bearings");
+  }
+  // The same isolation under a building: a run on a fixed base, and cyclic tests and orbits.
+  const model::ModelFile model =
+      load(units + pendulum + "axial_load: {}\n" +
+           "structure: {type: shear_building, base_mass: 300 t, stories: [{mass: 100 t, "
+           "stiffness: 200000}]}\n" +
+           motion);
+  RunOverrides fixed;
+  fixed.fixed_base = true;
+  try {
+    Prepare(model, fixed);
+    ADD_FAILURE() << "a fixed-base run took axial_load";
+  } catch (const InputError& error) {
+    located(error, "axial_load: the run is on a fixed base");
+  }
+  try {
+    RunCyclicCampaign(model, {});
+    ADD_FAILURE() << "a cyclic test took axial_load";
+  } catch (const InputError& error) {
+    located(error, "axial_load: a cyclic test drives the bearings by their laws");
+  }
+  ReplayRequest orbit;
+  orbit.orbit = "circle";
+  orbit.amplitudes = {0.1};
+  try {
+    ReplayModel(model, orbit, OptionStyle::kCommandLine);
+    ADD_FAILURE() << "an orbit took axial_load";
+  } catch (const InputError& error) {
+    located(error, "axial_load: a path or an orbit drives the bearings by their laws");
+  }
+  // Without the fixed base the same model runs, its layer carrying the whole weight.
+  EXPECT_EQ(Prepare(model, {}).structure.axial_loads().bearings.size(), 1u);
 }
 
 }  // namespace

@@ -110,7 +110,8 @@ TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
                            (folder / "fp.h5").string() + " ";
     EXPECT_TRUE(EndsWith(Applied("run " + fp + pair + " --record-v " + kV)["v"]["record"],
                          "v_fwn_firm_seed4.at2"));
-    ExpectRefused("run " + fp + pair, "--record-v");  // the model asks for the vertical
+    ExpectRefused("run " + fp + pair, "--record-v");            // the model asks for the vertical
+    ExpectRefused("run " + fp + "--fixed-base", "axial_load");  // no bearing carries the weight
   }
 
   // The AT2 header says g and 0.01 s: the options must agree with it, and are checked.
@@ -289,6 +290,14 @@ TEST(CyclicOptions, TheSinusoidalTestsOptionsOnAOneDirectionModelAreApplied) {
 TEST(CyclicOptions, TheSinusoidalTestOnABuildingInPlanIsRefusedNamingTheOrbit) {
   const std::string cyclic = "cyclic " + kKinds[1].model + " --json ";
   ExpectRefused(cyclic + "-a 40", "--orbit");
+}
+
+// A model whose bearings take axial loads (docs/axial_load.md): its tests, paths and orbits would
+// drive the laws at their own w, so they are refused naming the key.
+TEST(CyclicOptions, AModelWithAxialLoadsIsRefusedNamingTheKey) {
+  const std::string fp = "cyclic " + kRoot + "/models/plan/five_story_fp_plan.yaml --json ";
+  ExpectRefused(fp + "-a 40", "five_story_fp_plan.yaml:39:13: axial_load");
+  ExpectRefused(fp + "--orbit circle -a 40", "five_story_fp_plan.yaml:39:13: axial_load");
 }
 
 class CyclicPathOptions : public ::testing::TestWithParam<Kind> {};

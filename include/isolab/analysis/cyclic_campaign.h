@@ -23,7 +23,8 @@ struct CyclicRequest {
 };
 
 // The protocols, periods outer and amplitudes inner. Throws InputError for a model without an
-// isolation section or an amplitude, and for a protocol out of range.
+// isolation section or an amplitude, with axial_load (model::RefuseAxialLoads), and for a
+// protocol out of range.
 std::vector<hysteresis::CyclicProtocol> CyclicProtocols(const model::ModelFile& model,
                                                         const CyclicRequest& request);
 

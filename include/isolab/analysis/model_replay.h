@@ -41,7 +41,8 @@ struct ReplayRun {
 // path). Throws
 // InputError naming the option at fault (an isolator the model does not have, --isolator on a
 // one-direction model, --uncoupled on a plan one, an orbit without an amplitude, a path file
-// without units) or the model (no isolation, a law without a coupled form).
+// without units) or the model (no isolation, a law without a coupled form, axial_load:
+// model::RefuseAxialLoads).
 std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRequest& request,
                                    OptionStyle style);
 

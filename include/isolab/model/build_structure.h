@@ -3,6 +3,7 @@
 // Everything after it reads the structure and its layout, whatever the kind.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "isolab/model/model_file.h"
@@ -23,5 +24,10 @@ int Directions(const ModelFile& model);
 // A building in plan's isolators, each its own assembly at its own position; nullptr for a model
 // whose isolation is one assembly (an SDOF, a shear building) or that has none.
 const std::vector<structure::PlanIsolatorSite>* PlanIsolators(const ModelFile& model);
+
+// For what drives a model's isolation or isolators by their laws alone (isolab cyclic's tests,
+// paths and orbits, `what`): the laws carry their own w there, so a model whose axial_load would
+// give its bearings other loads is refused (InputError at axial_load) rather than run at w.
+void RefuseAxialLoads(const ModelFile& model, const std::string& what);
 
 }  // namespace isolab::model
