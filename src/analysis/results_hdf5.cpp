@@ -111,6 +111,37 @@ void WritePeaks(io::Hdf5File& file, const RunDescription& run) {
       file.WriteStringsAttribute(fmt::format("peaks/isolators/{}", name), "columns", names);
     }
   }
+  const structure::AxialLoads& axial = problem.structure.axial_loads();
+  if (!axial.empty()) {
+    // Per bearing that takes an axial load, in /isolator/axial_load's column order: the JSON
+    // summary's axial_loads (first_uplift -1: never uplifted).
+    std::vector<std::string> names;
+    std::vector<double> statics, minima, minimum_times;
+    for (std::size_t j = 0; j < axial.bearings.size(); ++j) {
+      names.push_back(axial.bearings[j].name);
+      statics.push_back(axial.bearings[j].static_load);
+      minima.push_back(peaks.axial_load_minima[j].value);
+      minimum_times.push_back(peaks.axial_load_minima[j].time);
+    }
+    const std::string force = DescribeUnits(units, dimension::kForce);
+    const std::string time = DescribeUnits(units, dimension::kTime);
+    struct Column {
+      const char* name;
+      const std::vector<double>& values;
+      const std::string& units;
+    };
+    const Column columns[] = {{"static", statics, force},
+                              {"minimum", minima, force},
+                              {"minimum_time", minimum_times, time},
+                              {"uplift_duration", peaks.uplift_durations, time},
+                              {"first_uplift", peaks.first_uplift_times, time}};
+    file.CreateGroup("peaks/axial_loads");
+    for (const Column& column : columns) {
+      const std::string path = fmt::format("peaks/axial_loads/{}", column.name);
+      file.WriteDoubles(path, {names.size()}, column.values, column.units);
+      file.WriteStringsAttribute(path, "columns", names);
+    }
+  }
   file.CreateGroup("final_energy");
   const std::string energy = fmt::format("{}*{}", units.force(), units.length());
   const auto term = [&](const char* name, double value) {

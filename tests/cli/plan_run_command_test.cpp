@@ -216,5 +216,79 @@ TEST(PlanRunCommand, IdaAgreesWithNewmarkAndReportsItself) {
   EXPECT_TRUE(n.contains("newton"));
 }
 
+// The least axial loads and the uplift under /peaks (docs/axial_load.md): a 400 t block on four
+// friction pendulums under a_v = 1.3 g sin(2 pi t), which lifts it off while sin(2 pi t) <
+// -1 / 1.3. The file holds the JSON summary's values, and they are those of the file's own
+// histories: the least N and its time from /isolator/axial_load, the first time N <= 0; the static
+// share m g / 4, and the uplift's duration (pi - 2 asin(1 / 1.3)) / (2 pi) of each second.
+TEST(PlanRunCommand, WritesTheAxialLoadPeaksTheSummaryPrints) {
+  constexpr double kG = 9.80665, kDt = 0.005, kPi = 3.14159265358979323846;
+  const std::string folder = FreshTestDirectory().string() + "/";
+  const auto record = [&](const std::string& name, double amplitude, double frequency) {
+    std::ofstream out(folder + name);
+    out.precision(17);
+    for (int k = 0; k <= 800; ++k) {
+      out << k * kDt << " " << amplitude * std::sin(2.0 * kPi * frequency * k * kDt) << "\n";
+    }
+  };
+  record("h1.txt", 3.0, 0.5);
+  record("v.txt", 1.3 * kG, 1.0);
+  std::ofstream(folder + "block.yaml")
+      << "units: {force: kN, length: m, time: s}\n"
+         "plan:\n"
+         "  footprint: [[-5, -3], [5, 3]]\n"
+         "  base: {mass: 400 t, centre_of_mass: [0, 0], radius_of_gyration: 3}\n"
+         "  isolators:\n"
+         "    - {name: sw, position: [-4, -2], components: &fp [{name: fp, type: "
+         "friction_pendulum, w: 981, r: 2, mu: 0.05, uy: 0.0005}]}\n"
+         "    - {name: se, position: [4, -2], components: *fp}\n"
+         "    - {name: nw, position: [-4, 2], components: *fp}\n"
+         "    - {name: ne, position: [4, 2], components: *fp}\n"
+         "excitation:\n"
+         "  ground_motion:\n"
+         "    h1: {file: h1.txt, units: m/s^2}\n"
+         "    v: {file: v.txt, units: m/s^2}\n"
+         "analysis: {dt: 0.005, free_vibration: 0}\n"
+         "axial_load: {vertical: true}\n";
+  const std::string output = folder + "block.h5";
+  const Outcome run = RunIsolab("run " + folder + "block.yaml --json -o " + output);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto summary = nlohmann::json::parse(run.output);
+  const std::vector<double> time = Doubles(output, "time");
+  const std::vector<double> axial = Doubles(output, "isolator/axial_load");
+  ASSERT_EQ(axial.size(), 4 * time.size());
+  const std::vector<double> statics = Doubles(output, "peaks/axial_loads/static");
+  const std::vector<double> minima = Doubles(output, "peaks/axial_loads/minimum");
+  const std::vector<double> minimum_times = Doubles(output, "peaks/axial_loads/minimum_time");
+  const std::vector<double> durations = Doubles(output, "peaks/axial_loads/uplift_duration");
+  const std::vector<double> firsts = Doubles(output, "peaks/axial_loads/first_uplift");
+  ASSERT_EQ(statics.size(), 4u);
+  ASSERT_EQ(minima.size(), 4u);
+  ASSERT_EQ(minimum_times.size(), 4u);
+  ASSERT_EQ(durations.size(), 4u);
+  ASSERT_EQ(firsts.size(), 4u);
+  const char* names[] = {"sw", "se", "nw", "ne"};
+  for (std::size_t j = 0; j < 4; ++j) {
+    SCOPED_TRACE(names[j]);
+    const nlohmann::json& printed = summary["axial_loads"][names[j]];
+    EXPECT_EQ(statics[j], printed["static"].get<double>());
+    EXPECT_EQ(minima[j], printed["minimum"]["value"].get<double>());
+    EXPECT_EQ(minimum_times[j], printed["minimum"]["time"].get<double>());
+    EXPECT_EQ(durations[j], printed["uplift_duration"].get<double>());
+    EXPECT_EQ(firsts[j], printed["first_uplift"].get<double>());
+    std::size_t least = 0, first = time.size();
+    for (std::size_t row = 0; row < time.size(); ++row) {
+      if (axial[4 * row + j] < axial[4 * least + j]) least = row;
+      if (axial[4 * row + j] <= 0.0 && first == time.size()) first = row;
+    }
+    EXPECT_EQ(minima[j], axial[4 * least + j]);
+    EXPECT_EQ(minimum_times[j], time[least]);
+    ASSERT_LT(first, time.size());
+    EXPECT_EQ(firsts[j], time[first]);
+    EXPECT_NEAR(statics[j], 400.0 * kG / 4.0, 1e-9);
+    EXPECT_NEAR(durations[j], 4.0 * (kPi - 2.0 * std::asin(1.0 / 1.3)) / (2.0 * kPi), 4 * 2 * kDt);
+  }
+}
+
 }  // namespace
 }  // namespace isolab::testing
