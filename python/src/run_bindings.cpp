@@ -79,6 +79,7 @@ const double* StoredRows(const integrators::ResponseHistory& h, const analysis::
   if (series.name == "acceleration") return whole(h.acceleration);
   if (series.name == "absolute_acceleration") return whole(h.absolute_acceleration);
   if (series.name == "connection_force") return whole(h.connection_force);
+  if (series.name == "isolator/axial_load") return whole(h.axial_load);
   return nullptr;
 }
 

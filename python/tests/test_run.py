@@ -89,6 +89,42 @@ def test_a_plan_run_equals_the_command_line(repo, tmp_path, isolab_cli, pair):
         cli["torsional_amplification"], rel=1e-12)
 
 
+FP_PLAN = "models/plan/five_story_fp_plan.yaml"
+
+
+def test_axial_load_histories_are_the_command_lines(repo, tmp_path, isolab_cli):
+    """A model with axial_load: each bearing's axial load history is the command line's
+    /isolator/axial_load, its least value the file's /peaks/axial_loads and the summary's, and
+    save() writes it; a model without axial_load has none."""
+    h5 = tmp_path / "cli.h5"
+    cli = isolab_cli.json("run", FP_PLAN, "--free-vibration", 2, "-o", h5)
+    result = isolab.run(repo / FP_PLAN, free_vibration=2.0)
+    saved = tmp_path / "saved.h5"
+    result.save(saved)
+    axial = result["isolator/axial_load"]
+    with h5py.File(h5) as f, h5py.File(saved) as g:
+        written = f["isolator/axial_load"]
+        assert axial.shape == written.shape == (f["time"].shape[0], 4)
+        np.testing.assert_array_equal(axial, written[...])
+        np.testing.assert_array_equal(g["isolator/axial_load"][...], written[...])
+        columns = [c.decode() if isinstance(c, bytes) else c for c in written.attrs["columns"]]
+        assert result.columns["isolator/axial_load"] == columns == ["sw", "se", "nw", "ne"]
+        assert result.units["isolator/axial_load"] == written.attrs["units"] == "kN"
+        for key, units in (("static", "kN"), ("minimum", "kN"), ("minimum_time", "s"),
+                           ("uplift_duration", "s"), ("first_uplift", "s")):
+            assert f[f"peaks/axial_loads/{key}"].attrs["units"] == units, key
+        for j, name in enumerate(columns):
+            least = int(np.argmin(axial[:, j]))
+            assert f["peaks/axial_loads/minimum"][j] == axial[least, j]
+            assert f["peaks/axial_loads/minimum_time"][j] == result["time"][least]
+            assert cli["axial_loads"][name]["minimum"]["value"] == axial[least, j]
+            assert f["peaks/axial_loads/first_uplift"][j] == -1.0  # no uplift at this level
+    # The static shares sum to the weight (600 t), and the loads vary about them.
+    assert sum(cli["axial_loads"][n]["static"] for n in columns) == pytest.approx(600 * 9.80665)
+    assert np.ptp(axial, axis=0).min() > 100.0
+    assert "isolator/axial_load" not in isolab.run(repo / PLAN, free_vibration=2.0)
+
+
 def test_a_second_component_or_an_angle_needs_a_record_and_a_building_in_plan(repo):
     with pytest.raises(isolab.InputError, match="h2: needs record"):
         isolab.run(repo / PLAN, h2=repo / H2)

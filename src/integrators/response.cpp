@@ -4,7 +4,7 @@
 
 namespace isolab::integrators {
 
-void ResponseHistory::Resize(int rows, int dofs, int connections, int laws) {
+void ResponseHistory::Resize(int rows, int dofs, int connections, int laws, int bearings) {
   time.assign(rows, 0.0);
   displacement.setZero(rows, dofs);
   velocity.setZero(rows, dofs);
@@ -12,6 +12,7 @@ void ResponseHistory::Resize(int rows, int dofs, int connections, int laws) {
   absolute_acceleration.setZero(rows, dofs);
   connection_force.setZero(rows, connections);
   law_force.setZero(rows, laws);
+  axial_load.setZero(rows, bearings);
   energies.assign(rows, Energies{});
   rows_written = 0;
 }
@@ -22,14 +23,15 @@ ResponseRow ResponseHistory::Row(int row) const {
   };
   return {row * output_every,     time[row],          view(displacement),
           view(velocity),         view(acceleration), view(absolute_acceleration),
-          view(connection_force), view(law_force),    energies[row]};
+          view(connection_force), view(law_force),    energies[row],
+          view(axial_load)};
 }
 
 HistoryRecorder::HistoryRecorder(ResponseHistory* history, const TimeGrid& grid, int dofs,
-                                 int connections, int laws)
+                                 int connections, int laws, int bearings)
     : history_(*history) {
   const int every = std::max(grid.output_every, 1);
-  history_.Resize(grid.steps / every + 1, dofs, connections, laws);
+  history_.Resize(grid.steps / every + 1, dofs, connections, laws, bearings);
   history_.output_every = every;
 }
 
@@ -46,6 +48,7 @@ void HistoryRecorder::Observe(const ResponseRow& row) {
   copy(row.absolute_acceleration, &history_.absolute_acceleration);
   copy(row.connection_force, &history_.connection_force);
   copy(row.law_force, &history_.law_force);
+  if (history_.axial_load.cols() > 0) copy(row.axial_load, &history_.axial_load);
   history_.energies[r] = row.energies;
   history_.rows_written = r + 1;
 }
@@ -54,7 +57,8 @@ HistoryRecorder RecordHistory(const structure::Structure& structure, const TimeG
                               ResponseHistory* response) {
   return HistoryRecorder(response, grid, structure.dofs(),
                          static_cast<int>(structure.force_columns()),
-                         static_cast<int>(structure.law_count()));
+                         static_cast<int>(structure.law_count()),
+                         static_cast<int>(structure.axial_loads().bearings.size()));
 }
 
 }  // namespace isolab::integrators

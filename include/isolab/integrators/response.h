@@ -83,11 +83,12 @@ struct ResponseHistory {
   RowMatrix absolute_acceleration;                 // acceleration + ground acceleration
   RowMatrix connection_force;                      // each member force column
   RowMatrix law_force;                             // each law component's force
+  RowMatrix axial_load;  // each bearing's axial load (ResponseRow::axial_load); none without
   std::vector<Energies> energies;
   int rows_written = 0;  // < time.size() when the run stopped early
   int output_every = 1;  // grid steps between rows
 
-  void Resize(int rows, int dofs, int connections, int laws);
+  void Resize(int rows, int dofs, int connections, int laws, int bearings);
   // Row `row` (< rows_written) as an integrator hands it out, viewing this history's storage.
   ResponseRow Row(int row) const;
 };
@@ -97,7 +98,7 @@ struct ResponseHistory {
 class HistoryRecorder final : public ResponseObserver {
  public:
   HistoryRecorder(ResponseHistory* history, const TimeGrid& grid, int dofs, int connections,
-                  int laws);
+                  int laws, int bearings);
   void Observe(const ResponseRow& row) override;
 
  private:
