@@ -65,6 +65,8 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   peaks_.first_uplift_times.assign(bearings, -1.0);
   peaks_.capacity_used.assign(isolators, {0.0, 0.0, 0.0, 0.0});
   peaks_.first_stop_times.assign(isolators, -1.0);
+  peaks_.regimes_at_peak.assign(isolators, std::nullopt);
+  at_peak_.assign(isolators, 0);
   const structure::Structure& s = problem.structure;
   for (std::size_t i = 0; i < isolators; ++i) {
     const structure::IsolatorLayout& isolator = layout.isolators[i];
@@ -146,7 +148,9 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   const bool before_end = t <= problem_.excitation_end * (1 + 1e-12);
   for (std::size_t i = 0; i < layout.isolators.size(); ++i) {
     const Vec2 u = IsolatorDisplacement(i, row);
+    const double largest = peaks.isolator_displacements[i].value;
     Consider(&peaks.isolator_displacements[i], Magnitude(u), t, static_cast<int>(i));
+    at_peak_[i] = peaks.isolator_displacements[i].value > largest;
     Consider(&peaks.isolator_forces[i], Magnitude(IsolatorForce(i, row)), t, static_cast<int>(i));
     std::vector<Sample>& ring = window_[i];
     ring[(window_start_ + window_size_) % ring.size()] = {t, u.x, u.y};
@@ -209,6 +213,8 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   if (!row.law_states.empty()) {
     for (const TriplePendulum& triple : triples_) {
       std::array<double, 4> used{};
+      std::optional<hysteresis::PendulumRegime>& regime = peaks.regimes_at_peak[triple.isolator];
+      const bool at_peak = at_peak_[triple.isolator] != 0;
       if (triple.plan) {
         std::array<hysteresis::PlanLawState, 4> elements;
         for (std::size_t k = 0; k < 4; ++k) {
@@ -216,9 +222,11 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
                          row.law_states[triple.elements + 2 * k + 1]};
         }
         used = hysteresis::TriplePendulumCapacityUsed(*triple.law, elements);
+        if (at_peak) regime = hysteresis::TriplePendulumRegime(*triple.law, elements);
       } else {
-        used = hysteresis::TriplePendulumCapacityUsed(*triple.law,
-                                                      row.law_states.subspan(triple.elements, 4));
+        const auto elements = row.law_states.subspan(triple.elements, 4);
+        used = hysteresis::TriplePendulumCapacityUsed(*triple.law, elements);
+        if (at_peak) regime = hysteresis::TriplePendulumRegime(*triple.law, elements);
       }
       std::array<double, 4>& largest = peaks.capacity_used[triple.isolator];
       for (std::size_t k = 0; k < 4; ++k) {

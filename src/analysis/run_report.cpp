@@ -109,6 +109,11 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
     json["isolators"][layout.isolators[i].name]["capacity_used"] = used;
     json["isolators"][layout.isolators[i].name]["first_stop"] = peaks.first_stop_times[i];
   }
+  for (std::size_t i = 0; i < peaks.regimes_at_peak.size(); ++i) {
+    if (!peaks.regimes_at_peak[i]) continue;
+    json["isolators"][layout.isolators[i].name]["regime_at_peak"] =
+        std::string(hysteresis::PendulumRegimeName(*peaks.regimes_at_peak[i]));
+  }
   const structure::AxialLoads& axial = problem.structure.axial_loads();
   for (std::size_t j = 0; j < peaks.axial_load_minima.size(); ++j) {
     json["axial_loads"][axial.bearings[j].name] = {

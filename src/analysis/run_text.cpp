@@ -140,6 +140,15 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
     line("peak isolator displacement", peaks.isolator_displacement, length,
          at_isolator(peaks.isolator_displacement));
     line("peak isolator force", peaks.isolator_force, force, at_isolator(peaks.isolator_force));
+    for (std::size_t i = 0; i < peaks.regimes_at_peak.size(); ++i) {
+      if (!peaks.regimes_at_peak[i]) continue;
+      const std::string label = layout.isolators.size() > 1
+                                    ? "triple pendulum regime " + layout.isolators[i].name
+                                    : std::string("triple pendulum regime");
+      fmt::print(out, "{:<34} {:>12} {:<8} at its peak displacement, t = {:.4g} {}\n", label,
+                 hysteresis::PendulumRegimeName(*peaks.regimes_at_peak[i]), "",
+                 peaks.isolator_displacements[i].time, time);
+    }
   }
   line("peak base shear", peaks.base_shear, force);
   if (!layout.stories.empty()) {

@@ -84,6 +84,26 @@ std::array<double, 4> Capacities(const SeriesArrangement& series) {
 
 }  // namespace
 
+std::string_view PendulumRegimeName(PendulumRegime regime) {
+  switch (regime) {
+    case PendulumRegime::kSticking:
+      return "sticking";
+    case PendulumRegime::kI:
+      return "I";
+    case PendulumRegime::kII:
+      return "II";
+    case PendulumRegime::kIII:
+      return "III";
+    case PendulumRegime::kIV:
+      return "IV";
+    case PendulumRegime::kV:
+      return "V";
+    case PendulumRegime::kBeyondV:
+      return "beyond V";
+  }
+  return "unknown";
+}
+
 PendulumRegime TriplePendulumRegime(const SeriesArrangement& series,
                                     std::span<const LawState> elements) {
   RequireTriple(series);

@@ -3,12 +3,14 @@
 // stories) on four friction pendulums under a vertical harmonic a_v sin(w t) and a horizontal
 // harmonic; the overturning of a two-story building against its story forces by hand statics;
 // uplift; and the refusals.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,8 @@
 #include "isolab/analysis/cyclic_campaign.h"
 #include "isolab/analysis/model_replay.h"
 #include "isolab/analysis/problem.h"
+#include "isolab/analysis/run_report.h"
+#include "isolab/analysis/run_text.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/model_file.h"
@@ -435,6 +439,74 @@ TEST(AxialLoad, RefusedWhereNothingCarriesTheLoad) {
   }
   // Without the fixed base the same model runs, its layer carrying the whole weight.
   EXPECT_EQ(Prepare(model, {}).structure.axial_loads().bearings.size(), 1u);
+}
+
+// The regime of a triple pendulum at its peak displacement, against the closed-form backbone of
+// the series model (Fenz & Constantinou 2008, Table 1; docs/bearings.md's bearing: W = 1000 kN,
+// R = 2100, 280, 280, 2100 mm, mu = 0.06, 0.02, 0.02, 0.10, d = 400, 50, 50, 400 mm, u_y =
+// 0.5 mm). A slab of mass W / g on it, undamped, under a constant ground acceleration a_0 from
+// rest, moves one way until its first peak, on first loading: the regime there is the one whose
+// displacement range on the backbone holds the peak. Each regime begins at a force F_k and slides
+// on two surfaces of radii R_a + R_b, so it begins at u_k = F_k / ke + sum over the earlier
+// regimes of (force gained) (R_a + R_b) / W. The a_0 put the peak inside each of I to V
+// (m a_0 D = the backbone's work to D).
+TEST(AxialLoad, TriplePendulumRegimeAtThePeakIsTheBackbones) {
+  constexpr double kW = 1000.0, kKe = 0.02 * kW / 0.5;  // kN; kN/mm
+  const double r1 = 2100.0, r2 = 280.0, r3 = 280.0, r4 = 2100.0;
+  const double from[] = {0.02 * kW, 0.06 * kW, 0.10 * kW, kW * (0.06 + 400.0 / r1),
+                         kW * (0.10 + 400.0 / r4)};
+  const double radii[] = {r2 + r3, r1 + r3, r1 + r4, r2 + r4, r2 + r3};
+  const char* names[] = {"I", "II", "III", "IV", "V"};
+  std::vector<double> starts;  // u_k, mm
+  double sliding = 0.0;
+  for (int k = 0; k < 5; ++k) {
+    if (k > 0) sliding += (from[k] - from[k - 1]) * radii[k - 1] / kW;
+    starts.push_back(from[k] / kKe + sliding);
+  }
+  // V ends when the sliders' displacement reaches the capacity d1 + d2 + d3 + d4 (909.73 mm).
+  const double capacity = 400.0 + 50.0 + 50.0 + 400.0;
+  const double sliding_at_v = starts[4] - from[4] / kKe;
+  const double end_of_v = capacity + (from[4] + (capacity - sliding_at_v) * kW / radii[4]) / kKe;
+  ASSERT_NEAR(end_of_v, 909.73, 0.005);
+  ASSERT_NEAR(starts[1], 23.9, 1e-9);  // docs/bearings.md's boundaries
+  ASSERT_NEAR(starts[4], 852.1, 0.05);
+  const double accelerations[] = {0.029, 0.0593, 0.1199, 0.1649, 0.1761};  // g
+  for (int expected = 0; expected < 5; ++expected) {
+    SCOPED_TRACE(names[expected]);
+    const double a0 = accelerations[expected];
+    const std::string h1 = WriteRecord("step.txt", 6.0, [a0](double) { return a0; });
+    const Solution run = Solved(
+        "units: {force: kN, length: mm, time: s}\n"
+        "isolation:\n"
+        "  components: [{name: tp, type: triple_friction_pendulum, w: 1000, r1: 2100, r2: 280, "
+        "r3: 280, r4: 2100, mu1: 0.06, mu2: 0.02, mu3: 0.02, mu4: 0.10, d1: 400, d2: 50, d3: 50, "
+        "d4: 400, uy: 0.5}]\n"
+        "structure: {type: shear_building, base_mass: 101.97162129779283 t, damping: none}\n"
+        "excitation:\n"
+        "  ground_motion: {file: " +
+        h1 +
+        ", units: g}\n"
+        "analysis: {dt: 0.005, free_vibration: 0}\n");
+    ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
+    const ResponsePeaks& peaks = run.summary.peaks;
+    const double d = peaks.isolator_displacement.value;
+    int regime = 0;
+    while (regime < 4 && d > starts[regime + 1]) ++regime;
+    ASSERT_EQ(regime, expected) << "peak " << d << " mm";
+    // Well inside the regime, not at a boundary a step could move it across.
+    const double upper = regime < 4 ? starts[regime + 1] : end_of_v;
+    EXPECT_GT(std::min(d - starts[regime], upper - d), 5.0) << d;
+    ASSERT_EQ(peaks.regimes_at_peak.size(), 1u);
+    ASSERT_TRUE(peaks.regimes_at_peak[0].has_value());
+    EXPECT_EQ(hysteresis::PendulumRegimeName(*peaks.regimes_at_peak[0]), names[expected]);
+    const nlohmann::json json = RunReport(run.problem, run.problem.model.analysis, run.summary);
+    EXPECT_EQ(json["isolators"].begin().value()["regime_at_peak"], names[expected]);
+    std::ostringstream text;
+    PrintSummary(run.problem, run.problem.model.analysis, run.summary, text);
+    EXPECT_NE(text.str().find(fmt::format("triple pendulum regime {:>24}", names[expected])),
+              std::string::npos)
+        << text.str();
+  }
 }
 
 }  // namespace

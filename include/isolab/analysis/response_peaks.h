@@ -16,9 +16,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "isolab/analysis/problem.h"
+#include "isolab/hysteresis/multiple_pendulum.h"
 #include "isolab/integrators/response.h"
 
 namespace isolab::analysis {
@@ -70,6 +72,11 @@ struct ResponsePeaks {
   // without one, and when a surface first reached its restrainer (|u_i| = d_i; -1: never).
   std::vector<std::array<double, 4>> capacity_used;
   std::vector<double> first_stop_times;
+  // Per isolator: the regime of its triple friction pendulum at the row of the isolator's peak
+  // displacement (multiple_pendulum.h: the regime of the state's last increment, so the one the
+  // peak was reached in), from the laws' states that Newmark's rows carry; empty for an isolator
+  // without one, or where the rows carry no states (IDA).
+  std::vector<std::optional<hysteresis::PendulumRegime>> regimes_at_peak;
   integrators::Energies energies;  // at the last row seen (zero before any)
   int rows = 0;                    // rows seen
 };
@@ -110,6 +117,8 @@ class PeakTracker final : public integrators::ResponseObserver {
     bool plan = false;
   };
   std::vector<TriplePendulum> triples_;
+  // Per isolator, whether the row being observed is its peak displacement so far.
+  std::vector<char> at_peak_;
 };
 
 // The peaks of a history's rows (a PeakTracker fed with them).

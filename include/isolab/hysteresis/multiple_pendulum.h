@@ -45,6 +45,7 @@
 
 #include <array>
 #include <span>
+#include <string_view>
 
 #include "isolab/hysteresis/law_state.h"
 #include "isolab/hysteresis/plan_law_state.h"
@@ -76,6 +77,9 @@ struct TriplePendulum {
 // increment (inside the loop, or below the first friction). kBeyondV: the inner slider is against
 // a restrainer too.
 enum class PendulumRegime { kSticking, kI, kII, kIII, kIV, kV, kBeyondV };
+
+// The regime as docs/bearings.md names it: "sticking", "I" to "V", "beyond V".
+std::string_view PendulumRegimeName(PendulumRegime regime);
 
 // The regime a triple pendulum's state reached over its last increment (at a displacement peak:
 // the regime of the peak), from its series model (TriplePendulum::Series) and its element states
