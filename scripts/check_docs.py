@@ -27,7 +27,8 @@ The command is `isolab ...` or a script under `scripts/` (run with /usr/bin/pyth
 word `isolab` replaced by the binary. The two tables must have the same rows and columns; each
 cell the same text and each number within half a unit of the page's last digit. `columns:`
 (1-based, `2-6` or `1,3`) limits the check to those columns, for a column the command cannot
-reproduce (wall times). Every table with a number in its body must carry a marker: one the checker
+reproduce (wall times); `table: 2` compares with the second table the command prints, for a
+command that prints two (its runs done once). Every table with a number in its body must carry a marker: one the checker
 does not run says why, and the checker prints it:
 
     <!-- table from: scripts/bncs_study.sh | opt-in: needs the BNCS test data in ../shared -->
@@ -135,7 +136,7 @@ def check(page, binary, root):
 
 TABLE_MARKER = re.compile(r"<!--\s*table from:\s*(?P<body>.+?)\s*-->")
 SEPARATOR = re.compile(r"\|?\s*:?-{3,}:?\s*(\|\s*:?-{3,}:?\s*)*\|?")
-KEYS = ("columns", "opt-in", "not checked")
+KEYS = ("columns", "table", "opt-in", "not checked")
 
 
 def cells(line):
@@ -231,21 +232,24 @@ def run_source(source, binary, root, cache):
     return cache[source]
 
 
-def printed_table(stdout):
-    """The header and body rows of the first Markdown table a command prints."""
-    lines = stdout.splitlines()
-    tables = markdown_tables(lines)
-    return [row for _, row in tables[0][1]] if tables else None
+def printed_table(stdout, number):
+    """The header and body rows of the `number`-th (from 1) Markdown table a command prints."""
+    tables = markdown_tables(stdout.splitlines())
+    return [row for _, row in tables[number - 1][1]] if len(tables) >= number else None
 
 
 def check_table(page, marker_line, source, options, rows, binary, root, cache, update):
     """Differences between a page's table and the one its command prints; with `update`, the
     page's lines rewritten to the printed cells (returned as {line index: text})."""
     done = run_source(source, binary, root, cache)
-    printed = printed_table(done.stdout)
+    number = options.get("table", "1")
+    if not number.isdigit() or int(number) < 1:
+        raise SystemExit(f"{page}:{marker_line}: table: {number} (the printed table's number, "
+                         f"from 1)")
+    printed = printed_table(done.stdout, int(number))
     where = f"{page}:{rows[0][0] + 1}"
     if printed is None:
-        return [f"{where}: `{source}` printed no Markdown table (exit {done.returncode}; "
+        return [f"{where}: `{source}` printed no Markdown table number {number} (exit {done.returncode}; "
                 f"stderr: {done.stderr.strip()[-300:]})"], {}
     if len(printed) != len(rows) or any(len(p) != len(r) for p, (_, r) in zip(printed, rows)):
         return [f"{where}: the table has {len(rows) - 1} rows of {len(rows[0][1])} columns, "
@@ -321,7 +325,7 @@ def main():
     print(f"{checked} quoted outputs checked in {len(pages)} pages, {failures} out of date")
     print(f"{tables} tables checked against their commands, {len(problems)} differences"
           f"{' (rewritten: read the diff and the prose)' if args.update and problems else ''}")
-    return 1 if failures or problems or checked == 0 else 0
+    return 1 if failures or problems or checked + tables == 0 else 0
 
 
 if __name__ == "__main__":
