@@ -323,7 +323,7 @@ def main():
         for line in skipped:
             print("  " + line)
     print(f"{checked} quoted outputs checked in {len(pages)} pages, {failures} out of date")
-    print(f"{tables} tables checked against their commands, {len(problems)} differences"
+    print(f"{tables} tables checked against their commands, {len(problems)} out of date or unmarked"
           f"{' (rewritten: read the diff and the prose)' if args.update and problems else ''}")
     return 1 if failures or problems or checked + tables == 0 else 0
 
