@@ -23,15 +23,15 @@ command prints (the first Markdown table of its stdout):
     | variant | isolator [mm] | ...
     |---|---|...
 
-The command is `isolab ...` or a script under `scripts/` (run with /usr/bin/python3 or sh), every
+The command is `isolab ...` or a script under `scripts/` (run with /usr/bin/python3 or bash), every
 word `isolab` replaced by the binary. The two tables must have the same rows and columns; each
 cell the same text and each number within half a unit of the page's last digit. `columns:`
 (1-based, `2-6` or `1,3`) limits the check to those columns, for a column the command cannot
 reproduce (wall times); `table: 2` compares with the second table the command prints, for a
-command that prints two (its runs done once). Every table with a number in its body must carry a marker: one the checker
-does not run says why, and the checker prints it:
+command that prints two (its runs done once). Every table with a number in its body must carry a
+marker: one the checker does not run says why, and the checker prints it:
 
-    <!-- table from: scripts/bncs_study.sh | opt-in: needs the BNCS test data in ../shared -->
+    <!-- table from: scripts/doc_tables/bncs_predictions.py isolab lac100 | opt-in: needs ../shared -->
     <!-- table from: callgrind of ... | not checked: instruction counts of one machine -->
 
 `opt-in:` tables run only with `--opt-in` (slow runs, or data a clone lacks); `not checked:` ones
@@ -212,7 +212,7 @@ def table_markers(page):
     for start, rows in tables.items():
         if start not in marked and has_number(rows):
             errors.append(f"{page}:{start + 1}: a table of numbers without a `table from:` "
-                          f"marker (scripts/check_docs.py says how)")
+                          f"marker (scripts/check_docs.py says how): | {' | '.join(rows[0][1])} |")
     return found, errors
 
 
@@ -221,7 +221,7 @@ def run_source(source, binary, root, cache):
     if source not in cache:
         words = [str(binary) if w == "isolab" else w for w in shlex.split(source)]
         if words[0].startswith("scripts/"):
-            interpreter = "/usr/bin/python3" if words[0].endswith(".py") else "sh"
+            interpreter = "/usr/bin/python3" if words[0].endswith(".py") else "bash"
             words = [interpreter, str(root / words[0]), *words[1:]]
         elif words[0] != str(binary):
             raise SystemExit(f"`{source}`: a table's command starts with isolab or scripts/")
@@ -249,8 +249,8 @@ def check_table(page, marker_line, source, options, rows, binary, root, cache, u
     printed = printed_table(done.stdout, int(number))
     where = f"{page}:{rows[0][0] + 1}"
     if printed is None:
-        return [f"{where}: `{source}` printed no Markdown table number {number} (exit {done.returncode}; "
-                f"stderr: {done.stderr.strip()[-300:]})"], {}
+        return [f"{where}: `{source}` printed no Markdown table number {number} "
+                f"(exit {done.returncode}; stderr: {done.stderr.strip()[-300:]})"], {}
     if len(printed) != len(rows) or any(len(p) != len(r) for p, (_, r) in zip(printed, rows)):
         return [f"{where}: the table has {len(rows) - 1} rows of {len(rows[0][1])} columns, "
                 f"`{source}` prints {len(printed) - 1} of {len(printed[0])}"], {}
