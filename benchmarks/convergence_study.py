@@ -82,6 +82,12 @@ def matched_time(points, target):
     return None, False
 
 
+# Each table says where it comes from (scripts/check_docs.py requires it of a table of numbers).
+MARKER = ("<!-- table from: benchmarks/convergence_study.py | not checked: the script rewrites "
+          "these tables in place (about a minute, needs python3-h5py); wall (ms) is one "
+          "machine's -->")
+
+
 def study(isolab, title, model, extra, unit):
     lines = [f"### {title}", ""]
     reference, ref_summary = run(
@@ -94,7 +100,7 @@ def study(isolab, title, model, extra, unit):
         f"{peak:.6g} {unit}, {ref_summary['ida']['steps']} steps, "
         f"{ref_summary['ida']['events']} phase-change events, energy balance error "
         f"{ref_summary['energy_balance_error']:.1e}.")
-    lines += ["", "| Newmark dt (s) | max error / peak | observed order | RMS error | "
+    lines += ["", MARKER, "| Newmark dt (s) | max error / peak | observed order | RMS error | "
               "Newton iterations | wall (ms) |", "|---|---|---|---|---|---|"]
     newmark_points, previous = [], None
     for dt in STEPS:
@@ -117,7 +123,7 @@ def study(isolab, title, model, extra, unit):
     lines += ["", f"Least-squares order over 0.02-0.0005 s: **{fitted:.2f}**. "
               + (f"Step pairs off 2 by more than 0.3: {', '.join(off)}." if off
                  else "Every step pair is within 0.3 of 2.")]
-    lines += ["", "| IDA rtol | max error / peak | RMS error | IDA steps | events | "
+    lines += ["", MARKER, "| IDA rtol | max error / peak | RMS error | IDA steps | events | "
               "Jacobians | wall (ms) |", "|---|---|---|---|---|---|---|"]
     ida_points = []
     for rtol in TOLERANCES:
@@ -131,7 +137,8 @@ def study(isolab, title, model, extra, unit):
         lines.append(f"| {rtol:g} | {max_error:.2e} | {rms:.2e} | {ida['steps']} | "
                      f"{ida['events']} | {ida['jacobian_evaluations']} | {1e3 * wall:.2f} |")
     lines += ["", "Wall time for equal accuracy (interpolated between the runs above):", "",
-              "| max error / peak | Newmark (ms) | IDA (ms) | IDA / Newmark |", "|---|---|---|---|"]
+              MARKER, "| max error / peak | Newmark (ms) | IDA (ms) | IDA / Newmark |",
+              "|---|---|---|---|"]
     for target in [1e-2, 1e-3, 1e-4, 1e-5]:
         newmark, newmark_bound = matched_time(newmark_points, target)
         ida, ida_bound = matched_time(ida_points, target)

@@ -12,21 +12,24 @@
 # "# specimen: one, in order" header as campaign_<truth>.csv; tests/diagnosis draws them in
 # process with seeds 21 and 22.
 # Usage: scripts/generate_diagnosis_cases.sh [OUTPUT_DIR]   (default build/diagnosis)
+# ISOLAB names the binary (default build/isolab; scripts/doc_tables/diagnosis_cases.py passes the
+# one it checks the docs with).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-build/diagnosis}"
+isolab="${ISOLAB:-build/isolab}"
 mkdir -p "$out"
 seed=11
 for truth in null rate_dependence amplitude_dependent_dissipation large_amplitude_hardening \
              cyclic_degradation two_effects asymmetric_strength backlash; do
-  build/isolab cyclic "models/diagnosis/$truth.yaml" -a 10,25,50,100,150,200 -T 2,0.5 -n 3 \
+  "$isolab" cyclic "models/diagnosis/$truth.yaml" -a 10,25,50,100,150,200 -T 2,0.5 -n 3 \
     --steps-per-cycle 200 --test-data "$out/$truth.csv" --noise 0.01 --seed "$seed" > /dev/null
   echo "$out/$truth.csv"
   seed=$((seed + 1))
 done
 seed=21
 for truth in cyclic_degradation rate_dependence; do
-  build/isolab cyclic "models/diagnosis/$truth.yaml" -a 10,25,50,100,150,200 -T 2,0.5 -n 3 \
+  "$isolab" cyclic "models/diagnosis/$truth.yaml" -a 10,25,50,100,150,200 -T 2,0.5 -n 3 \
     --steps-per-cycle 200 --sequential --test-data "$out/campaign_$truth.csv" --noise 0.01 \
     --seed "$seed" > /dev/null
   echo "$out/campaign_$truth.csv"

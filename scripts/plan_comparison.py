@@ -63,8 +63,9 @@ def main():
             for angle in (0, 90):
                 model = plan_variant(text, centred, angle, folder, "plan.yaml", uncoupled)
                 r = run(isolab, model)
-                largest = max(i["peak_resultant"] for i in r["isolators"].values())
-                print(f"| plan, H1 at {angle} deg, {label} | {r['peak_centre_resultant']:.1f} | "
+                largest = max(i["displacement"]["value"] for i in r["isolators"].values())
+                centre = r["peaks"]["base_centre_displacement"]["value"]
+                print(f"| plan, H1 at {angle} deg, {label} | {centre:.1f} | "
                       f"{largest:.1f} | {r['torsional_amplification']:.3f} |")
 
 
