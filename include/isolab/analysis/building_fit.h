@@ -28,26 +28,11 @@
 #include <vector>
 
 #include "isolab/analysis/building_parameters.h"
-#include "isolab/analysis/shake_table_prediction.h"
+#include "isolab/analysis/building_response.h"
 #include "isolab/identification/unit_cube_search.h"
 #include "isolab/model/model_file.h"
 
 namespace isolab::analysis {
-
-struct BuildingMotion {
-  std::string name;
-  BuildingMeasurements measured;  // model units; levels from the slab to the roof
-};
-
-// A measured channel: level 1 is the isolation slab, the last the roof.
-struct BuildingChannel {
-  enum class Kind { kDisplacement, kAcceleration } kind = Kind::kDisplacement;
-  int level = 1;
-  // "d1" (the slab's displacement relative to the table), "a6" (level 6's absolute acceleration).
-  std::string Name() const;
-};
-// Parses "d1", "a6"; throws InputError (naming `given_by`) otherwise.
-BuildingChannel ParseChannel(const std::string& text, const std::string& given_by);
 
 struct FittedParameterSpec {
   std::string name;              // building_parameters.h
@@ -62,19 +47,6 @@ struct BuildingFitSpec {
   bool sequential = false;  // the motions are one specimen, in the order given
   double pause = 0.0;       // (time) of rest between sequential motions; 0: 5 x longest period
 };
-
-// A model's responses to the motions at the measured channels: per motion, per channel, at the
-// measured samples (the model integrated with the measured step).
-using ChannelHistories = std::vector<std::vector<Signal>>;
-
-// Runs `model` under every motion (one specimen when `sequential`, with `pause` of rest between;
-// 0: 5 x the isolated building's longest period). Throws InputError for a model or motions it
-// cannot run (steps that differ between sequential motions), std::runtime_error for a run that
-// stops early.
-ChannelHistories SimulateChannels(const model::ModelFile& model,
-                                  const std::vector<BuildingMotion>& motions,
-                                  const std::vector<BuildingChannel>& channels, bool sequential,
-                                  double pause);
 
 struct FittedParameter {
   std::string name;
