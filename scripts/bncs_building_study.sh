@@ -10,14 +10,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 data="${1:-../shared/measured/bncs}"
 out=build/bncs_building
-budget="${BUDGET:-4000}"
+budget="${BUDGET:-12000}"
 mkdir -p "$out"
 for motion in ica50 lac100; do zcat "$data/bncs_$motion.csv.gz" > "$out/$motion.csv"; done
 fit() {  # name, data files...
   local name=$1; shift
-  /usr/bin/time -f "%e s wall" -o "$out/fit_$name.time" \
-    build/isolab fit "$@" --building models/bncs/building_spec.yaml --budget "$budget" \
+  local start=$SECONDS
+  build/isolab fit "$@" --building models/bncs/building_spec.yaml --budget "$budget" \
     -o "$out/fit_$name.yaml" -q > "$out/fit_$name.txt"
+  echo "$((SECONDS - start)) s wall" > "$out/fit_$name.time"
 }
 fit ica50 "$out/ica50.csv"
 fit lac100 "$out/lac100.csv"

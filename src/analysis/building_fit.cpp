@@ -102,8 +102,8 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   }
   for (const BuildingChannel& channel : channels) {
     if (std::size_t(channel.level) > levels) {
-      throw InputError({model.path}, fmt::format("channel {}: the model has {} levels",
-                                                 channel.Name(), levels));
+      throw InputError({model.path},
+                       fmt::format("channel {}: the model has {} levels", channel.Name(), levels));
     }
   }
   for (const BuildingMotion& motion : motions) {
@@ -188,8 +188,8 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   BuildingFitResult result;
   const std::vector<Signal> r_start = residuals(base);
   result.objective_start = objective_of(r_start);
-  result.search = identification::SearchUnitCube(objective, int(start.size()), start, options,
-                                                 "mean NRMSE^2");
+  result.search =
+      identification::SearchUnitCube(objective, int(start.size()), start, options, "mean NRMSE^2");
   const std::vector<double>& best = result.search.point;
   result.fitted = model_at(best);
   const std::vector<Signal> r = residuals(result.fitted);
@@ -281,8 +281,7 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   uncertainty.values = values;
   for (const auto& range : coordinates.ranges) uncertainty.log.push_back(range.log);
   uncertainty.covariance = result.covariance;
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
   return result;
 }
 

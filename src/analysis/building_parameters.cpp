@@ -49,8 +49,8 @@ std::size_t Index(const model::ModelFile& model, const std::string& name, const 
 // Where a named property lives in the model.
 struct Target {
   enum class Kind { kIsolation, kStoryStiffness, kDamping, kMass } kind = Kind::kMass;
-  std::size_t index = 0;   // component, story (kAll for every one), mode (kAll) or level
-  std::size_t key = 0;     // isolation: the key's position in ParameterKeys(type, form)
+  std::size_t index = 0;  // component, story (kAll for every one), mode (kAll) or level
+  std::size_t key = 0;    // isolation: the key's position in ParameterKeys(type, form)
   hysteresis::ParameterForm form = hysteresis::ParameterForm::kMathematical;
   static constexpr std::size_t kAll = static_cast<std::size_t>(-1);
 };
@@ -64,8 +64,9 @@ Target Locate(const model::ModelFile& model, const std::string& name) {
     if (found == components.end()) {
       std::string names;
       for (const auto& c : components) names += (names.empty() ? "" : ", ") + c.name;
-      Refuse(model, name, fmt::format("no isolation component '{}' (the model has: {})", part[1],
-                                      names.empty() ? "none" : names));
+      Refuse(model, name,
+             fmt::format("no isolation component '{}' (the model has: {})", part[1],
+                         names.empty() ? "none" : names));
     }
     Target target{Target::Kind::kIsolation, std::size_t(found - components.begin())};
     const hysteresis::LawType type = found->parameters.type();
@@ -79,7 +80,8 @@ Target Locate(const model::ModelFile& model, const std::string& name) {
         return target;
       }
     }
-    Refuse(model, name, fmt::format("{} has no parameter '{}'", hysteresis::LawName(type), part[2]));
+    Refuse(model, name,
+           fmt::format("{} has no parameter '{}'", hysteresis::LawName(type), part[2]));
   }
   if (part[0] == "stories" && part.size() == 2 && part[1] == "stiffness") {
     Building(model, name);
@@ -120,8 +122,10 @@ double StoryStiffness(const model::ModelFile& model, const std::string& name,
   const auto& components = story.assembly.components();
   if (components.size() != 1 ||
       components[0].parameters.type() != hysteresis::LawType::kLinearSpring) {
-    Refuse(model, name, fmt::format("{} is not linear (stiffness: ...): only a linear story's "
-                                    "stiffness is fitted", story.name));
+    Refuse(model, name,
+           fmt::format("{} is not linear (stiffness: ...): only a linear story's "
+                       "stiffness is fitted",
+                       story.name));
   }
   return components[0].parameters.Values(hysteresis::ParameterForm::kMathematical)[0];
 }

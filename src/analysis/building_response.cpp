@@ -97,8 +97,8 @@ BuildingChannel ParseChannel(const std::string& text, const std::string& given_b
                                              "acceleration), level 1 the isolation slab",
                                              text));
   }
-  channel.kind = text[0] == 'd' ? BuildingChannel::Kind::kDisplacement
-                                : BuildingChannel::Kind::kAcceleration;
+  channel.kind =
+      text[0] == 'd' ? BuildingChannel::Kind::kDisplacement : BuildingChannel::Kind::kAcceleration;
   channel.level = level;
   return channel;
 }
@@ -144,7 +144,8 @@ ChannelHistories SimulateChannels(const model::ModelFile& model,
     std::vector<Signal>& signals = out.emplace_back();
     const std::size_t n = motions[m].measured.time.size();
     for (const Signal& history : run) {
-      signals.emplace_back(history.begin() + long(starts[m]), history.begin() + long(starts[m] + n));
+      signals.emplace_back(history.begin() + long(starts[m]),
+                           history.begin() + long(starts[m] + n));
     }
   }
   return out;

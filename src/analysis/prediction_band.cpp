@@ -37,8 +37,8 @@ void Band(const std::vector<Signal>& runs, Signal* low, Signal* high) {
 
 }  // namespace
 
-PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion,
-                           int samples, unsigned seed) {
+PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion, int samples,
+                           unsigned seed) {
   if (!model.uncertainty) {
     throw InputError({model.path},
                      "the model carries no uncertainty: section (a model written by isolab fit "
@@ -53,7 +53,8 @@ PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& 
       eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   Eigen::VectorXd centre(n);
   for (long p = 0; p < n; ++p) {
-    centre[p] = u.log[std::size_t(p)] ? std::log(u.values[std::size_t(p)]) : u.values[std::size_t(p)];
+    centre[p] =
+        u.log[std::size_t(p)] ? std::log(u.values[std::size_t(p)]) : u.values[std::size_t(p)];
   }
   // The names must be the model's: checked before any draw, so a wrong name is an error, not a
   // band of refused sets.
@@ -93,8 +94,9 @@ PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& 
   }
   band.samples = int(isolator.size());
   if (band.samples < 2) {
-    throw InputError({model.path}, "fewer than two of the drawn parameter sets make a building "
-                                   "that runs: the uncertainty is too wide to draw a band");
+    throw InputError({model.path},
+                     "fewer than two of the drawn parameter sets make a building "
+                     "that runs: the uncertainty is too wide to draw a band");
   }
   Band(isolator, &band.isolator_p5, &band.isolator_p95);
   Band(roof, &band.roof_p5, &band.roof_p95);

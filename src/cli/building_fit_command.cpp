@@ -73,10 +73,12 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     ShakeTableOptions read;
     read.data = data;
     read.model = file.model;
+    if (!options.offsets.empty()) read.offsets = options.offsets;
     Measured measured = ReadMeasured(read, model.units, levels);
     if (!options.quiet) {
-      fmt::print(stderr, "isolab fit --building: {}: {} samples, levels (slab to roof) = "
-                         "channels {}; {}\n",
+      fmt::print(stderr,
+                 "isolab fit --building: {}: {} samples, levels (slab to roof) = "
+                 "channels {}; {}\n",
                  data, measured.time.size(), fmt::join(measured.channels, ","),
                  measured.reference_note);
     }
@@ -98,9 +100,8 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   }
   const analysis::BuildingFitResult result = analysis::FitBuilding(model, motions, spec, fit);
   const std::string text = model::FittedBuildingText(
-      result.fitted,
-      fmt::format("identified by isolab fit --building {} from {}", options.building,
-                  fmt::join(options.data, ", ")));
+      result.fitted, fmt::format("identified by isolab fit --building {} from {}", options.building,
+                                 fmt::join(options.data, ", ")));
   io::WriteTextFileAtomically(output, [&](std::ostream& o) { o << text; });
 
   if (options.json) {
@@ -131,8 +132,8 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     json["effective_samples"] = result.effective_samples;
     json["correlation_time"] = result.correlation_time;
     json["evaluations"] = result.search.evaluations;
-    json["stop"] = result.search.stop == identification::FitStop::kConverged ? "converged"
-                                                                             : "budget";
+    json["stop"] =
+        result.search.stop == identification::FitStop::kConverged ? "converged" : "budget";
     json["stop_reason"] = result.search.stop_reason;
     json["seconds"] = result.seconds;
     json["sequential"] = spec.sequential;
@@ -151,14 +152,12 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   }
   fmt::print(out, "\n| motion | channel | NRMSE start | NRMSE fitted |\n|---|---|---|---|\n");
   for (const analysis::ChannelFit& c : result.channels) {
-    fmt::print(out, "| {} | {} | {:.3f} | {:.3f} |\n", c.motion, c.channel, c.nrmse_start,
-               c.nrmse);
+    fmt::print(out, "| {} | {} | {:.3f} | {:.3f} |\n", c.motion, c.channel, c.nrmse_start, c.nrmse);
   }
   fmt::print(out,
              "\nThe residual is correlated over {:.3g} {}: its {:.0f} samples are worth {:.0f} "
              "independent ones, and the intervals count them so.\n",
-             result.correlation_time, model.units.time(), result.samples,
-             result.effective_samples);
+             result.correlation_time, model.units.time(), result.samples, result.effective_samples);
   for (const analysis::CorrelatedParameters& pair : result.not_separated) {
     fmt::print(out,
                "not separately identified: {} and {} (correlation {:.3f}): the data fix a "

@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "finite_options.h"
 #include "building_fit_command.h"
+#include "finite_options.h"
 #include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
@@ -106,8 +106,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
       ->check(CLI::ExistingFile);
   CLI::Option* model =
       command
-          ->add_option("--model", options.spec,
-                       "Specification: component types and counts (YAML)")
+          ->add_option("--model", options.spec, "Specification: component types and counts (YAML)")
           ->check(CLI::ExistingFile);
   command
       ->add_option("--building", options.building,
@@ -115,6 +114,11 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                    "identify from shake-table motions by output error")
       ->check(CLI::ExistingFile)
       ->excludes(model);
+  command
+      ->add_option("--offsets", options.offsets,
+                   "With --building: accelerometer offsets, pre-event (each channel less its mean "
+                   "before the table moves; default) or none, as isolab shaketable takes them")
+      ->check(CLI::IsMember({"pre-event", "none"}));
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the fit exactly");
   command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
       ->check(Between(100, 1e9));
@@ -140,8 +144,9 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
 void RunFitCommand(const FitOptions& options, std::ostream& out) {
   if (!options.building.empty()) return RunBuildingFitCommand(options, out);
   if (options.spec.empty()) {
-    throw InputError({"command line"}, "give --model (cyclic tests) or --building (shake-table "
-                                       "motions)");
+    throw InputError({"command line"},
+                     "give --model (cyclic tests) or --building (shake-table "
+                     "motions)");
   }
   const model::FitSpec spec = model::LoadFitSpec(options.spec);
   const std::string output =

@@ -13,8 +13,8 @@
 #include <sstream>
 
 #include "building_measurement.h"
-#include "isolab/analysis/results_file.h"
 #include "isolab/analysis/prediction_band.h"
+#include "isolab/analysis/results_file.h"
 #include "isolab/analysis/shake_table_prediction.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
@@ -170,8 +170,8 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
                    m.displacement.front()[k], predicted_u[k], shear[k], predicted_shear[k],
                    m.acceleration.back()[k], predicted_roof[k]);
         if (band) {
-          fmt::print(o, ",{:.6g},{:.6g},{:.6g},{:.6g}", band->isolator_p5[k],
-                     band->isolator_p95[k], band->roof_p5[k], band->roof_p95[k]);
+          fmt::print(o, ",{:.6g},{:.6g},{:.6g},{:.6g}", band->isolator_p5[k], band->isolator_p95[k],
+                     band->roof_p5[k], band->roof_p95[k]);
         }
         fmt::print(o, "\n");
       }
@@ -236,10 +236,11 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
       const auto row = [&](const char* what, const analysis::Percentiles& p) {
         fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} |\n", what, p.p5, p.p50, p.p95);
       };
-      fmt::print(out,
-                 "\n{} parameter sets drawn from the model's uncertainty ({} left out: beyond a "
-                 "law's rules), seed {}:\n\n| quantity | 5 % | median | 95 % |\n|---|---|---|---|\n",
-                 band->samples, band->refused, options.seed);
+      fmt::print(
+          out,
+          "\n{} parameter sets drawn from the model's uncertainty ({} left out: beyond a "
+          "law's rules), seed {}:\n\n| quantity | 5 % | median | 95 % |\n|---|---|---|---|\n",
+          band->samples, band->refused, options.seed);
       row("peak isolator displacement", band->peak_isolator_displacement);
       row("peak roof absolute acceleration", band->peak_roof_acceleration);
       row("NRMSE isolator displacement", band->nrmse_isolator_displacement);

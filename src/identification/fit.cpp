@@ -1,6 +1,5 @@
 #include "isolab/identification/fit.h"
 
-
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <chrono>

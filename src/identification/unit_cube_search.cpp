@@ -210,7 +210,8 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
             "converged after {} evaluations: over the last {} the best {} ({:.6g} %) improved "
             "by less than {:g} relative and the step size is {:.2g} (below {:g}) in the unit "
             "cube of search coordinates",
-            evaluations, window, objective_name, 100 * best, options.stop_e2, step, options.stop_step);
+            evaluations, window, objective_name, 100 * best, options.stop_e2, step,
+            options.stop_step);
         break;
       }
     }

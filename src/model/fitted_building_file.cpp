@@ -62,7 +62,8 @@ std::string FittedBuildingText(const ModelFile& fitted, const std::string& note)
   if (fitted.structure && fitted.structure->kind == StructureSection::Kind::kShearBuilding) {
     const structure::ShearBuilding& building = fitted.structure->building;
     YAML::Node structure = root["structure"];
-    if (fitted.isolation.size() > 0) structure["base_mass"] = Tonnes(building.base_mass, fitted.units);
+    if (fitted.isolation.size() > 0)
+      structure["base_mass"] = Tonnes(building.base_mass, fitted.units);
     bool linear = true;
     YAML::Node stories;
     for (const structure::Story& story : building.stories) {

@@ -35,17 +35,17 @@
 namespace isolab::analysis {
 
 struct FittedParameterSpec {
-  std::string name;              // building_parameters.h
+  std::string name;                     // building_parameters.h
   std::optional<double> low{}, high{};  // the range searched; default DefaultRange
   std::optional<double> start{};        // default the model's value
 };
 
 struct BuildingFitSpec {
   std::vector<FittedParameterSpec> parameters;
-  std::vector<BuildingChannel> channels;  // empty: every level's displacement and acceleration
+  std::vector<BuildingChannel> channels;      // empty: every level's displacement and acceleration
   std::optional<double> band_low, band_high;  // (1/time) the band the residual is read in
-  bool sequential = false;  // the motions are one specimen, in the order given
-  double pause = 0.0;       // (time) of rest between sequential motions; 0: 5 x longest period
+  bool sequential = false;                    // the motions are one specimen, in the order given
+  double pause = 0.0;  // (time) of rest between sequential motions; 0: 5 x longest period
 };
 
 struct FittedParameter {
@@ -72,8 +72,8 @@ struct BuildingFitResult {
   // model::FittedBuildingText).
   model::ModelFile fitted;
   std::vector<FittedParameter> parameters;
-  Eigen::MatrixXd covariance;   // of the coordinates (ln p, or p)
-  Eigen::MatrixXd correlation;  // its unit-diagonal form
+  Eigen::MatrixXd covariance;                       // of the coordinates (ln p, or p)
+  Eigen::MatrixXd correlation;                      // its unit-diagonal form
   std::vector<CorrelatedParameters> not_separated;  // |correlation| >= 0.95, strongest first
   std::vector<ChannelFit> channels;
   double objective_start = 0.0, objective = 0.0;  // mean NRMSE^2 over channels

@@ -27,7 +27,7 @@ struct PredictionBand {
 
 // Draws `samples` parameter sets (>= 2) with `seed` and runs each (one motion, from rest). Throws
 // InputError when the model carries no uncertainty or names a parameter it lacks.
-PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion,
-                           int samples, unsigned seed);
+PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion, int samples,
+                           unsigned seed);
 
 }  // namespace isolab::analysis
