@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "building_fit_command.h"
 #include "finite_options.h"
 #include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
@@ -97,12 +98,27 @@ std::vector<std::string> WriteFittedModel(const std::string& path, const model::
 void RegisterFitCommand(CLI::App& app, FitOptions& options) {
   CLI::App* command = app.add_subcommand(
       "fit", "Identify an isolator model's parameters from cyclic tests (CMA-ES)");
-  command->add_option("data", options.data, "CSV test data: test,time,displacement,force")
+  command
+      ->add_option("data", options.data,
+                   "CSV test data: test,time,displacement,force (with --building: shake-table "
+                   "CSV files, one per motion)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--model", options.spec, "Specification: component types and counts (YAML)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  CLI::Option* model =
+      command
+          ->add_option("--model", options.spec, "Specification: component types and counts (YAML)")
+          ->check(CLI::ExistingFile);
+  command
+      ->add_option("--building", options.building,
+                   "Building fit specification (YAML): a building model and the parameters to "
+                   "identify from shake-table motions by output error")
+      ->check(CLI::ExistingFile)
+      ->excludes(model);
+  command
+      ->add_option("--offsets", options.offsets,
+                   "With --building: accelerometer offsets, pre-event (each channel less its mean "
+                   "before the table moves; default) or none, as isolab shaketable takes them")
+      ->check(CLI::IsMember({"pre-event", "none"}));
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the fit exactly");
   command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
       ->check(Between(100, 1e9));
@@ -126,6 +142,12 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
 }
 
 void RunFitCommand(const FitOptions& options, std::ostream& out) {
+  if (!options.building.empty()) return RunBuildingFitCommand(options, out);
+  if (options.spec.empty()) {
+    throw InputError({"command line"},
+                     "give --model (cyclic tests) or --building (shake-table "
+                     "motions)");
+  }
   const model::FitSpec spec = model::LoadFitSpec(options.spec);
   const std::string output =
       !options.output.empty()

@@ -18,6 +18,8 @@ namespace isolab::cli {
 struct FitOptions {
   std::vector<std::string> data;  // CSV files of cyclic tests
   std::string spec;               // --model: component types and counts (YAML)
+  std::string building;           // --building: a building fit's specification (YAML)
+  std::string offsets;            // --building: accelerometer offsets; empty: pre-event
   unsigned seed = 1;
   long budget = 60000;
   std::vector<int> cycles;  // 1-based; empty: SelectCycles' default

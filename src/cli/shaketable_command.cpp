@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "building_measurement.h"
+#include "isolab/analysis/prediction_band.h"
 #include "isolab/analysis/results_file.h"
 #include "isolab/analysis/shake_table_prediction.h"
 #include "isolab/core/errors.h"
@@ -60,6 +61,12 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
                       "Write the table acceleration as a record CSV (for isolab run --record)");
   command->add_flag("--predict", options.predict,
                     "Run the model under the measured table acceleration and compare");
+  command
+      ->add_option("--samples", options.samples,
+                   "With --predict: parameter sets drawn from the fitted model's uncertainty "
+                   "(isolab fit --building) for a 5-95 % band on the prediction")
+      ->check(CLI::Range(2, 100000));
+  command->add_option("--seed", options.seed, "Seed of the drawn parameter sets (--samples)");
   command->add_option("--results", options.results, "HDF5 results of the prediction");
   command->add_option("--comparison", options.comparison,
                       "CSV of measured and predicted histories (for the overlay plot)");
@@ -69,6 +76,9 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
 
 void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   const model::ModelFile model = model::LoadModelFile(options.model);
+  if (options.samples > 0 && !options.predict) {
+    throw InputError({"command line"}, "--samples draws a band on the prediction: give --predict");
+  }
   const std::string results_path =
       !options.predict ? std::string()
       : !options.results.empty()
@@ -123,6 +133,14 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     if (!options.quiet) fmt::print(stderr, "  predicting under the measured table motion\n");
     prediction = analysis::PredictShakeTable(model, m, solve);
   }
+  std::optional<analysis::PredictionBand> band;
+  if (options.samples > 0) {
+    if (!options.quiet) {
+      fmt::print(stderr, "  {} parameter sets drawn from the model's uncertainty\n",
+                 options.samples);
+    }
+    band = analysis::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
+  }
   const Series& predicted_u = prediction ? prediction->isolator_displacement : Series{};
   const Series& predicted_shear = prediction ? prediction->base_shear : Series{};
   const Series& predicted_roof = prediction ? prediction->roof_acceleration : Series{};
@@ -143,11 +161,19 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
       fmt::print(o,
                  "time_s,isolator_displacement_measured,isolator_displacement_predicted,"
                  "base_shear_measured,base_shear_predicted,roof_acceleration_measured,"
-                 "roof_acceleration_predicted\n");
+                 "roof_acceleration_predicted{}\n",
+                 band ? ",isolator_displacement_p5,isolator_displacement_p95,"
+                        "roof_acceleration_p5,roof_acceleration_p95"
+                      : "");
       for (std::size_t k = 0; k < m.time.size(); ++k) {
-        fmt::print(o, "{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", m.time[k],
+        fmt::print(o, "{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", m.time[k],
                    m.displacement.front()[k], predicted_u[k], shear[k], predicted_shear[k],
                    m.acceleration.back()[k], predicted_roof[k]);
+        if (band) {
+          fmt::print(o, ",{:.6g},{:.6g},{:.6g},{:.6g}", band->isolator_p5[k], band->isolator_p95[k],
+                     band->roof_p5[k], band->roof_p95[k]);
+        }
+        fmt::print(o, "\n");
       }
     });
   }
@@ -167,6 +193,18 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
                                     {"unit", row.unit},
                                     {"measured", row.measured},
                                     {"predicted", row.predicted}});
+    }
+    if (band) {
+      const auto spread = [](const analysis::Percentiles& p) {
+        return nlohmann::json{{"p5", p.p5}, {"p50", p.p50}, {"p95", p.p95}};
+      };
+      json["band"] = {{"samples", band->samples},
+                      {"refused", band->refused},
+                      {"seed", options.seed},
+                      {"peak_isolator_displacement", spread(band->peak_isolator_displacement)},
+                      {"peak_roof_acceleration", spread(band->peak_roof_acceleration)},
+                      {"nrmse_isolator_displacement", spread(band->nrmse_isolator_displacement)},
+                      {"nrmse_roof_acceleration", spread(band->nrmse_roof_acceleration)}};
     }
     if (options.predict) {
       json["nrmse"] = {{"isolator_displacement", nrmse_u}, {"roof_acceleration", nrmse_roof}};
@@ -194,6 +232,20 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     }
     fmt::print(out, "| NRMSE isolator displacement | | {:.3f} | |\n", nrmse_u);
     fmt::print(out, "| NRMSE roof absolute acceleration | | {:.3f} | |\n", nrmse_roof);
+    if (band) {
+      const auto row = [&](const char* what, const analysis::Percentiles& p) {
+        fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} |\n", what, p.p5, p.p50, p.p95);
+      };
+      fmt::print(
+          out,
+          "\n{} parameter sets drawn from the model's uncertainty ({} left out: beyond a "
+          "law's rules), seed {}:\n\n| quantity | 5 % | median | 95 % |\n|---|---|---|---|\n",
+          band->samples, band->refused, options.seed);
+      row("peak isolator displacement", band->peak_isolator_displacement);
+      row("peak roof absolute acceleration", band->peak_roof_acceleration);
+      row("NRMSE isolator displacement", band->nrmse_isolator_displacement);
+      row("NRMSE roof absolute acceleration", band->nrmse_roof_acceleration);
+    }
     fmt::print(out, "\nresults: {}\n", results_path);
   }
 }

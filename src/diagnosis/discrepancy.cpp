@@ -7,7 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "spectral.h"
+#include "isolab/diagnosis/spectral.h"
 
 namespace isolab::diagnosis {
 namespace {

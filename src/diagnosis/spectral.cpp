@@ -1,4 +1,4 @@
-#include "spectral.h"
+#include "isolab/diagnosis/spectral.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,19 +1,11 @@
 #include "isolab/identification/fit.h"
 
-#include <fmt/format.h>
-
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <memory>
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/cmaes.hpp>
-#include <pagmo/algorithms/compass_search.hpp>
-#include <pagmo/population.hpp>
-#include <pagmo/problem.hpp>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "isolab/core/errors.h"
 #include "parallel_for.h"
@@ -164,58 +156,6 @@ AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<c
 
 namespace {
 
-// The pagmo user-defined problem: e^2 on the unit cube. Holds only immutable shared data, so
-// copies in parallel islands evaluate independently.
-struct FitProblem {
-  std::shared_ptr<const ModelParametrisation> model;
-  std::shared_ptr<const FitData> data;
-  int threads = 1;  // sharing each evaluation's laws (Basis)
-
-  pagmo::vector_double fitness(const pagmo::vector_double& x) const {
-    const double e2 = SolveAmplitudes(*model, x, *data, threads).error;
-    return {std::isfinite(e2) ? e2 : kNotFinite};
-  }
-  std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
-    return {pagmo::vector_double(model->dimension(), 0.0),
-            pagmo::vector_double(model->dimension(), 1.0)};
-  }
-  pagmo::thread_safety get_thread_safety() const { return pagmo::thread_safety::constant; }
-  std::string get_name() const { return "isolab cyclic-test fit"; }
-
-  static constexpr double kNotFinite = 1e300;
-};
-
-constexpr int kGenerationsPerChunk = 20;
-constexpr double kSettledE2 = 1e-12;
-
-unsigned IslandSeed(unsigned seed, int island, int restart) {
-  return seed * 2654435761u + 7919u * static_cast<unsigned>(island) +
-         104729u * static_cast<unsigned>(restart);
-}
-
-pagmo::algorithm Cmaes(unsigned seed) {
-  // sigma0 0.3 of the unit cube; tolerances tight enough for parameter recovery; memory keeps
-  // the adapted covariance between chunks; bounds enforced by clipping.
-  return pagmo::algorithm{
-      pagmo::cmaes(kGenerationsPerChunk, -1, -1, -1, -1, 0.3, 1e-14, 1e-10, true, true, seed)};
-}
-
-// The spread of a population in the unit cube: the largest standard deviation of a coordinate.
-// CMA-ES's population spreads about its mean by its step size, so this is the step size in
-// coordinates a reader can compare with the cube.
-double Spread(const pagmo::population& population) {
-  const auto& xs = population.get_x();
-  if (xs.size() < 2) return 0.0;
-  double spread = 0.0;
-  for (std::size_t d = 0; d < xs.front().size(); ++d) {
-    double sum = 0.0, square = 0.0;
-    for (const auto& x : xs) sum += x[d], square += x[d] * x[d];
-    const double n = static_cast<double>(xs.size());
-    spread = std::max(spread, std::sqrt(std::max(square / n - (sum / n) * (sum / n), 0.0)));
-  }
-  return spread;
-}
-
 // Columns of laws that the fit runs through the data at every evaluation, a measure of its cost.
 long LawRuns(const ModelParametrisation& model) {
   long runs = 0;
@@ -237,33 +177,6 @@ long LawRuns(const ModelParametrisation& model) {
 
 }  // namespace
 
-void FitOptions::Validate() const {
-  if (budget < 100) throw InvalidParameter({"budget", double(budget), "must be >= 100"});
-  if (islands < 1 || islands > 64) {
-    throw InvalidParameter({"islands", double(islands), "must be in [1, 64]"});
-  }
-  if (threads < 0 || threads > 1024) {
-    throw InvalidParameter({"threads", double(threads),
-                            "must be 0 (every hardware thread) or "
-                            "in [1, 1024]"});
-  }
-  if (!(polish_share >= 0.0 && polish_share < 1.0)) {
-    throw InvalidParameter({"polish_share", polish_share, "must be in [0, 1)"});
-  }
-  if (stop_window < 0) {
-    throw InvalidParameter({"stop_window", double(stop_window), "must be >= 0 evaluations"});
-  }
-  if (!(stop_window_share >= 0.0 && stop_window_share <= 1.0)) {
-    throw InvalidParameter({"stop_window_share", stop_window_share, "must be in [0, 1]"});
-  }
-  if (!(stop_e2 >= 0.0 && stop_e2 < 1.0)) {
-    throw InvalidParameter({"stop_e2", stop_e2, "must be in [0, 1)"});
-  }
-  if (!(stop_step >= 0.0 && stop_step <= 1.0)) {
-    throw InvalidParameter({"stop_step", stop_step, "must be in [0, 1]"});
-  }
-}
-
 long FittedSamples(const FitData& data) {
   long samples = 0;
   for (const auto& spans : data.fitted) {
@@ -275,192 +188,45 @@ long FittedSamples(const FitData& data) {
 FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitOptions& options) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
-  const int dimension = model.dimension();
   const int threads = ThreadCount(options.threads);
-  const auto finish = [&](FitResult result, const pagmo::vector_double& x) {
-    const AmplitudeSolution solution = SolveAmplitudes(model, x, data, threads);
-    if (!solution.amplitudes.allFinite() || !std::isfinite(solution.error)) {
-      throw std::invalid_argument(
-          "no parameters give a finite e^2 on these data: their sums of squares overflow or are "
-          "not numbers (forces and displacements must be below about 1e150 in magnitude)");
-    }
-    result.point = x;
-    result.amplitudes = solution.amplitudes;
-    result.mathematical = model.Mathematical(x, result.amplitudes);
-    result.error = ComputeFitError(model.Assembly(x, result.amplitudes), data);
-    result.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
-  };
-  if (dimension == 0) {  // only linear amplitudes (springs, dashpots): one solve is the fit
-    FitResult result;
-    result.evaluations = 1;
-    result.stop = FitStop::kConverged;
-    result.stop_reason = "the model has no shape coordinates: one linear solve is the fit";
-    return finish(std::move(result), {});
-  }
-  const int islands = options.islands;
   // Threads beyond one per island share each evaluation; below some work per evaluation the
   // threads would cost more to start than they save.
   const bool large = FittedSamples(data) * std::max(1L, LawRuns(model)) >= 200000;
-  const int evaluation_threads = large ? std::max(1, threads / islands) : 1;
-  // Population of CMA-ES's default 4 + 3 ln D, doubled for the multimodal landscapes of
-  // parallel hysteretic components.
-  const int population_size = 2 * (4 + static_cast<int>(3.0 * std::log(dimension)));
-  const pagmo::problem problem{FitProblem{std::make_shared<const ModelParametrisation>(model),
-                                          std::make_shared<const FitData>(data),
-                                          evaluation_threads}};
-
-  const long cmaes_budget = static_cast<long>(options.budget * (1.0 - options.polish_share));
-  // Per island: its algorithm and population, IPOP restarts (a fresh random population, twice
-  // as large, when the island has stagnated), and the best point it has found across restarts.
-  struct Island {
-    pagmo::algorithm algorithm;
-    pagmo::population population;
-    int restarts = 0;
-    int population_size = 0;
-    int chunks_without_progress = 0;
-    double best_f = INFINITY;
-    pagmo::vector_double best_x;
-    double best_step = 1.0;  // the population's spread when it found best_x
-  };
-  std::vector<Island> archipelago;
-  for (int i = 0; i < islands; ++i) {
-    pagmo::population population{problem,
-                                 static_cast<pagmo::population::size_type>(population_size),
-                                 IslandSeed(options.seed, i, 1000)};
-    if (i == 0) population.set_x(0, model.StartPoint());  // the given (or middle) start
-    Island island{Cmaes(IslandSeed(options.seed, i, 0)),
-                  std::move(population),
-                  0,
-                  population_size,
-                  0,
-                  INFINITY,
-                  {},
-                  1.0};
-    archipelago.push_back(std::move(island));
-  }
-  long retired = 0;  // evaluations of populations replaced at restarts
-  const auto evaluations_so_far = [&] {
-    long sum = retired;
-    for (const Island& island : archipelago) {
-      sum += static_cast<long>(island.population.get_problem().get_fevals());
-    }
-    return sum;
-  };
-  const auto chunk_cost = [&] {
-    long cost = 0;
-    for (const Island& island : archipelago) cost += island.population_size * kGenerationsPerChunk;
-    return cost;
-  };
-  // The best e^2 after each chunk, for the convergence stop's window.
-  std::vector<std::pair<long, double>> history;
+  const int evaluation_threads = large ? std::max(1, threads / options.islands) : 1;
   FitResult result;
-  int generation = 0;
-  while (evaluations_so_far() + chunk_cost() <= cmaes_budget) {
-    // Islands share nothing, so running them on any number of threads gives the same result.
-    ParallelFor(archipelago.size(), std::min(threads, islands), [&](std::size_t i) {
-      archipelago[i].population = archipelago[i].algorithm.evolve(archipelago[i].population);
-    });
-    generation += kGenerationsPerChunk;
-    for (int i = 0; i < islands; ++i) {
-      Island& island = archipelago[static_cast<std::size_t>(i)];
-      const double f = island.population.champion_f()[0];
-      if (f < island.best_f * (1.0 - 1e-6)) {
-        island.best_f = f;
-        island.best_x = island.population.champion_x();
-        island.best_step = Spread(island.population);
-        island.chunks_without_progress = 0;
-      } else if (++island.chunks_without_progress >= 5) {
-        // Stagnated for 100 generations: restart from new random points with a larger
-        // population (IPOP-CMA-ES), which explores more widely each time.
-        ++island.restarts;
-        island.population_size = std::min(2 * island.population_size, 16 * population_size);
-        island.chunks_without_progress = 0;
-        retired += static_cast<long>(island.population.get_problem().get_fevals());
-        if (f < island.best_f) {
-          island.best_f = f;
-          island.best_x = island.population.champion_x();
-          island.best_step = Spread(island.population);
-        }
-        island.algorithm = Cmaes(IslandSeed(options.seed, i, island.restarts));
-        island.population = pagmo::population{
-            problem, static_cast<pagmo::population::size_type>(island.population_size),
-            IslandSeed(options.seed, i, 1000 + island.restarts)};
-      }
-    }
-    const auto leader =
-        std::min_element(archipelago.begin(), archipelago.end(),
-                         [](const Island& a, const Island& b) { return a.best_f < b.best_f; });
-    const double best = leader->best_f;
-    const long evaluations = evaluations_so_far();
-    history.emplace_back(evaluations, best);
-    if (options.progress) options.progress({evaluations, generation, best, false});
-    const long window = std::max(
-        options.stop_window, static_cast<long>(options.stop_window_share * double(evaluations)));
-    if (options.stop_window > 0 && evaluations - history.front().first >= window) {
-      // The best as it stood a window ago (the latest record at least a window back).
-      double then = history.front().second;
-      for (const auto& [at, value] : history) {
-        if (evaluations - at >= window) then = value;
-      }
-      const double step = leader->best_step;
-      // An e^2 at the round-off of the normal equations (1e-12: an RMS error of 1e-6 of the
-      // force) counts as settled however its last digits move.
-      if (then - best <= options.stop_e2 * then + kSettledE2 && step <= options.stop_step) {
-        result.stop = FitStop::kConverged;
-        result.stop_reason = fmt::format(
-            "converged after {} evaluations: over the last {} the best e^2 ({:.6g} %) improved "
-            "by less than {:g} relative and the step size is {:.2g} (below {:g}) in the unit "
-            "cube of shape coordinates",
-            evaluations, window, 100 * best, options.stop_e2, step, options.stop_step);
-        break;
-      }
-    }
+  int generations = 0;
+  std::vector<double> best = model.StartPoint();
+  if (model.dimension() == 0) {  // only linear amplitudes (springs, dashpots): one solve is the fit
+    result.evaluations = 1;
+    result.stop = FitStop::kConverged;
+    result.stop_reason = "the model has no shape coordinates: one linear solve is the fit";
+  } else {
+    const SearchOutcome outcome = SearchUnitCube(
+        [&](std::span<const double> x) {
+          return SolveAmplitudes(model, x, data, evaluation_threads).error;
+        },
+        model.dimension(), best, options, "e^2");
+    best = outcome.point;
+    result.evaluations = outcome.evaluations;
+    result.restarts = outcome.restarts;
+    generations = outcome.generations;
+    result.stop = outcome.stop;
+    result.stop_reason = outcome.stop_reason;
   }
-
-  // The best point over islands and restarts, then a compass-search polish from it.
-  pagmo::vector_double best_x = model.StartPoint();
-  double best_f = INFINITY;
-  for (const Island& island : archipelago) {
-    if (island.population.champion_f()[0] < best_f) {
-      best_f = island.population.champion_f()[0];
-      best_x = island.population.champion_x();
-    }
-    if (island.best_f < best_f) {
-      best_f = island.best_f;
-      best_x = island.best_x;
-    }
+  const AmplitudeSolution solution = SolveAmplitudes(model, best, data, threads);
+  if (!solution.amplitudes.allFinite() || !std::isfinite(solution.error)) {
+    throw std::invalid_argument(
+        "no parameters give a finite e^2 on these data: their sums of squares overflow or are "
+        "not numbers (forces and displacements must be below about 1e150 in magnitude)");
   }
-  long evaluations = evaluations_so_far();
-  // The polish gets what CMA-ES left of the budget, or, after the convergence stop, its own
-  // share. Compass search may overrun its count by one poll of the 2 D points around the current
-  // one, and the population it starts from costs one more: both are left out of what it is given,
-  // so the evaluations never exceed the budget.
-  const long remaining = options.budget - evaluations;
-  const long polish_budget =
-      (result.stop == FitStop::kConverged ? std::min(remaining, options.budget - cmaes_budget)
-                                          : remaining) -
-      2 * dimension - 1;
-  if (polish_budget > 2 * dimension) {
-    pagmo::population single{problem, 0u, options.seed};
-    single.push_back(best_x);
-    pagmo::algorithm compass{
-        pagmo::compass_search(static_cast<unsigned>(polish_budget), 0.02, 1e-9, 0.5)};
-    if (options.progress) options.progress({evaluations, generation, single.champion_f()[0], true});
-    single = compass.evolve(single);
-    evaluations += static_cast<long>(single.get_problem().get_fevals());
-    // Compass search keeps its best point: never worse than where it started.
-    if (single.champion_f()[0] <= best_f) best_x = single.champion_x();
+  result.point = best;
+  result.amplitudes = solution.amplitudes;
+  result.mathematical = model.Mathematical(best, result.amplitudes);
+  result.error = ComputeFitError(model.Assembly(best, result.amplitudes), data);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.progress && model.dimension() > 0) {
+    options.progress({result.evaluations, generations, result.error.total, true});
   }
-  if (result.stop != FitStop::kConverged) {
-    result.stop = FitStop::kBudget;
-    result.stop_reason = fmt::format("the budget of {} evaluations was spent", options.budget);
-  }
-  result.evaluations = evaluations;
-  for (const Island& island : archipelago) result.restarts += island.restarts;
-  result = finish(std::move(result), best_x);
-  if (options.progress) options.progress({evaluations, generation, result.error.total, true});
   return result;
 }
 

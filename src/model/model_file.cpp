@@ -207,6 +207,57 @@ AxialLoadSection ReadAxialLoad(const YamlReader& reader, const YAML::Node& node,
   return section;
 }
 
+// uncertainty: {parameters: [{name, value, log}], covariance: [[...]]}, the covariance square,
+// symmetric, with a non-negative diagonal.
+ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node& node) {
+  const std::string path = "uncertainty";
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"parameters", "covariance"});
+  ParameterUncertainty uncertainty;
+  const YAML::Node parameters = reader.Require(node, path, "parameters");
+  reader.RequireSequence(parameters, path + ".parameters");
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const std::string at = IndexPath(path + ".parameters", i);
+    reader.RequireMap(parameters[i], at);
+    reader.CheckKeys(parameters[i], at, {"name", "value", "log"});
+    uncertainty.names.push_back(
+        reader.ReadString(reader.Require(parameters[i], at, "name"), at + ".name"));
+    uncertainty.values.push_back(
+        reader.ReadNumber(reader.Require(parameters[i], at, "value"), at + ".value"));
+    bool log = true;
+    if (const YAML::Node flag = parameters[i]["log"];
+        flag && (!flag.IsScalar() || !YAML::convert<bool>::decode(flag, log))) {
+      reader.Fail(flag, at + ".log", "expected true or false");
+    }
+    if (log && !(uncertainty.values.back() > 0.0)) {
+      reader.Fail(parameters[i]["value"], at + ".value", "must be > 0 where log is true");
+    }
+    uncertainty.log.push_back(log);
+  }
+  const std::size_t n = uncertainty.names.size();
+  if (n == 0) reader.Fail(parameters, path + ".parameters", "expected at least one parameter");
+  const YAML::Node rows = reader.Require(node, path, "covariance");
+  reader.RequireSequence(rows, path + ".covariance");
+  if (rows.size() != n) {
+    reader.Fail(rows, path + ".covariance", fmt::format("expected {} rows, one per parameter", n));
+  }
+  uncertainty.covariance.resize(long(n), long(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string at = IndexPath(path + ".covariance", i);
+    reader.RequireSequence(rows[i], at);
+    if (rows[i].size() != n) reader.Fail(rows[i], at, fmt::format("expected {} numbers", n));
+    for (std::size_t j = 0; j < n; ++j) {
+      uncertainty.covariance(long(i), long(j)) = reader.ReadNumber(rows[i][j], IndexPath(at, j));
+    }
+  }
+  const Eigen::MatrixXd& c = uncertainty.covariance;
+  if (!((c - c.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * c.cwiseAbs().maxCoeff()) ||
+      c.diagonal().minCoeff() < 0.0) {
+    reader.Fail(rows, path + ".covariance", "must be symmetric with a non-negative diagonal");
+  }
+  return uncertainty;
+}
+
 // The output section: the results file and what goes into it (output_selection.h).
 void ReadOutput(const YamlReader& reader, const YAML::Node& output, ModelFile* model) {
   reader.RequireMap(output, "output");
@@ -266,7 +317,7 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   reader.RequireMap(root, "");
   reader.CheckKeys(root, "",
                    {"description", "units", "isolation", "structure", "plan", "excitation",
-                    "analysis", "output", "cyclic", "axial_load"});
+                    "analysis", "output", "cyclic", "axial_load", "uncertainty"});
   if (root["plan"] && root["structure"]) {
     reader.Fail(root["plan"], "plan",
                 "a model is either a building in plan (plan) or one in one direction "
@@ -302,6 +353,7 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
   if (root["axial_load"]) model.axial_load = ReadAxialLoad(reader, root["axial_load"], model.units);
   if (root["output"]) ReadOutput(reader, root["output"], &model);
   if (root["cyclic"]) model.cyclic = ReadCyclic(reader, root["cyclic"]);
+  if (root["uncertainty"]) model.uncertainty = ReadUncertainty(reader, root["uncertainty"]);
   if (!model.structure && model.isolation.size() == 0) {
     reader.Fail(root, "",
                 "missing key 'isolation' (a model needs isolation, structure, or both; or plan)");

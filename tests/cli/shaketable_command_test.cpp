@@ -4,7 +4,8 @@
 //    ground). The isolator history the command derives from floor masses and absolute
 //    accelerations must be the run's own isolator force (equilibrium of the Newmark solution),
 //    the levels and the displacement reference must be found from the data, and --predict must
-//    reproduce the measurements it was made from;
+//    reproduce the measurements it was made from; `isolab fit --building`, started off, must
+//    find the building that made them, and the fitted model's prediction carry a band;
 //  * the bundled BNCS excerpt (tests/cli/data/bncs, MIT): channel 6 is the isolation slab in
 //    ICA50 and the displacements are relative to the table, as established independently
 //    (docs/bncs.md), and a BHM2 fitted to its isolator history has a post-yield period near the
@@ -78,35 +79,43 @@ std::string WriteBuilding() {
   return model.string();
 }
 
-TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack) {
-  const std::string model = WriteBuilding();
-  const auto results = Scratch("truth.h5");
+// The history isolab records of `model` written out as shake-table data: roof first (channel 1 =
+// roof ... channel 4 = slab), accelerations in mm/s^2 written in brackets, displacements in metres
+// by suffix, the table in m/s^2. Returns the data's path; `force` gets the isolator's force.
+std::filesystem::path WriteShakeTable(const std::string& model, const std::string& name,
+                                      Matrix* time_out = nullptr, Matrix* u_out = nullptr,
+                                      Matrix* force_out = nullptr) {
+  const auto results = Scratch(name + ".h5");
   const auto run = RunIsolab("run " + model + " -o " + results.string() + " --json");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.exit_code, 0) << run.output;
   const hid_t file = H5Fopen(results.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  ASSERT_GE(file, 0);
+  EXPECT_GE(file, 0);
   const Matrix time = Read(file, "time"), u = Read(file, "displacement");
   const Matrix a = Read(file, "absolute_acceleration"), rel = Read(file, "acceleration");
-  const Matrix force = Read(file, "isolator/force");
+  if (force_out) *force_out = Read(file, "isolator/force");
   H5Fclose(file);
-
-  // The "measurements": roof first (channel 1 = roof ... channel 4 = slab), accelerations in
-  // mm/s^2 written in brackets, displacements in metres by suffix, the table in m/s^2.
-  const auto data = Scratch("building_shaketable.csv");
-  {
-    std::ofstream out(data);
-    out << "# a building isolab ran\ntime_s,table_acceleration_m_s2,table_displacement_m";
-    for (int c = 1; c <= 4; ++c) out << ",a" << c << " [mm/s^2]";
-    for (int c = 1; c <= 4; ++c) out << ",d" << c << "_m";
+  const auto data = Scratch(name + ".csv");
+  std::ofstream out(data);
+  out << "# a building isolab ran\ntime_s,table_acceleration_m_s2,table_displacement_m";
+  for (int c = 1; c <= 4; ++c) out << ",a" << c << " [mm/s^2]";
+  for (int c = 1; c <= 4; ++c) out << ",d" << c << "_m";
+  out << "\n";
+  out.precision(12);
+  for (std::size_t r = 0; r < time.rows; ++r) {
+    out << time(r, 0) << "," << (a(r, 0) - rel(r, 0)) / 1000 << ",0";
+    for (int level = 3; level >= 0; --level) out << "," << a(r, level);
+    for (int level = 3; level >= 0; --level) out << "," << u(r, level) / 1000;
     out << "\n";
-    out.precision(12);
-    for (std::size_t r = 0; r < time.rows; ++r) {
-      out << time(r, 0) << "," << (a(r, 0) - rel(r, 0)) / 1000 << ",0";
-      for (int level = 3; level >= 0; --level) out << "," << a(r, level);
-      for (int level = 3; level >= 0; --level) out << "," << u(r, level) / 1000;
-      out << "\n";
-    }
   }
+  if (time_out) *time_out = time;
+  if (u_out) *u_out = u;
+  return data;
+}
+
+TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack) {
+  const std::string model = WriteBuilding();
+  Matrix time, u, force;
+  const auto data = WriteShakeTable(model, "building_shaketable", &time, &u, &force);
   const auto isolator = Scratch("isolator.csv");
   const auto comparison = Scratch("comparison.csv");
   const auto shake =
@@ -138,6 +147,66 @@ TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack
   EXPECT_LT(json["nrmse"]["isolator_displacement"].get<double>(), 1e-4);
   EXPECT_LT(json["nrmse"]["roof_acceleration"].get<double>(), 1e-4);
   EXPECT_TRUE(std::filesystem::exists(comparison));
+}
+
+// isolab fit --building on the same known building, started 50 % and 33 % off: the isolation's
+// post-yield stiffness and the stories' stiffness come back to what made the data, and the fitted
+// model's prediction carries a band drawn from its uncertainty.
+TEST(ShakeTableCommand, FitBuildingRecoversAKnownBuildingAndItsPredictionCarriesABand) {
+  const auto data = WriteShakeTable(WriteBuilding(), "fit_building");
+  const auto start = Scratch("start.yaml");
+  std::ofstream(start) << "units: {force: kN, length: mm, time: s}\n"
+                          "structure:\n  type: shear_building\n  base_mass: 30 t\n"
+                          "  stories: {count: 3, mass: 30 t, stiffness: 80 kN/mm}\n"
+                          "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
+                          "isolation:\n  components:\n"
+                          "    - {name: iso, type: bhm2, k0: 3, k1: 0.6, uy: 5}\n"
+                          "analysis: {dt: 0.01}\n";
+  const auto spec = Scratch("spec.yaml");
+  std::ofstream(spec) << "model: start.yaml\nparameters:\n  - isolation.iso.k1\n"
+                         "  - {name: stories.stiffness, range: [30, 150]}\nchannels: [d1, a4]\n";
+  const auto fitted = Scratch("fitted.yaml");
+  const auto fit =
+      RunIsolab("fit " + data.string() + " --building " + spec.string() +
+                " --budget 600 --threads 1 --offsets none --json -q -o " + fitted.string());
+  ASSERT_EQ(fit.exit_code, 0) << fit.output;
+  const auto json = nlohmann::json::parse(fit.output);
+  EXPECT_NEAR(json["parameters"][0]["value"].get<double>(), 0.4, 1e-3 * 0.4);
+  EXPECT_NEAR(json["parameters"][1]["value"].get<double>(), 60.0, 1e-3 * 60.0);
+  for (const auto& channel : json["channels"]) {
+    EXPECT_LT(channel["nrmse"].get<double>(), 1e-3) << channel["channel"];
+    EXPECT_GT(channel["nrmse_start"].get<double>(), 0.05) << channel["channel"];
+  }
+
+  const auto shake = RunIsolab("shaketable " + data.string() + " --model " + fitted.string() +
+                               " --predict --samples 8 --offsets none --json -q --results " +
+                               Scratch("band.h5").string());
+  ASSERT_EQ(shake.exit_code, 0) << shake.output;
+  const auto band = nlohmann::json::parse(shake.output)["band"];
+  EXPECT_EQ(band["samples"].get<int>() + band["refused"].get<int>(), 8);
+  const auto& peak = band["peak_isolator_displacement"];
+  const double measured =
+      nlohmann::json::parse(shake.output)["comparison"][0]["measured"].get<double>();
+  EXPECT_LE(peak["p5"].get<double>(), peak["p50"].get<double>());
+  EXPECT_LE(peak["p50"].get<double>(), peak["p95"].get<double>());
+  EXPECT_NEAR(peak["p50"].get<double>(), measured, 2e-3 * measured);
+
+  // Options that do not apply are refused, naming them.
+  const auto cycles = RunIsolab("fit " + data.string() + " --building " + spec.string() +
+                                    " --cycles 2 -q -o " + Scratch("no.yaml").string(),
+                                true);
+  EXPECT_EQ(cycles.exit_code, 2);
+  EXPECT_NE(cycles.output.find("--cycles"), std::string::npos) << cycles.output;
+  const auto unpredicted = RunIsolab(
+      "shaketable " + data.string() + " --model " + fitted.string() + " --samples 4 -q", true);
+  EXPECT_EQ(unpredicted.exit_code, 2);
+  EXPECT_NE(unpredicted.output.find("--predict"), std::string::npos) << unpredicted.output;
+  const auto no_uncertainty =
+      RunIsolab("shaketable " + data.string() + " --model " + start.string() +
+                    " --predict --samples 4 -q --results " + Scratch("none.h5").string(),
+                true);
+  EXPECT_EQ(no_uncertainty.exit_code, 2);
+  EXPECT_NE(no_uncertainty.output.find("uncertainty"), std::string::npos) << no_uncertainty.output;
 }
 
 TEST(ShakeTableCommand, BncsExcerptSlabChannelReferenceAndIsolationPeriod) {

@@ -16,13 +16,13 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "isolab/identification/cyclic_data.h"
 #include "isolab/identification/parametrisation.h"
+#include "isolab/identification/unit_cube_search.h"
 
 namespace isolab::identification {
 
@@ -62,48 +62,6 @@ struct AmplitudeSolution {
 // depend on it.
 AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<const double> x,
                                   const FitData& data, int threads = 1);
-
-struct FitProgress {
-  long evaluations = 0;
-  int generation = 0;  // CMA-ES generations of the leading island
-  double best = 0.0;   // best e^2 so far
-  bool polishing = false;
-};
-
-struct FitOptions {
-  unsigned seed = 1;    // a fixed seed reproduces the fit to the last digit, on any machine
-  long budget = 60000;  // model evaluations over all islands, CMA-ES and polish; >= 100
-  // CMA-ES islands, each with its own seed and share of the budget; 1 to 64. Fixed by default
-  // (not the core count), so the result is the same on every machine.
-  int islands = 2;
-  // Threads that run the islands side by side and share each evaluation's work; 0: one per
-  // hardware thread, else 1 to 1024. Changes how fast a fit runs, never its result.
-  int threads = 0;
-  double polish_share = 0.1;  // share of the budget for the compass-search polish; [0, 1)
-  // Convergence stop of the CMA-ES stage: it ends when, over a window of the last
-  // max(stop_window, stop_window_share x evaluations so far) evaluations, the best e^2 has
-  // improved by less than `stop_e2` relative and the step size with which the island that holds
-  // it found it (the spread of its population in the unit cube of shape coordinates) is below
-  // `stop_step`: the point is located, and restarts for as long again as the search took to find
-  // it have not beaten it. An e^2 below 1e-12 (an RMS error of 1e-6 of the force) counts as
-  // settled. The window grows with the search because an IPOP restart that finds a better basin
-  // comes late on hard landscapes (the nine-component HDRB fit: flat from 24,000 to 41,000
-  // evaluations, then 8 times lower). stop_window 0 runs the whole budget. stop_window >= 0
-  // evaluations; stop_window_share in [0, 1]; stop_e2 in [0, 1); stop_step in [0, 1].
-  long stop_window = 3000;
-  double stop_window_share = 0.5;
-  double stop_e2 = 1e-6;
-  double stop_step = 1e-3;
-  std::function<void(const FitProgress&)> progress;  // called every few generations
-
-  // Throws InvalidParameter naming the first field out of range.
-  void Validate() const;
-};
-
-enum class FitStop {
-  kBudget,     // the whole budget was spent
-  kConverged,  // the convergence stop (FitOptions::stop_window) ended the CMA-ES stage
-};
 
 struct FitResult {
   std::vector<double> point;  // shape point, in the unit cube

@@ -33,12 +33,16 @@
 //   output: {file: results.h5, every: 1, quantities: [...], levels: [...], summary_only: false}
 //                                                    # what is recorded: output_selection.h
 //   cyclic: {amplitude: 200, period: 1, cycles: 2, steps_per_cycle: 400}  # for `isolab cyclic`
+//   uncertainty:                                     # a fitted model's (ParameterUncertainty)
+//     parameters: [{name: isolation.c1.k0, value: 13.2, log: true}, ...]
+//     covariance: [[...], ...]                       # of the coordinates, one row per parameter
 //
 // A model with `structure` or `plan` can be run in time (build_structure.h lays it out); a model
 // with only `isolation` is a bearing, for `cyclic` and `fit`. Every error is an InputError
 // "file:line:col: key path: what (what was allowed)".
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
@@ -119,6 +123,17 @@ struct AnalysisSection {
   integrators::IdaOptions ida;
 };
 
+// A fitted model's parameters and their uncertainty (`uncertainty:`, written by
+// `isolab fit --building`), which a prediction samples for a band: the names as
+// analysis/building_parameters.h gives them, the values in the model's units, and the covariance
+// of their coordinates (ln value where `log`, else the value).
+struct ParameterUncertainty {
+  std::vector<std::string> names;
+  std::vector<double> values;
+  std::vector<bool> log;
+  Eigen::MatrixXd covariance;
+};
+
 struct ModelFile {
   std::string path;
   // The files its isolation section was read from (isolation: {file: ...}, and theirs in turn).
@@ -145,6 +160,7 @@ struct ModelFile {
   std::string output_file;  // empty: not given
   OutputSelection output;
   std::optional<hysteresis::CyclicProtocol> cyclic;
+  std::optional<ParameterUncertainty> uncertainty;
 };
 
 // The names of a one-direction layer's bearings: "<name>_1" ... "<name>_<count>"; empty without a

@@ -1,4 +1,5 @@
-// Spectral tools of the discrepancy (internal): the Hann-windowed periodogram of a uniformly
+// Spectral tools of the discrepancy, also used by the building-level fit (its residual's
+// correlation time): the Hann-windowed periodogram of a uniformly
 // sampled series and its autocorrelation, through Eigen's FFT on a power-of-two length.
 #pragma once
 

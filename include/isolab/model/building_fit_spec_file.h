@@ -1,0 +1,38 @@
+// What `isolab fit --building` identifies (analysis/building_fit.h): the building model it starts
+// from, the parameters it fits (analysis/building_parameters.h names them), the channels it
+// compares and the band it reads them in.
+//   model: bncs.yaml                 # relative to this file
+//   parameters:
+//     - isolation.isolators.k1       # a name alone: the default range (a third to three times)
+//     - {name: stories.stiffness, range: [50, 300], start: 117}   # in the model's units
+//   channels: [d1, a6]               # default: every level's displacement and acceleration
+//   band: [0.1, 10]                  # (1/time of the model) default: the whole record
+//   pause: 60                        # (time) of rest between one specimen's motions
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "isolab/core/errors.h"
+
+namespace isolab::model {
+
+struct BuildingFitParameterEntry {
+  std::string name;
+  std::optional<double> low{}, high{}, start{};
+};
+
+struct BuildingFitSpecFile {
+  std::string path;
+  std::string model;  // resolved against the spec's folder
+  std::vector<BuildingFitParameterEntry> parameters;
+  std::vector<std::string> channels;
+  std::optional<double> band_low{}, band_high{};
+  double pause = 0.0;  // 0: not given
+};
+
+// Throws InputError with file:line:column for anything malformed.
+BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path);
+
+}  // namespace isolab::model

@@ -1,0 +1,19 @@
+// Writes a building model identified by `isolab fit --building` (analysis/building_fit.h) as a
+// model file: the model it started from, with the fitted values and their uncertainty.
+#pragma once
+
+#include <string>
+
+#include "isolab/model/model_file.h"
+
+namespace isolab::model {
+
+// The text of `fitted` (a one-direction shear building whose values a fit changed; its `text` the
+// model it started from): its isolation written inline (components in mathematical parameters,
+// the layer's name and count kept), its stories as a list of masses and stiffnesses, its base
+// mass, its modal damping ratios, and its `uncertainty`, each number to nine digits. The text is
+// read back first: a model the readers would refuse is an InputError naming `fitted.path`.
+// `note` is written as the description's ending ("identified by ...").
+std::string FittedBuildingText(const ModelFile& fitted, const std::string& note);
+
+}  // namespace isolab::model

@@ -1,0 +1,288 @@
+#include "isolab/analysis/building_fit.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <unsupported/Eigen/FFT>
+
+#include "isolab/core/errors.h"
+#include "isolab/diagnosis/spectral.h"
+#include "isolab/identification/parametrisation.h"
+
+namespace isolab::analysis {
+namespace {
+
+// Each motion's measured values of the channels.
+ChannelHistories Measured(const std::vector<BuildingMotion>& motions,
+                          const std::vector<BuildingChannel>& channels) {
+  ChannelHistories out;
+  for (const BuildingMotion& motion : motions) {
+    std::vector<Signal>& signals = out.emplace_back();
+    for (const BuildingChannel& channel : channels) {
+      const std::size_t l = std::size_t(channel.level - 1);
+      signals.push_back(channel.kind == BuildingChannel::Kind::kDisplacement
+                            ? motion.measured.displacement[l]
+                            : motion.measured.acceleration[l]);
+    }
+  }
+  return out;
+}
+
+// Keeps the part of a history inside [low, high] (1/time): FFT, bins outside zeroed, inverse.
+// The length is padded to a power of two with zeros, and cut back after.
+class Band {
+ public:
+  Band(std::optional<double> low, std::optional<double> high, double dt)
+      : low_(low), high_(high), dt_(dt) {}
+  bool active() const { return low_ || high_; }
+  Signal operator()(const Signal& x) const {
+    if (!active()) return x;
+    std::size_t n = 1;
+    while (n < x.size()) n *= 2;
+    std::vector<double> padded(x);
+    padded.resize(n, 0.0);
+    Eigen::FFT<double> fft;
+    std::vector<std::complex<double>> spectrum;
+    fft.fwd(spectrum, padded);
+    for (std::size_t k = 0; k < spectrum.size(); ++k) {
+      const double f = double(std::min(k, n - k)) / (double(n) * dt_);
+      if ((low_ && f < *low_) || (high_ && f > *high_)) spectrum[k] = 0.0;
+    }
+    std::vector<double> back;
+    fft.inv(back, spectrum);
+    back.resize(x.size());
+    return back;
+  }
+
+ private:
+  std::optional<double> low_, high_;
+  double dt_;
+};
+
+double SumOfSquares(const Signal& x) {
+  double sum = 0.0;
+  for (const double v : x) sum += v * v;
+  return sum;
+}
+
+// The search coordinates of the parameters and where each lies.
+struct Coordinates {
+  std::vector<std::string> names;
+  std::vector<identification::CoordinateRange> ranges;
+
+  std::vector<double> Values(std::span<const double> x) const {
+    std::vector<double> values(x.size());
+    for (std::size_t p = 0; p < x.size(); ++p) values[p] = ranges[p].At(x[p]);
+    return values;
+  }
+};
+
+}  // namespace
+
+BuildingFitResult FitBuilding(const model::ModelFile& model,
+                              const std::vector<BuildingMotion>& motions,
+                              const BuildingFitSpec& spec,
+                              const identification::FitOptions& options) {
+  options.Validate();
+  const auto clock = std::chrono::steady_clock::now();
+  if (motions.empty()) throw InputError({model.path}, "no motions to fit");
+  if (spec.parameters.empty()) throw InputError({model.path}, "no parameters to fit");
+  const std::size_t levels = LevelMasses(model).size();
+  std::vector<BuildingChannel> channels = spec.channels;
+  if (channels.empty()) {
+    for (const auto kind :
+         {BuildingChannel::Kind::kDisplacement, BuildingChannel::Kind::kAcceleration}) {
+      for (std::size_t l = 1; l <= levels; ++l) channels.push_back({kind, int(l)});
+    }
+  }
+  for (const BuildingChannel& channel : channels) {
+    if (std::size_t(channel.level) > levels) {
+      throw InputError({model.path},
+                       fmt::format("channel {}: the model has {} levels", channel.Name(), levels));
+    }
+  }
+  for (const BuildingMotion& motion : motions) {
+    if (motion.measured.time.size() < 2) {
+      throw InputError({motion.name}, "needs at least two samples");
+    }
+  }
+
+  Coordinates coordinates;
+  std::vector<double> start;
+  model::ModelFile base = model;
+  for (const FittedParameterSpec& parameter : spec.parameters) {
+    const double value = parameter.start.value_or(ParameterValue(model, parameter.name));
+    ParameterRange range = DefaultRange(parameter.name, value);
+    if (parameter.low) range.low = *parameter.low;
+    if (parameter.high) range.high = *parameter.high;
+    range.log = range.low > 0.0;
+    if (!(range.high > range.low)) {
+      throw InputError({model.path}, fmt::format("parameter '{}': the range [{:g}, {:g}] is empty",
+                                                 parameter.name, range.low, range.high));
+    }
+    coordinates.names.push_back(parameter.name);
+    coordinates.ranges.push_back({range.low, range.high, range.log});
+    start.push_back(coordinates.ranges.back().Inverse(value));
+  }
+  // The starting values must make a model that runs: a name the model lacks is an error here,
+  // not an infinite objective in the search.
+  SetParameters(&base, coordinates.names, coordinates.Values(start));
+
+  const ChannelHistories measured_raw = Measured(motions, channels);
+  const double dt = SampleStep(motions.front().measured);
+  const Band band(spec.band_low, spec.band_high, dt);
+  ChannelHistories measured;
+  std::vector<double> scale;  // per motion x channel: 1 / sum of squares of the measured
+  for (const auto& signals : measured_raw) {
+    std::vector<Signal>& filtered = measured.emplace_back();
+    for (const Signal& x : signals) {
+      filtered.push_back(band(x));
+      const double sum = SumOfSquares(filtered.back());
+      if (!(sum > 0.0)) {
+        throw InputError({model.path}, "a fitted channel is zero throughout (in the band)");
+      }
+      scale.push_back(1.0 / sum);
+    }
+  }
+  const double count = double(scale.size());
+  // Per channel the weighted residual band(simulated - measured) / |measured|.
+  const auto residuals = [&](const model::ModelFile& trial) {
+    const ChannelHistories simulated =
+        SimulateChannels(trial, motions, channels, spec.sequential, spec.pause);
+    std::vector<Signal> out;
+    std::size_t i = 0;
+    for (std::size_t m = 0; m < motions.size(); ++m) {
+      for (std::size_t c = 0; c < channels.size(); ++c, ++i) {
+        Signal r = band(simulated[m][c]);
+        const double weight = std::sqrt(scale[i]);
+        for (std::size_t k = 0; k < r.size(); ++k) r[k] = (r[k] - measured[m][c][k]) * weight;
+        out.push_back(std::move(r));
+      }
+    }
+    return out;
+  };
+  const auto objective_of = [&](const std::vector<Signal>& r) {
+    double sum = 0.0;
+    for (const Signal& x : r) sum += SumOfSquares(x);
+    return sum / count;
+  };
+  const auto model_at = [&](std::span<const double> x) {
+    model::ModelFile trial = base;
+    SetParameters(&trial, coordinates.names, coordinates.Values(x));
+    return trial;
+  };
+  const identification::Objective objective = [&](std::span<const double> x) {
+    try {
+      return objective_of(residuals(model_at(x)));
+    } catch (const std::exception&) {
+      // A point where a law's rules break or the run fails is no answer.
+      return std::numeric_limits<double>::infinity();
+    }
+  };
+
+  BuildingFitResult result;
+  const std::vector<Signal> r_start = residuals(base);
+  result.objective_start = objective_of(r_start);
+  result.search =
+      identification::SearchUnitCube(objective, int(start.size()), start, options, "mean NRMSE^2");
+  const std::vector<double>& best = result.search.point;
+  result.fitted = model_at(best);
+  const std::vector<Signal> r = residuals(result.fitted);
+  result.objective = objective_of(r);
+
+  // Each channel's NRMSE before and after.
+  std::size_t i = 0;
+  for (std::size_t m = 0; m < motions.size(); ++m) {
+    for (const BuildingChannel& channel : channels) {
+      result.channels.push_back({motions[m].name, channel.Name(),
+                                 std::sqrt(SumOfSquares(r_start[i])),
+                                 std::sqrt(SumOfSquares(r[i]))});
+      ++i;
+    }
+  }
+
+  // Samples and their worth: each channel's samples over its residual's correlation time.
+  for (const Signal& x : r) {
+    const double n = double(x.size());
+    const double tau = diagnosis::IntegratedCorrelationTime(x);
+    result.samples += n;
+    result.effective_samples += n / tau;
+    result.correlation_time += n * tau * dt;
+  }
+  result.correlation_time /= result.samples;
+
+  // The Jacobian of the stacked residual in the coordinates (ln p or p), by central differences
+  // of h in the unit cube, one-sided at the cube's faces.
+  const int parameters = int(best.size());
+  const long rows = long(result.samples);
+  Eigen::MatrixXd jacobian(rows, parameters);
+  const double h = 1e-3;
+  for (int p = 0; p < parameters; ++p) {
+    std::vector<double> up = best, down = best;
+    up[std::size_t(p)] = std::min(1.0, best[std::size_t(p)] + h);
+    down[std::size_t(p)] = std::max(0.0, best[std::size_t(p)] - h);
+    const std::vector<Signal> r_up = residuals(model_at(up));
+    const std::vector<Signal> r_down = residuals(model_at(down));
+    const identification::CoordinateRange& range = coordinates.ranges[std::size_t(p)];
+    const double span = range.log ? std::log(range.high / range.low) : range.high - range.low;
+    const double step = (up[std::size_t(p)] - down[std::size_t(p)]) * span;
+    long row = 0;
+    for (std::size_t c = 0; c < r.size(); ++c) {
+      for (std::size_t k = 0; k < r[c].size(); ++k) {
+        jacobian(row++, p) = (r_up[c][k] - r_down[c][k]) / step;
+      }
+    }
+  }
+  const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
+  const double ssr = result.objective * count;
+  const double s2 = ssr / std::max(result.samples - parameters, 1.0);
+  const double inflation = result.samples / std::max(result.effective_samples, 1.0);
+  // A pseudo-inverse: a direction the data do not see at all has no finite variance, and the
+  // correlations still say which parameters it mixes.
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition(normal);
+  result.covariance = decomposition.pseudoInverse() * (s2 * inflation);
+  const Eigen::VectorXd sd = result.covariance.diagonal().cwiseMax(0.0).cwiseSqrt();
+  result.correlation = result.covariance;
+  for (int a = 0; a < parameters; ++a) {
+    for (int b = 0; b < parameters; ++b) {
+      const double d = sd[a] * sd[b];
+      result.correlation(a, b) = d > 0.0 ? result.covariance(a, b) / d : (a == b ? 1.0 : 0.0);
+    }
+  }
+  for (int a = 0; a < parameters; ++a) {
+    for (int b = a + 1; b < parameters; ++b) {
+      if (std::abs(result.correlation(a, b)) >= 0.95) {
+        result.not_separated.push_back({coordinates.names[std::size_t(a)],
+                                        coordinates.names[std::size_t(b)],
+                                        result.correlation(a, b)});
+      }
+    }
+  }
+  std::sort(result.not_separated.begin(), result.not_separated.end(),
+            [](const auto& x, const auto& y) {
+              return std::abs(x.correlation) > std::abs(y.correlation);
+            });
+
+  const std::vector<double> values = coordinates.Values(best);
+  const std::vector<double> starts = coordinates.Values(start);
+  for (int p = 0; p < parameters; ++p) {
+    const std::size_t q = std::size_t(p);
+    const identification::CoordinateRange& range = coordinates.ranges[q];
+    result.parameters.push_back({coordinates.names[q], starts[q], values[q], range.low, range.high,
+                                 range.log, sd[p], best[q] < 1e-3 || best[q] > 1.0 - 1e-3});
+  }
+  model::ParameterUncertainty& uncertainty = result.fitted.uncertainty.emplace();
+  uncertainty.names = coordinates.names;
+  uncertainty.values = values;
+  for (const auto& range : coordinates.ranges) uncertainty.log.push_back(range.log);
+  uncertainty.covariance = result.covariance;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  return result;
+}
+
+}  // namespace isolab::analysis

@@ -1,0 +1,170 @@
+#include "building_fit_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "building_measurement.h"
+#include "isolab/analysis/building_fit.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
+#include "isolab/io/output_check.h"
+#include "isolab/model/building_fit_spec_file.h"
+#include "isolab/model/fitted_building_file.h"
+
+namespace isolab::cli {
+namespace {
+
+// The 95 % interval of a fitted value from its coordinate's standard deviation.
+std::pair<double, double> Interval(const analysis::FittedParameter& p) {
+  const double half = 1.96 * p.sigma;
+  return p.log ? std::pair{p.value * std::exp(-half), p.value * std::exp(half)}
+               : std::pair{p.value - half, p.value + half};
+}
+
+void RefuseCyclicOptions(const FitOptions& options) {
+  const auto refuse = [](const char* option) {
+    throw InputError({"command line"},
+                     fmt::format("{} applies to cyclic tests, not to --building (shake-table "
+                                 "motions carry their units in the column names)",
+                                 option));
+  };
+  if (!options.cycles.empty()) refuse("--cycles");
+  if (!options.force_unit.empty()) refuse("--force-unit");
+  if (!options.length_unit.empty()) refuse("--length-unit");
+  if (options.force) refuse("--force");
+}
+
+}  // namespace
+
+void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
+  RefuseCyclicOptions(options);
+  const model::BuildingFitSpecFile file = model::LoadBuildingFitSpec(options.building);
+  const model::ModelFile model = model::LoadModelFile(file.model);
+  const std::string output =
+      !options.output.empty()
+          ? options.output
+          : std::filesystem::path(options.building).stem().string() + ".fitted.yaml";
+  std::vector<std::string> inputs = options.data;
+  inputs.push_back(options.building);
+  inputs.push_back(file.model);
+  for (const std::string& included : model.included_files) inputs.push_back(included);
+  io::CheckOutputs(inputs, {output});
+
+  analysis::BuildingFitSpec spec;
+  for (const model::BuildingFitParameterEntry& entry : file.parameters) {
+    spec.parameters.push_back({entry.name, entry.low, entry.high, entry.start});
+  }
+  for (const std::string& channel : file.channels) {
+    spec.channels.push_back(analysis::ParseChannel(channel, file.path));
+  }
+  spec.band_low = file.band_low;
+  spec.band_high = file.band_high;
+  spec.pause = file.pause;
+  spec.sequential = options.specimen == "sequential";
+
+  const std::size_t levels = analysis::LevelMasses(model).size();
+  std::vector<analysis::BuildingMotion> motions;
+  for (const std::string& data : options.data) {
+    ShakeTableOptions read;
+    read.data = data;
+    read.model = file.model;
+    if (!options.offsets.empty()) read.offsets = options.offsets;
+    Measured measured = ReadMeasured(read, model.units, levels);
+    if (!options.quiet) {
+      fmt::print(stderr,
+                 "isolab fit --building: {}: {} samples, levels (slab to roof) = "
+                 "channels {}; {}\n",
+                 data, measured.time.size(), fmt::join(measured.channels, ","),
+                 measured.reference_note);
+    }
+    motions.push_back({std::filesystem::path(data).stem().string(), std::move(measured)});
+  }
+
+  identification::FitOptions fit;
+  fit.seed = options.seed;
+  fit.budget = options.budget;
+  fit.threads = options.threads;
+  if (!options.quiet) {
+    fmt::print(stderr, "  {} parameters, {} motions ({}), budget {} simulations\n",
+               spec.parameters.size(), motions.size(),
+               spec.sequential ? "one specimen, in order" : "each from rest", options.budget);
+    fit.progress = [](const identification::FitProgress& p) {
+      fmt::print(stderr, "  {} generation {:5d}, {:8d} simulations, best mean NRMSE^2 = {:.6g}\n",
+                 p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations, p.best);
+    };
+  }
+  const analysis::BuildingFitResult result = analysis::FitBuilding(model, motions, spec, fit);
+  const std::string text = model::FittedBuildingText(
+      result.fitted, fmt::format("identified by isolab fit --building {} from {}", options.building,
+                                 fmt::join(options.data, ", ")));
+  io::WriteTextFileAtomically(output, [&](std::ostream& o) { o << text; });
+
+  if (options.json) {
+    nlohmann::json json;
+    for (const analysis::FittedParameter& p : result.parameters) {
+      const auto [low, high] = Interval(p);
+      json["parameters"].push_back({{"name", p.name},
+                                    {"start", p.start},
+                                    {"value", p.value},
+                                    {"sigma", p.sigma},
+                                    {"log", p.log},
+                                    {"interval_95", {low, high}},
+                                    {"at_bound", p.at_bound}});
+    }
+    for (const analysis::ChannelFit& c : result.channels) {
+      json["channels"].push_back({{"motion", c.motion},
+                                  {"channel", c.channel},
+                                  {"nrmse_start", c.nrmse_start},
+                                  {"nrmse", c.nrmse}});
+    }
+    for (const analysis::CorrelatedParameters& pair : result.not_separated) {
+      json["not_separated"].push_back(
+          {{"a", pair.a}, {"b", pair.b}, {"correlation", pair.correlation}});
+    }
+    json["objective_start"] = result.objective_start;
+    json["objective"] = result.objective;
+    json["samples"] = result.samples;
+    json["effective_samples"] = result.effective_samples;
+    json["correlation_time"] = result.correlation_time;
+    json["evaluations"] = result.search.evaluations;
+    json["stop"] =
+        result.search.stop == identification::FitStop::kConverged ? "converged" : "budget";
+    json["stop_reason"] = result.search.stop_reason;
+    json["seconds"] = result.seconds;
+    json["sequential"] = spec.sequential;
+    json["output"] = output;
+    out << json.dump(2) << "\n";
+    return;
+  }
+  fmt::print(out, "mean NRMSE^2 over {} channels: {:.4g} -> {:.4g}\n{} ({:.1f} s)\n\n",
+             result.channels.size(), result.objective_start, result.objective,
+             result.search.stop_reason, result.seconds);
+  fmt::print(out, "| parameter | start | fitted | 95 % interval |\n|---|---|---|---|\n");
+  for (const analysis::FittedParameter& p : result.parameters) {
+    const auto [low, high] = Interval(p);
+    fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} to {:.4g}{} |\n", p.name, p.start, p.value,
+               low, high, p.at_bound ? " (at the range's end)" : "");
+  }
+  fmt::print(out, "\n| motion | channel | NRMSE start | NRMSE fitted |\n|---|---|---|---|\n");
+  for (const analysis::ChannelFit& c : result.channels) {
+    fmt::print(out, "| {} | {} | {:.3f} | {:.3f} |\n", c.motion, c.channel, c.nrmse_start, c.nrmse);
+  }
+  fmt::print(out,
+             "\nThe residual is correlated over {:.3g} {}: its {:.0f} samples are worth {:.0f} "
+             "independent ones, and the intervals count them so.\n",
+             result.correlation_time, model.units.time(), result.samples, result.effective_samples);
+  for (const analysis::CorrelatedParameters& pair : result.not_separated) {
+    fmt::print(out,
+               "not separately identified: {} and {} (correlation {:.3f}): the data fix a "
+               "combination of the two\n",
+               pair.a, pair.b, pair.correlation);
+  }
+  fmt::print(out, "fitted model: {}\n", output);
+}
+
+}  // namespace isolab::cli
