@@ -8,6 +8,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/model/model_file.h"
+#include "isolab/model/study_file.h"
 #include "own_test_file.h"
 
 namespace isolab::model {
@@ -63,6 +64,31 @@ TEST(ModelFileIdentifiedRange, ComesWithTheFileTheIsolationNamesAndGoesWithRepla
   // Laws from elsewhere were not identified on that range.
   ReplaceIsolation(&building, building.isolation);
   EXPECT_FALSE(building.identified_range);
+}
+
+TEST(ModelFileIdentifiedRange, AStudysIsolationVariantCarriesItsOwnRange) {
+  const auto directory = testing::FreshTestDirectory();
+  Write(directory / "fitted.yaml",
+        Bearing("  identified_range: {displacement: 80, velocity: 300, cycles: 3, data: [a80]}\n"));
+  Write(directory / "building.yaml",
+        "units: {force: kN, length: mm, time: s}\nisolation: {file: fitted.yaml}\n"
+        "structure: {type: sdof, mass: 100 t}\n");
+  Write(directory / "study.yaml",
+        "building: building.yaml\nvariants:\n  - {name: as_built}\n"
+        "  - {name: inline, isolation: {identified_range: {displacement: 40, velocity: 150, "
+        "cycles: 2, data: [a40]}, components: [{type: bhm2, k0: 13, k1: 3.7, uy: 4.6}]}}\n"
+        "  - {name: plain, isolation: {components: [{type: bhm2, k0: 13, k1: 3.7, uy: 4.6}]}}\n"
+        "records: [" +
+            std::string(ISOLAB_SOURCE_DIR) +
+            "/ground_motions/elcentro_1940_ns.at2]\nscales: [1]\n");
+  const StudyFile study = LoadStudyFile((directory / "study.yaml").string());
+  ASSERT_EQ(study.variants.size(), 3u);
+  ASSERT_TRUE(study.variants[0].model.identified_range);
+  EXPECT_DOUBLE_EQ(study.variants[0].model.identified_range->displacement, 80.0);
+  ASSERT_TRUE(study.variants[1].model.identified_range);
+  EXPECT_DOUBLE_EQ(study.variants[1].model.identified_range->displacement, 40.0);
+  EXPECT_EQ(study.variants[1].model.identified_range->data, std::vector<std::string>{"a40"});
+  EXPECT_FALSE(study.variants[2].model.identified_range);
 }
 
 TEST(ModelFileIdentifiedRange, MalformedRangesAreLocated) {
