@@ -13,7 +13,7 @@
 //       - {name: c2, type: thm2, ke: "1 kN/mm", kh1: 0.2, kh2: 0.05, fs: 16, uc: 120}
 //     modification: {c1: {k0: {testing: [0.9, 1.1], ageing: [1, 1.2], specification: [0.9,
 //                    1.1]}}}                         # property_modification.h, bounds.h
-//     identified_range: {displacement: 108.5, velocity: 520, cycles: 69, data: [bncs_ica50]}
+//     identified_range: {displacement: 108.5, velocity: 338.7, cycles: 69.5, data: [ica50]}
 //                                                    # optional, written by isolab fit and
 //                                                    # diagnose: the range of the data the laws
 //                                                    # were identified on (peak |u|, peak |v|,
