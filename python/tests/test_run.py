@@ -256,3 +256,21 @@ def test_runs_release_the_gil(repo):
         sys.setswitchinterval(interval)
     assert results[0].ok
     assert count >= 2, count
+
+
+def test_a_run_beyond_the_identified_range_warns(repo, tmp_path, isolab_cli):
+    # The BNCS BHM2 was identified on ICA50's isolator history, up to 108.5 mm (the range its
+    # fitted file carries): under twice the ICA50 table motion of the bundled excerpt the run goes
+    # far beyond it, and Python warns with the command line's words.
+    record = tmp_path / "table.csv"
+    isolab_cli("shaketable", "tests/cli/data/bncs/bncs_ica50_excerpt.csv", "--model",
+               "models/bncs/bncs.yaml", "--record", record, "-q")
+    model = repo / "models/bncs/bncs.yaml"
+    identified = r"the isolation was identified up to 108.5 mm and 338.7 mm/s over 69.5 cycles"
+    with pytest.warns(isolab.IsolabWarning, match=identified + r" \(bncs_ica50\); this run reaches"):
+        result = isolab.run(model, record, scale=2)
+    cli = isolab_cli.json("run", model, "--record", record, "--scale", 2)
+    assert result.warnings == cli["warnings"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # inside the range: nothing to say
+        isolab.run(model, record, scale=0.75)

@@ -379,4 +379,24 @@ std::string IsolatorDisplacementWarning(double peak, const UnitSystem& units) {
       peak, units.length(), kMaxBearingDisplacement);
 }
 
+std::string IdentifiedRangeWarning(const identification::IdentifiedRange& range,
+                                   double displacement, double velocity, const UnitSystem& units) {
+  const std::string velocity_unit = fmt::format("{}/{}", units.length(), units.time());
+  std::vector<std::string> beyond;
+  if (displacement > range.displacement) {
+    beyond.push_back(fmt::format("{:.4g} {} ({:.2f} times)", displacement, units.length(),
+                                 displacement / range.displacement));
+  }
+  if (velocity > range.velocity) {
+    beyond.push_back(fmt::format("{:.4g} {} ({:.2f} times)", velocity, velocity_unit,
+                                 velocity / range.velocity));
+  }
+  if (beyond.empty()) return "";
+  return fmt::format(
+      "the isolation was identified up to {:.4g} {} and {:.4g} {} over {:g} cycles ({}); this "
+      "run reaches {}: beyond the range the fit saw, the model extrapolates",
+      range.displacement, units.length(), range.velocity, velocity_unit, range.cycles,
+      fmt::join(range.data, ", "), fmt::join(beyond, " and "));
+}
+
 }  // namespace isolab::analysis

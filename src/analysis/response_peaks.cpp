@@ -38,6 +38,7 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   for (std::size_t i = 0; i < isolators; ++i) {
     peaks_.isolator_displacements.push_back({0.0, 0.0, static_cast<int>(i)});
     peaks_.isolator_forces.push_back({0.0, 0.0, static_cast<int>(i)});
+    peaks_.isolator_velocities.push_back({0.0, 0.0, static_cast<int>(i)});
   }
   for (std::size_t s = 0; s < layout.stories.size(); ++s) {
     peaks_.story_drifts.push_back({0.0, 0.0, static_cast<int>(s)});
@@ -104,6 +105,16 @@ Vec2 PeakTracker::IsolatorDisplacement(std::size_t isolator,
   return problem_.structure.CoupledDeformation(site.coupled, row.displacement);
 }
 
+Vec2 PeakTracker::IsolatorVelocity(std::size_t isolator,
+                                   const integrators::ResponseRow& row) const {
+  const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
+  // The deformation is linear in the dofs: the same map takes the velocities to its rate.
+  if (site.member >= 0) {
+    return {problem_.structure.MemberDeformation(site.member, row.velocity), 0.0};
+  }
+  return problem_.structure.CoupledDeformation(site.coupled, row.velocity);
+}
+
 Vec2 PeakTracker::IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const {
   const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
   if (site.member >= 0) return {row.connection_force[site.member], 0.0};
@@ -152,6 +163,8 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
     Consider(&peaks.isolator_displacements[i], Magnitude(u), t, static_cast<int>(i));
     at_peak_[i] = peaks.isolator_displacements[i].value > largest;
     Consider(&peaks.isolator_forces[i], Magnitude(IsolatorForce(i, row)), t, static_cast<int>(i));
+    Consider(&peaks.isolator_velocities[i], Magnitude(IsolatorVelocity(i, row)), t,
+             static_cast<int>(i));
     std::vector<Sample>& ring = window_[i];
     ring[(window_start_ + window_size_) % ring.size()] = {t, u.x, u.y};
     if (before_end) at_excitation_end_[i] = u;
@@ -246,6 +259,7 @@ ResponsePeaks PeakTracker::Peaks() const {
   ResponsePeaks peaks = peaks_;
   peaks.isolator_displacement = Largest(peaks.isolator_displacements);
   peaks.isolator_force = Largest(peaks.isolator_forces);
+  peaks.isolator_velocity = Largest(peaks.isolator_velocities);
   peaks.story_drift = Largest(peaks.story_drifts);
   peaks.level_rotation = Largest(peaks.level_rotations);
   if (peaks.story_drift.index >= 0) {

@@ -67,6 +67,12 @@ std::vector<std::string> RunWarnings(const RunDescription& run) {
   const std::string bearing =
       IsolatorDisplacementWarning(run.peaks->isolator_displacement.value, run.problem->units());
   if (!bearing.empty()) warnings.push_back(bearing);
+  if (run.problem->model.identified_range) {
+    const std::string range = IdentifiedRangeWarning(
+        *run.problem->model.identified_range, run.peaks->isolator_displacement.value,
+        run.peaks->isolator_velocity.value, run.problem->units());
+    if (!range.empty()) warnings.push_back(range);
+  }
   const structure::AxialLoads& axial = run.problem->structure.axial_loads();
   const ResponsePeaks& peaks = *run.peaks;
   for (std::size_t j = 0; j < peaks.first_uplift_times.size(); ++j) {

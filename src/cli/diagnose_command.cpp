@@ -33,7 +33,8 @@ void WriteText(const std::string& path, const std::string& text) {
 // (identification::SimplifyComponents), with a note. Returns the notes.
 std::vector<std::string> WriteFinalModel(const std::string& path, const DiagnoseOptions& options,
                                          const model::FitSpec& base,
-                                         const diagnosis::Diagnosis& result) {
+                                         const diagnosis::Diagnosis& result,
+                                         const identification::FitData& data) {
   model::FittedModel model;
   model.comment.push_back(fmt::format("Diagnosed by isolab diagnose from {} (base {}, seed {}).",
                                       fmt::join(options.data, ", "), options.base, options.seed));
@@ -48,6 +49,7 @@ std::vector<std::string> WriteFinalModel(const std::string& path, const Diagnose
   model.description = fmt::format("Diagnosed from {}", fmt::join(options.data, ", "));
   model.specification = options.base;
   model.units = base.units;
+  model.range = identification::RangeOf(data);
   model.components = result.final_model.components;
   std::vector<std::string> names;
   std::vector<hysteresis::LawType> types;
@@ -174,7 +176,7 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
 
   // The model first: a model isolab would refuse is a note in the report, not a lost diagnosis.
   try {
-    for (std::string& note : WriteFinalModel(context.model_file, options, base, result)) {
+    for (std::string& note : WriteFinalModel(context.model_file, options, base, result, data)) {
       context.notes.push_back(std::move(note));
     }
   } catch (const InputError& error) {

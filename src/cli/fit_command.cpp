@@ -79,6 +79,7 @@ std::vector<std::string> WriteFittedModel(const std::string& path, const model::
   model.description = fmt::format("Fitted to {}", fmt::join(options.data, ", "));
   model.specification = spec.path;
   model.units = spec.units;
+  model.range = identification::RangeOf(data);
   std::vector<std::string> names;
   std::vector<hysteresis::LawType> types;
   for (const auto& component : kept)
@@ -255,6 +256,11 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
                                           {"measured", row.measured},
                                           {"fitted", row.fitted}});
     }
+    const identification::IdentifiedRange range = identification::RangeOf(data);
+    json["identified_range"] = {{"displacement", range.displacement},
+                                {"velocity", range.velocity},
+                                {"cycles", range.cycles},
+                                {"data", range.data}};
     json["evaluations"] = result.evaluations;
     json["restarts"] = result.restarts;
     json["seconds"] = result.seconds;

@@ -178,6 +178,11 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     });
   }
 
+  // The prediction's warnings (a model beyond the range it was identified on, ...), as `isolab
+  // run` prints them; the JSON carries them too.
+  const std::vector<std::string> warnings =
+      prediction ? prediction->summary.warnings : std::vector<std::string>{};
+  for (const std::string& warning : warnings) fmt::print(stderr, "isolab: warning: {}\n", warning);
   if (options.json) {
     nlohmann::json json;
     json["data"] = options.data;
@@ -209,6 +214,7 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     if (options.predict) {
       json["nrmse"] = {{"isolator_displacement", nrmse_u}, {"roof_acceleration", nrmse_roof}};
       json["results"] = results_path;
+      json["warnings"] = warnings;
     }
     out << json.dump(2) << "\n";
     return;

@@ -58,6 +58,34 @@ DataScales ScalesOf(const FitData& data) {
   return scales;
 }
 
+IdentifiedRange RangeOf(const FitData& data) {
+  IdentifiedRange range;
+  long reversals = 0;
+  for (std::size_t i = 0; i < data.tests.size(); ++i) {
+    const CyclicTestData& test = data.tests[i];
+    range.data.push_back(test.name);
+    const auto fitted = [&](std::size_t k) {
+      return std::any_of(data.fitted[i].begin(), data.fitted[i].end(),
+                         [k](const CycleSpan& span) { return k >= span.begin && k < span.end; });
+    };
+    for (const CycleSpan& span : data.fitted[i]) {
+      for (std::size_t k = span.begin; k < span.end; ++k) {
+        range.displacement = std::max(range.displacement, std::abs(test.displacement[k]));
+        if (k > 0 && test.time[k] > test.time[k - 1]) {
+          range.velocity =
+              std::max(range.velocity, std::abs(test.displacement[k] - test.displacement[k - 1]) /
+                                           (test.time[k] - test.time[k - 1]));
+        }
+      }
+    }
+    // Every half-cycle starts at a reversal, and the last one also ends at one.
+    for (const CycleSpan& half : test.half_cycles) reversals += fitted(half.begin) ? 1 : 0;
+    if (!test.half_cycles.empty() && fitted(test.half_cycles.back().end - 1)) ++reversals;
+  }
+  range.cycles = 0.5 * static_cast<double>(reversals);
+  return range;
+}
+
 FitError ComputeFitError(const hysteresis::ParallelAssembly& assembly, const FitData& data) {
   FitError error;
   const auto forces = SimulateForces(assembly, data.tests, data.one_specimen);

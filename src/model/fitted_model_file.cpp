@@ -26,8 +26,19 @@ std::string FittedModelText(const FittedModel& model) {
   std::ostringstream out;
   for (const std::string& line : model.comment) fmt::print(out, "# {}\n", line);
   fmt::print(out, "description: {}\n", Quoted(model.description));
-  fmt::print(out, "units: {{force: {}, length: {}, time: {}}}\nisolation:\n  components:\n",
-             model.units.force(), model.units.length(), model.units.time());
+  fmt::print(out, "units: {{force: {}, length: {}, time: {}}}\nisolation:\n", model.units.force(),
+             model.units.length(), model.units.time());
+  if (model.range) {
+    std::vector<std::string> names;
+    for (const std::string& name : model.range->data) names.push_back(Quoted(name));
+    fmt::print(out,
+               "  identified_range: {{displacement: {:.9g}, velocity: {:.9g}, cycles: {:g}, "
+               "data: [{}]}}  # {}, {}/{}\n",
+               model.range->displacement, model.range->velocity, model.range->cycles,
+               fmt::join(names, ", "), model.units.length(), model.units.length(),
+               model.units.time());
+  }
+  fmt::print(out, "  components:\n");
   for (std::size_t c = 0; c < model.components.size(); ++c) {
     const auto type = model.components[c].type;
     const auto keys = hysteresis::ParameterKeys(type, hysteresis::ParameterForm::kMathematical);

@@ -39,6 +39,34 @@ std::string CycleTo(const std::string& other) {
   return {};
 }
 
+// `identified_range` at key path `path`, in the model's units.
+identification::IdentifiedRange ReadIdentifiedRange(const YamlReader& reader,
+                                                    const YAML::Node& node, const std::string& path,
+                                                    const UnitSystem& units) {
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"displacement", "velocity", "cycles", "data"});
+  identification::IdentifiedRange range;
+  range.displacement = ReadPositive(reader, node, path, "displacement", dimension::kLength, units);
+  range.velocity = ReadPositive(reader, node, path, "velocity", dimension::kVelocity, units);
+  const std::string cycles_path = ChildPath(path, "cycles");
+  const YAML::Node cycles = reader.Require(node, path, "cycles");
+  range.cycles = reader.ReadNumber(cycles, cycles_path);
+  if (!(range.cycles >= 0.0)) {
+    reader.Fail(cycles, cycles_path,
+                fmt::format("{:g} (expected a number of cycles >= 0)", range.cycles));
+  }
+  const std::string data_path = ChildPath(path, "data");
+  const YAML::Node data = reader.Require(node, path, "data");
+  reader.RequireSequence(data, data_path);
+  if (data.size() == 0) {
+    reader.Fail(data, data_path, "the list is empty; name the tests the laws were identified on");
+  }
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    range.data.push_back(reader.ReadString(data[i], IndexPath(data_path, i)));
+  }
+  return range;
+}
+
 }  // namespace
 
 int ReadBearingCount(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
@@ -63,10 +91,12 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
                                            const std::filesystem::path& directory,
                                            const UnitSystem& units,
                                            std::vector<std::string>* included_files,
-                                           BearingGroup* group) {
+                                           BearingGroup* group,
+                                           std::optional<identification::IdentifiedRange>* range) {
   reader.RequireMap(isolation, path);
   if (group) {
-    reader.CheckKeys(isolation, path, {"components", "file", "count", "name", "modification"});
+    reader.CheckKeys(isolation, path,
+                     {"components", "file", "count", "name", "modification", "identified_range"});
     if (isolation["count"]) {
       group->count = ReadBearingCount(reader, isolation["count"], ChildPath(path, "count"));
     }
@@ -78,9 +108,14 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
       group->name = reader.ReadString(isolation["name"], ChildPath(path, "name"));
     }
   } else {
-    reader.CheckKeys(isolation, path, {"components", "file"});
+    reader.CheckKeys(isolation, path, {"components", "file", "identified_range"});
   }
   if (!isolation["file"]) {
+    if (isolation["identified_range"]) {
+      const auto read = ReadIdentifiedRange(reader, isolation["identified_range"],
+                                            ChildPath(path, "identified_range"), units);
+      if (range) *range = read;
+    }
     const YAML::Node components = reader.Require(isolation, path, "components");
     hysteresis::ParallelAssembly laws =
         ReadAssembly(reader, components, ChildPath(path, "components"), units);
@@ -93,6 +128,10 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
   if (isolation["modification"]) {
     reader.Fail(isolation["modification"], ChildPath(path, "modification"),
                 "modifies the components given here, not those of a file (copy them here)");
+  }
+  if (isolation["identified_range"]) {
+    reader.Fail(isolation["identified_range"], ChildPath(path, "identified_range"),
+                "is the range of the components given here; the file's laws carry their own");
   }
   // The isolation section of another model file (e.g. one written by isolab fit), relative to
   // the file that names it; in the same units, since its numbers are read in its own.
@@ -116,6 +155,8 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
                             included.units.force(), included.units.length(), included.units.time(),
                             units.force(), units.length(), units.time()));
   }
+  // The units agree (above), so the file's range is in this model's units as it stands.
+  if (range) *range = included.identified_range;
   if (included_files) {
     included_files->push_back(other);
     included_files->insert(included_files->end(), included.included_files.begin(),

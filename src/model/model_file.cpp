@@ -336,7 +336,7 @@ ModelFile LoadModelText(const std::string& text, const std::string& path) {
     BearingGroup group;
     model.isolation = ReadIsolation(reader, root["isolation"], "isolation",
                                     std::filesystem::path(path).parent_path(), model.units,
-                                    &model.included_files, &group);
+                                    &model.included_files, &group, &model.identified_range);
     model.isolation_count = group.count;
     model.isolation_name = group.name;
     if (!group.modification.empty()) {

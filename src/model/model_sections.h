@@ -31,13 +31,13 @@ struct BearingGroup {
 // `{components: [...]}` or `{file: other.yaml}` (relative to `directory`, in the same `units`), at
 // key path `path` ("isolation", "variants[2].isolation"). The files it reads are appended to
 // `included_files` when given. With `group`, the keys `count` (>= 1), `name` and `modification`
-// are also read into it.
-hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML::Node& isolation,
-                                           const std::string& path,
-                                           const std::filesystem::path& directory,
-                                           const UnitSystem& units,
-                                           std::vector<std::string>* included_files = nullptr,
-                                           BearingGroup* group = nullptr);
+// are also read into it. The range the laws were identified on (`identified_range`, or the
+// file's) goes to `range` when given.
+hysteresis::ParallelAssembly ReadIsolation(
+    const YamlReader& reader, const YAML::Node& isolation, const std::string& path,
+    const std::filesystem::path& directory, const UnitSystem& units,
+    std::vector<std::string>* included_files = nullptr, BearingGroup* group = nullptr,
+    std::optional<identification::IdentifiedRange>* range = nullptr);
 
 // A count of bearings at `map[key]`: a whole number >= 1 (0 is a located error).
 int ReadBearingCount(const YamlReader& reader, const YAML::Node& node, const std::string& path);

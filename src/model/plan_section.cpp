@@ -320,7 +320,9 @@ std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t 
                      hysteresis::LawName(laws.components()[c].parameters.type()));
 }
 
-void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws) {
+void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws,
+                      std::optional<identification::IdentifiedRange> range) {
+  model->identified_range = std::move(range);
   if (!model->structure || model->structure->kind != StructureSection::Kind::kPlanBuilding) {
     model->isolation = laws;
     return;

@@ -123,8 +123,10 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
                               "needs",
                               building.path));
     }
+    std::optional<identification::IdentifiedRange> range;
     const hysteresis::ParallelAssembly laws =
-        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units);
+        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units, nullptr,
+                      nullptr, &range);
     const std::size_t c = FirstWithoutCoupledForm(laws);
     if (structure.kind == StructureSection::Kind::kPlanBuilding && c < laws.size()) {
       reader.Fail(node["isolation"], isolation_path,
@@ -133,7 +135,7 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
                               NoCoupledForm(laws, c)));
     }
     variant.model = building;
-    ReplaceIsolation(&variant.model, laws);
+    ReplaceIsolation(&variant.model, laws, std::move(range));
     variant.model.text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
   } else {
     variant.model = building;

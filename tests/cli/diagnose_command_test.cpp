@@ -5,9 +5,12 @@
 // message), and bad input is located with exit code 2 and no report.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "cli/run_isolab.h"
@@ -83,6 +86,18 @@ TEST(DiagnoseCommand, NamesCyclicDegradationAndWritesReportAndModel) {
   const std::string model = stem.string() + ".model.yaml";
   const auto cyclic = RunIsolab("cyclic " + model + " -a 100 --json");
   EXPECT_EQ(cyclic.exit_code, 0) << cyclic.output;
+  // The model carries the range of the 12 sinusoidal tests it was diagnosed on, in closed form:
+  // the largest amplitude, 200 mm; the fastest, 200 mm at T = 0.5 s with 200 samples a cycle,
+  // whose backward differences peak at A sin(2 pi / 200) / dt; 3 cycles each.
+  std::ifstream written(model);
+  const std::string yaml((std::istreambuf_iterator<char>(written)), {});
+  const std::string opening = "identified_range: {displacement: 200, velocity: ";
+  const std::size_t at = yaml.find(opening);
+  ASSERT_NE(at, std::string::npos) << yaml;
+  const double velocity = std::stod(yaml.substr(at + opening.size()));
+  const double fastest = 200 * std::sin(2 * std::numbers::pi / 200) / (0.5 / 200);
+  EXPECT_NEAR(velocity, fastest, 1e-7 * fastest);
+  EXPECT_NE(yaml.find(", cycles: 36, data: [\"u=10_T=2\", ", at), std::string::npos) << yaml;
 }
 
 TEST(DiagnoseCommand, NullCaseNamesNone) {

@@ -3,12 +3,15 @@
 // fit, and bad data gives a located message with exit code 2.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "isolab/model/model_file.h"
 #include "own_test_file.h"
 
 namespace {
@@ -69,6 +72,52 @@ TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
   const auto run = RunIsolab("run " + building.string() + " --json -o " +
                              (fitted.parent_path() / "building.h5").string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
+}
+
+// The fitted model carries the range of the samples the fit saw. A sinusoidal test u = A sin(2 pi
+// t / T) of N cycles, S samples a cycle, has, in closed form: peak |u| = A (S a multiple of 4
+// samples the crests), peak |v| = 2 pi A / T, which the backward differences the fit drives the
+// laws with reach as A sin(2 pi / S) / dt (the difference across a zero crossing), and 2 N
+// reversals: N cycles. Fitting cycles 2 and 3 only sees two.
+TEST(FitCommand, TheFittedModelCarriesTheRangeOfTheDataTheFitSaw) {
+  const double amplitude = 80.0, period = 1.6;  // mm, s
+  const int cycles = 3, steps = 400;
+  const auto csv = TemporaryFile("sine.csv");
+  const auto generate = RunIsolab("cyclic " + Data("three_laws.yaml") + " -a 80 -T 1.6 -n 3 " +
+                                  "--steps-per-cycle 400 --test-data " + csv.string());
+  ASSERT_EQ(generate.exit_code, 0) << generate.output;
+  const double dt = period / steps;
+  const double closed_form = 2 * std::numbers::pi * amplitude / period;
+  const double sampled = amplitude * std::sin(2 * std::numbers::pi / steps) / dt;
+  // The differences fall short of the derivative by (2 pi / S)^2 / 6, 4e-5 here.
+  EXPECT_NEAR(sampled / closed_form, 1.0, 5e-5);
+  struct Case {
+    std::string cycles;
+    double expected_cycles;
+  };
+  for (const Case& c : {Case{"", double(cycles)}, Case{"--cycles 2 --cycles 3", 2.0}}) {
+    const auto fitted = TemporaryFile("sine_fitted.yaml");
+    const auto run = RunIsolab("fit " + csv.string() + " --model " + Data("three_laws_spec.yaml") +
+                               " --budget 600 --json -q -o " + fitted.string() + " " + c.cycles);
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const auto json = nlohmann::json::parse(run.output);
+    const auto& range = json["identified_range"];
+    EXPECT_NEAR(range["displacement"].get<double>(), amplitude, 1e-9 * amplitude) << c.cycles;
+    // The data file holds 9 significant digits: a difference of two samples keeps about 8.
+    EXPECT_NEAR(range["velocity"].get<double>(), sampled, 1e-7 * sampled) << c.cycles;
+    EXPECT_NEAR(range["velocity"].get<double>(), closed_form, 5e-5 * closed_form) << c.cycles;
+    EXPECT_EQ(range["cycles"].get<double>(), c.expected_cycles) << c.cycles;
+    ASSERT_EQ(json["e2_per_test"].size(), 1u);
+    const std::string test = json["e2_per_test"].begin().key();
+    EXPECT_EQ(range["data"], nlohmann::json::array({test}));
+    // The file says the same, to the digits it is written with, and reads back.
+    const isolab::model::ModelFile model = isolab::model::LoadModelFile(fitted.string());
+    ASSERT_TRUE(model.identified_range) << c.cycles;
+    EXPECT_NEAR(model.identified_range->displacement, amplitude, 1e-8 * amplitude);
+    EXPECT_NEAR(model.identified_range->velocity, sampled, 1e-7 * sampled);
+    EXPECT_EQ(model.identified_range->cycles, c.expected_cycles);
+    EXPECT_EQ(model.identified_range->data, std::vector<std::string>{test});
+  }
 }
 
 TEST(FitCommand, AFixedSeedReproducesTheFitAndNoiseSetsTheFloor) {

@@ -22,6 +22,7 @@
 #include "isolab/core/units.h"
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/hysteresis/plan_assembly.h"
+#include "isolab/identification/cyclic_data.h"
 #include "isolab/structure/layout.h"
 
 namespace isolab::analysis {
@@ -89,5 +90,11 @@ hysteresis::Vec2 SecantStiffness(const hysteresis::PlanAssembly& assembly, doubl
 // The warning for a peak isolator displacement beyond any bearing, or empty (lengths in the
 // model's units).
 std::string IsolatorDisplacementWarning(double peak, const UnitSystem& units);
+
+// The warning for a run whose peak isolator displacement or velocity (|u|, |du/dt|: the resultant
+// in plan) goes beyond the range its isolation was identified on, with how far, or empty (in the
+// model's units). Beyond that range the fitted laws extrapolate.
+std::string IdentifiedRangeWarning(const identification::IdentifiedRange& range,
+                                   double displacement, double velocity, const UnitSystem& units);
 
 }  // namespace isolab::analysis

@@ -36,6 +36,10 @@ struct ResponsePeaks {
   std::vector<Peak> isolator_displacements, isolator_forces;
   // The largest of them (index: the isolator); absent (index -1) without isolators.
   Peak isolator_displacement, isolator_force;
+  // Per isolator, the peak of |du/dt| (the resultant in plan), and the largest: what a run is
+  // compared with the range its isolation was identified on (model::ModelFile::identified_range).
+  std::vector<Peak> isolator_velocities;
+  Peak isolator_velocity;
   Peak base_shear;                  // the force into the ground
   Peak first_story_shear;           // the lowest story's (absent without stories)
   Peak roof_absolute_acceleration;  // the top level's
@@ -93,6 +97,8 @@ class PeakTracker final : public integrators::ResponseObserver {
   // An isolator's deformation (x, y; y = 0 in one direction) and force at a row.
   hysteresis::Vec2 IsolatorDisplacement(std::size_t isolator,
                                         const integrators::ResponseRow& row) const;
+  hysteresis::Vec2 IsolatorVelocity(std::size_t isolator,
+                                    const integrators::ResponseRow& row) const;
   hysteresis::Vec2 IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const;
   hysteresis::Vec2 StoryDrift(std::size_t story, const integrators::ResponseRow& row) const;
   hysteresis::Vec2 StoryShear(std::size_t story, const integrators::ResponseRow& row) const;

@@ -42,6 +42,18 @@ struct CyclicTestData {
   std::vector<CycleSpan> half_cycles;
 };
 
+// The range of the data a fit saw, so that a run of the fitted model can say when it goes beyond
+// it (a law identified on one amplitude extrapolates at another). Displacement and velocity are
+// the deformation's, so for a layer of equal bearings in one direction the same for the layer and
+// for each bearing.
+struct IdentifiedRange {
+  double displacement = 0.0;      // peak |u| over the fitted samples (length)
+  double velocity = 0.0;          // peak |v| there, v by backward differences as the fit drives the
+                                  // model (length/time)
+  double cycles = 0.0;            // reversals within the fitted samples / 2 (two a cycle)
+  std::vector<std::string> data;  // the tests' names
+};
+
 // Splits a displacement history into whole cycles (CyclicTestData::cycles).
 std::vector<CycleSpan> SplitCycles(const std::vector<double>& displacement);
 

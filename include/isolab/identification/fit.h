@@ -42,6 +42,10 @@ FitData SelectCycles(std::vector<CyclicTestData> tests, const std::vector<int>& 
 
 DataScales ScalesOf(const FitData& data);
 
+// The range of the fitted samples of every test (IdentifiedRange): the half-cycles' reversals of
+// the tests' segmentation that lie within a fitted span are counted.
+IdentifiedRange RangeOf(const FitData& data);
+
 struct FitError {
   double total = 0.0;            // the paper's e^2, the sum of per_test
   std::vector<double> per_test;  // each test's term

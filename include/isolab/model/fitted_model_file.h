@@ -2,10 +2,12 @@
 // parameters) that `isolab run`, `isolab cyclic` and `isolation: {file: ...}` read back.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "isolab/core/units.h"
+#include "isolab/identification/cyclic_data.h"
 #include "isolab/identification/parametrisation.h"
 
 namespace isolab::model {
@@ -17,6 +19,9 @@ struct FittedModel {
   std::vector<identification::ComponentSpec> components;  // names and types
   std::vector<std::vector<double>> mathematical;          // per component, ParameterKeys order
   std::string specification;  // the file the components were asked for in, for messages
+  // The range of the data the fit saw (identification::RangeOf), in `units`: written as
+  // isolation.identified_range (model_file.h).
+  std::optional<identification::IdentifiedRange> range;
 };
 
 // Written atomically (a temporary file renamed), so a failure leaves no half-written file. The

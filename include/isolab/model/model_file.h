@@ -13,6 +13,14 @@
 //       - {name: c2, type: thm2, ke: "1 kN/mm", kh1: 0.2, kh2: 0.05, fs: 16, uc: 120}
 //     modification: {c1: {k0: {testing: [0.9, 1.1], ageing: [1, 1.2], specification: [0.9,
 //                    1.1]}}}                         # property_modification.h, bounds.h
+//     identified_range: {displacement: 108.5, velocity: 338.7, cycles: 69.5, data: [ica50]}
+//                                                    # optional, written by isolab fit and
+//                                                    # diagnose: the range of the data the laws
+//                                                    # were identified on (peak |u|, peak |v|,
+//                                                    # cycles, the tests' names); a run beyond it
+//                                                    # warns. The deformation of one bearing,
+//                                                    # which in one direction is the layer's too.
+//                                                    # Through `file:` the included file's range.
 //   structure:                                       # one direction (structure_section.cpp)
 //     type: sdof                                     # mass, damping: {ratio | coefficient}
 //     type: shear_building                           # stories (list, uniform, or none: a slab
@@ -51,6 +59,7 @@
 #include "isolab/core/units.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/parallel_assembly.h"
+#include "isolab/identification/cyclic_data.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/model/output_selection.h"
@@ -153,6 +162,11 @@ struct ModelFile {
   // plan.isolators[i].modification): what bounds.h turns into upper- and lower-bound models. A
   // run uses the nominal properties.
   std::vector<BearingModification> modifications;
+  // The range of the data the isolation's laws were identified on (isolation.identified_range,
+  // or that of the file it names), in the model's units: a run beyond it warns
+  // (analysis::IdentifiedRangeWarning). Absent for laws given without one, and for a plan
+  // model's own isolators, whose laws are given in place.
+  std::optional<identification::IdentifiedRange> identified_range;
   std::optional<StructureSection> structure;
   ExcitationSection excitation;
   std::optional<AxialLoadSection> axial_load;
@@ -181,8 +195,10 @@ std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws);
 std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t c);
 
 // The model with `laws` as its isolation (a study's isolation variant): a one-direction model's
-// isolation layer, or every isolator of a plan model as a coupled law. Throws
+// isolation layer, or every isolator of a plan model as a coupled law, identified on `range`
+// (none: the laws carry no range, and the replaced laws' range goes with them). Throws
 // std::invalid_argument (NoCoupledForm) for a plan model and a law without a coupled form.
-void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws);
+void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws,
+                      std::optional<identification::IdentifiedRange> range = std::nullopt);
 
 }  // namespace isolab::model
