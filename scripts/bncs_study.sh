@@ -43,7 +43,7 @@ fi
 overlays=("$out/lac100_thm1_comparison.csv")
 if [[ -f models/bncs/bncs_diagnosed.fitted.yaml ]]; then
   for motion in ica50 lac100; do
-    build/isolab shaketable "$out/bncs_$motion.csv" --model models/bncs/bncs_diagnosed.yaml \
+    build/isolab shaketable "$out/bncs_$motion.csv" --model models/bncs/bncs_isolation_diagnosed.yaml \
       --predict -q --results "$out/${motion}_diagnosed.h5" \
       --comparison "$out/${motion}_diagnosed_comparison.csv" > "$out/${motion}_diagnosed_prediction.txt"
   done

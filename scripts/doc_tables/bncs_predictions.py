@@ -18,7 +18,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-MODELS = ("models/bncs/bncs.yaml", "models/bncs/bncs_thm1.yaml", "models/bncs/bncs_diagnosed.yaml")
+MODELS = ("models/bncs/bncs.yaml", "models/bncs/bncs_thm1.yaml", "models/bncs/bncs_isolation_diagnosed.yaml")
 # the page's first and last headers per motion (LAC100 predicted, ICA50 refitted in-sample)
 HEADERS = {"lac100": ("LAC100", "diagnosed (below)"), "ica50": ("ICA50 (in-sample)", "diagnosed")}
 G = 9806.65  # mm/s^2: the page gives accelerations in g

@@ -12,6 +12,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/spectral.h"
+#include "isolab/identification/fit.h"
 #include "isolab/identification/parametrisation.h"
 
 namespace isolab::analysis {
@@ -276,6 +277,19 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
     result.parameters.push_back({coordinates.names[q], starts[q], values[q], range.low, range.high,
                                  range.log, sd[p], best[q] < 1e-3 || best[q] > 1.0 - 1e-3});
   }
+  // The range the isolation was identified on: the slab's motion relative to the table over the
+  // motions fitted, as a cyclic-test fit reads its data.
+  std::vector<identification::CyclicTestData> slab;
+  for (const BuildingMotion& motion : motions) {
+    identification::CyclicTestData& test = slab.emplace_back();
+    test.name = motion.name;
+    test.time = motion.measured.time;
+    test.displacement = motion.measured.displacement.front();
+    test.force.assign(test.time.size(), 0.0);
+    identification::Segment(&test);
+  }
+  result.fitted.identified_range =
+      identification::RangeOf(identification::SelectCycles(std::move(slab), {}));
   model::ParameterUncertainty& uncertainty = result.fitted.uncertainty.emplace();
   uncertainty.names = coordinates.names;
   uncertainty.values = values;

@@ -126,6 +126,12 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
       json["not_separated"].push_back(
           {{"a", pair.a}, {"b", pair.b}, {"correlation", pair.correlation}});
     }
+    if (const auto& range = result.fitted.identified_range) {
+      json["identified_range"] = {{"displacement", range->displacement},
+                                  {"velocity", range->velocity},
+                                  {"cycles", range->cycles},
+                                  {"data", range->data}};
+    }
     json["objective_start"] = result.objective_start;
     json["objective"] = result.objective;
     json["samples"] = result.samples;

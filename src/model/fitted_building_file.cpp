@@ -56,6 +56,15 @@ std::string FittedBuildingText(const ModelFile& fitted, const std::string& note)
       isolation["count"] = *fitted.isolation_count;
       isolation["name"] = fitted.isolation_name;
     }
+    if (fitted.identified_range) {
+      const identification::IdentifiedRange& range = *fitted.identified_range;
+      YAML::Node node;
+      node["displacement"] = Number(range.displacement);
+      node["velocity"] = Number(range.velocity);
+      node["cycles"] = Number(range.cycles);
+      for (const std::string& name : range.data) node["data"].push_back(name);
+      isolation["identified_range"] = Flow(node);
+    }
     isolation["components"] = Components(fitted.isolation);
     root["isolation"] = isolation;
   }

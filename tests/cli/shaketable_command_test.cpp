@@ -155,7 +155,8 @@ TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack
 // post-yield stiffness and the stories' stiffness come back to what made the data, and the fitted
 // model's prediction carries a band drawn from its uncertainty.
 TEST(ShakeTableCommand, FitBuildingRecoversAKnownBuildingAndItsPredictionCarriesABand) {
-  const auto data = WriteShakeTable(WriteBuilding(), "fit_building");
+  Matrix u;
+  const auto data = WriteShakeTable(WriteBuilding(), "fit_building", nullptr, &u);
   const auto start = Scratch("start.yaml");
   std::ofstream(start) << "units: {force: kN, length: mm, time: s}\n"
                           "structure:\n  type: shear_building\n  base_mass: 30 t\n"
@@ -175,6 +176,10 @@ TEST(ShakeTableCommand, FitBuildingRecoversAKnownBuildingAndItsPredictionCarries
   const auto json = nlohmann::json::parse(fit.output);
   EXPECT_NEAR(json["parameters"][0]["value"].get<double>(), 0.4, 1e-3 * 0.4);
   EXPECT_NEAR(json["parameters"][1]["value"].get<double>(), 60.0, 1e-3 * 60.0);
+  // The range the isolation was identified on: the slab's peak displacement in the data.
+  double peak_slab = 0.0;
+  for (std::size_t r = 0; r < u.rows; ++r) peak_slab = std::max(peak_slab, std::abs(u(r, 0)));
+  EXPECT_NEAR(json["identified_range"]["displacement"].get<double>(), peak_slab, 1e-6 * peak_slab);
   for (const auto& channel : json["channels"]) {
     EXPECT_LT(channel["nrmse"].get<double>(), 1e-3) << channel["channel"];
     EXPECT_GT(channel["nrmse_start"].get<double>(), 0.05) << channel["channel"];

@@ -10,7 +10,7 @@ namespace isolab::model {
 
 // The text of `fitted` (a one-direction shear building whose values a fit changed; its `text` the
 // model it started from): its isolation written inline (components in mathematical parameters,
-// the layer's name and count kept), its stories as a list of masses and stiffnesses, its base
+// the layer's name and count kept, with its identified range), its stories as a list of masses and stiffnesses, its base
 // mass, its modal damping ratios, and its `uncertainty`, each number to nine digits. The text is
 // read back first: a model the readers would refuse is an InputError naming `fitted.path`.
 // `note` is written as the description's ending ("identified by ...").
