@@ -41,17 +41,8 @@ class ChannelRecorder final : public integrators::ResponseObserver {
 // The measured table acceleration (sampled at `dt`) as the run's record, from rest, with no free
 // vibration after it.
 RunOverrides TableMotion(const model::ModelFile& model, const Signal& acceleration, double dt) {
-  RecordOverride table;
-  table.name = "the table's acceleration";
-  io::Record& record = table.data.emplace();
-  record.path = "table acceleration (measured)";
-  record.format = "shake-table data";
-  record.units = DescribeUnits(model.units, dimension::kAcceleration);
-  record.units_source = "the shake-table data";
-  record.dt = model.units.SiFactor(dimension::kTime) * dt;
-  record.values = acceleration;
   RunOverrides overrides;
-  overrides.records.push_back(std::move(table));
+  overrides.records.push_back(TableRecord(model.units, acceleration, dt));
   overrides.dt = dt;
   overrides.free_vibration = model::FreeVibration{false, 0.0};
   return overrides;
@@ -71,10 +62,6 @@ std::vector<Signal> Run(const model::ModelFile& model, const Signal& acceleratio
 }
 
 }  // namespace
-
-double SampleStep(const BuildingMeasurements& measured) {
-  return (measured.time.back() - measured.time.front()) / double(measured.time.size() - 1);
-}
 
 std::string BuildingChannel::Name() const {
   return fmt::format("{}{}", kind == Kind::kDisplacement ? 'd' : 'a', level);

@@ -50,6 +50,24 @@ std::vector<double> LevelMasses(const model::ModelFile& model) {
   return masses;
 }
 
+double SampleStep(const BuildingMeasurements& measured) {
+  return (measured.time.back() - measured.time.front()) /
+         static_cast<double>(measured.time.size() - 1);
+}
+
+RecordOverride TableRecord(const UnitSystem& units, const Signal& acceleration, double dt) {
+  RecordOverride table;
+  table.name = "the table's acceleration";
+  io::Record& record = table.data.emplace();
+  record.path = "table acceleration (measured)";
+  record.format = "shake-table data";
+  record.units = DescribeUnits(units, dimension::kAcceleration);
+  record.units_source = "the shake-table data";
+  record.dt = units.SiFactor(dimension::kTime) * dt;
+  record.values = acceleration;
+  return table;
+}
+
 Signal BaseShear(const std::vector<Signal>& acceleration, const std::vector<double>& masses) {
   Signal shear(acceleration.front().size(), 0.0);
   for (std::size_t l = 0; l < masses.size(); ++l) {
@@ -77,19 +95,9 @@ ShakeTablePrediction PredictShakeTable(const model::ModelFile& model,
                                        const SolveOptions& options) {
   const std::vector<double> masses = LevelMasses(model);
   // The table's motion as a record in the model's acceleration unit, from its first sample.
-  RecordOverride table;
-  table.name = "the table's acceleration";
-  io::Record& record = table.data.emplace();
-  record.path = "table acceleration (measured)";
-  record.format = "shake-table data";
-  record.units = DescribeUnits(model.units, dimension::kAcceleration);
-  record.units_source = "the shake-table data";
-  record.dt = model.units.SiFactor(dimension::kTime) *
-              (measured.time.back() - measured.time.front()) /
-              static_cast<double>(measured.time.size() - 1);
-  record.values = measured.table_acceleration;
   RunOverrides overrides;
-  overrides.records.push_back(std::move(table));
+  overrides.records.push_back(
+      TableRecord(model.units, measured.table_acceleration, SampleStep(measured)));
   const Problem problem = Prepare(model, overrides);
 
   integrators::ResponseHistory history;

@@ -16,9 +16,6 @@ struct BuildingMotion {
   BuildingMeasurements measured;  // model units; levels from the slab to the roof
 };
 
-// The measurements' sampling step (time): their span over the intervals.
-double SampleStep(const BuildingMeasurements& measured);
-
 // A measured channel: level 1 is the isolation slab, the last the roof.
 struct BuildingChannel {
   enum class Kind { kDisplacement, kAcceleration } kind = Kind::kDisplacement;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/model/model_file.h"
 
@@ -25,6 +26,13 @@ struct BuildingMeasurements {
 // Each level's mass, bottom to roof, of a model standing on isolators in one direction. Throws
 // InputError (naming the model) for any other.
 std::vector<double> LevelMasses(const model::ModelFile& model);
+
+// The measurements' sampling step (time): their span over the intervals.
+double SampleStep(const BuildingMeasurements& measured);
+
+// The table's measured acceleration (in the model's units, sampled every `dt` of its time unit)
+// as a run's record.
+RecordOverride TableRecord(const UnitSystem& units, const Signal& acceleration, double dt);
 
 // Minus the sum over levels of mass x absolute acceleration: the force the isolators carry.
 Signal BaseShear(const std::vector<Signal>& acceleration, const std::vector<double>& masses);
