@@ -32,6 +32,9 @@ predict() {  # model, motion
 for motion in ica50 lac100; do
   for fitted in ica50 lac100 ica50_lac100 lac100_ica50; do predict "$out/fit_$fitted.yaml" "$motion"; done
 done
+/usr/bin/python3 scripts/plot_shaketable.py overlay "$out/fit_ica50_on_lac100.csv" \
+  -o docs/images/bncs_building_lac100.png \
+  --title "LAC100 predicted by the building identified from ICA50, with its 5-95 % band"
 objective() { sed -n 's/^mean NRMSE^2 over [0-9]* channels: [^ ]* -> \([^ ]*\)$/\1/p' "$1"; }
 first=ica50_lac100
 if awk -v a="$(objective "$out/fit_lac100_ica50.txt")" -v b="$(objective "$out/fit_ica50_lac100.txt")" \

@@ -48,6 +48,13 @@ def overlay(args, plt, np):
             axes[1].plot(t, data["roof_acceleration_measured"] / 9806.65, "k", linewidth=0.7,
                          label="measured")
         colour = colours[i % len(colours)]
+        if "isolator_displacement_p5" in data.dtype.names:  # a band from --samples
+            axes[0].fill_between(t, data["isolator_displacement_p5"],
+                                 data["isolator_displacement_p95"], color=colour, alpha=0.3,
+                                 linewidth=0, label=f"5-95 % band: {label}")
+            axes[1].fill_between(t, data["roof_acceleration_p5"] / 9806.65,
+                                 data["roof_acceleration_p95"] / 9806.65, color=colour, alpha=0.3,
+                                 linewidth=0)
         axes[0].plot(t, data["isolator_displacement_predicted"], colour, linewidth=0.7,
                      label=f"predicted: {label}")
         axes[1].plot(t, data["roof_acceleration_predicted"] / 9806.65, colour, linewidth=0.5,
