@@ -10,6 +10,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/model/build_structure.h"
+#include "isolab/spectra/elastic_spectrum.h"
 
 namespace isolab::analysis {
 namespace {
@@ -101,7 +102,10 @@ std::vector<Component> ChooseComponents(const model::ModelFile& model,
       c.motion.dt = *overrides.record_dt;
       c.dt_given_by = overrides.dt_given_by;
     }
-    if (overrides.scale) c.motion.scale = *overrides.scale;
+    if (overrides.scale) {
+      c.motion.scale = *overrides.scale;
+      c.motion.target.reset();
+    }
   }
   return components;
 }
@@ -136,6 +140,35 @@ double FreeVibrationLength(const model::AnalysisSection& analysis, const RunOver
   return std::isfinite(period) ? kAutomaticFreeVibrationPeriods * period : 0.0;
 }
 
+// The factor that brings the record (`unscaled`, in model units) to `target`: PGA and Sa are both
+// proportional to the record, so it is the target over the record's own value.
+double TargetScale(const model::ScaleTarget& target, const model::GroundMotionSection& motion,
+                   const integrators::SampledHistory& unscaled) {
+  double measured = 0.0;
+  if (target.measure == model::ScaleTarget::Measure::kPga) {
+    for (const double a : unscaled.values) measured = std::max(measured, std::abs(a));
+  } else {
+    const double period = target.period, damping = target.damping;
+    try {
+      measured = spectra::ComputeElasticSpectrum(unscaled, {&period, 1}, {&damping, 1})
+                     .at(0, 0)
+                     .pseudo_acceleration;
+    } catch (const InvalidParameter& error) {
+      throw InputError(motion.location, fmt::format("{}.scale: {} (the record {})", motion.key,
+                                                    error.what(), motion.file));
+    }
+  }
+  if (!(measured > 0.0)) {
+    throw InputError(
+        motion.location,
+        fmt::format("{}.scale: the record {} has no motion to scale to {} (its {} is "
+                    "0)",
+                    motion.key, motion.file, target.text,
+                    target.measure == model::ScaleTarget::Measure::kPga ? "PGA" : "Sa"));
+  }
+  return target.value / measured;
+}
+
 }  // namespace
 
 io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
@@ -147,22 +180,26 @@ io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
   const io::Record record =
       data ? *data
            : io::ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});
-  double to_model = 0.0;
+  double unit = 0.0;  // the record's unit in the model's
   try {
-    to_model = units.Convert(motion.scale, record.units, dimension::kAcceleration);
+    unit = units.Convert(1.0, record.units, dimension::kAcceleration);
   } catch (const std::invalid_argument& error) {
     throw InputError({motion.file}, error.what());
   }
   acceleration->dt = units.Convert(record.dt, "s", dimension::kTime);
   acceleration->values.clear();
-  for (const double a : record.values) acceleration->values.push_back(a * to_model);
+  for (const double a : record.values) acceleration->values.push_back(a * unit);
+  const double scale =
+      motion.target ? TargetScale(*motion.target, motion, *acceleration) : motion.scale;
+  for (double& a : acceleration->values) a *= scale;
   return {motion.file,
           record.format,
           record.units,
           record.units_source,
           record.dt,
-          motion.scale,
-          record.Peak() * std::abs(to_model)};
+          scale,
+          record.Peak() * std::abs(unit) * scale,
+          motion.target ? motion.target->text : std::string()};
 }
 
 integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,
@@ -242,11 +279,21 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
         "needs a building in plan");
   }
   std::vector<integrators::SampledHistory> histories(components.size());
+  // A target scales the whole record by the one factor computed from h1 (model_file.h).
+  const auto h1_target = [&] { return !components.empty() && components[0].motion.target; };
+  const auto take_h1_scale = [&](Component* c) {
+    if (h1_target()) c->motion.scale = problem.records[0].scale;
+  };
+  const auto report_h1_scale = [&](io::AppliedRecord* applied) {
+    if (h1_target()) applied->scaled_to = problem.records[0].scaled_to + " of h1";
+  };
   for (std::size_t i = 0; i < components.size(); ++i) {
-    const Component& c = components[i];
+    Component& c = components[i];
+    if (i > 0) take_h1_scale(&c);
     problem.records.push_back(
         ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units, &histories[i], c.data));
     if (i == 0) continue;
+    report_h1_scale(&problem.records.back());
     const integrators::SampledHistory& h1 = histories[0];
     if (std::abs(histories[i].dt - h1.dt) > 1e-9 * h1.dt) {
       throw InputError(c.motion.location,
@@ -263,9 +310,11 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   problem.angle = angle;
   AddGroundMotion(histories, angle, layout, &problem.excitation);
   if (vertical) {
-    const Component& c = *vertical;
+    Component& c = *vertical;
+    take_h1_scale(&c);
     problem.vertical_record = ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
                                           &problem.excitation.vertical, c.data);
+    report_h1_scale(&*problem.vertical_record);
     if (histories.empty()) {
       throw InputError(
           c.motion.location,

@@ -29,10 +29,10 @@ void WriteComments(std::ostream& out, const RunDescription& run) {
   for (std::size_t i = 0; i < problem.records.size(); ++i) {
     const io::AppliedRecord& r = problem.records[i];
     fmt::print(out,
-               "# record{}: {} ({}, units {} from {}, dt {:g} s), scale {:g}, PGA {:.6g} {} "
+               "# record{}: {} ({}, units {} from {}, dt {:g} s), {}, PGA {:.6g} {} "
                "({:.4g} g)\n",
                problem.records.size() > 1 ? fmt::format(" h{}", i + 1) : "", r.path, r.format,
-               r.units, r.units_source, r.dt, r.scale, r.pga,
+               r.units, r.units_source, r.dt, io::DescribeScale(r), r.pga,
                DescribeUnits(units, dimension::kAcceleration), r.pga / g);
   }
   if (problem.layout.directions > 1) {

@@ -38,9 +38,13 @@ nlohmann::json ModesJson(const std::vector<Mode>& modes) {
 }
 
 nlohmann::json RecordJson(const io::AppliedRecord& r, double g) {
-  return {{"record", r.path},        {"scale", r.scale},
-          {"record_units", r.units}, {"record_units_source", r.units_source},
-          {"record_dt", r.dt},       {"pga", r.pga},
+  return {{"record", r.path},
+          {"scale", r.scale},
+          {"scaled_to", r.scaled_to},
+          {"record_units", r.units},
+          {"record_units_source", r.units_source},
+          {"record_dt", r.dt},
+          {"pga", r.pga},
           {"pga_g", r.pga / g}};
 }
 

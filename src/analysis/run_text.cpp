@@ -23,10 +23,10 @@ std::string JoinModes(const std::vector<Mode>& modes, std::size_t count, bool di
 void PrintRecord(const io::AppliedRecord& r, const std::string& label, const UnitSystem& u,
                  std::ostream& out) {
   const double g = u.Convert(1.0, "g", dimension::kAcceleration);
-  fmt::print(out, "{}: {} ({}, dt = {:g} s, in {} from {}), scale {:g}: PGA {:.4g} g ({:.5g} {})\n",
-             label, r.path, r.format, r.dt, r.units,
-             r.units_source == "header" ? "its header" : r.units_source, r.scale, r.pga / g, r.pga,
-             DescribeUnits(u, dimension::kAcceleration));
+  fmt::print(out, "{}: {} ({}, dt = {:g} s, in {} from {}), {}: PGA {:.4g} g ({:.5g} {})\n", label,
+             r.path, r.format, r.dt, r.units,
+             r.units_source == "header" ? "its header" : r.units_source, io::DescribeScale(r),
+             r.pga / g, r.pga, DescribeUnits(u, dimension::kAcceleration));
 }
 
 }  // namespace

@@ -134,7 +134,10 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
   command->add_option("--record-dt", options.record_dt,
                       "The record's sampling step (s), for a single-column record; must agree "
                       "with the file's when it gives one");
-  command->add_option("--scale", options.scale, "Scale factor of the ground motion, > 0")
+  command
+      ->add_option("--scale", options.scale,
+                   "Scale factor of the ground motion, > 0 (replaces the model's scale, a factor "
+                   "or a target)")
       ->check(Positive());
   command->add_option("--dt", options.dt, "Analysis step (model time unit), at most the record's");
   command

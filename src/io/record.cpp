@@ -353,6 +353,12 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   return record;
 }
 
+std::string DescribeScale(const AppliedRecord& record) {
+  return record.scaled_to.empty()
+             ? fmt::format("scale {:g}", record.scale)
+             : fmt::format("scale {:.6g} to {}", record.scale, record.scaled_to);
+}
+
 double Record::Peak() const {
   double peak = 0.0;
   for (const double value : values) peak = std::max(peak, std::abs(value));

@@ -10,6 +10,7 @@ void WriteRecordAttributes(Hdf5File& file, const AppliedRecord& record, double g
   file.WriteAttribute("/", name + "_units_source", record.units_source);
   file.WriteAttribute("/", name + "_dt", record.dt);
   file.WriteAttribute("/", name + "_scale", record.scale);
+  file.WriteAttribute("/", name + "_scaled_to", record.scaled_to);
   file.WriteAttribute("/", name + "_pga", record.pga);
   file.WriteAttribute("/", name + "_pga_g", record.pga / gravity);
 }

@@ -1,6 +1,9 @@
 // excitation (ground motion, applied forces) and analysis (step, duration, integrator options).
 #include <fmt/format.h>
 
+#include <cstdlib>
+#include <string_view>
+
 #include "isolab/core/errors.h"
 #include "model_sections.h"
 
@@ -18,6 +21,53 @@ void ValidateAt(const YamlReader& reader, const YAML::Node& node, const std::str
     throw InputError(reader.Locate(at.IsDefined() ? at : node),
                      fmt::format("{}.{}", path, error.violation().Describe()));
   }
+}
+
+// A quantity as the file gives it, for reports: its own text when it names a unit, else the
+// number with the model's unit.
+std::string AsGiven(const YAML::Node& node, Dimension dimension, const UnitSystem& units) {
+  const std::string text = node.Scalar();
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  const bool bare =
+      end != text.c_str() && std::string_view(end).find_first_not_of(" ") == std::string_view::npos;
+  return bare ? fmt::format("{} {}", text, DescribeUnits(units, dimension)) : text;
+}
+
+// `scale: {pga: 0.4 g}` or `scale: {sa: 0.6 g, period: 2.5 s, damping: 0.05}`.
+ScaleTarget ReadScaleTarget(const YamlReader& reader, const YAML::Node& node,
+                            const std::string& path, const UnitSystem& units) {
+  reader.CheckKeys(node, path, {"pga", "sa", "period", "damping"});
+  ScaleTarget target;
+  if (node["pga"] && node["sa"]) {
+    reader.Fail(node, path, "give one target, pga or sa, not both");
+  }
+  if (node["pga"]) {
+    for (const char* key : {"period", "damping"}) {
+      if (node[key]) {
+        reader.Fail(node[key], ChildPath(path, key),
+                    "goes with a target sa (pseudo-spectral acceleration), not with pga");
+      }
+    }
+    target.measure = ScaleTarget::Measure::kPga;
+    target.value = ReadPositive(reader, node, path, "pga", dimension::kAcceleration, units);
+    target.text = "PGA " + AsGiven(node["pga"], dimension::kAcceleration, units);
+    return target;
+  }
+  if (!node["sa"]) {
+    reader.Fail(node, path,
+                "a map gives the target the record is scaled to: {pga: 0.4 g} or "
+                "{sa: 0.6 g, period: 2.5 s, damping: 0.05}");
+  }
+  target.measure = ScaleTarget::Measure::kSa;
+  target.value = ReadPositive(reader, node, path, "sa", dimension::kAcceleration, units);
+  target.period = ReadPositive(reader, node, path, "period", dimension::kTime, units);
+  if (node["damping"])
+    target.damping = ReadRatio(reader, node["damping"], ChildPath(path, "damping"));
+  target.text =
+      fmt::format("Sa({}, {:g} %) {}", AsGiven(node["period"], dimension::kTime, units),
+                  100.0 * target.damping, AsGiven(node["sa"], dimension::kAcceleration, units));
+  return target;
 }
 
 }  // namespace
@@ -40,7 +90,9 @@ GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node&
                   fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
     }
   }
-  if (motion["scale"]) {
+  if (motion["scale"] && motion["scale"].IsMap()) {
+    ground.target = ReadScaleTarget(reader, motion["scale"], motion_path + ".scale", units);
+  } else if (motion["scale"]) {
     // As a study's scales, --scale and Python's scale=: 0 runs no excitation at all.
     ground.scale = reader.ReadNumber(motion["scale"], motion_path + ".scale");
     if (!(ground.scale > 0.0)) {
@@ -82,6 +134,25 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
       if (motion["v"]) {
         section.vertical =
             ReadGroundMotion(reader, motion["v"], ChildPath(motion_path, "v"), units);
+      }
+      // A target scales the whole record by one factor, computed from h1 (problem.h): the other
+      // components take that factor, and a second target or factor would contradict it.
+      for (const char* key : {"h2", "v"}) {
+        const YAML::Node scale = motion[key] ? motion[key]["scale"] : YAML::Node();
+        if (!scale) continue;
+        const std::string scale_path = ChildPath(ChildPath(motion_path, key), "scale");
+        if (scale.IsMap()) {
+          reader.Fail(scale, scale_path,
+                      fmt::format("a target scales the whole record by one factor, computed "
+                                  "from h1: give it as {}.h1.scale",
+                                  motion_path));
+        }
+        if (section.ground_motion[0].target) {
+          reader.Fail(scale, scale_path,
+                      fmt::format("{}.h1.scale is a target, whose factor scales every component: "
+                                  "give no scale here",
+                                  motion_path));
+        }
       }
       if (motion["angle"]) {
         section.angle = reader.ReadNumber(motion["angle"], ChildPath(motion_path, "angle"));

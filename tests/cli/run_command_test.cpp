@@ -320,6 +320,32 @@ TEST(RunCommand, AReplacedRecordKeepsItsOwnUnitsAndNotTheModelsScale) {
   EXPECT_GT(PeakIsolatorDisplacement(own), 10.0);
 }
 
+TEST(RunCommand, ARecordScaledToATargetReportsItsFactorEverywhere) {
+  const auto model = TemporaryFile("scaled.yaml");
+  std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
+                          "structure: {type: sdof, mass: 31.7 t, damping: {ratio: 0.0}}\n"
+                          "isolation: {components: [{name: k, type: linear_spring, k: 0.2}]}\n"
+                          "excitation:\n"
+                          "  ground_motion: {file: "
+                       << Source("ground_motions/elcentro_1940_ns.at2")
+                       << ", scale: {pga: 0.4 g}}\n"
+                          "analysis: {dt: 0.02, free_vibration: 0}\n";
+  const auto output = TemporaryFile("scaled.h5");
+  const auto json = RunJson("run " + model.string() + " -o " + output.string());
+  ASSERT_FALSE(json.is_null());
+  const double scale = json["scale"].get<double>();
+  EXPECT_EQ(json["scaled_to"], "PGA 0.4 g");
+  EXPECT_NEAR(json["pga_g"].get<double>(), 0.4, 1e-12);
+  const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(NumberAttribute(file, "record_scale").second, scale);
+  EXPECT_EQ(Utf8Attribute(file, "/", "record_scaled_to"), "PGA 0.4 g");
+  H5Fclose(file);
+  const auto text = RunIsolab("run " + model.string() + " -o " + output.string());
+  ASSERT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.output.find("to PGA 0.4 g: PGA 0.4 g"), std::string::npos) << text.output;
+}
+
 TEST(RunCommand, ModelSummaryIsPrintedAndImplausibleValuesWarned) {
   // Masses typed without a unit in a kN-mm model: 25,000 t a floor.
   const auto output = TemporaryFile("slip.h5");

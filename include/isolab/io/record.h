@@ -46,9 +46,15 @@ struct AppliedRecord {
   std::string units;         // of the file's values
   std::string units_source;  // "header", or who gave them
   double dt = 0.0;           // (s) the file's step
-  double scale = 1.0;
-  double pga = 0.0;  // peak |a_g| of the scaled record, in the analysis' acceleration unit
+  double scale = 1.0;        // the factor applied, given or computed for `scaled_to`
+  double pga = 0.0;          // peak |a_g| of the scaled record, in the analysis' acceleration unit
+  // The target the factor was computed for ("PGA 0.4 g", "Sa(2.5 s, 5 %) 0.6 g"); empty when
+  // the factor was given.
+  std::string scaled_to{};
 };
+
+// "scale 1.5", or with the target it was computed for: "scale 1.734 to PGA 0.4 g".
+std::string DescribeScale(const AppliedRecord& record);
 
 // Throws InputError (file:line: what) for unreadable, malformed, empty or non-finite records,
 // unknown units, and units or a step that disagree with the file's own.

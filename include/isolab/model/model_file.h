@@ -30,6 +30,10 @@
 //     footprint, base, stories, damping, isolators   # floors in plan, isolators at positions
 //   excitation:
 //     ground_motion: {file: rec.at2, units: g, scale: 1.0, dt: 0.01}      # one component, or
+//       scale: {pga: 0.4 g}                          # or scaled to a target (ScaleTarget): PGA,
+//       scale: {sa: 0.6 g, period: 2.5 s, damping: 0.05}   # or Sa at a period (damping 0.05
+//                                                    # if not given); in a pair, given on h1 only,
+//                                                    # and its one factor scales h1, h2 and v
 //     ground_motion: {h1: {file: ...}, h2: {file: ...}, angle: 0}         # a pair (plan models)
 //     ground_motion: {h1: {...}, h2: {...}, v: {file: ...}}               # with a vertical one
 //     forces: [{dof: 0, dt: 0.1, values: [...]}]
@@ -79,10 +83,27 @@ struct StructureSection {
   structure::PlanBuilding plan;         // building in plan, with its isolators
 };
 
+// What a record is scaled to, as design codes ask (`scale: {pga: 0.4 g}` or
+// `scale: {sa: 0.6 g, period: 2.5 s, damping: 0.05}`): the factor is the one that makes the
+// record's peak ground acceleration, or its pseudo-spectral acceleration at `period` and
+// `damping` (spectra/elastic_spectrum.h), equal `value`. Sa is linear in the record, so the
+// factor is value / Sa of the record as read.
+struct ScaleTarget {
+  enum class Measure { kPga, kSa };
+  Measure measure = Measure::kPga;
+  double value = 0.0;     // the target acceleration (model length/time^2), > 0
+  double period = 0.0;    // kSa: the oscillator's period (model time), > 0
+  double damping = 0.05;  // kSa: its damping ratio, in [0, 1)
+  std::string text;       // for reports, in the units given: "PGA 0.4 g", "Sa(2.5 s, 5 %) 0.6 g"
+};
+
 struct GroundMotionSection {
   std::string file;   // resolved against the model file's folder
   std::string units;  // empty: from the record's header
   double scale = 1.0;
+  // When given, the scale is computed from it (analysis/problem.h) and `scale` is not used. Only
+  // the record's first component (h1) carries one: its factor scales every component.
+  std::optional<ScaleTarget> target;
   double dt = 0.0;          // single-column records only
   std::string key;          // "excitation.ground_motion" (.h1, .h2), for messages about it
   SourceLocation location;  // where it is given
