@@ -135,14 +135,16 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   SetParameters(&base, coordinates.names, coordinates.Values(start));
 
   const ChannelHistories measured_raw = Measured(motions, channels);
-  const double dt = SampleStep(motions.front().measured);
-  const Band band(spec.band_low, spec.band_high, dt);
+  std::vector<Band> bands;  // per motion, at its own sampling step
+  for (const BuildingMotion& motion : motions) {
+    bands.emplace_back(spec.band_low, spec.band_high, SampleStep(motion.measured));
+  }
   ChannelHistories measured;
   std::vector<double> scale;  // per motion x channel: 1 / sum of squares of the measured
-  for (const auto& signals : measured_raw) {
+  for (std::size_t m = 0; m < motions.size(); ++m) {
     std::vector<Signal>& filtered = measured.emplace_back();
-    for (const Signal& x : signals) {
-      filtered.push_back(band(x));
+    for (const Signal& x : measured_raw[m]) {
+      filtered.push_back(bands[m](x));
       const double sum = SumOfSquares(filtered.back());
       if (!(sum > 0.0)) {
         throw InputError({model.path}, "a fitted channel is zero throughout (in the band)");
@@ -159,7 +161,7 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
     std::size_t i = 0;
     for (std::size_t m = 0; m < motions.size(); ++m) {
       for (std::size_t c = 0; c < channels.size(); ++c, ++i) {
-        Signal r = band(simulated[m][c]);
+        Signal r = bands[m](simulated[m][c]);
         const double weight = std::sqrt(scale[i]);
         for (std::size_t k = 0; k < r.size(); ++k) r[k] = (r[k] - measured[m][c][k]) * weight;
         out.push_back(std::move(r));
@@ -208,12 +210,12 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   }
 
   // Samples and their worth: each channel's samples over its residual's correlation time.
-  for (const Signal& x : r) {
-    const double n = double(x.size());
-    const double tau = diagnosis::IntegratedCorrelationTime(x);
+  for (std::size_t c = 0; c < r.size(); ++c) {
+    const double n = double(r[c].size());
+    const double tau = diagnosis::IntegratedCorrelationTime(r[c]);
     result.samples += n;
     result.effective_samples += n / tau;
-    result.correlation_time += n * tau * dt;
+    result.correlation_time += n * tau * SampleStep(motions[c / channels.size()].measured);
   }
   result.correlation_time /= result.samples;
 

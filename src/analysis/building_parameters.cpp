@@ -91,7 +91,7 @@ Target Locate(const model::ModelFile& model, const std::string& name) {
     const auto& stories = Building(model, name).stories;
     return {Target::Kind::kStoryStiffness, Index(model, name, part[1], stories.size(), "story")};
   }
-  if (part[0] == "damping" && part[1] == "ratio" && part.size() <= 3) {
+  if (part[0] == "damping" && part.size() >= 2 && part.size() <= 3 && part[1] == "ratio") {
     const auto& building = Building(model, name);
     if (building.damping.kind != structure::SuperstructureDamping::Kind::kModal) {
       Refuse(model, name, "the superstructure's damping must be modal (damping: {type: modal})");

@@ -114,8 +114,8 @@ std::string FittedBuildingText(const ModelFile& fitted, const std::string& note)
     }
     root["uncertainty"] = section;
   }
-  const std::string description = root["description"] ? root["description"].Scalar() + " " : "";
-  root["description"] = description + "(" + note + ")";
+  const std::string from = root["description"] ? root["description"].Scalar() : "";
+  root["description"] = note + (from.empty() ? "" : "; it started from: " + from);
   YAML::Emitter out;
   out << root;
   const std::string text = std::string(out.c_str()) + "\n";

@@ -232,6 +232,8 @@ TEST(BuildingFit, MassParametersKeepTheTotalAndNamesAreChecked) {
   EXPECT_THROW(ParameterValue(model, "isolation.iso.k9"), InputError);
   EXPECT_THROW(ParameterValue(model, "isolation.other.k0"), InputError);
   EXPECT_THROW(ParameterValue(model, "mass"), InputError);
+  EXPECT_THROW(ParameterValue(model, "damping"), InputError);
+  EXPECT_THROW(ParameterValue(model, "damping.ratio.9"), InputError);
   EXPECT_THROW(ParseChannel("x1", "test"), InputError);
   EXPECT_THROW(ParseChannel("d0", "test"), InputError);
 }

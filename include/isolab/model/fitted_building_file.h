@@ -13,7 +13,7 @@ namespace isolab::model {
 // the layer's name and count kept, with its identified range), its stories as a list of masses and stiffnesses, its base
 // mass, its modal damping ratios, and its `uncertainty`, each number to nine digits. The text is
 // read back first: a model the readers would refuse is an InputError naming `fitted.path`.
-// `note` is written as the description's ending ("identified by ...").
+// `note` ("identified by ...") begins the description, followed by the model it started from.
 std::string FittedBuildingText(const ModelFile& fitted, const std::string& note);
 
 }  // namespace isolab::model
