@@ -96,23 +96,11 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   }
 }
 
-Vec2 PeakTracker::IsolatorDisplacement(std::size_t isolator,
-                                       const integrators::ResponseRow& row) const {
+// The deformation is linear in the dofs: the same map takes the velocities to its rate.
+Vec2 PeakTracker::IsolatorDeformation(std::size_t isolator, std::span<const double> dofs) const {
   const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
-  if (site.member >= 0) {
-    return {problem_.structure.MemberDeformation(site.member, row.displacement), 0.0};
-  }
-  return problem_.structure.CoupledDeformation(site.coupled, row.displacement);
-}
-
-Vec2 PeakTracker::IsolatorVelocity(std::size_t isolator,
-                                   const integrators::ResponseRow& row) const {
-  const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
-  // The deformation is linear in the dofs: the same map takes the velocities to its rate.
-  if (site.member >= 0) {
-    return {problem_.structure.MemberDeformation(site.member, row.velocity), 0.0};
-  }
-  return problem_.structure.CoupledDeformation(site.coupled, row.velocity);
+  if (site.member >= 0) return {problem_.structure.MemberDeformation(site.member, dofs), 0.0};
+  return problem_.structure.CoupledDeformation(site.coupled, dofs);
 }
 
 Vec2 PeakTracker::IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const {
@@ -158,12 +146,12 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   }
   const bool before_end = t <= problem_.excitation_end * (1 + 1e-12);
   for (std::size_t i = 0; i < layout.isolators.size(); ++i) {
-    const Vec2 u = IsolatorDisplacement(i, row);
+    const Vec2 u = IsolatorDeformation(i, row.displacement);
     const double largest = peaks.isolator_displacements[i].value;
     Consider(&peaks.isolator_displacements[i], Magnitude(u), t, static_cast<int>(i));
     at_peak_[i] = peaks.isolator_displacements[i].value > largest;
     Consider(&peaks.isolator_forces[i], Magnitude(IsolatorForce(i, row)), t, static_cast<int>(i));
-    Consider(&peaks.isolator_velocities[i], Magnitude(IsolatorVelocity(i, row)), t,
+    Consider(&peaks.isolator_velocities[i], Magnitude(IsolatorDeformation(i, row.velocity)), t,
              static_cast<int>(i));
     std::vector<Sample>& ring = window_[i];
     ring[(window_start_ + window_size_) % ring.size()] = {t, u.x, u.y};
