@@ -28,7 +28,7 @@ ALLOWED = {
     "identification": {"core", "hysteresis"},
     "diagnosis": {"core", "hysteresis", "identification"},
     "io": {"core", "hysteresis", "structure", "integrators", "spectra", "identification"},
-    "model": {"core", "hysteresis", "structure", "integrators", "identification", "io"},
+    "model": {"core", "hysteresis", "structure", "integrators", "spectra", "identification", "io"},
     "analysis": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
                  "diagnosis", "io", "model"},
     "study": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",

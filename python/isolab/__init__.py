@@ -22,11 +22,12 @@ import os
 import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _diagnose, _fit, _parse_list, _parse_periods, _replay
+from ._isolab import _compare, _cyclic, _design, _diagnose, _fit, _parse_list, _parse_periods, _replay
 from ._isolab import _run, _spectrum
 
 __all__ = ["CyclicResult", "InputError", "IsolabWarning", "Model", "Result", "RunError",
-           "compare", "cyclic", "diagnose", "fit", "load_model", "run", "spectrum", "__version__"]
+           "compare", "cyclic", "design", "diagnose", "fit", "load_model", "run", "spectrum",
+           "__version__"]
 
 
 class IsolabWarning(UserWarning):
@@ -260,6 +261,26 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, run
     return _compare(str(study), "" if output is None else str(output), jobs, quiet,
                     None if free_vibration is None else str(free_vibration),
                     None if runs is None else str(runs))
+
+
+def design(design_file, *, output=None, jobs=0, quiet=False):
+    """`isolab design`: an isolated building designed as ASCE 7-16 chapter 17 asks.
+
+    design_file: the design file (YAML, docs/design.md). output (the folder; default the design's
+    output.directory, else its file name's stem), jobs (threads; 0: every hardware thread) and
+    quiet are the command line's -o, -j and -q. Runs on local threads, the GIL released.
+
+    Writes what the command line writes (the bound models, the synthetic records, each run's
+    summary file, the histories kept for figures, design.md and the CSV files) except the
+    figures: scripts/plot_design.py OUTPUT draws them. Returns a dict: "bounds" (per bound:
+    "model", the written YAML; "elf", its D_M, T_M, beta_M, B_M, k_M, V_b and D_TM; "values", the
+    response-history design values D_M, D_TM, V_b, isolator_force, story_drift_ratio (%),
+    floor_acceleration (g), residual_displacement), "governing" (the bound of the largest value
+    per quantity), "records" (name, files, factor), "period_range" (s), "statistic" ("mean" with
+    at least 7 records, else "max"), "summary" (the command line's text) and "output". Lengths
+    and forces in the model's units. Raises RuntimeError when a run fails.
+    """
+    return _design(str(design_file), "" if output is None else str(output), jobs, quiet)
 
 
 def _paths(data):

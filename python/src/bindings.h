@@ -22,5 +22,7 @@ void BindFit(pybind11::module_& module);
 void BindDiagnose(pybind11::module_& module);
 // compare.
 void BindCompare(pybind11::module_& module);
+// design.
+void BindDesign(pybind11::module_& module);
 
 }  // namespace isolab::python

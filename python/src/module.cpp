@@ -11,4 +11,5 @@ PYBIND11_MODULE(_isolab, module) {
   isolab::python::BindFit(module);
   isolab::python::BindDiagnose(module);
   isolab::python::BindCompare(module);
+  isolab::python::BindDesign(module);
 }

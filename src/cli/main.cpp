@@ -4,7 +4,7 @@
 //
 // Two executables from this file. `isolab`, the front, runs the commands that need no more than
 // the solver and its files (run, cyclic, synth, spectrum, shaketable) and starts without MPI,
-// pagmo and their dependencies. `fit`, `diagnose` and `compare` need them: the front replaces
+// pagmo and their dependencies. `fit`, `diagnose`, `compare` and `design` need them: the front replaces
 // itself (execv, same process, arguments and environment, so mpirun's ranks stay ranks) with
 // `isolab-commands`, built with ISOLAB_ALL_COMMANDS, which has every command
 // (libexec/isolab/isolab-commands beside bin/, or in the build tree).
@@ -29,6 +29,7 @@
 #include "synth_command.h"
 #ifdef ISOLAB_ALL_COMMANDS
 #include "compare_command.h"
+#include "design_command.h"
 #include "diagnose_command.h"
 #include "fit_command.h"
 #else
@@ -47,6 +48,10 @@ constexpr std::pair<std::string_view, std::string_view> kHeavyCommands[] = {
     {"compare",
      "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
      "(threads, or MPI ranks under mpirun)"},
+    {"design",
+     "Design an isolated building as ASCE 7-16 chapter 17 asks: bound models, the ELF "
+     "procedure, a suite scaled to the target spectrum, runs with accidental eccentricity, "
+     "design values and checks in a report"},
 };
 
 // Runs isolab-commands in place of this process when argv names one of its commands; returns
@@ -99,6 +104,8 @@ int main(int argc, char** argv) {
 #ifdef ISOLAB_ALL_COMMANDS
   isolab::cli::CompareOptions compare;
   isolab::cli::RegisterCompareCommand(app, compare);
+  isolab::cli::DesignOptions design;
+  isolab::cli::RegisterDesignCommand(app, design);
 #endif
   isolab::cli::ShakeTableOptions shaketable;
   isolab::cli::RegisterShakeTableCommand(app, shaketable);
@@ -124,6 +131,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
 #ifdef ISOLAB_ALL_COMMANDS
     if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
+    if (app.got_subcommand("design")) return isolab::cli::RunDesignCommand(design, std::cout);
 #endif
     if (app.got_subcommand("shaketable")) {
       isolab::cli::RunShakeTableCommand(shaketable, std::cout);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "isolab/model/model_file.h"
+#include "isolab/model/study_file.h"
 #include "yaml_reader.h"
 
 namespace isolab::model {
@@ -65,5 +66,13 @@ FreeVibration ReadFreeVibration(const YamlReader& reader, const YAML::Node& node
                                 const std::string& path, const UnitSystem& units);
 AnalysisSection ReadAnalysis(const YamlReader& reader, const YAML::Node& node,
                              const UnitSystem& units);
+
+// A list of record entries at key path `key` (a study's records, a design's suite): files, globs
+// sorted by name, or pairs {h1, h2, angle, name} for a building moving in two `directions`;
+// relative to `directory`, names unique (study_file.h describes the entries).
+std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
+                                     const std::string& key, const std::filesystem::path& directory,
+                                     const UnitSystem& units, int directions,
+                                     const std::string& building);
 
 }  // namespace isolab::model

@@ -343,6 +343,7 @@ StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& plan, cons
   section.kind = StructureSection::Kind::kPlanBuilding;
   structure::PlanBuilding& building = section.plan;
   const Footprint footprint = ReadFootprint(reader, plan, units);
+  section.footprint_size = footprint.high - footprint.low;
   const YAML::Node base = reader.Require(plan, "plan", "base");
   reader.RequireMap(base, "plan.base");
   reader.CheckKeys(base, "plan.base",

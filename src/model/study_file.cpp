@@ -291,14 +291,35 @@ void AddRecord(const YamlReader& reader, const YAML::Node& node, const std::stri
   records->push_back(std::move(record));
 }
 
+std::vector<double> ReadScales(const YamlReader& reader, const YAML::Node& list) {
+  reader.RequireSequence(list, "scales");
+  if (list.size() == 0) reader.Fail(list, "scales", "the list is empty");
+  std::vector<double> scales;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = IndexPath("scales", i);
+    const double scale = reader.ReadNumber(list[i], path);
+    if (!(scale > 0.0) || !std::isfinite(scale)) {
+      reader.Fail(list[i], path, fmt::format("{:g} (must be a finite number > 0)", scale));
+    }
+    if (std::find(scales.begin(), scales.end(), scale) != scales.end()) {
+      reader.Fail(list[i], path, fmt::format("{:g} is already in the list", scale));
+    }
+    scales.push_back(scale);
+  }
+  return scales;
+}
+
+}  // namespace
+
 std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node& list,
-                                     const fs::path& directory, const UnitSystem& units,
-                                     int directions, const std::string& building) {
-  reader.RequireSequence(list, "records");
-  if (list.size() == 0) reader.Fail(list, "records", "the list is empty (give files or globs)");
+                                     const std::string& key, const fs::path& directory,
+                                     const UnitSystem& units, int directions,
+                                     const std::string& building) {
+  reader.RequireSequence(list, key);
+  if (list.size() == 0) reader.Fail(list, key, "the list is empty (give files or globs)");
   std::vector<StudyRecord> records;
   for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string path = IndexPath("records", i);
+    const std::string path = IndexPath(key, i);
     if (IsPairEntry(list[i])) {
       if (directions < 2) {
         reader.Fail(list[i], path,
@@ -333,26 +354,6 @@ std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node&
   }
   return records;
 }
-
-std::vector<double> ReadScales(const YamlReader& reader, const YAML::Node& list) {
-  reader.RequireSequence(list, "scales");
-  if (list.size() == 0) reader.Fail(list, "scales", "the list is empty");
-  std::vector<double> scales;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string path = IndexPath("scales", i);
-    const double scale = reader.ReadNumber(list[i], path);
-    if (!(scale > 0.0) || !std::isfinite(scale)) {
-      reader.Fail(list[i], path, fmt::format("{:g} (must be a finite number > 0)", scale));
-    }
-    if (std::find(scales.begin(), scales.end(), scale) != scales.end()) {
-      reader.Fail(list[i], path, fmt::format("{:g} is already in the list", scale));
-    }
-    scales.push_back(scale);
-  }
-  return scales;
-}
-
-}  // namespace
 
 StudyFile LoadStudyFile(const std::string& path) {
   const YamlReader reader(path);
@@ -402,8 +403,8 @@ StudyFile LoadStudyFile(const std::string& path) {
     }
     study.reference = static_cast<std::size_t>(found - names.begin());
   }
-  study.records = ReadRecords(reader, reader.Require(root, "", "records"), directory, study.units,
-                              study.directions, study.building_path);
+  study.records = ReadRecords(reader, reader.Require(root, "", "records"), "records", directory,
+                              study.units, study.directions, study.building_path);
   study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
   if (root["free_vibration"]) {
     study.free_vibration =

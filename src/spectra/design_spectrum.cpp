@@ -198,4 +198,17 @@ std::vector<double> CornerPeriods(const TargetSpectrum& spectrum) {
   return std::visit(Corners{}, spectrum);
 }
 
+double ContinuedSpectralAcceleration(const TargetSpectrum& spectrum, double period) {
+  constexpr double kEurocode8End = 4.0;  // s: EN 1998-1 3.2.2.2 defines Se(T) to here
+  double first = 0.0, last = kEurocode8End;
+  if (const auto* table = std::get_if<TabulatedSpectrum>(&spectrum)) {
+    first = table->periods.front();
+    last = table->periods.back();
+  } else if (!std::holds_alternative<Eurocode8Spectrum>(spectrum)) {
+    return SpectralAcceleration(spectrum, period);
+  }
+  if (period > last) return SpectralAcceleration(spectrum, last) * (last / period) * (last / period);
+  return SpectralAcceleration(spectrum, std::max(period, first));
+}
+
 }  // namespace isolab::spectra

@@ -15,6 +15,8 @@ constexpr QuantityInfo kQuantities[] = {
     {Quantity::kResidualIsolatorDisplacement, "residual_isolator_displacement", "residual"},
     {Quantity::kFloorRotation, "floor_rotation", "rotation"},
     {Quantity::kTorsionalAmplification, "torsional_amplification", "torsion amp."},
+    {Quantity::kIsolatorForce, "isolator_force", "isolator force"},
+    {Quantity::kBaseCentreDisplacement, "base_centre_displacement", "base centre"},
 };
 static_assert(std::size(kQuantities) == kQuantityCount);
 
@@ -49,8 +51,10 @@ std::string QuantityUnit(Quantity quantity, const UnitSystem& units) {
   switch (quantity) {
     case Quantity::kIsolatorDisplacement:
     case Quantity::kResidualIsolatorDisplacement:
+    case Quantity::kBaseCentreDisplacement:
       return units.length();
     case Quantity::kBaseShear:
+    case Quantity::kIsolatorForce:
       return units.force();
     case Quantity::kFloorRotation:
       return "rad";
@@ -82,6 +86,11 @@ QuantityValues MeasureQuantities(const analysis::Problem& problem,
   set(Quantity::kBaseShear, peaks.base_shear.value * force);
   if (layout.isolated()) {
     set(Quantity::kIsolatorDisplacement, peaks.isolator_displacement.value * length);
+    set(Quantity::kIsolatorForce, peaks.isolator_force.value * force);
+    // In one direction every isolator carries the base: its displacement is the base's.
+    set(Quantity::kBaseCentreDisplacement,
+        (layout.rotations ? peaks.base_centre_displacement : peaks.isolator_displacement).value *
+            length);
     if (peaks.rows > 0) {
       set(Quantity::kResidualIsolatorDisplacement,
           std::abs(peaks.residual_isolator_displacement) * length);

@@ -81,6 +81,7 @@ struct StructureSection {
   double damping_coefficient = 0.0;     // SDOF, when no ratio is given
   structure::ShearBuilding building;    // shear building (its isolation is the model's)
   structure::PlanBuilding plan;         // building in plan, with its isolators
+  hysteresis::Vec2 footprint_size;      // plan: the footprint's extents along x and y (length)
 };
 
 // What a record is scaled to, as design codes ask (`scale: {pga: 0.4 g}` or

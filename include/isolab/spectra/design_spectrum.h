@@ -68,6 +68,12 @@ void Validate(const TargetSpectrum& spectrum);
 // finite, above 4 s for Eurocode 8, or outside a table's [first, last] period; and as Validate.
 double SpectralAcceleration(const TargetSpectrum& spectrum, double period);
 
+// Sa (g) at T (s) continued where the spectrum stops: past Eurocode 8's 4 s or a table's last
+// period at constant spectral displacement (Sa(T_end) (T_end / T)^2), below a table's first period
+// at its first value; elsewhere SpectralAcceleration. For what may look past a design's range (an
+// equivalent linear search, a matching over a wider band), never for the range itself.
+double ContinuedSpectralAcceleration(const TargetSpectrum& spectrum, double period);
+
 // One line for reports:
 //   "ASCE 7-16 MCE_R: S_MS 1.5 g, S_M1 0.9 g, T_L 8 s"
 //   "Eurocode 8 type 1, ground B: a_g 0.3 g (gamma_I 1 x a_gR 0.3 g), 5 % damping"

@@ -12,6 +12,10 @@
 //   floor_rotation                  peak |rotation| of the level that twists most (rad)
 //   torsional_amplification         the worst isolator's peak displacement over that of the
 //                                   base's centre of mass (1)
+// Measured for every run and used by a design (study/design.h), not shown in a study's summary:
+//   isolator_force                  peak |force| of the most loaded isolator (force)
+//   base_centre_displacement        peak |u| of the base's centre of mass (length): the design
+//                                   displacement D_M of a building in plan
 // Lengths and forces are in the study's units (its building's), whatever the variant's model
 // uses. A quantity a variant does not have (a fixed base has no isolator) is NaN; a study shows
 // the quantities of its building (StudyQuantities).
@@ -39,8 +43,10 @@ enum class Quantity {
   kResidualIsolatorDisplacement,
   kFloorRotation,
   kTorsionalAmplification,
+  kIsolatorForce,
+  kBaseCentreDisplacement,
 };
-inline constexpr std::size_t kQuantityCount = 7;
+inline constexpr std::size_t kQuantityCount = 9;
 
 using QuantityValues = std::array<double, kQuantityCount>;
 

@@ -1,0 +1,71 @@
+// Design files (YAML) for `isolab design`: a building whose bearing types carry their property
+// modification factors, the code's target spectrum, the suite of records scaled to it, and the
+// checks the code asks. Paths are relative to the design file.
+//
+//   description: free text
+//   model: five_story_lrb_plan.yaml      # the building (one direction or in plan) with its
+//                                        # bearings' modification factors (docs/design.md)
+//   target:                              # one of:
+//     asce7: {sms: 1.5 g, sm1: 0.9 g, tl: 8 s}            # ASCE 7-16 MCE_R (11.4.6 shape)
+//     eurocode8: {agr: 0.3 g, ground: B, type: 1, importance: 1.0}   # EN 1998-1 3.2.2.2
+//     file: target.csv                   # period_s,sa_g (linear between rows)
+//   suite:
+//     records: [...]                     # pairs (plan) or records (one direction), as a
+//                                        # study's records (study_file.h); or
+//     synthetic: {count: 11, seed: 1, duration: 30 s, dt: 0.01 s, tolerance: 0.1}
+//                                        # pairs matched to the target (analysis/matched_pairs.h)
+//     period_range: [0.75, 1.25]         # x T_M of the upper bound, x T_M of the lower bound:
+//                                        # where the suite's mean spectrum must reach the target
+//   eccentricity: 0.05                   # accidental, of the footprint (plan models; 0: none)
+//   drift_limit: 0.015                   # story drift ratio (ASCE 7-16 17.6.4.4)
+//   output: {directory: design}          # relative to the working directory
+//
+// Every error is an InputError "file:line:col: key path: what (allowed)".
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "isolab/model/model_file.h"
+#include "isolab/model/study_file.h"
+#include "isolab/spectra/design_spectrum.h"
+
+namespace isolab::model {
+
+// The fewest records (pairs in plan) a response-history design takes: EN 1998-1 4.3.3.4.3's
+// three (ASCE 7-16 17.3.2 asks for seven, the number from which both take the suite's mean).
+inline constexpr int kMinimumDesignRecords = 3;
+
+// Pairs generated and matched to the target, so a design runs without a record database.
+struct SyntheticSuite {
+  int count = 11;
+  std::uint64_t seed = 1;
+  double duration = 30.0;  // s
+  double dt = 0.01;        // s
+  double tolerance = 0.1;  // largest |RotD100 / target - 1| over the matched range
+};
+
+struct DesignFile {
+  std::string path;
+  std::string description;
+  std::string model_path;  // as found (relative to the working directory or absolute)
+  ModelFile model;
+  spectra::TargetSpectrum target;
+  std::vector<StudyRecord> records;        // empty when synthetic
+  std::optional<SyntheticSuite> synthetic;
+  double period_range[2] = {0.75, 1.25};   // factors on T_M upper, T_M lower
+  double eccentricity = 0.05;              // plan; 0 in one direction
+  double drift_limit = 0.015;
+  std::string output_directory;            // empty: not given
+  std::string suite_key;                   // "design.yaml:7:3: suite", for messages on the suite
+};
+
+// Throws InputError for an unreadable file, bad YAML, unknown or missing keys, a model that does
+// not load or has no modification factors, a target out of range, a suite that is neither
+// records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not 0 < lower <= 1 <= upper, an eccentricity
+// given for a one-direction model, a drift limit not in (0, 1).
+DesignFile LoadDesignFile(const std::string& path);
+
+}  // namespace isolab::model

@@ -1,0 +1,117 @@
+// The design of an isolated building by response-history analysis, as ASCE 7-16 chapter 17 asks
+// (Eurocode 8 part 1 section 10 asks the same sequence), in one pipeline:
+//
+//  1. the nominal, upper-bound and lower-bound models from the bearings' property modification
+//     factors (model/bounds.h), written as YAML beside the results;
+//  2. the equivalent lateral force procedure on each (analysis/equivalent_lateral_force.h): D_M,
+//     T_M, beta_M, k_M and V_b, and for a building in plan D_TM by Eq. 17.5-3;
+//  3. the suite: the design file's records or pairs, or synthetic pairs matched to the target
+//     (analysis/matched_pairs.h), each scaled by its own factor so that the suite's mean spectrum
+//     (the pairs' RotD100, a single record's 5 % spectrum) is nowhere below the target from
+//     period_range[0] x T_M(upper) to period_range[1] x T_M(lower) (spectra/suite_scaling.h);
+//  4. every bound x accidental-eccentricity case (analysis/accidental_torsion.h: none, and the
+//     four shifted cases of a building in plan) x record run through the study scheduler
+//     (threads or MPI ranks), each as `isolab run` runs it;
+//  5. the design values: per bound and record the envelope over the eccentricity cases, then the
+//     mean over the suite when it has at least kMinimumRecordsForMean records (ASCE 7-16 17.6.3.2
+//     allows it), the maximum otherwise; the governing bound per quantity; and the ELF lower
+//     limits on the response-history results (ASCE 7-16 17.6.3: D_TM not below 0.8 D_TM of the
+//     ELF procedure, the isolation system's V_b not below 0.9 of its V_b).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "isolab/analysis/accidental_torsion.h"
+#include "isolab/analysis/equivalent_lateral_force.h"
+#include "isolab/model/design_file.h"
+#include "isolab/model/study_file.h"
+#include "isolab/spectra/suite_scaling.h"
+#include "isolab/study/job_result.h"
+#include "isolab/study/scheduler.h"
+
+namespace isolab::study {
+
+inline constexpr std::size_t kMinimumRecordsForMean = 7;
+inline constexpr double kElfDisplacementFloor = 0.8;  // of D_TM (ELF)
+inline constexpr double kElfShearFloor = 0.9;         // of V_b (ELF)
+
+struct DesignBound {
+  std::string bound;       // "nominal", "upper", "lower"
+  std::string model_file;  // the bound's model, written in the output folder
+  model::ModelFile model;
+  analysis::ElfResult elf;
+  double damping_coefficient = 0.0;  // B_M of the ELF result (1 / eta for Eurocode 8)
+  // D_TM of ASCE 7-16 Eq. 17.5-3 (not below 1.15 D_M) in plan; D_M in one direction, where the
+  // model has no plan to twist in.
+  double elf_total_displacement = 0.0;
+};
+
+struct DesignRecord {
+  std::string name;
+  std::vector<std::string> files;  // H1 (and H2)
+  double shape_factor = 1.0, factor = 1.0;  // spectra/suite_scaling.h's s_i and f_i
+  double misfit = -1.0;  // a synthetic pair's max |RotD100 / target - 1| as matched; -1: given
+  std::vector<double> spectrum;  // unscaled RotD100 (or 5 % Sa) at display_periods (g)
+};
+
+// Per bound: each design quantity's value over the suite (model units; drift ratio in %).
+enum class DesignQuantity {
+  kDisplacement,          // D_M: the base's centre of mass, no eccentricity
+  kTotalDisplacement,     // D_TM: the worst isolator, envelope over the eccentricity cases
+  kBaseShear,             // V_b
+  kIsolatorForce,         // the most loaded isolator's peak force
+  kStoryDriftRatio,       // %
+  kFloorAcceleration,     // g
+  kResidualDisplacement,  // the isolator farthest from zero at rest
+};
+inline constexpr std::size_t kDesignQuantityCount = 7;
+
+struct DesignQuantityInfo {
+  DesignQuantity quantity;
+  std::string_view key;    // CSV column
+  std::string_view label;  // report row
+};
+std::span<const DesignQuantityInfo> DesignQuantities();
+
+struct DesignStatistic {
+  std::vector<double> per_record;  // the envelope over the eccentricity cases, per record
+  double mean = 0.0, max = 0.0;
+  double value = 0.0;  // mean or max, as the suite's size allows
+};
+
+struct DesignOutcome {
+  std::vector<DesignBound> bounds;                          // nominal, upper, lower
+  std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
+  std::vector<DesignRecord> records;
+  spectra::SuiteScaling scaling;
+  // The scaling periods and more, from 0.05 s to twice the range's top, for the report; the
+  // target there (continued past a code's or a table's last period at constant displacement).
+  std::vector<double> display_periods, display_target;
+  double period_range[2] = {0.0, 0.0};  // s
+  bool mean_of_suite = false;           // values are means (>= 7 records), else maxima
+  model::StudyFile study;               // what ran: variants bound x case, the scaled records
+  std::vector<JobResult> runs;          // job order (variant-major)
+  std::size_t failed = 0;
+  // [bound][quantity]
+  std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
+  std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value
+  std::size_t figure_record = 0;  // the record of the histories kept for figures
+  std::vector<std::string> history_files;  // per bound, relative to the output folder
+  double wall_seconds = 0.0;
+};
+
+// `requested` when given, else the design's output.directory, else the design file's stem; made
+// with its parents. Throws InputError naming `option` (or output.directory) when it cannot be.
+std::string PrepareDesignFolder(const std::string& requested, const model::DesignFile& design,
+                                const std::string& option);
+
+// `progress` gets a line per step (and per run); it may be empty. Throws InputError for a design
+// the procedure cannot carry out (a period range beyond the target's, a matching that fails),
+// naming the design file's key.
+DesignOutcome RunDesign(const model::DesignFile& design, const std::string& output_directory,
+                        const std::string& version, Scheduler& scheduler,
+                        const std::function<void(const std::string&)>& progress);
+
+}  // namespace isolab::study

@@ -1,0 +1,28 @@
+// What `isolab design` writes beside its runs, and prints: every number of a design
+// (study/design.h) in CSV, the report in Markdown, and a terminal summary. Files, in the output
+// folder, each written whole or not at all:
+//   design.md            the report: target, ELF per bound, the scaled suite, the design values,
+//                        the code's checks, and the figures plot_design.py draws
+//   design_values.csv    bound,quantity,unit,statistic,value: the ELF and response-history values
+//   design_runs.csv      every run: bound, eccentricity case, record, factor, its quantities
+//   design_spectra.csv   period_s, in_range (1 inside the scaling range), target_g, each record's
+//                        scaled spectrum, the suite's mean, from 0.05 s to twice the range's top
+// Lengths and forces are in the model's units.
+#pragma once
+
+#include <string>
+
+#include "isolab/model/design_file.h"
+#include "isolab/study/design.h"
+
+namespace isolab::study {
+
+// `figures`: the report shows the figures plot_design.py draws; without, it says they were not
+// drawn.
+void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outcome,
+                      const std::string& output_directory, bool figures);
+
+// The terminal summary: ELF per bound, the suite, the design values and the checks.
+std::string DesignSummaryText(const model::DesignFile& design, const DesignOutcome& outcome);
+
+}  // namespace isolab::study

@@ -1,0 +1,89 @@
+// isolab.design: `isolab design` (bound models, ELF, a suite scaled to the target, every bound x
+// eccentricity case x record on local threads, the design values and checks) with the command
+// line's options as keyword arguments. It writes what the command line writes except the figures
+// (scripts/plot_design.py draws them from the output folder) and returns the numbers.
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <thread>
+
+#include "bindings.h"
+#include "isolab/core/errors.h"
+#include "isolab/model/design_file.h"
+#include "isolab/study/design.h"
+#include "isolab/study/design_report.h"
+#include "isolab/study/scheduler.h"
+
+namespace py = pybind11;
+
+namespace isolab::python {
+namespace {
+
+py::dict Design(const std::string& design_path, const std::string& output, int jobs, bool quiet) {
+  const model::DesignFile design = model::LoadDesignFile(design_path);
+  if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
+  const std::string folder = study::PrepareDesignFolder(output, design, "output");
+  const int threads =
+      jobs > 0 ? jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  study::DesignOutcome outcome;
+  {
+    py::gil_scoped_release release;
+    const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
+    outcome = study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler,
+                               [&](const std::string& line) {
+                                 if (!quiet) fmt::print(stderr, "{}\n", line);
+                               });
+  }
+  if (outcome.failed > 0) {
+    throw std::runtime_error(fmt::format("{} of {} design runs failed; no design values",
+                                         outcome.failed, outcome.runs.size()));
+  }
+  study::WriteDesignFiles(design, outcome, folder, false);
+
+  py::dict bounds;
+  for (std::size_t b = 0; b < outcome.bounds.size(); ++b) {
+    const study::DesignBound& bound = outcome.bounds[b];
+    py::dict values;
+    for (const study::DesignQuantityInfo& info : study::DesignQuantities()) {
+      values[py::str(std::string(info.key))] =
+          outcome.values[b][static_cast<std::size_t>(info.quantity)].value;
+    }
+    py::dict elf(py::arg("D_M") = bound.elf.displacement, py::arg("T_M") = bound.elf.period,
+                 py::arg("beta_M") = bound.elf.at_design.damping,
+                 py::arg("B_M") = bound.damping_coefficient,
+                 py::arg("k_M") = bound.elf.at_design.stiffness,
+                 py::arg("V_b") = bound.elf.base_shear,
+                 py::arg("D_TM") = bound.elf_total_displacement);
+    bounds[py::str(bound.bound)] = py::dict(py::arg("model") = bound.model_file,
+                                            py::arg("elf") = elf, py::arg("values") = values);
+  }
+  py::list records;
+  for (const study::DesignRecord& r : outcome.records) {
+    records.append(py::dict(py::arg("name") = r.name, py::arg("files") = r.files,
+                            py::arg("factor") = r.factor));
+  }
+  py::dict governing;
+  for (const study::DesignQuantityInfo& info : study::DesignQuantities()) {
+    governing[py::str(std::string(info.key))] =
+        outcome.bounds[outcome.governing[static_cast<std::size_t>(info.quantity)]].bound;
+  }
+  py::dict result;
+  result["bounds"] = bounds;
+  result["governing"] = governing;
+  result["records"] = records;
+  result["period_range"] = py::make_tuple(outcome.period_range[0], outcome.period_range[1]);
+  result["statistic"] = outcome.mean_of_suite ? "mean" : "max";
+  result["summary"] = study::DesignSummaryText(design, outcome);
+  result["output"] = folder;
+  return result;
+}
+
+}  // namespace
+
+void BindDesign(py::module_& module) {
+  module.def("_design", &Design, py::arg("design"), py::arg("output"), py::arg("jobs"),
+             py::arg("quiet"));
+}
+
+}  // namespace isolab::python

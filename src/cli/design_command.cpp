@@ -1,0 +1,91 @@
+#include "design_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include "finite_options.h"
+#include "isolab/core/errors.h"
+#include "isolab/model/design_file.h"
+#include "isolab/study/design.h"
+#include "isolab/study/design_report.h"
+#include "isolab/study/mpi_scheduler.h"
+#include "isolab/study/scheduler.h"
+#include "plot_script.h"
+
+namespace isolab::cli {
+namespace {
+
+constexpr const char* kPlotScript = "plot_design.py";
+
+}  // namespace
+
+void RegisterDesignCommand(CLI::App& app, DesignOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "design",
+      "Design an isolated building as ASCE 7-16 chapter 17 asks: bound models, the ELF "
+      "procedure, a suite scaled to the target spectrum, runs with accidental eccentricity, "
+      "design values and checks in a report");
+  command->add_option("design", options.design, "Design file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", options.output,
+                      "Output folder (default: the design's output.directory, else its name)");
+  command->add_option("-j,--jobs", options.jobs, "Threads (default: every hardware thread)")
+      ->check(Positive());
+  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  command->add_flag("!--no-figures", options.figures,
+                    "Skip the report's figures (plot_design.py, which needs matplotlib and h5py)");
+}
+
+int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
+  if (study::LaunchedByMpirun()) {
+    throw InputError({"mpirun"},
+                     "isolab design runs on local threads (-j); under mpirun run the suite with "
+                     "isolab compare");
+  }
+  const model::DesignFile design = model::LoadDesignFile(options.design);
+  if (options.figures) CheckPlotScript(kPlotScript);  // before the runs, not after
+  const std::string folder = study::PrepareDesignFolder(options.output, design, "--output");
+  const int threads = options.jobs > 0
+                          ? options.jobs
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
+  const study::DesignOutcome outcome =
+      study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {
+        if (!options.quiet) fmt::print(stderr, "{}\n", line);
+      });
+  if (outcome.failed > 0) {
+    for (const study::JobResult& run : outcome.runs) {
+      if (!run.completed) fmt::print(stderr, "isolab design: run failed: {}\n", run.message);
+    }
+    fmt::print(stderr, "isolab design: {} of {} runs failed; no design values written\n",
+               outcome.failed, outcome.runs.size());
+    return 1;
+  }
+  study::WriteDesignFiles(design, outcome, folder, options.figures);
+  if (options.figures) {
+    try {
+      RunPlotScript(kPlotScript, {folder}, options.quiet);
+    } catch (const std::runtime_error& error) {
+      fmt::print(stderr, "isolab design: figures: {}\n", error.what());
+      return 1;
+    }
+  }
+  fmt::print(out, "{}", study::DesignSummaryText(design, outcome));
+  fmt::print(out, "report: {}\n",
+             (std::filesystem::path(folder) / "design.md").string());
+  if (!options.quiet) {
+    fmt::print(stderr, "isolab design: {} runs in {:.1f} s on {}\n", outcome.runs.size(),
+               outcome.wall_seconds, scheduler->Describe());
+  }
+  return 0;
+}
+
+}  // namespace isolab::cli

@@ -1,0 +1,239 @@
+#include "isolab/model/design_file.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "isolab/core/errors.h"
+#include "isolab/io/target_spectrum_file.h"
+#include "isolab/model/build_structure.h"
+#include "model_sections.h"
+
+namespace isolab::model {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An acceleration in g, given as a number (g) or a quantity with its unit ("0.9 g", "8.8 m/s^2").
+double ReadInG(const YamlReader& reader, const YAML::Node& map, const std::string& path,
+               const std::string& key, const UnitSystem& units) {
+  const YAML::Node node = reader.Require(map, path, key);
+  const std::string where = ChildPath(path, key);
+  const double g = units.Convert(1.0, "g", dimension::kAcceleration);
+  double bare = 0.0;
+  const double value = YAML::convert<double>::decode(node, bare)
+                           ? reader.ReadNumber(node, where)
+                           : reader.ReadQuantity(node, where, dimension::kAcceleration, units) / g;
+  if (!(value > 0.0)) reader.Fail(node, where, fmt::format("{:g} g (must be > 0)", value));
+  return value;
+}
+
+double ReadSeconds(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                   const UnitSystem& units) {
+  return reader.ReadQuantity(node, path, dimension::kTime, units) *
+         units.SiFactor(dimension::kTime);
+}
+
+spectra::TargetSpectrum ReadTarget(const YamlReader& reader, const YAML::Node& node,
+                                   const fs::path& directory, const UnitSystem& units) {
+  reader.RequireMap(node, "target");
+  reader.CheckKeys(node, "target", {"asce7", "eurocode8", "file"});
+  if (node.size() != 1) {
+    reader.Fail(node, "target", "give one of asce7, eurocode8 or file");
+  }
+  spectra::TargetSpectrum target;
+  if (node["asce7"]) {
+    const YAML::Node a = node["asce7"];
+    reader.RequireMap(a, "target.asce7");
+    reader.CheckKeys(a, "target.asce7", {"sms", "sm1", "tl"});
+    spectra::Asce7Spectrum s;
+    s.sms = ReadInG(reader, a, "target.asce7", "sms", units);
+    s.sm1 = ReadInG(reader, a, "target.asce7", "sm1", units);
+    if (a["tl"]) s.long_period = ReadSeconds(reader, a["tl"], "target.asce7.tl", units);
+    target = s;
+  } else if (node["eurocode8"]) {
+    const YAML::Node e = node["eurocode8"];
+    const std::string path = "target.eurocode8";
+    reader.RequireMap(e, path);
+    reader.CheckKeys(e, path, {"agr", "ground", "type", "importance", "damping"});
+    spectra::Eurocode8Spectrum s;
+    s.agr = ReadInG(reader, e, path, "agr", units);
+    if (e["ground"]) {
+      const std::string ground = reader.ReadString(e["ground"], path + ".ground");
+      if (ground.size() != 1 || ground[0] < 'A' || ground[0] > 'E') {
+        reader.Fail(e["ground"], path + ".ground", fmt::format("'{}' (A, B, C, D or E)", ground));
+      }
+      s.ground = static_cast<spectra::GroundType>(ground[0] - 'A');
+    }
+    if (e["type"]) {
+      s.type = reader.ReadInteger(e["type"], path + ".type");
+      if (s.type != 1 && s.type != 2) {
+        reader.Fail(e["type"], path + ".type", fmt::format("{} (1 or 2)", s.type));
+      }
+    }
+    if (e["importance"]) s.importance = ReadPositive(reader, e, path, "importance", dimension::kNone, units);
+    if (e["damping"]) s.damping_ratio = ReadRatio(reader, e["damping"], path + ".damping");
+    target = s;
+  } else {
+    const std::string file = reader.ReadString(node["file"], "target.file");
+    target = io::ReadTargetSpectrumCsv((directory / file).lexically_normal().string());
+  }
+  try {
+    spectra::Validate(target);
+  } catch (const InvalidParameter& error) {
+    reader.Fail(node, "target", error.what());
+  }
+  return target;
+}
+
+std::string TooFew(std::size_t count) {
+  return fmt::format("{} (the response-history procedure needs at least {}: EN 1998-1 "
+                     "4.3.3.4.3; ASCE 7-16 17.3.2 asks for 7, from which the design values are "
+                     "the suite's mean)",
+                     count, kMinimumDesignRecords);
+}
+
+SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
+                             const UnitSystem& units) {
+  const std::string path = "suite.synthetic";
+  reader.RequireMap(node, path);
+  reader.CheckKeys(node, path, {"count", "seed", "duration", "dt", "tolerance"});
+  SyntheticSuite suite;
+  if (node["count"]) {
+    suite.count = reader.ReadInteger(node["count"], path + ".count");
+    if (suite.count < kMinimumDesignRecords) {
+      reader.Fail(node["count"], path + ".count", TooFew(suite.count));
+    }
+  }
+  if (node["seed"]) {
+    const int seed = reader.ReadInteger(node["seed"], path + ".seed");
+    if (seed < 0) reader.Fail(node["seed"], path + ".seed", "must be >= 0");
+    suite.seed = static_cast<std::uint64_t>(seed);
+  }
+  if (node["duration"]) {
+    suite.duration = ReadSeconds(reader, node["duration"], path + ".duration", units);
+    if (!(suite.duration > 0.0)) reader.Fail(node["duration"], path + ".duration", "must be > 0");
+  }
+  if (node["dt"]) {
+    suite.dt = ReadSeconds(reader, node["dt"], path + ".dt", units);
+    if (!(suite.dt > 0.0 && suite.dt < suite.duration / 10)) {
+      reader.Fail(node["dt"], path + ".dt", "must be > 0 and a small part of the duration");
+    }
+  }
+  if (node["tolerance"]) suite.tolerance = ReadPositive(reader, node, path, "tolerance", dimension::kNone, units);
+  return suite;
+}
+
+}  // namespace
+
+DesignFile LoadDesignFile(const std::string& path) {
+  const YamlReader reader(path);
+  const YAML::Node root = reader.LoadFile();
+  reader.RequireMap(root, "");
+  reader.CheckKeys(root, "", {"description", "model", "target", "suite", "eccentricity",
+                              "drift_limit", "output"});
+  DesignFile design;
+  design.path = path;
+  const fs::path directory = fs::path(path).parent_path();
+  if (root["description"]) {
+    design.description = reader.ReadString(root["description"], "description");
+  }
+  const YAML::Node model_node = reader.Require(root, "", "model");
+  design.model_path =
+      (directory / reader.ReadString(model_node, "model")).lexically_normal().string();
+  design.model = LoadModelFile(design.model_path);
+  if (!design.model.structure) {
+    reader.Fail(model_node, "model",
+                fmt::format("'{}' has no structure (a design runs a building: structure or plan)",
+                            design.model_path));
+  }
+  if (design.model.modifications.empty()) {
+    reader.Fail(model_node, "model",
+                fmt::format("'{}' gives no property modification factors (a bearing type's "
+                            "`modification`: docs/design.md); a design runs the upper and lower "
+                            "bounds they give",
+                            design.model_path));
+  }
+  const UnitSystem& units = design.model.units;
+  design.target = ReadTarget(reader, reader.Require(root, "", "target"), directory, units);
+
+  const YAML::Node suite = reader.Require(root, "", "suite");
+  reader.RequireMap(suite, "suite");
+  reader.CheckKeys(suite, "suite", {"records", "synthetic", "period_range"});
+  design.suite_key = fmt::format("{}: suite", reader.Locate(suite).Describe());
+  if (suite["records"] && suite["synthetic"]) {
+    reader.Fail(suite, "suite", "give records or synthetic, not both");
+  }
+  const int directions = Directions(design.model);
+  if (suite["records"]) {
+    design.records = ReadRecords(reader, suite["records"], "suite.records", directory, units,
+                                 directions, design.model_path);
+    if (design.records.size() < kMinimumDesignRecords) {
+      reader.Fail(suite["records"], "suite.records",
+                  fmt::format("{} records{}", TooFew(design.records.size()),
+                              directions == 2 ? " (pairs, for a building in plan)" : ""));
+    }
+    if (directions == 2) {
+      for (std::size_t i = 0; i < design.records.size(); ++i) {
+        if (design.records[i].components.size() != 2) {
+          reader.Fail(suite["records"], IndexPath("suite.records", i),
+                      "a building in plan is designed for record pairs {h1, h2}, each pair's "
+                      "maximum-direction spectrum scaled to the target");
+        }
+      }
+    }
+  } else if (suite["synthetic"]) {
+    design.synthetic = ReadSynthetic(reader, suite["synthetic"], units);
+  } else {
+    reader.Fail(suite, "suite", "give records (files or pairs) or synthetic");
+  }
+  if (suite["period_range"]) {
+    const YAML::Node range = suite["period_range"];
+    if (!range.IsSequence() || range.size() != 2) {
+      reader.Fail(range, "suite.period_range", "expected [lower, upper] factors, e.g. [0.75, 1.25]");
+    }
+    for (int i = 0; i < 2; ++i) {
+      design.period_range[i] = reader.ReadNumber(range[i], IndexPath("suite.period_range", i));
+    }
+    if (!(design.period_range[0] > 0.0 && design.period_range[0] <= 1.0 &&
+          design.period_range[1] >= 1.0)) {
+      reader.Fail(range, "suite.period_range",
+                  fmt::format("[{:g}, {:g}] (0 < lower <= 1 <= upper: the range must hold T_M)",
+                              design.period_range[0], design.period_range[1]));
+    }
+  }
+  if (directions == 1) design.eccentricity = 0.0;
+  if (root["eccentricity"]) {
+    design.eccentricity = reader.ReadNumber(root["eccentricity"], "eccentricity");
+    if (design.eccentricity != 0.0 && directions == 1) {
+      reader.Fail(root["eccentricity"], "eccentricity",
+                  fmt::format("{:g}: accidental eccentricity shifts floors in plan, and '{}' "
+                              "moves in one direction (give 0, or a model in plan)",
+                              design.eccentricity, design.model_path));
+    }
+    if (!(design.eccentricity >= 0.0 && design.eccentricity < 0.5)) {
+      reader.Fail(root["eccentricity"], "eccentricity",
+                  fmt::format("{:g} (a fraction of the plan dimension, 0 <= e < 0.5)",
+                              design.eccentricity));
+    }
+  }
+  if (root["drift_limit"]) {
+    design.drift_limit = reader.ReadNumber(root["drift_limit"], "drift_limit");
+    if (!(design.drift_limit > 0.0 && design.drift_limit < 1.0)) {
+      reader.Fail(root["drift_limit"], "drift_limit",
+                  fmt::format("{:g} (a story drift ratio in (0, 1): 0.015 for 1.5 %)",
+                              design.drift_limit));
+    }
+  }
+  if (root["output"]) {
+    const YAML::Node output = root["output"];
+    reader.RequireMap(output, "output");
+    reader.CheckKeys(output, "output", {"directory"});
+    if (output["directory"]) {
+      design.output_directory = reader.ReadString(output["directory"], "output.directory");
+    }
+  }
+  return design;
+}
+
+}  // namespace isolab::model

@@ -1,0 +1,383 @@
+#include "isolab/study/design.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <variant>
+
+#include "isolab/analysis/matched_pairs.h"
+#include "isolab/analysis/synthetic_motion.h"
+#include "isolab/core/errors.h"
+#include "isolab/io/atomic_file.h"
+#include "isolab/io/record.h"
+#include "isolab/model/bounds.h"
+#include "isolab/model/build_structure.h"
+#include "isolab/spectra/rotd_spectrum.h"
+#include "isolab/study/run_job.h"
+
+namespace isolab::study {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kDamping = 0.05;
+constexpr double kSecondsPerPeriodMax = 4.0;
+constexpr double kDisplayLow = 0.05;  // s: the report's spectra from here to twice the range's top
+constexpr int kDisplayPoints = 80;  // a synthetic record holds 4 cycles of its longest period
+
+constexpr DesignQuantityInfo kDesignQuantities[] = {
+    {DesignQuantity::kDisplacement, "D_M", "maximum displacement D_M (centre of mass)"},
+    {DesignQuantity::kTotalDisplacement, "D_TM", "total maximum displacement D_TM (worst bearing)"},
+    {DesignQuantity::kBaseShear, "V_b", "base shear V_b"},
+    {DesignQuantity::kIsolatorForce, "isolator_force", "largest isolator force"},
+    {DesignQuantity::kStoryDriftRatio, "story_drift_ratio", "story drift ratio"},
+    {DesignQuantity::kFloorAcceleration, "floor_acceleration", "floor acceleration"},
+    {DesignQuantity::kResidualDisplacement, "residual_displacement",
+     "residual isolator displacement"},
+};
+static_assert(std::size(kDesignQuantities) == kDesignQuantityCount);
+
+// The study quantity each design quantity is read from.
+Quantity Source(DesignQuantity q) {
+  switch (q) {
+    case DesignQuantity::kDisplacement: return Quantity::kBaseCentreDisplacement;
+    case DesignQuantity::kTotalDisplacement: return Quantity::kIsolatorDisplacement;
+    case DesignQuantity::kBaseShear: return Quantity::kBaseShear;
+    case DesignQuantity::kIsolatorForce: return Quantity::kIsolatorForce;
+    case DesignQuantity::kStoryDriftRatio: return Quantity::kStoryDriftRatio;
+    case DesignQuantity::kFloorAcceleration: return Quantity::kFloorAcceleration;
+    case DesignQuantity::kResidualDisplacement: return Quantity::kResidualIsolatorDisplacement;
+  }
+  return Quantity::kIsolatorDisplacement;
+}
+
+// A record's spectrum at `periods` (g): a pair's RotD100, one record's 5 % Sa; with its entry's
+// scale.
+std::vector<double> RecordSpectrum(const model::StudyRecord& record, const UnitSystem& units,
+                                   const std::vector<double>& periods) {
+  std::vector<integrators::SampledHistory> histories;
+  for (const model::GroundMotionSection& c : record.components) {
+    const io::Record r = io::ReadRecord(
+        c.file, {c.units, c.dt * units.SiFactor(dimension::kTime), record.entry, record.entry});
+    const double in_g =
+        UnitSystem("N", "m", "s").Convert(1.0, r.units, dimension::kAcceleration) / 9.80665;
+    integrators::SampledHistory h{r.dt, r.values};
+    for (double& v : h.values) v *= in_g * c.scale;
+    histories.push_back(std::move(h));
+  }
+  const std::vector<double> damping = {kDamping};
+  std::vector<double> sa;
+  if (histories.size() == 2) {
+    const spectra::PairSpectrum s =
+        spectra::ComputePairSpectrum(histories[0], histories[1], periods, damping);
+    for (std::size_t p = 0; p < periods.size(); ++p) {
+      sa.push_back(s.rotd100.at(0, p).pseudo_acceleration);
+    }
+  } else {
+    const spectra::ElasticSpectrum s = spectra::ComputeElasticSpectrum(histories[0], periods, damping);
+    for (std::size_t p = 0; p < periods.size(); ++p) sa.push_back(s.at(0, p).pseudo_acceleration);
+  }
+  return sa;
+}
+
+// Synthetic pairs matched to the target over [0.1 s, 1.5 x the scaling range's top], written as
+// AT2 files in <output>/records; H1 alone for a building in one direction.
+std::vector<model::StudyRecord> SyntheticRecords(const model::DesignFile& design, double top,
+                                                 const std::string& output_directory,
+                                                 int directions, std::vector<double>* misfits,
+                                                 const std::function<void(const std::string&)>& progress) {
+  const model::SyntheticSuite& s = *design.synthetic;
+  analysis::MatchedPairSpec spec;
+  spec.seed = s.seed;
+  spec.count = s.count;
+  spec.motion.duration = s.duration;
+  spec.motion.dt = s.dt;
+  spec.period_min = std::max(0.1, 5.0 * s.dt);
+  spec.period_max = std::min(1.5 * top, s.duration / kSecondsPerPeriodMax);
+  spec.tolerance = s.tolerance;
+  spec.target_name = spectra::Describe(design.target);
+  if (spec.period_max < top) {
+    throw InputError({design.suite_key + ".synthetic.duration"},
+                     fmt::format("{:g} s records cannot hold {:g} cycles of the scaling range's "
+                                 "top period {:g} s (give a duration of at least {:g} s)",
+                                 s.duration, kSecondsPerPeriodMax, top, kSecondsPerPeriodMax * top));
+  }
+  if (progress) {
+    progress(fmt::format("suite: matching {} synthetic pairs to the target over {:g} to {:g} s",
+                         s.count, spec.period_min, spec.period_max));
+  }
+  const std::vector<analysis::MatchedPair> pairs = analysis::MatchPairs(
+      spec, [&design](double t) { return spectra::ContinuedSpectralAcceleration(design.target, t); });
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (!pairs[k].converged) {
+      throw InputError({design.suite_key + ".synthetic"},
+                       fmt::format("pair {} matched the target only to {:.3g} after {} iterations "
+                                   "(tolerance {:g}: raise it, or give a longer duration)",
+                                   k + 1, pairs[k].misfit, pairs[k].iterations, s.tolerance));
+    }
+  }
+  const fs::path folder = fs::path(output_directory) / "records";
+  fs::create_directories(folder);
+  const int width = static_cast<int>(std::to_string(s.count).size());
+  std::vector<model::StudyRecord> records;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    model::StudyRecord record;
+    record.name = fmt::format("pair{:0{}}", k + 1, width);
+    record.entry = fmt::format("{} (synthetic {})", design.suite_key, record.name);
+    const io::Record* components[] = {&pairs[k].h1, &pairs[k].h2};
+    for (int c = 0; c < directions; ++c) {
+      model::GroundMotionSection section;
+      section.file = (folder / fmt::format("{}_h{}.at2", record.name, c + 1)).string();
+      analysis::WriteAt2(*components[c], section.file);
+      record.components.push_back(section);
+    }
+    records.push_back(std::move(record));
+    misfits->push_back(pairs[k].misfit);
+  }
+  return records;
+}
+
+DesignStatistic Statistic(std::vector<double> per_record, bool mean_of_suite) {
+  DesignStatistic s;
+  s.per_record = std::move(per_record);
+  double sum = 0.0;
+  s.max = -std::numeric_limits<double>::infinity();
+  for (const double v : s.per_record) {
+    sum += v;
+    s.max = std::max(s.max, v);
+  }
+  s.mean = sum / static_cast<double>(s.per_record.size());
+  s.value = mean_of_suite ? s.mean : s.max;
+  return s;
+}
+
+}  // namespace
+
+std::span<const DesignQuantityInfo> DesignQuantities() { return kDesignQuantities; }
+
+std::string PrepareDesignFolder(const std::string& requested, const model::DesignFile& design,
+                                const std::string& option) {
+  const std::string folder = !requested.empty() ? requested
+                             : !design.output_directory.empty()
+                                 ? design.output_directory
+                                 : fs::path(design.path).stem().string();
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder)) {
+    throw InputError({requested.empty() ? "output.directory" : option},
+                     fmt::format("cannot make the folder '{}'{}", folder,
+                                 error ? ": " + error.message() : ""));
+  }
+  return folder;
+}
+
+DesignOutcome RunDesign(const model::DesignFile& design, const std::string& output_directory,
+                        const std::string& version, Scheduler& scheduler,
+                        const std::function<void(const std::string&)>& progress) {
+  const auto say = [&](const std::string& line) {
+    if (progress) progress(line);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  DesignOutcome out;
+  const UnitSystem& units = design.model.units;
+  const double second = 1.0 / units.SiFactor(dimension::kTime);
+  const double metre = units.Convert(1.0, "m", dimension::kLength);
+
+  // 1. The bound models, read as they will run; written once the suite is ready, so that a
+  // design refused on its suite leaves nothing behind.
+  const model::BoundModels bounds = model::MakeBoundModels(design.model);
+  const fs::path models = fs::path(output_directory) / "models";
+  const std::string stem = fs::path(design.model_path).stem().string();
+  for (const model::BoundModel& bound : bounds.models) {
+    DesignBound b;
+    b.bound = bound.bound;
+    b.model_file = (models / (stem + "_" + bound.bound + ".yaml")).string();
+    b.model = model::LoadModelText(bound.text, b.model_file);
+    out.bounds.push_back(std::move(b));
+  }
+
+  // 2. The ELF procedure on each bound.
+  const analysis::DisplacementDemand demand = analysis::CodeDemand(design.target, units);
+  for (DesignBound& b : out.bounds) {
+    const analysis::IsolationSystem system(b.model);
+    b.elf = analysis::SolveElf(system, demand, metre);
+    b.damping_coefficient = analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
+    b.elf_total_displacement = analysis::TotalDisplacement(b.model, system, b.elf);
+    say(fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}", b.bound,
+                    b.elf.displacement, units.length(), b.elf.period / second,
+                    b.elf.at_design.damping, b.damping_coefficient));
+  }
+  const auto bound_index = [&](const std::string& name) {
+    for (std::size_t i = 0; i < out.bounds.size(); ++i) {
+      if (out.bounds[i].bound == name) return i;
+    }
+    return std::size_t{0};
+  };
+  out.period_range[0] = design.period_range[0] * out.bounds[bound_index("upper")].elf.period / second;
+  out.period_range[1] = design.period_range[1] * out.bounds[bound_index("lower")].elf.period / second;
+
+  // 3. The suite, scaled to the target.
+  const int directions = model::Directions(design.model);
+  std::vector<double> misfits;
+  std::vector<model::StudyRecord> records =
+      design.synthetic ? SyntheticRecords(design, out.period_range[1], output_directory,
+                                          directions, &misfits, progress)
+                       : design.records;
+  std::vector<double> periods;
+  try {
+    periods = spectra::ScalingPeriods(design.target, out.period_range[0], out.period_range[1]);
+  } catch (const InvalidParameter& error) {
+    throw InputError({design.suite_key + ".period_range"},
+                     fmt::format("{:g} to {:g} s, from T_M of the bounds: {}", out.period_range[0],
+                                 out.period_range[1], error.what()));
+  }
+  // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top.
+  std::vector<double> grid = periods;
+  for (int i = 0; i <= kDisplayPoints; ++i) {
+    grid.push_back(kDisplayLow * std::pow(2.0 * out.period_range[1] / kDisplayLow,
+                                          static_cast<double>(i) / kDisplayPoints));
+  }
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  std::vector<std::vector<double>> in_range(records.size());
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const std::vector<double> sa = RecordSpectrum(records[r], units, grid);
+    for (const double t : periods) {
+      in_range[r].push_back(sa[std::lower_bound(grid.begin(), grid.end(), t) - grid.begin()]);
+    }
+    DesignRecord d;
+    d.name = records[r].name;
+    for (const model::GroundMotionSection& c : records[r].components) d.files.push_back(c.file);
+    if (!misfits.empty()) d.misfit = misfits[r];
+    d.spectrum = sa;
+    out.records.push_back(std::move(d));
+  }
+  out.display_periods = grid;
+  for (const double t : grid) out.display_target.push_back(spectra::ContinuedSpectralAcceleration(design.target, t));
+  std::vector<double> target;
+  for (const double t : periods) target.push_back(spectra::SpectralAcceleration(design.target, t));
+  out.scaling = spectra::ScaleSuite(periods, target, in_range);
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    for (model::GroundMotionSection& c : records[r].components) c.scale *= out.scaling.factors[r];
+    out.records[r].shape_factor = out.scaling.pair_shape_factors[r];
+    out.records[r].factor = out.scaling.factors[r];
+  }
+  say(fmt::format("suite: {} {} scaled to the target over {:.3g} to {:.3g} s (common factor "
+                  "{:.4g}, governing at {:.3g} s)",
+                  records.size(), directions == 2 ? "pairs" : "records", out.period_range[0],
+                  out.period_range[1], out.scaling.common_factor,
+                  out.scaling.periods[out.scaling.governing]));
+
+  fs::create_directories(models);
+  for (std::size_t i = 0; i < bounds.models.size(); ++i) {
+    io::WriteTextFileAtomically(out.bounds[i].model_file,
+                                [&](std::ostream& file) { file << bounds.models[i].text; });
+  }
+
+  // 4. Every bound x eccentricity case x record.
+  out.eccentricities.push_back({"none", {}});
+  if (design.eccentricity > 0.0) {
+    for (const analysis::EccentricityCase& c :
+         analysis::AccidentalEccentricities(design.model, design.eccentricity, "eccentricity")) {
+      out.eccentricities.push_back(c);
+    }
+  }
+  model::StudyFile& study = out.study;
+  study.path = design.path;
+  study.description = design.description;
+  study.building_path = design.model_path;
+  study.units = units;
+  study.directions = directions;
+  study.rotations = directions == 2;
+  for (const DesignBound& b : out.bounds) {
+    for (const analysis::EccentricityCase& c : out.eccentricities) {
+      model::StudyVariant variant;
+      variant.name = c.name == "none" ? b.bound : b.bound + "_" + c.name;
+      variant.model = c.name == "none" ? b.model : analysis::WithCentresOfMassShifted(b.model, c.shift);
+      study.variants.push_back(std::move(variant));
+    }
+  }
+  study.records = records;
+  study.scales = {1.0};
+  study.runs = model::RunFiles::kSummary;
+  const std::vector<Job> jobs = ExpandJobs(study);
+  say(fmt::format("runs: {} bounds x {} eccentricity cases x {} records = {} runs on {}",
+                  out.bounds.size(), out.eccentricities.size(), records.size(), jobs.size(),
+                  scheduler.Describe()));
+  const ScheduleOutcome outcome = RunStudy(
+      study, jobs, output_directory, version, scheduler, 1,
+      [&](const JobResult& result, std::size_t done, std::size_t total) {
+        say(JobProgressLine(study, jobs[result.job], result, done, total));
+      });
+  if (!scheduler.IsCoordinator()) return out;
+  out.runs = outcome.results;
+  out.failed = outcome.failed;
+  if (out.failed > 0) return out;
+
+  // 5. Design values: per bound and record the envelope over the cases, then over the suite.
+  const std::size_t C = out.eccentricities.size(), R = records.size();
+  out.mean_of_suite = R >= kMinimumRecordsForMean;
+  for (std::size_t b = 0; b < out.bounds.size(); ++b) {
+    std::array<DesignStatistic, kDesignQuantityCount> values;
+    for (const DesignQuantityInfo& info : kDesignQuantities) {
+      const std::size_t q = static_cast<std::size_t>(Source(info.quantity));
+      std::vector<double> per_record(R, 0.0);
+      for (std::size_t r = 0; r < R; ++r) {
+        // D_M is the base's displacement without eccentricity; the others the envelope.
+        const std::size_t cases = info.quantity == DesignQuantity::kDisplacement ? 1 : C;
+        for (std::size_t c = 0; c < cases; ++c) {
+          const double v = out.runs[(b * C + c) * R + r].values[q];
+          if (std::isfinite(v)) per_record[r] = std::max(per_record[r], v);
+        }
+      }
+      values[static_cast<std::size_t>(info.quantity)] = Statistic(per_record, out.mean_of_suite);
+    }
+    out.values.push_back(values);
+  }
+  for (std::size_t q = 0; q < kDesignQuantityCount; ++q) {
+    for (std::size_t b = 1; b < out.bounds.size(); ++b) {
+      if (out.values[b][q].value > out.values[out.governing[q]][q].value) out.governing[q] = b;
+    }
+  }
+
+  // Histories for the figures: the record of the largest D_TM of the governing bound, each bound
+  // in its worst eccentricity case for that record.
+  const std::size_t total = static_cast<std::size_t>(DesignQuantity::kTotalDisplacement);
+  const std::vector<double>& governing = out.values[out.governing[total]][total].per_record;
+  out.figure_record =
+      static_cast<std::size_t>(std::max_element(governing.begin(), governing.end()) - governing.begin());
+  model::StudyFile histories = study;
+  histories.variants.clear();
+  histories.records = {records[out.figure_record]};
+  histories.runs = model::RunFiles::kFull;
+  const std::size_t q_total = static_cast<std::size_t>(Quantity::kIsolatorDisplacement);
+  for (std::size_t b = 0; b < out.bounds.size(); ++b) {
+    std::size_t worst = 0;
+    for (std::size_t c = 1; c < C; ++c) {
+      if (out.runs[(b * C + c) * R + out.figure_record].values[q_total] >
+          out.runs[(b * C + worst) * R + out.figure_record].values[q_total]) {
+        worst = c;
+      }
+    }
+    model::StudyVariant variant = study.variants[b * C + worst];
+    variant.name = out.bounds[b].bound;
+    histories.variants.push_back(std::move(variant));
+  }
+  const std::vector<Job> history_jobs = ExpandJobs(histories);
+  const fs::path history_folder = fs::path(output_directory) / "histories";
+  fs::create_directories(history_folder);
+  const ScheduleOutcome kept = RunStudy(histories, history_jobs, history_folder.string(), version,
+                                        scheduler, 1,
+                                        [](const JobResult&, std::size_t, std::size_t) {});
+  for (const JobResult& r : kept.results) {
+    out.history_files.push_back(r.completed ? (fs::path("histories") / r.file).string() : "");
+  }
+  out.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace isolab::study

@@ -1,0 +1,274 @@
+#include "isolab/study/design_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "isolab/io/atomic_file.h"
+
+namespace isolab::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::size_t Index(DesignQuantity q) { return static_cast<std::size_t>(q); }
+
+std::string UnitOf(DesignQuantity q, const UnitSystem& units) {
+  switch (q) {
+    case DesignQuantity::kBaseShear:
+    case DesignQuantity::kIsolatorForce:
+      return units.force();
+    case DesignQuantity::kStoryDriftRatio:
+      return "%";
+    case DesignQuantity::kFloorAcceleration:
+      return "g";
+    default:
+      return units.length();
+  }
+}
+
+// The code's checks, once for the report and the terminal.
+struct Checks {
+  double elf_total = 0.0, rha_total = 0.0, design_total = 0.0;  // D_TM
+  double elf_shear = 0.0, rha_shear = 0.0, design_shear = 0.0;  // V_b
+  double drift = 0.0, drift_limit = 0.0;                        // ratios (%)
+  std::string total_bound, shear_bound;
+};
+
+Checks CheckDesign(const model::DesignFile& design, const DesignOutcome& o) {
+  Checks c;
+  for (const DesignBound& b : o.bounds) {
+    c.elf_total = std::max(c.elf_total, b.elf_total_displacement);
+    c.elf_shear = std::max(c.elf_shear, b.elf.base_shear);
+  }
+  const std::size_t t = o.governing[Index(DesignQuantity::kTotalDisplacement)];
+  const std::size_t v = o.governing[Index(DesignQuantity::kBaseShear)];
+  c.total_bound = o.bounds[t].bound;
+  c.shear_bound = o.bounds[v].bound;
+  c.rha_total = o.values[t][Index(DesignQuantity::kTotalDisplacement)].value;
+  c.rha_shear = o.values[v][Index(DesignQuantity::kBaseShear)].value;
+  c.design_total = std::max(c.rha_total, kElfDisplacementFloor * c.elf_total);
+  c.design_shear = std::max(c.rha_shear, kElfShearFloor * c.elf_shear);
+  const std::size_t d = o.governing[Index(DesignQuantity::kStoryDriftRatio)];
+  c.drift = o.values[d][Index(DesignQuantity::kStoryDriftRatio)].value;
+  c.drift_limit = 100.0 * design.drift_limit;
+  return c;
+}
+
+std::string Statistic(const DesignOutcome& o) {
+  return o.mean_of_suite ? fmt::format("mean of {} records", o.records.size())
+                         : fmt::format("maximum of {} records (fewer than {}: no mean)",
+                                       o.records.size(), kMinimumRecordsForMean);
+}
+
+void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::ostream& file) {
+  const UnitSystem& u = design.model.units;
+  const double second = 1.0 / u.SiFactor(dimension::kTime);
+  fmt::print(file, "bound,quantity,unit,statistic,value\n");
+  for (const DesignBound& b : o.bounds) {
+    const auto row = [&](std::string_view q, const std::string& unit, double value) {
+      fmt::print(file, "{},{},{},elf,{:.12g}\n", b.bound, q, unit, value);
+    };
+    row("D_M", u.length(), b.elf.displacement);
+    row("T_M", "s", b.elf.period / second);
+    row("beta_M", "1", b.elf.at_design.damping);
+    row("B_M", "1", b.damping_coefficient);
+    row("k_M", u.force() + "/" + u.length(), b.elf.at_design.stiffness);
+    row("V_b", u.force(), b.elf.base_shear);
+    row("D_TM", u.length(), b.elf_total_displacement);
+  }
+  for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+    for (const DesignQuantityInfo& info : DesignQuantities()) {
+      const DesignStatistic& s = o.values[b][Index(info.quantity)];
+      const std::string unit = UnitOf(info.quantity, u);
+      fmt::print(file, "{},{},{},mean,{:.12g}\n", o.bounds[b].bound, info.key, unit, s.mean);
+      fmt::print(file, "{},{},{},max,{:.12g}\n", o.bounds[b].bound, info.key, unit, s.max);
+    }
+  }
+}
+
+void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, std::ostream& file) {
+  fmt::print(file, "bound,eccentricity,record,factor,completed");
+  for (const QuantityInfo& info : Quantities()) {
+    fmt::print(file, ",{} [{}]", info.key, QuantityUnit(info.quantity, design.model.units));
+  }
+  fmt::print(file, ",file\n");
+  const std::size_t C = o.eccentricities.size(), R = o.records.size();
+  for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+    for (std::size_t c = 0; c < C; ++c) {
+      for (std::size_t r = 0; r < R; ++r) {
+        const JobResult& run = o.runs[(b * C + c) * R + r];
+        fmt::print(file, "{},{},{},{:.12g},{}", o.bounds[b].bound, o.eccentricities[c].name,
+                   o.records[r].name, o.records[r].factor, run.completed ? 1 : 0);
+        for (const double v : run.values) fmt::print(file, ",{:.12g}", v);
+        fmt::print(file, ",{}\n", run.file);
+      }
+    }
+  }
+}
+
+void WriteSpectra(const DesignOutcome& o, std::ostream& file) {
+  fmt::print(file, "period_s,in_range,target_g");
+  for (const DesignRecord& r : o.records) fmt::print(file, ",{}_g", r.name);
+  fmt::print(file, ",mean_g\n");
+  const double low = o.period_range[0] * (1 - 1e-12), high = o.period_range[1] * (1 + 1e-12);
+  for (std::size_t p = 0; p < o.display_periods.size(); ++p) {
+    const double t = o.display_periods[p];
+    fmt::print(file, "{:.12g},{},{:.12g}", t, t >= low && t <= high ? 1 : 0, o.display_target[p]);
+    double sum = 0.0;
+    for (const DesignRecord& r : o.records) {
+      fmt::print(file, ",{:.12g}", r.factor * r.spectrum[p]);
+      sum += r.factor * r.spectrum[p];
+    }
+    fmt::print(file, ",{:.12g}\n", sum / static_cast<double>(o.records.size()));
+  }
+}
+
+void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
+                 const std::string& directory, bool figures, std::ostream& md) {
+  const UnitSystem& u = design.model.units;
+  const double second = 1.0 / u.SiFactor(dimension::kTime);
+  const auto relative = [&](const std::string& path) {
+    return fs::path(path).lexically_relative(directory).string();
+  };
+  const Checks c = CheckDesign(design, o);
+  fmt::print(md, "# Design of {}\n\n", design.model_path);
+  if (!design.description.empty()) fmt::print(md, "{}\n\n", design.description);
+  fmt::print(md, "Design file `{}`. Target: {}. Lengths in {}, forces in {}.\n\n", design.path,
+             spectra::Describe(design.target), u.length(), u.force());
+
+  fmt::print(md, "## Bound models\n\n");
+  fmt::print(md, "The bearings' properties at nominal, upper-bound and lower-bound values (ASCE "
+                 "7-16 17.2.8.4), each a model that runs alone:\n\n");
+  for (const DesignBound& b : o.bounds) {
+    fmt::print(md, "- {}: `{}`\n", b.bound, relative(b.model_file));
+  }
+
+  fmt::print(md, "\n## Equivalent lateral force procedure (ASCE 7-16 17.5)\n\n");
+  fmt::print(md, "| bound | D_M ({0}) | T_M (s) | beta_M | B_M | k_M ({1}/{0}) | V_b ({1}) | "
+                 "D_TM ({0}) |\n|---|---|---|---|---|---|---|---|\n",
+             u.length(), u.force());
+  for (const DesignBound& b : o.bounds) {
+    fmt::print(md, "| {} | {:.4g} | {:.4g} | {:.3g} | {:.3g} | {:.4g} | {:.4g} | {:.4g} |\n",
+               b.bound, b.elf.displacement, b.elf.period / second, b.elf.at_design.damping,
+               b.damping_coefficient, b.elf.at_design.stiffness, b.elf.base_shear,
+               b.elf_total_displacement);
+  }
+  fmt::print(md, "\nD_M = g S_M1 T_M / (4 pi^2 B_M) at the bearings' effective stiffness and "
+                 "damping at D_M, from their own laws (three cycles at D_M, the third read).\n");
+
+  fmt::print(md, "\n## The suite\n\n");
+  fmt::print(md, "{} {}, each scaled by its own factor so that the mean of their {} is nowhere "
+                 "below the target from {:.3g} s ({:g} T_M upper) to {:.3g} s ({:g} T_M lower). "
+                 "Common factor {:.4g}; the mean touches the target at {:.3g} s.\n\n",
+             o.records.size(), o.study.directions == 2 ? "pairs" : "records",
+             o.study.directions == 2 ? "RotD100 spectra" : "5 % spectra", o.period_range[0],
+             design.period_range[0], o.period_range[1], design.period_range[1],
+             o.scaling.common_factor, o.scaling.periods[o.scaling.governing]);
+  fmt::print(md, "| record | shape factor | factor | matched to |\n|---|---|---|---|\n");
+  for (const DesignRecord& r : o.records) {
+    fmt::print(md, "| {} | {:.4g} | {:.4g} | {} |\n", r.name, r.shape_factor, r.factor,
+               r.misfit >= 0 ? fmt::format("{:.3g}", r.misfit) : "(given)");
+  }
+  if (figures) {
+    fmt::print(md, "\n![The scaled suite's spectra against the target](design_spectra.png)\n");
+  }
+
+  fmt::print(md, "\n## Response-history design values\n\n");
+  fmt::print(md, "{} bounds x {} eccentricity cases ({}) x {} records = {} runs. Per bound and "
+                 "record the envelope over the eccentricity cases (D_M: without eccentricity), "
+                 "then the {}.\n\n",
+             o.bounds.size(), o.eccentricities.size(),
+             fmt::join([&] {
+               std::vector<std::string> names;
+               for (const auto& e : o.eccentricities) names.push_back(e.name);
+               return names;
+             }(), ", "),
+             o.records.size(), o.runs.size(), Statistic(o));
+  fmt::print(md, "| quantity |");
+  for (const DesignBound& b : o.bounds) fmt::print(md, " {} |", b.bound);
+  fmt::print(md, " governing |\n|---|");
+  for (std::size_t b = 0; b <= o.bounds.size(); ++b) fmt::print(md, "---|");
+  fmt::print(md, "\n");
+  for (const DesignQuantityInfo& info : DesignQuantities()) {
+    fmt::print(md, "| {} ({}) |", info.label, UnitOf(info.quantity, u));
+    for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+      fmt::print(md, " {:.4g} |", o.values[b][Index(info.quantity)].value);
+    }
+    fmt::print(md, " {} |\n", o.bounds[o.governing[Index(info.quantity)]].bound);
+  }
+
+  fmt::print(md, "\n## Checks\n\n");
+  fmt::print(md, "| check | response history | limit | design value |\n|---|---|---|---|\n");
+  fmt::print(md, "| D_TM >= {:g} D_TM (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
+                 "{:.4g} {} |\n",
+             kElfDisplacementFloor, c.rha_total, u.length(), c.total_bound,
+             kElfDisplacementFloor * c.elf_total, u.length(), c.design_total, u.length());
+  fmt::print(md, "| V_b >= {:g} V_b (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
+                 "{:.4g} {} |\n",
+             kElfShearFloor, c.rha_shear, u.force(), c.shear_bound, kElfShearFloor * c.elf_shear,
+             u.force(), c.design_shear, u.force());
+  fmt::print(md, "| story drift ratio <= {:g} % | {:.3g} % | {:g} % | {} |\n", c.drift_limit,
+             c.drift, c.drift_limit, c.drift <= c.drift_limit ? "met" : "EXCEEDED");
+
+  fmt::print(md, "\n## Figures\n\n");
+  if (!figures) {
+    fmt::print(md, "Not drawn (`--no-figures`).\n");
+    return;
+  }
+  fmt::print(md, "Histories kept for record {} (the largest D_TM of the governing bound), each "
+                 "bound in its worst eccentricity case: `{}`.\n\n",
+             o.records[o.figure_record].name, fmt::join(o.history_files, "`, `"));
+  fmt::print(md, "![The worst bearing's loops at the three bounds](design_loops.png)\n\n");
+  if (o.study.directions == 2) {
+    fmt::print(md, "![The orbits of the bearings that move most](design_orbits.png)\n\n");
+  }
+  fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
+}
+
+}  // namespace
+
+void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outcome,
+                      const std::string& output_directory, bool figures) {
+  const fs::path dir(output_directory);
+  io::WriteTextFileAtomically((dir / "design_values.csv").string(),
+                              [&](std::ostream& f) { WriteValues(design, outcome, f); });
+  io::WriteTextFileAtomically((dir / "design_runs.csv").string(),
+                              [&](std::ostream& f) { WriteRuns(design, outcome, f); });
+  io::WriteTextFileAtomically((dir / "design_spectra.csv").string(),
+                              [&](std::ostream& f) { WriteSpectra(outcome, f); });
+  io::WriteTextFileAtomically((dir / "design.md").string(), [&](std::ostream& f) {
+    WriteReport(design, outcome, output_directory, figures, f);
+  });
+}
+
+std::string DesignSummaryText(const model::DesignFile& design, const DesignOutcome& o) {
+  const UnitSystem& u = design.model.units;
+  const Checks c = CheckDesign(design, o);
+  std::ostringstream out;
+  fmt::print(out, "design values ({}):\n", Statistic(o));
+  fmt::print(out, "{:<54}", "");
+  for (const DesignBound& b : o.bounds) fmt::print(out, " {:>12}", b.bound);
+  fmt::print(out, "  governing\n");
+  for (const DesignQuantityInfo& info : DesignQuantities()) {
+    fmt::print(out, "{:<54}", fmt::format("{} ({})", info.label, UnitOf(info.quantity, u)));
+    for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+      fmt::print(out, " {:>12.5g}", o.values[b][Index(info.quantity)].value);
+    }
+    fmt::print(out, "  {}\n", o.bounds[o.governing[Index(info.quantity)]].bound);
+  }
+  fmt::print(out, "D_TM {:.5g} {} ({}), ELF floor {:g} x {:.5g} = {:.5g}: design D_TM {:.5g} {}\n",
+             c.rha_total, u.length(), c.total_bound, kElfDisplacementFloor, c.elf_total,
+             kElfDisplacementFloor * c.elf_total, c.design_total, u.length());
+  fmt::print(out, "V_b {:.5g} {} ({}), ELF floor {:g} x {:.5g} = {:.5g}: design V_b {:.5g} {}\n",
+             c.rha_shear, u.force(), c.shear_bound, kElfShearFloor, c.elf_shear,
+             kElfShearFloor * c.elf_shear, c.design_shear, u.force());
+  fmt::print(out, "story drift ratio {:.3g} % against {:g} %: {}\n", c.drift, c.drift_limit,
+             c.drift <= c.drift_limit ? "met" : "EXCEEDED");
+  return out.str();
+}
+
+}  // namespace isolab::study

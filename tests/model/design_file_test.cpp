@@ -1,0 +1,127 @@
+// Design files: the target, the suite and the checks read in the model's units, and every bad
+// input refused at file:line:column with its key path and what was expected.
+#include "isolab/model/design_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <variant>
+
+#include "isolab/core/errors.h"
+#include "own_test_file.h"
+
+namespace isolab::model {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kGroundMotions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
+
+const std::string kOneDirection = R"(units: {force: kN, length: mm, time: s}
+structure: {type: shear_building, base_mass: 400 t, stories: {count: 2, mass: 300 t, stiffness: 800 kN/mm, height: 3.5 m}}
+isolation:
+  count: 8
+  name: lrb
+  components: [{name: lrb, type: lead_rubber, qd: 40 kN, kd: 0.5 kN/mm, ku: 5 kN/mm}]
+  modification: {lrb: {qd: {min: 0.8, max: 1.3}}}
+)";
+
+class DesignFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = testing::FreshTestDirectory();
+    std::ofstream(directory_ / "building.yaml") << kOneDirection;
+  }
+  std::string Write(const std::string& text) {
+    const fs::path path = directory_ / "design.yaml";
+    std::ofstream(path) << text;
+    return path.string();
+  }
+  // The message of the InputError that loading `text` throws.
+  std::string ErrorOf(const std::string& text) {
+    try {
+      LoadDesignFile(Write(text));
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    ADD_FAILURE() << text << "\nloaded without error";
+    return {};
+  }
+  fs::path directory_;
+};
+
+::testing::AssertionResult Holds(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << text << "' does not hold '" << part << "'";
+}
+
+const std::string kRecords = "suite:\n  records: [" + kGroundMotions + "fwn_firm_seed1.at2, " +
+                             kGroundMotions + "fwn_soft_seed2.at2, " + kGroundMotions +
+                             "elcentro_1940_ns.at2]\n";
+
+TEST_F(DesignFileTest, ReadsTheTargetTheSuiteAndTheChecks) {
+  const DesignFile design = LoadDesignFile(Write(
+      "model: building.yaml\ntarget: {asce7: {sms: 1.5 g, sm1: 8.826 m/s^2, tl: 6 s}}\n" +
+      kRecords + "  period_range: [0.8, 1.2]\ndrift_limit: 0.02\n"));
+  const auto* asce = std::get_if<spectra::Asce7Spectrum>(&design.target);
+  ASSERT_NE(asce, nullptr);
+  EXPECT_DOUBLE_EQ(asce->sms, 1.5);
+  EXPECT_NEAR(asce->sm1, 8.826 / 9.80665, 1e-12);  // a quantity with its unit, in g
+  EXPECT_DOUBLE_EQ(asce->long_period, 6.0);
+  EXPECT_EQ(design.records.size(), 3u);
+  EXPECT_FALSE(design.synthetic);
+  EXPECT_DOUBLE_EQ(design.period_range[0], 0.8);
+  EXPECT_DOUBLE_EQ(design.period_range[1], 1.2);
+  EXPECT_DOUBLE_EQ(design.eccentricity, 0.0);  // one direction: no plan to shift in
+  EXPECT_DOUBLE_EQ(design.drift_limit, 0.02);
+}
+
+TEST_F(DesignFileTest, ReadsEurocode8AndSyntheticSuites) {
+  const DesignFile design = LoadDesignFile(
+      Write("model: building.yaml\ntarget: {eurocode8: {agr: 0.3, ground: C, type: 2, "
+            "importance: 1.2}}\nsuite: {synthetic: {count: 7, seed: 3, duration: 40 s}}\n"));
+  const auto* ec8 = std::get_if<spectra::Eurocode8Spectrum>(&design.target);
+  ASSERT_NE(ec8, nullptr);
+  EXPECT_EQ(ec8->ground, spectra::GroundType::kC);
+  EXPECT_EQ(ec8->type, 2);
+  EXPECT_DOUBLE_EQ(ec8->importance, 1.2);
+  ASSERT_TRUE(design.synthetic);
+  EXPECT_EQ(design.synthetic->count, 7);
+  EXPECT_EQ(design.synthetic->seed, 3u);
+  EXPECT_DOUBLE_EQ(design.synthetic->duration, 40.0);
+}
+
+TEST_F(DesignFileTest, RefusesWhatTheProcedureCannotDo) {
+  const std::string head = "model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n";
+  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "eccentricity: 0.05\n")
+                , "design.yaml:5:15: eccentricity: 0.05: accidental eccentricity shifts "
+                      "floors in plan"));
+  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "  period_range: [1.1, 1.25]\n")
+                , "suite.period_range: [1.1, 1.25] (0 < lower <= 1 <= upper"));
+  EXPECT_TRUE(Holds(ErrorOf(head + "suite: {synthetic: {count: 2}}\n"),
+                    "suite.synthetic.count: 2 (the response-history procedure needs at least 3"));
+  EXPECT_TRUE(Holds(ErrorOf(head + "suite:\n  records: [" + kGroundMotions + "pulse_tp2.at2]\n"),
+                    "suite.records: 1 (the response-history procedure needs at least 3"));
+  EXPECT_TRUE(Holds(ErrorOf(head + "suite: {period_range: [0.75, 1.25]}\n")
+                , "suite: give records (files or pairs) or synthetic"));
+  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "drift_limit: 1.5\n"), "drift_limit: 1.5 (a story"));
+  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: -1.5, sm1: 0.9}}\n" + kRecords)
+                , "target.asce7.sms: -1.5 g (must be > 0)"));
+  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {eurocode8: {agr: 0.3, ground: F}}\n" +
+                    kRecords)
+                , "target.eurocode8.ground: 'F' (A, B, C, D or E)"));
+  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}, file: t.csv}\n" +
+                    kRecords)
+                , "target: give one of asce7, eurocode8 or file"));
+  std::ofstream(directory_ / "bare.yaml") << "units: {force: kN, length: mm, time: s}\n"
+                                             "structure: {type: sdof, mass: 1}\n"
+                                             "isolation: {components: [{name: k, type: "
+                                             "linear_spring, k: 1}]}\n";
+  EXPECT_TRUE(Holds(ErrorOf("model: bare.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n" + kRecords)
+                , "gives no property modification factors"));
+}
+
+}  // namespace
+}  // namespace isolab::model
