@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
-    if (app.got_subcommand("synth")) isolab::cli::RunSynthCommand(synth);
+    if (app.got_subcommand("synth")) return isolab::cli::RunSynthCommand(synth, std::cout);
 #ifdef ISOLAB_ALL_COMMANDS
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
     if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);

@@ -1,10 +1,23 @@
 #include "synth_command.h"
 
 #include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <ostream>
 
+#include "isolab/analysis/matched_pairs.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/number.h"
+#include "isolab/core/text_file.h"
+#include "isolab/io/output_check.h"
 
 namespace isolab::cli {
 namespace {
@@ -13,7 +26,13 @@ namespace {
 // are counted in an int. Ten samples at least: a record of one sample is all zero (its envelope
 // starts at 0), and scaling it to the PGA divides by that zero.
 constexpr double kMaxDuration = 1e5;
+constexpr double kMaxSamples = 1e7;
 constexpr int kMinSamples = 10;
+// The step of PEER's records is 0.005 to 0.02 s; 0.001 to 0.05 s takes in every one of them.
+constexpr double kMinDt = 0.001, kMaxDt = 0.05;
+// Pairs: a suite of a thousand 10-minute records takes hours; more is a typing slip.
+constexpr int kMaxPairs = 1000;
+constexpr double kMaxPairDuration = 600.0;  // s
 // Bounds no earthquake approaches, an order of magnitude past the largest recorded (PGA about 3 g,
 // PGV about 3 m/s): what lies beyond is a unit slip, and near the largest doubles the samples
 // overflow to infinity.
@@ -31,9 +50,12 @@ void Require(bool ok, const char* option, double value, const std::string& rule)
 void CheckNoise(const analysis::FilteredNoiseSpec& s) {
   Require(s.pga > 0 && s.pga <= kMaxPga, "--pga", s.pga,
           fmt::format("must be > 0 and at most {:g} g", kMaxPga));
-  Require(s.duration >= kMinSamples * s.dt && s.duration <= kMaxDuration, "--duration", s.duration,
+  Require(s.dt >= kMinDt && s.dt <= kMaxDt, "--dt", s.dt,
+          fmt::format("must be at least {:g} s and at most {:g} s", kMinDt, kMaxDt));
+  const double longest = std::min(kMaxDuration, kMaxSamples * s.dt);
+  Require(s.duration >= kMinSamples * s.dt && s.duration <= longest, "--duration", s.duration,
           fmt::format("must be at least {:g} s ({} samples) and at most {:g} s", kMinSamples * s.dt,
-                      kMinSamples, kMaxDuration));
+                      kMinSamples, longest));
   // RK4 integrates the site filter at dt: a quarter of the sampling rate keeps w dt < 1.6.
   const double highest = 0.25 / s.dt;
   Require(s.site_frequency > 0 && s.site_frequency <= highest, "--site-frequency", s.site_frequency,
@@ -53,16 +75,189 @@ void CheckPulse(const analysis::PulseSpec& s) {
           s.oscillations, fmt::format("must be > 1 and at most {:g}", kMaxOscillations));
 }
 
+// A target spectrum as a table: a header line `period_s,sa_g`, then one row per period (s, > 0,
+// increasing) with its pseudo-acceleration (g, > 0); lines starting with '#' and blank lines are
+// skipped. Read here until the shared reader of design spectra (spectra/design_spectrum.h, with
+// io's CSV reader) replaces it. Between its periods Sa is interpolated linearly in period.
+struct TargetTable {
+  std::vector<double> periods, sa;
+  double At(double period) const {
+    const auto upper = std::upper_bound(periods.begin(), periods.end(), period);
+    const std::size_t i = std::clamp<std::size_t>(upper - periods.begin(), 1, periods.size() - 1);
+    const double s = (period - periods[i - 1]) / (periods[i] - periods[i - 1]);
+    return (1.0 - s) * sa[i - 1] + s * sa[i];
+  }
+};
+
+std::string Trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return std::string(text.substr(first, text.find_last_not_of(" \t") - first + 1));
+}
+
+// Throws InputError at the file and line: a missing file or header, a row that is not two finite
+// numbers, a period not > 0 or not above the one before, an Sa not > 0, fewer than two rows.
+TargetTable ReadTargetSpectrumCsv(const std::string& path) {
+  TextLines lines(path);
+  if (!lines.is_open()) {
+    throw InputError({"--target"},
+                     fmt::format("cannot open '{}' ({})", path, std::strerror(errno)));
+  }
+  TargetTable table;
+  bool header = false;
+  std::string line;
+  while (lines.Next(&line)) {
+    const std::string text = Trimmed(line);
+    if (text.empty() || text[0] == '#') continue;
+    const SourceLocation where{path, lines.line_number()};
+    const auto comma = text.find(',');
+    const std::string first = Trimmed(std::string_view(text).substr(0, comma));
+    const std::string second =
+        comma == std::string::npos ? "" : Trimmed(std::string_view(text).substr(comma + 1));
+    if (!header) {
+      if (first != "period_s" || second != "sa_g") {
+        throw InputError(where, fmt::format("'{}' is not the header period_s,sa_g", text));
+      }
+      header = true;
+      continue;
+    }
+    if (comma == std::string::npos || second.find(',') != std::string::npos) {
+      throw InputError(where, fmt::format("'{}' is not a row period_s,sa_g", text));
+    }
+    std::string problem;
+    const std::optional<double> period = ParseFiniteNumber(first, &problem);
+    if (!period) throw InputError(where, fmt::format("period_s: {}", problem));
+    const std::optional<double> sa = ParseFiniteNumber(second, &problem);
+    if (!sa) throw InputError(where, fmt::format("sa_g: {}", problem));
+    if (!(*period > (table.periods.empty() ? 0.0 : table.periods.back()))) {
+      throw InputError(where, table.periods.empty()
+                                  ? fmt::format("period_s: {:g} (must be > 0)", *period)
+                                  : fmt::format("period_s: {:g} (must be > the row before's {:g})",
+                                                *period, table.periods.back()));
+    }
+    if (!(*sa > 0.0)) throw InputError(where, fmt::format("sa_g: {:g} (must be > 0)", *sa));
+    table.periods.push_back(*period);
+    table.sa.push_back(*sa);
+  }
+  if (!header) throw InputError({path}, "no header period_s,sa_g");
+  if (table.periods.size() < 2) {
+    throw InputError({path}, fmt::format("{} row(s): a target spectrum needs two periods at least",
+                                         table.periods.size()));
+  }
+  return table;
+}
+
+// The option a field of MatchedPairSpec comes from, for its violations.
+const char* OptionOf(const std::string& key) {
+  if (key == "count") return "--pairs";
+  if (key == "period_min" || key == "period_max") return "--periods";
+  if (key == "tolerance") return "--tolerance";
+  if (key == "motion.dt") return "--dt";
+  if (key == "motion.duration") return "--duration";
+  return "--target";
+}
+
+int RunPairs(const SynthOptions& o, std::ostream& out) {
+  // Options of the other modes are refused, not ignored.
+  if (o.kind == "pulse") {
+    throw InputError({"--pairs"}, "matches pairs of filtered noise: not with pulse");
+  }
+  if (o.pga) {
+    throw InputError({"--pga"}, "the pairs are scaled to --target: give no --pga with --pairs");
+  }
+  const int count = *o.pairs;
+  Require(count >= 1 && count <= kMaxPairs, "--pairs", count,
+          fmt::format("must be at least 1 and at most {}", kMaxPairs));
+  analysis::FilteredNoiseSpec shape = o.noise;
+  CheckNoise(shape);
+  Require(shape.duration <= kMaxPairDuration, "--duration", shape.duration,
+          fmt::format("must be at most {:g} s with --pairs", kMaxPairDuration));
+  if (o.target.empty()) throw InputError({"--pairs"}, "needs --target: the spectrum to match");
+  analysis::MatchedPairSpec spec;
+  spec.seed = o.noise.seed;
+  spec.count = count;
+  spec.motion = shape;
+  if (!o.periods.empty()) {
+    if (o.periods.size() != 2) {
+      throw InputError({"--periods"},
+                       fmt::format("{} value(s): give LO,HI in s", o.periods.size()));
+    }
+    spec.period_min = o.periods[0];
+    spec.period_max = o.periods[1];
+  }
+  if (o.tolerance) spec.tolerance = *o.tolerance;
+  spec.target_name = std::filesystem::path(o.target).filename().string();
+  try {
+    spec.Validate();
+  } catch (const InvalidParameter& error) {
+    const ParameterViolation& v = error.violation();
+    throw InputError({OptionOf(v.key)}, fmt::format("{:g} ({})", v.value, v.rule));
+  }
+
+  // Every output checked before the table is read and the work starts.
+  if (!std::filesystem::is_directory(o.output)) {
+    throw InputError({"--output"}, fmt::format("'{}' is not a folder", o.output));
+  }
+  const int width = static_cast<int>(std::to_string(count).size());
+  std::vector<std::string> paths;
+  for (int k = 1; k <= count; ++k) {
+    for (const char* component : {"h1", "h2"}) {
+      paths.push_back(
+          (std::filesystem::path(o.output) / fmt::format("pair{:0{}}_{}.at2", k, width, component))
+              .string());
+    }
+  }
+  io::CheckOutputs({o.target}, paths);
+  const TargetTable table = ReadTargetSpectrumCsv(o.target);
+  if (spec.period_min < table.periods.front() || spec.period_max > table.periods.back()) {
+    throw InputError(
+        {"--periods"},
+        fmt::format("{:g},{:g} s is not inside the periods of {}, [{:g}, {:g}] s", spec.period_min,
+                    spec.period_max, o.target, table.periods.front(), table.periods.back()));
+  }
+
+  const std::vector<analysis::MatchedPair> pairs =
+      analysis::MatchPairs(spec, [&table](double period) { return table.At(period); });
+  std::vector<std::string> failed;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    analysis::WriteAt2(pairs[k].h1, paths[2 * k]);
+    analysis::WriteAt2(pairs[k].h2, paths[2 * k + 1]);
+    fmt::print(out, "pair {:0{}}: misfit {:.4f} after {} iterations{}  {} {}\n", k + 1, width,
+               pairs[k].misfit, pairs[k].iterations, pairs[k].converged ? "" : " (NOT CONVERGED)",
+               paths[2 * k], paths[2 * k + 1]);
+    if (!pairs[k].converged) failed.push_back(fmt::format("{:0{}}", k + 1, width));
+  }
+  if (failed.empty()) return 0;
+  std::cerr << fmt::format(
+      "isolab: synth: pair {} did not converge: RotD100 not within --tolerance {:g} of the "
+      "target over [{:g}, {:g}] s after {} iterations (records written all the same)\n",
+      fmt::join(failed, ", "), spec.tolerance, spec.period_min, spec.period_max,
+      spec.max_iterations);
+  return 1;
+}
+
 }  // namespace
 
 void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   CLI::App* command = app.add_subcommand("synth", "Write a seeded synthetic ground motion (AT2)");
   command->add_option("kind", o.kind, "noise (filtered white noise) or pulse (near-fault)")
       ->check(CLI::IsMember({"noise", "pulse"}));
-  command->add_option("-o,--output", o.output, "AT2 file to write")->required();
-  command->add_option("--seed", o.noise.seed, "noise: random seed");
-  command->add_option("--pga", o.noise.pga, "noise: peak ground acceleration (g), (0, 10]");
-  command->add_option("--duration", o.noise.duration, "noise: duration (s), ten samples or more");
+  command->add_option("-o,--output", o.output, "AT2 file to write; with --pairs, the folder")
+      ->required();
+  command->add_option("--seed", o.noise.seed, "noise, pairs: random seed");
+  command->add_option("--pga", o.pga, "noise: peak ground acceleration (g), (0, 10]");
+  command->add_option("--duration", o.noise.duration,
+                      "noise, pairs: duration (s), ten samples or more");
+  command->add_option("--dt", o.noise.dt, "noise, pairs: time step (s), [0.001, 0.05]");
+  command->add_option("--pairs", o.pairs,
+                      "Write N pairs of filtered noise (pair<k>_h1.at2, pair<k>_h2.at2 in the "
+                      "--output folder) whose RotD100 matches --target");
+  command->add_option("--target", o.target,
+                      "pairs: target spectrum, CSV with the header period_s,sa_g (s, g)");
+  command->add_option("--periods", o.periods, "pairs: LO,HI (s), the range to match; 0.1,5")
+      ->delimiter(',');
+  command->add_option("--tolerance", o.tolerance,
+                      "pairs: largest |RotD100/target - 1| accepted over --periods; 0.1");
   command->add_option("--site-frequency", o.noise.site_frequency,
                       "noise: Kanai-Tajimi fg (Hz), up to a quarter of the sampling rate");
   command->add_option("--site-damping", o.noise.site_damping, "noise: Kanai-Tajimi zg, (0, 1]");
@@ -73,17 +268,26 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s), (0, 30]");
   command->add_option("--oscillations", o.pulse.oscillations, "pulse: gamma, (1, 100]");
   command->add_option("--phase", o.pulse.phase, "pulse: nu (rad)");
-  command->add_flag("-q,--quiet", o.quiet, "Accepted by every command (synth prints nothing)");
+  command->add_flag("-q,--quiet", o.quiet,
+                    "Accepted by every command (synth prints nothing but the pairs' misfits)");
 }
 
-void RunSynthCommand(const SynthOptions& o) {
+int RunSynthCommand(const SynthOptions& o, std::ostream& out) {
+  if (o.pairs) return RunPairs(o, out);
+  const char* pairs_only = "matches pairs to a target spectrum: give --pairs";
+  if (!o.target.empty()) throw InputError({"--target"}, pairs_only);
+  if (!o.periods.empty()) throw InputError({"--periods"}, pairs_only);
+  if (o.tolerance) throw InputError({"--tolerance"}, pairs_only);
   if (o.kind == "pulse") {
     CheckPulse(o.pulse);
     analysis::WriteAt2(analysis::PulseRecord(o.pulse), o.output);
   } else {
-    CheckNoise(o.noise);
-    analysis::WriteAt2(analysis::FilteredNoiseRecord(o.noise), o.output);
+    analysis::FilteredNoiseSpec noise = o.noise;
+    if (o.pga) noise.pga = *o.pga;
+    CheckNoise(noise);
+    analysis::WriteAt2(analysis::FilteredNoiseRecord(noise), o.output);
   }
+  return 0;
 }
 
 }  // namespace isolab::cli
