@@ -82,8 +82,11 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   fmt::print(out, "report: {}\n",
              (std::filesystem::path(folder) / "design.md").string());
   if (!options.quiet) {
-    fmt::print(stderr, "isolab design: {} runs in {:.1f} s on {}\n", outcome.runs.size(),
-               outcome.wall_seconds, scheduler->Describe());
+    fmt::print(stderr,
+               "isolab design: the suite in {:.1f} s, {} runs in {:.1f} s on {}, {:.1f} s in all "
+               "before the figures\n",
+               outcome.suite_seconds, outcome.runs.size(), outcome.runs_seconds,
+               scheduler->Describe(), outcome.wall_seconds);
   }
   return 0;
 }

@@ -5,19 +5,17 @@
 #include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <ostream>
+#include <variant>
 
 #include "isolab/analysis/matched_pairs.h"
 #include "isolab/core/errors.h"
-#include "isolab/core/number.h"
-#include "isolab/core/text_file.h"
 #include "isolab/io/output_check.h"
+#include "isolab/io/target_spectrum_file.h"
+#include "isolab/spectra/design_spectrum.h"
 
 namespace isolab::cli {
 namespace {
@@ -73,78 +71,6 @@ void CheckPulse(const analysis::PulseSpec& s) {
           fmt::format("must be > 0 and at most {:g} m/s", kMaxPgv));
   Require(s.oscillations > 1 && s.oscillations <= kMaxOscillations, "--oscillations",
           s.oscillations, fmt::format("must be > 1 and at most {:g}", kMaxOscillations));
-}
-
-// A target spectrum as a table: a header line `period_s,sa_g`, then one row per period (s, > 0,
-// increasing) with its pseudo-acceleration (g, > 0); lines starting with '#' and blank lines are
-// skipped. Read here until the shared reader of design spectra (spectra/design_spectrum.h, with
-// io's CSV reader) replaces it. Between its periods Sa is interpolated linearly in period.
-struct TargetTable {
-  std::vector<double> periods, sa;
-  double At(double period) const {
-    const auto upper = std::upper_bound(periods.begin(), periods.end(), period);
-    const std::size_t i = std::clamp<std::size_t>(upper - periods.begin(), 1, periods.size() - 1);
-    const double s = (period - periods[i - 1]) / (periods[i] - periods[i - 1]);
-    return (1.0 - s) * sa[i - 1] + s * sa[i];
-  }
-};
-
-std::string Trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return std::string(text.substr(first, text.find_last_not_of(" \t") - first + 1));
-}
-
-// Throws InputError at the file and line: a missing file or header, a row that is not two finite
-// numbers, a period not > 0 or not above the one before, an Sa not > 0, fewer than two rows.
-TargetTable ReadTargetSpectrumCsv(const std::string& path) {
-  TextLines lines(path);
-  if (!lines.is_open()) {
-    throw InputError({"--target"},
-                     fmt::format("cannot open '{}' ({})", path, std::strerror(errno)));
-  }
-  TargetTable table;
-  bool header = false;
-  std::string line;
-  while (lines.Next(&line)) {
-    const std::string text = Trimmed(line);
-    if (text.empty() || text[0] == '#') continue;
-    const SourceLocation where{path, lines.line_number()};
-    const auto comma = text.find(',');
-    const std::string first = Trimmed(std::string_view(text).substr(0, comma));
-    const std::string second =
-        comma == std::string::npos ? "" : Trimmed(std::string_view(text).substr(comma + 1));
-    if (!header) {
-      if (first != "period_s" || second != "sa_g") {
-        throw InputError(where, fmt::format("'{}' is not the header period_s,sa_g", text));
-      }
-      header = true;
-      continue;
-    }
-    if (comma == std::string::npos || second.find(',') != std::string::npos) {
-      throw InputError(where, fmt::format("'{}' is not a row period_s,sa_g", text));
-    }
-    std::string problem;
-    const std::optional<double> period = ParseFiniteNumber(first, &problem);
-    if (!period) throw InputError(where, fmt::format("period_s: {}", problem));
-    const std::optional<double> sa = ParseFiniteNumber(second, &problem);
-    if (!sa) throw InputError(where, fmt::format("sa_g: {}", problem));
-    if (!(*period > (table.periods.empty() ? 0.0 : table.periods.back()))) {
-      throw InputError(where, table.periods.empty()
-                                  ? fmt::format("period_s: {:g} (must be > 0)", *period)
-                                  : fmt::format("period_s: {:g} (must be > the row before's {:g})",
-                                                *period, table.periods.back()));
-    }
-    if (!(*sa > 0.0)) throw InputError(where, fmt::format("sa_g: {:g} (must be > 0)", *sa));
-    table.periods.push_back(*period);
-    table.sa.push_back(*sa);
-  }
-  if (!header) throw InputError({path}, "no header period_s,sa_g");
-  if (table.periods.size() < 2) {
-    throw InputError({path}, fmt::format("{} row(s): a target spectrum needs two periods at least",
-                                         table.periods.size()));
-  }
-  return table;
 }
 
 // The option a field of MatchedPairSpec comes from, for its violations.
@@ -208,7 +134,8 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
     }
   }
   io::CheckOutputs({o.target}, paths);
-  const TargetTable table = ReadTargetSpectrumCsv(o.target);
+  const spectra::TargetSpectrum target = io::ReadTargetSpectrumCsv(o.target);
+  const spectra::TabulatedSpectrum& table = std::get<spectra::TabulatedSpectrum>(target);
   if (spec.period_min < table.periods.front() || spec.period_max > table.periods.back()) {
     throw InputError(
         {"--periods"},
@@ -217,7 +144,9 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
   }
 
   const std::vector<analysis::MatchedPair> pairs =
-      analysis::MatchPairs(spec, [&table](double period) { return table.At(period); });
+      analysis::MatchPairs(spec, [&target](double period) {
+        return spectra::SpectralAcceleration(target, period);
+      });
   std::vector<std::string> failed;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     analysis::WriteAt2(pairs[k].h1, paths[2 * k]);

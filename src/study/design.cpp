@@ -220,6 +220,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   out.period_range[1] = design.period_range[1] * out.bounds[bound_index("lower")].elf.period / second;
 
   // 3. The suite, scaled to the target.
+  const auto suite_start = std::chrono::steady_clock::now();
   const int directions = model::Directions(design.model);
   std::vector<double> misfits;
   std::vector<model::StudyRecord> records =
@@ -271,6 +272,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                   out.period_range[1], out.scaling.common_factor,
                   out.scaling.periods[out.scaling.governing]));
 
+  out.suite_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
   fs::create_directories(models);
   for (std::size_t i = 0; i < bounds.models.size(); ++i) {
     io::WriteTextFileAtomically(out.bounds[i].model_file,
@@ -315,6 +318,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   if (!scheduler.IsCoordinator()) return out;
   out.runs = outcome.results;
   out.failed = outcome.failed;
+  out.runs_seconds = outcome.wall_seconds;
   if (out.failed > 0) return out;
 
   // 5. Design values: per bound and record the envelope over the cases, then over the suite.

@@ -213,13 +213,14 @@ TEST(SynthCommand, BadPairOptionsAndTablesExitTwoNamingThemAndWriteNothing) {
       {"--pairs 2 --duration 1000 --target " + table + out,
        "--duration: 1000 (must be at most 600 s with --pairs)"},
       {"--pairs 2 --target " + table + " -o " + table, "is not a folder"},
-      {"--pairs 2 --target " + no_header + out, "no_header.csv:1: '0.1,1' is not the header"},
+      {"--pairs 2 --target " + no_header + out, "no_header.csv:1: header '0.1,1' (expected period_s,sa_g"},
       {"--pairs 2 --target " + decreasing + out,
-       "decreasing.csv:3: period_s: 0.5 (must be > the row before's 1)"},
-      {"--pairs 2 --target " + negative + out, "negative.csv:3: sa_g: -1 (must be > 0)"},
+       "decreasing.csv:3: period_s 0.5 does not increase from the previous row's 1"},
+      {"--pairs 2 --target " + negative + out, "negative.csv:3: sa_g -1 (expected >= 0)"},
       {"--pairs 2 --target " + one_row + out, "one_row.csv: 1 row(s)"},
       {"--pairs 2 --target " + words + out, "words.csv:2: sa_g: 'one' is not a number"},
-      {"--pairs 2 --target " + (folder / "missing.csv").string() + out, "--target: cannot open"},
+      {"--pairs 2 --target " + (folder / "missing.csv").string() + out,
+       "missing.csv: cannot open the target spectrum"},
   };
   for (const auto& c : cases) {
     const auto run = RunIsolab("synth " + c.arguments, true);

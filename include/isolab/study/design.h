@@ -99,7 +99,9 @@ struct DesignOutcome {
   std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value
   std::size_t figure_record = 0;  // the record of the histories kept for figures
   std::vector<std::string> history_files;  // per bound, relative to the output folder
-  double wall_seconds = 0.0;
+  // Machine-dependent, for progress only: the suite (matching synthetic pairs, spectra), the
+  // runs, and everything.
+  double suite_seconds = 0.0, runs_seconds = 0.0, wall_seconds = 0.0;
 };
 
 // `requested` when given, else the design's output.directory, else the design file's stem; made
