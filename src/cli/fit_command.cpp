@@ -17,11 +17,13 @@
 #include "isolab/core/errors.h"
 #include "isolab/identification/fit.h"
 #include "isolab/identification/identifiability.h"
+#include "isolab/identification/testing_factors.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/fit_spec_file.h"
 #include "isolab/model/fitted_model_file.h"
 #include "specimen_option.h"
+#include "testing_factors_text.h"
 
 namespace isolab::cli {
 namespace {
@@ -63,7 +65,8 @@ std::vector<EnergyRow> EnergyTable(const hysteresis::ParallelAssembly& model, co
 std::vector<std::string> WriteFittedModel(const std::string& path, const model::FitSpec& spec,
                                           const FitOptions& options, const FitResult& result,
                                           const std::vector<identification::ComponentSpec>& kept,
-                                          const FitData& data) {
+                                          const FitData& data,
+                                          const std::vector<std::string>& testing) {
   model::FittedModel model;
   model.comment.push_back(
       fmt::format("Identified by isolab fit from {} (specification {}, seed {}, {} evaluations).",
@@ -76,6 +79,7 @@ std::vector<std::string> WriteFittedModel(const std::string& path, const model::
                           100 * result.error.per_test[i]);
   }
   model.comment.push_back(errors);
+  model.comment.insert(model.comment.end(), testing.begin(), testing.end());
   model.description = fmt::format("Fitted to {}", fmt::join(options.data, ", "));
   model.specification = spec.path;
   model.units = spec.units;
@@ -226,7 +230,9 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     }
     kept = identification::DropComponents(*model, zero, &written);
   }
-  for (std::string& note : WriteFittedModel(output, spec, options, written, kept, data)) {
+  const identification::TestingFactors testing = identification::TestingFactorsOf(data.tests);
+  for (std::string& note : WriteFittedModel(output, spec, options, written, kept, data,
+                                            TestingFactorsComment(testing, spec.units))) {
     notes.push_back(std::move(note));
   }
   const std::vector<std::string> findings = identifiability.Findings();
@@ -267,6 +273,7 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     json["stop"] = result.stop == identification::FitStop::kConverged ? "converged" : "budget";
     json["stop_reason"] = result.stop_reason;
     json["identifiability"] = findings;
+    json["testing_factors"] = TestingFactorsJson(testing);
     json["notes"] = notes;
     json["work"] = work.Work();
     json["seed"] = options.seed;
@@ -302,6 +309,7 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     }
     fmt::print(out, "\n");
   }
+  fmt::print(out, "\n{}", TestingFactorsText(testing, spec.units));
   if (!findings.empty()) {
     fmt::print(out, "\nidentifiability:\n");
     for (const std::string& finding : findings) fmt::print(out, "  {}\n", finding);

@@ -74,6 +74,37 @@ TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
   EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
+// The testing factors of the tests' own cycles (identification/testing_factors.h), from a lead-rubber
+// bearing whose core heats (adiabatic): its Qd falls from the second cycle to the third, so
+// lambda_test brackets 1; the fitted model carries the modification entry to copy.
+TEST(FitCommand, ReportsTheTestingFactorsOfTheTestsCycles) {
+  const auto model = TemporaryFile("heating_lrb.yaml");
+  std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
+                          "isolation:\n  components:\n"
+                          "    - {name: lrb, type: lead_rubber, qd: 88.26, kd: 0.3391, ku: 3.391, "
+                          "lead_diameter: 106, lead_height: 127, lead_heat_capacity: 1.456e-3}\n";
+  const auto csv = TemporaryFile("heating_lrb.csv");
+  const auto cyclic = RunIsolab("cyclic " + model.string() +
+                                " -a 100,200 -T 2 -n 4 --steps-per-cycle 400 --test-data " +
+                                csv.string());
+  ASSERT_EQ(cyclic.exit_code, 0) << cyclic.output;
+  const auto fitted = TemporaryFile("heating_fitted.yaml");
+  const auto json = Fit(csv.string(), fitted.string(), "");
+  const auto& factors = json["testing_factors"];
+  ASSERT_EQ(factors["cycles"].size(), 6u);  // two tests, their first three cycles
+  for (int test = 0; test < 2; ++test) {
+    const auto& cycles = factors["cycles"];
+    EXPECT_LT(cycles[3 * test + 2]["qd"].get<double>(), cycles[3 * test + 1]["qd"].get<double>())
+        << "the core heats: the third cycle is weaker than the second";
+  }
+  EXPECT_GT(factors["qd"]["max"].get<double>(), 1.0);
+  EXPECT_LT(factors["qd"]["min"].get<double>(), 1.0);
+  std::ifstream in(fitted);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("#   modification: {<component>: {qd: {testing: ["), std::string::npos)
+      << text;
+}
+
 // The fitted model carries the range of the samples the fit saw. A sinusoidal test u = A sin(2 pi
 // t / T) of N cycles, S samples a cycle, has, in closed form: peak |u| = A (S a multiple of 4
 // samples the crests), peak |v| = 2 pi A / T, which the backward differences the fit drives the
