@@ -7,24 +7,14 @@ import pytest
 
 import isolab
 
-BUILDING = """units: {force: kN, length: mm, time: s}
-structure: {type: shear_building, base_mass: 400 t, stories: {count: 2, mass: 300 t, stiffness: 800 kN/mm, height: 3.5 m}}
-isolation:
-  count: 8
-  name: lrb
-  components: [{name: lrb, type: lead_rubber, qd: 40 kN, kd: 0.5 kN/mm, ku: 5 kN/mm}]
-  modification: {lrb: {qd: {min: 0.8, max: 1.3}, kd: {min: 0.9, max: 1.2}}}
-analysis: {dt: 0.01}
-"""
-
 
 def write_design(repo, folder):
-    (folder / "building.yaml").write_text(BUILDING)
     motions = repo / "ground_motions"
     records = ", ".join(str(motions / name) for name in
                         ("fwn_firm_seed1.at2", "fwn_soft_seed2.at2", "elcentro_1940_ns.at2"))
     design = folder / "design.yaml"
-    design.write_text("model: building.yaml\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n"
+    building = repo / "tests" / "study" / "data" / "two_story_lrb.yaml"
+    design.write_text(f"model: {building}\ntarget: {{asce7: {{sms: 1.2 g, sm1: 0.6 g}}}}\n"
                       f"suite:\n  records: [{records}]\n")
     return design
 

@@ -19,20 +19,14 @@ namespace fs = std::filesystem;
 
 const std::string kGroundMotions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
 
-const std::string kOneDirection = R"(units: {force: kN, length: mm, time: s}
-structure: {type: shear_building, base_mass: 400 t, stories: {count: 2, mass: 300 t, stiffness: 800 kN/mm, height: 3.5 m}}
-isolation:
-  count: 8
-  name: lrb
-  components: [{name: lrb, type: lead_rubber, qd: 40 kN, kd: 0.5 kN/mm, ku: 5 kN/mm}]
-  modification: {lrb: {qd: {min: 0.8, max: 1.3}}}
-)";
+const std::string kOneDirection =
+    std::string(ISOLAB_TEST_DATA_DIR) + "/study/data/two_story_lrb.yaml";
 
 class DesignFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     directory_ = testing::FreshTestDirectory();
-    std::ofstream(directory_ / "building.yaml") << kOneDirection;
+    fs::copy_file(kOneDirection, directory_ / "building.yaml");
   }
   std::string Write(const std::string& text) {
     const fs::path path = directory_ / "design.yaml";

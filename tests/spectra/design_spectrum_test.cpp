@@ -11,22 +11,14 @@
 #include <vector>
 
 #include "isolab/core/errors.h"
+#include "refused_key.h"
 
 namespace isolab::spectra {
 namespace {
 
 constexpr double kTight = 1e-12;
 
-// The key of the InvalidParameter `call` throws, or "" when it throws none.
-template <typename Call>
-std::string RefusedKey(Call call) {
-  try {
-    call();
-  } catch (const InvalidParameter& error) {
-    return error.violation().key;
-  }
-  return "";
-}
+using testing::RefusedKey;
 
 // S_MS 1.5 g, S_M1 0.9 g, T_L 8 s: T_0 = 0.2 x 0.9 / 1.5 = 0.12 s, T_s = 0.9 / 1.5 = 0.6 s.
 const Asce7Spectrum kAsce{1.5, 0.9, 8.0};

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "isolab/core/errors.h"
+#include "refused_key.h"
 #include "isolab/io/record.h"
 #include "isolab/spectra/rotd_spectrum.h"
 
@@ -21,15 +22,7 @@ namespace {
 
 constexpr double kTight = 1e-12;
 
-template <typename Call>
-std::string RefusedKey(Call call) {
-  try {
-    call();
-  } catch (const InvalidParameter& error) {
-    return error.violation().key;
-  }
-  return "";
-}
+using testing::RefusedKey;
 
 // Sa = a T^b at each period.
 std::vector<double> PowerLaw(const std::vector<double>& periods, double a, double b) {
