@@ -11,7 +11,7 @@ file of its axes' labels, units and data ranges):
                       (histories/runs/<bound>/*.h5)
   design_orbits.png   the four bearings that move most, their displacement orbits, per bound
   design_drifts.png   each story's peak drift ratio per bound, against the limit
-                      (design_values.csv gives the limit's context; the ratios are the runs')
+                      (design_values.csv)
 Debian's python3-matplotlib and python3-h5py (scripts/setup.sh installs both).
 """
 
@@ -139,15 +139,18 @@ def plot_orbits(directory, runs, metadata):
 
 
 def drift_limit(directory):
-    """The design file's limit, as design.md states it, in %; None if not found."""
-    with open(os.path.join(directory, "design.md"), encoding="utf-8") as f:
-        for line in f:
-            if line.startswith("| story drift ratio <="):
-                return float(line.split("<=")[1].split("%")[0])
+    """The design's story drift limit (%), from design_values.csv."""
+    with open(os.path.join(directory, "design_values.csv"), newline="", encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            if row["quantity"] == "drift_limit":
+                return float(row["value"])
     return None
 
 
 def plot_drifts(directory, runs, metadata):
+    """None for a building without story heights, which has no drift ratios."""
+    if "story/drift_ratio" not in next(iter(runs.values())):
+        return None
     fig, ax = plt.subplots(figsize=(5.0, 4.2))
     for bound, run in runs.items():
         ratio = np.abs(np.asarray(run["story/drift_ratio"]).reshape(len(run["time"]), -1))
@@ -192,7 +195,9 @@ def main():
     orbits = plot_orbits(arguments.directory, runs, arguments.metadata)
     if orbits:
         print(orbits)
-    print(plot_drifts(arguments.directory, runs, arguments.metadata))
+    drifts = plot_drifts(arguments.directory, runs, arguments.metadata)
+    if drifts:
+        print(drifts)
 
 
 if __name__ == "__main__":

@@ -22,7 +22,8 @@ import os
 import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _design, _diagnose, _fit, _parse_list, _parse_periods, _replay
+from ._isolab import _compare, _cyclic, _design, _diagnose, _fit, _parse_list, _parse_periods
+from ._isolab import _replay
 from ._isolab import _run, _spectrum
 
 __all__ = ["CyclicResult", "InputError", "IsolabWarning", "Model", "Result", "RunError",
@@ -273,12 +274,12 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     Writes what the command line writes (the bound models, the synthetic records, each run's
     summary file, the histories kept for figures, design.md and the CSV files) except the
     figures: scripts/plot_design.py OUTPUT draws them. Returns a dict: "bounds" (per bound:
-    "model", the written YAML; "elf", its D_M, T_M, beta_M, B_M, k_M, V_b and D_TM; "values", the
-    response-history design values D_M, D_TM, V_b, isolator_force, story_drift_ratio (%),
-    floor_acceleration (g), residual_displacement), "governing" (the bound of the largest value
-    per quantity), "records" (name, files, factor), "period_range" (s), "statistic" ("mean" with
-    at least 7 records, else "max"), "summary" (the command line's text) and "output". Lengths
-    and forces in the model's units. Raises RuntimeError when a run fails.
+    "model", the written YAML; "elf", its D_M, T_M (s), beta_M, B_M, k_M, V_b and D_TM;
+    "values", the response-history design values D_M, D_TM, V_b, isolator_force,
+    story_drift_ratio (%), floor_acceleration (g), residual_displacement), "governing" (the bound
+    of the largest value per quantity), "records" (name, files, factor), "period_range" (s),
+    "statistic" ("mean" with at least 7 records, else "max"), "summary" (the command line's text)
+    and "output". Lengths and forces in the model's units. Raises RuntimeError when a run fails.
     """
     return _design(str(design_file), "" if output is None else str(output), jobs, quiet)
 

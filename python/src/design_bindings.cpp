@@ -41,6 +41,7 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   }
   study::WriteDesignFiles(design, outcome, folder, false);
 
+  const double second = 1.0 / design.model.units.SiFactor(dimension::kTime);  // model time per s
   py::dict bounds;
   for (std::size_t b = 0; b < outcome.bounds.size(); ++b) {
     const study::DesignBound& bound = outcome.bounds[b];
@@ -49,7 +50,7 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
       values[py::str(std::string(info.key))] =
           outcome.values[b][static_cast<std::size_t>(info.quantity)].value;
     }
-    py::dict elf(py::arg("D_M") = bound.elf.displacement, py::arg("T_M") = bound.elf.period,
+    py::dict elf(py::arg("D_M") = bound.elf.displacement, py::arg("T_M") = bound.elf.period / second,
                  py::arg("beta_M") = bound.elf.at_design.damping,
                  py::arg("B_M") = bound.damping_coefficient,
                  py::arg("k_M") = bound.elf.at_design.stiffness,

@@ -174,7 +174,7 @@ ElfResult SolveElf(const IsolationSystem& system, const DisplacementDemand& dema
 
 double CodeDampingCoefficient(const spectra::TargetSpectrum& target, double beta) {
   if (std::holds_alternative<spectra::Eurocode8Spectrum>(target)) {
-    return 1.0 / std::max(std::sqrt(10.0 / (5.0 + 100.0 * beta)), 0.55);
+    return 1.0 / spectra::DampingCorrection(beta);
   }
   return DampingCoefficient(beta);
 }
@@ -197,7 +197,7 @@ double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& s
                          const ElfResult& elf) {
   const double floor = kTotalDisplacementFloor * elf.displacement;
   if (!model.structure || model.structure->kind != model::StructureSection::Kind::kPlanBuilding) {
-    return elf.displacement;
+    return floor;
   }
   const structure::PlanBuilding& plan = model.structure->plan;
   double mass = plan.base.mass;
@@ -210,18 +210,18 @@ double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& s
   const std::vector<double> k = system.BearingStiffnesses(elf.displacement, elf.period);
   const std::vector<hysteresis::Vec2>& p = system.positions();
   hysteresis::Vec2 rigidity;
-  double k_sum = 0.0, r2 = 0.0;
+  double k_sum = 0.0;
   for (std::size_t i = 0; i < k.size(); ++i) {
     rigidity = rigidity + k[i] * p[i];
     k_sum += k[i];
   }
   rigidity = (1.0 / k_sum) * rigidity;
-  double y_max[2] = {0.0, 0.0};
+  double y_max[2] = {0.0, 0.0}, r2 = 0.0;
   for (const hysteresis::Vec2& q : p) {
-    const hysteresis::Vec2 d = q - rigidity;
-    r2 += d.x * d.x + d.y * d.y;
-    y_max[0] = std::max(y_max[0], std::abs(d.y));  // motion along x: distances along y
-    y_max[1] = std::max(y_max[1], std::abs(d.x));
+    const hysteresis::Vec2 from_rigidity = q - rigidity, from_mass = q - mass_centre;
+    r2 += from_mass.x * from_mass.x + from_mass.y * from_mass.y;
+    y_max[0] = std::max(y_max[0], std::abs(from_rigidity.y));  // motion along x: across is y
+    y_max[1] = std::max(y_max[1], std::abs(from_rigidity.x));
   }
   const double b = model.structure->footprint_size.x, d = model.structure->footprint_size.y;
   const double plan_gyration = std::sqrt((b * b + d * d) / 12.0);

@@ -31,6 +31,7 @@ Component FromOverride(const RecordOverride& record) {
   c.motion.units = record.units;
   c.motion.dt = record.dt;
   c.motion.scale = record.scale;
+  c.motion.target = record.target;
   c.motion.key = record.name;
   c.motion.location = {record.name};
   c.units_given_by = record.units_given_by;
@@ -189,8 +190,10 @@ io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
   acceleration->dt = units.Convert(record.dt, "s", dimension::kTime);
   acceleration->values.clear();
   for (const double a : record.values) acceleration->values.push_back(a * unit);
-  const double scale =
-      motion.target ? TargetScale(*motion.target, motion, *acceleration) : motion.scale;
+  // A model's target leaves `scale` at 1; a study's scale multiplies its entry's target.
+  const double scale = motion.target
+                           ? TargetScale(*motion.target, motion, *acceleration) * motion.scale
+                           : motion.scale;
   for (double& a : acceleration->values) a *= scale;
   return {motion.file,
           record.format,
@@ -199,7 +202,9 @@ io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
           record.dt,
           scale,
           record.Peak() * std::abs(unit) * scale,
-          motion.target ? motion.target->text : std::string()};
+          !motion.target        ? std::string()
+          : motion.scale == 1.0 ? motion.target->text
+                                : fmt::format("{} x {:g}", motion.target->text, motion.scale)};
 }
 
 integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,

@@ -73,6 +73,14 @@ void CheckPulse(const analysis::PulseSpec& s) {
           s.oscillations, fmt::format("must be > 1 and at most {:g}", kMaxOscillations));
 }
 
+// The noise's spec with --duration and --dt where given.
+analysis::FilteredNoiseSpec NoiseShape(const SynthOptions& o) {
+  analysis::FilteredNoiseSpec noise = o.noise;
+  if (o.duration) noise.duration = *o.duration;
+  if (o.dt) noise.dt = *o.dt;
+  return noise;
+}
+
 // The option a field of MatchedPairSpec comes from, for its violations.
 const char* OptionOf(const std::string& key) {
   if (key == "count") return "--pairs";
@@ -94,7 +102,7 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
   const int count = *o.pairs;
   Require(count >= 1 && count <= kMaxPairs, "--pairs", count,
           fmt::format("must be at least 1 and at most {}", kMaxPairs));
-  analysis::FilteredNoiseSpec shape = o.noise;
+  const analysis::FilteredNoiseSpec shape = NoiseShape(o);
   CheckNoise(shape);
   Require(shape.duration <= kMaxPairDuration, "--duration", shape.duration,
           fmt::format("must be at most {:g} s with --pairs", kMaxPairDuration));
@@ -175,9 +183,9 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
       ->required();
   command->add_option("--seed", o.noise.seed, "noise, pairs: random seed");
   command->add_option("--pga", o.pga, "noise: peak ground acceleration (g), (0, 10]");
-  command->add_option("--duration", o.noise.duration,
+  command->add_option("--duration", o.duration,
                       "noise, pairs: duration (s), ten samples or more");
-  command->add_option("--dt", o.noise.dt, "noise, pairs: time step (s), [0.001, 0.05]");
+  command->add_option("--dt", o.dt, "noise, pairs: time step (s), [0.001, 0.05]");
   command->add_option("--pairs", o.pairs,
                       "Write N pairs of filtered noise (pair<k>_h1.at2, pair<k>_h2.at2 in the "
                       "--output folder) whose RotD100 matches --target");
@@ -208,10 +216,13 @@ int RunSynthCommand(const SynthOptions& o, std::ostream& out) {
   if (!o.periods.empty()) throw InputError({"--periods"}, pairs_only);
   if (o.tolerance) throw InputError({"--tolerance"}, pairs_only);
   if (o.kind == "pulse") {
+    // The pulse's record is 12 s at 0.01 s (synthetic_motion.h): not the noise's options.
+    if (o.duration) throw InputError({"--duration"}, "sets noise's length: not a pulse's");
+    if (o.dt) throw InputError({"--dt"}, "sets noise's step: not a pulse's");
     CheckPulse(o.pulse);
     analysis::WriteAt2(analysis::PulseRecord(o.pulse), o.output);
   } else {
-    analysis::FilteredNoiseSpec noise = o.noise;
+    analysis::FilteredNoiseSpec noise = NoiseShape(o);
     if (o.pga) noise.pga = *o.pga;
     CheckNoise(noise);
     analysis::WriteAt2(analysis::FilteredNoiseRecord(noise), o.output);

@@ -55,7 +55,9 @@ spectra::TargetSpectrum ReadTarget(const YamlReader& reader, const YAML::Node& n
     const YAML::Node e = node["eurocode8"];
     const std::string path = "target.eurocode8";
     reader.RequireMap(e, path);
-    reader.CheckKeys(e, path, {"agr", "ground", "type", "importance", "damping"});
+    // The target is 5 % damped: the ELF procedure applies the bearings' own damping (B_M), and
+    // the suite's spectra are 5 % ones.
+    reader.CheckKeys(e, path, {"agr", "ground", "type", "importance"});
     spectra::Eurocode8Spectrum s;
     s.agr = ReadInG(reader, e, path, "agr", units);
     if (e["ground"]) {
@@ -72,7 +74,6 @@ spectra::TargetSpectrum ReadTarget(const YamlReader& reader, const YAML::Node& n
       }
     }
     if (e["importance"]) s.importance = ReadPositive(reader, e, path, "importance", dimension::kNone, units);
-    if (e["damping"]) s.damping_ratio = ReadRatio(reader, e["damping"], path + ".damping");
     target = s;
   } else {
     const std::string file = reader.ReadString(node["file"], "target.file");
@@ -168,6 +169,16 @@ DesignFile LoadDesignFile(const std::string& path) {
   if (suite["records"]) {
     design.records = ReadRecords(reader, suite["records"], "suite.records", directory, units,
                                  directions, design.model_path);
+    for (std::size_t i = 0; i < design.records.size(); ++i) {
+      for (const GroundMotionSection& c : design.records[i].components) {
+        if (c.target) {
+          reader.Fail(suite["records"], IndexPath("suite.records", i),
+                      fmt::format("{}: the design scales its suite to the target spectrum; give "
+                                  "the record without a target (a number, or no scale)",
+                                  c.key));
+        }
+      }
+    }
     if (design.records.size() < kMinimumDesignRecords) {
       reader.Fail(suite["records"], "suite.records",
                   fmt::format("{} records{}", TooFew(design.records.size()),

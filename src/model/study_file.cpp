@@ -180,34 +180,12 @@ StudyRecord ReadRecordEntry(const YamlReader& reader, const YAML::Node& node,
   StudyRecord given;
   given.entry = fmt::format("{}: {}", reader.Locate(node).Describe(), path);
   GroundMotionSection component;
-  component.location = reader.Locate(node);
-  if (!node.IsMap()) {
+  if (node.IsMap()) {
+    component = ReadGroundMotion(reader, node, path, units);
+  } else {
     component.file = reader.ReadString(node, path);
-    given.components.push_back(component);
-    return given;
   }
-  reader.CheckKeys(node, path, {"file", "units", "dt", "scale"});
-  component.file = reader.ReadString(reader.Require(node, path, "file"), ChildPath(path, "file"));
-  if (node["units"]) {
-    component.units = reader.ReadString(node["units"], ChildPath(path, "units"));
-    try {
-      units.Convert(1.0, component.units, dimension::kAcceleration);
-    } catch (const std::invalid_argument& error) {
-      reader.Fail(node["units"], ChildPath(path, "units"),
-                  fmt::format("{} (g, m/s^2, cm/s^2, in/s^2, ...)", error.what()));
-    }
-  }
-  if (node["dt"]) {
-    component.dt = reader.ReadQuantity(node["dt"], ChildPath(path, "dt"), dimension::kTime, units);
-    if (!(component.dt > 0.0)) reader.Fail(node["dt"], ChildPath(path, "dt"), "must be > 0");
-  }
-  if (node["scale"]) {
-    component.scale = reader.ReadNumber(node["scale"], ChildPath(path, "scale"));
-    if (!(component.scale > 0.0) || !std::isfinite(component.scale)) {
-      reader.Fail(node["scale"], ChildPath(path, "scale"),
-                  fmt::format("{:g} (must be a finite number > 0)", component.scale));
-    }
-  }
+  component.location = reader.Locate(node);
   given.components.push_back(component);
   return given;
 }
@@ -265,6 +243,10 @@ StudyRecord ReadPairEntry(const YamlReader& reader, const YAML::Node& node, cons
     GroundMotionSection section = ReadGroundMotion(reader, component, component_path, units);
     ResolveComponent(reader, component, component_path, directory, &section);
     record.components.push_back(std::move(section));
+  }
+  if (record.components[1].target) {
+    reader.Fail(node["h2"]["scale"], ChildPath(path, "h2.scale"),
+                "a pair takes its target on h1, whose factor scales h2 too");
   }
   if (node["angle"]) record.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
   CheckPairMatches(reader, node, path, record, units);

@@ -40,10 +40,6 @@ Eurocode8Shape ShapeOf(const Eurocode8Spectrum& spectrum) {
 
 char GroundLetter(GroundType ground) { return static_cast<char>('A' + static_cast<int>(ground)); }
 
-// Eq. 3.6: the damping correction, 1 at 5 %.
-double DampingCorrection(double damping_ratio) {
-  return std::max(std::sqrt(10.0 / (5.0 + 100.0 * damping_ratio)), 0.55);
-}
 
 void RequirePositive(const char* key, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {
@@ -198,9 +194,12 @@ std::vector<double> CornerPeriods(const TargetSpectrum& spectrum) {
   return std::visit(Corners{}, spectrum);
 }
 
+double DampingCorrection(double damping_ratio) {
+  return std::max(std::sqrt(10.0 / (5.0 + 100.0 * damping_ratio)), 0.55);
+}
+
 double ContinuedSpectralAcceleration(const TargetSpectrum& spectrum, double period) {
-  constexpr double kEurocode8End = 4.0;  // s: EN 1998-1 3.2.2.2 defines Se(T) to here
-  double first = 0.0, last = kEurocode8End;
+  double first = 0.0, last = kEurocode8LastPeriod;
   if (const auto* table = std::get_if<TabulatedSpectrum>(&spectrum)) {
     first = table->periods.front();
     last = table->periods.back();

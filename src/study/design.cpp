@@ -6,8 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <numbers>
-#include <variant>
+#include <limits>
 
 #include "isolab/analysis/matched_pairs.h"
 #include "isolab/analysis/synthetic_motion.h"
@@ -24,9 +23,10 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kDamping = 0.05;
-constexpr double kSecondsPerPeriodMax = 4.0;
+constexpr double kCyclesOfLongestPeriod = 4.0;  // a synthetic record holds 4 of its longest period
 constexpr double kDisplayLow = 0.05;  // s: the report's spectra from here to twice the range's top
-constexpr int kDisplayPoints = 80;  // a synthetic record holds 4 cycles of its longest period
+constexpr int kDisplayPoints = 80;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 constexpr DesignQuantityInfo kDesignQuantities[] = {
     {DesignQuantity::kDisplacement, "D_M", "maximum displacement D_M (centre of mass)"},
@@ -40,8 +40,9 @@ constexpr DesignQuantityInfo kDesignQuantities[] = {
 };
 static_assert(std::size(kDesignQuantities) == kDesignQuantityCount);
 
-// The study quantity each design quantity is read from.
-Quantity Source(DesignQuantity q) {
+}  // namespace
+
+Quantity SourceOf(DesignQuantity q) {
   switch (q) {
     case DesignQuantity::kDisplacement: return Quantity::kBaseCentreDisplacement;
     case DesignQuantity::kTotalDisplacement: return Quantity::kIsolatorDisplacement;
@@ -53,6 +54,8 @@ Quantity Source(DesignQuantity q) {
   }
   return Quantity::kIsolatorDisplacement;
 }
+
+namespace {
 
 // A record's spectrum at `periods` (g): a pair's RotD100, one record's 5 % Sa; with its entry's
 // scale.
@@ -96,14 +99,14 @@ std::vector<model::StudyRecord> SyntheticRecords(const model::DesignFile& design
   spec.motion.duration = s.duration;
   spec.motion.dt = s.dt;
   spec.period_min = std::max(0.1, 5.0 * s.dt);
-  spec.period_max = std::min(1.5 * top, s.duration / kSecondsPerPeriodMax);
+  spec.period_max = std::min(1.5 * top, s.duration / kCyclesOfLongestPeriod);
   spec.tolerance = s.tolerance;
   spec.target_name = spectra::Describe(design.target);
   if (spec.period_max < top) {
     throw InputError({design.suite_key + ".synthetic.duration"},
                      fmt::format("{:g} s records cannot hold {:g} cycles of the scaling range's "
                                  "top period {:g} s (give a duration of at least {:g} s)",
-                                 s.duration, kSecondsPerPeriodMax, top, kSecondsPerPeriodMax * top));
+                                 s.duration, kCyclesOfLongestPeriod, top, kCyclesOfLongestPeriod * top));
   }
   if (progress) {
     progress(fmt::format("suite: matching {} synthetic pairs to the target over {:g} to {:g} s",
@@ -140,6 +143,8 @@ std::vector<model::StudyRecord> SyntheticRecords(const model::DesignFile& design
   return records;
 }
 
+// A quantity a model does not have (a drift without story heights) is NaN for every record, and
+// stays NaN: never 0.
 DesignStatistic Statistic(std::vector<double> per_record, bool mean_of_suite) {
   DesignStatistic s;
   s.per_record = std::move(per_record);
@@ -149,6 +154,7 @@ DesignStatistic Statistic(std::vector<double> per_record, bool mean_of_suite) {
     sum += v;
     s.max = std::max(s.max, v);
   }
+  if (std::isnan(sum)) s.max = kNaN;
   s.mean = sum / static_cast<double>(s.per_record.size());
   s.value = mean_of_suite ? s.mean : s.max;
   return s;
@@ -158,19 +164,44 @@ DesignStatistic Statistic(std::vector<double> per_record, bool mean_of_suite) {
 
 std::span<const DesignQuantityInfo> DesignQuantities() { return kDesignQuantities; }
 
+// What a design writes in its folder. A folder that holds nothing else is an earlier design's,
+// cleared so that none of its records, runs or histories is taken for this one's.
+bool DesignWrote(const fs::path& entry) {
+  static const std::vector<std::string> kNames = {"design.md",          "design_values.csv",
+                                                  "design_runs.csv",    "design_spectra.csv",
+                                                  "records",            "runs",
+                                                  "histories",          "models"};
+  const std::string name = entry.filename().string();
+  const std::string extension = entry.extension().string();
+  return std::find(kNames.begin(), kNames.end(), name) != kNames.end() ||
+         (name.rfind("design_", 0) == 0 &&
+          (extension == ".png" || extension == ".pdf" || extension == ".json"));
+}
+
 std::string PrepareDesignFolder(const std::string& requested, const model::DesignFile& design,
                                 const std::string& option) {
   const std::string folder = !requested.empty() ? requested
                              : !design.output_directory.empty()
                                  ? design.output_directory
                                  : fs::path(design.path).stem().string();
+  const std::string key = requested.empty() ? "output.directory" : option;
   std::error_code error;
   fs::create_directories(folder, error);
   if (error || !fs::is_directory(folder)) {
-    throw InputError({requested.empty() ? "output.directory" : option},
-                     fmt::format("cannot make the folder '{}'{}", folder,
-                                 error ? ": " + error.message() : ""));
+    throw InputError({key}, fmt::format("cannot make the folder '{}'{}", folder,
+                                        error ? ": " + error.message() : ""));
   }
+  std::vector<fs::path> earlier;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    if (!DesignWrote(entry.path())) {
+      throw InputError({key}, fmt::format("'{}' holds '{}', which a design does not write: give "
+                                          "a new or empty folder (one an earlier design wrote "
+                                          "is replaced)",
+                                          folder, entry.path().filename().string()));
+    }
+    earlier.push_back(entry.path());
+  }
+  for (const fs::path& entry : earlier) fs::remove_all(entry);
   return folder;
 }
 
@@ -222,11 +253,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   // 3. The suite, scaled to the target.
   const auto suite_start = std::chrono::steady_clock::now();
   const int directions = model::Directions(design.model);
-  std::vector<double> misfits;
-  std::vector<model::StudyRecord> records =
-      design.synthetic ? SyntheticRecords(design, out.period_range[1], output_directory,
-                                          directions, &misfits, progress)
-                       : design.records;
+  // The range first: a design refused on it spends no time on a suite and writes nothing.
   std::vector<double> periods;
   try {
     periods = spectra::ScalingPeriods(design.target, out.period_range[0], out.period_range[1]);
@@ -235,6 +262,11 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                      fmt::format("{:g} to {:g} s, from T_M of the bounds: {}", out.period_range[0],
                                  out.period_range[1], error.what()));
   }
+  std::vector<double> misfits;
+  std::vector<model::StudyRecord> records =
+      design.synthetic ? SyntheticRecords(design, out.period_range[1], output_directory,
+                                          directions, &misfits, progress)
+                       : design.records;
   // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top.
   std::vector<double> grid = periods;
   for (int i = 0; i <= kDisplayPoints; ++i) {
@@ -315,7 +347,6 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       [&](const JobResult& result, std::size_t done, std::size_t total) {
         say(JobProgressLine(study, jobs[result.job], result, done, total));
       });
-  if (!scheduler.IsCoordinator()) return out;
   out.runs = outcome.results;
   out.failed = outcome.failed;
   out.runs_seconds = outcome.wall_seconds;
@@ -327,14 +358,14 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   for (std::size_t b = 0; b < out.bounds.size(); ++b) {
     std::array<DesignStatistic, kDesignQuantityCount> values;
     for (const DesignQuantityInfo& info : kDesignQuantities) {
-      const std::size_t q = static_cast<std::size_t>(Source(info.quantity));
-      std::vector<double> per_record(R, 0.0);
+      const std::size_t q = static_cast<std::size_t>(SourceOf(info.quantity));
+      std::vector<double> per_record(R, kNaN);
       for (std::size_t r = 0; r < R; ++r) {
         // D_M is the base's displacement without eccentricity; the others the envelope.
         const std::size_t cases = info.quantity == DesignQuantity::kDisplacement ? 1 : C;
         for (std::size_t c = 0; c < cases; ++c) {
-          const double v = out.runs[(b * C + c) * R + r].values[q];
-          if (std::isfinite(v)) per_record[r] = std::max(per_record[r], v);
+          const double v = out.RunOf(b, c, r).values[q];
+          if (!std::isnan(v)) per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
         }
       }
       values[static_cast<std::size_t>(info.quantity)] = Statistic(per_record, out.mean_of_suite);
@@ -343,6 +374,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   }
   for (std::size_t q = 0; q < kDesignQuantityCount; ++q) {
     for (std::size_t b = 1; b < out.bounds.size(); ++b) {
+      // A NaN never governs (the comparison is false).
       if (out.values[b][q].value > out.values[out.governing[q]][q].value) out.governing[q] = b;
     }
   }
@@ -361,8 +393,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   for (std::size_t b = 0; b < out.bounds.size(); ++b) {
     std::size_t worst = 0;
     for (std::size_t c = 1; c < C; ++c) {
-      if (out.runs[(b * C + c) * R + out.figure_record].values[q_total] >
-          out.runs[(b * C + worst) * R + out.figure_record].values[q_total]) {
+      if (out.RunOf(b, c, out.figure_record).values[q_total] >
+          out.RunOf(b, worst, out.figure_record).values[q_total]) {
         worst = c;
       }
     }
@@ -377,7 +409,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                                         scheduler, 1,
                                         [](const JobResult&, std::size_t, std::size_t) {});
   for (const JobResult& r : kept.results) {
-    out.history_files.push_back(r.completed ? (fs::path("histories") / r.file).string() : "");
+    out.history_files.push_back(r.completed ? (fs::path("histories") / r.file).string()
+                                            : "(failed: " + r.message + ")");
   }
   out.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

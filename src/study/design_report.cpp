@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <cmath>
 #include <sstream>
+#include <variant>
 
 #include "isolab/io/atomic_file.h"
 
@@ -17,17 +19,17 @@ namespace fs = std::filesystem;
 std::size_t Index(DesignQuantity q) { return static_cast<std::size_t>(q); }
 
 std::string UnitOf(DesignQuantity q, const UnitSystem& units) {
-  switch (q) {
-    case DesignQuantity::kBaseShear:
-    case DesignQuantity::kIsolatorForce:
-      return units.force();
-    case DesignQuantity::kStoryDriftRatio:
-      return "%";
-    case DesignQuantity::kFloorAcceleration:
-      return "g";
-    default:
-      return units.length();
-  }
+  return QuantityUnit(SourceOf(q), units);
+}
+
+// "0.148 %", or why there is no value (a model without story heights has no drift ratio).
+std::string Drift(double ratio) {
+  return std::isnan(ratio) ? "n/a (no story has a height)" : fmt::format("{:.3g} %", ratio);
+}
+
+std::string DriftVerdict(double ratio, double limit) {
+  if (std::isnan(ratio)) return "not checked";
+  return ratio <= limit ? "met" : "EXCEEDED";
 }
 
 // The code's checks, once for the report and the terminal.
@@ -80,6 +82,7 @@ void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::o
     row("V_b", u.force(), b.elf.base_shear);
     row("D_TM", u.length(), b.elf_total_displacement);
   }
+  fmt::print(file, "design,drift_limit,%,limit,{:.12g}\n", 100.0 * design.drift_limit);
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (const DesignQuantityInfo& info : DesignQuantities()) {
       const DesignStatistic& s = o.values[b][Index(info.quantity)];
@@ -100,7 +103,7 @@ void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, std::ost
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (std::size_t c = 0; c < C; ++c) {
       for (std::size_t r = 0; r < R; ++r) {
-        const JobResult& run = o.runs[(b * C + c) * R + r];
+        const JobResult& run = o.RunOf(b, c, r);
         fmt::print(file, "{},{},{},{:.12g},{}", o.bounds[b].bound, o.eccentricities[c].name,
                    o.records[r].name, o.records[r].factor, run.completed ? 1 : 0);
         for (const double v : run.values) fmt::print(file, ",{:.12g}", v);
@@ -157,8 +160,15 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                b.damping_coefficient, b.elf.at_design.stiffness, b.elf.base_shear,
                b.elf_total_displacement);
   }
-  fmt::print(md, "\nD_M = g S_M1 T_M / (4 pi^2 B_M) at the bearings' effective stiffness and "
-                 "damping at D_M, from their own laws (three cycles at D_M, the third read).\n");
+  fmt::print(md, "\n{} at the bearings' effective stiffness and damping at D_M, from their own "
+                 "laws (three cycles at D_M, the third read).\n",
+             std::holds_alternative<spectra::Asce7Spectrum>(design.target)
+                 ? "D_M = g S_M1 T_M / (4 pi^2 B_M) (Eq. 17.5-1), B_M from Table 17.5-1,"
+             : std::holds_alternative<spectra::Eurocode8Spectrum>(design.target)
+                 ? "D_M = Sa(T_M) g T_M^2 / (4 pi^2 B_M), the target's spectral displacement, "
+                   "B_M = 1 / eta (EN 1998-1 Eq. 3.6),"
+                 : "D_M = Sa(T_M) g T_M^2 / (4 pi^2 B_M), the target's spectral displacement, "
+                   "B_M from ASCE 7-16 Table 17.5-1,");
 
   fmt::print(md, "\n## The suite\n\n");
   fmt::print(md, "{} {}, each scaled by its own factor so that the mean of their {} is nowhere "
@@ -169,9 +179,11 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
              design.period_range[0], o.period_range[1], design.period_range[1],
              o.scaling.common_factor, o.scaling.periods[o.scaling.governing]);
   fmt::print(md, "| record | shape factor | factor | matched to |\n|---|---|---|---|\n");
+  const std::string matched_note =
+      o.study.directions == 2 ? "" : " (the pair's RotD100; its H1 runs)";
   for (const DesignRecord& r : o.records) {
     fmt::print(md, "| {} | {:.4g} | {:.4g} | {} |\n", r.name, r.shape_factor, r.factor,
-               r.misfit >= 0 ? fmt::format("{:.3g}", r.misfit) : "(given)");
+               r.misfit >= 0 ? fmt::format("{:.3g}{}", r.misfit, matched_note) : "(given)");
   }
   if (figures) {
     fmt::print(md, "\n![The scaled suite's spectra against the target](design_spectra.png)\n");
@@ -211,12 +223,13 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                  "{:.4g} {} |\n",
              kElfShearFloor, c.rha_shear, u.force(), c.shear_bound, kElfShearFloor * c.elf_shear,
              u.force(), c.design_shear, u.force());
-  fmt::print(md, "| story drift ratio <= {:g} % | {:.3g} % | {:g} % | {} |\n", c.drift_limit,
-             c.drift, c.drift_limit, c.drift <= c.drift_limit ? "met" : "EXCEEDED");
+  fmt::print(md, "| story drift ratio <= {:g} % | {} | {:g} % | {} |\n", c.drift_limit,
+             Drift(c.drift), c.drift_limit, DriftVerdict(c.drift, c.drift_limit));
 
   fmt::print(md, "\n## Figures\n\n");
   if (!figures) {
-    fmt::print(md, "Not drawn (`--no-figures`).\n");
+    fmt::print(md, "Not drawn here: `scripts/plot_design.py {}` draws them from this folder.\n",
+               directory);
     return;
   }
   fmt::print(md, "Histories kept for record {} (the largest D_TM of the governing bound), each "
@@ -226,7 +239,7 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   if (o.study.directions == 2) {
     fmt::print(md, "![The orbits of the bearings that move most](design_orbits.png)\n\n");
   }
-  fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
+  if (!std::isnan(c.drift)) fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
 }
 
 }  // namespace
@@ -266,8 +279,8 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
   fmt::print(out, "V_b {:.5g} {} ({}), ELF floor {:g} x {:.5g} = {:.5g}: design V_b {:.5g} {}\n",
              c.rha_shear, u.force(), c.shear_bound, kElfShearFloor, c.elf_shear,
              kElfShearFloor * c.elf_shear, c.design_shear, u.force());
-  fmt::print(out, "story drift ratio {:.3g} % against {:g} %: {}\n", c.drift, c.drift_limit,
-             c.drift <= c.drift_limit ? "met" : "EXCEEDED");
+  fmt::print(out, "story drift ratio {} against {:g} %: {}\n", Drift(c.drift), c.drift_limit,
+             DriftVerdict(c.drift, c.drift_limit));
   return out.str();
 }
 

@@ -58,6 +58,7 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
       given.units = component.units;
       if (component.dt > 0.0) given.dt = InModelTime(study, model.units, component.dt);
       given.scale = component.scale * study.scales[job.scale];
+      given.target = component.target;
       given.units_given_by = entry + ".units";
       given.dt_given_by = entry + ".dt";
       overrides.records.push_back(std::move(given));

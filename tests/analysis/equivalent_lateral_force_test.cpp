@@ -85,10 +85,11 @@ TEST(EquivalentLateralForce, DesignDisplacementIsTheFixedPointOfEq17_5_1) {
 // Eq. 17.5-3 by hand for models/design/five_story_lrb_plan.yaml: 16 equal bearings on a 4 x 4
 // grid of a 30 m x 20 m plan (x at 0, 10, 20, 30 m; y at 0, 6.667, 13.333, 20 m), the centre of
 // rigidity at (15, 10) m, the centre of mass at (15.6, 10) m. Mean squared distance of the
-// bearings: (225 + 25 + 25 + 225) / 4 + (100 + 11.11 + 11.11 + 100) / 4 = 180.56 m^2; the plan's
-// (30^2 + 20^2) / 12 = 108.33 m^2, so P_T^2 = 1.6667. Along x: y = 10 m, e = 0 + 0.05 x 20 = 1 m,
-// 1 + 10 / 1.6667 x 12 x 1 / 1300 = 1.0554; along y: y = 15 m, e = 0.6 + 0.05 x 30 = 2.1 m,
-// 1 + 15 / 1.6667 x 12 x 2.1 / 1300 = 1.1745, which governs (above 1.15).
+// bearings from the centre of mass (Eq. 17.5-4): (15.6^2 + 5.6^2 + 4.4^2 + 14.4^2) / 4 +
+// (10^2 + 3.333^2 + 3.333^2 + 10^2) / 4 = 125.36 + 55.56 = 180.92 m^2; the plan's
+// (30^2 + 20^2) / 12 = 108.33 m^2, so P_T^2 = 1.6700. Along x: y = 10 m, e = 0 + 0.05 x 20 = 1 m,
+// 1 + 10 / 1.67 x 12 x 1 / 1300 = 1.0553; along y: y = 15 m, e = 0.6 + 0.05 x 30 = 2.1 m,
+// 1 + 15 / 1.67 x 12 x 2.1 / 1300 = 1.1741, which governs (above 1.15).
 TEST(EquivalentLateralForce, TotalDisplacementIsEq17_5_3OfThePlan) {
   const model::ModelFile model =
       model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/design/five_story_lrb_plan.yaml");
@@ -96,14 +97,16 @@ TEST(EquivalentLateralForce, TotalDisplacementIsEq17_5_3OfThePlan) {
   ElfResult elf;
   elf.displacement = 500.0;
   elf.period = 3.0;
-  const double p_t2 = (125.0 + (100.0 + 2 * 100.0 / 9.0 + 100.0) / 4.0) / (1300.0 / 12.0);
+  const double dx2 = (15.6 * 15.6 + 5.6 * 5.6 + 4.4 * 4.4 + 14.4 * 14.4) / 4.0;
+  const double p_t2 = (dx2 + (100.0 + 2 * 100.0 / 9.0 + 100.0) / 4.0) / (1300.0 / 12.0);
   const double expected = 1.0 + 15.0 / p_t2 * 12.0 * 2.1 / 1300.0;
-  EXPECT_NEAR(expected, 1.1745, 1e-4);
+  EXPECT_NEAR(expected, 1.1741, 1e-4);
   // The grid stands at 6667 and 13333 mm, not thirds: 1e-5 of the value.
   EXPECT_NEAR(TotalDisplacement(model, system, elf), 500.0 * expected, 1e-5 * 500.0 * expected);
-  // A one-direction model has no plan to twist in: D_TM is D_M.
+  // A one-direction model has no plan to twist in: the code's floor, 1.15 D_M.
   const IsolationSystem layer(model::LoadModelText(kModel, "lrb.yaml"));
-  EXPECT_DOUBLE_EQ(TotalDisplacement(model::LoadModelText(kModel, "lrb.yaml"), layer, elf), 500.0);
+  EXPECT_DOUBLE_EQ(TotalDisplacement(model::LoadModelText(kModel, "lrb.yaml"), layer, elf),
+                   1.15 * 500.0);
 }
 
 }  // namespace

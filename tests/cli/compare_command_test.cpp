@@ -107,6 +107,46 @@ TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
   ExpectSameRunFiles(one, two);
 }
 
+// A record entry scaled to a target: each study scale multiplies the target's factor, so the
+// record's PGA is the target times the scale, for one record and for a pair's h1 (whose factor
+// scales h2); a target on h2 is refused at its place.
+TEST(CompareCommand, ARecordEntrysTargetIsScaledByTheStudysScales) {
+  const auto folder = isolab::testing::FreshTestDirectory();
+  const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
+  const auto study = folder / "targets.yaml";
+  std::ofstream(study) << "building: " << StudyData("small_building.yaml") << "\n"
+                       << "variants: [{name: thm1}]\nrecords:\n"
+                       << "  - {file: " << motions << "fwn_firm_seed1.at2, scale: {pga: 0.4 g}}\n"
+                       << "scales: [0.5, 1]\n";
+  const Outcome run = RunIsolab("compare " + study.string() + " -q --runs none -o " +
+                                (folder / "out").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto rows = CsvRows(folder / "out" / "summary.csv");
+  const auto header = rows.front();
+  const std::size_t scale = std::find(header.begin(), header.end(), "scale") - header.begin();
+  const std::size_t pga = std::find(header.begin(), header.end(), "pga_g") - header.begin();
+  ASSERT_LT(pga, header.size());
+  int checked = 0;
+  for (const auto& row : rows) {
+    if (row.size() <= pga || row[1] != "fwn_firm_seed1") continue;
+    EXPECT_NEAR(std::stod(row[pga]), 0.4 * std::stod(row[scale]), 1e-9) << row[scale];
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+
+  std::ofstream(study) << "building: " << ISOLAB_SOURCE_DIR
+                       << "/models/plan/five_story_table9_plan.yaml\n"
+                       << "variants: [{name: thm1}]\nrecords:\n"
+                       << "  - {h1: {file: " << motions << "fwn_firm_seed1.at2}, h2: {file: "
+                       << motions << "h2_fwn_firm_seed3.at2, scale: {pga: 0.3 g}}}\n"
+                       << "scales: [1]\n";
+  const Outcome refused = RunIsolab("compare " + study.string() + " -q", true);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("records[0].h2.scale: a pair takes its target on h1"),
+            std::string::npos)
+      << refused.output;
+}
+
 TEST(CompareCommand, RunsOptionKeepsTheSummaryAndChoosesThePerRunFiles) {
   const fs::path full = OutputFolder("runs_full"), summary = OutputFolder("runs_summary"),
                  none = OutputFolder("runs_none");

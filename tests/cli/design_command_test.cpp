@@ -75,6 +75,34 @@ TEST(DesignCommand, DesignsThePlanBuildingOnASyntheticSuite) {
   EXPECT_GT(v.at("nominal/D_M/elf"), v.at("upper/D_M/elf"));
 }
 
+// A folder an earlier design wrote is emptied first (nothing of it is taken for the new design's);
+// a folder holding anything else is refused, untouched.
+TEST(DesignCommand, ReplacesAnEarlierDesignAndRefusesAFolderOfOtherFiles) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
+  const fs::path path = folder / "design.yaml";
+  std::ofstream(path) << "model: " << ISOLAB_TEST_DATA_DIR << "/study/data/two_story_lrb.yaml\n"
+                      << "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\nsuite:\n  records: ["
+                      << motions << "fwn_firm_seed1.at2, " << motions << "fwn_soft_seed2.at2, "
+                      << motions << "elcentro_1940_ns.at2]\n";
+  const fs::path out = folder / "out";
+  const std::string command = "design " + path.string() + " -q --no-figures -o " + out.string();
+  ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);
+  const fs::path stale = out / "histories" / "runs" / "lower" / "earlier_x1.h5";
+  std::ofstream(stale) << "an earlier design's history";
+  ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::is_regular_file(out / "design_values.csv"));
+
+  std::ofstream(out / "notes.txt") << "the engineer's";
+  const testing::Outcome refused = testing::RunIsolab(command, true);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("holds 'notes.txt', which a design does not write"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "design_values.csv"));
+}
+
 TEST(DesignCommand, RefusesBadInputWithItsPlace) {
   const fs::path folder = testing::FreshTestDirectory();
   const std::string design =

@@ -201,6 +201,8 @@ TEST(SynthCommand, BadPairOptionsAndTablesExitTwoNamingThemAndWriteNothing) {
       {"--pairs 2 --pga 0.3 --target " + table + out, "--pga: the pairs are scaled to --target"},
       {"noise --target " + table + " -o x.at2", "--target: matches pairs to a target spectrum"},
       {"noise --periods 0.5,4 -o x.at2", "--periods: matches pairs to a target spectrum"},
+      {"pulse --dt 0.005 -o x.at2", "--dt: sets noise's step: not a pulse's"},
+      {"pulse --duration 20 -o x.at2", "--duration: sets noise's length: not a pulse's"},
       {"--pairs 2 --periods 4,0.5 --target " + table + out, "--periods: 0.5 (must be > "},
       {"--pairs 2 --periods 0.5 --target " + table + out, "--periods: 1 value(s): give LO,HI"},
       {"--pairs 2 --periods 0.01,4 --target " + table + out, "--periods: 0.01 (must be >= 5"},

@@ -109,6 +109,11 @@ TEST_F(DesignFileTest, RefusesWhatTheProcedureCannotDo) {
   EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}, file: t.csv}\n" +
                     kRecords)
                 , "target: give one of asce7, eurocode8 or file"));
+  EXPECT_TRUE(Holds(ErrorOf(head + "suite:\n  records: [" + kGroundMotions +
+                            "pulse_tp2.at2, {file: " + kGroundMotions +
+                            "fwn_firm_seed1.at2, scale: {pga: 0.4 g}}, " + kGroundMotions +
+                            "fwn_soft_seed2.at2]\n"),
+                    "the design scales its suite to the target spectrum"));
   std::ofstream(directory_ / "bare.yaml") << "units: {force: kN, length: mm, time: s}\n"
                                              "structure: {type: sdof, mass: 1}\n"
                                              "isolation: {components: [{name: k, type: "

@@ -85,11 +85,13 @@ struct ElfResult {
 ElfResult SolveElf(const IsolationSystem& system, const DisplacementDemand& demand, double metre);
 
 // D_TM of ASCE 7-16 Eq. 17.5-3 for a building in plan, D_M [1 + (y / P_T^2) 12 e / (b^2 + d^2)],
-// the larger of the two directions and not below 1.15 D_M: b x d the footprint, y the farthest
-// bearing from the isolation's centre of rigidity (its bearings' k_eff at D_M) across the motion,
-// e the structure's centre of mass from that centre plus 5 % of the plan across the motion, P_T
-// by Eq. 17.5-4 (the bearings' radius of gyration about the centre of rigidity over the plan's,
-// sqrt((b^2 + d^2) / 12)). In one direction, where the model has no plan: D_M.
+// the larger of the two directions and not below 1.15 D_M (17.5.3.3): b x d the footprint, y the
+// farthest bearing from the isolation's centre of rigidity (its bearings' k_eff at D_M) across the
+// motion, e the structure's centre of mass from that centre plus the code's 5 % of the plan across
+// the motion (whatever eccentricity a design's runs take), P_T by Eq. 17.5-4 (the bearings' radius
+// of gyration about the centre of mass over the plan's, sqrt((b^2 + d^2) / 12)), taken as it comes
+// (below 1, a torsionally flexible layout, it raises D_TM). In one direction, where the model has
+// no plan, the code's floor 1.15 D_M.
 double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& system,
                          const ElfResult& elf);
 

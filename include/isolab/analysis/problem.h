@@ -49,6 +49,9 @@ struct RecordOverride {
   std::string units{};               // its acceleration unit; empty: from its header
   double dt = 0.0;                   // its sampling step (model time unit); 0: from the file
   double scale = 1.0;
+  // A target the record is scaled to (a study's record entry: `scale: {pga: ...}`), `scale` then
+  // multiplying the factor it gives; none: `scale` alone.
+  std::optional<model::ScaleTarget> target{};
   std::string units_given_by = "--units";  // who gives `units` and `dt`, for messages
   std::string dt_given_by = "--record-dt";
 };

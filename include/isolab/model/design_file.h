@@ -64,8 +64,9 @@ struct DesignFile {
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, a model that does
 // not load or has no modification factors, a target out of range, a suite that is neither
-// records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not 0 < lower <= 1 <= upper, an eccentricity
-// given for a one-direction model, a drift limit not in (0, 1).
+// records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not
+// 0 < lower <= 1 <= upper, an eccentricity given for a one-direction model, a drift limit not in
+// (0, 1), a target given on a suite record (the design scales the suite itself).
 DesignFile LoadDesignFile(const std::string& path);
 
 }  // namespace isolab::model

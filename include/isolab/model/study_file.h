@@ -17,7 +17,9 @@
 //     - {file: extra/rec.txt, units: gal, dt: 0.01, scale: 1.2}   # and step from each file's
 //                                                   # header, else from its entry (never the
 //                                                   # building's ground_motion); an entry's
-//                                                   # scale multiplies every study scale
+//                                                   # scale multiplies every study scale;
+//     - {file: r.at2, scale: {pga: 0.4 g}}          # or a target (model_file.h), whose factor
+//                                                   # each study scale multiplies
 //   scales: [0.5, 1.0, 1.5]                         # replace the building's ground_motion.scale
 //   output: {directory: results}                    # per-run HDF5 and summary; relative to the
 //                                                   # working directory, like a model's output
@@ -32,8 +34,8 @@
 // plan, written as a model's excitation.ground_motion is:
 //   records:
 //     - {h1: {file: a_h1.at2, scale: 1.0}, h2: {file: a_h2.at2}, angle: 30, name: a_at30}
-// (units, dt and scale per component as there; angle in degrees from x to H1, default 0; name
-// default: h1's file stem). Both files are read when the study loads: a pair whose steps or
+// (units, dt and scale per component as there, a target on h1 only; angle in degrees from x to
+// H1, default 0; name default: h1's file stem). Both files are read when the study loads: a pair whose steps or
 // lengths differ is refused then, as is a pair in a study of a building in one direction. Each run
 // is what `isolab run` does on the variant's model with the record in its excitation, each
 // component's scale times the study's.

@@ -74,6 +74,10 @@ double SpectralAcceleration(const TargetSpectrum& spectrum, double period);
 // equivalent linear search, a matching over a wider band), never for the range itself.
 double ContinuedSpectralAcceleration(const TargetSpectrum& spectrum, double period);
 
+// Eurocode 8's damping correction eta = sqrt(10 / (5 + xi)) >= 0.55, xi in % (EN 1998-1 Eq. 3.6):
+// 1 at 5 %.
+double DampingCorrection(double damping_ratio);
+
 // One line for reports:
 //   "ASCE 7-16 MCE_R: S_MS 1.5 g, S_M1 0.9 g, T_L 8 s"
 //   "Eurocode 8 type 1, ground B: a_g 0.3 g (gamma_I 1 x a_gR 0.3 g), 5 % damping"

@@ -10,8 +10,8 @@
 //     (the pairs' RotD100, a single record's 5 % spectrum) is nowhere below the target from
 //     period_range[0] x T_M(upper) to period_range[1] x T_M(lower) (spectra/suite_scaling.h);
 //  4. every bound x accidental-eccentricity case (analysis/accidental_torsion.h: none, and the
-//     four shifted cases of a building in plan) x record run through the study scheduler
-//     (threads or MPI ranks), each as `isolab run` runs it;
+//     four shifted cases of a building in plan) x record run through the study scheduler on
+//     local threads, each as `isolab run` runs it;
 //  5. the design values: per bound and record the envelope over the eccentricity cases, then the
 //     mean over the suite when it has at least kMinimumRecordsForMean records (ASCE 7-16 17.6.3.2
 //     allows it), the maximum otherwise; the governing bound per quantity; and the ELF lower
@@ -20,6 +20,8 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,7 @@
 #include "isolab/model/study_file.h"
 #include "isolab/spectra/suite_scaling.h"
 #include "isolab/study/job_result.h"
+#include "isolab/study/quantities.h"
 #include "isolab/study/scheduler.h"
 
 namespace isolab::study {
@@ -43,8 +46,8 @@ struct DesignBound {
   model::ModelFile model;
   analysis::ElfResult elf;
   double damping_coefficient = 0.0;  // B_M of the ELF result (1 / eta for Eurocode 8)
-  // D_TM of ASCE 7-16 Eq. 17.5-3 (not below 1.15 D_M) in plan; D_M in one direction, where the
-  // model has no plan to twist in.
+  // D_TM of ASCE 7-16 Eq. 17.5-3 (not below 1.15 D_M) in plan; 1.15 D_M in one direction, where
+  // the model has no plan to twist in.
   double elf_total_displacement = 0.0;
 };
 
@@ -74,6 +77,8 @@ struct DesignQuantityInfo {
   std::string_view label;  // report row
 };
 std::span<const DesignQuantityInfo> DesignQuantities();
+// The study quantity (quantities.h) a design quantity is read from, and so its unit.
+Quantity SourceOf(DesignQuantity quantity);
 
 struct DesignStatistic {
   std::vector<double> per_record;  // the envelope over the eccentricity cases, per record
@@ -93,6 +98,10 @@ struct DesignOutcome {
   bool mean_of_suite = false;           // values are means (>= 7 records), else maxima
   model::StudyFile study;               // what ran: variants bound x case, the scaled records
   std::vector<JobResult> runs;          // job order (variant-major)
+  // The run of bound b, eccentricity case c and record r.
+  const JobResult& RunOf(std::size_t b, std::size_t c, std::size_t r) const {
+    return runs[(b * eccentricities.size() + c) * records.size() + r];
+  }
   std::size_t failed = 0;
   // [bound][quantity]
   std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
@@ -105,7 +114,9 @@ struct DesignOutcome {
 };
 
 // `requested` when given, else the design's output.directory, else the design file's stem; made
-// with its parents. Throws InputError naming `option` (or output.directory) when it cannot be.
+// with its parents, or emptied when it holds an earlier design (only what a design writes).
+// Throws InputError naming `option` (or output.directory) when it cannot be made or holds
+// anything else.
 std::string PrepareDesignFolder(const std::string& requested, const model::DesignFile& design,
                                 const std::string& option);
 
