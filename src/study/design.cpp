@@ -58,13 +58,22 @@ Quantity SourceOf(DesignQuantity q) {
 namespace {
 
 // A record's spectrum at `periods` (g): a pair's RotD100, one record's 5 % Sa; with its entry's
-// scale.
+// scale. Throws InputError naming the entry for a record too short for the range's top period
+// `top` (s): its spectrum there is not a record's but its length's.
 std::vector<double> RecordSpectrum(const model::StudyRecord& record, const UnitSystem& units,
-                                   const std::vector<double>& periods) {
+                                   const std::vector<double>& periods, double top) {
   std::vector<integrators::SampledHistory> histories;
   for (const model::GroundMotionSection& c : record.components) {
     const io::Record r = io::ReadRecord(
         c.file, {c.units, c.dt * units.SiFactor(dimension::kTime), record.entry, record.entry});
+    const double duration = r.dt * static_cast<double>(r.values.size() - 1);
+    if (duration < kCyclesOfLongestPeriod * top) {
+      throw InputError({record.entry},
+                       fmt::format("'{}' lasts {:g} s, less than {:g} cycles of the scaling "
+                                   "range's top period {:.3g} s: too short for the range (give a "
+                                   "longer record, or a narrower period_range)",
+                                   c.file, duration, kCyclesOfLongestPeriod, top));
+    }
     const double in_g =
         UnitSystem("N", "m", "s").Convert(1.0, r.units, dimension::kAcceleration) / 9.80665;
     integrators::SampledHistory h{r.dt, r.values};
@@ -277,7 +286,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   std::vector<std::vector<double>> in_range(records.size());
   for (std::size_t r = 0; r < records.size(); ++r) {
-    const std::vector<double> sa = RecordSpectrum(records[r], units, grid);
+    const std::vector<double> sa = RecordSpectrum(records[r], units, grid, out.period_range[1]);
     for (const double t : periods) {
       in_range[r].push_back(sa[std::lower_bound(grid.begin(), grid.end(), t) - grid.begin()]);
     }

@@ -16,6 +16,7 @@
 
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
+#include "isolab/core/errors.h"
 #include "isolab/io/record.h"
 #include "isolab/model/design_file.h"
 #include "isolab/spectra/elastic_spectrum.h"
@@ -132,17 +133,16 @@ TEST(Design, ScaledSuiteMeanReachesTheTargetOverTheRange) {
   EXPECT_NEAR(least, 1.0, 1e-9);
 }
 
-TEST(Design, ValuesAreTheSuitesStatisticsOfIndependentRuns) {
-  const Design d = RunOneDirection(kThreeRecords);
-  const DesignOutcome& o = d.outcome;
+// Each bound's written model run alone under each record at its factor: the design's per-record
+// peaks, and their maximum (fewer than 7 records) or mean.
+void ExpectIndependentRuns(const DesignOutcome& o) {
   ASSERT_EQ(o.failed, 0u);
-  EXPECT_FALSE(o.mean_of_suite);  // 3 records: the maximum
   const std::size_t shear = static_cast<std::size_t>(DesignQuantity::kBaseShear);
   const std::size_t total = static_cast<std::size_t>(DesignQuantity::kTotalDisplacement);
+  const double n = static_cast<double>(o.records.size());
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
-    double max_shear = 0.0, max_displacement = 0.0;
+    double max_shear = 0.0, max_displacement = 0.0, mean_shear = 0.0, mean_displacement = 0.0;
     for (std::size_t r = 0; r < o.records.size(); ++r) {
-      // The bound's written model run alone under the record at its factor.
       model::ModelFile m = model::LoadModelFile(o.bounds[b].model_file);
       model::GroundMotionSection g;
       g.file = o.records[r].files[0];
@@ -150,22 +150,57 @@ TEST(Design, ValuesAreTheSuitesStatisticsOfIndependentRuns) {
       m.excitation.ground_motion = {g};
       const analysis::Summary s = analysis::Solve({}, analysis::Prepare(m, {}));
       ASSERT_TRUE(s.ok());
-      EXPECT_NEAR(o.values[b][shear].per_record[r], s.peaks.base_shear.value,
-                  1e-9 * s.peaks.base_shear.value);
-      EXPECT_NEAR(o.values[b][total].per_record[r], s.peaks.isolator_displacement.value,
-                  1e-9 * s.peaks.isolator_displacement.value);
-      max_shear = std::max(max_shear, s.peaks.base_shear.value);
-      max_displacement = std::max(max_displacement, s.peaks.isolator_displacement.value);
+      const double v = s.peaks.base_shear.value, u = s.peaks.isolator_displacement.value;
+      EXPECT_NEAR(o.values[b][shear].per_record[r], v, 1e-9 * v);
+      EXPECT_NEAR(o.values[b][total].per_record[r], u, 1e-9 * u);
+      max_shear = std::max(max_shear, v);
+      max_displacement = std::max(max_displacement, u);
+      mean_shear += v / n;
+      mean_displacement += u / n;
     }
-    EXPECT_NEAR(o.values[b][shear].value, max_shear, 1e-9 * max_shear);
-    EXPECT_NEAR(o.values[b][total].value, max_displacement, 1e-9 * max_displacement);
+    const double shear_value = o.mean_of_suite ? mean_shear : max_shear;
+    const double total_value = o.mean_of_suite ? mean_displacement : max_displacement;
+    EXPECT_NEAR(o.values[b][shear].value, shear_value, 1e-9 * shear_value);
+    EXPECT_NEAR(o.values[b][total].value, total_value, 1e-9 * total_value);
   }
   // The lower bound is the most flexible: it governs the displacement.
   EXPECT_EQ(o.bounds[o.governing[total]].bound, "lower");
-  WriteDesignFiles(d.file, o, (d.directory / "out").string(), false);
+}
+
+TEST(Design, ValuesAreTheMaximaOfIndependentRunsBelowSevenRecords) {
+  const Design d = RunOneDirection(kThreeRecords);
+  EXPECT_FALSE(d.outcome.mean_of_suite);
+  ExpectIndependentRuns(d.outcome);
+  WriteDesignFiles(d.file, d.outcome, (d.directory / "out").string(), false);
   for (const char* name : {"design.md", "design_values.csv", "design_runs.csv",
                            "design_spectra.csv"}) {
     EXPECT_TRUE(fs::is_regular_file(d.directory / "out" / name)) << name;
+  }
+}
+
+TEST(Design, ValuesAreTheMeansOfIndependentRunsFromSevenRecords) {
+  // Seven synthetic pairs; a building in one direction runs each pair's H1.
+  const Design d = RunOneDirection("suite: {synthetic: {count: 7, seed: 3, duration: 20 s}}\n");
+  ASSERT_EQ(d.outcome.records.size(), 7u);
+  EXPECT_TRUE(d.outcome.mean_of_suite);
+  ExpectIndependentRuns(d.outcome);
+}
+
+TEST(Design, RefusesARecordTooShortForTheScalingRange) {
+  const fs::path folder = testing::FreshTestDirectory();
+  std::ofstream(folder / "design.yaml")
+      << "model: " << kBuilding << "\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n"
+      << kThreeRecords.substr(0, kThreeRecords.size() - 2) << ", " << kGroundMotions
+      << "pulse_tp2.at2]\n";
+  const model::DesignFile file = model::LoadDesignFile((folder / "design.yaml").string());
+  const auto scheduler = MakeThreadScheduler(1);
+  try {
+    RunDesign(file, (folder / "out").string(), "test", *scheduler, {});
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("pulse_tp2.at2' lasts 12 s, less than 4 cycles"),
+              std::string::npos)
+        << error.what();
   }
 }
 
