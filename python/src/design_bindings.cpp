@@ -30,10 +30,10 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   {
     py::gil_scoped_release release;
     const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
-    outcome = study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler,
-                               [&](const std::string& line) {
-                                 if (!quiet) fmt::print(stderr, "{}\n", line);
-                               });
+    outcome =
+        study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {
+          if (!quiet) fmt::print(stderr, "{}\n", line);
+        });
   }
   if (outcome.failed > 0) {
     throw std::runtime_error(fmt::format("{} of {} design runs failed; no design values",
@@ -50,12 +50,11 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
       values[py::str(std::string(info.key))] =
           outcome.values[b][static_cast<std::size_t>(info.quantity)].value;
     }
-    py::dict elf(py::arg("D_M") = bound.elf.displacement, py::arg("T_M") = bound.elf.period / second,
-                 py::arg("beta_M") = bound.elf.at_design.damping,
-                 py::arg("B_M") = bound.damping_coefficient,
-                 py::arg("k_M") = bound.elf.at_design.stiffness,
-                 py::arg("V_b") = bound.elf.base_shear,
-                 py::arg("D_TM") = bound.elf_total_displacement);
+    py::dict elf(
+        py::arg("D_M") = bound.elf.displacement, py::arg("T_M") = bound.elf.period / second,
+        py::arg("beta_M") = bound.elf.at_design.damping, py::arg("B_M") = bound.damping_coefficient,
+        py::arg("k_M") = bound.elf.at_design.stiffness, py::arg("V_b") = bound.elf.base_shear,
+        py::arg("D_TM") = bound.elf_total_displacement);
     bounds[py::str(bound.bound)] = py::dict(py::arg("model") = bound.model_file,
                                             py::arg("elf") = elf, py::arg("values") = values);
   }

@@ -30,7 +30,8 @@ std::vector<EccentricityCase> AccidentalEccentricities(const model::ModelFile& m
 }
 
 model::ModelFile WithCentresOfMassShifted(model::ModelFile model, hysteresis::Vec2 shift) {
-  model.description += fmt::format(" (accidental eccentricity: every centre of mass moved by [{:g}, {:g}])", shift.x, shift.y);
+  model.description += fmt::format(
+      " (accidental eccentricity: every centre of mass moved by [{:g}, {:g}])", shift.x, shift.y);
   structure::PlanBuilding& plan = model.structure->plan;
   plan.base.centre_of_mass = plan.base.centre_of_mass + shift;
   for (structure::PlanStory& story : plan.stories) {

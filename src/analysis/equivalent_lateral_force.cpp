@@ -20,7 +20,7 @@ constexpr int kCycles = 3;
 constexpr double kFourPiSquared = 4.0 * std::numbers::pi * std::numbers::pi;
 constexpr double kAccidentalRatio = 0.05;  // Eq. 17.5-3's accidental eccentricity, of the plan
 constexpr double kTotalDisplacementFloor = 1.15;  // D_TM >= 1.15 D_M
-constexpr int kStepsPerCycle = 400;  // a multiple of 4: u = +-D are samples
+constexpr int kStepsPerCycle = 400;               // a multiple of 4: u = +-D are samples
 
 // u = D sin(2 pi t / T) along x for kCycles cycles, and where each cycle starts.
 io::DisplacementPath SinePath(double amplitude, double period, std::vector<std::size_t>* starts) {
@@ -33,7 +33,8 @@ io::DisplacementPath SinePath(double amplitude, double period, std::vector<std::
     path.displacement.push_back({amplitude * std::sin(phase), 0.0});
   }
   starts->clear();
-  for (int c = 0; c <= kCycles; ++c) starts->push_back(static_cast<std::size_t>(c * kStepsPerCycle));
+  for (int c = 0; c <= kCycles; ++c)
+    starts->push_back(static_cast<std::size_t>(c * kStepsPerCycle));
   return path;
 }
 
@@ -90,10 +91,8 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
         return LastCycle(assembly, d, t);
       });
     } else {
-      bearings_.push_back(
-          [assembly = s.coupled_members()[isolator.coupled].assembly](double d, double t) {
-            return LastCycle(assembly, d, t);
-          });
+      bearings_.push_back([assembly = s.coupled_members()[isolator.coupled].assembly](
+                              double d, double t) { return LastCycle(assembly, d, t); });
     }
   }
   gravity_ = model.units.Convert(1.0, "g", dimension::kAcceleration);
@@ -118,7 +117,8 @@ EffectiveProperties IsolationSystem::At(double displacement, double period) cons
 
 std::vector<double> IsolationSystem::BearingStiffnesses(double displacement, double period) const {
   std::vector<double> stiffnesses;
-  for (const auto& bearing : bearings_) stiffnesses.push_back(bearing(displacement, period).stiffness);
+  for (const auto& bearing : bearings_)
+    stiffnesses.push_back(bearing(displacement, period).stiffness);
   return stiffnesses;
 }
 
@@ -230,8 +230,8 @@ double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& s
                        std::abs(mass_centre.x - rigidity.x) + kAccidentalRatio * b};
   double total = floor;
   for (int dir = 0; dir < 2; ++dir) {
-    total = std::max(total, elf.displacement *
-                                (1.0 + y_max[dir] / (pt * pt) * 12.0 * e[dir] / (b * b + d * d)));
+    total = std::max(
+        total, elf.displacement * (1.0 + y_max[dir] / (pt * pt) * 12.0 * e[dir] / (b * b + d * d)));
   }
   return total;
 }

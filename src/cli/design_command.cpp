@@ -79,8 +79,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
     }
   }
   fmt::print(out, "{}", study::DesignSummaryText(design, outcome));
-  fmt::print(out, "report: {}\n",
-             (std::filesystem::path(folder) / "design.md").string());
+  fmt::print(out, "report: {}\n", (std::filesystem::path(folder) / "design.md").string());
   if (!options.quiet) {
     fmt::print(stderr,
                "isolab design: the suite in {:.1f} s, {} runs in {:.1f} s on {}, {:.1f} s in all "

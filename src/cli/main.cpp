@@ -4,9 +4,9 @@
 //
 // Two executables from this file. `isolab`, the front, runs the commands that need no more than
 // the solver and its files (run, cyclic, synth, spectrum, shaketable) and starts without MPI,
-// pagmo and their dependencies. `fit`, `diagnose`, `compare` and `design` need them: the front replaces
-// itself (execv, same process, arguments and environment, so mpirun's ranks stay ranks) with
-// `isolab-commands`, built with ISOLAB_ALL_COMMANDS, which has every command
+// pagmo and their dependencies. `fit`, `diagnose`, `compare` and `design` need them: the front
+// replaces itself (execv, same process, arguments and environment, so mpirun's ranks stay ranks)
+// with `isolab-commands`, built with ISOLAB_ALL_COMMANDS, which has every command
 // (libexec/isolab/isolab-commands beside bin/, or in the build tree).
 #include <unistd.h>
 

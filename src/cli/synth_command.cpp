@@ -151,10 +151,8 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
                     spec.period_max, o.target, table.periods.front(), table.periods.back()));
   }
 
-  const std::vector<analysis::MatchedPair> pairs =
-      analysis::MatchPairs(spec, [&target](double period) {
-        return spectra::SpectralAcceleration(target, period);
-      });
+  const std::vector<analysis::MatchedPair> pairs = analysis::MatchPairs(
+      spec, [&target](double period) { return spectra::SpectralAcceleration(target, period); });
   std::vector<std::string> failed;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     analysis::WriteAt2(pairs[k].h1, paths[2 * k]);
@@ -183,8 +181,7 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
       ->required();
   command->add_option("--seed", o.noise.seed, "noise, pairs: random seed");
   command->add_option("--pga", o.pga, "noise: peak ground acceleration (g), (0, 10]");
-  command->add_option("--duration", o.duration,
-                      "noise, pairs: duration (s), ten samples or more");
+  command->add_option("--duration", o.duration, "noise, pairs: duration (s), ten samples or more");
   command->add_option("--dt", o.dt, "noise, pairs: time step (s), [0.001, 0.05]");
   command->add_option("--pairs", o.pairs,
                       "Write N pairs of filtered noise (pair<k>_h1.at2, pair<k>_h2.at2 in the "

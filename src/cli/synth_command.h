@@ -21,7 +21,7 @@ struct SynthOptions {
   std::string kind = "noise";  // noise | pulse
   std::string output;          // the AT2 file; with --pairs, the folder
   analysis::FilteredNoiseSpec noise;
-  std::optional<double> pga;  // --pga, into noise.pga; refused with --pairs
+  std::optional<double> pga;           // --pga, into noise.pga; refused with --pairs
   std::optional<double> duration, dt;  // --duration, --dt: of noise and pairs; refused for a pulse
   analysis::PulseSpec pulse;
   // Spectrum-compatible pairs: --pairs N matched to the table --target over --periods LO,HI.

@@ -28,14 +28,15 @@ std::string TestingFactorsText(const identification::TestingFactors& factors,
   for (const identification::TestProperties& t : factors.tests) {
     for (std::size_t c = 0; c < t.cycles.size(); ++c) {
       const identification::CycleProperties& p = t.cycles[c];
-      text += fmt::format("{:<14} {:>5} {:>10.5g} {:>12.5g} {:>14.6g} {:>10.5g} {:>12.5g}\n",
-                          t.test, c + 1, p.amplitude, p.effective_stiffness, p.dissipated, p.qd,
-                          p.kd);
+      text +=
+          fmt::format("{:<14} {:>5} {:>10.5g} {:>12.5g} {:>14.6g} {:>10.5g} {:>12.5g}\n", t.test,
+                      c + 1, p.amplitude, p.effective_stiffness, p.dissipated, p.qd, p.kd);
     }
   }
-  text += fmt::format("lambda_test over the tests: Qd {}, Kd {} (each cycle's over the mean of "
-                      "its test's three: the nominal at that amplitude)\n",
-                      Pair(factors.qd), Pair(factors.kd));
+  text += fmt::format(
+      "lambda_test over the tests: Qd {}, Kd {} (each cycle's over the mean of "
+      "its test's three: the nominal at that amplitude)\n",
+      Pair(factors.qd), Pair(factors.kd));
   if (!factors.skipped.empty()) {
     text += fmt::format("  (not counted, fewer than three whole cycles: {})\n",
                         fmt::join(factors.skipped, ", "));

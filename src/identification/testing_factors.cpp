@@ -47,7 +47,8 @@ CycleProperties PropertiesOfCycle(const CyclicTestData& test, CycleSpan cycle) {
   }
   path.push_back(path.front());
   for (std::size_t k = 1; k < path.size(); ++k) {
-    p.dissipated += 0.5 * (path[k].second + path[k - 1].second) * (path[k].first - path[k - 1].first);
+    p.dissipated +=
+        0.5 * (path[k].second + path[k - 1].second) * (path[k].first - path[k - 1].first);
   }
   p.qd = p.dissipated / (4.0 * p.amplitude);
   p.kd = p.effective_stiffness - p.qd / p.amplitude;

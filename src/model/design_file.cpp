@@ -73,7 +73,8 @@ spectra::TargetSpectrum ReadTarget(const YamlReader& reader, const YAML::Node& n
         reader.Fail(e["type"], path + ".type", fmt::format("{} (1 or 2)", s.type));
       }
     }
-    if (e["importance"]) s.importance = ReadPositive(reader, e, path, "importance", dimension::kNone, units);
+    if (e["importance"])
+      s.importance = ReadPositive(reader, e, path, "importance", dimension::kNone, units);
     target = s;
   } else {
     const std::string file = reader.ReadString(node["file"], "target.file");
@@ -88,10 +89,11 @@ spectra::TargetSpectrum ReadTarget(const YamlReader& reader, const YAML::Node& n
 }
 
 std::string TooFew(std::size_t count) {
-  return fmt::format("{} (the response-history procedure needs at least {}: EN 1998-1 "
-                     "4.3.3.4.3; ASCE 7-16 17.3.2 asks for 7, from which the design values are "
-                     "the suite's mean)",
-                     count, kMinimumDesignRecords);
+  return fmt::format(
+      "{} (the response-history procedure needs at least {}: EN 1998-1 "
+      "4.3.3.4.3; ASCE 7-16 17.3.2 asks for 7, from which the design values are "
+      "the suite's mean)",
+      count, kMinimumDesignRecords);
 }
 
 SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
@@ -121,7 +123,8 @@ SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
       reader.Fail(node["dt"], path + ".dt", "must be > 0 and a small part of the duration");
     }
   }
-  if (node["tolerance"]) suite.tolerance = ReadPositive(reader, node, path, "tolerance", dimension::kNone, units);
+  if (node["tolerance"])
+    suite.tolerance = ReadPositive(reader, node, path, "tolerance", dimension::kNone, units);
   return suite;
 }
 
@@ -131,8 +134,9 @@ DesignFile LoadDesignFile(const std::string& path) {
   const YamlReader reader(path);
   const YAML::Node root = reader.LoadFile();
   reader.RequireMap(root, "");
-  reader.CheckKeys(root, "", {"description", "model", "target", "suite", "eccentricity",
-                              "drift_limit", "output"});
+  reader.CheckKeys(
+      root, "",
+      {"description", "model", "target", "suite", "eccentricity", "drift_limit", "output"});
   DesignFile design;
   design.path = path;
   const fs::path directory = fs::path(path).parent_path();
@@ -201,7 +205,8 @@ DesignFile LoadDesignFile(const std::string& path) {
   if (suite["period_range"]) {
     const YAML::Node range = suite["period_range"];
     if (!range.IsSequence() || range.size() != 2) {
-      reader.Fail(range, "suite.period_range", "expected [lower, upper] factors, e.g. [0.75, 1.25]");
+      reader.Fail(range, "suite.period_range",
+                  "expected [lower, upper] factors, e.g. [0.75, 1.25]");
     }
     for (int i = 0; i < 2; ++i) {
       design.period_range[i] = reader.ReadNumber(range[i], IndexPath("suite.period_range", i));
@@ -231,9 +236,9 @@ DesignFile LoadDesignFile(const std::string& path) {
   if (root["drift_limit"]) {
     design.drift_limit = reader.ReadNumber(root["drift_limit"], "drift_limit");
     if (!(design.drift_limit > 0.0 && design.drift_limit < 1.0)) {
-      reader.Fail(root["drift_limit"], "drift_limit",
-                  fmt::format("{:g} (a story drift ratio in (0, 1): 0.015 for 1.5 %)",
-                              design.drift_limit));
+      reader.Fail(
+          root["drift_limit"], "drift_limit",
+          fmt::format("{:g} (a story drift ratio in (0, 1): 0.015 for 1.5 %)", design.drift_limit));
     }
   }
   if (root["output"]) {

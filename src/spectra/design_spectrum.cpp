@@ -40,7 +40,6 @@ Eurocode8Shape ShapeOf(const Eurocode8Spectrum& spectrum) {
 
 char GroundLetter(GroundType ground) { return static_cast<char>('A' + static_cast<int>(ground)); }
 
-
 void RequirePositive(const char* key, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     throw InvalidParameter({key, value, "must be finite and > 0"});
@@ -206,7 +205,8 @@ double ContinuedSpectralAcceleration(const TargetSpectrum& spectrum, double peri
   } else if (!std::holds_alternative<Eurocode8Spectrum>(spectrum)) {
     return SpectralAcceleration(spectrum, period);
   }
-  if (period > last) return SpectralAcceleration(spectrum, last) * (last / period) * (last / period);
+  if (period > last)
+    return SpectralAcceleration(spectrum, last) * (last / period) * (last / period);
   return SpectralAcceleration(spectrum, std::max(period, first));
 }
 

@@ -44,13 +44,20 @@ static_assert(std::size(kDesignQuantities) == kDesignQuantityCount);
 
 Quantity SourceOf(DesignQuantity q) {
   switch (q) {
-    case DesignQuantity::kDisplacement: return Quantity::kBaseCentreDisplacement;
-    case DesignQuantity::kTotalDisplacement: return Quantity::kIsolatorDisplacement;
-    case DesignQuantity::kBaseShear: return Quantity::kBaseShear;
-    case DesignQuantity::kIsolatorForce: return Quantity::kIsolatorForce;
-    case DesignQuantity::kStoryDriftRatio: return Quantity::kStoryDriftRatio;
-    case DesignQuantity::kFloorAcceleration: return Quantity::kFloorAcceleration;
-    case DesignQuantity::kResidualDisplacement: return Quantity::kResidualIsolatorDisplacement;
+    case DesignQuantity::kDisplacement:
+      return Quantity::kBaseCentreDisplacement;
+    case DesignQuantity::kTotalDisplacement:
+      return Quantity::kIsolatorDisplacement;
+    case DesignQuantity::kBaseShear:
+      return Quantity::kBaseShear;
+    case DesignQuantity::kIsolatorForce:
+      return Quantity::kIsolatorForce;
+    case DesignQuantity::kStoryDriftRatio:
+      return Quantity::kStoryDriftRatio;
+    case DesignQuantity::kFloorAcceleration:
+      return Quantity::kFloorAcceleration;
+    case DesignQuantity::kResidualDisplacement:
+      return Quantity::kResidualIsolatorDisplacement;
   }
   return Quantity::kIsolatorDisplacement;
 }
@@ -89,7 +96,8 @@ std::vector<double> RecordSpectrum(const model::StudyRecord& record, const UnitS
       sa.push_back(s.rotd100.at(0, p).pseudo_acceleration);
     }
   } else {
-    const spectra::ElasticSpectrum s = spectra::ComputeElasticSpectrum(histories[0], periods, damping);
+    const spectra::ElasticSpectrum s =
+        spectra::ComputeElasticSpectrum(histories[0], periods, damping);
     for (std::size_t p = 0; p < periods.size(); ++p) sa.push_back(s.at(0, p).pseudo_acceleration);
   }
   return sa;
@@ -97,10 +105,10 @@ std::vector<double> RecordSpectrum(const model::StudyRecord& record, const UnitS
 
 // Synthetic pairs matched to the target over [0.1 s, 1.5 x the scaling range's top], written as
 // AT2 files in <output>/records; H1 alone for a building in one direction.
-std::vector<model::StudyRecord> SyntheticRecords(const model::DesignFile& design, double top,
-                                                 const std::string& output_directory,
-                                                 int directions, std::vector<double>* misfits,
-                                                 const std::function<void(const std::string&)>& progress) {
+std::vector<model::StudyRecord> SyntheticRecords(
+    const model::DesignFile& design, double top, const std::string& output_directory,
+    int directions, std::vector<double>* misfits,
+    const std::function<void(const std::string&)>& progress) {
   const model::SyntheticSuite& s = *design.synthetic;
   analysis::MatchedPairSpec spec;
   spec.seed = s.seed;
@@ -112,17 +120,19 @@ std::vector<model::StudyRecord> SyntheticRecords(const model::DesignFile& design
   spec.tolerance = s.tolerance;
   spec.target_name = spectra::Describe(design.target);
   if (spec.period_max < top) {
-    throw InputError({design.suite_key + ".synthetic.duration"},
-                     fmt::format("{:g} s records cannot hold {:g} cycles of the scaling range's "
-                                 "top period {:g} s (give a duration of at least {:g} s)",
-                                 s.duration, kCyclesOfLongestPeriod, top, kCyclesOfLongestPeriod * top));
+    throw InputError(
+        {design.suite_key + ".synthetic.duration"},
+        fmt::format("{:g} s records cannot hold {:g} cycles of the scaling range's "
+                    "top period {:g} s (give a duration of at least {:g} s)",
+                    s.duration, kCyclesOfLongestPeriod, top, kCyclesOfLongestPeriod * top));
   }
   if (progress) {
     progress(fmt::format("suite: matching {} synthetic pairs to the target over {:g} to {:g} s",
                          s.count, spec.period_min, spec.period_max));
   }
-  const std::vector<analysis::MatchedPair> pairs = analysis::MatchPairs(
-      spec, [&design](double t) { return spectra::ContinuedSpectralAcceleration(design.target, t); });
+  const std::vector<analysis::MatchedPair> pairs = analysis::MatchPairs(spec, [&design](double t) {
+    return spectra::ContinuedSpectralAcceleration(design.target, t);
+  });
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (!pairs[k].converged) {
       throw InputError({design.suite_key + ".synthetic"},
@@ -176,10 +186,9 @@ std::span<const DesignQuantityInfo> DesignQuantities() { return kDesignQuantitie
 // What a design writes in its folder. A folder that holds nothing else is an earlier design's,
 // cleared so that none of its records, runs or histories is taken for this one's.
 bool DesignWrote(const fs::path& entry) {
-  static const std::vector<std::string> kNames = {"design.md",          "design_values.csv",
-                                                  "design_runs.csv",    "design_spectra.csv",
-                                                  "records",            "runs",
-                                                  "histories",          "models"};
+  static const std::vector<std::string> kNames = {
+      "design.md", "design_values.csv", "design_runs.csv", "design_spectra.csv", "records",
+      "runs",      "histories",         "models"};
   const std::string name = entry.filename().string();
   const std::string extension = entry.extension().string();
   return std::find(kNames.begin(), kNames.end(), name) != kNames.end() ||
@@ -244,7 +253,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   for (DesignBound& b : out.bounds) {
     const analysis::IsolationSystem system(b.model);
     b.elf = analysis::SolveElf(system, demand, metre);
-    b.damping_coefficient = analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
+    b.damping_coefficient =
+        analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
     b.elf_total_displacement = analysis::TotalDisplacement(b.model, system, b.elf);
     say(fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}", b.bound,
                     b.elf.displacement, units.length(), b.elf.period / second,
@@ -256,8 +266,10 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     }
     return std::size_t{0};
   };
-  out.period_range[0] = design.period_range[0] * out.bounds[bound_index("upper")].elf.period / second;
-  out.period_range[1] = design.period_range[1] * out.bounds[bound_index("lower")].elf.period / second;
+  out.period_range[0] =
+      design.period_range[0] * out.bounds[bound_index("upper")].elf.period / second;
+  out.period_range[1] =
+      design.period_range[1] * out.bounds[bound_index("lower")].elf.period / second;
 
   // 3. The suite, scaled to the target.
   const auto suite_start = std::chrono::steady_clock::now();
@@ -273,8 +285,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   }
   std::vector<double> misfits;
   std::vector<model::StudyRecord> records =
-      design.synthetic ? SyntheticRecords(design, out.period_range[1], output_directory,
-                                          directions, &misfits, progress)
+      design.synthetic ? SyntheticRecords(design, out.period_range[1], output_directory, directions,
+                                          &misfits, progress)
                        : design.records;
   // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top.
   std::vector<double> grid = periods;
@@ -298,7 +310,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     out.records.push_back(std::move(d));
   }
   out.display_periods = grid;
-  for (const double t : grid) out.display_target.push_back(spectra::ContinuedSpectralAcceleration(design.target, t));
+  for (const double t : grid)
+    out.display_target.push_back(spectra::ContinuedSpectralAcceleration(design.target, t));
   std::vector<double> target;
   for (const double t : periods) target.push_back(spectra::SpectralAcceleration(design.target, t));
   out.scaling = spectra::ScaleSuite(periods, target, in_range);
@@ -307,11 +320,11 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     out.records[r].shape_factor = out.scaling.pair_shape_factors[r];
     out.records[r].factor = out.scaling.factors[r];
   }
-  say(fmt::format("suite: {} {} scaled to the target over {:.3g} to {:.3g} s (common factor "
-                  "{:.4g}, governing at {:.3g} s)",
-                  records.size(), directions == 2 ? "pairs" : "records", out.period_range[0],
-                  out.period_range[1], out.scaling.common_factor,
-                  out.scaling.periods[out.scaling.governing]));
+  say(fmt::format(
+      "suite: {} {} scaled to the target over {:.3g} to {:.3g} s (common factor "
+      "{:.4g}, governing at {:.3g} s)",
+      records.size(), directions == 2 ? "pairs" : "records", out.period_range[0],
+      out.period_range[1], out.scaling.common_factor, out.scaling.periods[out.scaling.governing]));
 
   out.suite_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
@@ -340,7 +353,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     for (const analysis::EccentricityCase& c : out.eccentricities) {
       model::StudyVariant variant;
       variant.name = c.name == "none" ? b.bound : b.bound + "_" + c.name;
-      variant.model = c.name == "none" ? b.model : analysis::WithCentresOfMassShifted(b.model, c.shift);
+      variant.model =
+          c.name == "none" ? b.model : analysis::WithCentresOfMassShifted(b.model, c.shift);
       study.variants.push_back(std::move(variant));
     }
   }
@@ -351,11 +365,11 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   say(fmt::format("runs: {} bounds x {} eccentricity cases x {} records = {} runs on {}",
                   out.bounds.size(), out.eccentricities.size(), records.size(), jobs.size(),
                   scheduler.Describe()));
-  const ScheduleOutcome outcome = RunStudy(
-      study, jobs, output_directory, version, scheduler, 1,
-      [&](const JobResult& result, std::size_t done, std::size_t total) {
-        say(JobProgressLine(study, jobs[result.job], result, done, total));
-      });
+  const ScheduleOutcome outcome =
+      RunStudy(study, jobs, output_directory, version, scheduler, 1,
+               [&](const JobResult& result, std::size_t done, std::size_t total) {
+                 say(JobProgressLine(study, jobs[result.job], result, done, total));
+               });
   out.runs = outcome.results;
   out.failed = outcome.failed;
   out.runs_seconds = outcome.wall_seconds;
@@ -374,7 +388,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
         const std::size_t cases = info.quantity == DesignQuantity::kDisplacement ? 1 : C;
         for (std::size_t c = 0; c < cases; ++c) {
           const double v = out.RunOf(b, c, r).values[q];
-          if (!std::isnan(v)) per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
+          if (!std::isnan(v))
+            per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
         }
       }
       values[static_cast<std::size_t>(info.quantity)] = Statistic(per_record, out.mean_of_suite);
@@ -392,8 +407,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   // in its worst eccentricity case for that record.
   const std::size_t total = static_cast<std::size_t>(DesignQuantity::kTotalDisplacement);
   const std::vector<double>& governing = out.values[out.governing[total]][total].per_record;
-  out.figure_record =
-      static_cast<std::size_t>(std::max_element(governing.begin(), governing.end()) - governing.begin());
+  out.figure_record = static_cast<std::size_t>(
+      std::max_element(governing.begin(), governing.end()) - governing.begin());
   model::StudyFile histories = study;
   histories.variants.clear();
   histories.records = {records[out.figure_record]};
@@ -414,9 +429,9 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   const std::vector<Job> history_jobs = ExpandJobs(histories);
   const fs::path history_folder = fs::path(output_directory) / "histories";
   fs::create_directories(history_folder);
-  const ScheduleOutcome kept = RunStudy(histories, history_jobs, history_folder.string(), version,
-                                        scheduler, 1,
-                                        [](const JobResult&, std::size_t, std::size_t) {});
+  const ScheduleOutcome kept =
+      RunStudy(histories, history_jobs, history_folder.string(), version, scheduler, 1,
+               [](const JobResult&, std::size_t, std::size_t) {});
   for (const JobResult& r : kept.results) {
     out.history_files.push_back(r.completed ? (fs::path("histories") / r.file).string()
                                             : "(failed: " + r.message + ")");

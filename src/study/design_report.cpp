@@ -4,8 +4,8 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <variant>
 
@@ -144,15 +144,17 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
              spectra::Describe(design.target), u.length(), u.force());
 
   fmt::print(md, "## Bound models\n\n");
-  fmt::print(md, "The bearings' properties at nominal, upper-bound and lower-bound values (ASCE "
-                 "7-16 17.2.8.4), each a model that runs alone:\n\n");
+  fmt::print(md,
+             "The bearings' properties at nominal, upper-bound and lower-bound values (ASCE "
+             "7-16 17.2.8.4), each a model that runs alone:\n\n");
   for (const DesignBound& b : o.bounds) {
     fmt::print(md, "- {}: `{}`\n", b.bound, relative(b.model_file));
   }
 
   fmt::print(md, "\n## Equivalent lateral force procedure (ASCE 7-16 17.5)\n\n");
-  fmt::print(md, "| bound | D_M ({0}) | T_M (s) | beta_M | B_M | k_M ({1}/{0}) | V_b ({1}) | "
-                 "D_TM ({0}) |\n|---|---|---|---|---|---|---|---|\n",
+  fmt::print(md,
+             "| bound | D_M ({0}) | T_M (s) | beta_M | B_M | k_M ({1}/{0}) | V_b ({1}) | "
+             "D_TM ({0}) |\n|---|---|---|---|---|---|---|---|\n",
              u.length(), u.force());
   for (const DesignBound& b : o.bounds) {
     fmt::print(md, "| {} | {:.4g} | {:.4g} | {:.3g} | {:.3g} | {:.4g} | {:.4g} | {:.4g} |\n",
@@ -160,8 +162,9 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                b.damping_coefficient, b.elf.at_design.stiffness, b.elf.base_shear,
                b.elf_total_displacement);
   }
-  fmt::print(md, "\n{} at the bearings' effective stiffness and damping at D_M, from their own "
-                 "laws (three cycles at D_M, the third read).\n",
+  fmt::print(md,
+             "\n{} at the bearings' effective stiffness and damping at D_M, from their own "
+             "laws (three cycles at D_M, the third read).\n",
              std::holds_alternative<spectra::Asce7Spectrum>(design.target)
                  ? "D_M = g S_M1 T_M / (4 pi^2 B_M) (Eq. 17.5-1), B_M from Table 17.5-1,"
              : std::holds_alternative<spectra::Eurocode8Spectrum>(design.target)
@@ -171,9 +174,10 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                    "B_M from ASCE 7-16 Table 17.5-1,");
 
   fmt::print(md, "\n## The suite\n\n");
-  fmt::print(md, "{} {}, each scaled by its own factor so that the mean of their {} is nowhere "
-                 "below the target from {:.3g} s ({:g} T_M upper) to {:.3g} s ({:g} T_M lower). "
-                 "Common factor {:.4g}; the mean touches the target at {:.3g} s.\n\n",
+  fmt::print(md,
+             "{} {}, each scaled by its own factor so that the mean of their {} is nowhere "
+             "below the target from {:.3g} s ({:g} T_M upper) to {:.3g} s ({:g} T_M lower). "
+             "Common factor {:.4g}; the mean touches the target at {:.3g} s.\n\n",
              o.records.size(), o.study.directions == 2 ? "pairs" : "records",
              o.study.directions == 2 ? "RotD100 spectra" : "5 % spectra", o.period_range[0],
              design.period_range[0], o.period_range[1], design.period_range[1],
@@ -190,15 +194,18 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   }
 
   fmt::print(md, "\n## Response-history design values\n\n");
-  fmt::print(md, "{} bounds x {} eccentricity cases ({}) x {} records = {} runs. Per bound and "
-                 "record the envelope over the eccentricity cases (D_M: without eccentricity), "
-                 "then the {}.\n\n",
+  fmt::print(md,
+             "{} bounds x {} eccentricity cases ({}) x {} records = {} runs. Per bound and "
+             "record the envelope over the eccentricity cases (D_M: without eccentricity), "
+             "then the {}.\n\n",
              o.bounds.size(), o.eccentricities.size(),
-             fmt::join([&] {
-               std::vector<std::string> names;
-               for (const auto& e : o.eccentricities) names.push_back(e.name);
-               return names;
-             }(), ", "),
+             fmt::join(
+                 [&] {
+                   std::vector<std::string> names;
+                   for (const auto& e : o.eccentricities) names.push_back(e.name);
+                   return names;
+                 }(),
+                 ", "),
              o.records.size(), o.runs.size(), Statistic(o));
   fmt::print(md, "| quantity |");
   for (const DesignBound& b : o.bounds) fmt::print(md, " {} |", b.bound);
@@ -215,12 +222,14 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
 
   fmt::print(md, "\n## Checks\n\n");
   fmt::print(md, "| check | response history | limit | design value |\n|---|---|---|---|\n");
-  fmt::print(md, "| D_TM >= {:g} D_TM (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
-                 "{:.4g} {} |\n",
+  fmt::print(md,
+             "| D_TM >= {:g} D_TM (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
+             "{:.4g} {} |\n",
              kElfDisplacementFloor, c.rha_total, u.length(), c.total_bound,
              kElfDisplacementFloor * c.elf_total, u.length(), c.design_total, u.length());
-  fmt::print(md, "| V_b >= {:g} V_b (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
-                 "{:.4g} {} |\n",
+  fmt::print(md,
+             "| V_b >= {:g} V_b (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
+             "{:.4g} {} |\n",
              kElfShearFloor, c.rha_shear, u.force(), c.shear_bound, kElfShearFloor * c.elf_shear,
              u.force(), c.design_shear, u.force());
   fmt::print(md, "| story drift ratio <= {:g} % | {} | {:g} % | {} |\n", c.drift_limit,
@@ -232,8 +241,9 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                directory);
     return;
   }
-  fmt::print(md, "Histories kept for record {} (the largest D_TM of the governing bound), each "
-                 "bound in its worst eccentricity case: `{}`.\n\n",
+  fmt::print(md,
+             "Histories kept for record {} (the largest D_TM of the governing bound), each "
+             "bound in its worst eccentricity case: `{}`.\n\n",
              o.records[o.figure_record].name, fmt::join(o.history_files, "`, `"));
   fmt::print(md, "![The worst bearing's loops at the three bounds](design_loops.png)\n\n");
   if (o.study.directions == 2) {

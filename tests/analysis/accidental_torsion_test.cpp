@@ -4,6 +4,8 @@
 // F = m a acts at the shifted centre, so the slab translates F / (4 k) and turns
 // theta = F e_y / k_theta, k_theta = 4 k ((L_x/2)^2 + (L_y/2)^2), and a corner moves
 // (F / (4 k) + theta L_y / 2, theta L_x / 2).
+#include "isolab/analysis/accidental_torsion.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include <numbers>
 #include <string>
 
-#include "isolab/analysis/accidental_torsion.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
@@ -25,9 +26,9 @@ using testing::OwnTestDirectory;
 using testing::OwnTestFile;
 
 constexpr double kLx = 30000, kLy = 20000;  // mm
-constexpr double kStiffness = 1.0;           // kN/mm per bearing
-constexpr double kMass = 0.4;                // kN s^2/mm (400 t)
-constexpr double kAcceleration = 0.1;        // g
+constexpr double kStiffness = 1.0;          // kN/mm per bearing
+constexpr double kMass = 0.4;               // kN s^2/mm (400 t)
+constexpr double kAcceleration = 0.1;       // g
 
 // 0.1 g along x reached by a half-cosine over 40 s, then held 40 s: the slab ends at rest.
 std::string WriteRamp() {
@@ -53,7 +54,8 @@ plan:
       positions: [[0, 0], [30000, 0], [0, 20000], [30000, 20000]]
       components: [{name: k, type: linear_spring, k: 1.0}, {name: c, type: dashpot, c: 0.443}]
 excitation:
-  ground_motion: {file: )" + record + R"(, units: g}
+  ground_motion: {file: )" +
+                           record + R"(, units: g}
 analysis: {dt: 0.01, free_vibration: 0}
 )";
   return model::LoadModelText(text, (OwnTestDirectory() / "slab.yaml").string());

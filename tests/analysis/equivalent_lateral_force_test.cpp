@@ -2,13 +2,14 @@
 // lead-rubber bearings: k_eff = N (Kd + Qd / D), E = 4 N Qd (D - Dy) with Dy = Qd / (Ku - Kd),
 // and the fixed point D = g S_M1 T / (4 pi^2 B) solved here by bisection on those formulas
 // alone, with B from Table 17.5-1 as the code prints it.
+#include "isolab/analysis/equivalent_lateral_force.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "isolab/analysis/equivalent_lateral_force.h"
 #include "isolab/model/model_file.h"
 #include "isolab/spectra/design_spectrum.h"
 
@@ -78,8 +79,7 @@ TEST(EquivalentLateralForce, DesignDisplacementIsTheFixedPointOfEq17_5_1) {
   EXPECT_NEAR(elf.period, 2 * kPi * std::sqrt(mass / k), 1e-6);
   EXPECT_NEAR(elf.base_shear, k * low, 1e-6 * k * low);
   // The demand balances: D = g S_M1 T / (4 pi^2 B) at the result's own T and beta.
-  EXPECT_NEAR(demand(elf.period, elf.at_design.damping), elf.displacement,
-              1e-9 * elf.displacement);
+  EXPECT_NEAR(demand(elf.period, elf.at_design.damping), elf.displacement, 1e-9 * elf.displacement);
 }
 
 // Eq. 17.5-3 by hand for models/design/five_story_lrb_plan.yaml: 16 equal bearings on a 4 x 4
@@ -91,8 +91,8 @@ TEST(EquivalentLateralForce, DesignDisplacementIsTheFixedPointOfEq17_5_1) {
 // 1 + 10 / 1.67 x 12 x 1 / 1300 = 1.0553; along y: y = 15 m, e = 0.6 + 0.05 x 30 = 2.1 m,
 // 1 + 15 / 1.67 x 12 x 2.1 / 1300 = 1.1741, which governs (above 1.15).
 TEST(EquivalentLateralForce, TotalDisplacementIsEq17_5_3OfThePlan) {
-  const model::ModelFile model =
-      model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) + "/models/design/five_story_lrb_plan.yaml");
+  const model::ModelFile model = model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                                                      "/models/design/five_story_lrb_plan.yaml");
   const IsolationSystem system(model);
   ElfResult elf;
   elf.displacement = 500.0;

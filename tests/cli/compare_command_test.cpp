@@ -118,8 +118,8 @@ TEST(CompareCommand, ARecordEntrysTargetIsScaledByTheStudysScales) {
                        << "variants: [{name: thm1}]\nrecords:\n"
                        << "  - {file: " << motions << "fwn_firm_seed1.at2, scale: {pga: 0.4 g}}\n"
                        << "scales: [0.5, 1]\n";
-  const Outcome run = RunIsolab("compare " + study.string() + " -q --runs none -o " +
-                                (folder / "out").string());
+  const Outcome run =
+      RunIsolab("compare " + study.string() + " -q --runs none -o " + (folder / "out").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto rows = CsvRows(folder / "out" / "summary.csv");
   const auto header = rows.front();
@@ -137,8 +137,9 @@ TEST(CompareCommand, ARecordEntrysTargetIsScaledByTheStudysScales) {
   std::ofstream(study) << "building: " << ISOLAB_SOURCE_DIR
                        << "/models/plan/five_story_table9_plan.yaml\n"
                        << "variants: [{name: thm1}]\nrecords:\n"
-                       << "  - {h1: {file: " << motions << "fwn_firm_seed1.at2}, h2: {file: "
-                       << motions << "h2_fwn_firm_seed3.at2, scale: {pga: 0.3 g}}}\n"
+                       << "  - {h1: {file: " << motions
+                       << "fwn_firm_seed1.at2}, h2: {file: " << motions
+                       << "h2_fwn_firm_seed3.at2, scale: {pga: 0.3 g}}}\n"
                        << "scales: [1]\n";
   const Outcome refused = RunIsolab("compare " + study.string() + " -q", true);
   EXPECT_EQ(refused.exit_code, 2);

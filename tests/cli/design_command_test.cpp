@@ -115,8 +115,8 @@ TEST(DesignCommand, RefusesBadInputWithItsPlace) {
       << outcome.output;
   EXPECT_FALSE(fs::exists(folder / "out" / "models")) << "a refused design wrote its models";
 
-  const std::string bad_limit = WriteDesign(
-      folder, "suite: {synthetic: {count: 3}}\n", "eccentricity: 0.05\ndrift_limit: 2\n");
+  const std::string bad_limit = WriteDesign(folder, "suite: {synthetic: {count: 3}}\n",
+                                            "eccentricity: 0.05\ndrift_limit: 2\n");
   const testing::Outcome bad = testing::RunIsolab("design " + bad_limit, true);
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("design.yaml:5:14: drift_limit: 2 (a story drift ratio in (0, 1)"),

@@ -74,9 +74,9 @@ TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
   EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
-// The testing factors of the tests' own cycles (identification/testing_factors.h), from a lead-rubber
-// bearing whose core heats (adiabatic): its Qd falls from the second cycle to the third, so
-// lambda_test brackets 1; the fitted model carries the modification entry to copy.
+// The testing factors of the tests' own cycles (identification/testing_factors.h), from a
+// lead-rubber bearing whose core heats (adiabatic): its Qd falls from the second cycle to the
+// third, so lambda_test brackets 1; the fitted model carries the modification entry to copy.
 TEST(FitCommand, ReportsTheTestingFactorsOfTheTestsCycles) {
   const auto model = TemporaryFile("heating_lrb.yaml");
   std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
@@ -84,9 +84,9 @@ TEST(FitCommand, ReportsTheTestingFactorsOfTheTestsCycles) {
                           "    - {name: lrb, type: lead_rubber, qd: 88.26, kd: 0.3391, ku: 3.391, "
                           "lead_diameter: 106, lead_height: 127, lead_heat_capacity: 1.456e-3}\n";
   const auto csv = TemporaryFile("heating_lrb.csv");
-  const auto cyclic = RunIsolab("cyclic " + model.string() +
-                                " -a 100,200 -T 2 -n 4 --steps-per-cycle 400 --test-data " +
-                                csv.string());
+  const auto cyclic =
+      RunIsolab("cyclic " + model.string() +
+                " -a 100,200 -T 2 -n 4 --steps-per-cycle 400 --test-data " + csv.string());
   ASSERT_EQ(cyclic.exit_code, 0) << cyclic.output;
   const auto fitted = TemporaryFile("heating_fitted.yaml");
   const auto json = Fit(csv.string(), fitted.string(), "");

@@ -33,7 +33,7 @@ CyclicTestData RigidPlastic(const std::vector<double>& strengths) {
     // The force of the motion that arrived at the sample (a slider's force jumps at a reversal).
     const double sign =
         k == 0 || u >= kAmplitude * std::sin(2.0 * std::numbers::pi * (k - 1) / kSteps) ? 1.0
-                                                                                     : -1.0;
+                                                                                        : -1.0;
     test.time.push_back(k * 1.0 / kSteps);
     test.displacement.push_back(u);
     test.force.push_back(kKd * u + strengths[c] * sign);
@@ -66,10 +66,9 @@ TEST(TestingFactors, AreTheCyclesSpreadAboutTheirMean) {
 TEST(TestingFactors, OfABilinearLoopAreItsClosedFormFromRest) {
   // A lead-rubber bearing without heating: Qd 50 kN, Kd 0.8, Ku 8 kN/mm, Dy = 50 / 7.2 mm.
   const std::vector<double> values = {50.0, 0.8, 8.0, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
-  const hysteresis::ParallelAssembly bearing({{"lrb", hysteresis::LawParameters::Make(
-                                                          hysteresis::LawType::kLeadRubber,
-                                                          hysteresis::ParameterForm::kMechanical,
-                                                          values)}});
+  const hysteresis::ParallelAssembly bearing(
+      {{"lrb", hysteresis::LawParameters::Make(hysteresis::LawType::kLeadRubber,
+                                               hysteresis::ParameterForm::kMechanical, values)}});
   hysteresis::CyclicProtocol protocol;
   protocol.amplitude = kAmplitude;
   protocol.cycles = 3;

@@ -56,9 +56,9 @@ const std::string kRecords = "suite:\n  records: [" + kGroundMotions + "fwn_firm
                              "elcentro_1940_ns.at2]\n";
 
 TEST_F(DesignFileTest, ReadsTheTargetTheSuiteAndTheChecks) {
-  const DesignFile design = LoadDesignFile(Write(
-      "model: building.yaml\ntarget: {asce7: {sms: 1.5 g, sm1: 8.826 m/s^2, tl: 6 s}}\n" +
-      kRecords + "  period_range: [0.8, 1.2]\ndrift_limit: 0.02\n"));
+  const DesignFile design = LoadDesignFile(
+      Write("model: building.yaml\ntarget: {asce7: {sms: 1.5 g, sm1: 8.826 m/s^2, tl: 6 s}}\n" +
+            kRecords + "  period_range: [0.8, 1.2]\ndrift_limit: 0.02\n"));
   const auto* asce = std::get_if<spectra::Asce7Spectrum>(&design.target);
   ASSERT_NE(asce, nullptr);
   EXPECT_DOUBLE_EQ(asce->sms, 1.5);
@@ -89,26 +89,28 @@ TEST_F(DesignFileTest, ReadsEurocode8AndSyntheticSuites) {
 
 TEST_F(DesignFileTest, RefusesWhatTheProcedureCannotDo) {
   const std::string head = "model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n";
-  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "eccentricity: 0.05\n")
-                , "design.yaml:5:15: eccentricity: 0.05: accidental eccentricity shifts "
-                      "floors in plan"));
-  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "  period_range: [1.1, 1.25]\n")
-                , "suite.period_range: [1.1, 1.25] (0 < lower <= 1 <= upper"));
+  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "eccentricity: 0.05\n"),
+                    "design.yaml:5:15: eccentricity: 0.05: accidental eccentricity shifts "
+                    "floors in plan"));
+  EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "  period_range: [1.1, 1.25]\n"),
+                    "suite.period_range: [1.1, 1.25] (0 < lower <= 1 <= upper"));
   EXPECT_TRUE(Holds(ErrorOf(head + "suite: {synthetic: {count: 2}}\n"),
                     "suite.synthetic.count: 2 (the response-history procedure needs at least 3"));
   EXPECT_TRUE(Holds(ErrorOf(head + "suite:\n  records: [" + kGroundMotions + "pulse_tp2.at2]\n"),
                     "suite.records: 1 (the response-history procedure needs at least 3"));
-  EXPECT_TRUE(Holds(ErrorOf(head + "suite: {period_range: [0.75, 1.25]}\n")
-                , "suite: give records (files or pairs) or synthetic"));
+  EXPECT_TRUE(Holds(ErrorOf(head + "suite: {period_range: [0.75, 1.25]}\n"),
+                    "suite: give records (files or pairs) or synthetic"));
   EXPECT_TRUE(Holds(ErrorOf(head + kRecords + "drift_limit: 1.5\n"), "drift_limit: 1.5 (a story"));
-  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: -1.5, sm1: 0.9}}\n" + kRecords)
-                , "target.asce7.sms: -1.5 g (must be > 0)"));
-  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {eurocode8: {agr: 0.3, ground: F}}\n" +
-                    kRecords)
-                , "target.eurocode8.ground: 'F' (A, B, C, D or E)"));
-  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}, file: t.csv}\n" +
-                    kRecords)
-                , "target: give one of asce7, eurocode8 or file"));
+  EXPECT_TRUE(
+      Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: -1.5, sm1: 0.9}}\n" + kRecords),
+            "target.asce7.sms: -1.5 g (must be > 0)"));
+  EXPECT_TRUE(Holds(
+      ErrorOf("model: building.yaml\ntarget: {eurocode8: {agr: 0.3, ground: F}}\n" + kRecords),
+      "target.eurocode8.ground: 'F' (A, B, C, D or E)"));
+  EXPECT_TRUE(
+      Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}, file: t.csv}\n" +
+                    kRecords),
+            "target: give one of asce7, eurocode8 or file"));
   EXPECT_TRUE(Holds(ErrorOf(head + "suite:\n  records: [" + kGroundMotions +
                             "pulse_tp2.at2, {file: " + kGroundMotions +
                             "fwn_firm_seed1.at2, scale: {pga: 0.4 g}}, " + kGroundMotions +
@@ -118,8 +120,8 @@ TEST_F(DesignFileTest, RefusesWhatTheProcedureCannotDo) {
                                              "structure: {type: sdof, mass: 1}\n"
                                              "isolation: {components: [{name: k, type: "
                                              "linear_spring, k: 1}]}\n";
-  EXPECT_TRUE(Holds(ErrorOf("model: bare.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n" + kRecords)
-                , "gives no property modification factors"));
+  EXPECT_TRUE(Holds(ErrorOf("model: bare.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n" + kRecords),
+                    "gives no property modification factors"));
 }
 
 }  // namespace

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "isolab/core/errors.h"
-#include "refused_key.h"
 #include "isolab/io/record.h"
 #include "isolab/spectra/rotd_spectrum.h"
+#include "refused_key.h"
 
 namespace isolab::spectra {
 namespace {

@@ -172,8 +172,8 @@ TEST(Design, ValuesAreTheMaximaOfIndependentRunsBelowSevenRecords) {
   EXPECT_FALSE(d.outcome.mean_of_suite);
   ExpectIndependentRuns(d.outcome);
   WriteDesignFiles(d.file, d.outcome, (d.directory / "out").string(), false);
-  for (const char* name : {"design.md", "design_values.csv", "design_runs.csv",
-                           "design_spectra.csv"}) {
+  for (const char* name :
+       {"design.md", "design_values.csv", "design_runs.csv", "design_spectra.csv"}) {
     EXPECT_TRUE(fs::is_regular_file(d.directory / "out" / name)) << name;
   }
 }

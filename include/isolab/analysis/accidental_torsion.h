@@ -17,8 +17,8 @@
 namespace isolab::analysis {
 
 struct EccentricityCase {
-  std::string name;         // "ex+ey+", "ex+ey-", "ex-ey+", "ex-ey-"
-  hysteresis::Vec2 shift;   // of every centre of mass (length)
+  std::string name;        // "ex+ey+", "ex+ey-", "ex-ey+", "ex-ey-"
+  hysteresis::Vec2 shift;  // of every centre of mass (length)
 };
 
 // The four cases (+-ratio L_x, +-ratio L_y) of a plan model's footprint L_x x L_y. Throws

@@ -53,13 +53,13 @@ struct DesignFile {
   std::string model_path;  // as found (relative to the working directory or absolute)
   ModelFile model;
   spectra::TargetSpectrum target;
-  std::vector<StudyRecord> records;        // empty when synthetic
+  std::vector<StudyRecord> records;  // empty when synthetic
   std::optional<SyntheticSuite> synthetic;
-  double period_range[2] = {0.75, 1.25};   // factors on T_M upper, T_M lower
-  double eccentricity = 0.05;              // plan; 0 in one direction
+  double period_range[2] = {0.75, 1.25};  // factors on T_M upper, T_M lower
+  double eccentricity = 0.05;             // plan; 0 in one direction
   double drift_limit = 0.015;
-  std::string output_directory;            // empty: not given
-  std::string suite_key;                   // "design.yaml:7:3: suite", for messages on the suite
+  std::string output_directory;  // empty: not given
+  std::string suite_key;         // "design.yaml:7:3: suite", for messages on the suite
 };
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, a model that does

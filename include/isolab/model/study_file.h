@@ -35,10 +35,10 @@
 //   records:
 //     - {h1: {file: a_h1.at2, scale: 1.0}, h2: {file: a_h2.at2}, angle: 30, name: a_at30}
 // (units, dt and scale per component as there, a target on h1 only; angle in degrees from x to
-// H1, default 0; name default: h1's file stem). Both files are read when the study loads: a pair whose steps or
-// lengths differ is refused then, as is a pair in a study of a building in one direction. Each run
-// is what `isolab run` does on the variant's model with the record in its excitation, each
-// component's scale times the study's.
+// H1, default 0; name default: h1's file stem). Both files are read when the study loads: a pair
+// whose steps or lengths differ is refused then, as is a pair in a study of a building in one
+// direction. Each run is what `isolab run` does on the variant's model with the record in its
+// excitation, each component's scale times the study's.
 //
 // Every error is an InputError "file:line:col: key path: what (allowed)".
 #pragma once

@@ -53,7 +53,7 @@ struct DesignBound {
 
 struct DesignRecord {
   std::string name;
-  std::vector<std::string> files;  // H1 (and H2)
+  std::vector<std::string> files;           // H1 (and H2)
   double shape_factor = 1.0, factor = 1.0;  // spectra/suite_scaling.h's s_i and f_i
   double misfit = -1.0;  // a synthetic pair's max |RotD100 / target - 1| as matched; -1: given
   std::vector<double> spectrum;  // unscaled RotD100 (or 5 % Sa) at display_periods (g)
@@ -87,7 +87,7 @@ struct DesignStatistic {
 };
 
 struct DesignOutcome {
-  std::vector<DesignBound> bounds;                          // nominal, upper, lower
+  std::vector<DesignBound> bounds;                         // nominal, upper, lower
   std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
   std::vector<DesignRecord> records;
   spectra::SuiteScaling scaling;
@@ -106,7 +106,7 @@ struct DesignOutcome {
   // [bound][quantity]
   std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
   std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value
-  std::size_t figure_record = 0;  // the record of the histories kept for figures
+  std::size_t figure_record = 0;           // the record of the histories kept for figures
   std::vector<std::string> history_files;  // per bound, relative to the output folder
   // Machine-dependent, for progress only: the suite (matching synthetic pairs, spectra), the
   // runs, and everything.
