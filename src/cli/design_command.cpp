@@ -22,7 +22,7 @@
 namespace isolab::cli {
 namespace {
 
-constexpr const char* kPlotScript = "plot_design.py";
+constexpr const char* kDesignPlotScript = "plot_design.py";
 
 }  // namespace
 
@@ -51,7 +51,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
                      "isolab compare");
   }
   const model::DesignFile design = model::LoadDesignFile(options.design);
-  if (options.figures) CheckPlotScript(kPlotScript);  // before the runs, not after
+  if (options.figures) CheckPlotScript(kDesignPlotScript);  // before the runs, not after
   const std::string folder = study::PrepareDesignFolder(options.output, design, "--output");
   const int threads = options.jobs > 0
                           ? options.jobs
@@ -72,7 +72,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   study::WriteDesignFiles(design, outcome, folder, options.figures);
   if (options.figures) {
     try {
-      RunPlotScript(kPlotScript, {folder}, options.quiet);
+      RunPlotScript(kDesignPlotScript, {folder}, options.quiet);
     } catch (const std::runtime_error& error) {
       fmt::print(stderr, "isolab design: figures: {}\n", error.what());
       return 1;

@@ -26,7 +26,7 @@ constexpr double kDamping = 0.05;
 constexpr double kCyclesOfLongestPeriod = 4.0;  // a synthetic record holds 4 of its longest period
 constexpr double kDisplayLow = 0.05;  // s: the report's spectra from here to twice the range's top
 constexpr int kDisplayPoints = 80;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
 
 constexpr DesignQuantityInfo kDesignQuantities[] = {
     {DesignQuantity::kDisplacement, "D_M", "maximum displacement D_M (centre of mass)"},
@@ -164,7 +164,7 @@ std::vector<model::StudyRecord> SyntheticRecords(
 
 // A quantity a model does not have (a drift without story heights) is NaN for every record, and
 // stays NaN: never 0.
-DesignStatistic Statistic(std::vector<double> per_record, bool mean_of_suite) {
+DesignStatistic SuiteStatistic(std::vector<double> per_record, bool mean_of_suite) {
   DesignStatistic s;
   s.per_record = std::move(per_record);
   double sum = 0.0;
@@ -173,7 +173,7 @@ DesignStatistic Statistic(std::vector<double> per_record, bool mean_of_suite) {
     sum += v;
     s.max = std::max(s.max, v);
   }
-  if (std::isnan(sum)) s.max = kNaN;
+  if (std::isnan(sum)) s.max = kAbsent;
   s.mean = sum / static_cast<double>(s.per_record.size());
   s.value = mean_of_suite ? s.mean : s.max;
   return s;
@@ -382,7 +382,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     std::array<DesignStatistic, kDesignQuantityCount> values;
     for (const DesignQuantityInfo& info : kDesignQuantities) {
       const std::size_t q = static_cast<std::size_t>(SourceOf(info.quantity));
-      std::vector<double> per_record(R, kNaN);
+      std::vector<double> per_record(R, kAbsent);
       for (std::size_t r = 0; r < R; ++r) {
         // D_M is the base's displacement without eccentricity; the others the envelope.
         const std::size_t cases = info.quantity == DesignQuantity::kDisplacement ? 1 : C;
@@ -392,7 +392,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
             per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
         }
       }
-      values[static_cast<std::size_t>(info.quantity)] = Statistic(per_record, out.mean_of_suite);
+      values[static_cast<std::size_t>(info.quantity)] =
+          SuiteStatistic(per_record, out.mean_of_suite);
     }
     out.values.push_back(values);
   }

@@ -60,7 +60,7 @@ Checks CheckDesign(const model::DesignFile& design, const DesignOutcome& o) {
   return c;
 }
 
-std::string Statistic(const DesignOutcome& o) {
+std::string StatisticText(const DesignOutcome& o) {
   return o.mean_of_suite ? fmt::format("mean of {} records", o.records.size())
                          : fmt::format("maximum of {} records (fewer than {}: no mean)",
                                        o.records.size(), kMinimumRecordsForMean);
@@ -206,7 +206,7 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                    return names;
                  }(),
                  ", "),
-             o.records.size(), o.runs.size(), Statistic(o));
+             o.records.size(), o.runs.size(), StatisticText(o));
   fmt::print(md, "| quantity |");
   for (const DesignBound& b : o.bounds) fmt::print(md, " {} |", b.bound);
   fmt::print(md, " governing |\n|---|");
@@ -272,7 +272,7 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
   const UnitSystem& u = design.model.units;
   const Checks c = CheckDesign(design, o);
   std::ostringstream out;
-  fmt::print(out, "design values ({}):\n", Statistic(o));
+  fmt::print(out, "design values ({}):\n", StatisticText(o));
   fmt::print(out, "{:<54}", "");
   for (const DesignBound& b : o.bounds) fmt::print(out, " {:>12}", b.bound);
   fmt::print(out, "  governing\n");
