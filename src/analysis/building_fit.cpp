@@ -111,6 +111,19 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
     if (motion.measured.time.size() < 2) {
       throw InputError({motion.name}, "needs at least two samples");
     }
+    for (const BuildingChannel& channel : channels) {
+      const std::vector<Signal>& kind = channel.kind == BuildingChannel::Kind::kDisplacement
+                                            ? motion.measured.displacement
+                                            : motion.measured.acceleration;
+      const std::size_t l = std::size_t(channel.level - 1);
+      if (l >= kind.size() || kind[l].size() != motion.measured.time.size()) {
+        throw InputError({motion.name},
+                         fmt::format("channel {} is not measured in this motion", channel.Name()));
+      }
+    }
+  }
+  if (spec.substeps < 1) {
+    throw InputError({model.path}, fmt::format("substeps {}: expected >= 1", spec.substeps));
   }
 
   Coordinates coordinates;
@@ -156,7 +169,7 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   // Per channel the weighted residual band(simulated - measured) / |measured|.
   const auto residuals = [&](const model::ModelFile& trial) {
     const ChannelHistories simulated =
-        SimulateChannels(trial, motions, channels, spec.sequential, spec.pause);
+        SimulateChannels(trial, motions, channels, spec.sequential, spec.pause, spec.substeps);
     std::vector<Signal> out;
     std::size_t i = 0;
     for (std::size_t m = 0; m < motions.size(); ++m) {

@@ -7,24 +7,26 @@
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
+#include "isolab/model/build_structure.h"
 #include "isolab/structure/layout.h"
 
 namespace isolab::analysis {
 namespace {
 
-// Collects the channels' values at every step of the grid.
+// Collects the channels' values at every `every`-th step of the grid: at the measured samples.
 class ChannelRecorder final : public integrators::ResponseObserver {
  public:
   ChannelRecorder(const structure::Layout& layout, const std::vector<BuildingChannel>& channels,
-                  std::size_t steps)
-      : histories_(channels.size()) {
+                  std::size_t samples, int every)
+      : histories_(channels.size()), every_(every) {
     for (const BuildingChannel& channel : channels) {
       dofs_.push_back(layout.levels[std::size_t(channel.level - 1)].dofs[structure::kX]);
       displacement_.push_back(channel.kind == BuildingChannel::Kind::kDisplacement);
     }
-    for (Signal& history : histories_) history.reserve(steps);
+    for (Signal& history : histories_) history.reserve(samples);
   }
   void Observe(const integrators::ResponseRow& row) override {
+    if (row.step % every_ != 0) return;
     for (std::size_t c = 0; c < dofs_.size(); ++c) {
       histories_[c].push_back(displacement_[c] ? row.displacement[dofs_[c]]
                                                : row.absolute_acceleration[dofs_[c]]);
@@ -36,29 +38,51 @@ class ChannelRecorder final : public integrators::ResponseObserver {
   std::vector<Signal> histories_;
   std::vector<int> dofs_;
   std::vector<bool> displacement_;
+  int every_ = 1;
 };
 
-// The measured table acceleration (sampled at `dt`) as the run's record, from rest, with no free
-// vibration after it.
-RunOverrides TableMotion(const model::ModelFile& model, const Signal& acceleration, double dt) {
+// What drives a motion's run, sampled at `dt`: the table's acceleration as the run's record, or
+// (a force-driven test) the force on level 1 with the ground still; from rest, with no free
+// vibration after it, integrated in `substeps` steps a sample.
+struct Drive {
+  const Signal& input;
+  bool force = false;
+  double dt = 0.0;
+  int substeps = 1;
+};
+
+Problem PrepareDriven(model::ModelFile model, const Drive& drive) {
   RunOverrides overrides;
-  overrides.records.push_back(TableRecord(model.units, acceleration, dt));
-  overrides.dt = dt;
+  if (drive.force) {
+    const structure::LaidOutStructure built = model::BuildStructure(model);
+    model.excitation = {};
+    model.excitation.forces.push_back(
+        {built.layout.levels.front().dofs[structure::kX], drive.dt, drive.input});
+  } else {
+    overrides.records.push_back(TableRecord(model.units, drive.input, drive.dt));
+  }
+  overrides.dt = drive.dt / drive.substeps;
   overrides.free_vibration = model::FreeVibration{false, 0.0};
-  return overrides;
+  return Prepare(model, overrides);
 }
 
-std::vector<Signal> Run(const model::ModelFile& model, const Signal& acceleration, double dt,
+std::vector<Signal> Run(const model::ModelFile& model, const Drive& drive,
                         const std::vector<BuildingChannel>& channels) {
-  const Problem problem = Prepare(model, TableMotion(model, acceleration, dt));
-  ChannelRecorder recorder(problem.layout, channels, acceleration.size() + 1);
+  const Problem problem = PrepareDriven(model, drive);
+  ChannelRecorder recorder(problem.layout, channels, drive.input.size() + 1, drive.substeps);
   integrators::ResponseObserver* const also[] = {&recorder};
   SolveOptions options;
   options.analysis = model.analysis;
-  options.analysis.dt = dt;
+  options.analysis.dt = problem.grid.dt;
   const Summary summary = Solve(options, problem, also);
   if (!summary.ok()) throw std::runtime_error("the run stopped: " + summary.run.message);
   return std::move(recorder.histories());
+}
+
+// The history that drives a motion, and whether it is a force (all motions of a fit must agree).
+const Signal& Input(const BuildingMotion& motion) {
+  return motion.measured.applied_force.empty() ? motion.measured.table_acceleration
+                                               : motion.measured.applied_force;
 }
 
 }  // namespace
@@ -93,12 +117,21 @@ BuildingChannel ParseChannel(const std::string& text, const std::string& given_b
 ChannelHistories SimulateChannels(const model::ModelFile& model,
                                   const std::vector<BuildingMotion>& motions,
                                   const std::vector<BuildingChannel>& channels, bool sequential,
-                                  double pause) {
+                                  double pause, int substeps) {
+  const bool force = !motions.front().measured.applied_force.empty();
+  for (const BuildingMotion& motion : motions) {
+    if (motion.measured.applied_force.empty() != force) continue;
+    throw InputError({motion.name},
+                     fmt::format("driven by {}, {} by {}: one fit's motions are all "
+                                 "table motions or all force-driven tests",
+                                 force ? "the table" : "a force", motions.front().name,
+                                 force ? "a force" : "the table"));
+  }
   ChannelHistories out;
   if (!sequential) {
     for (const BuildingMotion& motion : motions) {
       std::vector<Signal> run =
-          Run(model, motion.measured.table_acceleration, SampleStep(motion.measured), channels);
+          Run(model, {Input(motion), force, SampleStep(motion.measured), substeps}, channels);
       for (Signal& history : run) history.resize(motion.measured.time.size());
       out.push_back(std::move(run));
     }
@@ -107,11 +140,11 @@ ChannelHistories SimulateChannels(const model::ModelFile& model,
   // One specimen: the motions one after the other with a pause of rest between, in one run.
   const double dt = SampleStep(motions.front().measured);
   if (pause <= 0.0) {
-    const Signal& first = motions.front().measured.table_acceleration;
-    pause = 5.0 * Prepare(model, TableMotion(model, first, dt)).summary.LongestPeriod();
+    pause =
+        5.0 * PrepareDriven(model, {Input(motions.front()), force, dt, 1}).summary.LongestPeriod();
   }
   const std::size_t rest = std::size_t(std::ceil(pause / dt));
-  Signal table;
+  Signal input;
   std::vector<std::size_t> starts;
   for (const BuildingMotion& motion : motions) {
     const double step = SampleStep(motion.measured);
@@ -121,12 +154,11 @@ ChannelHistories SimulateChannels(const model::ModelFile& model,
                                    "as one history need one step",
                                    step, motions.front().name, dt));
     }
-    if (!starts.empty()) table.resize(table.size() + rest, 0.0);
-    starts.push_back(table.size());
-    const Signal& a = motion.measured.table_acceleration;
-    table.insert(table.end(), a.begin(), a.end());
+    if (!starts.empty()) input.resize(input.size() + rest, 0.0);
+    starts.push_back(input.size());
+    input.insert(input.end(), Input(motion).begin(), Input(motion).end());
   }
-  const std::vector<Signal> run = Run(model, table, dt, channels);
+  const std::vector<Signal> run = Run(model, {input, force, dt, substeps}, channels);
   for (std::size_t m = 0; m < motions.size(); ++m) {
     std::vector<Signal>& signals = out.emplace_back();
     const std::size_t n = motions[m].measured.time.size();

@@ -38,10 +38,11 @@ Signal AtTimes(const integrators::ResponseHistory& history, const integrators::R
 
 std::vector<double> LevelMasses(const model::ModelFile& model) {
   const structure::LaidOutStructure built = model::BuildStructure(model);
-  if (!built.layout.isolated() || built.layout.directions != 1 || built.layout.stories.empty()) {
+  if (!built.layout.isolated() || built.layout.directions != 1) {
     throw InputError({model.path},
                      "the model needs a building in one direction on isolators (a shear_building "
-                     "structure with a base_mass, the isolation slab, and its stories' masses)");
+                     "structure with a base_mass, the isolation slab, and its stories' masses) or "
+                     "an sdof");
   }
   std::vector<double> masses;
   for (const structure::Level& level : built.layout.levels) {

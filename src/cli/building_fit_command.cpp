@@ -10,8 +10,10 @@
 
 #include "building_measurement.h"
 #include "isolab/analysis/building_fit.h"
+#include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
+#include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/building_fit_spec_file.h"
 #include "isolab/model/fitted_building_file.h"
@@ -26,24 +28,70 @@ std::pair<double, double> Interval(const analysis::FittedParameter& p) {
                : std::pair{p.value - half, p.value + half};
 }
 
-void RefuseCyclicOptions(const FitOptions& options) {
-  const auto refuse = [](const char* option) {
-    throw InputError({"command line"},
-                     fmt::format("{} applies to cyclic tests, not to --building (shake-table "
-                                 "motions carry their units in the column names)",
-                                 option));
+// Options that belong to cyclic-test fits; a force-driven building fit reads cyclic-test files,
+// so it takes their units.
+void RefuseCyclicOptions(const FitOptions& options, bool force_driven) {
+  const auto refuse = [](const char* option, const char* why) {
+    throw InputError({"command line"}, fmt::format("{} {}", option, why));
   };
-  if (!options.cycles.empty()) refuse("--cycles");
-  if (!options.force_unit.empty()) refuse("--force-unit");
-  if (!options.length_unit.empty()) refuse("--length-unit");
-  if (options.force) refuse("--force");
+  const char* const units =
+      "applies to cyclic tests and force-driven fits (input: force), not to "
+      "shake-table motions (they carry their units in the column names)";
+  if (!options.cycles.empty()) refuse("--cycles", "applies to cyclic tests, not to --building");
+  if (options.force) refuse("--force", "applies to cyclic tests, not to --building");
+  if (!force_driven && !options.force_unit.empty()) refuse("--force-unit", units);
+  if (!force_driven && !options.length_unit.empty()) refuse("--length-unit", units);
+  if (force_driven && !options.offsets.empty()) {
+    refuse("--offsets", "applies to shake-table motions, not to force-driven tests (input: force)");
+  }
+}
+
+// Force-driven tests (cyclic-test files: the force applied to level 1 and its displacement), each
+// a motion of the fit, sampled at one step. Throws InputError.
+std::vector<analysis::BuildingMotion> ReadForceDriven(const FitOptions& options,
+                                                      const model::ModelFile& model,
+                                                      bool* one_specimen) {
+  io::CyclicTestSet set =
+      io::ReadCyclicTests(options.data,
+                          {options.force_unit.empty() ? "kN" : options.force_unit,
+                           options.length_unit.empty() ? "mm" : options.length_unit},
+                          model.units);
+  analysis::RequireUnits(set, !options.force_unit.empty() && !options.length_unit.empty(),
+                         "--force-unit and --length-unit");
+  analysis::RequireFiniteSquares(set);
+  *one_specimen = io::OneSpecimen(options.specimen, set.one_specimen);
+  const double seconds = model.units.SiFactor(dimension::kTime);
+  std::vector<analysis::BuildingMotion> motions;
+  for (std::size_t t = 0; t < set.tests.size(); ++t) {
+    identification::CyclicTestData& test = set.tests[t];
+    analysis::BuildingMotion& motion = motions.emplace_back();
+    motion.name = test.name;
+    analysis::BuildingMeasurements& measured = motion.measured;
+    for (const double time : test.time)
+      measured.time.push_back((time - test.time.front()) / seconds);
+    const double dt = analysis::SampleStep(measured);
+    for (std::size_t k = 1; k < measured.time.size(); ++k) {
+      const double step = measured.time[k] - measured.time[k - 1];
+      if (std::abs(step - dt) > 0.01 * dt) {
+        throw InputError({set.source[t]},
+                         fmt::format("test {}: sample {} comes {:g} s after the previous one, "
+                                     "against {:g} s on average: a force-driven test must be "
+                                     "sampled at one step",
+                                     test.name, k, step * seconds, dt * seconds));
+      }
+    }
+    measured.applied_force = std::move(test.force);
+    measured.displacement = {std::move(test.displacement)};
+    measured.acceleration = {{}};
+  }
+  return motions;
 }
 
 }  // namespace
 
 void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
-  RefuseCyclicOptions(options);
   const model::BuildingFitSpecFile file = model::LoadBuildingFitSpec(options.building);
+  RefuseCyclicOptions(options, file.force_driven);
   const model::ModelFile model = model::LoadModelFile(file.model);
   const std::string output =
       !options.output.empty()
@@ -65,11 +113,18 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   spec.band_low = file.band_low;
   spec.band_high = file.band_high;
   spec.pause = file.pause;
+  spec.substeps = file.substeps;
   spec.sequential = options.specimen == "sequential";
 
   const std::size_t levels = analysis::LevelMasses(model).size();
   std::vector<analysis::BuildingMotion> motions;
-  for (const std::string& data : options.data) {
+  if (file.force_driven) {
+    motions = ReadForceDriven(options, model, &spec.sequential);
+    // What a force-driven test measures: the displacement where the force acts.
+    if (spec.channels.empty())
+      spec.channels.push_back({analysis::BuildingChannel::Kind::kDisplacement, 1});
+  }
+  for (const std::string& data : file.force_driven ? std::vector<std::string>{} : options.data) {
     ShakeTableOptions read;
     read.data = data;
     read.model = file.model;

@@ -12,11 +12,23 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
   const YamlReader reader(path);
   const YAML::Node root = reader.LoadFile();
   reader.RequireMap(root, "");
-  reader.CheckKeys(root, "", {"description", "model", "parameters", "channels", "band", "pause"});
+  reader.CheckKeys(
+      root, "",
+      {"description", "model", "input", "parameters", "channels", "band", "pause", "substeps"});
   BuildingFitSpecFile spec;
   spec.path = path;
   const std::string model = reader.ReadString(reader.Require(root, "", "model"), "model");
   spec.model = (std::filesystem::path(path).parent_path() / model).string();
+  if (const YAML::Node input = root["input"]) {
+    const std::string word = reader.ReadString(input, "input");
+    if (word != "table" && word != "force") {
+      reader.Fail(input, "input",
+                  fmt::format("'{}': expected table (shake-table motions) or force (force-driven "
+                              "tests: time, displacement and force)",
+                              word));
+    }
+    spec.force_driven = word == "force";
+  }
   const YAML::Node parameters = reader.Require(root, "", "parameters");
   reader.RequireSequence(parameters, "parameters");
   if (parameters.size() == 0) reader.Fail(parameters, "parameters", "expected at least one");
@@ -65,6 +77,10 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
   if (const YAML::Node pause = root["pause"]) {
     spec.pause = reader.ReadNumber(pause, "pause");
     if (!(spec.pause > 0.0)) reader.Fail(pause, "pause", "must be > 0");
+  }
+  if (const YAML::Node substeps = root["substeps"]) {
+    spec.substeps = reader.ReadInteger(substeps, "substeps");
+    if (spec.substeps < 1) reader.Fail(substeps, "substeps", "must be >= 1");
   }
   return spec;
 }

@@ -355,4 +355,76 @@ TEST(FitCommand, BadSpecificationsAreLocatedBeforeTheFit) {
   }
 }
 
+// A force-driven test fitted through the command (spec `input: force`): the Bouc-Wen benchmark's
+// sine sweep (bundled) as a cyclic-test file, its spring and dashpot started off, come back at
+// the benchmark's published values (k = 5e4 N/m, c = 10 N s/m); what does not apply is refused.
+TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
+  std::ifstream sweep(std::string(ISOLAB_TEST_DATA_DIR) +
+                      "/data/boucwen/sinesweep_first_30000.csv");
+  const auto data = TemporaryFile("sweep.csv");
+  std::ofstream out(data);
+  out << "# units: force N, length m\ntest,time,displacement,force\n";
+  std::string line;
+  for (int k = 0; k < 1500 && std::getline(sweep, line);) {
+    if (line.empty() || line[0] == '#' || line.find("u_N") != std::string::npos) continue;
+    const auto comma = line.find(',');
+    out << "sweep," << k / 750.0 << "," << line.substr(comma + 1) << "," << line.substr(0, comma)
+        << "\n";
+    ++k;
+  }
+  out.close();
+  std::ofstream(TemporaryFile("boucwen.yaml"))
+      << "units: {force: N, length: m, time: s}\nstructure: {type: sdof, mass: 2}\n"
+         "isolation:\n  components:\n    - {name: k, type: linear_spring, k: 5.0e4}\n"
+         "    - {name: z, type: bouc_wen, alpha: 5.0e4, beta: 1.0e3, gamma: 0.8, delta: -1.1, "
+         "nu: 1}\n    - {name: c, type: dashpot, c: 10}\n";
+  const auto spec = [](const std::string& extra, const std::string& substeps = "4") {
+    const auto path = TemporaryFile("force_spec.yaml");
+    std::ofstream(path) << "model: boucwen.yaml\ninput: force\nsubsteps: " << substeps
+                        << "\nparameters:\n"
+                           "  - {name: isolation.k.k, start: 3.5e4}\n"
+                           "  - {name: isolation.c.c, start: 15}\n"
+                        << extra;
+    return path.string();
+  };
+  const auto fitted = TemporaryFile("force.fitted.yaml");
+  const auto run = RunIsolab("fit " + data.string() + " --building " + spec("") +
+                             " --budget 300 --json -q -o " + fitted.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto json = nlohmann::json::parse(run.output);
+  EXPECT_NEAR(json["parameters"][0]["value"].get<double>() / 5e4, 1.0, 0.01);
+  EXPECT_NEAR(json["parameters"][1]["value"].get<double>() / 10.0, 1.0, 0.1);
+  EXPECT_EQ(json["channels"][0]["channel"], "d1");
+  EXPECT_LT(json["channels"][0]["nrmse"].get<double>(), 0.005);
+  EXPECT_EQ(isolab::model::LoadModelFile(fitted.string()).identified_range->data,
+            std::vector<std::string>{"sweep"});
+
+  struct Case {
+    std::string extra, options, message, substeps = "4";
+  };
+  const Case cases[] = {
+      {"channels: [a1]\n", "", "channel a1 is not measured"},
+      {"", "--offsets pre-event", "--offsets applies to shake-table motions"},
+      {"", "--cycles 2", "--cycles applies to cyclic tests"},
+      {"", "", "force_spec.yaml:3:11: substeps: must be >= 1", "0"},
+  };
+  for (const Case& c : cases) {
+    const auto refused = TemporaryFile("refused.yaml");
+    const auto bad = RunIsolab("fit " + data.string() + " --building " + spec(c.extra, c.substeps) +
+                                   " --budget 300 -q -o " + refused.string() + " " + c.options,
+                               true);
+    EXPECT_EQ(bad.exit_code, 2) << c.message << ": " << bad.output;
+    EXPECT_NE(bad.output.find(c.message), std::string::npos) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(refused)) << c.message;
+  }
+  const auto shaker = TemporaryFile("shaker_spec.yaml");
+  std::ofstream(shaker) << "model: boucwen.yaml\ninput: shaker\nparameters: [isolation.k.k]\n";
+  const auto word =
+      RunIsolab("fit " + data.string() + " --building " + shaker.string() + " -q", true);
+  EXPECT_EQ(word.exit_code, 2);
+  EXPECT_NE(word.output.find("shaker_spec.yaml:2:8: input: 'shaker': expected table"),
+            std::string::npos)
+      << word.output;
+}
+
 }  // namespace

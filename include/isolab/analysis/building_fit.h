@@ -2,6 +2,8 @@
 // layer's parameters together with the superstructure's (story stiffnesses, modal damping, how the
 // mass is distributed; building_parameters.h names them), found by simulating the model under
 // each measured table motion and comparing the floor responses it predicts with those measured.
+// The same for a model driven by a measured force on its lowest mass (an SDOF under a shaker, the
+// Bouc-Wen benchmark's form), compared with the displacement measured there.
 //
 // The objective is the mean over the fitted channels (each motion's displacements relative to the
 // table and absolute accelerations, any subset) of each channel's NRMSE^2, so every channel
@@ -46,6 +48,7 @@ struct BuildingFitSpec {
   std::optional<double> band_low, band_high;  // (1/time) the band the residual is read in
   bool sequential = false;                    // the motions are one specimen, in the order given
   double pause = 0.0;  // (time) of rest between sequential motions; 0: 5 x longest period
+  int substeps = 1;    // integration steps per measured sample (rate laws at a coarse sampling)
 };
 
 struct FittedParameter {
@@ -83,8 +86,8 @@ struct BuildingFitResult {
   double seconds = 0.0;
 };
 
-// Throws InputError for a spec that names what the model lacks, a channel beyond the levels,
-// motions without samples, and FitOptions::Validate's InvalidParameter.
+// Throws InputError for a spec that names what the model lacks, a channel beyond the levels or
+// not measured in a motion, motions without samples, and FitOptions::Validate's InvalidParameter.
 BuildingFitResult FitBuilding(const model::ModelFile& model,
                               const std::vector<BuildingMotion>& motions,
                               const BuildingFitSpec& spec,

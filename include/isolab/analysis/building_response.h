@@ -31,12 +31,14 @@ BuildingChannel ParseChannel(const std::string& text, const std::string& given_b
 using ChannelHistories = std::vector<std::vector<Signal>>;
 
 // Runs `model` under every motion (one specimen when `sequential`, with `pause` of rest between;
-// 0: 5 x the isolated building's longest period). Throws InputError for a model or motions it
-// cannot run (steps that differ between sequential motions), std::runtime_error for a run that
-// stops early.
+// 0: 5 x the isolated building's longest period), driven by the table's acceleration or, for
+// force-driven tests, by the force on level 1, integrated in `substeps` steps per sample (the
+// input linear between samples). Throws InputError for a model or motions it cannot run (steps
+// that differ between sequential motions, table motions beside force-driven tests),
+// std::runtime_error for a run that stops early.
 ChannelHistories SimulateChannels(const model::ModelFile& model,
                                   const std::vector<BuildingMotion>& motions,
                                   const std::vector<BuildingChannel>& channels, bool sequential,
-                                  double pause);
+                                  double pause, int substeps = 1);
 
 }  // namespace isolab::analysis

@@ -17,14 +17,17 @@ namespace isolab::analysis {
 using Signal = std::vector<double>;
 
 struct BuildingMeasurements {
-  Signal time;                       // (the model's time unit), from the first sample
-  Signal table_acceleration;         // the table's absolute acceleration
+  Signal time;                // (the model's time unit), from the first sample
+  Signal table_acceleration;  // the table's absolute acceleration
+  // A force-driven test instead (the Bouc-Wen benchmark's form): the force applied to level 1,
+  // the ground still (table_acceleration empty), so displacements are relative to a fixed frame.
+  Signal applied_force;
   std::vector<Signal> acceleration;  // each level's absolute acceleration
   std::vector<Signal> displacement;  // each level's displacement relative to the table
 };
 
-// Each level's mass, bottom to roof, of a model standing on isolators in one direction. Throws
-// InputError (naming the model) for any other.
+// Each level's mass, bottom to roof, of a model standing on isolators in one direction (an sdof:
+// its one mass). Throws InputError (naming the model) for any other.
 std::vector<double> LevelMasses(const model::ModelFile& model);
 
 // The measurements' sampling step (time): their span over the intervals.

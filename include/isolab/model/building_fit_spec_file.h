@@ -2,12 +2,15 @@
 // from, the parameters it fits (analysis/building_parameters.h names them), the channels it
 // compares and the band it reads them in.
 //   model: bncs.yaml                 # relative to this file
+//   input: table                     # table: shake-table motions; force: force-driven tests
+//                                    # (cyclic-test files: time, displacement, force on level 1)
 //   parameters:
 //     - isolation.isolators.k1       # a name alone: the default range (a third to three times)
 //     - {name: stories.stiffness, range: [50, 300], start: 117}   # in the model's units
 //   channels: [d1, a6]               # default: every level's displacement and acceleration
 //   band: [0.1, 10]                  # (1/time of the model) default: the whole record
 //   pause: 60                        # (time) of rest between one specimen's motions
+//   substeps: 20                     # integration steps per sample (default 1)
 #pragma once
 
 #include <optional>
@@ -29,7 +32,9 @@ struct BuildingFitSpecFile {
   std::vector<BuildingFitParameterEntry> parameters;
   std::vector<std::string> channels;
   std::optional<double> band_low{}, band_high{};
-  double pause = 0.0;  // 0: not given
+  bool force_driven = false;  // input: force
+  double pause = 0.0;         // 0: not given
+  int substeps = 1;
 };
 
 // Throws InputError with file:line:column for anything malformed.
