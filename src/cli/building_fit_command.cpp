@@ -8,14 +8,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "building_measurement.h"
+#include "building_fit_inputs.h"
 #include "isolab/analysis/building_fit.h"
-#include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
-#include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/output_check.h"
-#include "isolab/model/building_fit_spec_file.h"
 #include "isolab/model/fitted_building_file.h"
 
 namespace isolab::cli {
@@ -28,117 +25,32 @@ std::pair<double, double> Interval(const analysis::FittedParameter& p) {
                : std::pair{p.value - half, p.value + half};
 }
 
-// Options that belong to cyclic-test fits; a force-driven building fit reads cyclic-test files,
-// so it takes their units.
-void RefuseCyclicOptions(const FitOptions& options, bool force_driven) {
-  const auto refuse = [](const char* option, const char* why) {
-    throw InputError({"command line"}, fmt::format("{} {}", option, why));
-  };
-  const char* const units =
-      "applies to cyclic tests and force-driven fits (input: force), not to "
-      "shake-table motions (they carry their units in the column names)";
-  if (!options.cycles.empty()) refuse("--cycles", "applies to cyclic tests, not to --building");
-  if (options.force) refuse("--force", "applies to cyclic tests, not to --building");
-  if (!force_driven && !options.force_unit.empty()) refuse("--force-unit", units);
-  if (!force_driven && !options.length_unit.empty()) refuse("--length-unit", units);
-  if (force_driven && !options.offsets.empty()) {
-    refuse("--offsets", "applies to shake-table motions, not to force-driven tests (input: force)");
-  }
-}
-
-// Force-driven tests (cyclic-test files: the force applied to level 1 and its displacement), each
-// a motion of the fit, sampled at one step. Throws InputError.
-std::vector<analysis::BuildingMotion> ReadForceDriven(const FitOptions& options,
-                                                      const model::ModelFile& model,
-                                                      bool* one_specimen) {
-  io::CyclicTestSet set =
-      io::ReadCyclicTests(options.data,
-                          {options.force_unit.empty() ? "kN" : options.force_unit,
-                           options.length_unit.empty() ? "mm" : options.length_unit},
-                          model.units);
-  analysis::RequireUnits(set, !options.force_unit.empty() && !options.length_unit.empty(),
-                         "--force-unit and --length-unit");
-  analysis::RequireFiniteSquares(set);
-  *one_specimen = io::OneSpecimen(options.specimen, set.one_specimen);
-  const double seconds = model.units.SiFactor(dimension::kTime);
-  std::vector<analysis::BuildingMotion> motions;
-  for (std::size_t t = 0; t < set.tests.size(); ++t) {
-    identification::CyclicTestData& test = set.tests[t];
-    analysis::BuildingMotion& motion = motions.emplace_back();
-    motion.name = test.name;
-    analysis::BuildingMeasurements& measured = motion.measured;
-    for (const double time : test.time)
-      measured.time.push_back((time - test.time.front()) / seconds);
-    const double dt = analysis::SampleStep(measured);
-    for (std::size_t k = 1; k < measured.time.size(); ++k) {
-      const double step = measured.time[k] - measured.time[k - 1];
-      if (std::abs(step - dt) > 0.01 * dt) {
-        throw InputError({set.source[t]},
-                         fmt::format("test {}: sample {} comes {:g} s after the previous one, "
-                                     "against {:g} s on average: a force-driven test must be "
-                                     "sampled at one step",
-                                     test.name, k, step * seconds, dt * seconds));
-      }
+void RefuseCyclicOptions(const FitOptions& options) {
+  for (const auto& [given, option] :
+       {std::pair{!options.cycles.empty(), "--cycles"}, std::pair{options.force, "--force"}}) {
+    if (given) {
+      throw InputError({"command line"},
+                       fmt::format("{} applies to cyclic tests, not to --building", option));
     }
-    measured.applied_force = std::move(test.force);
-    measured.displacement = {std::move(test.displacement)};
-    measured.acceleration = {{}};
   }
-  return motions;
 }
 
 }  // namespace
 
 void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
-  const model::BuildingFitSpecFile file = model::LoadBuildingFitSpec(options.building);
-  RefuseCyclicOptions(options, file.force_driven);
-  const model::ModelFile model = model::LoadModelFile(file.model);
+  RefuseCyclicOptions(options);
+  const BuildingData data{options.data,           options.specimen,    options.offsets,
+                          options.force_unit,     options.length_unit, options.quiet,
+                          "isolab fit --building"};
+  BuildingFitInputs inputs = LoadBuildingFit(options.building, data);
+  const model::ModelFile& model = inputs.model;
   const std::string output =
       !options.output.empty()
           ? options.output
           : std::filesystem::path(options.building).stem().string() + ".fitted.yaml";
-  std::vector<std::string> inputs = options.data;
-  inputs.push_back(options.building);
-  inputs.push_back(file.model);
-  for (const std::string& included : model.included_files) inputs.push_back(included);
-  io::CheckOutputs(inputs, {output});
-
-  analysis::BuildingFitSpec spec;
-  for (const model::BuildingFitParameterEntry& entry : file.parameters) {
-    spec.parameters.push_back({entry.name, entry.low, entry.high, entry.start});
-  }
-  for (const std::string& channel : file.channels) {
-    spec.channels.push_back(analysis::ParseChannel(channel, file.path));
-  }
-  spec.band_low = file.band_low;
-  spec.band_high = file.band_high;
-  spec.pause = file.pause;
-  spec.substeps = file.substeps;
-  spec.sequential = options.specimen == "sequential";
-
-  const std::size_t levels = analysis::LevelMasses(model).size();
-  std::vector<analysis::BuildingMotion> motions;
-  if (file.force_driven) {
-    motions = ReadForceDriven(options, model, &spec.sequential);
-    // What a force-driven test measures: the displacement where the force acts.
-    if (spec.channels.empty())
-      spec.channels.push_back({analysis::BuildingChannel::Kind::kDisplacement, 1});
-  }
-  for (const std::string& data : file.force_driven ? std::vector<std::string>{} : options.data) {
-    ShakeTableOptions read;
-    read.data = data;
-    read.model = file.model;
-    if (!options.offsets.empty()) read.offsets = options.offsets;
-    Measured measured = ReadMeasured(read, model.units, levels);
-    if (!options.quiet) {
-      fmt::print(stderr,
-                 "isolab fit --building: {}: {} samples, levels (slab to roof) = "
-                 "channels {}; {}\n",
-                 data, measured.time.size(), fmt::join(measured.channels, ","),
-                 measured.reference_note);
-    }
-    motions.push_back({std::filesystem::path(data).stem().string(), std::move(measured)});
-  }
+  io::CheckOutputs(inputs.files, {output});
+  const std::vector<analysis::BuildingMotion> motions = ReadBuildingMotions(&inputs, data);
+  const analysis::BuildingFitSpec& spec = inputs.spec;
 
   identification::FitOptions fit;
   fit.seed = options.seed;

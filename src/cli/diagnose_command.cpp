@@ -7,27 +7,21 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "building_diagnose_command.h"
+#include "diagnosis_files.h"
 #include "finite_options.h"
 #include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/diagnose.h"
 #include "isolab/diagnosis/report.h"
-#include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/fit_spec_file.h"
 #include "isolab/model/fitted_model_file.h"
-#include "plot_script.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
 namespace {
-
-constexpr const char* kPlotScript = "plot_diagnosis.py";
-
-void WriteText(const std::string& path, const std::string& text) {
-  io::WriteTextFileAtomically(path, [&](std::ostream& out) { out << text; });
-}
 
 // The final model as a model file; a component the fit left a simpler law is written as that law
 // (identification::SimplifyComponents), with a note. Returns the notes.
@@ -69,14 +63,30 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
   CLI::App* command = app.add_subcommand(
       "diagnose",
       "Fit a base isolator model to cyclic tests, name the effects it lacks, add them and refit");
-  command->add_option("data", options.data, "CSV test data: test,time,displacement,force")
-      ->required()
-      ->check(CLI::ExistingFile);
   command
-      ->add_option("--base", options.base,
-                   "Base model: component types, bounds optional (as isolab fit --model)")
+      ->add_option("data", options.data,
+                   "CSV test data: test,time,displacement,force (with --building: shake-table "
+                   "motions)")
       ->required()
       ->check(CLI::ExistingFile);
+  CLI::Option* base =
+      command
+          ->add_option("--base", options.base,
+                       "Base model: component types, bounds optional (as isolab fit --model)")
+          ->check(CLI::ExistingFile);
+  CLI::Option* building =
+      command
+          ->add_option("--building", options.building,
+                       "Building fit specification (as isolab fit --building): diagnose the "
+                       "isolation of a building from its shake-table motions")
+          ->check(CLI::ExistingFile)
+          ->excludes(base);
+  base->excludes(building);
+  command
+      ->add_option("--offsets", options.offsets,
+                   "With --building: accelerometer offsets, pre-event (each channel less its "
+                   "mean before the motion) or none")
+      ->check(CLI::IsMember({"pre-event", "none"}));
   command->add_option("--out", options.out,
                       "Report stem: writes OUT.md, OUT.json, OUT.model.yaml, OUT.residual.csv "
                       "and OUT.residual.png (default: <first data file>.diagnosis)");
@@ -101,25 +111,26 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
 }
 
 void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
+  if (!options.building.empty()) return RunBuildingDiagnoseCommand(options, out);
+  if (options.base.empty()) {
+    throw InputError({"command line"},
+                     "give --base (cyclic tests) or --building (a building's shake-table motions)");
+  }
+  if (!options.offsets.empty()) {
+    throw InputError({"command line"}, "--offsets applies to --building, not to cyclic tests");
+  }
   const model::FitSpec base = model::LoadFitSpec(options.base);
-  const std::string stem =
-      !options.out.empty()
-          ? options.out
-          : std::filesystem::path(options.data.front()).replace_extension().string() + ".diagnosis";
   diagnosis::ReportContext context;
   context.data_files = options.data;
   context.base_file = options.base;
-  context.model_file = stem + ".model.yaml";
-  context.residual_file = stem + ".residual.csv";
   context.seed = options.seed;
   context.force_unit = base.units.force();
   context.length_unit = base.units.length();
+  const DiagnosisFiles files =
+      DiagnosisFiles::Plan(options.out, options.data.front(), options.plot, &context);
   std::vector<std::string> inputs = options.data;
   inputs.push_back(options.base);
-  std::vector<std::string> outputs = {context.model_file, stem + ".json", stem + ".md",
-                                      context.residual_file};
-  if (options.plot) outputs.push_back(stem + ".residual.png");
-  io::CheckOutputs(inputs, outputs);
+  io::CheckOutputs(inputs, files.outputs);
   const bool units_given = !options.force_unit.empty() && !options.length_unit.empty();
   io::CyclicTestSet set =
       io::ReadCyclicTests(options.data,
@@ -154,16 +165,6 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   } catch (const std::invalid_argument& error) {
     throw InputError({options.base}, error.what());
   }
-  // The plot needs Python's matplotlib: without it the report says so and goes on.
-  bool plot = options.plot;
-  if (plot) {
-    try {
-      CheckPlotScript(kPlotScript);
-    } catch (const InputError& error) {
-      plot = false;
-      context.notes.push_back(fmt::format("no residual plot: {}", error.what()));
-    }
-  }
   if (!options.quiet) {
     settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
@@ -183,29 +184,18 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
     context.notes.push_back(fmt::format("the final model was not written: {}", error.what()));
     context.model_file.clear();
   }
-  if (plot) context.plot_file = stem + ".residual.png";
   const diagnosis::DiagnosisReport report = diagnosis::BuildReport(result, data, context);
   const std::string json = diagnosis::RenderJson(report);
-  WriteText(context.residual_file, diagnosis::RenderResidualCsv(report));
-  WriteText(stem + ".json", json);
-  WriteText(stem + ".md", diagnosis::RenderMarkdown(report));
-  if (plot) {
-    RunPlotScript(kPlotScript,
-                  {context.residual_file, "-o", context.plot_file, "--title",
-                   fmt::format("{}: the final residual is {}",
-                               std::filesystem::path(options.data.front()).filename().string(),
-                               diagnosis::VerdictName(result.verdict.kind))},
-                  options.quiet || options.json);
-  }
-
+  files.Write(report, json,
+              fmt::format("{}: the final residual is {}",
+                          std::filesystem::path(options.data.front()).filename().string(),
+                          diagnosis::VerdictName(result.verdict.kind)),
+              options.quiet || options.json);
   if (options.json) {
     out << json;
     return;
   }
-  out << diagnosis::RenderSummary(report);
-  fmt::print(out, "report: {}.md, {}.json, {}{}; final model: {}\n", stem, stem,
-             context.residual_file, plot ? ", " + context.plot_file : "",
-             context.model_file.empty() ? "not written" : context.model_file);
+  out << diagnosis::RenderSummary(report) << files.Where(context);
 }
 
 }  // namespace isolab::cli

@@ -1,7 +1,8 @@
 // `isolab diagnose`: fits a base isolator model to measured cyclic tests, names the physical
 // effects it lacks one by one (diagnosis/diagnose.h), judges what remains, and writes the report
 // (diagnosis/report.h) as Markdown and JSON, the residual as CSV with its plot, and the final
-// model file.
+// model file. With --building, the same on a building's shake-table motions
+// (analysis/building_diagnosis.h).
 #pragma once
 
 #include <ostream>
@@ -17,6 +18,8 @@ namespace isolab::cli {
 struct DiagnoseOptions {
   std::vector<std::string> data;  // CSV files of cyclic tests
   std::string base;               // --base: component types, bounds optional (fit specification)
+  std::string building;           // --building: a building fit's specification (shake-table data)
+  std::string offsets;            // --building: accelerometer offsets; empty: pre-event
   // Report stem: OUT.md, OUT.json, OUT.model.yaml, OUT.residual.csv, OUT.residual.png.
   std::string out;
   unsigned seed = 1;

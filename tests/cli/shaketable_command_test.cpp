@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "cli/run_isolab.h"
+#include "cli/text_file.h"
 #include "own_test_file.h"
 #include "reference_data.h"
 
@@ -64,18 +65,17 @@ Matrix Read(hid_t file, const char* name) {
   return m;
 }
 
-// A four-level isolated building (base slab and three floors, 30 t each) on a BHM2 isolator under
-// isolab's filtered white noise.
-std::string WriteBuilding() {
+// A four-level isolated building (base slab and three floors, 30 t each) on a BHM2 isolator (and
+// the `extra` isolation components given) under isolab's filtered white noise.
+std::string WriteBuilding(const std::string& extra = "") {
   const auto model = Scratch("building.yaml");
   std::ofstream(model) << "units: {force: kN, length: mm, time: s}\n"
                           "structure:\n  type: shear_building\n  base_mass: 30 t\n"
                           "  stories: {count: 3, mass: 30 t, stiffness: 60 kN/mm}\n"
                           "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
                           "isolation:\n  components:\n"
-                          "    - {type: bhm2, k0: 3, k1: 0.4, uy: 5}\n"
-                          "excitation:\n  ground_motion: {file: " +
-                              kSource +
+                          "    - {type: bhm2, k0: 3, k1: 0.4, uy: 5}\n" +
+                              extra + "excitation:\n  ground_motion: {file: " + kSource +
                               "/ground_motions/fwn_firm_seed1.at2}\n"
                               "analysis: {dt: 0.01}\n";
   return model.string();
@@ -464,6 +464,46 @@ TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
                       " --levels 1,2,4,3 --isolator " + isolator.string() + " -q")
                 .exit_code,
             0);
+}
+
+// isolab diagnose --building on a building whose isolation has a viscous part its model lacks:
+// the loops reconstructed with the fitted masses name rate dependence, the building's refit bears
+// it out, and the final building model carries the dashpot.
+TEST(ShakeTableCommand, DiagnoseBuildingNamesTheViscousPartTheModelLacks) {
+  const auto data = WriteShakeTable(WriteBuilding("    - {name: visc, type: dashpot, c: 0.03}\n"),
+                                    "viscous_building");
+  const auto start = Scratch("start.yaml");
+  std::ofstream(start) << "units: {force: kN, length: mm, time: s}\n"
+                          "structure:\n  type: shear_building\n  base_mass: 30 t\n"
+                          "  stories: {count: 3, mass: 30 t, stiffness: 80 kN/mm}\n"
+                          "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
+                          "isolation:\n  components:\n"
+                          "    - {name: iso, type: bhm2, k0: 3, k1: 0.6, uy: 5}\n";
+  const auto spec = Scratch("spec.yaml");
+  std::ofstream(spec) << "model: start.yaml\nparameters:\n  - isolation.iso.k0\n"
+                         "  - isolation.iso.k1\n  - isolation.iso.uy\n"
+                         "  - {name: stories.stiffness, range: [30, 150]}\n";
+  const auto stem = Scratch("viscous").string();
+  const auto run =
+      RunIsolab("diagnose " + data.string() + " --building " + spec.string() + " --out " + stem +
+                " --budget 1500 --threads 1 --offsets none --no-plot --json -q");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto json = nlohmann::json::parse(run.output)["building"];
+  ASSERT_EQ(json["added"].size(), 1u) << json["conclusion"];
+  EXPECT_TRUE(json["confirmed"].get<bool>()) << json["conclusion"];
+  EXPECT_LT(json["refit"]["objective"].get<double>(),
+            0.01 * json["base"]["objective"].get<double>());
+  const std::string model = isolab::testing::ReadText(stem + ".model.yaml");
+  EXPECT_NE(model.find("dashpot"), std::string::npos) << model;
+  EXPECT_NE(isolab::testing::ReadText(stem + ".md").find("Building: the building confirms it"),
+            std::string::npos);
+
+  const auto units = RunIsolab("diagnose " + data.string() + " --building " + spec.string() +
+                                   " --force-unit kN --length-unit mm -q --out " + stem + "_no",
+                               true);
+  EXPECT_EQ(units.exit_code, 2);
+  EXPECT_NE(units.output.find("--force-unit"), std::string::npos) << units.output;
+  EXPECT_FALSE(std::filesystem::exists(stem + "_no.md"));
 }
 
 }  // namespace
