@@ -216,8 +216,10 @@ Hdf5File::Hdf5File(std::string path, Storage storage, std::size_t expected_bytes
     s.Check(H5Pset_fclose_degree(file_access.get(), H5F_CLOSE_SEMI), "property lists");
     if (storage == Storage::kInMemory) {
       // Grown by the expected size at a time (each growth copies the image and zeroes the new
-      // part), never written by HDF5 (Commit writes the image).
-      const std::size_t increment = std::max(expected_bytes, std::size_t{1} << 20);
+      // part), never written by HDF5 (Commit writes the image). The floor is a run's summary
+      // file (about 26 kB): a floor of 1 MiB cost each such file a megabyte of zeroes, a tenth
+      // of its writing.
+      const std::size_t increment = std::max(expected_bytes, std::size_t{64} << 10);
       s.Check(H5Pset_fapl_core(file_access.get(), increment, false), "property lists");
     }
     s.file = H5Fcreate(s.output->temporary_path().c_str(), H5F_ACC_TRUNC, file_create.get(),

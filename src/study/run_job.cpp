@@ -38,8 +38,13 @@ std::string PrepareRunFile(const model::StudyFile& study, const Job& job,
   return file.string();
 }
 
+std::string RecordEntryName(const model::StudyRecord& record, std::size_t component) {
+  return record.components.size() > 1 ? fmt::format("{}.h{}", record.entry, component + 1)
+                                      : record.entry;
+}
+
 JobResult RunJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
-                 const std::string& version, RunFileWriter* files) {
+                 const std::string& version, RunFileWriter* files, const StudyRecords* records) {
   const auto start = std::chrono::steady_clock::now();
   JobResult result;
   result.job = job.index;
@@ -48,15 +53,18 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
   try {
     const model::StudyRecord& record = study.records[job.record];
     analysis::RunOverrides overrides;
-    const bool pair = record.components.size() > 1;
     for (std::size_t c = 0; c < record.components.size(); ++c) {
       const model::GroundMotionSection& component = record.components[c];
-      const std::string entry = pair ? fmt::format("{}.h{}", record.entry, c + 1) : record.entry;
+      const std::string entry = RecordEntryName(record, c);
       analysis::RecordOverride given;
       given.name = entry;
       given.file = component.file;
       given.units = component.units;
       if (component.dt > 0.0) given.dt = InModelTime(study, model.units, component.dt);
+      if (records != nullptr) {
+        const double dt_seconds = given.dt * model.units.SiFactor(dimension::kTime);
+        if (const io::Record* read = records->Find(job.record, c, dt_seconds)) given.data = *read;
+      }
       given.scale = component.scale * study.scales[job.scale];
       given.target = component.target;
       given.units_given_by = entry + ".units";
@@ -140,9 +148,12 @@ ScheduleOutcome RunStudy(const model::StudyFile& study, const std::vector<Job>& 
                                   ? 0
                                   : static_cast<std::size_t>(std::max(writer_threads, 0));
   RunFileWriter files(writers, 2 * writers);
+  const StudyRecords records(study);
   ScheduleOutcome outcome = scheduler.Run(
       jobs.size(),
-      [&](std::size_t job) { return RunJob(study, jobs[job], output_directory, version, &files); },
+      [&](std::size_t job) {
+        return RunJob(study, jobs[job], output_directory, version, &files, &records);
+      },
       progress);
   for (const auto& [job, message] : files.Finish()) {
     JobResult& result = outcome.results[job];

@@ -15,6 +15,10 @@ namespace isolab::study {
 // variant may use another.
 double InModelTime(const model::StudyFile& study, const UnitSystem& model_units, double time);
 
+// What gives component `component` of a record, for messages: "study.yaml:12:5: records[2]",
+// with ".h1"/".h2" for a pair's components.
+std::string RecordEntryName(const model::StudyRecord& record, std::size_t component);
+
 // The study's free vibration in the model's time unit; empty: the model's own.
 std::optional<model::FreeVibration> StudyFreeVibration(const model::StudyFile& study,
                                                        const UnitSystem& model_units);

@@ -37,7 +37,7 @@ class Hdf5File {
   // Throws InputError when the path cannot be an output (atomic_file.h) or the file cannot be
   // created.
   // `expected_bytes`: about how large a file kInMemory will grow (its memory grows by that much,
-  // at least 1 MiB, at a time).
+  // at least 64 KiB, at a time).
   explicit Hdf5File(std::string path, Storage storage = Storage::kOnDisk,
                     std::size_t expected_bytes = 0);
   ~Hdf5File();

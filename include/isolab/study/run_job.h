@@ -13,13 +13,15 @@
 #include "isolab/study/jobs.h"
 #include "isolab/study/run_files.h"
 #include "isolab/study/scheduler.h"
+#include "isolab/study/study_records.h"
 
 namespace isolab::study {
 
 // `version` is written into the results file. `files`: who writes it (null: this thread, at
-// once).
+// once). `records`: the study's records read once (null: the job reads its own).
 JobResult RunJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
-                 const std::string& version, RunFileWriter* files = nullptr);
+                 const std::string& version, RunFileWriter* files = nullptr,
+                 const StudyRecords* records = nullptr);
 
 // Every job of `study` on `scheduler`, the per-run files written by `writer_threads` threads
 // (several local threads: as many), or with none by each job after its run (one thread, MPI
