@@ -46,8 +46,9 @@ identification::FitData Loops(const model::ModelFile& fitted,
     for (double& f : test.force) f /= bearings;
     identification::Segment(&test);
     if (test.half_cycles.empty()) {
-      throw InputError({motion.name}, "the slab's displacement has no half-cycle between two "
-                                      "reversals: no loop to diagnose");
+      throw InputError({motion.name},
+                       "the slab's displacement has no half-cycle between two "
+                       "reversals: no loop to diagnose");
     }
   }
   return diagnosis::AllCycles(std::move(tests), sequential);
@@ -130,8 +131,14 @@ BuildingDiagnosis DiagnoseBuilding(const model::ModelFile& model,
   BuildingFitSpec refit = spec;
   refit.parameters = RefitParameters(diagnosed, spec, result.added);
   result.refit_parameters = int(refit.parameters.size());
-  say(fmt::format("the loops name {}; refitting the building with it ({} parameters)",
-                  fmt::join(result.added, ", "), refit.parameters.size()));
+  std::vector<std::string> effects;
+  for (const diagnosis::DiagnosisStep& step : result.isolator.steps) {
+    effects.push_back(fmt::format("{} ({})", diagnosis::EffectName(step.effect), step.added.name));
+  }
+  say(
+      fmt::format("the loops name {}; the building refitted with the diagnosed isolation ({} "
+                  "parameters)",
+                  fmt::join(effects, ", "), refit.parameters.size()));
   result.refit = FitBuilding(diagnosed, motions, refit, fit);
 
   result.samples = std::min(result.base.effective_samples, result.refit->effective_samples);
