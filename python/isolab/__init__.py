@@ -22,7 +22,8 @@ import os
 import warnings
 
 from ._isolab import CyclicResult, InputError, Model, Result, RunError, __version__, load_model
-from ._isolab import _compare, _cyclic, _design, _diagnose, _fit, _parse_list, _parse_periods
+from ._isolab import _compare, _cyclic, _design, _diagnose, _diagnose_building, _fit
+from ._isolab import _fit_building, _parse_list, _parse_periods
 from ._isolab import _replay
 from ._isolab import _run, _spectrum
 
@@ -194,9 +195,27 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
                      length_unit, max_steps)
 
 
-def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_unit=None,
-        length_unit=None, threads=0, force=False, quiet=False):
-    """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES).
+def _one_of(first, first_name, building, what):
+    """Exactly one of the cyclic specification and building=, as the command line's options
+    exclude each other; what says what each reads."""
+    if first is not None and building is not None:
+        raise InputError(f"building= excludes {first_name}=")
+    if first is None and building is None:
+        raise InputError(f"give {first_name}= (cyclic tests) or building= ({what})")
+
+
+def _refuse(given, why):
+    """InputError naming the first keyword given that does not apply."""
+    for name, value in given:
+        if value:
+            raise InputError(f"{name}= {why}")
+
+
+def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, budget=60000,
+        cycles=None, specimen=None, force_unit=None, length_unit=None, threads=0, force=False,
+        quiet=False):
+    """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES), or
+    with building, a whole building model from its shake-table motions by output error.
 
     data: a cyclic-test CSV file or a list of them; model: the specification (component types
     and counts, YAML). seed, budget, cycles (1-based, a number or a list), specimen
@@ -208,18 +227,46 @@ def fit(data, model, *, seed=1, budget=60000, cycles=None, specimen=None, force_
     Returns a dict as `isolab fit --json`: "e2" (the paper's sum over tests), "e2_mean",
     "e2_per_test", "components" (name, type and the mathematical parameters), "evaluations",
     "restarts", "seconds", "stop" ("converged" or "budget") and "stop_reason",
-    "identifiability" (findings, empty when none), "seed", "one_specimen".
+    "identifiability" (findings, empty when none), "seed", "one_specimen". The cyclic fit
+    writes no file.
+
+    building: a building fit specification (YAML, docs/building_fit.md) instead of model, as
+    `isolab fit --building`: data are shake-table CSV files, one per motion, or with `input:
+    force` in the spec force-driven tests in the cyclic-test format (then force_unit and
+    length_unit as above). offsets ("pre-event", the default, or "none": the accelerometers'
+    offsets), specimen, seed, budget, threads and quiet are the command line's options; output is
+    its -o, the fitted model file (YAML; default <spec stem>.fitted.yaml in the working
+    directory), written as the command line writes it. Returns the dict `isolab fit --building
+    --json` prints: "parameters" (name, start, value, sigma, log, interval_95, at_bound),
+    "channels" (motion, channel, nrmse_start, nrmse), "not_separated", "identified_range",
+    "objective_start", "objective", "samples", "effective_samples", "correlation_time",
+    "evaluations", "stop", "stop_reason", "seconds", "sequential" and "output". cycles and force
+    are refused with building, offsets and output without it.
     """
+    _one_of(model, "model", building, "shake-table motions")
     data = _paths(data)
+    if building is not None:
+        _refuse([("cycles", cycles is not None), ("force", force)],
+                "applies to cyclic tests, not to building=")
+        return json.loads(_fit_building(data, str(building),
+                                        "" if output is None else str(output), seed, budget,
+                                        specimen or "", offsets or "", force_unit or "",
+                                        length_unit or "", threads, quiet))
+    _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
+    _refuse([("output", output is not None)],
+            "applies to building=: the cyclic fit writes no file (its components are in the "
+            "result)")
     cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
                                                          else [cycles])]
     return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit or "",
                 length_unit or "", threads, force, quiet)
 
 
-def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit=None,
-             length_unit=None, threads=0, force=False, quiet=False):
-    """`isolab diagnose`: which physical effect a base model misses, from cyclic tests.
+def diagnose(data, base=None, *, building=None, offsets=None, seed=1, budget=12000,
+             specimen=None, force_unit=None, length_unit=None, threads=0, force=False,
+             quiet=False):
+    """`isolab diagnose`: which physical effect a base model misses, from cyclic tests, or with
+    building, from a building's shake-table motions.
 
     data: a cyclic-test CSV file or a list of them; base: the base specification (YAML). seed,
     budget (per fit), specimen, force_unit, length_unit, threads, force and quiet are the command
@@ -233,8 +280,29 @@ def diagnose(data, base, *, seed=1, budget=12000, specimen=None, force_unit=None
     headline, where, tables), "identifiability", "noise_floor_e2", "stop", "stop_reason",
     "last_candidates", "loops", "samples". The files (.md, .model.yaml, residual CSV and plot)
     stay with the command line.
+
+    building: a building fit specification (as fit's building=) instead of base, as `isolab
+    diagnose --building`: data are shake-table CSV files, one per motion; offsets ("pre-event" or
+    "none"), specimen, seed, budget, threads and quiet are the command line's options. The
+    building is fitted by output error, the isolator's loops reconstructed with the fitted masses
+    and diagnosed, and an effect named only where the building's own refit bears it out. Returns
+    the same report, its head opening with the building's lines, with "building": "base" (and
+    "refit" when an effect was tried: objective_start, objective, effective_samples, parameters,
+    channels), "added", "confirmed", "bic_base", "bic_refit", "effective_samples",
+    "conclusion". Its files, the final building model among them, stay with the command line.
+    force_unit, length_unit and force are refused with building, offsets without it.
     """
-    return json.loads(_diagnose(_paths(data), str(base), seed, budget, specimen or "",
+    _one_of(base, "base", building, "a building's shake-table motions")
+    data = _paths(data)
+    if building is not None:
+        if force_unit is not None or length_unit is not None:
+            raise InputError("force_unit= and length_unit= apply to cyclic tests, not to building= "
+                             "(shake-table motions carry their units in the column names)")
+        _refuse([("force", force)], "applies to cyclic tests, not to building=")
+        return json.loads(_diagnose_building(data, str(building), seed, budget, specimen or "",
+                                             offsets or "", threads, quiet))
+    _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
+    return json.loads(_diagnose(data, str(base), seed, budget, specimen or "",
                                 force_unit or "", length_unit or "", threads, force, quiet))
 
 

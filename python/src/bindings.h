@@ -20,6 +20,8 @@ void BindSpectrum(pybind11::module_& module);
 void BindFit(pybind11::module_& module);
 // diagnose.
 void BindDiagnose(pybind11::module_& module);
+// fit and diagnose of a building (building=).
+void BindBuilding(pybind11::module_& module);
 // compare.
 void BindCompare(pybind11::module_& module);
 // design.

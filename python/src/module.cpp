@@ -10,6 +10,7 @@ PYBIND11_MODULE(_isolab, module) {
   isolab::python::BindSpectrum(module);
   isolab::python::BindFit(module);
   isolab::python::BindDiagnose(module);
+  isolab::python::BindBuilding(module);
   isolab::python::BindCompare(module);
   isolab::python::BindDesign(module);
 }

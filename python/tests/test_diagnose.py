@@ -45,3 +45,37 @@ def test_diagnose_bad_input(repo, tmp_path):
                             for k in range(20)))
     with pytest.raises(isolab.InputError, match="force_unit= and length_unit="):
         isolab.diagnose(bare, repo / BASE, quiet=True)
+
+
+def test_building_diagnosis_equals_the_command_line(tmp_path, isolab_cli, shake_table):
+    """isolab.diagnose(building=) returns the report `isolab diagnose --building --json` prints,
+    its head opening with the building's lines and its "building" object the same (one library
+    function builds both); the files stay with the command line."""
+    data, spec = shake_table
+    cli = isolab_cli.json("diagnose", data, "--building", spec, "--budget", 300, "--threads", 1,
+                          "--offsets", "none", "--no-plot", "-q", "--out", tmp_path / "report")
+    mine = isolab.diagnose(data, building=spec, budget=300, threads=1, offsets="none",
+                           quiet=True)
+    assert mine["head"] == cli["head"]
+    assert mine["effects"] == cli["effects"]
+    assert mine["building"] == cli["building"]
+    assert mine["building"]["base"]["parameters"][0]["name"] == "isolation.iso.k1"
+    assert mine["head"][-1].startswith("Note: Building: ")
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        ["motion.csv", "spec.yaml", "start.yaml", "truth.yaml", "report.json", "report.md",
+         "report.model.yaml", "report.residual.csv"])  # the command line's files, none of mine
+
+
+def test_building_diagnosis_refuses_what_does_not_apply(repo, tmp_path, shake_table):
+    data, spec = shake_table
+    cases = [
+        (dict(base=repo / BASE, building=spec), "building= excludes base="),
+        (dict(), r"give base= \(cyclic tests\) or building= \(a building's shake-table"),
+        (dict(building=spec, force_unit="kN", length_unit="mm"),
+         "force_unit= and length_unit= apply to cyclic tests, not to building="),
+        (dict(building=spec, force=True), "force= applies to cyclic tests, not to building="),
+        (dict(base=repo / BASE, offsets="none"), "offsets= applies to building=, not to cyclic"),
+    ]
+    for kwargs, message in cases:
+        with pytest.raises(isolab.InputError, match=message):
+            isolab.diagnose(data, budget=300, quiet=True, **kwargs)

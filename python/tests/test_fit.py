@@ -34,3 +34,45 @@ def test_fit_equals_the_command_line(repo, tmp_path, isolab_cli):
 def test_fit_bad_input(repo, tmp_path):
     with pytest.raises(isolab.InputError, match="no_such.csv"):
         isolab.fit(tmp_path / "no_such.csv", repo / SPEC, quiet=True)
+
+
+def test_building_fit_equals_the_command_line(tmp_path, isolab_cli, shake_table):
+    """isolab.fit(building=) returns what `isolab fit --building --json` prints (one library
+    function builds both) and writes the fitted model where it is told, as the command line does."""
+    data, spec = shake_table
+    cli = isolab_cli.json("fit", data, "--building", spec, "--budget", 300, "--threads", 1,
+                          "--offsets", "none", "-q", "-o", tmp_path / "cli.fitted.yaml")
+    mine = isolab.fit(data, building=spec, budget=300, threads=1, offsets="none", quiet=True,
+                      output=tmp_path / "mine.fitted.yaml")
+    assert mine["output"] == str(tmp_path / "mine.fitted.yaml")
+    assert (tmp_path / "mine.fitted.yaml").exists()
+    for key in ("seconds", "output"):  # the run's own
+        del mine[key], cli[key]
+    assert mine == cli
+    # The data came from the building the spec starts 50 % and 33 % off: it comes back.
+    assert [p["name"] for p in mine["parameters"]] == ["isolation.iso.k1", "stories.stiffness"]
+    assert mine["parameters"][0]["value"] == pytest.approx(0.4, rel=1e-3)
+    assert mine["parameters"][1]["value"] == pytest.approx(60.0, rel=1e-3)
+    fitted = isolab.load_model(str(tmp_path / "mine.fitted.yaml"))
+    assert fitted.get("isolation.components[0].k1") == pytest.approx(0.4, rel=1e-3)
+
+
+def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
+    data, spec = shake_table
+    output = tmp_path / "refused.yaml"
+    cases = [
+        (dict(model=repo / SPEC, building=spec), "building= excludes model="),
+        (dict(), r"give model= \(cyclic tests\) or building= \(shake-table motions\)"),
+        (dict(building=spec, cycles=3), "cycles= applies to cyclic tests, not to building="),
+        (dict(building=spec, force=True), "force= applies to cyclic tests, not to building="),
+        (dict(building=spec, force_unit="kN"), "force_unit= applies to force-driven tests"),
+        (dict(building=spec, offsets="sometimes"), "offsets= sometimes: expected pre-event or none"),
+        (dict(building=spec, specimen="one"), "specimen one"),
+        (dict(model=repo / SPEC, offsets="none"), "offsets= applies to building=, not to cyclic"),
+        (dict(model=repo / SPEC, output=output), "output= applies to building="),
+    ]
+    for kwargs, message in cases:
+        kwargs.setdefault("output", output) if "building" in kwargs else None
+        with pytest.raises(isolab.InputError, match=message):
+            isolab.fit(data, budget=300, quiet=True, **kwargs)
+        assert not output.exists(), message

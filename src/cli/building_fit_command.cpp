@@ -4,12 +4,11 @@
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
-#include <cmath>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 
-#include "building_fit_inputs.h"
 #include "isolab/analysis/building_fit.h"
+#include "isolab/analysis/building_fit_inputs.h"
+#include "isolab/analysis/building_fit_report.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
@@ -17,13 +16,6 @@
 
 namespace isolab::cli {
 namespace {
-
-// The 95 % interval of a fitted value from its coordinate's standard deviation.
-std::pair<double, double> Interval(const analysis::FittedParameter& p) {
-  const double half = 1.96 * p.sigma;
-  return p.log ? std::pair{p.value * std::exp(-half), p.value * std::exp(half)}
-               : std::pair{p.value - half, p.value + half};
-}
 
 void RefuseCyclicOptions(const FitOptions& options) {
   for (const auto& [given, option] :
@@ -39,17 +31,18 @@ void RefuseCyclicOptions(const FitOptions& options) {
 
 void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   RefuseCyclicOptions(options);
-  const BuildingData data{options.data,           options.specimen,    options.offsets,
-                          options.force_unit,     options.length_unit, options.quiet,
-                          "isolab fit --building"};
-  BuildingFitInputs inputs = LoadBuildingFit(options.building, data);
+  const analysis::BuildingData data{
+      options.data,        options.specimen, options.offsets,         options.force_unit,
+      options.length_unit, options.quiet,    "isolab fit --building", {}};
+  analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(options.building, data);
   const model::ModelFile& model = inputs.model;
   const std::string output =
       !options.output.empty()
           ? options.output
           : std::filesystem::path(options.building).stem().string() + ".fitted.yaml";
   io::CheckOutputs(inputs.files, {output});
-  const std::vector<analysis::BuildingMotion> motions = ReadBuildingMotions(&inputs, data);
+  const std::vector<analysis::BuildingMotion> motions =
+      analysis::ReadBuildingMotions(&inputs, data);
   const analysis::BuildingFitSpec& spec = inputs.spec;
 
   identification::FitOptions fit;
@@ -72,46 +65,7 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   io::WriteTextFileAtomically(output, [&](std::ostream& o) { o << text; });
 
   if (options.json) {
-    nlohmann::json json;
-    for (const analysis::FittedParameter& p : result.parameters) {
-      const auto [low, high] = Interval(p);
-      json["parameters"].push_back({{"name", p.name},
-                                    {"start", p.start},
-                                    {"value", p.value},
-                                    {"sigma", p.sigma},
-                                    {"log", p.log},
-                                    {"interval_95", {low, high}},
-                                    {"at_bound", p.at_bound}});
-    }
-    for (const analysis::ChannelFit& c : result.channels) {
-      json["channels"].push_back({{"motion", c.motion},
-                                  {"channel", c.channel},
-                                  {"nrmse_start", c.nrmse_start},
-                                  {"nrmse", c.nrmse}});
-    }
-    for (const analysis::CorrelatedParameters& pair : result.not_separated) {
-      json["not_separated"].push_back(
-          {{"a", pair.a}, {"b", pair.b}, {"correlation", pair.correlation}});
-    }
-    if (const auto& range = result.fitted.identified_range) {
-      json["identified_range"] = {{"displacement", range->displacement},
-                                  {"velocity", range->velocity},
-                                  {"cycles", range->cycles},
-                                  {"data", range->data}};
-    }
-    json["objective_start"] = result.objective_start;
-    json["objective"] = result.objective;
-    json["samples"] = result.samples;
-    json["effective_samples"] = result.effective_samples;
-    json["correlation_time"] = result.correlation_time;
-    json["evaluations"] = result.search.evaluations;
-    json["stop"] =
-        result.search.stop == identification::FitStop::kConverged ? "converged" : "budget";
-    json["stop_reason"] = result.search.stop_reason;
-    json["seconds"] = result.seconds;
-    json["sequential"] = spec.sequential;
-    json["output"] = output;
-    out << json.dump(2) << "\n";
+    out << analysis::BuildingFitJson(result, spec.sequential, output) << "\n";
     return;
   }
   fmt::print(out, "mean NRMSE^2 over {} channels: {:.4g} -> {:.4g}\n{} ({:.1f} s)\n\n",
@@ -119,7 +73,7 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
              result.search.stop_reason, result.seconds);
   fmt::print(out, "| parameter | start | fitted | 95 % interval |\n|---|---|---|---|\n");
   for (const analysis::FittedParameter& p : result.parameters) {
-    const auto [low, high] = Interval(p);
+    const auto [low, high] = analysis::Interval95(p);
     fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} to {:.4g}{} |\n", p.name, p.start, p.value,
                low, high, p.at_bound ? " (at the range's end)" : "");
   }

@@ -153,6 +153,9 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
                      "give --model (cyclic tests) or --building (shake-table "
                      "motions)");
   }
+  if (!options.offsets.empty()) {
+    throw InputError({"command line"}, "--offsets applies to --building, not to cyclic tests");
+  }
   const model::FitSpec spec = model::LoadFitSpec(options.spec);
   const std::string output =
       !options.output.empty()

@@ -12,9 +12,9 @@
 #include <optional>
 #include <sstream>
 
-#include "building_measurement.h"
 #include "isolab/analysis/prediction_band.h"
 #include "isolab/analysis/results_file.h"
+#include "isolab/analysis/shake_table_measurements.h"
 #include "isolab/analysis/shake_table_prediction.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
@@ -38,22 +38,22 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
                    "isolation and damping for --predict")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--levels", options.levels,
+  command->add_option("--levels", options.channels.levels,
                       "Channel numbers from the isolation slab to the roof, e.g. 6,5,4,3,2,1; "
                       "auto: by RMS displacement relative to the table (default)");
   command
-      ->add_option("--displacements", options.displacements,
+      ->add_option("--displacements", options.channels.displacements,
                    "Floor displacements relative to the table, absolute, or auto (default: "
                    "decided from the data)")
       ->check(CLI::IsMember({"auto", "relative", "absolute"}));
   command
-      ->add_option("--offsets", options.offsets,
+      ->add_option("--offsets", options.channels.offsets,
                    "Accelerometer offsets: pre-event (each channel less its mean before the "
                    "table moves; default) or none")
       ->check(CLI::IsMember({"pre-event", "none"}));
-  command->add_option("--acceleration-prefix", options.acceleration_prefix,
+  command->add_option("--acceleration-prefix", options.channels.acceleration_prefix,
                       "Floor acceleration channels are PREFIX<n> (default a)");
-  command->add_option("--displacement-prefix", options.displacement_prefix,
+  command->add_option("--displacement-prefix", options.channels.displacement_prefix,
                       "Floor displacement channels are PREFIX<n> (default d)");
   command->add_option("--isolator", options.isolator,
                       "Write the isolator's history as cyclic-test CSV (for fit and diagnose)");
@@ -97,12 +97,13 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   if (!results_path.empty()) analysis::CheckResultsPath(results_path);
   const std::vector<double> masses = analysis::LevelMasses(model);
   const UnitSystem& units = model.units;
-  const Measured m = ReadMeasured(options, units, masses.size());
+  const analysis::LevelMeasurements m =
+      analysis::ReadShakeTableMeasurements(options.data, options.channels, units, masses.size());
   if (!options.quiet) {
     fmt::print(stderr, "isolab shaketable: {} samples, levels (slab to roof) = channels {}; {}\n",
                m.time.size(), fmt::join(m.channels, ","), m.reference_note);
   }
-  const Series shear = analysis::BaseShear(m.acceleration, masses);
+  const analysis::Signal shear = analysis::BaseShear(m.acceleration, masses);
   identification::CyclicTestData isolator;
   isolator.name = std::filesystem::path(options.data).stem().string();
   isolator.time = m.time;
@@ -141,9 +142,12 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     }
     band = analysis::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
   }
-  const Series& predicted_u = prediction ? prediction->isolator_displacement : Series{};
-  const Series& predicted_shear = prediction ? prediction->base_shear : Series{};
-  const Series& predicted_roof = prediction ? prediction->roof_acceleration : Series{};
+  const analysis::Signal& predicted_u =
+      prediction ? prediction->isolator_displacement : analysis::Signal{};
+  const analysis::Signal& predicted_shear =
+      prediction ? prediction->base_shear : analysis::Signal{};
+  const analysis::Signal& predicted_roof =
+      prediction ? prediction->roof_acceleration : analysis::Signal{};
   const double nrmse_u = prediction ? prediction->nrmse_isolator_displacement : 0.0;
   const double nrmse_roof = prediction ? prediction->nrmse_roof_acceleration : 0.0;
   const std::vector<analysis::ComparedPeak> rows =

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/analysis/shake_table_measurements.h"
+
 namespace CLI {
 class App;
 }
@@ -23,17 +25,9 @@ namespace isolab::cli {
 struct ShakeTableOptions {
   std::string data;   // shake-table CSV
   std::string model;  // building model (shear building with base mass; isolation for --predict)
-  // Channel numbers of the levels, bottom (isolation slab) to roof, as "6,5,4,3,2,1"; "auto":
-  // ordered by RMS displacement relative to the table, the slab moving least.
-  std::string levels = "auto";
-  std::string acceleration_prefix = "a", displacement_prefix = "d";
-  std::string table_acceleration = "table_acceleration";
-  std::string table_displacement = "table_displacement";
-  // Floor displacements "relative" to the table, "absolute", or "auto": decided from the data.
-  std::string displacements = "auto";
-  std::string offsets = "pre-event";  // accelerometer offsets: "pre-event" or "none"
-  std::string isolator;               // isolator history CSV (cyclic-test format)
-  std::string record;                 // table acceleration record CSV
+  analysis::ShakeTableChannels channels;  // --levels, --displacements, --offsets, prefixes
+  std::string isolator;                   // isolator history CSV (cyclic-test format)
+  std::string record;                     // table acceleration record CSV
   bool predict = false;
   int samples = 0;  // parameter sets drawn for a band on the prediction; 0: none
   unsigned seed = 1;

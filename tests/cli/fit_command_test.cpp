@@ -274,6 +274,20 @@ TEST(FitCommand, DataWithoutUnitsAreRefusedUnlessTheCommandLineGivesThem) {
   EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
+TEST(FitCommand, OffsetsAreRefusedToCyclicTests) {
+  // --offsets reads shake-table accelerometers: a cyclic fit has none, and would ignore it.
+  const auto output = TemporaryFile("offsets.yaml");
+  const auto run =
+      RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
+                    " --offsets none -q -o " + output.string(),
+                true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("--offsets applies to --building, not to cyclic tests"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(std::filesystem::exists(output));
+}
+
 TEST(FitCommand, DataBeyondWhatSquaresHoldAreLocated) {
   const auto huge = TemporaryFile("huge.csv");
   {

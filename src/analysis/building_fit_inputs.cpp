@@ -1,4 +1,4 @@
-#include "building_fit_inputs.h"
+#include "isolab/analysis/building_fit_inputs.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,42 +6,41 @@
 #include <cmath>
 #include <filesystem>
 
-#include "building_measurement.h"
+#include "isolab/analysis/shake_table_measurements.h"
 #include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/cyclic_test_file.h"
 
-namespace isolab::cli {
+namespace isolab::analysis {
 namespace {
 
-void Refuse(const char* option, const char* why) {
-  throw InputError({"command line"}, fmt::format("{} {}", option, why));
+void RefuseOption(const BuildingOptionNames& names, const std::string& option, const char* why) {
+  throw InputError({names.where}, fmt::format("{} {}", option, why));
 }
 
 // Force-driven tests (cyclic-test files: the force applied to level 1 and its displacement), each
 // a motion, sampled at one step.
-std::vector<analysis::BuildingMotion> ReadForceDriven(const BuildingData& data,
-                                                      const model::ModelFile& model,
-                                                      bool* one_specimen) {
+std::vector<BuildingMotion> ReadForceDriven(const BuildingData& data, const model::ModelFile& model,
+                                            bool* one_specimen) {
   io::CyclicTestSet set = io::ReadCyclicTests(data.data,
                                               {data.force_unit.empty() ? "kN" : data.force_unit,
                                                data.length_unit.empty() ? "mm" : data.length_unit},
                                               model.units);
-  analysis::RequireUnits(set, !data.force_unit.empty() && !data.length_unit.empty(),
-                         "--force-unit and --length-unit");
-  analysis::RequireFiniteSquares(set);
+  RequireUnits(set, !data.force_unit.empty() && !data.length_unit.empty(),
+               data.names.force_unit + " and " + data.names.length_unit);
+  RequireFiniteSquares(set);
   *one_specimen = io::OneSpecimen(data.specimen, set.one_specimen);
   const double seconds = model.units.SiFactor(dimension::kTime);
-  std::vector<analysis::BuildingMotion> motions;
+  std::vector<BuildingMotion> motions;
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
     identification::CyclicTestData& test = set.tests[t];
-    analysis::BuildingMotion& motion = motions.emplace_back();
+    BuildingMotion& motion = motions.emplace_back();
     motion.name = test.name;
-    analysis::BuildingMeasurements& measured = motion.measured;
+    BuildingMeasurements& measured = motion.measured;
     for (const double time : test.time) {
       measured.time.push_back((time - test.time.front()) / seconds);
     }
-    const double dt = analysis::SampleStep(measured);
+    const double dt = SampleStep(measured);
     for (std::size_t k = 1; k < measured.time.size(); ++k) {
       const double step = measured.time[k] - measured.time[k - 1];
       if (std::abs(step - dt) > 0.01 * dt) {
@@ -72,11 +71,20 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
   const char* const units =
       "applies to force-driven tests (input: force), not to shake-table "
       "motions (they carry their units in the column names)";
-  if (!file.force_driven && !data.force_unit.empty()) Refuse("--force-unit", units);
-  if (!file.force_driven && !data.length_unit.empty()) Refuse("--length-unit", units);
+  if (!file.force_driven && !data.force_unit.empty())
+    RefuseOption(data.names, data.names.force_unit, units);
+  if (!file.force_driven && !data.length_unit.empty())
+    RefuseOption(data.names, data.names.length_unit, units);
   if (file.force_driven && !data.offsets.empty()) {
-    Refuse("--offsets", "applies to shake-table motions, not to force-driven tests (input: force)");
+    RefuseOption(data.names, data.names.offsets,
+                 "applies to shake-table motions, not to force-driven tests (input: force)");
   }
+  // The command line's parser allows only these; the Python module's keywords are checked here.
+  if (!data.offsets.empty() && data.offsets != "pre-event" && data.offsets != "none") {
+    throw InputError({data.names.where}, fmt::format("{} {}: expected pre-event or none",
+                                                     data.names.offsets, data.offsets));
+  }
+  if (!file.force_driven) io::OneSpecimen(data.specimen, false);  // refuses any other word
   inputs.model = model::LoadModelFile(file.model);
   inputs.files = data.data;
   inputs.files.push_back(spec_path);
@@ -84,16 +92,16 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
   for (const std::string& included : inputs.model.included_files) {
     inputs.files.push_back(included);
   }
-  analysis::BuildingFitSpec& spec = inputs.spec;
+  BuildingFitSpec& spec = inputs.spec;
   for (const model::BuildingFitParameterEntry& entry : file.parameters) {
     spec.parameters.push_back({entry.name, entry.low, entry.high, entry.start});
   }
   for (const std::string& channel : file.channels) {
-    spec.channels.push_back(analysis::ParseChannel(channel, file.path));
+    spec.channels.push_back(ParseChannel(channel, file.path));
   }
   // What a force-driven test measures: the displacement where the force acts.
   if (file.force_driven && spec.channels.empty()) {
-    spec.channels.push_back({analysis::BuildingChannel::Kind::kDisplacement, 1});
+    spec.channels.push_back({BuildingChannel::Kind::kDisplacement, 1});
   }
   spec.band_low = file.band_low;
   spec.band_high = file.band_high;
@@ -103,18 +111,16 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
   return inputs;
 }
 
-std::vector<analysis::BuildingMotion> ReadBuildingMotions(BuildingFitInputs* inputs,
-                                                          const BuildingData& data) {
+std::vector<BuildingMotion> ReadBuildingMotions(BuildingFitInputs* inputs,
+                                                const BuildingData& data) {
   const model::ModelFile& model = inputs->model;
   if (inputs->file.force_driven) return ReadForceDriven(data, model, &inputs->spec.sequential);
-  const std::size_t levels = analysis::LevelMasses(model).size();
-  std::vector<analysis::BuildingMotion> motions;
+  const std::size_t levels = LevelMasses(model).size();
+  std::vector<BuildingMotion> motions;
   for (const std::string& path : data.data) {
-    ShakeTableOptions read;
-    read.data = path;
-    read.model = inputs->file.model;
+    ShakeTableChannels read;
     if (!data.offsets.empty()) read.offsets = data.offsets;
-    Measured measured = ReadMeasured(read, model.units, levels);
+    LevelMeasurements measured = ReadShakeTableMeasurements(path, read, model.units, levels);
     if (!data.quiet) {
       fmt::print(stderr, "{}: {}: {} samples, levels (slab to roof) = channels {}; {}\n",
                  data.command, path, measured.time.size(), fmt::join(measured.channels, ","),
@@ -125,4 +131,4 @@ std::vector<analysis::BuildingMotion> ReadBuildingMotions(BuildingFitInputs* inp
   return motions;
 }
 
-}  // namespace isolab::cli
+}  // namespace isolab::analysis

@@ -1,4 +1,4 @@
-#include "building_measurement.h"
+#include "isolab/analysis/shake_table_measurements.h"
 
 #include <fmt/format.h>
 
@@ -10,16 +10,16 @@
 #include "isolab/core/errors.h"
 #include "isolab/io/shake_table_file.h"
 
-namespace isolab::cli {
+namespace isolab::analysis {
 namespace {
 
-double Rms(const Series& x) {
+double LevelRms(const Signal& x) {
   double square = 0.0;
   for (const double v : x) square += v * v;
   return std::sqrt(square / x.size());
 }
 
-double Correlation(const Series& x, const Series& y, std::size_t skip) {
+double Correlation(const Signal& x, const Signal& y, std::size_t skip) {
   double xy = 0, xx = 0, yy = 0, mx = 0, my = 0;
   const std::size_t n = x.size() - 2 * skip;
   for (std::size_t k = skip; k + skip < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
@@ -32,8 +32,8 @@ double Correlation(const Series& x, const Series& y, std::size_t skip) {
 }
 
 // Second derivative by central differences (ends copied from their neighbours).
-Series SecondDerivative(const Series& u, const Series& t) {
-  Series a(u.size(), 0.0);
+Signal SecondDerivative(const Signal& u, const Signal& t) {
+  Signal a(u.size(), 0.0);
   for (std::size_t k = 1; k + 1 < u.size(); ++k) {
     const double h1 = t[k] - t[k - 1], h2 = t[k + 1] - t[k];
     a[k] = 2.0 * (h1 * u[k + 1] - (h1 + h2) * u[k] + h2 * u[k - 1]) / (h1 * h2 * (h1 + h2));
@@ -71,24 +71,25 @@ std::vector<int> ParseLevels(const std::string& text) {
 
 }  // namespace
 
-Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
-                      std::size_t levels) {
-  const io::ShakeTableData data = io::ShakeTableData::Read(options.data);
-  Measured m;
+LevelMeasurements ReadShakeTableMeasurements(const std::string& path,
+                                             const ShakeTableChannels& options,
+                                             const UnitSystem& units, std::size_t levels) {
+  const io::ShakeTableData data = io::ShakeTableData::Read(path);
+  LevelMeasurements m;
   m.time = data.time();
   // Sensor offsets: before the table moves the building is at rest, so what an accelerometer
   // reads then is its offset. The pre-event window ends where the table acceleration first
   // exceeds 5 % of its peak; --offsets none keeps the channels as recorded.
   std::size_t quiet = 0;
   if (options.offsets == "pre-event") {
-    const Series table = data.Channel(options.table_acceleration, dimension::kAcceleration, units);
+    const Signal table = data.Channel(options.table_acceleration, dimension::kAcceleration, units);
     double peak = 0.0;
     for (const double v : table) peak = std::max(peak, std::abs(v));
     while (quiet < table.size() && std::abs(table[quiet]) <= 0.05 * peak) ++quiet;
     if (quiet < 10) quiet = 0;  // no quiet start: nothing to read an offset from
   }
   const auto acceleration = [&](const std::string& name) {
-    Series a = data.Channel(name, dimension::kAcceleration, units);
+    Signal a = data.Channel(name, dimension::kAcceleration, units);
     if (quiet > 0) {
       const double offset = std::accumulate(a.begin(), a.begin() + quiet, 0.0) / quiet;
       for (double& v : a) v -= offset;
@@ -108,7 +109,7 @@ Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
                                    channels.size(), levels, levels - 1));
     }
   }
-  std::vector<Series> a, u;
+  std::vector<Signal> a, u;
   for (const int c : channels) {
     a.push_back(acceleration(fmt::format("{}{}", options.acceleration_prefix, c)));
     u.push_back(data.Channel(fmt::format("{}{}", options.displacement_prefix, c),
@@ -121,9 +122,9 @@ Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
     double to_relative = 0.0, to_absolute = 0.0;
     const std::size_t skip = std::min<std::size_t>(200, m.time.size() / 10);
     for (std::size_t l = 0; l < a.size(); ++l) {
-      Series rel(a[l].size());
+      Signal rel(a[l].size());
       for (std::size_t k = 0; k < rel.size(); ++k) rel[k] = a[l][k] - m.table_acceleration[k];
-      const Series ddu = SecondDerivative(u[l], m.time);
+      const Signal ddu = SecondDerivative(u[l], m.time);
       to_relative += Correlation(ddu, rel, skip) / a.size();
       to_absolute += Correlation(ddu, a[l], skip) / a.size();
     }
@@ -138,8 +139,8 @@ Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
         fmt::format("displacements {} (as given)", relative ? "relative to the table" : "absolute");
   }
   if (!relative) {  // only then is the table's displacement needed
-    const Series table_u = data.Channel(options.table_displacement, dimension::kLength, units);
-    for (Series& s : u) {
+    const Signal table_u = data.Channel(options.table_displacement, dimension::kLength, units);
+    for (Signal& s : u) {
       for (std::size_t k = 0; k < s.size(); ++k) s[k] -= table_u[k];
     }
   }
@@ -148,7 +149,7 @@ Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
     std::vector<std::size_t> order(channels.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t x, std::size_t y) { return Rms(u[x]) < Rms(u[y]); });
+                     [&](std::size_t x, std::size_t y) { return LevelRms(u[x]) < LevelRms(u[y]); });
     for (const std::size_t i : order) {
       m.channels.push_back(channels[i]);
       m.acceleration.push_back(a[i]);
@@ -162,4 +163,4 @@ Measured ReadMeasured(const ShakeTableOptions& options, const UnitSystem& units,
   return m;
 }
 
-}  // namespace isolab::cli
+}  // namespace isolab::analysis

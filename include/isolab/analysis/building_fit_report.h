@@ -1,0 +1,23 @@
+// A building fit's result as its users read it: `isolab fit --building --json` prints it and
+// isolab.fit(building=...) returns it parsed, one function, so that the two cannot drift.
+#pragma once
+
+#include <string>
+#include <utility>
+
+#include "isolab/analysis/building_fit.h"
+
+namespace isolab::analysis {
+
+// The 95 % interval of a fitted value from its coordinate's standard deviation (log: a factor).
+std::pair<double, double> Interval95(const FittedParameter& p);
+
+// The JSON object (indented by two, no final newline): "parameters" (name, start, value, sigma,
+// log, interval_95, at_bound), "channels" (motion, channel, nrmse_start, nrmse),
+// "not_separated", "identified_range", "objective_start", "objective", "samples",
+// "effective_samples", "correlation_time", "evaluations", "stop", "stop_reason", "seconds",
+// "sequential" (the motions were one specimen) and "output" (where the fitted model went).
+std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
+                            const std::string& output);
+
+}  // namespace isolab::analysis
