@@ -14,6 +14,9 @@
 //    model above (target within 5x), and a plan building of 5 to 1000 stories on four linear
 //    isolators (target: linear in stories); and both models on one lead-rubber bearing or
 //    friction pendulum a bearing.
+//  * one factorisation and solve of an effective tangent by each linear solver
+//    (tangent_solver.h) on the pattern of a shear building with relative Rayleigh damping and on
+//    bands of a few diagonals: the measurements behind the automatic choice's thresholds.
 // Counters: "per_step" is seconds per step, "solves_per_step" linear solves (Newton
 // iterations) per step. The excitation is isolab's seeded filtered noise.
 #include <benchmark/benchmark.h>
@@ -33,6 +36,7 @@
 #include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 #include "newmark_floor.h"
+#include "tangent_solver.h"
 
 namespace isolab::integrators {
 namespace {
@@ -315,6 +319,39 @@ void BM_PlanStoriesLinearIsolators(benchmark::State& state) {
   RunPlanSteps(state, structure::BuildPlanBuilding(building), 10000);
 }
 
+// One Newton iteration's linear algebra: factorise a tangent and solve once, with the solver
+// range(0) (NewmarkOptions::LinearSolver: 1 KLU, 2 dense, 3 banded), n = range(1) dofs, on the
+// pattern of an isolated shear building with relative Rayleigh damping (range(2) = 0: tridiagonal
+// with a full base row and column) or on a band of range(2) diagonals each side. The values are
+// those of a diagonally dominant matrix, slightly unsymmetric, changed a little every iteration.
+void BM_TangentSolver(benchmark::State& state) {
+  const auto kind = static_cast<NewmarkOptions::LinearSolver>(state.range(0));
+  const int n = static_cast<int>(state.range(1)), width = static_cast<int>(state.range(2));
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const bool in =
+          width == 0 ? std::abs(i - j) <= 1 || i == 0 || j == 0 : std::abs(i - j) <= width;
+      if (in) entries.emplace_back(i, j, i == j ? 4.0 * (width + 1) : -1.0 - 0.01 * (i > j));
+    }
+  }
+  structure::SparseMatrix matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  matrix.makeCompressed();
+  if (width == 0) matrix.coeffRef(0, 0) = 2.0 * n;
+  TangentSolver solver(matrix, kind);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+  Eigen::VectorXd x(n);
+  double* diagonal = &matrix.coeffRef(n - 1, n - 1);
+  for (auto _ : state) {
+    *diagonal += 1e-9;
+    if (!solver.Factorize(matrix)) state.SkipWithError("singular");
+    x = b;
+    solver.Solve(&x);
+    benchmark::DoNotOptimize(x.data());
+  }
+}
+
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanFiveStoryTable9)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanStoriesLinearIsolators)
@@ -338,6 +375,9 @@ BENCHMARK(BM_StoriesTable9)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesLinearIsolator)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetUpRayleighBuilding)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TangentSolver)
+    ->ArgsProduct({{1, 2}, {2, 6, 12, 18, 24, 30, 40, 60}, {0}})
+    ->ArgsProduct({{1, 3}, {1001}, {1, 2, 3, 4, 6, 8, 12}});
 
 }  // namespace
 }  // namespace isolab::integrators
