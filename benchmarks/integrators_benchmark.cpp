@@ -69,11 +69,11 @@ void CountSteps(benchmark::State& state, int steps, long solves) {
 }
 
 void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps,
-              const Excitation& excitation = Noise()) {
+              const Excitation& excitation = Noise(), const NewmarkOptions& options = {}) {
   ResponseHistory response;
   long solves = 0;
   for (auto _ : state) {
-    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, {}, &response);
+    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, options, &response);
     if (!summary.ok()) state.SkipWithError(summary.message.c_str());
     solves += summary.newton_iterations;
   }
@@ -188,6 +188,15 @@ void BM_StoriesTable9(benchmark::State& state) {
   RunSteps(state, IsolatedBuilding(stories, Table9()), 2000);
 }
 
+// BM_StoriesTable9 (range(0) stories) with the linear solver range(1) forced
+// (NewmarkOptions::LinearSolver: 1 KLU, 2 dense, 3 banded): where the automatic choice changes.
+void BM_StoriesTable9Solver(benchmark::State& state) {
+  NewmarkOptions options;
+  options.linear_solver = static_cast<NewmarkOptions::LinearSolver>(state.range(1));
+  RunSteps(state, IsolatedBuilding(static_cast<int>(state.range(0)), Table9()), 2000, Noise(),
+           options);
+}
+
 // Without yielding, every step's equations are linear: one solve per step is the ideal.
 void BM_StoriesLinearIsolator(benchmark::State& state) {
   const int stories = static_cast<int>(state.range(0));
@@ -255,6 +264,14 @@ void BM_PlanFiveStoryTable9(benchmark::State& state) {
     }
   }
   RunPlanSteps(state, structure::BuildPlanBuilding(building), 6000);
+}
+
+// The bundled plan model with the linear solver range(0) forced (as BM_StoriesTable9Solver).
+void BM_PlanFiveStoryTable9Solver(benchmark::State& state) {
+  const structure::LaidOutStructure building = structure::BuildPlanBuilding(BundledPlanBuilding());
+  NewmarkOptions options;
+  options.linear_solver = static_cast<NewmarkOptions::LinearSolver>(state.range(0));
+  RunSteps(state, building.structure, 2000, PlanNoise(building.layout), options);
 }
 
 // The devices engineers specify, one law a bearing, for 150 t (the one-direction building's mass
@@ -375,9 +392,13 @@ BENCHMARK(BM_StoriesTable9)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesLinearIsolator)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetUpRayleighBuilding)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StoriesTable9Solver)
+    ->ArgsProduct({{2, 5, 8, 11, 14, 17, 23, 35}, {1, 2, 3}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanFiveStoryTable9Solver)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TangentSolver)
-    ->ArgsProduct({{1, 2}, {2, 6, 12, 18, 24, 30, 40, 60}, {0}})
-    ->ArgsProduct({{1, 3}, {1001}, {1, 2, 3, 4, 6, 8, 12}});
+    ->ArgsProduct({{1, 2, 3}, {2, 6, 9, 12, 18, 24, 36, 60}, {0}})
+    ->ArgsProduct({{1, 3}, {1001}, {1, 2, 3, 4, 6, 8}});
 
 }  // namespace
 }  // namespace isolab::integrators

@@ -14,7 +14,7 @@
 
 namespace isolab::integrators {
 
-inline constexpr int kDenseFixedDofs = 16;
+inline constexpr int kDenseFixedDofs = 12;
 
 class DenseLu {
  public:

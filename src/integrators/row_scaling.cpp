@@ -10,7 +10,8 @@ bool InverseRowScales(const structure::SparseMatrix& matrix, std::vector<double>
   std::fill(scale.begin(), scale.end(), 0.0);
   const int* rows = matrix.innerIndexPtr();
   const double* values = matrix.valuePtr();
-  for (int k = 0; k < matrix.nonZeros(); ++k) {
+  const int entries = static_cast<int>(matrix.nonZeros());  // a sum in Eigen: once, not per entry
+  for (int k = 0; k < entries; ++k) {
     scale[rows[k]] = std::max(scale[rows[k]], std::abs(values[k]));
   }
   for (double& s : scale) {

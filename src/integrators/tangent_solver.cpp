@@ -9,8 +9,8 @@ using LinearSolver = NewmarkOptions::LinearSolver;
 LinearSolver ChooseLinearSolver(const structure::SparseMatrix& pattern, LinearSolver requested) {
   if (requested != LinearSolver::kAuto) return requested;
   if (pattern.rows() <= kDenseMaxDofs) return LinearSolver::kDense;
-  const Bandwidths widths = BandwidthsOf(pattern);
-  if (widths.lower + widths.upper <= kBandedMaxWidth) return LinearSolver::kBanded;
+  const BandStructure band = BandStructureOf(pattern);
+  if (band.lower + band.upper <= kBandedMaxWidth) return LinearSolver::kBanded;
   return LinearSolver::kKlu;
 }
 

@@ -64,7 +64,14 @@ std::vector<PatternCase> Patterns() {
   return {
       {"tridiagonal", 40, [](int i, int j) { return std::abs(i - j) <= 1; }},
       {"two below, one above", 30, [](int i, int j) { return i - j <= 2 && j - i <= 1; }},
+      {"pentadiagonal", 30, [](int i, int j) { return std::abs(i - j) <= 2; }},
+      {"heptadiagonal", 9, [](int i, int j) { return std::abs(i - j) <= 3; }},
       {"arrowhead", 12, [](int i, int j) { return std::abs(i - j) <= 1 || i == 0 || j == 0; }},
+      // Border dofs (banded_lu.h): 0 and 70 coupled to every other, a band of 2 and 1 between.
+      {"two borders", 90,
+       [](int i, int j) {
+         return (i - j <= 2 && j - i <= 1) || i == 0 || j == 0 || i == 70 || j == 70;
+       }},
       {"full", 7, [](int, int) { return true; }},
   };
 }
@@ -179,19 +186,29 @@ TEST(TangentSolver, ChoosesFromThePattern) {
   };
   EXPECT_EQ(choice(Sdof()), LinearSolver::kDense);
   EXPECT_EQ(choice(IsolatedBuilding(5, true)), LinearSolver::kDense);
+  EXPECT_EQ(choice(IsolatedBuilding(9, true)), LinearSolver::kDense);  // 10 dofs
+  EXPECT_EQ(choice(IsolatedBuilding(10, true)), LinearSolver::kBanded);
+  // The plan building's dofs are level by level (x, y, rotation) and its base x dof, coupled to
+  // the floors' x dofs, is no border: a band of 15 each side, left to KLU.
   const structure::Structure plan = PlanBuilding().structure;
   EXPECT_EQ(plan.dofs(), 18);
-  EXPECT_EQ(choice(plan), LinearSolver::kDense);
+  EXPECT_EQ(choice(plan), LinearSolver::kKlu);
 
   // Without superstructure damping a shear building's tangent is tridiagonal; relative Rayleigh
   // damping's mass-proportional part couples every floor to the base: a full base row and column.
   const structure::Structure bare = IsolatedBuilding(150, false);
-  EXPECT_EQ(BandwidthsOf(bare.tangent_pattern()).lower, 1);
-  EXPECT_EQ(BandwidthsOf(bare.tangent_pattern()).upper, 1);
+  const BandStructure tridiagonal = BandStructureOf(bare.tangent_pattern());
+  EXPECT_EQ(tridiagonal.lower, 1);
+  EXPECT_EQ(tridiagonal.upper, 1);
+  EXPECT_TRUE(tridiagonal.border.empty());
   EXPECT_EQ(choice(bare), LinearSolver::kBanded);
   const structure::Structure damped = IsolatedBuilding(150, true);
-  EXPECT_EQ(BandwidthsOf(damped.tangent_pattern()).lower, 150);
-  EXPECT_EQ(choice(damped), LinearSolver::kKlu);
+  EXPECT_EQ(damped.tangent_pattern().col(0).nonZeros(), 151);  // the base couples to every floor
+  const BandStructure arrow = BandStructureOf(damped.tangent_pattern());
+  EXPECT_EQ(arrow.lower, 1);
+  EXPECT_EQ(arrow.upper, 1);
+  EXPECT_EQ(arrow.border, std::vector<int>{0});
+  EXPECT_EQ(choice(damped), LinearSolver::kBanded);
 
   for (const LinearSolver forced :
        {LinearSolver::kKlu, LinearSolver::kDense, LinearSolver::kBanded}) {
@@ -240,6 +257,8 @@ TEST(TangentSolver, RunsAgreeWithKlu) {
   ExpectSameRuns("five stories", IsolatedBuilding(5, true),
                  Excitation::Uniform(Shaking(3000.0, 0.5, 1.7)));
   ExpectSameRuns("150 stories, banded", IsolatedBuilding(150, false),
+                 Excitation::Uniform(Shaking(3000.0, 0.3, 1.1)));
+  ExpectSameRuns("150 stories, Rayleigh, banded with a border", IsolatedBuilding(150, true),
                  Excitation::Uniform(Shaking(3000.0, 0.3, 1.1)));
   const structure::LaidOutStructure plan = PlanBuilding();
   ExpectSameRuns(
