@@ -4,29 +4,31 @@
 
 namespace isolab::integrators {
 
-using LinearSolver = NewmarkOptions::LinearSolver;
-
-LinearSolver ChooseLinearSolver(const structure::SparseMatrix& pattern, LinearSolver requested) {
-  if (requested != LinearSolver::kAuto) return requested;
-  if (pattern.rows() <= kDenseMaxDofs) return LinearSolver::kDense;
+// NewmarkOptions::LinearSolver is spelt out: ida.cpp has a LinearSolver of its own, and the unity
+// build puts both files in one translation unit.
+NewmarkOptions::LinearSolver ChooseLinearSolver(const structure::SparseMatrix& pattern,
+                                                NewmarkOptions::LinearSolver requested) {
+  if (requested != NewmarkOptions::LinearSolver::kAuto) return requested;
+  if (pattern.rows() <= kDenseMaxDofs) return NewmarkOptions::LinearSolver::kDense;
   const BandStructure band = BandStructureOf(pattern);
-  if (band.lower + band.upper <= kBandedMaxWidth) return LinearSolver::kBanded;
-  return LinearSolver::kKlu;
+  if (band.lower + band.upper <= kBandedMaxWidth) return NewmarkOptions::LinearSolver::kBanded;
+  return NewmarkOptions::LinearSolver::kKlu;
 }
 
-TangentSolver::TangentSolver(const structure::SparseMatrix& pattern, LinearSolver requested)
+TangentSolver::TangentSolver(const structure::SparseMatrix& pattern,
+                             NewmarkOptions::LinearSolver requested)
     : kind_(ChooseLinearSolver(pattern, requested)), solver_(Make(pattern, kind_)) {}
 
 TangentSolver::Solver TangentSolver::Make(const structure::SparseMatrix& pattern,
-                                          LinearSolver kind) {
+                                          NewmarkOptions::LinearSolver kind) {
   // Each return is a prvalue, so the variant is built in place (KluSolver cannot be moved).
   switch (kind) {
-    case LinearSolver::kDense:
+    case NewmarkOptions::LinearSolver::kDense:
       return Solver(std::in_place_type<DenseLu>, pattern);
-    case LinearSolver::kBanded:
+    case NewmarkOptions::LinearSolver::kBanded:
       return Solver(std::in_place_type<BandedLu>, pattern);
-    case LinearSolver::kAuto:
-    case LinearSolver::kKlu:
+    case NewmarkOptions::LinearSolver::kAuto:
+    case NewmarkOptions::LinearSolver::kKlu:
       break;
   }
   return Solver(std::in_place_type<KluSolver>, pattern);

@@ -43,7 +43,7 @@ struct NewmarkOptions {
   double force_tolerance = 1e-10;         // residual norm / force scale of the step; (0, 1)
   double displacement_tolerance = 1e-12;  // correction norm / displacement scale; (0, 1)
   int max_iterations = 30;                // Newton iterations per attempt, >= 1
-  LinearSolver linear_solver = LinearSolver::kAuto;
+  LinearSolver linear_solver = LinearSolver::kAuto;  // see LinearSolver
   // Levels of halving a step that does not converge, in [0, kMaxStepCuts]: a step may take up to
   // 2^(max_step_cuts + 1) attempts, so the bound keeps a failing run's time finite.
   int max_step_cuts = 8;
