@@ -85,6 +85,7 @@ BandedLu::BandedLu(const structure::SparseMatrix& pattern) : n_(static_cast<int>
     }
   }
   pivots_.assign(nb_, 0);
+  inverse_diagonal_.assign(nb_, 0.0);
   border_pivots_.assign(m_, 0);
   row_scales_.assign(n_, 0.0);
   work_.assign(n_, 0.0);
@@ -112,7 +113,7 @@ bool BandedLu::FactorBand(PivotRatio* ratio) {
     if (p != j) {
       for (int c = j; c <= j + right; ++c) std::swap(At(p, c), At(j, c));
     }
-    const double inverse = 1.0 / At(j, j);
+    const double inverse = inverse_diagonal_[j] = 1.0 / At(j, j);
     double* column = &At(j, j);
     for (int i = 1; i <= below; ++i) column[i] *= inverse;
     for (int c = j + 1; c <= j + right; ++c) {
@@ -141,7 +142,7 @@ void BandedLu::SolveBand(double* x) const {
     for (int i = 1; i <= below; ++i) x[j + i] -= At(j + i, j) * xj;
   };
   const auto backward = [&](int j, const int above) {
-    x[j] /= At(j, j);
+    x[j] *= inverse_diagonal_[j];  // a multiplication: back substitution is a chain through x
     const double xj = x[j];
     for (int i = 1; i <= above; ++i) x[j - i] -= At(j - i, j) * xj;
   };

@@ -67,9 +67,10 @@ class BandedLu {
   std::vector<double> values_;
   int b_offset_, c_offset_, d_offset_;
   std::vector<int> positions_;
-  std::vector<int> pivots_;         // A's: row exchanged with row k at step k
-  std::vector<int> border_pivots_;  // S's
-  std::vector<double> work_;        // the right-hand side in the band-then-border order
+  std::vector<int> pivots_;               // A's: row exchanged with row k at step k
+  std::vector<double> inverse_diagonal_;  // 1 / u_kk of A's factor U
+  std::vector<int> border_pivots_;        // S's
+  std::vector<double> work_;              // the right-hand side in the band-then-border order
 };
 
 }  // namespace isolab::integrators

@@ -59,7 +59,7 @@ bool FactorizeDense(const DenseLu::Arrays& arrays, const double* values) {
 #pragma GCC unroll 16
       for (int j = k; j < n; ++j) std::swap(a[k + j * n], a[p + j * n]);
     }
-    const double inverse = 1.0 / column[k];
+    const double inverse = arrays.inverse_diagonal[k] = 1.0 / column[k];
 #pragma GCC unroll 16
     for (int i = k + 1; i < n; ++i) column[i] *= inverse;
 #pragma GCC unroll 16
@@ -91,7 +91,7 @@ void SolveDense(const DenseLu::Arrays& arrays, double* b) {
 #pragma GCC unroll 16
   for (int k = n - 1; k >= 0; --k) {
     const double* column = a + k * n;
-    b[k] /= column[k];
+    b[k] *= arrays.inverse_diagonal[k];  // a multiplication: back substitution is a chain
     const double bk = b[k];
 #pragma GCC unroll 16
     for (int i = 0; i < k; ++i) b[i] -= column[i] * bk;
@@ -112,6 +112,7 @@ DenseLu::DenseLu(const structure::SparseMatrix& pattern)
     : n_(static_cast<int>(pattern.rows())),
       positions_(pattern.nonZeros()),
       lu_(static_cast<std::size_t>(n_) * n_),
+      inverse_diagonal_(n_),
       pivots_(n_),
       row_scales_(n_) {
   for (int j = 0; j < n_; ++j) {
@@ -121,6 +122,7 @@ DenseLu::DenseLu(const structure::SparseMatrix& pattern)
   }
   arrays_ = {n_,
              lu_.data(),
+             inverse_diagonal_.data(),
              pivots_.data(),
              row_scales_.data(),
              positions_.data(),

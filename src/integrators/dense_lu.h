@@ -31,10 +31,11 @@ class DenseLu {
   // One size's kernels work on these (DenseLu's own arrays).
   struct Arrays {
     int n;
-    double* lu;            // column-major: L below the diagonal (unit), U on and above
-    int* pivots;           // row exchanged with row k at step k
-    double* scales;        // 1 / largest magnitude of each row
-    const int* positions;  // of each stored entry of the pattern in lu
+    double* lu;                // column-major: L below the diagonal (unit), U on and above
+    double* inverse_diagonal;  // 1 / u_kk
+    int* pivots;               // row exchanged with row k at step k
+    double* scales;            // 1 / largest magnitude of each row
+    const int* positions;      // of each stored entry of the pattern in lu
     int entries;
   };
   using Factorizer = bool (*)(const Arrays&, const double* values);
@@ -44,6 +45,7 @@ class DenseLu {
   int n_;
   std::vector<int> positions_;
   std::vector<double> lu_;
+  std::vector<double> inverse_diagonal_;
   std::vector<int> pivots_;
   std::vector<double> row_scales_;
   Arrays arrays_;  // points into the vectors above, which are never resized
