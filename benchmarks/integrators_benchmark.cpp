@@ -14,6 +14,9 @@
 //    model above (target within 5x), and a plan building of 5 to 1000 stories on four linear
 //    isolators (target: linear in stories); and both models on one lead-rubber bearing or
 //    friction pendulum a bearing.
+//  * one factorisation and solve of an effective tangent by each linear solver
+//    (tangent_solver.h) on the pattern of a shear building with relative Rayleigh damping and on
+//    bands of a few diagonals: the measurements behind the automatic choice's thresholds.
 // Counters: "per_step" is seconds per step, "solves_per_step" linear solves (Newton
 // iterations) per step. The excitation is isolab's seeded filtered noise.
 #include <benchmark/benchmark.h>
@@ -33,6 +36,7 @@
 #include "isolab/structure/plan_building.h"
 #include "isolab/structure/shear_building.h"
 #include "newmark_floor.h"
+#include "tangent_solver.h"
 
 namespace isolab::integrators {
 namespace {
@@ -65,11 +69,11 @@ void CountSteps(benchmark::State& state, int steps, long solves) {
 }
 
 void RunSteps(benchmark::State& state, const structure::Structure& structure, int steps,
-              const Excitation& excitation = Noise()) {
+              const Excitation& excitation = Noise(), const NewmarkOptions& options = {}) {
   ResponseHistory response;
   long solves = 0;
   for (auto _ : state) {
-    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, {}, &response);
+    const RunSummary summary = RunNewmark(structure, excitation, {0.01, steps}, options, &response);
     if (!summary.ok()) state.SkipWithError(summary.message.c_str());
     solves += summary.newton_iterations;
   }
@@ -184,6 +188,15 @@ void BM_StoriesTable9(benchmark::State& state) {
   RunSteps(state, IsolatedBuilding(stories, Table9()), 2000);
 }
 
+// BM_StoriesTable9 (range(0) stories) with the linear solver range(1) forced
+// (NewmarkOptions::LinearSolver: 1 KLU, 2 dense, 3 banded): where the automatic choice changes.
+void BM_StoriesTable9Solver(benchmark::State& state) {
+  NewmarkOptions options;
+  options.linear_solver = static_cast<NewmarkOptions::LinearSolver>(state.range(1));
+  RunSteps(state, IsolatedBuilding(static_cast<int>(state.range(0)), Table9()), 2000, Noise(),
+           options);
+}
+
 // Without yielding, every step's equations are linear: one solve per step is the ideal.
 void BM_StoriesLinearIsolator(benchmark::State& state) {
   const int stories = static_cast<int>(state.range(0));
@@ -253,6 +266,14 @@ void BM_PlanFiveStoryTable9(benchmark::State& state) {
   RunPlanSteps(state, structure::BuildPlanBuilding(building), 6000);
 }
 
+// The bundled plan model with the linear solver range(0) forced (as BM_StoriesTable9Solver).
+void BM_PlanFiveStoryTable9Solver(benchmark::State& state) {
+  const structure::LaidOutStructure building = structure::BuildPlanBuilding(BundledPlanBuilding());
+  NewmarkOptions options;
+  options.linear_solver = static_cast<NewmarkOptions::LinearSolver>(state.range(0));
+  RunSteps(state, building.structure, 2000, PlanNoise(building.layout), options);
+}
+
 // The devices engineers specify, one law a bearing, for 150 t (the one-direction building's mass
 // and each plan bearing's share): range(0) = 0 a lead-rubber bearing without heating (Qd 6 % of
 // the weight, T = 4.2 s on Kd), 1 a friction pendulum with velocity-dependent friction on the
@@ -315,6 +336,39 @@ void BM_PlanStoriesLinearIsolators(benchmark::State& state) {
   RunPlanSteps(state, structure::BuildPlanBuilding(building), 10000);
 }
 
+// One Newton iteration's linear algebra: factorise a tangent and solve once, with the solver
+// range(0) (NewmarkOptions::LinearSolver: 1 KLU, 2 dense, 3 banded), n = range(1) dofs, on the
+// pattern of an isolated shear building with relative Rayleigh damping (range(2) = 0: tridiagonal
+// with a full base row and column) or on a band of range(2) diagonals each side. The values are
+// those of a diagonally dominant matrix, slightly unsymmetric, changed a little every iteration.
+void BM_TangentSolver(benchmark::State& state) {
+  const auto kind = static_cast<NewmarkOptions::LinearSolver>(state.range(0));
+  const int n = static_cast<int>(state.range(1)), width = static_cast<int>(state.range(2));
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const bool in =
+          width == 0 ? std::abs(i - j) <= 1 || i == 0 || j == 0 : std::abs(i - j) <= width;
+      if (in) entries.emplace_back(i, j, i == j ? 4.0 * (width + 1) : -1.0 - 0.01 * (i > j));
+    }
+  }
+  structure::SparseMatrix matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  matrix.makeCompressed();
+  if (width == 0) matrix.coeffRef(0, 0) = 2.0 * n;
+  TangentSolver solver(matrix, kind);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+  Eigen::VectorXd x(n);
+  double* diagonal = &matrix.coeffRef(n - 1, n - 1);
+  for (auto _ : state) {
+    *diagonal += 1e-9;
+    if (!solver.Factorize(matrix)) state.SkipWithError("singular");
+    x = b;
+    solver.Solve(&x);
+    benchmark::DoNotOptimize(x.data());
+  }
+}
+
 BENCHMARK(BM_SdofThm1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanFiveStoryTable9)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanStoriesLinearIsolators)
@@ -338,6 +392,13 @@ BENCHMARK(BM_StoriesTable9)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesLinearIsolator)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetUpRayleighBuilding)->Arg(5)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StoriesTable9Solver)
+    ->ArgsProduct({{2, 5, 8, 11, 14, 17, 23, 35}, {1, 2, 3}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanFiveStoryTable9Solver)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TangentSolver)
+    ->ArgsProduct({{1, 2, 3}, {2, 6, 9, 12, 18, 24, 36, 60}, {0}})
+    ->ArgsProduct({{1, 3}, {1001}, {0, 1, 2, 3, 4, 6, 8}});
 
 }  // namespace
 }  // namespace isolab::integrators

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "row_scaling.h"
+
 namespace isolab::integrators {
 
 KluSolver::KluSolver(const structure::SparseMatrix& pattern) {
@@ -24,13 +26,16 @@ bool KluSolver::Factorize(structure::SparseMatrix& matrix) {
   int* rows = matrix.innerIndexPtr();
   double* values = matrix.valuePtr();
   if (numeric_ != nullptr && klu_refactor(columns, rows, values, symbolic_, numeric_, &common_) &&
-      klu_rcond(symbolic_, numeric_, &common_) && common_.rcond > 1e-12) {
+      klu_rcond(symbolic_, numeric_, &common_) && common_.rcond > kMinPivotRatio) {
     return true;
   }
   // First factorisation, or the pivots chosen earlier went bad: factor afresh with pivoting.
   if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
+  // The fresh pivots are held to the same bound: a matrix singular to working precision is refused
+  // whichever solver factorises it (row_scaling.h).
   numeric_ = klu_factor(columns, rows, values, symbolic_, &common_);
-  return numeric_ != nullptr && common_.status == KLU_OK;
+  return numeric_ != nullptr && common_.status == KLU_OK &&
+         klu_rcond(symbolic_, numeric_, &common_) && common_.rcond > kMinPivotRatio;
 }
 
 void KluSolver::Solve(Eigen::VectorXd* rhs) {

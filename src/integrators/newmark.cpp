@@ -10,7 +10,7 @@
 
 #include "blow_up.h"
 #include "isolab/core/errors.h"
-#include "klu_solver.h"
+#include "tangent_solver.h"
 
 namespace isolab::integrators {
 
@@ -27,6 +27,16 @@ void NewmarkOptions::Validate() const {
   }
   if (max_iterations < 1) {
     throw InvalidParameter({"max_iterations", double(max_iterations), "must be >= 1"});
+  }
+  switch (linear_solver) {
+    case LinearSolver::kAuto:
+    case LinearSolver::kKlu:
+    case LinearSolver::kDense:
+    case LinearSolver::kBanded:
+      break;
+    default:
+      throw InvalidParameter({"linear_solver", double(static_cast<int>(linear_solver)),
+                              "must be auto, klu, dense or banded"});
   }
   if (max_step_cuts < 0 || max_step_cuts > kMaxStepCuts) {
     throw InvalidParameter(
@@ -72,7 +82,7 @@ class NewmarkRun {
         mass_influence_(excitation.MassInfluence(structure.mass())),
         tangent_(structure.tangent_pattern()),
         constant_tangent_(structure.tangent_pattern()),
-        solver_(structure.tangent_pattern()),
+        solver_(structure.tangent_pattern(), options.linear_solver),
         committed_(structure.law_count()),
         trial_(structure.law_count()),
         rest_(structure.law_count()),
@@ -316,7 +326,7 @@ class NewmarkRun {
   structure::SparseMatrix tangent_;
   structure::SparseMatrix constant_tangent_;  // StartTangent's terms, for constant_factors_
   std::optional<structure::TangentFactors> constant_factors_;
-  KluSolver solver_;
+  TangentSolver solver_;
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;
   std::vector<double> member_forces_, law_forces_;

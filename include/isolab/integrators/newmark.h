@@ -3,7 +3,9 @@
 //   R(u) = p_eff(t+h) - M a(u) - f(u, v(u)),   a = (u - u_n)/(beta h^2) - v_n/(beta h) - (1/(2
 //   beta) - 1) a_n, v = gamma/(beta h) (u - u_n) + (1 - gamma/beta) v_n + h (1 - gamma/(2 beta))
 //   a_n, K_eff = K_t + gamma/(beta h) C_t + M/(beta h^2),
-// with the tangent assembled into a fixed sparse pattern and factorised by KLU. Newton stops when
+// with the tangent assembled into a fixed sparse pattern and factorised by a linear solver chosen
+// once per run from that pattern (dense LU for small systems, banded LU for narrow bands, KLU
+// otherwise: src/integrators/tangent_solver.h). Newton stops when
 // the residual is within force_tolerance of the step's force scale, when a correction is within
 // displacement_tolerance, or when the residual is at the round-off of its own evaluation,
 // 2 eps || |K_eff| |u| ||_inf (only reached where the force tolerance is out of floating-point
@@ -25,12 +27,23 @@ struct NewmarkOptions {
     kModifiedStep,     // tangent at each step's predictor, factorised once per step
   };
 
+  // The factorisation of the effective tangent. kAuto chooses from the tangent's sparsity pattern
+  // once per run; the others force one (for tests and measurements: every solver gives the same
+  // response to round-off, at different costs).
+  enum class LinearSolver {
+    kAuto,
+    kKlu,     // SuiteSparse KLU, any pattern
+    kDense,   // dense LU with partial pivoting, O(n^3): small systems only
+    kBanded,  // banded LU with partial pivoting within the pattern's bandwidths
+  };
+
   double beta = 0.25;  // 1/4 average acceleration, 1/6 linear acceleration; (0, 0.5]
   double gamma = 0.5;  // >= 0.5; 0.5 for no numerical damping
   Newton newton = Newton::kFull;
   double force_tolerance = 1e-10;         // residual norm / force scale of the step; (0, 1)
   double displacement_tolerance = 1e-12;  // correction norm / displacement scale; (0, 1)
   int max_iterations = 30;                // Newton iterations per attempt, >= 1
+  LinearSolver linear_solver = LinearSolver::kAuto;  // see LinearSolver
   // Levels of halving a step that does not converge, in [0, kMaxStepCuts]: a step may take up to
   // 2^(max_step_cuts + 1) attempts, so the bound keeps a failing run's time finite.
   int max_step_cuts = 8;

@@ -1,0 +1,141 @@
+#include "dense_lu.h"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "row_scaling.h"
+
+namespace isolab::integrators {
+namespace {
+
+// kN > 0: the size known at compile time; 0: arrays.n.
+template <int kN>
+bool FactorizeDense(const DenseLu::Arrays& arrays, const double* values) {
+  const int n = kN > 0 ? kN : arrays.n;
+  double* a = arrays.lu;
+#pragma GCC unroll 16
+  for (int k = 0; k < n * n; ++k) a[k] = 0.0;
+#pragma GCC unroll 16
+  for (int k = 0; k < arrays.entries; ++k) a[arrays.positions[k]] = values[k];
+  // Rows scaled by their largest magnitude (KLU's default scaling).
+  double* scales = arrays.scales;
+#pragma GCC unroll 16
+  for (int i = 0; i < n; ++i) scales[i] = 0.0;
+#pragma GCC unroll 16
+  for (int j = 0; j < n; ++j) {
+#pragma GCC unroll 16
+    for (int i = 0; i < n; ++i) scales[i] = std::max(scales[i], std::abs(a[i + j * n]));
+  }
+#pragma GCC unroll 16
+  for (int i = 0; i < n; ++i) {
+    if (!(scales[i] > 0.0 && std::isfinite(scales[i]))) return false;
+    scales[i] = 1.0 / scales[i];
+  }
+#pragma GCC unroll 16
+  for (int j = 0; j < n; ++j) {
+#pragma GCC unroll 16
+    for (int i = 0; i < n; ++i) a[i + j * n] *= scales[i];
+  }
+  PivotRatio ratio;
+#pragma GCC unroll 16
+  for (int k = 0; k < n; ++k) {
+    double* column = a + k * n;
+    int p = k;
+    double largest = std::abs(column[k]);
+#pragma GCC unroll 16
+    for (int i = k + 1; i < n; ++i) {
+      if (std::abs(column[i]) > largest) {
+        largest = std::abs(column[i]);
+        p = i;
+      }
+    }
+    arrays.pivots[k] = p;
+    ratio.Add(largest);
+    if (largest == 0.0) return false;
+    // Only the columns still to eliminate are exchanged (the multipliers of earlier steps stay
+    // where they were made), so Solve applies each exchange just before its step's column.
+    if (p != k) {
+#pragma GCC unroll 16
+      for (int j = k; j < n; ++j) std::swap(a[k + j * n], a[p + j * n]);
+    }
+    const double inverse = arrays.inverse_diagonal[k] = 1.0 / column[k];
+#pragma GCC unroll 16
+    for (int i = k + 1; i < n; ++i) column[i] *= inverse;
+#pragma GCC unroll 16
+    for (int j = k + 1; j < n; ++j) {
+      double* target = a + j * n;
+      const double factor = target[k];
+#pragma GCC unroll 16
+      for (int i = k + 1; i < n; ++i) target[i] -= column[i] * factor;
+    }
+  }
+  return ratio.Acceptable();
+}
+
+template <int kN>
+void SolveDense(const DenseLu::Arrays& arrays, double* b) {
+  const int n = kN > 0 ? kN : arrays.n;
+  const double* a = arrays.lu;
+#pragma GCC unroll 16
+  for (int i = 0; i < n; ++i) b[i] *= arrays.scales[i];
+#pragma GCC unroll 16
+  for (int k = 0; k < n; ++k) {
+    const int p = arrays.pivots[k];
+    if (p != k) std::swap(b[k], b[p]);
+    const double* column = a + k * n;
+    const double bk = b[k];
+#pragma GCC unroll 16
+    for (int i = k + 1; i < n; ++i) b[i] -= column[i] * bk;
+  }
+#pragma GCC unroll 16
+  for (int k = n - 1; k >= 0; --k) {
+    const double* column = a + k * n;
+    b[k] *= arrays.inverse_diagonal[k];  // a multiplication: back substitution is a chain
+    const double bk = b[k];
+#pragma GCC unroll 16
+    for (int i = 0; i < k; ++i) b[i] -= column[i] * bk;
+  }
+}
+
+// The kernels of sizes 0 (any) to kDenseFixedDofs.
+template <int... kSizes>
+constexpr std::array<std::pair<DenseLu::Factorizer, DenseLu::Solver>, sizeof...(kSizes)>
+DenseKernels(std::integer_sequence<int, kSizes...>) {
+  return {std::pair{&FactorizeDense<kSizes>, &SolveDense<kSizes>}...};
+}
+constexpr auto kDenseKernels = DenseKernels(std::make_integer_sequence<int, kDenseFixedDofs + 1>());
+
+}  // namespace
+
+DenseLu::DenseLu(const structure::SparseMatrix& pattern)
+    : n_(static_cast<int>(pattern.rows())),
+      positions_(pattern.nonZeros()),
+      lu_(static_cast<std::size_t>(n_) * n_),
+      inverse_diagonal_(n_),
+      pivots_(n_),
+      row_scales_(n_) {
+  for (int j = 0; j < n_; ++j) {
+    for (int k = pattern.outerIndexPtr()[j]; k < pattern.outerIndexPtr()[j + 1]; ++k) {
+      positions_[k] = pattern.innerIndexPtr()[k] + j * n_;
+    }
+  }
+  arrays_ = {n_,
+             lu_.data(),
+             inverse_diagonal_.data(),
+             pivots_.data(),
+             row_scales_.data(),
+             positions_.data(),
+             static_cast<int>(positions_.size())};
+  const auto& kernels = kDenseKernels[n_ <= kDenseFixedDofs ? n_ : 0];
+  factorize_ = kernels.first;
+  solve_ = kernels.second;
+}
+
+bool DenseLu::Factorize(const structure::SparseMatrix& matrix) {
+  return factorize_(arrays_, matrix.valuePtr());
+}
+
+void DenseLu::Solve(Eigen::VectorXd* rhs) const { solve_(arrays_, rhs->data()); }
+
+}  // namespace isolab::integrators
