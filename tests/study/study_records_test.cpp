@@ -10,6 +10,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/study/run_job.h"
+#include "own_test_file.h"
 
 namespace isolab::study {
 namespace {
@@ -38,7 +39,7 @@ TEST(StudyRecords, AJobHandedItsRecordGivesWhatReadingItGives) {
   EXPECT_EQ(records.Find(0, 0, 0.01), nullptr);
 
   const Job job = ExpandJobs(study.variants.size(), study.records.size(), 1)[0];
-  const std::string out = ::testing::TempDir() + "study_records_test";
+  const std::string out = testing::OwnTestDirectory().string();
   const JobResult alone = RunJob(study, job, out, "test");
   const JobResult handed = RunJob(study, job, out, "test", nullptr, &records);
   ASSERT_TRUE(alone.completed) << alone.message;
@@ -63,7 +64,7 @@ TEST(StudyRecords, ARecordThatCannotBeReadFailsEachJobWithItsMessage) {
   const Job job = ExpandJobs(study.variants.size(), study.records.size(), 1)[1];
   ASSERT_EQ(job.record, 1u);
   const JobResult result =
-      RunJob(study, job, ::testing::TempDir() + "study_records_test", "test", nullptr, &records);
+      RunJob(study, job, testing::OwnTestDirectory().string(), "test", nullptr, &records);
   EXPECT_FALSE(result.completed);
   EXPECT_EQ(result.message, expected);
 }
