@@ -12,6 +12,7 @@
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
+#include "isolab/analysis/run_band.h"
 #include "isolab/analysis/run_report.h"
 #include "isolab/analysis/run_text.h"
 #include "isolab/analysis/solve.h"
@@ -182,6 +183,12 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
       ->check(Between(1e-14, 0.09));
   command->add_option("--atol", options.atol, "IDA absolute tolerance (replaces analysis.ida.atol)")
       ->check(Positive());
+  command
+      ->add_option("--samples", options.samples,
+                   "Parameter sets drawn from the fitted model's uncertainty (isolab fit "
+                   "--building) for the 5-50-95 % spread of the peaks")
+      ->check(CLI::Range(2, 100000));
+  command->add_option("--seed", options.seed, "Seed of the drawn parameter sets (--samples)");
   command->add_flag("--json", options.json, "Print the summary as JSON");
   command->add_flag("-q,--quiet", options.quiet,
                     "No preamble (record, model summary, grid) before the peaks");
@@ -217,7 +224,9 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     }
     CheckPlotScript("plot_result.py");
   }
-  const analysis::Problem problem = analysis::Prepare(model, ChooseOverrides(model, options));
+  if (options.samples > 0) analysis::CheckRunBand(model);
+  const analysis::RunOverrides overrides = ChooseOverrides(model, options);
+  const analysis::Problem problem = analysis::Prepare(model, overrides);
   analysis::SolveOptions solve;
   solve.analysis = analysis::ChooseIntegrator(
       model.analysis, {options.integrator, options.rtol, options.atol}, "--");
@@ -229,10 +238,22 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
   out.flush();
   PrintWarnings(problem.summary.warnings);
   const analysis::Summary summary = analysis::Solve(solve, problem);
+  std::optional<analysis::RunBand> band;
+  if (options.samples > 0 && summary.ok()) {
+    if (!options.quiet && !options.json) {
+      fmt::print(stderr, "isolab run: {} parameter sets drawn from the model's uncertainty\n",
+                 options.samples);
+    }
+    band =
+        analysis::PredictRunBand(model, overrides, solve.analysis, options.samples, options.seed);
+  }
   if (options.json) {
-    out << analysis::RunReport(problem, solve.analysis, summary).dump(2) << "\n";
+    nlohmann::json json = analysis::RunReport(problem, solve.analysis, summary);
+    if (band) json["band"] = analysis::RunBandJson(*band, options.seed);
+    out << json.dump(2) << "\n";
   } else {
     analysis::PrintSummary(problem, solve.analysis, summary, out);
+    if (band) analysis::PrintRunBand(*band, options.seed, model.units, out);
   }
   // After the run: what the response itself shows (the model's warnings were printed before).
   PrintWarnings({summary.warnings.begin() + static_cast<long>(problem.summary.warnings.size()),

@@ -44,6 +44,8 @@ struct RunOptions {
   std::string integrator;      // "newmark" or "ida"; empty: the model's analysis.integrator
   std::optional<double> rtol;  // IDA relative tolerance, overriding analysis.ida.rtol
   std::optional<double> atol;  // IDA absolute tolerance, overriding analysis.ida.atol
+  int samples = 0;             // parameter sets drawn from a fitted model's uncertainty; 0: no band
+  unsigned seed = 1;           // of the drawn sets
   bool json = false;
   bool quiet = false;               // -q: no preamble (record, model, grid) before the peaks
   std::optional<std::string> plot;  // --plot[=DIR]: PNGs by plot_result.py (default DIR: beside

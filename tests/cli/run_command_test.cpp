@@ -565,6 +565,65 @@ TEST(RunCommand, CsvExportHasNamedUnitTaggedColumns) {
   EXPECT_EQ(peak, PeakIsolatorDisplacement(json));
 }
 
+// isolab run --samples of a model carrying a fit's uncertainty: the spread of the peaks over
+// drawn parameter sets. With a covariance of zero every draw is the model itself (its values
+// through exp(ln p), to round-off), so the band collapses onto the run's own peaks; with a spread,
+// the percentiles are ordered and apart. A model without uncertainty is refused before the run
+// writes anything.
+TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
+  const auto model = [](const std::string& covariance) {
+    const auto path =
+        isolab::testing::OwnTestFile("fitted_" + std::to_string(covariance.size()) + ".yaml");
+    std::ofstream(path) << "units: {force: kN, length: mm, time: s}\n"
+                           "structure:\n  type: shear_building\n  base_mass: 30 t\n"
+                           "  stories: {count: 3, mass: 30 t, stiffness: 60 kN/mm}\n"
+                           "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
+                           "isolation:\n  components:\n"
+                           "    - {name: iso, type: bhm2, k0: 3, k1: 0.4, uy: 5}\n"
+                           "excitation:\n  ground_motion: {file: "
+                        << Source("ground_motions/fwn_firm_seed1.at2")
+                        << "}\nanalysis: {dt: 0.01}\n"
+                           "uncertainty:\n  parameters: [{name: isolation.iso.k1, value: 0.4, "
+                           "log: true}, {name: stories.stiffness, value: 60, log: true}]\n"
+                           "  covariance: "
+                        << covariance << "\n";
+    return path.string();
+  };
+  const auto results = isolab::testing::OwnTestFile("band.h5").string();
+  const auto run = [&](const std::string& path) {
+    const auto outcome =
+        RunIsolab("run " + path + " --samples 12 --seed 3 --json -q -o " + results);
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.output;
+    return nlohmann::json::parse(outcome.output);
+  };
+  const auto fixed = run(model("[[0, 0], [0, 0]]"));
+  ASSERT_EQ(fixed["band"]["samples"].get<int>(), 12);
+  for (const char* peak :
+       {"isolator_displacement", "base_shear", "roof_absolute_acceleration", "story_drift"}) {
+    const double own = fixed["peaks"][peak]["value"].get<double>();
+    for (const char* p : {"p5", "p50", "p95"}) {
+      EXPECT_NEAR(fixed["band"][peak][p].get<double>(), own, 1e-9 * own) << peak << " " << p;
+    }
+  }
+  const auto spread = run(model("[[0.01, 0], [0, 0.0025]]"));
+  for (const char* peak : {"isolator_displacement", "base_shear", "roof_absolute_acceleration"}) {
+    const auto& band = spread["band"][peak];
+    EXPECT_LT(band["p5"].get<double>(), band["p50"].get<double>()) << peak;
+    EXPECT_LT(band["p50"].get<double>(), band["p95"].get<double>()) << peak;
+  }
+
+  std::filesystem::remove(results);
+  const auto none = RunIsolab(
+      "run " + Source("models/buildings/five_story_table9.yaml") + " --samples 12 -q -o " + results,
+      true);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.output.find("no uncertainty"), std::string::npos) << none.output;
+  EXPECT_FALSE(std::filesystem::exists(results));
+  const auto one = RunIsolab("run " + model("[[0]]") + " --samples 1 -q -o " + results, true);
+  EXPECT_NE(one.exit_code, 0);
+  EXPECT_NE(one.output.find("--samples"), std::string::npos) << one.output;
+}
+
 }  // namespace
 
 // The command line's output options replace the model's output section: every 10th step of the

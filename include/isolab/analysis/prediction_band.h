@@ -9,12 +9,9 @@
 #include <vector>
 
 #include "isolab/analysis/building_response.h"
+#include "isolab/analysis/parameter_draws.h"
 
 namespace isolab::analysis {
-
-struct Percentiles {
-  double p5 = 0.0, p50 = 0.0, p95 = 0.0;
-};
 
 struct PredictionBand {
   int samples = 0;  // parameter sets run
