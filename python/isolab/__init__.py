@@ -61,7 +61,7 @@ def _model(model):
 
 def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, scale=None,
         dt=None, free_vibration=None, fixed_base=False, trial_displacement=None, integrator=None,
-        rtol=None, atol=None, check=True):
+        rtol=None, atol=None, samples=None, seed=1, check=True):
     """Time-history analysis: `isolab run` with its options as keyword arguments.
 
     model: a Model or a model file's path. record: a record file replacing the model's, or a
@@ -71,7 +71,9 @@ def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, 
     the command line's --record-h2 and --angle. scale, dt (the analysis step, model time unit), free_vibration
     ("auto" or a time in s), fixed_base, trial_displacement, integrator ("newmark" or "ida"),
     rtol and atol are the command line's --scale, --dt, --free-vibration, --fixed-base,
-    --trial-displacement, --integrator, --rtol and --atol.
+    --trial-displacement, --integrator, --rtol and --atol. samples and seed are --samples and
+    --seed: for a model carrying a fit's uncertainty, the 5/50/95 % spread of the peaks over that
+    many drawn parameter sets, in result.summary["band"].
 
     Returns a Result. A run that stops early raises RunError (its .result holds the rows up to
     the failure) unless check=False. Each plausibility warning of the run (result.warnings) is
@@ -82,7 +84,7 @@ def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, 
     result = _run(_model(model), record, h2, angle=angle, units=units, record_dt=record_dt,
                   scale=scale, dt=dt, free_vibration=free_vibration, fixed_base=fixed_base,
                   trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
-                  atol=atol)
+                  atol=atol, samples=int(samples or 0), seed=int(seed))
     for message in result.warnings:
         warnings.warn(message, IsolabWarning, stacklevel=2)
     if check and not result.ok:

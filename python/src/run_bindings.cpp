@@ -5,12 +5,14 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <memory>
+#include <optional>
 
 #include "arrays.h"
 #include "bindings.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
 #include "isolab/analysis/results_file.h"
+#include "isolab/analysis/run_band.h"
 #include "isolab/analysis/run_report.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
@@ -30,6 +32,8 @@ struct RunResult {
   integrators::ResponseHistory response;
   analysis::Summary summary;
   std::vector<analysis::Series> series;
+  std::optional<analysis::RunBand> band;  // samples=: the peaks' spread over drawn parameters
+  unsigned seed = 1;
 
   analysis::RunDescription Description() const {
     return {&problem, &analysis, &summary.run, &summary.peaks, ISOLAB_VERSION, {}};
@@ -46,22 +50,30 @@ struct RunOptions {
   analysis::RunOverrides overrides;
   std::optional<std::string> integrator;
   std::optional<double> rtol, atol;
+  int samples = 0;  // parameter sets drawn from the model's uncertainty; 0: no band
+  unsigned seed = 1;
 };
 
 std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
   const model::AnalysisSection analysis = analysis::ChooseIntegrator(
       model.file().analysis, {options.integrator.value_or(""), options.rtol, options.atol}, "");
+  if (options.samples > 0) analysis::CheckRunBand(model.file());
   std::shared_ptr<RunResult> result;
   {
     py::gil_scoped_release release;  // a thread pool of runs scales
     result = std::make_shared<RunResult>(
-        RunResult{analysis::Prepare(model.file(), options.overrides), analysis, {}, {}, {}});
+        RunResult{analysis::Prepare(model.file(), options.overrides), analysis, {}, {}, {}, {}, 1});
     integrators::HistoryRecorder recorder = integrators::RecordHistory(
         result->problem.structure, result->problem.grid, &result->response);
     integrators::ResponseObserver* const also[] = {&recorder};
     analysis::SolveOptions solve;
     solve.analysis = analysis;
     result->summary = analysis::Solve(solve, result->problem, also);
+    result->seed = options.seed;
+    if (options.samples > 0 && result->summary.ok()) {
+      result->band = analysis::PredictRunBand(model.file(), options.overrides, analysis,
+                                              options.samples, options.seed);
+    }
   }
   result->series = analysis::ResultSeries(result->problem, model::OutputSelection{});
   return result;
@@ -105,7 +117,8 @@ py::array SeriesArray(const std::shared_ptr<RunResult>& result, const analysis::
 
 // What `isolab run --json` prints (analysis::RunReport), as Python objects.
 py::dict Summary(const RunResult& r) {
-  const nlohmann::json report = analysis::RunReport(r.problem, r.analysis, r.summary);
+  nlohmann::json report = analysis::RunReport(r.problem, r.analysis, r.summary);
+  if (r.band) report["band"] = analysis::RunBandJson(*r.band, r.seed);
   return py::module_::import("json").attr("loads")(report.dump());
 }
 
@@ -176,8 +189,13 @@ void BindRun(py::module_& module) {
          std::optional<double> record_dt, std::optional<double> scale, std::optional<double> dt,
          const py::object& free_vibration, bool fixed_base,
          std::optional<double> trial_displacement, const std::optional<std::string>& integrator,
-         std::optional<double> rtol, std::optional<double> atol) {
+         std::optional<double> rtol, std::optional<double> atol, int samples, unsigned seed) {
         RunOptions options;
+        if (samples != 0 && samples < 2) {
+          throw InputError({"samples"}, "draws a band: 2 or more parameter sets");
+        }
+        options.samples = samples;
+        options.seed = seed;
         analysis::RunOverrides& o = options.overrides;
         if (!h2.is_none() && record.is_none()) {
           throw InputError({"h2"}, "needs record: the pair's first component");
@@ -228,7 +246,8 @@ void BindRun(py::module_& module) {
       py::arg("record_dt") = py::none(), py::arg("scale") = py::none(), py::arg("dt") = py::none(),
       py::arg("free_vibration") = py::none(), py::arg("fixed_base") = false,
       py::arg("trial_displacement") = py::none(), py::arg("integrator") = py::none(),
-      py::arg("rtol") = py::none(), py::arg("atol") = py::none());
+      py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("samples") = 0,
+      py::arg("seed") = 1);
 }
 
 }  // namespace isolab::python

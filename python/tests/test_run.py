@@ -274,3 +274,24 @@ def test_a_run_beyond_the_identified_range_warns(repo, tmp_path, isolab_cli):
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # inside the range: nothing to say
         isolab.run(model, record, scale=0.75)
+
+
+def test_samples_give_the_command_lines_band(repo, tmp_path, isolab_cli):
+    """run(samples=, seed=) is `isolab run --samples --seed`: the same drawn sets, the same band;
+    a model without a fit's uncertainty is refused."""
+    model = tmp_path / "fitted.yaml"
+    model.write_text(
+        "units: {force: kN, length: mm, time: s}\n"
+        "structure: {type: sdof, mass: 30 t}\n"
+        "isolation:\n  components:\n    - {name: iso, type: bhm2, k0: 3, k1: 0.4, uy: 5}\n"
+        f"excitation:\n  ground_motion: {{file: {repo / 'ground_motions/pulse_tp2.at2'}}}\n"
+        "uncertainty:\n  parameters: [{name: isolation.iso.k1, value: 0.4, log: true}]\n"
+        "  covariance: [[0.01]]\n")
+    cli = isolab_cli.json("run", model, "--samples", 6, "--seed", 4, "-o", tmp_path / "r.h5")
+    result = isolab.run(model, samples=6, seed=4)
+    assert result.summary["band"] == cli["band"]
+    assert cli["band"]["samples"] == 6
+    with pytest.raises(isolab.InputError, match="no uncertainty"):
+        isolab.run(repo / FIVE_STORY, samples=4)
+    with pytest.raises(isolab.InputError, match="2 or more"):
+        isolab.run(model, samples=1)
