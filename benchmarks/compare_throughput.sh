@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Throughput of `isolab compare` (runs per second) on 1 and 2 threads and on 1 and 2 MPI ranks,
-# with per-run files (full histories, summaries only) and without: each configuration REPEAT
+# Throughput of `isolab compare` (runs per second) on one and two local workers (this process;
+# two worker processes) and on 1 and 2 MPI ranks, with per-run files (full histories, summaries
+# only) and without: each configuration REPEAT
 # times (default 7), alternating, median and range of the rate isolab reports (first job handed
 # out to last result; MPI start-up and the summary excluded), the speed-up of 2 over 1 from the
-# medians, and the share of the jobs' time their threads spent on their files (writing them, or
-# waiting to hand them to the writer threads: time outside the computation, the Amdahl bound).
+# medians, the share of the jobs' time spent waiting on one another (a lock, a full pipe to the
+# coordinator: the Amdahl bound) and the share spent writing their files (no lock: the output's
+# cost).
 # Output goes to tmpfs (/dev/shm) where there is one, so the cost measured is isolab's and
 # HDF5's, not a disk's. Run by hand, on as quiet a machine as there is (docs/benchmarks.md); the
 # load average is printed before and after; never in CI.
@@ -25,26 +27,29 @@ trap 'rm -rf "$out"' EXIT
 mpi=(mpirun --oversubscribe)
 if [ "$(id -u)" -eq 0 ]; then mpi+=(--allow-run-as-root); fi
 
-# One run: prints "RATE SHARE" from isolab's closing stderr lines:
-#   "40 runs in 0.21 s on 2 threads: 190.4 runs/s; 0 failed"
-#   "per-run files (full): 1.2 % of the jobs' time on their threads; ..."
+# One run: prints "RATE WAITING WRITING" from isolab's closing stderr lines:
+#   "40 runs in 0.21 s on 2 processes: 190.4 runs/s; 0 failed"
+#   "waiting on one another: 0.01 % of the jobs' time"
+#   "per-run files (full): 30.2 % of the jobs' time writing them"
 once() {
   local folder=$1
   shift
   rm -rf "$folder"
   "$@" -o "$folder" 2>&1 >/dev/null | awk '
+    function percent() { for (i = 1; i <= NF; ++i) if ($i == "%") return $(i - 1) }
     /runs\/s;/ { for (i = 1; i <= NF; ++i) if ($i == "runs/s;") rate = $(i - 1) }
-    /of the jobs.* time/ { for (i = 1; i <= NF; ++i) if ($i == "%") share = $(i - 1) }
-    END { printf "%s %s\n", rate, share == "" ? "-" : share }'
+    /^waiting on one another/ { waiting = percent() }
+    /^per-run files/ { writing = percent() }
+    END { printf "%s %s %s\n", rate, waiting == "" ? "-" : waiting, writing == "" ? "-" : writing }'
 }
 
-# Median, range and the files' share for each configuration, the configurations alternating.
-declare -A rates shares
+# Median, range and the shares for each configuration, the configurations alternating.
+declare -A rates waits writes
 configurations=()
 add() { configurations+=("$1"); }
 for runs in "${modes[@]}"; do
-  add "$runs|threads 1|build/isolab compare $study --runs $runs -j 1"
-  add "$runs|threads 2|build/isolab compare $study --runs $runs -j 2"
+  add "$runs|local 1|build/isolab compare $study --runs $runs -j 1"
+  add "$runs|local 2|build/isolab compare $study --runs $runs -j 2"
   add "$runs|mpi -np 1|${mpi[*]} -np 1 build/isolab compare $study --runs $runs"
   add "$runs|mpi -np 2|${mpi[*]} -np 2 build/isolab compare $study --runs $runs"
 done
@@ -53,9 +58,10 @@ for _ in $(seq "$repeat"); do
   for c in "${configurations[@]}"; do
     IFS='|' read -r runs label command <<<"$c"
     # shellcheck disable=SC2086
-    read -r rate share < <(once "$out/run" $command)
+    read -r rate wait write < <(once "$out/run" $command)
     rates[$c]+="$rate "
-    shares[$c]+="$share "
+    waits[$c]+="$wait "
+    writes[$c]+="$write "
   done
 done
 echo "load average after:  $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -67,12 +73,12 @@ for c in "${configurations[@]}"; do
   IFS='|' read -r runs label _ <<<"$c"
   m=$(median <<<"${rates[$c]}")
   medians[$runs|$label]=$m
-  printf 'runs %-8s %-10s median %7.1f runs/s  range %7.1f-%-7.1f  files: %s %% of job time\n' \
+  printf 'runs %-8s %-10s median %7.1f runs/s  range %7.1f-%-7.1f  waiting %s %%  writing %s %%\n' \
     "$runs" "$label" "$m" "$(lowest <<<"${rates[$c]}")" "$(highest <<<"${rates[$c]}")" \
-    "$(median <<<"${shares[$c]}")"
+    "$(median <<<"${waits[$c]}")" "$(median <<<"${writes[$c]}")"
 done
 for runs in "${modes[@]}"; do
-  awk -v r="$runs" -v t1="${medians[$runs|threads 1]}" -v t2="${medians[$runs|threads 2]}" \
+  awk -v r="$runs" -v t1="${medians[$runs|local 1]}" -v t2="${medians[$runs|local 2]}" \
     -v m1="${medians[$runs|mpi -np 1]}" -v m2="${medians[$runs|mpi -np 2]}" \
-    'BEGIN { printf "runs %-8s speed-up of 2 over 1: threads %.2f, MPI ranks %.2f\n", r, t2 / t1, m2 / m1 }'
+    'BEGIN { printf "runs %-8s speed-up of 2 over 1: processes %.2f, MPI ranks %.2f\n", r, t2 / t1, m2 / m1 }'
 done

@@ -312,11 +312,11 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, run
     """`isolab compare`: a study's isolator variants under its records and scale factors.
 
     study: the study file (YAML). output (the folder; default the study's output.directory, else
-    its file name's stem), jobs (threads; 0: every hardware thread), quiet and free_vibration
-    ("auto" or a time in s) and runs ("none", "summary" or "full": the per-run files; default the
-    study's output.runs, else "full") are the command line's -o, -j, -q, --free-vibration and
-    --runs; progress goes to stderr unless quiet. Runs on local threads, the GIL released (MPI stays with the command
-    line under mpirun).
+    its file name's stem), jobs (worker processes; 0: every hardware thread), quiet and
+    free_vibration ("auto" or a time in s) and runs ("none", "summary" or "full": the per-run
+    files; default the study's output.runs, else "full") are the command line's -o, -j, -q,
+    --free-vibration and --runs; progress goes to stderr unless quiet. Runs on local worker
+    processes, the GIL released (MPI stays with the command line under mpirun).
 
     Writes what the command line writes: runs/<variant>/<record>_x<scale>.h5 (unless runs is
     "none") and summary.csv and
@@ -338,8 +338,9 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     """`isolab design`: an isolated building designed as ASCE 7-16 chapter 17 asks.
 
     design_file: the design file (YAML, docs/design.md). output (the folder; default the design's
-    output.directory, else its file name's stem), jobs (threads; 0: every hardware thread) and
-    quiet are the command line's -o, -j and -q. Runs on local threads, the GIL released.
+    output.directory, else its file name's stem), jobs (worker processes; 0: every hardware
+    thread) and quiet are the command line's -o, -j and -q. Runs on local worker processes, the GIL
+    released.
 
     Writes what the command line writes (the bound models, the synthetic records, each run's
     summary file, the histories kept for figures, design.md and the CSV files) except the

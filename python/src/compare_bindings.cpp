@@ -116,10 +116,9 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
   {
     // The runs touch no Python object; progress goes to stderr as the command line's does.
     py::gil_scoped_release release;
-    // As the command line: several threads hand their runs' files to as many writer threads.
-    const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
+    const std::unique_ptr<study::Scheduler> scheduler = study::MakeLocalScheduler(threads);
     outcome = study::RunStudy(
-        study, expanded, folder, ISOLAB_VERSION, *scheduler, threads > 1 ? threads : 0,
+        study, expanded, folder, ISOLAB_VERSION, *scheduler,
         [&](const study::JobResult& result, std::size_t done, std::size_t total) {
           if (!quiet) {
             fmt::print(stderr, "{}\n",

@@ -29,7 +29,7 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   study::DesignOutcome outcome;
   {
     py::gil_scoped_release release;
-    const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
+    const std::unique_ptr<study::Scheduler> scheduler = study::MakeLocalScheduler(threads);
     outcome =
         study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {
           if (!quiet) fmt::print(stderr, "{}\n", line);

@@ -15,7 +15,7 @@ class ResultsWriter::Sink {
  public:
   virtual ~Sink() = default;
   // `rows` rows of every series: blocks[s] holds rows x series[s].width() values, row-major.
-  virtual void Write(std::span<const std::vector<double>> blocks, std::size_t rows) = 0;
+  virtual void Write(std::span<const ResultsWriter::Block> blocks, std::size_t rows) = 0;
   // Everything but the histories, then the file appears at its path. `run` is complete.
   virtual void Finish(const RunDescription& run) = 0;
 };

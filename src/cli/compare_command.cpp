@@ -30,9 +30,9 @@ namespace isolab::cli {
 namespace {
 
 // Each run allocates and frees its response arrays (megabytes). glibc would map and unmap each
-// from the kernel; threads sharing one address space then serialise on the page faults and TLB
-// shootdowns (15 % of the 2-thread throughput on the bundled study). Served and reused from the
-// heap instead (glibc's ceiling for the threshold is 32 MB on 64-bit).
+// from the kernel, paying its page faults again every run (and, with threads sharing one address
+// space, TLB shootdowns: 15 % of the 2-thread throughput on the bundled study). Served and reused
+// from the heap instead (glibc's ceiling for the threshold is 32 MB on 64-bit).
 void KeepRunBuffersInTheHeap() {
   mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
   mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
@@ -67,12 +67,12 @@ void WriteSummary(const CompareOptions& options, const model::StudyFile& study_f
   }
 }
 
-constexpr int kThreadsPerHardwareThread = 8;
+constexpr int kWorkersPerHardwareThread = 8;
 
-int LocalThreads(const CompareOptions& options) {
-  const int threads =
+int LocalWorkers(const CompareOptions& options) {
+  const int workers =
       options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  return std::max(threads, 1);
+  return std::max(workers, 1);
 }
 
 std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, bool mpi) {
@@ -84,7 +84,7 @@ std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, b
     }
     return study::MakeMpiScheduler();
   }
-  return study::MakeThreadScheduler(LocalThreads(options));
+  return study::MakeLocalScheduler(LocalWorkers(options));
 }
 
 }  // namespace
@@ -93,7 +93,7 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
   CLI::App* command = app.add_subcommand(
       "compare",
       "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
-      "(threads, or MPI ranks under mpirun)");
+      "(worker processes, or MPI ranks under mpirun)");
   command->add_option("study", options.study, "Study file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -101,7 +101,7 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
                       "Output folder (default: the study's output.directory, else its name)");
   command
       ->add_option("-j,--jobs", options.jobs,
-                   "Threads without mpirun (default: every hardware thread)")
+                   "Worker processes without mpirun (default: every hardware thread)")
       ->check(Positive());
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command->add_flag("--plot", options.plot,
@@ -118,15 +118,14 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
 
 int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   const bool mpi = study::LaunchedByMpirun();
-  // More threads than this only share the same cores, each with its own run buffers: -j 1000000
-  // once started 4000 threads.
+  // More workers than this only share the same cores, each with its own run buffers.
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  if (!mpi && options.jobs > kThreadsPerHardwareThread * hardware) {
+  if (!mpi && options.jobs > kWorkersPerHardwareThread * hardware) {
     throw InputError({"--jobs"},
-                     fmt::format("{} threads on {} hardware threads: at most {} "
+                     fmt::format("{} workers on {} hardware threads: at most {} "
                                  "({} per hardware thread)",
-                                 options.jobs, hardware, kThreadsPerHardwareThread * hardware,
-                                 kThreadsPerHardwareThread));
+                                 options.jobs, hardware, kWorkersPerHardwareThread * hardware,
+                                 kWorkersPerHardwareThread));
   }
   model::StudyFile study_file;
   std::string directory;
@@ -163,14 +162,8 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
       fmt::print(stderr, "{}\n",
                  study::JobProgressLine(study_file, jobs[result.job], result, done, total));
     };
-    // Several local threads hand their runs to as many writer threads; one thread, or an MPI
-    // rank, writes each run's file after computing it (run_files.h).
-    const int writer_threads = !mpi && LocalThreads(options) > 1 ? LocalThreads(options) : 0;
-    const bool background_writer = writer_threads > 0;
-    double writing_seconds = 0.0;
     const study::ScheduleOutcome outcome =
-        study::RunStudy(study_file, jobs, directory, ISOLAB_VERSION, *scheduler, writer_threads,
-                        progress, &writing_seconds);
+        study::RunStudy(study_file, jobs, directory, ISOLAB_VERSION, *scheduler, progress);
     failed = outcome.failed;
     // Rank 0 reports failed runs in its summary and exit code. A worker leaving with 1 would
     // make mpirun abort the job while rank 0 may still be plotting.
@@ -183,20 +176,24 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
                      ? static_cast<double>(jobs.size()) / outcome.wall_seconds
                      : 0.0,
                  failed);
-      // What the jobs' threads spent on their files (writing them, or waiting to hand them
-      // over): the share of a job's time outside its computation.
+      // Time the jobs spent waiting on one another bounds what more cores give (Amdahl). Writing
+      // their files waits on nothing (each worker process has its own HDF5): it is the output's
+      // cost, shown apart.
       double job_seconds = 0.0, output_seconds = 0.0;
       for (const study::JobResult& result : outcome.results) {
         job_seconds += result.wall_seconds;
         output_seconds += result.output_seconds;
       }
+      const auto share = [&](double seconds) {
+        return job_seconds > 0.0 ? 100.0 * seconds / job_seconds : 0.0;
+      };
+      if (!mpi) {
+        fmt::print(stderr, "waiting on one another: {:.2f} % of the jobs' time\n",
+                   share(outcome.waiting_seconds));
+      }
       if (study_file.runs != model::RunFiles::kNone) {
-        fmt::print(stderr,
-                   "per-run files ({}): {:.1f} % of the jobs' time on their threads; {:.2f} s "
-                   "writing{}\n",
-                   model::RunFilesName(study_file.runs),
-                   job_seconds > 0.0 ? 100.0 * output_seconds / job_seconds : 0.0, writing_seconds,
-                   background_writer ? " on the writer threads" : "");
+        fmt::print(stderr, "per-run files ({}): {:.1f} % of the jobs' time writing them\n",
+                   model::RunFilesName(study_file.runs), share(output_seconds));
       }
     }
     for (const study::JobResult& result : outcome.results) {

@@ -1,6 +1,6 @@
 // `isolab compare`: a study's isolator variants under a suite of records and scale factors, on
-// local threads or, under mpirun, on MPI ranks; per-run HDF5 results, and a summary (CSV, HDF5
-// and a terminal table) of the compared quantities with their statistics over records and
+// local worker processes or, under mpirun, on MPI ranks; per-run HDF5 results, and a summary (CSV,
+// HDF5 and a terminal table) of the compared quantities with their statistics over records and
 // ratios to a reference variant. See include/isolab/model/study_file.h for the study file.
 #pragma once
 

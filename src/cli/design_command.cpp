@@ -37,7 +37,8 @@ void RegisterDesignCommand(CLI::App& app, DesignOptions& options) {
       ->check(CLI::ExistingFile);
   command->add_option("-o,--output", options.output,
                       "Output folder (default: the design's output.directory, else its name)");
-  command->add_option("-j,--jobs", options.jobs, "Threads (default: every hardware thread)")
+  command
+      ->add_option("-j,--jobs", options.jobs, "Worker processes (default: every hardware thread)")
       ->check(Positive());
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
   command->add_flag("!--no-figures", options.figures,
@@ -46,9 +47,10 @@ void RegisterDesignCommand(CLI::App& app, DesignOptions& options) {
 
 int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   if (study::LaunchedByMpirun()) {
-    throw InputError({"mpirun"},
-                     "isolab design runs on local threads (-j); under mpirun run the suite with "
-                     "isolab compare");
+    throw InputError(
+        {"mpirun"},
+        "isolab design runs on local worker processes (-j); under mpirun run the suite with "
+        "isolab compare");
   }
   const model::DesignFile design = model::LoadDesignFile(options.design);
   if (options.figures) CheckPlotScript(kDesignPlotScript);  // before the runs, not after
@@ -56,7 +58,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   const int threads = options.jobs > 0
                           ? options.jobs
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const std::unique_ptr<study::Scheduler> scheduler = study::MakeThreadScheduler(threads);
+  const std::unique_ptr<study::Scheduler> scheduler = study::MakeLocalScheduler(threads);
   const study::DesignOutcome outcome =
       study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {
         if (!options.quiet) fmt::print(stderr, "{}\n", line);

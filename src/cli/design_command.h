@@ -1,8 +1,8 @@
 // `isolab design`: an isolated building designed as ASCE 7-16 chapter 17 asks, from a design file
 // (include/isolab/model/design_file.h): bound models, the ELF procedure, a suite scaled to the
-// target spectrum, every bound x eccentricity case x record on local threads, the design values
-// and the code's checks; the report, its figures (scripts/plot_design.py) and CSV files in the
-// output folder (study/design.h, study/design_report.h).
+// target spectrum, every bound x eccentricity case x record on local worker processes, the design
+// values and the code's checks; the report, its figures (scripts/plot_design.py) and CSV files in
+// the output folder (study/design.h, study/design_report.h).
 #pragma once
 
 #include <ostream>

@@ -366,7 +366,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                   out.bounds.size(), out.eccentricities.size(), records.size(), jobs.size(),
                   scheduler.Describe()));
   const ScheduleOutcome outcome =
-      RunStudy(study, jobs, output_directory, version, scheduler, 1,
+      RunStudy(study, jobs, output_directory, version, scheduler,
                [&](const JobResult& result, std::size_t done, std::size_t total) {
                  say(JobProgressLine(study, jobs[result.job], result, done, total));
                });
@@ -431,7 +431,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   const fs::path history_folder = fs::path(output_directory) / "histories";
   fs::create_directories(history_folder);
   const ScheduleOutcome kept =
-      RunStudy(histories, history_jobs, history_folder.string(), version, scheduler, 1,
+      RunStudy(histories, history_jobs, history_folder.string(), version, scheduler,
                [](const JobResult&, std::size_t, std::size_t) {});
   for (const JobResult& r : kept.results) {
     out.history_files.push_back(r.completed ? (fs::path("histories") / r.file).string()

@@ -7,11 +7,11 @@
 #include <exception>
 #include <filesystem>
 #include <limits>
-#include <memory>
 #include <optional>
 #include <span>
 
 #include "isolab/analysis/problem.h"
+#include "isolab/analysis/results_file.h"
 #include "isolab/analysis/solve.h"
 #include "run_job_parts.h"
 
@@ -44,7 +44,7 @@ std::string RecordEntryName(const model::StudyRecord& record, std::size_t compon
 }
 
 JobResult RunJob(const model::StudyFile& study, const Job& job, const std::string& output_directory,
-                 const std::string& version, RunFileWriter* files, const StudyRecords* records) {
+                 const std::string& version, const StudyRecords* records) {
   const auto start = std::chrono::steady_clock::now();
   JobResult result;
   result.job = job.index;
@@ -74,9 +74,7 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
     overrides.angle = record.angle;
     overrides.fixed_base = variant.fixed_base;
     overrides.free_vibration = StudyFreeVibration(study, model.units);
-    const auto prepared =
-        std::make_shared<const analysis::Problem>(analysis::Prepare(model, overrides));
-    const analysis::Problem& problem = *prepared;
+    const analysis::Problem problem = analysis::Prepare(model, overrides);
     const double g = model.units.Convert(1.0, "g", dimension::kAcceleration);
     double pga = 0.0;
     for (const io::AppliedRecord& applied : problem.records) {
@@ -92,33 +90,26 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
     options.analysis = model.analysis;
     options.version = version;
     options.output.summary_only = study.runs == model::RunFiles::kSummary;
-    // The run goes to memory, its file is written from there afterwards (run_files.h).
-    RunFile file;
+    // The run goes to memory, its file is written from there once the run is over: no HDF5
+    // call during the run.
+    std::optional<analysis::HeldResultsFile> held;
     std::vector<integrators::ResponseObserver*> observers;
     if (study.runs != model::RunFiles::kNone) {
-      file.job = job.index;
-      file.path = PrepareRunFile(study, job, output_directory);
-      file.problem = prepared;
-      file.analysis = options.analysis;
-      file.selection = options.output;
-      file.version = version;
-      file.held.emplace(file.path, analysis::RunDescription{&problem, &file.analysis, nullptr,
-                                                            nullptr, version, file.selection});
-      if (study.runs == model::RunFiles::kFull) observers.push_back(&*file.held);
+      held.emplace(PrepareRunFile(study, job, output_directory),
+                   analysis::RunDescription{&problem, &options.analysis, nullptr, nullptr, version,
+                                            options.output});
+      if (study.runs == model::RunFiles::kFull) observers.push_back(&*held);
     }
     const analysis::Summary summary = analysis::Solve(options, problem, observers);
-    if (study.runs != model::RunFiles::kNone) {
-      file.run = summary.run;
+    if (held) {
       // The one machine-dependent value of a results file: unknown here, so that a study's files
-      // are the same bytes whichever thread, rank or machine ran them.
-      file.run.wall_seconds = std::numeric_limits<double>::quiet_NaN();
-      file.peaks = summary.peaks;
-      if (files != nullptr) {
-        result.output_seconds = files->Submit(std::move(file));
-      } else {
-        RunFileWriter inline_writer(0, 1);
-        result.output_seconds = inline_writer.Submit(std::move(file));
-      }
+      // are the same bytes whichever process, rank or machine ran them.
+      integrators::RunSummary run = summary.run;
+      run.wall_seconds = std::numeric_limits<double>::quiet_NaN();
+      const auto writing = std::chrono::steady_clock::now();
+      held->Write({&problem, &options.analysis, &run, &summary.peaks, version, options.output});
+      result.output_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - writing).count();
       result.file = RunFileName(study, job);
     }
     result.warnings = summary.warnings;
@@ -139,32 +130,14 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
 
 ScheduleOutcome RunStudy(const model::StudyFile& study, const std::vector<Job>& jobs,
                          const std::string& output_directory, const std::string& version,
-                         Scheduler& scheduler, int writer_threads, const ProgressFunction& progress,
-                         double* writing_seconds) {
-  // Room for two files per writer (one being written, one waiting): a job that finishes while
-  // the writers are busy hands its run over and starts the next, and memory holds a few runs
-  // (those computing, those in the queue), not the study.
-  const std::size_t writers = study.runs == model::RunFiles::kNone
-                                  ? 0
-                                  : static_cast<std::size_t>(std::max(writer_threads, 0));
-  RunFileWriter files(writers, 2 * writers);
+                         Scheduler& scheduler, const ProgressFunction& progress) {
   const StudyRecords records(study);
-  ScheduleOutcome outcome = scheduler.Run(
+  return scheduler.Run(
       jobs.size(),
       [&](std::size_t job) {
-        return RunJob(study, jobs[job], output_directory, version, &files, &records);
+        return RunJob(study, jobs[job], output_directory, version, &records);
       },
       progress);
-  for (const auto& [job, message] : files.Finish()) {
-    JobResult& result = outcome.results[job];
-    if (result.completed) ++outcome.failed;
-    result.completed = false;
-    result.values = NoValues();
-    result.file.clear();
-    result.message = message;
-  }
-  if (writing_seconds != nullptr) *writing_seconds = files.writing_seconds();
-  return outcome;
 }
 
 }  // namespace isolab::study

@@ -24,13 +24,16 @@ class ThreadScheduler final : public Scheduler {
     ScheduleOutcome outcome;
     outcome.results.resize(count);
     std::atomic<std::size_t> next{0};
-    std::mutex mutex;  // guards `done`, `failed` and the progress callback
+    std::mutex mutex;  // guards `done`, `failed`, `waiting_seconds` and the progress callback
     std::size_t done = 0;
     const auto work = [&] {
       for (std::size_t job = next++; job < count; job = next++) {
         // Each job writes only its own slot, so results need no lock.
         outcome.results[job] = GuardedRun(run, job);
+        const auto asked = std::chrono::steady_clock::now();
         const std::lock_guard lock(mutex);
+        outcome.waiting_seconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
         if (!outcome.results[job].completed) ++outcome.failed;
         ++done;
         if (progress) progress(outcome.results[job], done, count);

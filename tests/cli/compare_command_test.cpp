@@ -1,4 +1,4 @@
-// `isolab compare` end to end: the summary does not depend on the number of threads or MPI
+// `isolab compare` end to end: the summary does not depend on the number of workers or MPI
 // ranks (byte-identical CSV and HDF5), its numbers are those of `isolab run` on the same model,
 // record and scale, failed runs are reported while the others finish, progress goes to stderr,
 // and a bad study exits 2 with its location.
@@ -83,8 +83,8 @@ void ExpectSameRunFiles(const fs::path& a, const fs::path& b) {
   EXPECT_EQ(files, others);
 }
 
-TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
-  const fs::path one = OutputFolder("threads1"), two = OutputFolder("threads2");
+TEST(CompareCommand, OneOrTwoWorkersWriteIdenticalSummaries) {
+  const fs::path one = OutputFolder("workers1"), two = OutputFolder("workers2");
   const Outcome run1 =
       RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j 1 -o " + one.string());
   const Outcome run2 =
@@ -103,7 +103,7 @@ TEST(CompareCommand, OneOrTwoThreadsWriteIdenticalSummaries) {
     EXPECT_EQ(rows[i][3], "completed") << i;
     EXPECT_TRUE(fs::exists(one / rows[i].back())) << rows[i].back();
   }
-  // The per-run files too: the same bytes whichever thread (or writer thread) wrote them.
+  // The per-run files too: the same bytes whichever process wrote them.
   ExpectSameRunFiles(one, two);
 }
 
@@ -206,21 +206,21 @@ TEST(CompareCommand, RunsOptionKeepsTheSummaryAndChoosesThePerRunFiles) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
 }
 
-TEST(CompareCommand, ARunFileThatCannotBeWrittenFailsItsRunOnEveryThreadCount) {
-  for (const char* threads : {"1", "2"}) {
-    const fs::path folder = OutputFolder(std::string("unwritable_") + threads);
+TEST(CompareCommand, ARunFileThatCannotBeWrittenFailsItsRunOnEveryWorkerCount) {
+  for (const char* workers : {"1", "2"}) {
+    const fs::path folder = OutputFolder(std::string("unwritable_") + workers);
     // A folder where the run's file should go: the file cannot be created there.
     fs::create_directories(folder / "runs/thm1/pulse_tp2_x1.h5");
-    const Outcome run = RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j " + threads +
+    const Outcome run = RunIsolab("compare " + StudyData("small_study.yaml") + " -q -j " + workers +
                                   " -o " + folder.string());
-    EXPECT_EQ(run.exit_code, 1) << threads << ": " << run.output;
+    EXPECT_EQ(run.exit_code, 1) << workers << ": " << run.output;
     const auto rows = CsvRows(folder / "summary.csv");
     const auto* row = FindRow(rows, "thm1", "pulse_tp2", "1");
-    ASSERT_NE(row, nullptr) << threads;
-    EXPECT_EQ((*row)[3], "failed") << threads;
+    ASSERT_NE(row, nullptr) << workers;
+    EXPECT_EQ((*row)[3], "failed") << workers;
     const auto* other = FindRow(rows, "thm1", "pulse_tp2", "0.5");
     ASSERT_NE(other, nullptr);
-    EXPECT_EQ((*other)[3], "completed") << threads;
+    EXPECT_EQ((*other)[3], "completed") << workers;
   }
 }
 
@@ -385,7 +385,7 @@ TEST(CompareCommand, ProgressGoesToStderrUnlessQuiet) {
   std::istringstream lines(loud.output);
   std::string line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "isolab compare: 6 runs (3 variants x 2 records x 1 scale) on 2 threads");
+  EXPECT_EQ(line, "isolab compare: 6 runs (3 variants x 2 records x 1 scale) on 2 processes");
   int progress = 0;
   while (std::getline(lines, line) && line.rfind("[", 0) == 0) {
     EXPECT_TRUE(IsProgressLine(line)) << line;
@@ -393,8 +393,13 @@ TEST(CompareCommand, ProgressGoesToStderrUnlessQuiet) {
   }
   EXPECT_EQ(progress, 6);
   EXPECT_EQ(line.rfind("6 runs in ", 0), 0u) << line;
-  EXPECT_NE(line.find(" on 2 threads: "), std::string::npos) << line;
+  EXPECT_NE(line.find(" on 2 processes: "), std::string::npos) << line;
   EXPECT_NE(line.find("runs/s; 4 failed"), std::string::npos) << line;
+  std::getline(lines, line);
+  EXPECT_EQ(line.rfind("waiting on one another: ", 0), 0u) << line;
+  EXPECT_NE(line.find(" % of the jobs' time"), std::string::npos) << line;
+  std::getline(lines, line);
+  EXPECT_EQ(line.rfind("per-run files (full): ", 0), 0u) << line;
 
   const Outcome quiet =
       RunIsolab("compare " + StudyData("failing_study.yaml") + " -q -o " + folder.string(), true);
@@ -420,13 +425,13 @@ TEST(CompareCommand, BadStudyExitsTwoWithItsLocation) {
   EXPECT_EQ(mpi.output.find(expected, first + 1), std::string::npos) << mpi.output;
 }
 
-// -j 1000000 once started thousands of threads; refused before the study is read.
-TEST(CompareCommand, FarMoreThreadsThanTheHardwareAreRefused) {
-  const fs::path folder = OutputFolder("too_many_threads");
+// -j 1000000 would start a million workers; refused before the study is read.
+TEST(CompareCommand, FarMoreWorkersThanTheHardwareAreRefused) {
+  const fs::path folder = OutputFolder("too_many_workers");
   const Outcome run = RunIsolab(
       "compare " + StudyData("small_study.yaml") + " -q -j 1000000 -o " + folder.string(), true);
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.output.rfind("isolab: --jobs: 1000000 threads on ", 0), 0u) << run.output;
+  EXPECT_EQ(run.output.rfind("isolab: --jobs: 1000000 workers on ", 0), 0u) << run.output;
   EXPECT_FALSE(fs::exists(folder));
 }
 

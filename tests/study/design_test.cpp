@@ -48,7 +48,7 @@ Design RunOneDirection(const std::string& suite) {
       << "model: " << kBuilding << "\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g, tl: 8 s}}\n"
       << suite;
   d.file = model::LoadDesignFile((d.directory / "design.yaml").string());
-  const auto scheduler = MakeThreadScheduler(2);
+  const auto scheduler = MakeLocalScheduler(2);  // what isolab design -j 2 runs on
   d.outcome = RunDesign(d.file, (d.directory / "out").string(), "test", *scheduler, {});
   return d;
 }

@@ -41,7 +41,7 @@ TEST(StudyRecords, AJobHandedItsRecordGivesWhatReadingItGives) {
   const Job job = ExpandJobs(study.variants.size(), study.records.size(), 1)[0];
   const std::string out = testing::OwnTestDirectory().string();
   const JobResult alone = RunJob(study, job, out, "test");
-  const JobResult handed = RunJob(study, job, out, "test", nullptr, &records);
+  const JobResult handed = RunJob(study, job, out, "test", &records);
   ASSERT_TRUE(alone.completed) << alone.message;
   ASSERT_TRUE(handed.completed) << handed.message;
   ASSERT_EQ(alone.values.size(), handed.values.size());
@@ -64,7 +64,7 @@ TEST(StudyRecords, ARecordThatCannotBeReadFailsEachJobWithItsMessage) {
   const Job job = ExpandJobs(study.variants.size(), study.records.size(), 1)[1];
   ASSERT_EQ(job.record, 1u);
   const JobResult result =
-      RunJob(study, job, testing::OwnTestDirectory().string(), "test", nullptr, &records);
+      RunJob(study, job, testing::OwnTestDirectory().string(), "test", &records);
   EXPECT_FALSE(result.completed);
   EXPECT_EQ(result.message, expected);
 }

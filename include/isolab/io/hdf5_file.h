@@ -94,17 +94,21 @@ class Hdf5File::Rows {
   Rows& operator=(Rows&&) = delete;
 
   // Whole rows, row-major: values.size() is a multiple of the column count (1 for a vector).
+  // Whole chunks go to the file as they are (HDF5's direct chunk write: no chunk cache, no
+  // fill, no copy but the file's).
   void Append(std::span<const double> values);
   std::size_t rows() const { return rows_; }
 
  private:
   friend class Hdf5File;
-  Rows(const Hdf5File::Impl* file, std::int64_t dataset, std::string name, std::size_t columns);
+  Rows(const Hdf5File::Impl* file, std::int64_t dataset, std::string name, std::size_t columns,
+       std::size_t chunk_rows);
 
   const Hdf5File::Impl* file_;
   std::int64_t dataset_;  // an HDF5 hid_t
   std::string name_;
   std::size_t columns_;  // 0: a vector
+  std::size_t chunk_rows_;
   std::size_t rows_ = 0;
 };
 

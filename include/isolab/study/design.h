@@ -11,7 +11,7 @@
 //     period_range[0] x T_M(upper) to period_range[1] x T_M(lower) (spectra/suite_scaling.h);
 //  4. every bound x accidental-eccentricity case (analysis/accidental_torsion.h: none, and the
 //     four shifted cases of a building in plan) x record run through the study scheduler on
-//     local threads, each as `isolab run` runs it;
+//     local worker processes, each as `isolab run` runs it;
 //  5. the design values: per bound and record the envelope over the eccentricity cases, then the
 //     mean over the suite when it has at least kMinimumRecordsForMean records (ASCE 7-16 17.6.3.2
 //     allows it), the maximum otherwise; the governing bound per quantity; and the ELF lower

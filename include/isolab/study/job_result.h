@@ -23,8 +23,8 @@ struct JobResult {
   double pga = std::numeric_limits<double>::quiet_NaN();  // of the scaled record (g)
   std::vector<std::string> warnings;                      // implausible values (model_summary.h)
   double wall_seconds = 0.0;  // for progress only: never in a summary (machine-dependent)
-  // Of wall_seconds, the time spent on the run's file on the job's thread: writing it, or waiting
-  // to hand it to the writer thread (run_files.h). Like wall_seconds, never in a summary.
+  // Of wall_seconds, the time spent writing the run's file. Like wall_seconds, never in a
+  // summary.
   double output_seconds = 0.0;
 };
 

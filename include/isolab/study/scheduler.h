@@ -23,6 +23,9 @@ struct ScheduleOutcome {
   std::vector<JobResult> results;  // every job in job order on the coordinator; empty elsewhere
   std::size_t failed = 0;          // failed jobs, on the coordinator
   double wall_seconds = 0.0;       // from the first job handed out to the last result
+  // The workers' time blocked on one another: waiting for a lock another job holds, or for room
+  // to hand a result to the coordinator (local schedulers; zero under MPI).
+  double waiting_seconds = 0.0;
 };
 
 class Scheduler {
@@ -36,7 +39,19 @@ class Scheduler {
   virtual std::string Describe() const = 0;
 };
 
-// `threads` >= 1 workers pulling job indices from a shared counter.
+// `threads` >= 1 threads of this process pulling job indices from a shared counter.
 std::unique_ptr<Scheduler> MakeThreadScheduler(int threads);
+
+// `processes` >= 1 worker processes forked from this one, pulling job indices from a counter
+// they share; this process collects their results. Each worker has its own HDF5 (threads share
+// the library's global lock, so their files are written one at a time), so a study's runs scale
+// as separate processes do. It forks: while it runs, no other thread of this process may be
+// inside HDF5. A job's exception is its failure; a worker that dies fails the job it was
+// running, saying how the worker ended.
+std::unique_ptr<Scheduler> MakeProcessScheduler(int processes);
+
+// What a study on one machine runs on: this process alone for one worker, worker processes for
+// more (isolab compare and design, isolab.compare and isolab.design).
+std::unique_ptr<Scheduler> MakeLocalScheduler(int workers);
 
 }  // namespace isolab::study
