@@ -29,7 +29,7 @@ class ResultsWriter final : public integrators::ResponseObserver {
   // kHeld: every row stays in the buffer (grown as needed: the histories of one run, as compact
   // as the file holds them), nothing is created before Finish, which builds the whole HDF5 file
   // in memory (io::Hdf5File::Storage) and writes it in one call. For a run whose file is written
-  // after it, elsewhere (a study's writer threads) or from rows already in memory.
+  // after it (a study's runs) or from rows already in memory.
   enum class Mode { kStreaming, kHeld };
 
   // For `path` (its extension chooses the format, results_file.h), under a temporary name, for

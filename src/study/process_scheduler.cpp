@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <new>
 #include <optional>
 #include <string>
@@ -306,8 +307,24 @@ std::unique_ptr<Scheduler> MakeProcessScheduler(int processes) {
   return std::make_unique<ProcessScheduler>(processes);
 }
 
+int ThreadsOfThisProcess() {
+  std::error_code error;
+  int threads = 0;
+  for (std::filesystem::directory_iterator it("/proc/self/task", error), end; !error && it != end;
+       it.increment(error)) {
+    ++threads;
+  }
+  return threads;
+}
+
 std::unique_ptr<Scheduler> MakeLocalScheduler(int workers) {
-  return workers > 1 ? MakeProcessScheduler(workers) : MakeThreadScheduler(1);
+  if (workers <= 1) return MakeThreadScheduler(1);
+  // A worker forked while another thread of this process is inside HDF5 would inherit HDF5's
+  // lock held, and wait for it for ever. A process with threads of its own (Python's, in a
+  // notebook) runs its jobs on threads instead: the same results, its files written one at a
+  // time.
+  if (ThreadsOfThisProcess() != 1) return MakeThreadScheduler(workers);
+  return MakeProcessScheduler(workers);
 }
 
 }  // namespace isolab::study

@@ -2,6 +2,7 @@
 // results in job order whatever the number of workers, count failures, report each finished job
 // once and turn a job's exception into that job's failure. A worker process that dies fails the
 // job it was running, saying how it ended, and the jobs it never reached run elsewhere or fail.
+// More than one local worker are processes, unless this process runs threads of its own.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -9,9 +10,11 @@
 
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "isolab/study/scheduler.h"
@@ -132,9 +135,18 @@ TEST(ProcessScheduler, WithItsOnlyWorkerDeadTheJobsLeftFailSayingSo) {
   }
 }
 
-TEST(LocalScheduler, OneWorkerIsThisProcessAndMoreAreProcesses) {
+// A fork while another thread may be inside HDF5 could leave a worker waiting for ever on a lock
+// its copy holds: a process with threads of its own runs its jobs on threads.
+TEST(LocalScheduler, OneWorkerIsThisProcessMoreAreProcessesUnlessThisProcessRunsThreads) {
+  ASSERT_EQ(ThreadsOfThisProcess(), 1);
   EXPECT_EQ(MakeLocalScheduler(1)->Describe(), "1 thread");
   EXPECT_EQ(MakeLocalScheduler(4)->Describe(), "4 processes");
+  std::promise<void> stop;
+  std::thread other([done = stop.get_future()] { done.wait(); });
+  EXPECT_EQ(ThreadsOfThisProcess(), 2);
+  EXPECT_EQ(MakeLocalScheduler(4)->Describe(), "4 threads");
+  stop.set_value();
+  other.join();
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ void WriteResultsFile(const std::string& path, const RunDescription& run,
 
 class ResultsWriter;
 
-// A results file written after its run, by whichever thread: its rows, observed as the run goes,
+// A results file written after its run: its rows, observed as the run goes,
 // stay in memory as compact as the file holds them (the selected histories of one run), and
 // Write builds the whole file in memory and writes it out in one call. A study's runs use it so
 // that no HDF5 call happens while a run computes.

@@ -28,8 +28,8 @@ class Hdf5File {
 
   // Where HDF5 builds the file. kOnDisk: in the temporary file itself, as it goes (memory stays
   // HDF5's caches). kInMemory: in memory, the whole file, written out by Commit in one call
-  // outside any HDF5 call: for a file whose contents are in memory anyway, so that threads
-  // sharing HDF5's global lock hold it for HDF5's own work only, not for the system's write.
+  // outside any HDF5 call: for a file whose contents are in memory anyway, so that HDF5's
+  // global lock is held for HDF5's own work only, not for the system's write.
   // Rows' chunks are then not filled before they are written: append whole chunks only (a
   // history written in one Append of one chunk), or the rest of a chunk holds what memory held.
   enum class Storage { kOnDisk, kInMemory };

@@ -50,8 +50,12 @@ std::unique_ptr<Scheduler> MakeThreadScheduler(int threads);
 // running, saying how the worker ended.
 std::unique_ptr<Scheduler> MakeProcessScheduler(int processes);
 
-// What a study on one machine runs on: this process alone for one worker, worker processes for
-// more (isolab compare and design, isolab.compare and isolab.design).
+// What a study on one machine runs on (isolab compare and design, isolab.compare and
+// isolab.design): this process alone for one worker; worker processes for more, unless this
+// process runs other threads (which a fork could catch inside HDF5), then as many threads.
 std::unique_ptr<Scheduler> MakeLocalScheduler(int workers);
+
+// The threads this process runs now (Linux: /proc/self/task); 0 where that cannot be read.
+int ThreadsOfThisProcess();
 
 }  // namespace isolab::study
