@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "isolab/analysis/results_file.h"
@@ -56,16 +57,24 @@ class ResultsWriter final : public integrators::ResponseObserver {
 
   class Sink;  // the format (results_sink.h)
 
-  // Doubles left unset when the block is sized: every value is written (Observe) before it is
-  // read, and a held run's rows are megabytes that zeroing would only touch twice.
-  struct UnsetDoubles : std::allocator<double> {
+  // Values left unset when a block is sized: every value is written (Observe) before it is read,
+  // and a held run's rows are megabytes that zeroing would only touch twice.
+  template <class T>
+  struct UnsetAllocator : std::allocator<T> {
     template <class U>
     struct rebind {
-      using other = UnsetDoubles;
+      using other = UnsetAllocator<U>;
     };
-    void construct(double* p) noexcept { ::new (static_cast<void*>(p)) double; }
+    UnsetAllocator() = default;
+    template <class U>
+    UnsetAllocator(const UnsetAllocator<U>&) noexcept {}
+    // Default-initialisation; any other construction is std::construct_at's.
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+      ::new (static_cast<void*>(p)) U;
+    }
   };
-  using Block = std::vector<double, UnsetDoubles>;
+  using Block = std::vector<double, UnsetAllocator<double>>;
 
  private:
   void Flush();

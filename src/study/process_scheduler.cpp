@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <new>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -88,11 +89,10 @@ void AppendFrame(Frame kind, const void* payload, std::size_t size, std::vector<
   out->insert(out->end(), bytes, bytes + size);
 }
 
-// A worker's life: it never returns into the caller's stack (its copies of the coordinator's
-// objects are not its to destroy, nor its buffered output to flush). It takes the next job
-// before reporting the last, so that both go in one write: one wake-up of the coordinator a job.
-[[noreturn]] void WorkerMain(int fd, SharedCounter& counter, std::size_t count,
-                             const RunFunction& run) {
+// A worker's jobs, until none is left; false when the coordinator stopped reading. It takes the
+// next job before reporting the last, so that both go in one write: one wake-up of the
+// coordinator a job.
+bool WorkJobs(int fd, SharedCounter& counter, std::size_t count, const RunFunction& run) {
   WorkerTotals totals;
   std::vector<char> message;
   std::uint64_t job = counter.Next();
@@ -113,9 +113,21 @@ void AppendFrame(Frame kind, const void* payload, std::size_t size, std::vector<
   }
   message.clear();
   AppendFrame(Frame::kTotals, &totals, sizeof totals, &message);
-  const bool ok = sent && WriteAll(fd, message.data(), message.size());
+  return sent && WriteAll(fd, message.data(), message.size());
+}
+
+// A worker's life: it never returns into the caller's stack, not even by an exception (its
+// copies of the coordinator's objects are not its to destroy, nor its buffered output to flush);
+// one that escapes the jobs (memory exhausted while sending a result) ends it with status 2.
+[[noreturn]] void WorkerMain(int fd, SharedCounter& counter, std::size_t count,
+                             const RunFunction& run) noexcept {
+  int status = 2;
+  try {
+    status = WorkJobs(fd, counter, count, run) ? 0 : 1;
+  } catch (...) {
+  }
   close(fd);
-  _exit(ok ? 0 : 1);
+  _exit(status);
 }
 
 std::string DescribeEnd(int status) {
@@ -176,6 +188,7 @@ class ProcessScheduler final : public Scheduler {
   void StartWorkers(std::size_t count, SharedCounter& counter, std::size_t jobs,
                     const RunFunction& run) {
     workers_.clear();
+    workers_.reserve(count);  // no allocation (nor its failure) between a fork and its record
     for (std::size_t k = 0; k < count; ++k) {
       int fds[2];
       if (pipe2(fds, O_CLOEXEC) != 0) break;
@@ -227,12 +240,14 @@ class ProcessScheduler final : public Scheduler {
         close(worker.fd);
         worker.fd = -1;
         int status = 0;
-        while (waitpid(worker.pid, &status, 0) < 0 && errno == EINTR) {
+        pid_t reaped = -1;
+        while ((reaped = waitpid(worker.pid, &status, 0)) < 0 && errno == EINTR) {
         }
         worker.pid = -1;
         if (worker.running) {
           Fail(*worker.running,
-               fmt::format("its worker process ended while running it: {}", DescribeEnd(status)),
+               fmt::format("its worker process ended while running it: {}",
+                           reaped < 0 ? std::string("how, unknown") : DescribeEnd(status)),
                progress);
         }
       }
@@ -247,7 +262,7 @@ class ProcessScheduler final : public Scheduler {
       if (worker.buffer.size() - at - sizeof header < header.size) break;
       const char* payload = worker.buffer.data() + at + sizeof header;
       at += sizeof header + header.size;
-      if (header.kind == Frame::kStarted) {
+      if (header.kind == Frame::kStarted && header.size == sizeof(std::uint64_t)) {
         std::uint64_t job = 0;
         std::memcpy(&job, payload, sizeof job);
         if (job < count) worker.running = job;
@@ -255,10 +270,12 @@ class ProcessScheduler final : public Scheduler {
         JobResult result = Deserialize({payload, header.size});
         worker.running.reset();
         if (result.job < count && !reported_[result.job]) Report(std::move(result), progress);
-      } else {
+      } else if (header.kind == Frame::kTotals && header.size == sizeof(WorkerTotals)) {
         WorkerTotals totals;
         std::memcpy(&totals, payload, sizeof totals);
         outcome_.waiting_seconds += totals.handover_seconds;
+      } else {
+        throw std::runtime_error("a worker process sent what no worker writes");
       }
     }
     worker.buffer.erase(worker.buffer.begin(), worker.buffer.begin() + static_cast<long>(at));

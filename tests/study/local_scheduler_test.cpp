@@ -113,6 +113,24 @@ TEST(ProcessScheduler, AWorkerThatDiesFailsItsJobAndTheOthersRunElsewhere) {
   }
 }
 
+// An exception that is no std::exception passes a job's guard: it must end its worker (status
+// 2), never return into the test from the forked copy.
+TEST(ProcessScheduler, AnExceptionOutsideTheGuardEndsItsWorkerOnly) {
+  const ScheduleOutcome outcome = MakeProcessScheduler(2)->Run(
+      8,
+      [](std::size_t job) -> JobResult {
+        if (job == 5) throw 42;
+        JobResult result;
+        result.job = job;
+        result.completed = true;
+        return result;
+      },
+      nullptr);
+  EXPECT_EQ(outcome.failed, 1u);
+  EXPECT_EQ(outcome.results[5].message,
+            "its worker process ended while running it: exited with status 2");
+}
+
 TEST(ProcessScheduler, WithItsOnlyWorkerDeadTheJobsLeftFailSayingSo) {
   std::size_t reported = 0;
   const ScheduleOutcome outcome = MakeProcessScheduler(1)->Run(

@@ -23,8 +23,9 @@ struct ScheduleOutcome {
   std::vector<JobResult> results;  // every job in job order on the coordinator; empty elsewhere
   std::size_t failed = 0;          // failed jobs, on the coordinator
   double wall_seconds = 0.0;       // from the first job handed out to the last result
-  // The workers' time blocked on one another: waiting for a lock another job holds, or for room
-  // to hand a result to the coordinator (local schedulers; zero under MPI).
+  // The workers' time blocked on one another outside their jobs: waiting for the scheduler's
+  // lock, or for room to hand a result to the coordinator (local schedulers; zero under MPI). A
+  // thread's wait for HDF5's lock while writing its file is inside its job (writing time).
   double waiting_seconds = 0.0;
 };
 
