@@ -30,7 +30,7 @@ if [ "$(id -u)" -eq 0 ]; then mpi+=(--allow-run-as-root); fi
 # One run: prints "RATE WAITING WRITING" from isolab's closing stderr lines:
 #   "40 runs in 0.21 s on 2 processes: 190.4 runs/s; 0 failed"
 #   "waiting on one another: 0.01 % of the jobs' time"
-#   "per-run files (full): 30.2 % of the jobs' time writing them"
+#   "per-run files (full): 35.9 % of the jobs' time writing them"
 once() {
   local folder=$1
   shift
