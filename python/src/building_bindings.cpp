@@ -21,6 +21,7 @@
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
 #include "isolab/model/fitted_building_file.h"
+#include "search_options.h"
 
 namespace py = pybind11;
 
@@ -41,20 +42,6 @@ analysis::BuildingData Data(const std::vector<std::string>& data, const std::str
                               fmt::format("isolab.{}(building=...)", function),
                               {function, "offsets=", "force_unit=", "length_unit="}};
   return read;
-}
-
-identification::FitOptions SearchOptions(const char* function, unsigned seed, long budget,
-                                         int threads) {
-  identification::FitOptions fit;
-  fit.seed = seed;
-  fit.budget = budget;
-  fit.threads = threads;
-  try {
-    fit.Validate();
-  } catch (const InvalidParameter& error) {
-    throw InputError({function}, error.violation().Describe());
-  }
-  return fit;
 }
 
 std::string FitBuilding(const std::vector<std::string>& data, const std::string& spec_path,

@@ -15,6 +15,7 @@
 #include "isolab/identification/parametrisation.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/model/fit_spec_file.h"
+#include "search_options.h"
 
 namespace py = pybind11;
 
@@ -46,15 +47,7 @@ py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path,
     throw InputError({spec.path}, error.what());
   }
   analysis::RequireMoreSamplesThanParameters(fit_data, *model, spec.path);
-  identification::FitOptions options;
-  options.seed = seed;
-  options.budget = budget;
-  options.threads = threads;
-  try {
-    options.Validate();
-  } catch (const InvalidParameter& error) {
-    throw InputError({"fit"}, error.violation().Describe());
-  }
+  identification::FitOptions options = SearchOptions("fit", seed, budget, threads);
   analysis::RequireWorkWithin(analysis::EstimateFitWork(*model, fit_data, options),
                               analysis::kWorkLimit, force, "force=");
   if (!quiet) {
