@@ -15,7 +15,7 @@ isolab_require(Eigen3 libeigen3-dev NO_MODULE)
 isolab_require(yaml-cpp libyaml-cpp-dev)
 isolab_require(HDF5 libhdf5-dev COMPONENTS C)
 # isolab_hdf5: HDF5 for isolab_io, linked statically into the executables that set the target
-# property ISOLAB_STATIC_HDF5 (the isolab front and its helper) and shared everywhere else.
+# property ISOLAB_STATIC_HDF5 (the isolab front and its helpers) and shared everywhere else.
 # Debian's shared libhdf5_serial pulls in libcurl, TLS, Kerberos and LDAP for its remote-file
 # drivers, which isolab never uses: loading them costs about 10 ms of every start-up (two thirds
 # of `isolab --version`). The static libhdf5.a of the same package pulls in only what the code

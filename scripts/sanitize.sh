@@ -35,7 +35,7 @@ if $ci; then
   build="build-sanitize-ci"
   flags=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG"
          "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG")
-  targets=(--target isolab isolab_commands "${kCiTests[@]}")
+  targets=(--target isolab isolab_search isolab_studies "${kCiTests[@]}")
   # Labels are the executables' names (tests/CMakeLists.txt); "install" is the package test.
   selection=(-L "^($(IFS='|'; echo "${kCiTests[*]}")|install)\$")
 else

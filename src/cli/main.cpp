@@ -2,12 +2,15 @@
 // of the run or inside isolab, 2 bad input (file, option, parameter), 3 a resource exhausted (a
 // full disk, memory, a work limit), with a message saying where and why.
 //
-// Two executables from this file. `isolab`, the front, runs the commands that need no more than
-// the solver and its files (run, cyclic, synth, spectrum, shaketable) and starts without MPI,
-// pagmo and their dependencies. `fit`, `diagnose`, `compare` and `design` need them: the front
-// replaces itself (execv, same process, arguments and environment, so mpirun's ranks stay ranks)
-// with `isolab-commands`, built with ISOLAB_ALL_COMMANDS, which has every command
-// (libexec/isolab/isolab-commands beside bin/, or in the build tree).
+// Three executables from this file. `isolab`, the front, runs the commands that need no more
+// than the solver and its files (run, cyclic, synth, spectrum, shaketable, bounds) and starts
+// without MPI, pagmo and their dependencies. The others replace the front (execv: same process,
+// arguments and environment, so mpirun's ranks stay ranks) for their commands:
+// `isolab-search` (ISOLAB_SEARCH_COMMANDS) runs `fit` and `diagnose`, which need pagmo;
+// `isolab-studies` (ISOLAB_STUDY_COMMANDS) runs `compare` and `design`, which need MPI and not
+// pagmo, whose libraries take about 20 ms to load (static data copied in at start-up): a study's
+// start-up is time its worker processes wait (libexec/isolab/ beside bin/, or in the build
+// tree).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -27,46 +30,53 @@
 #include "shaketable_command.h"
 #include "spectrum_command.h"
 #include "synth_command.h"
-#ifdef ISOLAB_ALL_COMMANDS
+#ifdef ISOLAB_STUDY_COMMANDS
 #include "compare_command.h"
 #include "design_command.h"
+#endif
+#ifdef ISOLAB_SEARCH_COMMANDS
 #include "diagnose_command.h"
 #include "fit_command.h"
-#else
+#endif
+#if !defined(ISOLAB_STUDY_COMMANDS) && !defined(ISOLAB_SEARCH_COMMANDS)
+#define ISOLAB_FRONT
 #include "beside_executable.h"
 #endif
 
 namespace {
 
-#ifndef ISOLAB_ALL_COMMANDS
-// The commands isolab-commands runs, with what `isolab --help` says of them (their own
-// descriptions, which isolab-commands prints with their options).
-constexpr std::pair<std::string_view, std::string_view> kHeavyCommands[] = {
-    {"fit", "Identify an isolator model's parameters from cyclic tests (CMA-ES)"},
-    {"diagnose",
+#ifdef ISOLAB_FRONT
+// The commands the front hands over, the executable that runs each, and what `isolab --help`
+// says of them (their own descriptions, which that executable prints with their options).
+struct HeavyCommand {
+  std::string_view name, executable, help;
+};
+constexpr HeavyCommand kHeavyCommands[] = {
+    {"fit", "isolab-search", "Identify an isolator model's parameters from cyclic tests (CMA-ES)"},
+    {"diagnose", "isolab-search",
      "Fit a base isolator model to cyclic tests, name the effects it lacks, add them and refit"},
-    {"compare",
+    {"compare", "isolab-studies",
      "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
-     "(threads, or MPI ranks under mpirun)"},
-    {"design",
+     "(worker processes, or MPI ranks under mpirun)"},
+    {"design", "isolab-studies",
      "Design an isolated building as ASCE 7-16 chapter 17 asks: bound models, the ELF "
      "procedure, a suite scaled to the target spectrum, runs with accidental eccentricity, "
      "design values and checks in a report"},
 };
 
-// Runs isolab-commands in place of this process when argv names one of its commands; returns
-// only when it does not, or when the executable cannot be started (exit code 1 then).
+// Runs the command's executable in place of this process when argv names a heavy command;
+// returns only when it does not, or when the executable cannot be started (exit code 1 then).
 void HandOverHeavyCommand(int argc, char** argv) {
   if (argc < 2) return;
-  for (const auto& [name, help] : kHeavyCommands) {
-    if (argv[1] != name) continue;
-    const std::string path = isolab::cli::BesideExecutable("libexec/isolab/isolab-commands",
-                                                           "libexec/isolab/isolab-commands");
+  for (const HeavyCommand& command : kHeavyCommands) {
+    if (argv[1] != command.name) continue;
+    const std::string relative = "libexec/isolab/" + std::string(command.executable);
+    const std::string path = isolab::cli::BesideExecutable(relative, relative);
     // Its plot scripts are found from the front's folder, not from libexec (beside_executable.h).
     setenv(isolab::cli::kFrontDirectoryVariable, isolab::cli::ExecutableDirectory().c_str(), 1);
     execv(path.c_str(), argv);
-    std::cerr << "isolab: internal error: cannot start " << path << " for '" << name << "' ("
-              << std::strerror(errno) << "); reinstall isolab\n";
+    std::cerr << "isolab: internal error: cannot start " << path << " for '" << command.name
+              << "' (" << std::strerror(errno) << "); reinstall isolab\n";
     std::exit(1);
   }
 }
@@ -75,7 +85,7 @@ void HandOverHeavyCommand(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-#ifndef ISOLAB_ALL_COMMANDS
+#ifdef ISOLAB_FRONT
   HandOverHeavyCommand(argc, argv);
 #endif
   CLI::App app{"isolab: time-history solver for base-isolated structures"};
@@ -88,20 +98,21 @@ int main(int argc, char** argv) {
   isolab::cli::RegisterRunCommand(app, run);
   isolab::cli::SynthOptions synth;
   isolab::cli::RegisterSynthCommand(app, synth);
-#ifdef ISOLAB_ALL_COMMANDS
+#ifdef ISOLAB_SEARCH_COMMANDS
   isolab::cli::FitOptions fit;
   isolab::cli::RegisterFitCommand(app, fit);
   isolab::cli::DiagnoseOptions diagnose;
   isolab::cli::RegisterDiagnoseCommand(app, diagnose);
-#else
+#endif
+#ifdef ISOLAB_FRONT
   // Listed by --help; never parsed here (HandOverHeavyCommand took them).
-  for (const auto& [name, help] : kHeavyCommands) {
-    app.add_subcommand(std::string(name), std::string(help))->allow_extras();
+  for (const HeavyCommand& command : kHeavyCommands) {
+    app.add_subcommand(std::string(command.name), std::string(command.help))->allow_extras();
   }
 #endif
   isolab::cli::SpectrumOptions spectrum;
   isolab::cli::RegisterSpectrumCommand(app, spectrum);
-#ifdef ISOLAB_ALL_COMMANDS
+#ifdef ISOLAB_STUDY_COMMANDS
   isolab::cli::CompareOptions compare;
   isolab::cli::RegisterCompareCommand(app, compare);
   isolab::cli::DesignOptions design;
@@ -124,12 +135,12 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
     if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
     if (app.got_subcommand("synth")) return isolab::cli::RunSynthCommand(synth, std::cout);
-#ifdef ISOLAB_ALL_COMMANDS
+#ifdef ISOLAB_SEARCH_COMMANDS
     if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
     if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
 #endif
     if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
-#ifdef ISOLAB_ALL_COMMANDS
+#ifdef ISOLAB_STUDY_COMMANDS
     if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
     if (app.got_subcommand("design")) return isolab::cli::RunDesignCommand(design, std::cout);
 #endif

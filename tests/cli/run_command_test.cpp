@@ -688,8 +688,8 @@ TEST(RunCommand, OutputOptionsChooseWhatIsWrittenNotWhatIsComputed) {
   }
 }
 
-// isolab's start-up loads neither MPI nor pagmo (nor their dependencies): only fit, diagnose and
-// compare need them, and the front hands those to isolab-commands (src/cli/main.cpp).
+// isolab's start-up loads neither MPI nor pagmo (nor their dependencies): only fit, diagnose,
+// compare and design need them, and the front hands those on (src/cli/main.cpp).
 TEST(RunCommand, TheFrontLinksNeitherMpiNorPagmo) {
   const auto libraries = isolab::testing::RunShell(std::string("ldd ") + ISOLAB_BINARY);
   ASSERT_EQ(libraries.exit_code, 0);
@@ -700,6 +700,25 @@ TEST(RunCommand, TheFrontLinksNeitherMpiNorPagmo) {
   const auto fit = RunIsolab("fit --help");
   EXPECT_EQ(fit.exit_code, 0);
   EXPECT_NE(fit.output.find("Identify an isolator model's parameters"), std::string::npos);
+}
+
+// A study's start-up is time its workers wait, and pagmo's libraries take about 20 ms to load:
+// compare and design run in an executable without them, fit and diagnose in one without MPI.
+TEST(RunCommand, StudiesLoadNoPagmoAndSearchesNoMpi) {
+  const auto studies = isolab::testing::RunShell(std::string("ldd ") + ISOLAB_STUDIES_BINARY);
+  ASSERT_EQ(studies.exit_code, 0);
+  EXPECT_NE(studies.output.find("libmpi"), std::string::npos) << studies.output;
+  EXPECT_EQ(studies.output.find("libpagmo"), std::string::npos) << studies.output;
+  const auto search = isolab::testing::RunShell(std::string("ldd ") + ISOLAB_SEARCH_BINARY);
+  ASSERT_EQ(search.exit_code, 0);
+  EXPECT_NE(search.output.find("libpagmo"), std::string::npos) << search.output;
+  EXPECT_EQ(search.output.find("libmpi"), std::string::npos) << search.output;
+  for (const char* command : {"compare", "design", "diagnose"}) {
+    const auto help = RunIsolab(std::string(command) + " --help");
+    EXPECT_EQ(help.exit_code, 0) << command << ": " << help.output;
+    EXPECT_NE(help.output.find(std::string("isolab ") + command + " [OPTIONS]"), std::string::npos)
+        << help.output;
+  }
 }
 
 namespace {

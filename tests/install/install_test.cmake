@@ -29,8 +29,10 @@ run(${WORK_DIR}/consumer/isolab_consumer ${SOURCE_DIR}/models/paper/table7_thm1_
 # The installed executable: its version, and --plot with the scripts from share/isolab/scripts
 # (the build tree's copies are not beside it).
 run(${prefix}/bin/isolab --version)
-# fit, diagnose and compare run in libexec/isolab/isolab-commands, which the front starts.
+# fit and diagnose run in libexec/isolab/isolab-search, compare and design in
+# libexec/isolab/isolab-studies, which the front starts.
 run(${prefix}/bin/isolab fit --help)
+run(${prefix}/bin/isolab compare --help)
 file(MAKE_DIRECTORY ${WORK_DIR}/run)
 run(${prefix}/bin/isolab run ${SOURCE_DIR}/tests/cli/data/run_base.yaml
     -o ${WORK_DIR}/run/sdof.h5 --free-vibration 0 --plot)
