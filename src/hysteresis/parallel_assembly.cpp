@@ -28,13 +28,6 @@ std::optional<AssemblyResponse> ParallelAssembly::ConstantTangent() const {
   return Update(rest, {}, trial, responses);
 }
 
-double ParallelAssembly::StoredEnergy(std::span<const LawState> states) const {
-  double energy = 0.0;
-  const LawState* state = states.data();
-  for (const LawKernel& kernel : kernels_) energy += StoredEnergyInPlace(kernel, *state++);
-  return energy;
-}
-
 // The further states of sliders in series carry no dissipated energy (series_arrangement.h), so
 // the sum over every state counts each law's once.
 double ParallelAssembly::DissipatedEnergy(std::span<const LawState> states) const {

@@ -11,13 +11,60 @@ namespace {
 
 // kN > 0: the size known at compile time; 0: arrays.n.
 template <int kN>
-bool FactorizeDense(const DenseLu::Arrays& arrays, const double* values) {
+void Scatter(const DenseLu::Arrays& arrays, const double* values) {
   const int n = kN > 0 ? kN : arrays.n;
   double* a = arrays.lu;
 #pragma GCC unroll 16
   for (int k = 0; k < n * n; ++k) a[k] = 0.0;
 #pragma GCC unroll 16
   for (int k = 0; k < arrays.entries; ++k) a[arrays.positions[k]] = values[k];
+}
+
+// LDL^T of the scattered matrix when it is symmetric and its pivots are positive and well above
+// round-off: the effective tangent of a structure whose laws have symmetric tangents and whose
+// mass term dominates their softening, the usual case, at half an LU's work and with no
+// pivoting (stable for such a matrix). False, with the matrix overwritten, otherwise. The
+// pivots are judged scaled by their diagonal entries (d_j / a_jj, in (0, 1] for a positive
+// definite matrix), like the LU's by its row scales, so that a rotation's units do not matter.
+template <int kN>
+bool FactorizeSymmetric(const DenseLu::Arrays& arrays) {
+  const int n = kN > 0 ? kN : arrays.n;
+  double* a = arrays.lu;
+#pragma GCC unroll 16
+  for (int j = 0; j < n; ++j) {
+#pragma GCC unroll 16
+    for (int i = j + 1; i < n; ++i) {
+      if (a[i + j * n] != a[j + i * n]) return false;
+    }
+  }
+  PivotRatio ratio;
+  // Column by column: l_ij below the diagonal (unit diagonal implied), d_j on it; the upper
+  // triangle is left as it was.
+#pragma GCC unroll 16
+  for (int j = 0; j < n; ++j) {
+    double* column = a + j * n;
+    const double diagonal = column[j];
+#pragma GCC unroll 16
+    for (int p = 0; p < j; ++p) {
+      const double scaled = a[j + p * n] * a[p + p * n];  // l_jp d_p
+#pragma GCC unroll 16
+      for (int i = j; i < n; ++i) column[i] -= a[i + p * n] * scaled;
+    }
+    const double d = column[j];
+    if (!(d > 0.0 && diagonal > 0.0)) return false;
+    ratio.Add(d / diagonal);
+    const double inverse = arrays.inverse_diagonal[j] = 1.0 / d;
+#pragma GCC unroll 16
+    for (int i = j + 1; i < n; ++i) column[i] *= inverse;
+  }
+  return ratio.Acceptable();
+}
+
+// Dense LU with partial pivoting and row scaling of the scattered matrix.
+template <int kN>
+bool FactorizeLu(const DenseLu::Arrays& arrays) {
+  const int n = kN > 0 ? kN : arrays.n;
+  double* a = arrays.lu;
   // Rows scaled by their largest magnitude (KLU's default scaling).
   double* scales = arrays.scales;
 #pragma GCC unroll 16
@@ -74,20 +121,55 @@ bool FactorizeDense(const DenseLu::Arrays& arrays, const double* values) {
 }
 
 template <int kN>
-void SolveDense(const DenseLu::Arrays& arrays, double* b) {
+bool FactorizeDense(const DenseLu::Arrays& arrays, const double* values) {
+  Scatter<kN>(arrays, values);
+  *arrays.symmetric = FactorizeSymmetric<kN>(arrays);
+  if (*arrays.symmetric) return true;
+  Scatter<kN>(arrays, values);
+  return FactorizeLu<kN>(arrays);
+}
+
+// b overwritten by L^-1 P b: the unit lower triangle's forward substitution, with the row
+// exchanges of partial pivoting (kPivoted) or without.
+template <int kN, bool kPivoted>
+void ForwardSubstitute(const DenseLu::Arrays& arrays, double* b) {
   const int n = kN > 0 ? kN : arrays.n;
   const double* a = arrays.lu;
 #pragma GCC unroll 16
-  for (int i = 0; i < n; ++i) b[i] *= arrays.scales[i];
-#pragma GCC unroll 16
   for (int k = 0; k < n; ++k) {
-    const int p = arrays.pivots[k];
-    if (p != k) std::swap(b[k], b[p]);
+    if constexpr (kPivoted) {
+      const int p = arrays.pivots[k];
+      if (p != k) std::swap(b[k], b[p]);
+    }
     const double* column = a + k * n;
     const double bk = b[k];
 #pragma GCC unroll 16
     for (int i = k + 1; i < n; ++i) b[i] -= column[i] * bk;
   }
+}
+
+template <int kN>
+void SolveSymmetric(const DenseLu::Arrays& arrays, double* b) {
+  const int n = kN > 0 ? kN : arrays.n;
+  const double* a = arrays.lu;
+  ForwardSubstitute<kN, false>(arrays, b);
+#pragma GCC unroll 16
+  for (int k = n - 1; k >= 0; --k) {  // D^-1, then L^T's back substitution
+    const double* column = a + k * n;
+    double bk = b[k] * arrays.inverse_diagonal[k];
+#pragma GCC unroll 16
+    for (int i = k + 1; i < n; ++i) bk -= column[i] * b[i];
+    b[k] = bk;
+  }
+}
+
+template <int kN>
+void SolveLu(const DenseLu::Arrays& arrays, double* b) {
+  const int n = kN > 0 ? kN : arrays.n;
+  const double* a = arrays.lu;
+#pragma GCC unroll 16
+  for (int i = 0; i < n; ++i) b[i] *= arrays.scales[i];
+  ForwardSubstitute<kN, true>(arrays, b);
 #pragma GCC unroll 16
   for (int k = n - 1; k >= 0; --k) {
     const double* column = a + k * n;
@@ -95,6 +177,15 @@ void SolveDense(const DenseLu::Arrays& arrays, double* b) {
     const double bk = b[k];
 #pragma GCC unroll 16
     for (int i = 0; i < k; ++i) b[i] -= column[i] * bk;
+  }
+}
+
+template <int kN>
+void SolveDense(const DenseLu::Arrays& arrays, double* b) {
+  if (*arrays.symmetric) {
+    SolveSymmetric<kN>(arrays, b);
+  } else {
+    SolveLu<kN>(arrays, b);
   }
 }
 
@@ -125,6 +216,7 @@ DenseLu::DenseLu(const structure::SparseMatrix& pattern)
              inverse_diagonal_.data(),
              pivots_.data(),
              row_scales_.data(),
+             &symmetric_,
              positions_.data(),
              static_cast<int>(positions_.size())};
   const auto& kernels = kDenseKernels[n_ <= kDenseFixedDofs ? n_ : 0];

@@ -50,10 +50,25 @@ using Eigen::VectorXd;
 using hysteresis::LawResponse;
 using hysteresis::LawState;
 
-// Largest magnitude of a vector or of a vector expression, evaluated without a temporary.
-template <typename Derived>
-double MaxAbs(const Eigen::MatrixBase<Derived>& x) {
-  return x.size() ? x.cwiseAbs().maxCoeff() : 0.0;
+// The largest magnitude of the numbers added; NaN where one is NaN, so that no convergence test
+// passes on it. A running sum catches the NaN instead of a test of each number: a NaN, or
+// infinities of both signs, make the sum NaN.
+class MaxMagnitude {
+ public:
+  void Add(double x) {
+    largest_ = std::max(largest_, std::abs(x));
+    sum_ += x;
+  }
+  double value() const { return sum_ == sum_ ? largest_ : sum_; }
+
+ private:
+  double largest_ = 0.0, sum_ = 0.0;
+};
+
+double MaxAbs(const VectorXd& x) {
+  MaxMagnitude largest;
+  for (const double xi : x) largest.Add(xi);
+  return largest.value();
 }
 
 // The force test compares the residual with force_tolerance times the step's force scale. Where
@@ -171,10 +186,7 @@ class NewmarkRun {
       if (tangent_here) StartTangent(factors);
       structure_.Evaluate(committed_, t0 + h, u_trial_, v_trial_, trial_, responses_, &force_,
                           member_forces_, factors, tangent_here ? &tangent_ : nullptr, scales_);
-      residual_ = load_trial_ - structure_.mass().cwiseProduct(a_trial_) - force_;
-      last_scale_ = std::max(
-          {MaxAbs(load_trial_), MaxAbs(force_), MaxAbs(structure_.mass().cwiseProduct(a_trial_))});
-      last_residual_ = MaxAbs(residual_);
+      Residual();
       if (last_residual_ <= options_.force_tolerance * last_scale_ || displacement_converged ||
           (iteration > 0 && last_residual_ <= kRoundoffFloorFactor * RoundoffResidual())) {
         Commit(iteration);
@@ -193,16 +205,42 @@ class NewmarkRun {
       }
       correction_ = residual_;
       solver_.Solve(&correction_);
-      u_trial_ += correction_;
       ++summary_.newton_iterations;
-      displacement_converged = MaxAbs(correction_) <=
-                               options_.displacement_tolerance * std::max(MaxAbs(u_trial_), 1e-300);
+      displacement_converged = Correct();
       if (options_.newton == NewmarkOptions::Newton::kModifiedInitial && refactor) {
         // The rest-state evaluation above overwrote trial states: evaluate again next iteration.
         displacement_converged = false;
       }
     }
     return false;
+  }
+
+  // residual_ = load - M a - force at the trial state, with its largest magnitude and the step's
+  // force scale (the largest load, internal force or inertia force), in one pass.
+  void Residual() {
+    const double* mass = structure_.mass().data();
+    MaxMagnitude residual;
+    double scale = 0.0;  // a NaN in a term reaches the residual
+    for (Eigen::Index i = 0; i < residual_.size(); ++i) {
+      const double inertia = mass[i] * a_trial_[i];
+      const double r = residual_[i] = load_trial_[i] - inertia - force_[i];
+      scale = std::max({scale, std::abs(load_trial_[i]), std::abs(force_[i]), std::abs(inertia)});
+      residual.Add(r);
+    }
+    last_scale_ = scale;
+    last_residual_ = residual.value();
+  }
+
+  // Adds the Newton correction to the trial displacement; true when it is below the
+  // displacement tolerance relative to that displacement.
+  bool Correct() {
+    MaxMagnitude correction;
+    double displacement = 0.0;  // a NaN in the correction reaches the displacement
+    for (Eigen::Index i = 0; i < u_trial_.size(); ++i) {
+      correction.Add(correction_[i]);
+      displacement = std::max(displacement, std::abs(u_trial_[i] += correction_[i]));
+    }
+    return correction.value() <= options_.displacement_tolerance * std::max(displacement, 1e-300);
   }
 
   // eps || |K_eff| |u| ||_inf at the trial displacement, with the last assembled tangent. One
@@ -246,7 +284,7 @@ class NewmarkRun {
 
   void Commit(int iterations) {
     summary_.max_iterations_in_a_step = std::max(summary_.max_iterations_in_a_step, iterations);
-    viscous_trial_.noalias() = structure_.viscous_damping() * v_trial_;
+    structure_.DampingForce(v_trial_, &viscous_trial_);
     const VectorXd& du = correction_ = u_trial_ - u_;
     energies_.input += 0.5 * (load_ + load_trial_).dot(du);
     viscous_energy_ += 0.5 * (viscous_ + viscous_trial_).dot(du);

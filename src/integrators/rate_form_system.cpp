@@ -166,7 +166,7 @@ RateFormSystem::BlockResponse RateFormSystem::EvaluateLaw(const LawBlock& law, d
 
 void RateFormSystem::EvaluateLaws(double t, const double* y) {
   velocity_ = Eigen::Map<const Eigen::VectorXd>(y + dofs_, dofs_);
-  viscous_.noalias() = structure_.viscous_damping() * velocity_;
+  structure_.DampingForce(velocity_, &viscous_);
   force_ = viscous_;
   std::fill(connection_forces_.begin(), connection_forces_.end(), 0.0);
   for (std::size_t l = 0; l < laws_.size(); ++l) {

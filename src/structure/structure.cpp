@@ -109,6 +109,7 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
     }
   }
   viscous_damping_.makeCompressed();
+  damping_product_ = DampingProduct(viscous_damping_);
   const auto check_dofs = [n](const std::string& name, const std::array<int, kMaxTerms>& dofs) {
     bool any = false;
     for (const int dof : dofs) {
@@ -460,7 +461,7 @@ void Structure::EvaluateAll(std::span<const LawState> committed, double t, const
                             std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                             std::span<double> member_forces, double damping_factor, double* values,
                             const double* scales) const {
-  force->noalias() = viscous_damping_ * v;
+  DampingForce(v, force);
   EvaluateSprings<kScaled>(committed, t, u, v, trial, responses, force, member_forces,
                            damping_factor, values, scales);
   for (const std::size_t k : general_) {

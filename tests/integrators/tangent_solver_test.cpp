@@ -3,6 +3,8 @@
 //    need row exchanges, factorised twice (the storage is reused);
 //  * a matrix singular or singular to working precision refused by every solver, KLU included,
 //    and a well-conditioned one with rows of very different scales accepted;
+//  * symmetric matrices (the dense solver's LDL^T): positive definite, scaled by dofs of very
+//    different units, indefinite (its LU instead) and singular to working precision;
 //  * the automatic choice on the patterns of an SDOF, the five-story building, the bundled plan
 //    building and 150-story shear buildings with and without relative Rayleigh damping;
 //  * whole Newmark runs with each solver forced against the same run on KLU: the displacement
@@ -134,6 +136,54 @@ TEST(TangentSolver, RefusesMatricesSingularToWorkingPrecision) {
     }
     TangentSolver scaled_solver(scaled, kind);
     EXPECT_TRUE(scaled_solver.Factorize(scaled)) << static_cast<int>(kind) << ", scaled rows";
+  }
+}
+
+// (A + A^T) / 2 of a random matrix on a symmetric pattern, its diagonal set to `diagonal`.
+SparseMatrix RandomSymmetric(int n, const std::function<bool(int, int)>& in_pattern,
+                             const Eigen::VectorXd& diagonal, unsigned seed) {
+  const SparseMatrix random = RandomMatrix(n, in_pattern, 1.0, seed);
+  SparseMatrix symmetric = 0.5 * (random + SparseMatrix(random.transpose()));
+  for (int i = 0; i < n; ++i) symmetric.coeffRef(i, i) = diagonal[i];
+  symmetric.makeCompressed();
+  return symmetric;
+}
+
+TEST(TangentSolver, DenseSolvesSymmetricMatricesDefiniteOrNot) {
+  const auto in_pattern = [](int i, int j) { return std::abs(i - j) <= 1 || i == 0 || j == 0; };
+  const int n = 9;
+  const Eigen::VectorXd dominant = Eigen::VectorXd::Constant(n, 6.0);
+  Eigen::VectorXd indefinite = dominant;
+  indefinite[4] = -6.0;
+  // Units: a dof in m next to dofs in mm and rotations, D S D with D from 1e-4 to 1e4.
+  const Eigen::VectorXd units = Eigen::VectorXd::LinSpaced(n, -4.0, 4.0).unaryExpr([](double e) {
+    return std::pow(10.0, e);
+  });
+  const SparseMatrix definite_matrix = RandomSymmetric(n, in_pattern, dominant, 11);
+  SparseMatrix cases[] = {
+      definite_matrix,
+      RandomSymmetric(n, in_pattern, indefinite, 12),
+      SparseMatrix(units.asDiagonal() * definite_matrix * units.asDiagonal()),
+  };
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  for (SparseMatrix& matrix : cases) {
+    TangentSolver solver(matrix, LinearSolver::kDense);
+    const Eigen::VectorXd expected = Eigen::MatrixXd(matrix).partialPivLu().solve(b);
+    ASSERT_TRUE(solver.Factorize(matrix));
+    Eigen::VectorXd x = b;
+    solver.Solve(&x);
+    // Each unknown to its own scale: the scaled case's span 1e-8 to 1e8.
+    for (int i = 0; i < n; ++i) {
+      EXPECT_NEAR(x[i], expected[i], 1e-11 * std::abs(expected[i]) + 1e-300) << i;
+    }
+  }
+  // A positive semi-definite block [[1, 1], [1, 1 + delta]], decoupled from the rest: singular
+  // for delta = 0, singular to working precision for 1e-14, like every solver's refusal above.
+  for (const double delta : {0.0, 1e-14}) {
+    SparseMatrix matrix = NearlySingular(delta);
+    SparseMatrix symmetric = 0.5 * (matrix + SparseMatrix(matrix.transpose()));
+    TangentSolver solver(symmetric, LinearSolver::kDense);
+    EXPECT_FALSE(solver.Factorize(symmetric)) << "delta " << delta;
   }
 }
 

@@ -74,8 +74,14 @@ class ParallelAssembly {
   // (HasConstantTangent); nullopt otherwise. Its force is the force at rest (zero).
   std::optional<AssemblyResponse> ConstantTangent() const;
 
-  // Recoverable energy and dissipated energy summed over components.
-  double StoredEnergy(std::span<const LawState> states) const;
+  // Recoverable energy and dissipated energy summed over components (the first inline: a
+  // structure sums it over its members at every step).
+  double StoredEnergy(std::span<const LawState> states) const {
+    double energy = 0.0;
+    const LawState* state = states.data();
+    for (const LawKernel& kernel : kernels_) energy += StoredEnergyInPlace(kernel, *state++);
+    return energy;
+  }
   double DissipatedEnergy(std::span<const LawState> states) const;
 
  private:

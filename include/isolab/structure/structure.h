@@ -35,6 +35,7 @@
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/hysteresis/plan_assembly.h"
 #include "isolab/structure/axial_load.h"
+#include "isolab/structure/damping_product.h"
 
 namespace isolab::structure {
 
@@ -114,6 +115,10 @@ class Structure {
   const std::vector<Member>& members() const { return members_; }
   const std::vector<CoupledMember>& coupled_members() const { return coupled_; }
   const SparseMatrix& viscous_damping() const { return viscous_damping_; }
+  // *force = viscous_damping() v (damping_product.h).
+  void DampingForce(const Eigen::VectorXd& v, Eigen::VectorXd* force) const {
+    damping_product_.Apply(viscous_damping_, v, force);
+  }
 
   // Law states: member k's component c at law_offset(k) + c; coupled member i's component c at
   // coupled_law_offset(i) + 2 c (x) and + 2 c + 1 (y).
@@ -246,6 +251,7 @@ class Structure {
   std::vector<Member> members_;
   std::vector<CoupledMember> coupled_;
   SparseMatrix viscous_damping_;
+  DampingProduct damping_product_;
   std::vector<std::size_t> law_offsets_;         // members, then coupled members, then the end
   std::vector<std::size_t> viscous_law_states_;  // the law states of dashpots (and their halves)
   SparseMatrix pattern_;
