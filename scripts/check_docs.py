@@ -98,10 +98,25 @@ def same(expected, actual):
     return True
 
 
+def tracked_top_level(root):
+    """The top-level names git tracks, or None outside a git checkout."""
+    try:
+        listed = subprocess.run(["git", "-C", str(root), "ls-files", "-z"], capture_output=True,
+                                check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return {path.split("/", 1)[0] for path in listed.decode().split("\0") if path}
+
+
 def link_repository(root, folder):
-    """Links in `folder` to the repository's top-level files and folders."""
+    """Links in `folder` to the repository's top-level files and folders: the sources only, not
+    the results a command left in the checkout (the README's first command writes
+    five_story_table9.h5 there; linked, the same command here would be refused its output)."""
+    tracked = tracked_top_level(root)
     for entry in root.iterdir():
-        if not entry.name.startswith(".") and not entry.name.startswith("build"):
+        if entry.name.startswith(".") or entry.name.startswith("build"):
+            continue
+        if tracked is None or entry.name in tracked:
             (folder / entry.name).symlink_to(entry)
 
 

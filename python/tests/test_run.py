@@ -269,7 +269,7 @@ def test_a_run_beyond_the_identified_range_warns(repo, tmp_path, isolab_cli):
     identified = r"the isolation was identified up to 108.5 mm and 338.7 mm/s over 69.5 cycles"
     with pytest.warns(isolab.IsolabWarning, match=identified + r" \(bncs_ica50\); this run reaches"):
         result = isolab.run(model, record, scale=2)
-    cli = isolab_cli.json("run", model, "--record", record, "--scale", 2)
+    cli = isolab_cli.json("run", model, "--record", record, "--scale", 2, "-o", tmp_path / "cli.h5")
     assert result.warnings == cli["warnings"]
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # inside the range: nothing to say

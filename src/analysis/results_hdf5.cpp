@@ -164,24 +164,10 @@ void WriteSelectionAttributes(io::Hdf5File& file, const RunDescription& run) {
   file.WriteStringsAttribute("/", "output_levels", RecordedLevels(selection, *run.problem));
 }
 
-// A file holding one chunk of each series, and what a run's summary file holds beside them
-// (attributes, peaks, the model's text: 26 kB for the five-story building) with HDF5's own
-// metadata (77 kB in all beside the five-story histories): 128 KiB and 1/64 of the histories,
-// so that the file's memory grows once.
-std::size_t ExpectedBytes(const std::vector<Series>& series, std::size_t chunk_rows) {
-  std::size_t values = 0;
-  for (const Series& s : series) values += s.width() * chunk_rows;
-  const std::size_t bytes = values * sizeof(double);
-  return bytes + bytes / 64 + (std::size_t{128} << 10);
-}
-
 class Hdf5Sink final : public ResultsWriter::Sink {
  public:
-  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t chunk_rows,
-           bool whole_in_memory)
-      : file_(path,
-              whole_in_memory ? io::Hdf5File::Storage::kInMemory : io::Hdf5File::Storage::kOnDisk,
-              ExpectedBytes(series, chunk_rows)) {
+  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t chunk_rows)
+      : file_(path), chunk_rows_(chunk_rows) {
     groups_ = CreateSeriesGroups(file_, series);
     for (const Series& s : series) {
       widths_.push_back(s.width());
@@ -192,7 +178,12 @@ class Hdf5Sink final : public ResultsWriter::Sink {
 
   void Write(std::span<const ResultsWriter::Block> blocks, std::size_t rows) override {
     for (std::size_t s = 0; s < rows_.size(); ++s) {
-      rows_[s].Append(std::span<const double>(blocks[s].data(), rows * widths_[s]));
+      const std::span<const double> block(blocks[s]);
+      if (rows < chunk_rows_) {
+        rows_[s].AppendLastChunk(block.first(chunk_rows_ * widths_[s]), rows);
+      } else {
+        rows_[s].Append(block.first(rows * widths_[s]));
+      }
     }
   }
 
@@ -218,6 +209,7 @@ class Hdf5Sink final : public ResultsWriter::Sink {
 
  private:
   io::Hdf5File file_;
+  std::size_t chunk_rows_;
   std::set<std::string> groups_;
   std::vector<std::size_t> widths_;
   std::vector<io::Hdf5File::Rows> rows_;
@@ -227,8 +219,8 @@ class Hdf5Sink final : public ResultsWriter::Sink {
 
 std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
                                                   const std::vector<Series>& series,
-                                                  std::size_t chunk_rows, bool whole_in_memory) {
-  return std::make_unique<Hdf5Sink>(path, series, chunk_rows, whole_in_memory);
+                                                  std::size_t chunk_rows) {
+  return std::make_unique<Hdf5Sink>(path, series, chunk_rows);
 }
 
 }  // namespace isolab::analysis

@@ -14,7 +14,8 @@ namespace isolab::analysis {
 class ResultsWriter::Sink {
  public:
   virtual ~Sink() = default;
-  // `rows` rows of every series: blocks[s] holds rows x series[s].width() values, row-major.
+  // `rows` rows of every series: blocks[s] begins with rows x series[s].width() values,
+  // row-major. Fewer rows than a block holds come last, and the block's other rows are zeros.
   virtual void Write(std::span<const ResultsWriter::Block> blocks, std::size_t rows) = 0;
   // Everything but the histories, then the file appears at its path. `run` is complete.
   virtual void Finish(const RunDescription& run) = 0;
@@ -24,10 +25,9 @@ class ResultsWriter::Sink {
 bool IsCsvPath(const std::string& path);
 
 // Chunks of `chunk_rows` rows: the writer's block, so that each Write fills whole chunks.
-// `whole_in_memory`: the file is built in memory and written at Finish (io::Hdf5File::Storage).
 std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
                                                   const std::vector<Series>& series,
-                                                  std::size_t chunk_rows, bool whole_in_memory);
+                                                  std::size_t chunk_rows);
 std::unique_ptr<ResultsWriter::Sink> OpenCsvSink(const std::string& path,
                                                  const std::vector<Series>& series);
 

@@ -13,12 +13,17 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
   series_ = ResultSeries(*run.problem, run.selection);
   std::size_t width = 0;
   for (const Series& s : series_) width += s.width();
-  buffer_rows_ = buffer_rows > 0 ? buffer_rows
-                                 : std::max<std::size_t>(
-                                       1, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
+  const std::size_t most_rows =
+      buffer_rows > 0
+          ? buffer_rows
+          : std::max<std::size_t>(1, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
   const int every = std::max(run.selection.every, 1);
   const std::size_t expected_rows = static_cast<std::size_t>(run.problem->grid.steps / every + 1);
-  buffer_rows_ = mode == Mode::kHeld ? expected_rows : std::min(buffer_rows_, expected_rows);
+  // The blocks are the file's chunks, and HDF5 stores a last partial chunk whole: blocks of
+  // equal size that tile the run leave fewer than one row per block unused, where blocks of
+  // `most_rows` could leave almost a whole one (10,001 rows in chunks of 8,322 were 40 % padding).
+  const std::size_t blocks = (expected_rows + most_rows - 1) / most_rows;
+  buffer_rows_ = mode == Mode::kHeld ? expected_rows : (expected_rows + blocks - 1) / blocks;
   for (const Series& s : series_) buffers_.emplace_back(buffer_rows_ * s.width());
   if (mode_ == Mode::kStreaming) OpenSink();
 }
@@ -28,9 +33,9 @@ void ResultsWriter::OpenSink() {
     sink_ = OpenCsvSink(path_, series_);
   } else if (mode_ == Mode::kHeld) {
     // One chunk per history: the rows held are written whole, in one call each.
-    sink_ = OpenHdf5Sink(path_, series_, std::max<std::size_t>(buffered_, 1), true);
+    sink_ = OpenHdf5Sink(path_, series_, std::max<std::size_t>(buffered_, 1));
   } else {
-    sink_ = OpenHdf5Sink(path_, series_, buffer_rows_, false);
+    sink_ = OpenHdf5Sink(path_, series_, buffer_rows_);
   }
 }
 
@@ -53,6 +58,13 @@ void ResultsWriter::Observe(const integrators::ResponseRow& row) {
 
 void ResultsWriter::Flush() {
   if (buffered_ == 0) return;
+  if (buffered_ < buffer_rows_ && mode_ == Mode::kStreaming) {
+    // The last block, part-filled: its chunk goes to the file whole, padded with zeros.
+    for (std::size_t s = 0; s < series_.size(); ++s) {
+      std::fill(buffers_[s].begin() + static_cast<std::ptrdiff_t>(buffered_ * series_[s].width()),
+                buffers_[s].end(), 0.0);
+    }
+  }
   sink_->Write(buffers_, buffered_);
   buffered_ = 0;
 }

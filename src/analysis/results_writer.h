@@ -28,9 +28,9 @@ class ResultsWriter final : public integrators::ResponseObserver {
 
   // kStreaming: the file is created at once and written block by block as the run goes.
   // kHeld: every row stays in the buffer (grown as needed: the histories of one run, as compact
-  // as the file holds them), nothing is created before Finish, which builds the whole HDF5 file
-  // in memory (io::Hdf5File::Storage) and writes it in one call. For a run whose file is written
-  // after it (a study's runs) or from rows already in memory.
+  // as the file holds them), nothing is created before Finish, which writes each history as one
+  // chunk, straight from the buffer. For a run whose file is written after it (a study's runs) or
+  // from rows already in memory.
   enum class Mode { kStreaming, kHeld };
 
   // For `path` (its extension chooses the format, results_file.h), under a temporary name, for

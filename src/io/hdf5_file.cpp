@@ -1,13 +1,9 @@
 #include "isolab/io/hdf5_file.h"
 
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -76,6 +72,17 @@ std::string LastHdf5Cause() {
   return cause;
 }
 
+// UTF-8 strings of `width` bytes, null-padded; h5py's .asstr() reads them as str.
+hid_t FixedUtf8StringType(std::size_t width) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  if (type >= 0 && (H5Tset_size(type, width) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
+                    H5Tset_strpad(type, H5T_STR_NULLPAD) < 0)) {
+    H5Tclose(type);
+    return -1;
+  }
+  return type;
+}
+
 std::vector<const char*> Pointers(std::span<const std::string> values) {
   std::vector<const char*> pointers;
   pointers.reserve(values.size());
@@ -83,31 +90,10 @@ std::vector<const char*> Pointers(std::span<const std::string> values) {
   return pointers;
 }
 
-// The whole file at once (Storage::kInMemory), outside HDF5.
-void WriteImage(const std::string& path, std::span<const char> image) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-  if (fd < 0) throw ResourceError(path, fmt::format("cannot write ({})", std::strerror(errno)));
-  std::size_t written = 0;
-  while (written < image.size()) {
-    const ssize_t n = ::write(fd, image.data() + written, image.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = n < 0 ? errno : ENOSPC;
-      ::close(fd);
-      throw ResourceError(path, fmt::format("cannot write ({})", std::strerror(error)));
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) {
-    throw ResourceError(path, fmt::format("cannot write ({})", std::strerror(errno)));
-  }
-}
-
 }  // namespace
 
 struct Hdf5File::Impl {
   std::optional<AtomicFile> output;
-  Storage storage = Storage::kOnDisk;
   hid_t file = -1;
   hid_t dataset_create = -1;  // no timestamps
   hid_t group_create = -1;
@@ -185,8 +171,7 @@ struct Hdf5File::Impl {
   }
 };
 
-Hdf5File::Hdf5File(std::string path, Storage storage, std::size_t expected_bytes)
-    : impl_(std::make_unique<Impl>()) {
+Hdf5File::Hdf5File(std::string path) : impl_(std::make_unique<Impl>()) {
   // HDF5 1.10 (Debian 12) frees a file whose close failed (a full disk) but keeps its identifier,
   // and its exit handler then closes it again: a crash after the error was reported (fixed in
   // HDF5 1.14, HDFGroup/hdf5#2291). Without the handler nothing is closed twice; isolab closes
@@ -194,7 +179,6 @@ Hdf5File::Hdf5File(std::string path, Storage storage, std::size_t expected_bytes
   static const herr_t no_exit_handler = H5dont_atexit();
   (void)no_exit_handler;
   Impl& s = *impl_;
-  s.storage = storage;
   s.output.emplace(std::move(path), AtomicFile::Temporary::kNamed);
   // HDF5 prints its error stack by default; errors here are reported through return codes. (The
   // setting is per thread in the thread-safe library Debian ships.)
@@ -214,14 +198,6 @@ Hdf5File::Hdf5File(std::string path, Storage storage, std::size_t expected_bytes
     }
     // Closing with objects still open is an error (Commit's check), not a silent deferral.
     s.Check(H5Pset_fclose_degree(file_access.get(), H5F_CLOSE_SEMI), "property lists");
-    if (storage == Storage::kInMemory) {
-      // Grown by the expected size at a time (each growth copies the image and zeroes the new
-      // part), never written by HDF5 (Commit writes the image). The floor is a run's summary
-      // file (about 26 kB): a floor of 1 MiB cost each such file a megabyte of zeroes, a tenth
-      // of its writing.
-      const std::size_t increment = std::max(expected_bytes, std::size_t{64} << 10);
-      s.Check(H5Pset_fapl_core(file_access.get(), increment, false), "property lists");
-    }
     s.file = H5Fcreate(s.output->temporary_path().c_str(), H5F_ACC_TRUNC, file_create.get(),
                        file_access.get());
     s.Check(s.file, "cannot create the file");
@@ -255,22 +231,24 @@ void Hdf5File::WriteIntegers(const std::string& name, const std::vector<std::siz
 
 void Hdf5File::WriteStrings(const std::string& name, const std::vector<std::size_t>& dims,
                             std::span<const std::string> values) {
-  Handle type(Utf8StringType(), H5Tclose);
+  // Fixed length, the longest's, null-padded, packed in one buffer: a variable-length string
+  // goes through HDF5's global heap, about 20,000 instructions each (a 5,000-run study's summary
+  // holds 20,000 of them).
+  std::size_t width = 1;
+  for (const std::string& value : values) width = std::max(width, value.size());
+  std::vector<char> packed(values.size() * width, '\0');
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    std::copy(values[k].begin(), values[k].end(), packed.begin() + static_cast<long>(k * width));
+  }
+  Handle type(FixedUtf8StringType(width), H5Tclose);
   impl_->Check(type.get(), "string type");
-  const std::vector<const char*> pointers = Pointers(values);
-  impl_->Write(name, dims, type.get(), pointers.data(), pointers.size(), "");
+  impl_->Write(name, dims, type.get(), packed.data(), values.size(), "");
 }
 
 void Hdf5File::WriteText(const std::string& name, const std::string& value) {
-  // Fixed length, UTF-8: one string needs no global heap (much cheaper to write than a
-  // variable-length one), and h5py's .asstr() reads either.
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  impl_->Check(type.get(), "string type");
-  impl_->Check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "string size");
-  impl_->Check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string encoding");
-  impl_->Check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "string padding");
-  const std::string padded = value.empty() ? std::string(1, '\0') : value;
-  impl_->Write(name, {}, type.get(), padded.data(), 1, "");
+  // Fixed length: one string needs no global heap (much cheaper to write than a variable-length
+  // one).
+  WriteStrings(name, {}, std::span<const std::string>(&value, 1));
 }
 
 void Hdf5File::WriteAttribute(const std::string& object, const std::string& name,
@@ -320,11 +298,6 @@ Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns
   Handle create(H5Pcopy(s.dataset_create), H5Pclose);
   s.Check(create.get(), "property list of " + name);
   s.Check(H5Pset_chunk(create.get(), rank, chunk), "chunks of " + name);
-  if (s.storage == Storage::kInMemory) {
-    // Built in memory, a file's histories are appended whole: no chunk is left part-written, so
-    // none needs its fill first.
-    s.Check(H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER), "fill of " + name);
-  }
   const hid_t dataset = H5Dcreate2(s.file, name.c_str(), H5T_NATIVE_DOUBLE, space.get(),
                                    H5P_DEFAULT, create.get(), H5P_DEFAULT);
   s.Check(dataset, "dataset " + name);
@@ -345,23 +318,9 @@ void Hdf5File::Commit() {
     H5Pclose(*plist);
     *plist = -1;
   }
-  std::unique_ptr<char[]> image;  // every byte written by HDF5: not zeroed first
-  std::size_t image_size = 0;
-  if (s.storage == Storage::kInMemory) {
-    s.Check(H5Fflush(s.file, H5F_SCOPE_LOCAL), "flushing the file");
-    const ssize_t size = H5Fget_file_image(s.file, nullptr, 0);
-    s.Check(static_cast<herr_t>(size < 0 ? -1 : 0), "the file's image");
-    image_size = static_cast<std::size_t>(size);
-    image.reset(new char[std::max<std::size_t>(image_size, 1)]);
-    s.Check(static_cast<herr_t>(H5Fget_file_image(s.file, image.get(), image_size) < 0 ? -1 : 0),
-            "the file's image");
-  }
   const herr_t status = H5Fclose(s.file);
   s.file = -1;
   s.Check(status, "closing (flushing) the file");
-  if (s.storage == Storage::kInMemory) {
-    WriteImage(s.output->temporary_path(), std::span<const char>(image.get(), image_size));
-  }
   s.output->Commit();
 }
 
@@ -395,34 +354,54 @@ void Hdf5File::Rows::Append(std::span<const double> values) {
         fmt::format("{}: {} values are not whole rows of {}", name_, values.size(), width));
   }
   const hsize_t added = values.size() / width;
-  const int rank = columns_ == 0 ? 1 : 2;
-  const hsize_t extent[2] = {rows_ + added, columns_};
-  file_->Check(H5Dset_extent(dataset_, extent), "extending " + name_);
-  Handle file_space(H5Dget_space(dataset_), H5Sclose);
-  file_->Check(file_space.get(), "space of " + name_);
-  const hsize_t start[2] = {rows_, 0};
+  Extend(added);
   if (rows_ % chunk_rows_ == 0 && added % chunk_rows_ == 0) {
-    // Whole chunks, of native doubles without filters: their bytes are the file's.
     const std::size_t chunk_values = chunk_rows_ * width;
     for (std::size_t k = 0; k < added / chunk_rows_; ++k) {
-      const hsize_t offset[2] = {rows_ + k * chunk_rows_, 0};
-      file_->Check(H5Dwrite_chunk(dataset_, H5P_DEFAULT, 0, offset, chunk_values * sizeof(double),
-                                  values.data() + k * chunk_values),
-                   "writing " + name_);
+      WriteChunk(rows_ + k * chunk_rows_, values.subspan(k * chunk_values, chunk_values));
     }
     rows_ += added;
     return;
   }
+  Handle file_space(H5Dget_space(dataset_), H5Sclose);
+  file_->Check(file_space.get(), "space of " + name_);
+  const hsize_t start[2] = {rows_, 0};
   const hsize_t count[2] = {added, columns_};
   file_->Check(
       H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
       "selecting rows of " + name_);
+  const int rank = columns_ == 0 ? 1 : 2;
   Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
   file_->Check(memory_space.get(), "memory space of " + name_);
   file_->Check(H5Dwrite(dataset_, H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(),
                         H5P_DEFAULT, values.data()),
                "writing " + name_);
   rows_ += added;
+}
+
+void Hdf5File::Rows::AppendLastChunk(std::span<const double> chunk, std::size_t rows) {
+  const std::size_t width = std::max<std::size_t>(columns_, 1);
+  if (rows_ % chunk_rows_ != 0 || chunk.size() != chunk_rows_ * width || rows > chunk_rows_) {
+    throw std::logic_error(fmt::format("{}: {} rows of a chunk of {} values at row {}", name_, rows,
+                                       chunk.size(), rows_));
+  }
+  if (rows == 0) return;
+  Extend(rows);
+  WriteChunk(rows_, chunk);
+  rows_ += rows;
+}
+
+void Hdf5File::Rows::Extend(std::size_t added) {
+  const hsize_t extent[2] = {rows_ + added, columns_};
+  file_->Check(H5Dset_extent(dataset_, extent), "extending " + name_);
+}
+
+// Native doubles without filters: the chunk's bytes are the file's.
+void Hdf5File::Rows::WriteChunk(std::size_t first_row, std::span<const double> chunk) {
+  const hsize_t offset[2] = {first_row, 0};
+  file_->Check(
+      H5Dwrite_chunk(dataset_, H5P_DEFAULT, 0, offset, chunk.size() * sizeof(double), chunk.data()),
+      "writing " + name_);
 }
 
 }  // namespace isolab::io

@@ -5,9 +5,10 @@
 namespace isolab::io {
 namespace {
 
-bool SameLetter(char a, char b) {
-  return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
-}
+// ASCII case folding: the words sought are ASCII, and std::tolower (a call per character,
+// locale-dependent) was most of the time spent looking for "end data" on every data line.
+char AsciiLower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+bool SameLetter(char a, char b) { return AsciiLower(a) == AsciiLower(b); }
 
 bool IsSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 bool IsDigit(char c) { return c >= '0' && c <= '9'; }

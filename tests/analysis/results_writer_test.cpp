@@ -207,6 +207,46 @@ INSTANTIATE_TEST_SUITE_P(BundledModels, StreamedAgainstInMemory,
                            return name + (info.param.ida ? "_ida" : "_newmark");
                          });
 
+// A streamed run longer than its buffer is written in chunks of equal size that tile its rows:
+// the file's last chunk, stored whole by HDF5, holds fewer padding rows than there are chunks
+// (chunks of the buffer's size would leave up to a whole chunk of them), and its padding is zeros
+// (the file's bytes depend on nothing but the run).
+TEST(ResultsWriter, StreamedChunksTileTheRun) {
+  const model::ModelFile model = model::LoadModelFile(Model("buildings/five_story_table9.yaml"));
+  const Problem setup = Prepare(model, {});
+  constexpr std::size_t kBufferRows = 1000;
+  const auto path = TemporaryFile("tiled.h5");
+  const Summary run = RunAndRecord(model.analysis, setup, {}, path.string(), kBufferRows);
+  ASSERT_TRUE(run.run.ok());
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const Dataset displacement = Read(file, "displacement");
+  ASSERT_EQ(displacement.dims.size(), 2u);
+  const hsize_t rows = displacement.dims[0], columns = displacement.dims[1];
+  ASSERT_GT(rows, 3 * kBufferRows);
+  const hid_t dataset = H5Dopen2(file, "displacement", H5P_DEFAULT);
+  const hid_t create = H5Dget_create_plist(dataset);
+  hsize_t chunk[2] = {0, 0};
+  ASSERT_EQ(H5Pget_chunk(create, 2, chunk), 2);
+  EXPECT_LE(chunk[0], kBufferRows);
+  const hsize_t chunks = (rows + chunk[0] - 1) / chunk[0];
+  EXPECT_LT(chunks * chunk[0] - rows, chunks) << "rows " << rows << ", chunks of " << chunk[0];
+
+  // The last chunk as the file stores it: the run's last rows, then zeros.
+  std::vector<double> last(chunk[0] * columns, -1.0);
+  const hsize_t offset[2] = {(chunks - 1) * chunk[0], 0};
+  std::uint32_t filters = 0;
+  ASSERT_GE(H5Dread_chunk(dataset, H5P_DEFAULT, offset, &filters, last.data()), 0);
+  const std::size_t kept = (rows - offset[0]) * columns;
+  EXPECT_TRUE(std::equal(last.begin(), last.begin() + static_cast<std::ptrdiff_t>(kept),
+                         displacement.values.end() - static_cast<std::ptrdiff_t>(kept)));
+  EXPECT_TRUE(std::all_of(last.begin() + static_cast<std::ptrdiff_t>(kept), last.end(),
+                          [](double v) { return v == 0.0; }));
+  H5Pclose(create);
+  H5Dclose(dataset);
+  H5Fclose(file);
+}
+
 void ExpectSamePeak(const Peak& a, const Peak& b, const char* what) {
   EXPECT_EQ(a.value, b.value) << what;
   EXPECT_EQ(a.time, b.time) << what;

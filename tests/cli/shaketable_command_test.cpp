@@ -328,7 +328,8 @@ TEST(ShakeTableCommand, TheBncsBhm2WarnsBeyondTheRangeItWasIdentifiedOn) {
   ASSERT_FALSE(warning.empty()) << twice;
   EXPECT_NE(StringAttribute(results.string(), "warnings").find(warning), std::string::npos);
   // The text run prints it on stderr, as every warning.
-  const auto printed = RunIsolab("run " + model + " --record " + record.string() + " --scale 2",
+  const auto printed = RunIsolab("run " + model + " --record " + record.string() +
+                                     " --scale 2 -o " + Scratch("printed.h5").string(),
                                  /*stderr_only=*/true);
   EXPECT_NE(printed.output.find("isolab: warning: " + warning), std::string::npos)
       << printed.output;

@@ -58,7 +58,8 @@ TEST(SynthCommand, ThreeDigitExponentsAreReadBackByRun) {
   ASSERT_EQ(synth.exit_code, 0);
   EXPECT_NE(Contents(record).find("E-1"), std::string::npos) << "no three-digit exponent";
   const auto run = RunIsolab("run " + kSource + "/models/sdof/table7_thm1_soft.yaml --record " +
-                             record.string() + " --dt 0.01 --json");
+                             record.string() + " --dt 0.01 --json --summary-only -o " +
+                             isolab::testing::OwnTestFile("long_tail.h5").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto json = nlohmann::json::parse(run.output);
   // The PGA asked for (written to 8 digits) and the duration: 100001 samples at 0.01 s.

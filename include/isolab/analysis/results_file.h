@@ -75,8 +75,8 @@ class ResultsWriter;
 
 // A results file written after its run: its rows, observed as the run goes,
 // stay in memory as compact as the file holds them (the selected histories of one run), and
-// Write builds the whole file in memory and writes it out in one call. A study's runs use it so
-// that no HDF5 call happens while a run computes.
+// Write creates the file and writes each history as one chunk. A study's runs use it so that no
+// HDF5 call happens while a run computes.
 class HeldResultsFile final : public integrators::ResponseObserver {
  public:
   // As ResultsWriter (results_writer.h): checks the path and the selection (InputError), creates

@@ -2,7 +2,8 @@
 // every file reads the same way from Python (h5py) or any HDF5 tool:
 //  * numbers as float64 or int64 datasets, each with a "units" attribute where it has units;
 //  * text as UTF-8 strings (h5py returns str for attributes, and for datasets through
-//    .asstr()): variable-length in attributes and string arrays, fixed-length for a single text;
+//    .asstr()): variable-length in attributes, fixed-length (null-padded to the longest) in
+//    datasets;
 //  * column names of a 2-D dataset as a "columns" attribute (an array of strings);
 //  * numbers written whole (WriteDoubles: contiguous, the cheapest), or as chunked datasets whose
 //    first dimension grows as rows are appended (Rows), so a run can stream its output instead
@@ -26,20 +27,9 @@ class Hdf5File {
  public:
   class Rows;
 
-  // Where HDF5 builds the file. kOnDisk: in the temporary file itself, as it goes (memory stays
-  // HDF5's caches). kInMemory: in memory, the whole file, written out by Commit in one call
-  // outside any HDF5 call: for a file whose contents are in memory anyway, so that HDF5's
-  // global lock is held for HDF5's own work only, not for the system's write.
-  // Rows' chunks are then not filled before they are written: append whole chunks only (a
-  // history written in one Append of one chunk), or the rest of a chunk holds what memory held.
-  enum class Storage { kOnDisk, kInMemory };
-
   // Throws InputError when the path cannot be an output (atomic_file.h) or the file cannot be
   // created.
-  // `expected_bytes`: about how large a file kInMemory will grow (its memory grows by that much,
-  // at least 64 KiB, at a time).
-  explicit Hdf5File(std::string path, Storage storage = Storage::kOnDisk,
-                    std::size_t expected_bytes = 0);
+  explicit Hdf5File(std::string path);
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
@@ -55,8 +45,7 @@ class Hdf5File {
                      std::span<const std::int64_t> data, const std::string& units = "");
   void WriteStrings(const std::string& name, const std::vector<std::size_t>& dims,
                     std::span<const std::string> values);
-  // A scalar string dataset, for text of any length (attributes stop near 64 KiB); UTF-8, fixed
-  // length.
+  // A scalar string dataset, for text of any length (attributes stop near 64 KiB).
   void WriteText(const std::string& name, const std::string& value);
 
   // Attributes of `object` ("/" for the file, or a dataset or group name).
@@ -97,12 +86,19 @@ class Hdf5File::Rows {
   // Whole chunks go to the file as they are (HDF5's direct chunk write: no chunk cache, no
   // fill, no copy but the file's).
   void Append(std::span<const double> values);
+  // A stream's last `rows` rows, at most a chunk's, at a chunk's start: `chunk` is a whole
+  // chunk whose rows past `rows` are padding (zeros, from the caller). Written straight to the
+  // file like a whole chunk, where Append would have HDF5 allocate, fill and copy a chunk of its
+  // own (HDF5 stores an edge chunk whole either way).
+  void AppendLastChunk(std::span<const double> chunk, std::size_t rows);
   std::size_t rows() const { return rows_; }
 
  private:
   friend class Hdf5File;
   Rows(const Hdf5File::Impl* file, std::int64_t dataset, std::string name, std::size_t columns,
        std::size_t chunk_rows);
+  void Extend(std::size_t added);
+  void WriteChunk(std::size_t first_row, std::span<const double> chunk);
 
   const Hdf5File::Impl* file_;
   std::int64_t dataset_;  // an HDF5 hid_t
