@@ -12,13 +12,16 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
   CheckResultsPath(path);
   series_ = ResultSeries(*run.problem, run.selection);
   std::size_t width = 0;
-  for (const Series& s : series_) width += s.width();
+  for (const Series& s : series_) {
+    widths_.push_back(s.width());
+    width += s.width();
+  }
   const std::size_t most_rows =
       buffer_rows > 0
           ? buffer_rows
           : std::max<std::size_t>(1, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
-  const int every = std::max(run.selection.every, 1);
-  const std::size_t expected_rows = static_cast<std::size_t>(run.problem->grid.steps / every + 1);
+  every_ = std::max(run.selection.every, 1);
+  const std::size_t expected_rows = static_cast<std::size_t>(run.problem->grid.steps / every_ + 1);
   // The blocks are the file's chunks, and HDF5 stores a last partial chunk whole: blocks of
   // equal size that tile the run leave fewer than one row per block unused, where blocks of
   // `most_rows` could leave almost a whole one (10,001 rows in chunks of 8,322 were 40 % padding).
@@ -42,16 +45,20 @@ void ResultsWriter::OpenSink() {
 ResultsWriter::~ResultsWriter() = default;
 
 void ResultsWriter::Observe(const integrators::ResponseRow& row) {
-  if (row.step % std::max(run_.selection.every, 1) != 0 || series_.empty()) return;
+  if (row.step % every_ != 0 || series_.empty()) return;
   if (buffered_ == buffer_rows_) {  // held: more rows than the grid's (never with Newmark or IDA)
     buffer_rows_ *= 2;
     for (std::size_t s = 0; s < series_.size(); ++s) {
-      buffers_[s].resize(buffer_rows_ * series_[s].width());
+      buffers_[s].resize(buffer_rows_ * widths_[s]);
     }
   }
-  for (std::size_t s = 0; s < series_.size(); ++s) {
-    series_[s].fill(row, buffers_[s].data() + buffered_ * series_[s].width());
-  }
+  // Locals, since the fill functions are opaque to the compiler: read through `this`, the
+  // vectors' bounds and the row would be loaded again after every call.
+  const std::size_t count = series_.size(), at = buffered_;
+  const Series* series = series_.data();
+  Block* buffers = buffers_.data();
+  const std::size_t* widths = widths_.data();
+  for (std::size_t s = 0; s < count; ++s) series[s].fill(row, buffers[s].data() + at * widths[s]);
   ++rows_;
   if (++buffered_ == buffer_rows_ && mode_ == Mode::kStreaming) Flush();
 }
@@ -61,7 +68,7 @@ void ResultsWriter::Flush() {
   if (buffered_ < buffer_rows_ && mode_ == Mode::kStreaming) {
     // The last block, part-filled: its chunk goes to the file whole, padded with zeros.
     for (std::size_t s = 0; s < series_.size(); ++s) {
-      std::fill(buffers_[s].begin() + static_cast<std::ptrdiff_t>(buffered_ * series_[s].width()),
+      std::fill(buffers_[s].begin() + static_cast<std::ptrdiff_t>(buffered_ * widths_[s]),
                 buffers_[s].end(), 0.0);
     }
   }

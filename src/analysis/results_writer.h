@@ -84,6 +84,8 @@ class ResultsWriter final : public integrators::ResponseObserver {
   std::string path_;
   Mode mode_ = Mode::kStreaming;
   std::vector<Series> series_;
+  std::vector<std::size_t> widths_;  // per series: its values a row
+  int every_ = 1;                    // run.selection.every, at least 1
   std::unique_ptr<Sink> sink_;
   std::size_t buffer_rows_ = 0;
   std::vector<Block> buffers_;  // per series: buffer_rows_ x width, row-major

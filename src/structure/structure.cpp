@@ -279,13 +279,6 @@ void Structure::ConstantTangent(const TangentFactors& factors, SparseMatrix* tan
   }
 }
 
-double Structure::MemberDeformation(std::size_t member, std::span<const double> u) const {
-  const Terms& terms = member_terms_[member];
-  double d = 0.0;
-  for (int a = 0; a < terms.count; ++a) d += terms.coefficients[a] * u[terms.dofs[a]];
-  return d;
-}
-
 Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> u) const {
   const CoupledTerms& terms = coupled_terms_[coupled];
   Vec2 d;
