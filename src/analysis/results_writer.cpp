@@ -1,6 +1,7 @@
 #include "results_writer.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "results_sink.h"
 
@@ -11,11 +12,8 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
     : run_(run), path_(path), mode_(mode) {
   CheckResultsPath(path);
   series_ = ResultSeries(*run.problem, run.selection);
-  std::size_t width = 0;
-  for (const Series& s : series_) {
-    widths_.push_back(s.width());
-    width += s.width();
-  }
+  for (const Series& s : series_) widths_.push_back(s.width());
+  const std::size_t width = std::accumulate(widths_.begin(), widths_.end(), std::size_t{0});
   const std::size_t most_rows =
       buffer_rows > 0
           ? buffer_rows
@@ -27,7 +25,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
   // `most_rows` could leave almost a whole one (10,001 rows in chunks of 8,322 were 40 % padding).
   const std::size_t blocks = (expected_rows + most_rows - 1) / most_rows;
   buffer_rows_ = mode == Mode::kHeld ? expected_rows : (expected_rows + blocks - 1) / blocks;
-  for (const Series& s : series_) buffers_.emplace_back(buffer_rows_ * s.width());
+  for (const std::size_t w : widths_) buffers_.emplace_back(buffer_rows_ * w);
   if (mode_ == Mode::kStreaming) OpenSink();
 }
 
