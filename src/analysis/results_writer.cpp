@@ -17,7 +17,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunDescription& run,
   const std::size_t most_rows =
       buffer_rows > 0
           ? buffer_rows
-          : std::max<std::size_t>(1, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
+          : std::max(kMinBufferRows, kBufferBytes / (8 * std::max<std::size_t>(width, 1)));
   every_ = std::max(run.selection.every, 1);
   const std::size_t expected_rows = static_cast<std::size_t>(run.problem->grid.steps / every_ + 1);
   // The blocks are the file's chunks, and HDF5 stores a last partial chunk whole: blocks of

@@ -14,6 +14,11 @@ namespace {
 bool SpellsNonFinite(std::string_view text) {
   if (!text.empty() && (text.front() == '+' || text.front() == '-')) text.remove_prefix(1);
   if (!text.empty() && text.front() == '.') text.remove_prefix(1);
+  // Every such spelling starts with an n or an i; a number never does.
+  if (text.empty() ||
+      !(text.front() == 'n' || text.front() == 'N' || text.front() == 'i' || text.front() == 'I')) {
+    return false;
+  }
   std::string lower(text);
   std::transform(lower.begin(), lower.end(), lower.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });

@@ -3,6 +3,7 @@
 // response "completed" nor let it into a study's means.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "isolab/integrators/response.h"
@@ -17,8 +18,15 @@ namespace isolab::integrators {
 // negative-stiffness layer reaches 24 within 4 s. Ten leaves a margin on both sides.
 constexpr double kBlowUpKineticToInput = 10.0;
 
-// Why the energies show a blow-up (a non-finite term, or kinetic energy out of reach of the
-// input), or empty when they do not. `max_input` is the largest |input energy| so far.
+// Whether the energies show a blow-up: a non-finite term, or kinetic energy out of reach of the
+// input. `max_input` is the largest |input energy| so far. Inline: it is asked at every step.
+inline bool ShowsBlowUp(const Energies& e, double max_input) {
+  return !(std::isfinite(e.input) && std::isfinite(e.kinetic) && std::isfinite(e.damping) &&
+           std::isfinite(e.elastic) && std::isfinite(e.hysteretic)) ||
+         e.kinetic > kBlowUpKineticToInput * max_input;
+}
+
+// What the blow-up ShowsBlowUp found is, for the run's message.
 std::string DescribeBlowUp(const Energies& energies, double max_input);
 
 }  // namespace isolab::integrators

@@ -286,9 +286,10 @@ RunSummary Run(const structure::Structure& structure, const Excitation& excitati
     summary.steps = row * every;
     max_input = std::max(max_input, std::abs(e.input));
     max_balance = std::max(max_balance, std::abs(e.Balance()));
-    if (std::string why = DescribeBlowUp(e, max_input); !why.empty()) {
+    if (ShowsBlowUp(e, max_input)) {
       summary.termination = RunSummary::Termination::kFailed;
-      summary.message = fmt::format("blow-up at t = {:.6g}: {}", row * every * grid.dt, why);
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", row * every * grid.dt,
+                                    DescribeBlowUp(e, max_input));
       break;
     }
   }

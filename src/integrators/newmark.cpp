@@ -125,7 +125,7 @@ class NewmarkRun {
     while (!pending_levels_.empty()) {
       const int level = pending_levels_.back();
       pending_levels_.pop_back();
-      const double size = std::ldexp(h, -level);
+      const double size = level == 0 ? h : std::ldexp(h, -level);
       if (TryStep(t, size)) {
         t += size;
         continue;
@@ -404,9 +404,10 @@ RunSummary Run(const Structure& structure, const Excitation& excitation, const T
     summary.steps = step;
     max_input = std::max(max_input, std::abs(run.energies().input));
     max_balance = std::max(max_balance, std::abs(run.energies().Balance()));
-    if (std::string why = DescribeBlowUp(run.energies(), max_input); !why.empty()) {
+    if (ShowsBlowUp(run.energies(), max_input)) {
       summary.termination = RunSummary::Termination::kFailed;
-      summary.message = fmt::format("blow-up at t = {:.6g}: {}", step * grid.dt, why);
+      summary.message = fmt::format("blow-up at t = {:.6g}: {}", step * grid.dt,
+                                    DescribeBlowUp(run.energies(), max_input));
       break;
     }
   }

@@ -393,15 +393,17 @@ void Hdf5File::Rows::AppendLastChunk(std::span<const double> chunk, std::size_t 
 
 void Hdf5File::Rows::Extend(std::size_t added) {
   const hsize_t extent[2] = {rows_ + added, columns_};
-  file_->Check(H5Dset_extent(dataset_, extent), "extending " + name_);
+  // The message is built only on failure: these calls come once a block per series.
+  if (H5Dset_extent(dataset_, extent) < 0) file_->Fail("extending " + name_);
 }
 
 // Native doubles without filters: the chunk's bytes are the file's.
 void Hdf5File::Rows::WriteChunk(std::size_t first_row, std::span<const double> chunk) {
   const hsize_t offset[2] = {first_row, 0};
-  file_->Check(
-      H5Dwrite_chunk(dataset_, H5P_DEFAULT, 0, offset, chunk.size() * sizeof(double), chunk.data()),
-      "writing " + name_);
+  if (H5Dwrite_chunk(dataset_, H5P_DEFAULT, 0, offset, chunk.size() * sizeof(double),
+                     chunk.data()) < 0) {
+    file_->Fail("writing " + name_);
+  }
 }
 
 }  // namespace isolab::io

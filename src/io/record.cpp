@@ -38,21 +38,20 @@ std::vector<std::string> Lines(const std::string& path) {
   return lines;
 }
 
+// White space as the C locale's isspace has it, without a call per character.
+bool IsBlank(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+
 // Numbers of one line, split on white space and commas; an error names file, line and token.
-void ParseNumbers(const std::string& path, int line_number, const std::string& line,
+void ParseNumbers(const std::string& path, int line_number, std::string_view line,
                   std::vector<double>* out) {
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ','))
-      ++i;
+    while (i < line.size() && (IsBlank(line[i]) || line[i] == ',')) ++i;
     if (i >= line.size()) break;
     std::size_t end = i;
-    while (end < line.size() && !std::isspace(static_cast<unsigned char>(line[end])) &&
-           line[end] != ',')
-      ++end;
-    const std::string token = line.substr(i, end - i);
+    while (end < line.size() && !IsBlank(line[end]) && line[end] != ',') ++end;
     std::string problem;
-    const std::optional<double> value = ParseFiniteNumber(token, &problem);
+    const std::optional<double> value = ParseFiniteNumber(line.substr(i, end - i), &problem);
     if (!value) throw InputError({path, line_number}, problem);
     out->push_back(*value);
     i = end;
@@ -311,7 +310,12 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   std::vector<double> numbers;
   int last_data_line = 0;
   for (std::size_t i = layout->first_data_line; i < lines.size(); ++i) {
-    if (ContainsIgnoringCase(lines[i], "end data")) break;
+    // Numbers hold no n: only a line with one can be the END DATA line.
+    const bool has_n =
+        lines[i].find('n') != std::string::npos || lines[i].find('N') != std::string::npos;
+    if (has_n && ContainsIgnoringCase(lines[i], "end data")) {
+      break;
+    }
     const std::size_t before = numbers.size();
     ParseNumbers(path, static_cast<int>(i + 1), lines[i], &numbers);
     if (numbers.size() > before) last_data_line = static_cast<int>(i + 1);
