@@ -2,18 +2,14 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
 namespace isolab::integrators {
 
 std::string DescribeBlowUp(const Energies& e, double max_input) {
-  for (const double term : {e.input, e.kinetic, e.damping, e.elastic, e.hysteretic}) {
-    if (!std::isfinite(term)) {
-      return fmt::format(
-          "the response is not finite (energies: input {:.3g}, kinetic {:.3g}, damping {:.3g}, "
-          "elastic {:.3g}, hysteretic {:.3g})",
-          e.input, e.kinetic, e.damping, e.elastic, e.hysteretic);
-    }
+  if (!EnergiesFinite(e)) {
+    return fmt::format(
+        "the response is not finite (energies: input {:.3g}, kinetic {:.3g}, damping {:.3g}, "
+        "elastic {:.3g}, hysteretic {:.3g})",
+        e.input, e.kinetic, e.damping, e.elastic, e.hysteretic);
   }
   return fmt::format(
       "the kinetic energy {:.3g} exceeds {} times the input energy {:.3g}: the model creates "

@@ -18,12 +18,15 @@ namespace isolab::integrators {
 // negative-stiffness layer reaches 24 within 4 s. Ten leaves a margin on both sides.
 constexpr double kBlowUpKineticToInput = 10.0;
 
+inline bool EnergiesFinite(const Energies& e) {
+  return std::isfinite(e.input) && std::isfinite(e.kinetic) && std::isfinite(e.damping) &&
+         std::isfinite(e.elastic) && std::isfinite(e.hysteretic);
+}
+
 // Whether the energies show a blow-up: a non-finite term, or kinetic energy out of reach of the
 // input. `max_input` is the largest |input energy| so far. Inline: it is asked at every step.
 inline bool ShowsBlowUp(const Energies& e, double max_input) {
-  return !(std::isfinite(e.input) && std::isfinite(e.kinetic) && std::isfinite(e.damping) &&
-           std::isfinite(e.elastic) && std::isfinite(e.hysteretic)) ||
-         e.kinetic > kBlowUpKineticToInput * max_input;
+  return !EnergiesFinite(e) || e.kinetic > kBlowUpKineticToInput * max_input;
 }
 
 // What the blow-up ShowsBlowUp found is, for the run's message.
