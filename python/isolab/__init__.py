@@ -56,7 +56,7 @@ def _as_list(value):
 
 def _model(model):
     """A Model, or the model file a path names."""
-    return model if isinstance(model, Model) else load_model(str(model))
+    return model if isinstance(model, Model) else load_model(_path("model", model))
 
 
 def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, scale=None,
@@ -142,13 +142,13 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
             raise InputError(f"{name}: does not apply to this cyclic test "
                              "(path and orbit, or the sinusoidal test with its test data)")
     if path is not None or orbit is not None:
-        target = model if isinstance(model, Model) else str(model)
-        paths = [] if path is None else _paths(path)
+        target = model if isinstance(model, Model) else _path("model", model)
+        paths = [] if path is None else _paths("path", path)
         return _replay(target, paths, orbit or "", _as_list(amplitude), _as_list(period), cycles,
                        steps_per_cycle, isolator or "", uncoupled, force_unit or "",
                        length_unit or "")
     runs = _cyclic(_model(model), _as_list(amplitude), _as_list(period), cycles, steps_per_cycle,
-                   sequential, "" if test_data is None else str(test_data), noise,
+                   sequential, _optional_path("test_data", test_data), noise,
                    1 if seed is None else seed)
     several = hasattr(amplitude, "__len__") or hasattr(period, "__len__")
     return runs if several else runs[0]
@@ -246,12 +246,12 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
     are refused with building, offsets and output without it.
     """
     _one_of(model, "model", building, "shake-table motions")
-    data = _paths(data)
+    data = _paths("data", data)
     if building is not None:
         _refuse([("cycles", cycles is not None), ("force", force)],
                 "applies to cyclic tests, not to building=")
-        return json.loads(_fit_building(data, str(building),
-                                        "" if output is None else str(output), seed, budget,
+        return json.loads(_fit_building(data, _path("building", building),
+                                        _optional_path("output", output), seed, budget,
                                         specimen or "", offsets or "", force_unit or "",
                                         length_unit or "", threads, quiet))
     _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
@@ -260,8 +260,8 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
             "result)")
     cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
                                                          else [cycles])]
-    return _fit(data, str(model), seed, budget, cycles, specimen or "", force_unit or "",
-                length_unit or "", threads, force, quiet)
+    return _fit(data, _path("model", model), seed, budget, cycles, specimen or "",
+                force_unit or "", length_unit or "", threads, force, quiet)
 
 
 def diagnose(data, base=None, *, building=None, offsets=None, seed=1, budget=12000,
@@ -295,16 +295,16 @@ def diagnose(data, base=None, *, building=None, offsets=None, seed=1, budget=120
     force_unit, length_unit and force are refused with building, offsets without it.
     """
     _one_of(base, "base", building, "a building's shake-table motions")
-    data = _paths(data)
+    data = _paths("data", data)
     if building is not None:
         if force_unit is not None or length_unit is not None:
             raise InputError("force_unit= and length_unit= apply to cyclic tests, not to building= "
                              "(shake-table motions carry their units in the column names)")
         _refuse([("force", force)], "applies to cyclic tests, not to building=")
-        return json.loads(_diagnose_building(data, str(building), seed, budget, specimen or "",
-                                             offsets or "", threads, quiet))
+        return json.loads(_diagnose_building(data, _path("building", building), seed, budget,
+                                             specimen or "", offsets or "", threads, quiet))
     _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
-    return json.loads(_diagnose(data, str(base), seed, budget, specimen or "",
+    return json.loads(_diagnose(data, _path("base", base), seed, budget, specimen or "",
                                 force_unit or "", length_unit or "", threads, force, quiet))
 
 
@@ -329,7 +329,7 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, run
     its four (resultant isolator displacement and base shear, floor rotation, torsional
     amplification), a one-direction study's its five; "units" lists them.
     """
-    return _compare(str(study), "" if output is None else str(output), jobs, quiet,
+    return _compare(_path("study", study), _optional_path("output", output), jobs, quiet,
                     None if free_vibration is None else str(free_vibration),
                     None if runs is None else str(runs))
 
@@ -350,14 +350,44 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     story_drift_ratio (%), floor_acceleration (g), residual_displacement), "governing" (the bound
     of the largest value per quantity), "records" (name, files, factor), "period_range" (s),
     "statistic" ("mean" with at least 7 records, else "max"), "summary" (the command line's text)
-    and "output". Lengths and forces in the model's units. Raises RuntimeError when a run fails.
+    "output" and "warnings" (each run warning of implausible input, per bound: "bound", "text" and
+    "runs", the count of the bound's runs that gave it; each also issued as an IsolabWarning).
+    Lengths and forces in the model's units. Raises RuntimeError when a run fails.
+
+    The folder must be new, empty, or an earlier design's (design_manifest.txt lists what it
+    wrote); an earlier design is kept untouched until this one completes.
     """
-    return _design(str(design_file), "" if output is None else str(output), jobs, quiet)
+    result = _design(_path("design_file", design_file), _optional_path("output", output), jobs,
+                     quiet)
+    for warning in result["warnings"]:
+        warnings.warn(f"{warning['bound']}: {warning['text']} (in {warning['runs']} runs)",
+                      IsolabWarning, stacklevel=2)
+    return result
 
 
-def _paths(data):
+def _path(name, value):
+    """A file or folder argument as str: a str, bytes or os.PathLike. Anything else (a number,
+    a dict, an array) is refused naming the argument, never turned into a file name."""
+    if isinstance(value, (str, bytes, os.PathLike)):
+        return os.fsdecode(os.fspath(value))
+    raise TypeError(f"{name}: expected a path (str or os.PathLike), not {type(value).__name__}")
+
+
+def _optional_path(name, value):
+    """_path, or "" (the default) for None."""
+    return "" if value is None else _path(name, value)
+
+
+def _paths(name, data):
     """One path or a list of them, as a list of str."""
-    return [str(data)] if isinstance(data, (str, os.PathLike)) else [str(d) for d in data]
+    if isinstance(data, (str, bytes, os.PathLike)):
+        return [_path(name, data)]
+    try:
+        items = list(data)
+    except TypeError:
+        raise TypeError(f"{name}: expected a path or a list of paths, not "
+                        f"{type(data).__name__}") from None
+    return [_path(f"{name}[{i}]", d) for i, d in enumerate(items)]
 
 
 def _to_pandas(result):

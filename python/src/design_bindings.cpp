@@ -23,7 +23,9 @@ namespace {
 py::dict Design(const std::string& design_path, const std::string& output, int jobs, bool quiet) {
   const model::DesignFile design = model::LoadDesignFile(design_path);
   if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
-  const std::string folder = study::PrepareDesignFolder(output, design, "output");
+  const std::unique_ptr<study::DesignFolder> claimed =
+      study::ClaimDesignFolder(output, design, "output");
+  const std::string& folder = claimed->path();
   const int threads =
       jobs > 0 ? jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   study::DesignOutcome outcome;
@@ -40,6 +42,7 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
                                          outcome.failed, outcome.runs.size()));
   }
   study::WriteDesignFiles(design, outcome, folder, false);
+  claimed->Commit();
 
   const double second = 1.0 / design.model.units.SiFactor(dimension::kTime);  // model time per s
   py::dict bounds;
@@ -68,7 +71,13 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
     governing[py::str(std::string(info.key))] =
         outcome.bounds[outcome.governing[static_cast<std::size_t>(info.quantity)]].bound;
   }
+  py::list warnings;
+  for (const study::DesignWarning& w : outcome.warnings) {
+    warnings.append(py::dict(py::arg("bound") = outcome.bounds[w.bound].bound,
+                             py::arg("text") = w.text, py::arg("runs") = w.runs));
+  }
   py::dict result;
+  result["warnings"] = warnings;
   result["bounds"] = bounds;
   result["governing"] = governing;
   result["records"] = records;

@@ -41,3 +41,45 @@ def test_the_design_equals_the_command_lines(repo, tmp_path, isolab_cli):
     assert [r["name"] for r in result["records"]] == ["fwn_firm_seed1", "fwn_soft_seed2",
                                                       "elcentro_1940_ns"]
     assert (tmp_path / "py" / "design.md").is_file()
+
+
+def test_the_runs_warnings_come_back_as_data_and_as_isolab_warnings(repo, tmp_path):
+    """A building on pendulums given 40 % of its weight: each bound's runs warn, naming both
+    weights; design() returns them and issues each as an IsolabWarning."""
+    model = tmp_path / "pendulums.yaml"
+    model.write_text(
+        "units: {force: kN, length: mm, time: s}\n"
+        "isolation:\n  count: 4\n"
+        "  components: [{name: fp, type: friction_pendulum, w: 500, r: 2235, mu: 0.06, uy: 0.5}]\n"
+        "  modification: {fp: {mu: {min: 0.8, max: 1.3}}}\n"
+        "structure: {type: shear_building, base_mass: 110 t,\n"
+        "  stories: {count: 4, mass: 100 t, stiffness: 800 kN/mm, height: 3500}}\n"
+        "analysis: {dt: 0.01}\n")
+    motions = repo / "ground_motions"
+    design = tmp_path / "design.yaml"
+    design.write_text(f"model: {model}\ntarget: {{asce7: {{sms: 1.2 g, sm1: 0.6 g}}}}\n"
+                      f"suite:\n  records: [{motions / 'fwn_firm_seed1.at2'}, "
+                      f"{motions / 'fwn_soft_seed2.at2'}, {motions / 'elcentro_1940_ns.at2'}]\n")
+    with pytest.warns(isolab.IsolabWarning, match=r"weights w sum to 2000 kN, the structure "
+                                                  r"weighs 5001.4 kN"):
+        result = isolab.design(design, output=tmp_path / "out", jobs=1, quiet=True)
+    weights = [w for w in result["warnings"] if "weights w sum to" in w["text"]]
+    assert sorted(w["bound"] for w in weights) == ["lower", "nominal", "upper"]
+    assert all(w["runs"] == 3 for w in weights)
+    assert result["summary"].startswith("WARNING: the runs gave ")
+
+
+@pytest.mark.parametrize("output", [b"out", 42, {"folder": "out"}, 3.5])
+def test_a_path_argument_is_a_path(repo, tmp_path, monkeypatch, output):
+    """bytes are a path (decoded as the file system does); numbers and dicts are refused, naming
+    the argument, and never become a folder's name."""
+    monkeypatch.chdir(tmp_path)
+    design = write_design(repo, tmp_path)
+    if isinstance(output, bytes):
+        result = isolab.design(design, output=output, jobs=1, quiet=True)
+        assert result["output"] == "out"
+        assert (tmp_path / "out" / "design.md").is_file()
+        return
+    with pytest.raises(TypeError, match="output: expected a path"):
+        isolab.design(design, output=output, jobs=1, quiet=True)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["design.yaml"]

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <utility>
@@ -84,15 +85,41 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
                      "the model has no isolation: the equivalent lateral force procedure is for "
                      "an isolation system");
   }
+  // The weights the runs load the pendulums with: under axial_load, each at its static share N_0
+  // (its response is N_0 / W times its law's, as Structure::Evaluate scales it at rest).
+  std::vector<double> scales(s.members().size() + s.coupled_members().size(), 1.0);
+  for (const structure::AxialBearing& bearing : s.axial_loads().bearings) {
+    scales[bearing.slot] = bearing.static_load / bearing.weight;
+  }
+  const auto scaled = [](EffectiveProperties p, double scale) {
+    p.stiffness *= scale;
+    p.dissipated *= scale;
+    return p;
+  };
   for (const structure::IsolatorLayout& isolator : laid_out.layout.isolators) {
     positions_.push_back(isolator.position);
+    const std::size_t slot = isolator.member >= 0
+                                 ? static_cast<std::size_t>(isolator.member)
+                                 : s.members().size() + static_cast<std::size_t>(isolator.coupled);
+    const std::optional<double> law =
+        isolator.member >= 0
+            ? hysteresis::PendulumWeight(s.members()[isolator.member].assembly)
+            : hysteresis::PendulumWeight(s.coupled_members()[isolator.coupled].assembly);
+    const double w = law.value_or(std::numeric_limits<double>::quiet_NaN());
+    bearing_weights_.push_back({isolator.name, w, w * scales[slot]});
     if (isolator.member >= 0) {
-      bearings_.push_back([assembly = s.members()[isolator.member].assembly](double d, double t) {
-        return LastCycle(assembly, d, t);
+      bearings_.push_back([assembly = s.members()[isolator.member].assembly,
+                           scale = scales[static_cast<std::size_t>(isolator.member)],
+                           scaled](double d, double t) {
+        return scaled(LastCycle(assembly, d, t), scale);
       });
     } else {
-      bearings_.push_back([assembly = s.coupled_members()[isolator.coupled].assembly](
-                              double d, double t) { return LastCycle(assembly, d, t); });
+      bearings_.push_back([assembly = s.coupled_members()[isolator.coupled].assembly,
+                           scale = scales[s.members().size() +
+                                          static_cast<std::size_t>(isolator.coupled)],
+                           scaled](double d, double t) {
+        return scaled(LastCycle(assembly, d, t), scale);
+      });
     }
   }
   gravity_ = model.units.Convert(1.0, "g", dimension::kAcceleration);

@@ -309,6 +309,33 @@ void WarnAboutDimensions(const structure::Structure& s, const structure::Layout&
   }
 }
 
+// Bearings that are all pendulums at their own W (no axial_load) carry the weight their laws were
+// given, not the building's: when the two differ by more than kWeightMismatch, every friction and
+// restoring force of the runs is off by that ratio.
+void WarnAboutBearingWeights(const structure::Structure& s, const structure::Layout& layout,
+                             const UnitSystem& units, double total_weight,
+                             std::vector<std::string>* warnings) {
+  constexpr double kWeightMismatch = 0.05;
+  if (!s.axial_loads().empty() || layout.isolators.empty() || !(total_weight > 0.0)) return;
+  double carried = 0.0;
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    const std::optional<double> w =
+        isolator.member >= 0
+            ? hysteresis::PendulumWeight(s.members()[isolator.member].assembly)
+            : hysteresis::PendulumWeight(s.coupled_members()[isolator.coupled].assembly);
+    if (!w) return;
+    carried += *w;
+  }
+  if (std::abs(carried / total_weight - 1.0) <= kWeightMismatch) return;
+  warnings->push_back(fmt::format(
+      "the friction pendulums' weights w sum to {:.5g} {}, the structure weighs {:.5g} {} ({:+.1f} "
+      "%): their friction and restoring forces are those of {:.5g} {}. Give each bearing its "
+      "share of the weight, or axial_load: {{}} to load them with the structure's own "
+      "(docs/axial_load.md)",
+      carried, units.force(), total_weight, units.force(),
+      100.0 * (carried / total_weight - 1.0), carried, units.force()));
+}
+
 }  // namespace
 
 ModelSummary SummariseModel(const structure::Structure& s, const structure::Layout& layout,
@@ -360,6 +387,7 @@ ModelSummary SummariseModel(const structure::Structure& s, const structure::Layo
         summary.fixed_base_modes.front().period, units.time(), kMaxPlausiblePeriod, check));
   }
   WarnAboutDimensions(s, layout, units, summary.total_weight, &summary.warnings);
+  WarnAboutBearingWeights(s, layout, units, summary.total_weight, &summary.warnings);
   if (summary.isolated && summary.isolated_period > kMaxPlausiblePeriod * seconds) {
     summary.warnings.push_back(fmt::format(
         "the period at {:g} {}, {:.4g} {}, exceeds {:g} s, longer than any isolated structure's: "

@@ -22,24 +22,31 @@ void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
   command->add_option("model", o.model, "Model file (YAML) with modification factors")->required();
   command
       ->add_option("-o,--output", o.output,
-                   "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to")
+                   "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
       ->required();
   command->add_flag("-q,--quiet", o.quiet, "Print nothing");
 }
 
 void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
   const model::ModelFile model = model::LoadModelFile(o.model);
-  if (!std::filesystem::is_directory(o.output)) {
+  const std::filesystem::path folder(o.output);
+  if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder)) {
     throw InputError({"--output"}, fmt::format("'{}' is not a folder", o.output));
   }
   const model::BoundModels bounds = model::MakeBoundModels(model);
   const std::string stem = std::filesystem::path(o.model).stem().string();
   std::vector<std::string> paths;
   for (const model::BoundModel& bound : bounds.models) {
-    paths.push_back(
-        (std::filesystem::path(o.output) / (stem + "_" + bound.bound + ".yaml")).string());
-    io::CheckOutputPath(paths.back());
+    paths.push_back((folder / (stem + "_" + bound.bound + ".yaml")).string());
   }
+  // Made as `design` makes its folder, once the models are known to be right.
+  std::error_code error;
+  if (!std::filesystem::exists(folder)) std::filesystem::create_directories(folder, error);
+  if (error) {
+    throw InputError({"--output"},
+                     fmt::format("cannot make the folder '{}': {}", o.output, error.message()));
+  }
+  for (const std::string& path : paths) io::CheckOutputPath(path);
   for (std::size_t i = 0; i < paths.size(); ++i) {
     const std::string& text = bounds.models[i].text;
     io::WriteTextFileAtomically(paths[i], [&text](std::ostream& file) { file << text; });

@@ -54,7 +54,9 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   }
   const model::DesignFile design = model::LoadDesignFile(options.design);
   if (options.figures) CheckPlotScript(kDesignPlotScript);  // before the runs, not after
-  const std::string folder = study::PrepareDesignFolder(options.output, design, "--output");
+  const std::unique_ptr<study::DesignFolder> claimed =
+      study::ClaimDesignFolder(options.output, design, "--output");
+  const std::string& folder = claimed->path();
   const int threads = options.jobs > 0
                           ? options.jobs
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -80,6 +82,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
       return 1;
     }
   }
+  claimed->Commit();
   fmt::print(out, "{}", study::DesignSummaryText(design, outcome));
   fmt::print(out, "report: {}\n", (std::filesystem::path(folder) / "design.md").string());
   if (!options.quiet) {

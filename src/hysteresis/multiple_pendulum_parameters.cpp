@@ -27,6 +27,21 @@ void CheckOuterAndInner(const RuleChecker& r, std::string_view outer, std::strin
                       mu_outer, r(mu_outer)));
 }
 
+// In regime I the inner slider moves on surface 2 (3) alone until the force reaches surface 1's
+// (4's) friction: by (mu1 - mu2) r2 (the pendulum's travel between the two frictions). An inner
+// capacity below that puts the slider against its restrainer before surface 1 slides, and the
+// bearing stiffens there; the series model has no such stop (its inner element stops only at
+// d2 + d1 r2 / r1), so it would run on as if the restrainer were not there.
+void CheckInnerCapacity(const RuleChecker& r, std::string_view capacity, std::string_view radius,
+                        std::string_view mu_outer, std::string_view mu_inner) {
+  const double travel = (r(mu_outer) - r(mu_inner)) * r(radius);
+  r.Holds(capacity, r(capacity) >= travel,
+          fmt::format("must be >= ({} - {}) {} = {:g}, the inner slider's travel before the outer "
+                      "surface slides: a smaller inner capacity stops the slider in regime I, "
+                      "which the series model (Fenz & Constantinou 2008) does not represent",
+                      mu_outer, mu_inner, radius, travel));
+}
+
 }  // namespace
 
 bool IsMultiplePendulum(LawType type) {
@@ -44,6 +59,8 @@ void ValidateMultiplePendulum(LawType type, const ParameterArray& values) {
   if (type == LawType::kTripleFrictionPendulum) {
     CheckOuterAndInner(r, "r1", "r2", "mu1", "mu2");
     CheckOuterAndInner(r, "r4", "r3", "mu4", "mu3");
+    CheckInnerCapacity(r, "d2", "r2", "mu1", "mu2");
+    CheckInnerCapacity(r, "d3", "r3", "mu4", "mu3");
   }
 }
 

@@ -41,4 +41,15 @@ ParallelAssembly SingleLaw(LawType type, std::vector<double> mathematical, std::
       {{std::move(name), LawParameters::Make(type, ParameterForm::kMathematical, mathematical)}});
 }
 
+std::optional<double> PendulumWeight(const ParallelAssembly& assembly) {
+  if (assembly.size() == 0) return std::nullopt;
+  double weight = 0.0;
+  for (const Component& component : assembly.components()) {
+    const std::optional<double> w = PendulumWeight(component.parameters);
+    if (!w) return std::nullopt;
+    weight += *w;
+  }
+  return weight;
+}
+
 }  // namespace isolab::hysteresis

@@ -53,4 +53,15 @@ double PlanAssembly::ViscousEnergy(std::span<const PlanLawState> states) const {
   return energy;
 }
 
+std::optional<double> PendulumWeight(const PlanAssembly& assembly) {
+  if (assembly.size() == 0) return std::nullopt;
+  double weight = 0.0;
+  for (const PlanComponent& component : assembly.components()) {
+    const std::optional<double> w = PendulumWeight(component.law);
+    if (!w || (component.law_y && PendulumWeight(*component.law_y) != w)) return std::nullopt;
+    weight += *w;
+  }
+  return weight;
+}
+
 }  // namespace isolab::hysteresis

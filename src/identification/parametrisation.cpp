@@ -117,9 +117,9 @@ double Clamp(double u, double limit) { return std::clamp(u, -limit, limit); }
 void UnitLawForce(const hysteresis::ParallelAssembly& law, std::span<const CyclicTestData> tests,
                   std::size_t first, std::size_t last, bool one_specimen, Eigen::Index column,
                   std::vector<Eigen::MatrixXd>* bases) {
-  std::vector<hysteresis::LawState> state(1);
+  std::vector<hysteresis::LawState> state(law.state_size());
   for (std::size_t i = first; i < last; ++i) {
-    if (!one_specimen) state[0] = {};
+    if (!one_specimen) std::fill(state.begin(), state.end(), hysteresis::LawState{});
     Eigen::MatrixXd& basis = (*bases)[i];
     // Column-major storage: a column is contiguous.
     SimulateForceFrom(law, tests[i], state,

@@ -17,6 +17,10 @@
 
 namespace isolab::io {
 
+namespace {
+constexpr std::size_t kMaxTargetRows = 10000;
+}  // namespace
+
 spectra::TabulatedSpectrum ReadTargetSpectrumCsv(const std::string& path) {
   std::error_code ignored;  // a directory opens as a stream on Linux and reads as empty
   if (std::filesystem::is_directory(path, ignored)) {
@@ -68,6 +72,12 @@ spectra::TabulatedSpectrum ReadTargetSpectrumCsv(const std::string& path) {
     }
     if (sa < 0.0) {
       throw InputError({path, line_number}, fmt::format("sa_g {:g} (expected >= 0)", sa));
+    }
+    if (table.periods.size() == kMaxTargetRows) {
+      throw InputError({path, line_number},
+                       fmt::format("more than {} rows (a design spectrum is a few dozen points; "
+                                   "a design evaluates it at every scaling period)",
+                                   kMaxTargetRows));
     }
     table.periods.push_back(period);
     table.sa.push_back(sa);

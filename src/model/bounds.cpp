@@ -40,6 +40,36 @@ void RenameResults(YAML::Node root, const std::string& bound) {
   root["output"]["file"] = renamed.string();
 }
 
+// The tree with every alias written out: yaml-cpp gives the nodes an alias names one identity, so
+// a property scaled through one isolator's alias would be scaled again through each other alias
+// (four pendulums sharing `components: &fp` got lambda^4). Copied, each is a value of its own.
+YAML::Node WithAliasesExpanded(const YAML::Node& node) {
+  YAML::Node copy;
+  switch (node.Type()) {
+    case YAML::NodeType::Scalar:
+      copy = node.Scalar();
+      copy.SetTag(node.Tag());
+      break;
+    case YAML::NodeType::Sequence:
+      copy = YAML::Node(YAML::NodeType::Sequence);
+      for (const YAML::Node& element : node) copy.push_back(WithAliasesExpanded(element));
+      break;
+    case YAML::NodeType::Map:
+      copy = YAML::Node(YAML::NodeType::Map);
+      for (const auto& entry : node) {
+        copy.force_insert(WithAliasesExpanded(entry.first), WithAliasesExpanded(entry.second));
+      }
+      break;
+    case YAML::NodeType::Null:
+      copy = YAML::Node(YAML::NodeType::Null);
+      break;
+    case YAML::NodeType::Undefined:
+      break;
+  }
+  copy.SetStyle(node.Style());
+  return copy;
+}
+
 }  // namespace
 
 BoundModels MakeBoundModels(const ModelFile& model) {
@@ -53,7 +83,7 @@ BoundModels MakeBoundModels(const ModelFile& model) {
   BoundModels result;
   for (const char* bound : {"nominal", "upper", "lower"}) {
     const std::string name = bound;
-    YAML::Node root = YAML::Load(model.text);
+    YAML::Node root = WithAliasesExpanded(YAML::Load(model.text));
     for (const BearingModification& modification : model.modifications) {
       YAML::Node section =
           modification.entry ? root["plan"]["isolators"][*modification.entry] : root["isolation"];

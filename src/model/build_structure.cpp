@@ -54,12 +54,21 @@ void AddAxialLoads(const ModelFile& model, structure::LaidOutStructure* built) {
           isolator.name, section));
     } else {
       const auto& assembly = built->structure.coupled_members()[isolator.coupled].assembly;
+      // An uncoupled pair's x and y laws are one bearing in two directions: it carries one
+      // weight, its x law's (both scale by N / W).
+      for (const hysteresis::PlanComponent& c : assembly.components()) {
+        if (c.law_y && hysteresis::PendulumWeight(*c.law_y) != hysteresis::PendulumWeight(c.law)) {
+          throw InputError(section.location,
+                           fmt::format("axial_load: isolator {}'s {} has other laws along x and "
+                                       "y; an axial load scales a pair whose x and y laws are "
+                                       "the same pendulum",
+                                       isolator.name, c.name));
+        }
+      }
       weights.push_back(IsolatorWeight(
           assembly.components(),
           [](const hysteresis::PlanComponent& c) {
-            std::vector<const hysteresis::LawParameters*> laws{&c.law};
-            if (c.law_y) laws.push_back(&*c.law_y);
-            return laws;
+            return std::vector<const hysteresis::LawParameters*>{&c.law};
           },
           isolator.name, section));
     }

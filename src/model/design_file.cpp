@@ -96,6 +96,12 @@ std::string TooFew(std::size_t count) {
       count, kMinimumDesignRecords);
 }
 
+// Bounds on what a synthetic suite may cost, each named when it is passed: a record of 10,000 s at
+// 0.01 s, a hundred pairs.
+constexpr double kMaxSyntheticSamples = 1e6;
+constexpr int kMaxSyntheticCount = 100;
+constexpr double kMaxSyntheticDt = 0.02;  // s
+
 SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
                              const UnitSystem& units) {
   const std::string path = "suite.synthetic";
@@ -106,6 +112,11 @@ SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
     suite.count = reader.ReadInteger(node["count"], path + ".count");
     if (suite.count < kMinimumDesignRecords) {
       reader.Fail(node["count"], path + ".count", TooFew(suite.count));
+    }
+    if (suite.count > kMaxSyntheticCount) {
+      reader.Fail(node["count"], path + ".count",
+                  fmt::format("{} (at most {} pairs: the codes ask for 7 to 11)", suite.count,
+                              kMaxSyntheticCount));
     }
   }
   if (node["seed"]) {
@@ -122,6 +133,20 @@ SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
     if (!(suite.dt > 0.0 && suite.dt < suite.duration / 10)) {
       reader.Fail(node["dt"], path + ".dt", "must be > 0 and a small part of the duration");
     }
+    if (suite.dt > kMaxSyntheticDt) {
+      reader.Fail(node["dt"], path + ".dt",
+                  fmt::format("{:g} s (at most {:g} s: the pairs are matched to the target from "
+                              "0.1 s, five samples a period)",
+                              suite.dt, kMaxSyntheticDt));
+    }
+  }
+  const double samples = suite.duration / suite.dt;
+  if (!(samples <= kMaxSyntheticSamples)) {
+    reader.Fail(node["duration"] ? node["duration"] : node, path + ".duration",
+                fmt::format("{:g} s at dt = {:g} s is {:.3g} samples a record; at most {:g} (a "
+                            "record of {:g} s at that step)",
+                            suite.duration, suite.dt, samples, kMaxSyntheticSamples,
+                            kMaxSyntheticSamples * suite.dt));
   }
   if (node["tolerance"])
     suite.tolerance = ReadPositive(reader, node, path, "tolerance", dimension::kNone, units);
@@ -160,7 +185,9 @@ DesignFile LoadDesignFile(const std::string& path) {
                             design.model_path));
   }
   const UnitSystem& units = design.model.units;
-  design.target = ReadTarget(reader, reader.Require(root, "", "target"), directory, units);
+  const YAML::Node target = reader.Require(root, "", "target");
+  design.target = ReadTarget(reader, target, directory, units);
+  design.target_key = fmt::format("{}: target", reader.Locate(target).Describe());
 
   const YAML::Node suite = reader.Require(root, "", "suite");
   reader.RequireMap(suite, "suite");
@@ -199,6 +226,15 @@ DesignFile LoadDesignFile(const std::string& path) {
     }
   } else if (suite["synthetic"]) {
     design.synthetic = ReadSynthetic(reader, suite["synthetic"], units);
+    const double model_dt = design.model.analysis.dt * units.SiFactor(dimension::kTime);
+    if (design.synthetic->dt < model_dt * (1 - 1e-12)) {
+      const YAML::Node dt = suite["synthetic"]["dt"];
+      reader.Fail(dt ? dt : suite["synthetic"], "suite.synthetic.dt",
+                  fmt::format("{:g} s is finer than the model's analysis.dt, {:g} s: a run "
+                              "cannot take a record on a coarser step than its own (give dt >= "
+                              "{:g} s, or a finer analysis.dt in '{}')",
+                              design.synthetic->dt, model_dt, model_dt, design.model_path));
+    }
   } else {
     reader.Fail(suite, "suite", "give records (files or pairs) or synthetic");
   }

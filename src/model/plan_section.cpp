@@ -321,17 +321,17 @@ std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t 
 }
 
 void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws,
-                      std::optional<identification::IdentifiedRange> range) {
+                      std::optional<identification::IdentifiedRange> range, bool uncoupled) {
   model->identified_range = std::move(range);
   if (!model->structure || model->structure->kind != StructureSection::Kind::kPlanBuilding) {
     model->isolation = laws;
     return;
   }
-  if (FirstWithoutCoupledForm(laws) < laws.size()) {
+  if (!uncoupled && FirstWithoutCoupledForm(laws) < laws.size()) {
     throw std::invalid_argument(NoCoupledForm(laws, FirstWithoutCoupledForm(laws)));
   }
   for (structure::PlanIsolatorSite& site : model->structure->plan.isolators) {
-    site.assembly = IsolatorAssembly(laws, false);
+    site.assembly = IsolatorAssembly(laws, uncoupled);
   }
 }
 

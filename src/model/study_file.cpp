@@ -123,19 +123,40 @@ StudyVariant ReadVariant(const YamlReader& reader, const YAML::Node& node, const
                               "needs",
                               building.path));
     }
+    // A plan isolator's coupling, as the model's own isolators take it; the rest is the
+    // isolation section every model reads.
+    YAML::Node isolation = node["isolation"];
+    bool uncoupled = false;
+    if (isolation.IsMap() && isolation["coupling"]) {
+      const std::string key = ChildPath(isolation_path, "coupling");
+      if (structure.kind != StructureSection::Kind::kPlanBuilding) {
+        reader.Fail(isolation["coupling"], key,
+                    fmt::format("applies to the isolators of a building in plan; '{}' moves in "
+                                "one direction",
+                                building.path));
+      }
+      const std::string coupling = reader.ReadString(isolation["coupling"], key);
+      if (coupling != "coupled" && coupling != "uncoupled") {
+        reader.Fail(isolation["coupling"], key,
+                    fmt::format("'{}' (expected coupled or uncoupled)", coupling));
+      }
+      uncoupled = coupling == "uncoupled";
+      isolation = YAML::Clone(isolation);  // the file's own node stays as written
+      isolation.remove("coupling");
+    }
     std::optional<identification::IdentifiedRange> range;
-    const hysteresis::ParallelAssembly laws =
-        ReadIsolation(reader, node["isolation"], isolation_path, directory, building.units, nullptr,
-                      nullptr, &range);
+    const hysteresis::ParallelAssembly laws = ReadIsolation(
+        reader, isolation, isolation_path, directory, building.units, nullptr, nullptr, &range);
     const std::size_t c = FirstWithoutCoupledForm(laws);
-    if (structure.kind == StructureSection::Kind::kPlanBuilding && c < laws.size()) {
+    if (structure.kind == StructureSection::Kind::kPlanBuilding && !uncoupled && c < laws.size()) {
       reader.Fail(node["isolation"], isolation_path,
                   fmt::format("{}: every isolator of a building in plan takes these laws as "
-                              "coupled laws",
+                              "coupled laws (give the variant's isolation coupling: uncoupled to "
+                              "use them along x and y independently)",
                               NoCoupledForm(laws, c)));
     }
     variant.model = building;
-    ReplaceIsolation(&variant.model, laws, std::move(range));
+    ReplaceIsolation(&variant.model, laws, std::move(range), uncoupled);
     variant.model.text += ReplacedIsolationNote(reader.file(), variant.name, node["isolation"]);
   } else {
     variant.model = building;

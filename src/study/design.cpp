@@ -67,12 +67,13 @@ namespace {
 // A record's spectrum at `periods` (g): a pair's RotD100, one record's 5 % Sa; with its entry's
 // scale. Throws InputError naming the entry for a record too short for the range's top period
 // `top` (s): its spectrum there is not a record's but its length's.
-std::vector<double> RecordSpectrum(const model::StudyRecord& record, const UnitSystem& units,
+std::vector<double> RecordSpectrum(const model::StudyRecord& record,
+                                   const std::vector<io::Record>& read,
                                    const std::vector<double>& periods, double top) {
   std::vector<integrators::SampledHistory> histories;
-  for (const model::GroundMotionSection& c : record.components) {
-    const io::Record r = io::ReadRecord(
-        c.file, {c.units, c.dt * units.SiFactor(dimension::kTime), record.entry, record.entry});
+  for (std::size_t k = 0; k < record.components.size(); ++k) {
+    const model::GroundMotionSection& c = record.components[k];
+    const io::Record& r = read[k];
     const double duration = r.dt * static_cast<double>(r.values.size() - 1);
     if (duration < kCyclesOfLongestPeriod * top) {
       throw InputError({record.entry},
@@ -162,6 +163,37 @@ std::vector<model::StudyRecord> SyntheticRecords(
   return records;
 }
 
+// The suite's records as read, each checked against the model's analysis step (a run may refine
+// a record's step, never coarsen it): refused before any work, naming the entry.
+std::vector<std::vector<io::Record>> ReadSuite(const std::vector<model::StudyRecord>& records,
+                                               const model::ModelFile& model) {
+  const double to_seconds = model.units.SiFactor(dimension::kTime);
+  std::vector<std::vector<io::Record>> read;
+  for (const model::StudyRecord& record : records) {
+    read.emplace_back();
+    for (const model::GroundMotionSection& c : record.components) {
+      io::Record r =
+          io::ReadRecord(c.file, {c.units, c.dt * to_seconds, record.entry, record.entry});
+      if (r.dt < model.analysis.dt * to_seconds * (1 - 1e-12)) {
+        throw InputError({record.entry},
+                         fmt::format("'{}' is sampled at {:g} s, finer than the model's "
+                                     "analysis.dt {:g} s: a run cannot take a record on a "
+                                     "coarser step than its own (give analysis.dt <= {:g} s in "
+                                     "'{}')",
+                                     c.file, r.dt, model.analysis.dt * to_seconds, r.dt,
+                                     model.path));
+      }
+      if (std::all_of(r.values.begin(), r.values.end(), [](double a) { return a == 0.0; })) {
+        throw InputError({record.entry}, fmt::format("'{}' is all zeros: it has no spectrum to "
+                                                     "scale to the target",
+                                                     c.file));
+      }
+      read.back().push_back(std::move(r));
+    }
+  }
+  return read;
+}
+
 // A quantity a model does not have (a drift without story heights) is NaN for every record, and
 // stays NaN: never 0.
 DesignStatistic SuiteStatistic(std::vector<double> per_record, bool mean_of_suite) {
@@ -181,46 +213,66 @@ DesignStatistic SuiteStatistic(std::vector<double> per_record, bool mean_of_suit
 
 }  // namespace
 
-std::span<const DesignQuantityInfo> DesignQuantities() { return kDesignQuantities; }
-
-// What a design writes in its folder. A folder that holds nothing else is an earlier design's,
-// cleared so that none of its records, runs or histories is taken for this one's.
-bool DesignWrote(const fs::path& entry) {
-  static const std::vector<std::string> kNames = {
-      "design.md", "design_values.csv", "design_runs.csv", "design_spectra.csv", "records",
-      "runs",      "histories",         "models"};
-  const std::string name = entry.filename().string();
-  const std::string extension = entry.extension().string();
-  return std::find(kNames.begin(), kNames.end(), name) != kNames.end() ||
-         (name.rfind("design_", 0) == 0 &&
-          (extension == ".png" || extension == ".pdf" || extension == ".json"));
+std::string BearingWeightRule(const model::ModelFile& model, const DesignOutcome& out) {
+  double law = 0.0, carried = 0.0, low = INFINITY, high = -INFINITY;
+  std::size_t pendulums = 0;
+  for (const analysis::IsolationSystem::BearingWeight& w : out.bearing_weights) {
+    if (std::isnan(w.carried)) continue;
+    ++pendulums;
+    law += w.law;
+    carried += w.carried;
+    low = std::min(low, w.carried);
+    high = std::max(high, w.carried);
+  }
+  if (pendulums == 0) return "";
+  const std::string force = model.units.force();
+  return fmt::format(
+      "bearing weights: {} pendulum bearing{} carry {:.5g} {} in all ({:.4g} to {:.4g} {} each) "
+      "in the ELF step and the runs alike, {}; the building weighs {:.5g} {}",
+      pendulums, pendulums == 1 ? "" : "s", carried, force, low, high, force,
+      model.axial_load ? fmt::format("their static shares of the weight under axial_load (rigid-slab "
+                                     "statics; their laws' w sum to {:.5g} {})",
+                                     law, force)
+                       : "their laws' w (no axial_load)",
+      out.building_weight, force);
 }
 
-std::string PrepareDesignFolder(const std::string& requested, const model::DesignFile& design,
-                                const std::string& option) {
+namespace {
+
+// Every run's warnings, once per bound with the count of the bound's runs that gave each.
+std::vector<DesignWarning> CollectWarnings(const DesignOutcome& out) {
+  std::vector<DesignWarning> warnings;
+  const std::size_t per_bound = out.eccentricities.size() * out.records.size();
+  for (std::size_t b = 0; b < out.bounds.size(); ++b) {
+    const std::size_t first = warnings.size();
+    for (std::size_t j = b * per_bound; j < (b + 1) * per_bound; ++j) {
+      for (const std::string& text : out.runs[j].warnings) {
+        const auto same = std::find_if(warnings.begin() + static_cast<std::ptrdiff_t>(first),
+                                       warnings.end(),
+                                       [&text](const DesignWarning& w) { return w.text == text; });
+        if (same != warnings.end()) {
+          ++same->runs;
+        } else {
+          warnings.push_back({b, text, 1});
+        }
+      }
+    }
+  }
+  return warnings;
+}
+
+}  // namespace
+
+std::span<const DesignQuantityInfo> DesignQuantities() { return kDesignQuantities; }
+
+std::unique_ptr<DesignFolder> ClaimDesignFolder(const std::string& requested,
+                                                const model::DesignFile& design,
+                                                const std::string& option) {
   const std::string folder = !requested.empty() ? requested
                              : !design.output_directory.empty()
                                  ? design.output_directory
                                  : fs::path(design.path).stem().string();
-  const std::string key = requested.empty() ? "output.directory" : option;
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (error || !fs::is_directory(folder)) {
-    throw InputError({key}, fmt::format("cannot make the folder '{}'{}", folder,
-                                        error ? ": " + error.message() : ""));
-  }
-  std::vector<fs::path> earlier;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-    if (!DesignWrote(entry.path())) {
-      throw InputError({key}, fmt::format("'{}' holds '{}', which a design does not write: give "
-                                          "a new or empty folder (one an earlier design wrote "
-                                          "is replaced)",
-                                          folder, entry.path().filename().string()));
-    }
-    earlier.push_back(entry.path());
-  }
-  for (const fs::path& entry : earlier) fs::remove_all(entry);
-  return folder;
+  return std::make_unique<DesignFolder>(folder, requested.empty() ? "output.directory" : option);
 }
 
 DesignOutcome RunDesign(const model::DesignFile& design, const std::string& output_directory,
@@ -234,6 +286,9 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   const UnitSystem& units = design.model.units;
   const double second = 1.0 / units.SiFactor(dimension::kTime);
   const double metre = units.Convert(1.0, "m", dimension::kLength);
+
+  // 0. The given records, read and checked before any work.
+  const std::vector<std::vector<io::Record>> given = ReadSuite(design.records, design.model);
 
   // 1. The bound models, read as they will run; written once the suite is ready, so that a
   // design refused on its suite leaves nothing behind.
@@ -252,13 +307,26 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   const analysis::DisplacementDemand demand = analysis::CodeDemand(design.target, units);
   for (DesignBound& b : out.bounds) {
     const analysis::IsolationSystem system(b.model);
-    b.elf = analysis::SolveElf(system, demand, metre);
+    try {
+      b.elf = analysis::SolveElf(system, demand, metre);
+    } catch (const std::runtime_error& error) {
+      if (dynamic_cast<const InputError*>(&error)) throw;
+      // The fixed point does not exist for this target and isolation system: an input's fault
+      // (a target far too weak or strong for the bearings), located at the target.
+      throw InputError({design.target_key},
+                       fmt::format("the ELF procedure on the {} bound: {}", b.bound, error.what()));
+    }
     b.damping_coefficient =
         analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
     b.elf_total_displacement = analysis::TotalDisplacement(b.model, system, b.elf);
     say(fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}", b.bound,
                     b.elf.displacement, units.length(), b.elf.period / second,
                     b.elf.at_design.damping, b.damping_coefficient));
+    if (b.bound == "nominal") {
+      out.bearing_weights = system.bearing_weights();
+      out.building_weight = system.weight();
+      if (const std::string rule = BearingWeightRule(design.model, out); !rule.empty()) say(rule);
+    }
   }
   const auto bound_index = [&](const std::string& name) {
     for (std::size_t i = 0; i < out.bounds.size(); ++i) {
@@ -288,6 +356,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       design.synthetic ? SyntheticRecords(design, out.period_range[1], output_directory, directions,
                                           &misfits, progress)
                        : design.records;
+  const std::vector<std::vector<io::Record>> suite =
+      design.synthetic ? ReadSuite(records, design.model) : given;
   // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top.
   std::vector<double> grid = periods;
   for (int i = 0; i <= kDisplayPoints; ++i) {
@@ -298,7 +368,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   std::vector<std::vector<double>> in_range(records.size());
   for (std::size_t r = 0; r < records.size(); ++r) {
-    const std::vector<double> sa = RecordSpectrum(records[r], units, grid, out.period_range[1]);
+    const std::vector<double> sa = RecordSpectrum(records[r], suite[r], grid, out.period_range[1]);
     for (const double t : periods) {
       in_range[r].push_back(sa[std::lower_bound(grid.begin(), grid.end(), t) - grid.begin()]);
     }
@@ -373,6 +443,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   out.runs = outcome.results;
   out.failed = outcome.failed;
   out.runs_seconds = outcome.wall_seconds;
+  out.warnings = CollectWarnings(out);
   if (out.failed > 0) return out;
 
   // 5. Design values: per bound and record the envelope over the cases, then over the suite.
@@ -434,8 +505,15 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       RunStudy(histories, history_jobs, history_folder.string(), version, scheduler,
                [](const JobResult&, std::size_t, std::size_t) {});
   for (const JobResult& r : kept.results) {
-    out.history_files.push_back(r.completed ? (fs::path("histories") / r.file).string()
-                                            : "(failed: " + r.message + ")");
+    // The same runs completed above: a failure here is the disk's (full, or gone), and a design
+    // without the histories its report names is not complete.
+    if (!r.completed) {
+      throw ResourceError(history_folder.string(),
+                          fmt::format("the histories kept for the figures could not be written: "
+                                      "{}",
+                                      r.message));
+    }
+    out.history_files.push_back((fs::path("histories") / r.file).string());
   }
   out.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -60,6 +60,27 @@ Checks CheckDesign(const model::DesignFile& design, const DesignOutcome& o) {
   return c;
 }
 
+// "upper: PGA 3.26 g exceeds 3 g (in 3 of 3 runs)", a line per bound and warning.
+std::vector<std::string> WarningLines(const DesignOutcome& o) {
+  const std::size_t per_bound = o.eccentricities.size() * o.records.size();
+  std::vector<std::string> lines;
+  for (const DesignWarning& w : o.warnings) {
+    lines.push_back(fmt::format("{}: {} (in {} of its {} runs)", o.bounds[w.bound].bound, w.text,
+                                w.runs, per_bound));
+  }
+  return lines;
+}
+
+// The first lines' note: the design values rest on runs that warned (of input no real building
+// or record has, of a bearing at its restrainer, ...), so they are not to be used unread.
+std::string WarningNote(const DesignOutcome& o) {
+  return fmt::format(
+      "WARNING: the runs gave {} warning{} (listed under \"Warnings\"): read {} before using "
+      "the design values below.",
+      o.warnings.size(), o.warnings.size() == 1 ? "" : "s",
+      o.warnings.size() == 1 ? "it" : "them");
+}
+
 std::string StatisticText(const DesignOutcome& o) {
   return o.mean_of_suite ? fmt::format("mean of {} records", o.records.size())
                          : fmt::format("maximum of {} records (fewer than {}: no mean)",
@@ -142,6 +163,7 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   if (!design.description.empty()) fmt::print(md, "{}\n\n", design.description);
   fmt::print(md, "Design file `{}`. Target: {}. Lengths in {}, forces in {}.\n\n", design.path,
              spectra::Describe(design.target), u.length(), u.force());
+  if (!o.warnings.empty()) fmt::print(md, "**{}**\n\n", WarningNote(o));
 
   fmt::print(md, "## Bound models\n\n");
   fmt::print(md,
@@ -172,6 +194,18 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                    "B_M = 1 / eta (EN 1998-1 Eq. 3.6),"
                  : "D_M = Sa(T_M) g T_M^2 / (4 pi^2 B_M), the target's spectral displacement, "
                    "B_M from ASCE 7-16 Table 17.5-1,");
+
+  if (const std::string rule = BearingWeightRule(design.model, o); !rule.empty()) {
+    fmt::print(md, "\n### Bearing weights\n\n");
+    fmt::print(md, "The friction pendulums' forces are their weight times constants: {}.\n\n",
+               rule.substr(rule.find(": ") + 2));
+    fmt::print(md, "| bearing | laws' w ({0}) | carried ({0}) |\n|---|---|---|\n", u.force());
+    for (const analysis::IsolationSystem::BearingWeight& w : o.bearing_weights) {
+      if (!std::isnan(w.carried)) {
+        fmt::print(md, "| {} | {:.5g} | {:.5g} |\n", w.name, w.law, w.carried);
+      }
+    }
+  }
 
   fmt::print(md, "\n## The suite\n\n");
   fmt::print(md,
@@ -219,6 +253,10 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
     }
     fmt::print(md, " {} |\n", o.bounds[o.governing[Index(info.quantity)]].bound);
   }
+
+  fmt::print(md, "\n## Warnings\n\n");
+  if (o.warnings.empty()) fmt::print(md, "None: no run warned of implausible input.\n");
+  for (const std::string& line : WarningLines(o)) fmt::print(md, "- {}\n", line);
 
   fmt::print(md, "\n## Checks\n\n");
   fmt::print(md, "| check | response history | limit | design value |\n|---|---|---|---|\n");
@@ -272,6 +310,7 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
   const UnitSystem& u = design.model.units;
   const Checks c = CheckDesign(design, o);
   std::ostringstream out;
+  if (!o.warnings.empty()) fmt::print(out, "{}\n", WarningNote(o));
   fmt::print(out, "design values ({}):\n", StatisticText(o));
   fmt::print(out, "{:<54}", "");
   for (const DesignBound& b : o.bounds) fmt::print(out, " {:>12}", b.bound);
@@ -291,6 +330,8 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
              kElfShearFloor * c.elf_shear, c.design_shear, u.force());
   fmt::print(out, "story drift ratio {} against {:g} %: {}\n", Drift(c.drift), c.drift_limit,
              DriftVerdict(c.drift, c.drift_limit));
+  if (!o.warnings.empty()) fmt::print(out, "warnings:\n");
+  for (const std::string& line : WarningLines(o)) fmt::print(out, "  {}\n", line);
   return out.str();
 }
 

@@ -177,6 +177,37 @@ TEST(AxialLoad, OneDirectionLayerCarriesTheWholeWeight) {
   EXPECT_NEAR(largest_friction, kMu * weight, 1e-9 * weight);
 }
 
+// An uncoupled pair (a pendulum's x and y laws) is one bearing: it carries its share once. The
+// block of four such pairs at rest, with axial_load: {} (each N = m g / 4), runs as the same
+// block at constant load with w = m g / 4: the same displacements to round-off. (Its weight was
+// once counted twice, x and y, halving every force.)
+TEST(AxialLoad, AnUncoupledPairCarriesItsShareOnce) {
+  const std::string h1 =
+      WriteRecord("h1.txt", 6.0, [](double t) { return 3.0 * std::sin(2.0 * kPi * 0.5 * t); });
+  const auto uncoupled = [](std::string text) {
+    for (std::size_t at = text.find("components:"); at != std::string::npos;
+         at = text.find("components:", at + 40)) {
+      text.insert(at, "coupling: uncoupled, ");
+    }
+    text.replace(text.find("w: 981"), 6, "w: 980.665");
+    return text;
+  };
+  const Solution loaded = Solved(uncoupled(Block(h1, "", "axial_load: {}\n")));
+  ASSERT_TRUE(loaded.summary.run.ok()) << loaded.summary.run.message;
+  ASSERT_EQ(loaded.problem.structure.axial_loads().bearings.size(), 4u);
+  EXPECT_NEAR(loaded.problem.structure.axial_loads().bearings[0].weight, kMass * kG / 4.0, 1e-9);
+  const Solution constant = Solved(uncoupled(Block(h1, "", "")));
+  ASSERT_TRUE(constant.summary.run.ok());
+  ASSERT_EQ(loaded.rows.size(), constant.rows.size());
+  const double peak = constant.summary.peaks.isolator_displacement.value;
+  ASSERT_GT(peak, 0.01);  // it slides
+  for (std::size_t n = 0; n < loaded.rows.size(); ++n) {
+    for (std::size_t i = 0; i < loaded.rows[n].u.size(); ++i) {
+      ASSERT_NEAR(loaded.rows[n].u[i], constant.rows[n].u[i], 1e-9 * peak) << n;
+    }
+  }
+}
+
 // Overturning: a two-story building on four bearings at (+-6, +-4) m, its masses at the
 // bearings' centroid at heights 0.5 (base), 3.5 and 6.5 m. By hand statics of the rigid slab,
 // N_j = P / 4 + x_j S_x / (4 a^2) + y_j S_y / (4 b^2), S = -sum_i m_i z_i a_i, from the story
@@ -296,8 +327,8 @@ TEST(AxialLoad, TriplePendulumCapacityUsedAndStops) {
       "units: {force: kN, length: m, time: s}\n"
       "isolation:\n"
       "  components: [{name: tp, type: triple_friction_pendulum, w: 3923, r1: 2.1, r2: 0.28, "
-      "r3: 0.28, r4: 2.1, mu1: 0.06, mu2: 0.02, mu3: 0.02, mu4: 0.10, d1: 0.1, d2: 0.02, d3: "
-      "0.02, d4: 0.1, uy: 0.0005}]\n"
+      "r3: 0.28, r4: 2.1, mu1: 0.06, mu2: 0.02, mu3: 0.02, mu4: 0.10, d1: 0.1, d2: 0.025, d3: "
+      "0.025, d4: 0.1, uy: 0.0005}]\n"
       "structure: {type: shear_building, base_mass: 400 t}\n"
       "excitation:\n"
       "  ground_motion: {file: " +

@@ -16,6 +16,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
+#include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/identification/cyclic_data.h"
 #include "isolab/model/model_file.h"
 
@@ -68,6 +69,41 @@ TEST(PathReplay, AlongCyclicsSinusoidItIsCyclicsLoop) {
     ASSERT_EQ(replay.force[k].x, loop.loop.force[k]) << k;
   }
   EXPECT_NEAR(replay.dissipated.back(), loop.cycles[0].dissipated + loop.cycles[1].dissipated,
+              1e-9 * loop.cycles[1].dissipated);
+}
+
+// Laws that take several states (sliders in series: the double and triple pendulums) keep every
+// element's state along a path, in one direction and in their coupled form in two: along the
+// cyclic test's sinusoid, to the last digit its loop in one direction, and to round-off in two
+// (a straight path: the coupled sliders' return is along the line, as in one direction). (The
+// replay once sized its states by the number of components, and wrote past them for these laws.)
+TEST(PathReplay, SeriesLawsAlongCyclicsSinusoidAreCyclicsLoop) {
+  // docs/bearings.md's triple pendulum (mechanical form: w, r1..r4, mu1..mu4, d1..d4, uy), and a
+  // double pendulum.
+  const auto triple = hysteresis::ParallelAssembly(
+      {{"tfp", hysteresis::LawParameters::Make(
+                   LawType::kTripleFrictionPendulum, hysteresis::ParameterForm::kMechanical,
+                   std::vector<double>{1000, 2100, 280, 280, 2100, 0.06, 0.02, 0.02, 0.10, 400,
+                                       50, 50, 400, 0.5})},
+       {"dfp", hysteresis::LawParameters::Make(LawType::kDoubleFrictionPendulum,
+                                               hysteresis::ParameterForm::kMechanical,
+                                               std::vector<double>{500, 1500, 1500, 0.04, 0.07,
+                                                                   150, 150, 0.5})}});
+  ASSERT_GT(triple.state_size(), triple.size());
+  // 700 mm: past regime III of the triple pendulum, and the double's restrainers.
+  const hysteresis::CyclicResult loop = hysteresis::RunCyclicTest(triple, {700, 2.0, 2, 400});
+  io::DisplacementPath path;
+  path.time = loop.loop.time;
+  for (const double u : loop.loop.displacement) path.displacement.push_back({u, 0.0});
+  const ReplayResult one = Replay(triple, path);
+  path.plan = true;
+  const ReplayResult coupled = Replay(PlanFromIsolation(triple, true), path);
+  for (std::size_t k = 0; k < path.time.size(); ++k) {
+    ASSERT_EQ(one.force[k].x, loop.loop.force[k]) << k;
+    ASSERT_NEAR(coupled.force[k].x, loop.loop.force[k], 1e-9 * loop.cycles[1].peak_force) << k;
+    ASSERT_NEAR(coupled.force[k].y, 0.0, 1e-12 * loop.cycles[1].peak_force) << k;
+  }
+  EXPECT_NEAR(one.dissipated.back(), loop.cycles[0].dissipated + loop.cycles[1].dissipated,
               1e-9 * loop.cycles[1].dissipated);
 }
 

@@ -151,7 +151,9 @@ TEST(PropertyModification, BadFactorsAreLocated) {
 TEST(BoundsCommand, WritesThreeModelsThatRunAlone) {
   const std::filesystem::path folder = testing::FreshTestDirectory();
   const std::string model = Write(Model("qd: 50, kd: 1.0, ku: 10", kFactors), "lrb.yaml");
-  std::filesystem::create_directories(folder / "out");
+  const std::filesystem::path elsewhere = folder / "elsewhere";
+  std::filesystem::create_directories(elsewhere);
+  // The output folder is made, as a design's is.
   const testing::Outcome outcome =
       testing::RunIsolab("bounds " + model + " -o " + (folder / "out").string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
@@ -159,9 +161,11 @@ TEST(BoundsCommand, WritesThreeModelsThatRunAlone) {
   for (const char* bound : {"nominal", "upper", "lower"}) {
     const std::string written = (folder / "out" / (std::string("lrb_") + bound + ".yaml")).string();
     EXPECT_NE(Read(written).find("lead_rubber"), std::string::npos) << written;
-    // From another folder: the record's path was made absolute.
-    const testing::Outcome run = testing::RunCommandLine("cd / && " + std::string(ISOLAB_BINARY) +
-                                                         " run " + written + " > /dev/null 2>&1");
+    // From another folder (of the test's own: the run writes its results there): the record's
+    // path was made absolute.
+    const testing::Outcome run = testing::RunCommandLine(
+        "cd " + elsewhere.string() + " && " + std::string(ISOLAB_BINARY) + " run " + written +
+        " > /dev/null 2>&1");
     EXPECT_EQ(run.exit_code, 0) << written;
   }
   EXPECT_NE(Read((folder / "out" / "lrb_upper.yaml").string()).find("76.04375"), std::string::npos);
@@ -172,6 +176,48 @@ TEST(BoundsCommand, WritesThreeModelsThatRunAlone) {
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.output.find("no property modification factors"), std::string::npos)
       << refused.output;
+}
+
+
+// The bundled plan model shares one pendulum among its four isolators through a YAML anchor
+// (`components: &fp`, then `*fp`). Each isolator's modification scales its own copy once, as if
+// the component were written out four times: mu 0.06 x 1.3 = 0.078 at the upper bound (not
+// 0.06 x 1.3^4 = 0.171, which scaling the shared node through each alias gave), 0.06 x 0.8 =
+// 0.048 at the lower.
+TEST(BoundsCommand, AModificationReachedThroughAnAliasScalesOnce) {
+  std::string text = Read(std::string(ISOLAB_SOURCE_DIR) + "/models/plan/five_story_fp_plan.yaml");
+  const auto replace_all = [&text](const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+  };
+  replace_all("../../ground_motions/", std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/");
+  const std::string modification = "modification: {fp: {mu: {min: 0.8, max: 1.3}}}";
+  replace_all("components: *fp}", "components: *fp, " + modification + "}");
+  replace_all("uy: 0.5}\n", "uy: 0.5}\n      " + modification + "\n");
+  const ModelFile model = LoadModelFile(Write(text, "fp_plan_aliases.yaml"));
+  ASSERT_EQ(model.modifications.size(), 4u);
+  const BoundModels bounds = MakeBoundModels(model);
+  ASSERT_EQ(bounds.properties.size(), 4u);
+  for (const BoundProperty& p : bounds.properties) {
+    EXPECT_EQ(p.upper, "0.078") << p.bearing;
+    EXPECT_EQ(p.lower, "0.048") << p.bearing;
+  }
+  const auto count = [](const std::string& haystack, const std::string& needle) {
+    int n = 0;
+    for (std::size_t at = haystack.find(needle); at != std::string::npos;
+         at = haystack.find(needle, at + 1)) {
+      ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(count(bounds.models[0].text, "mu: 0.06"), 4) << bounds.models[0].text;
+  EXPECT_EQ(count(bounds.models[1].text, "mu: 0.078"), 4) << bounds.models[1].text;
+  EXPECT_EQ(count(bounds.models[2].text, "mu: 0.048"), 4) << bounds.models[2].text;
+  // The written upper model reads back with each isolator's pendulum at 0.078.
+  const ModelFile upper = LoadModelText(bounds.models[1].text, Write("", "fp_upper.yaml"));
+  EXPECT_TRUE(upper.modifications.empty());
 }
 
 }  // namespace

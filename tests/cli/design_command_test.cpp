@@ -2,12 +2,14 @@
 // files it writes, D_TM against D_M with accidental eccentricity, the ELF floor applied to the
 // design values, and bad input as located errors with exit code 2.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "own_test_file.h"
 #include "run_isolab.h"
@@ -75,32 +77,240 @@ TEST(DesignCommand, DesignsThePlanBuildingOnASyntheticSuite) {
   EXPECT_GT(v.at("nominal/D_M/elf"), v.at("upper/D_M/elf"));
 }
 
-// A folder an earlier design wrote is emptied first (nothing of it is taken for the new design's);
-// a folder holding anything else is refused, untouched.
-TEST(DesignCommand, ReplacesAnEarlierDesignAndRefusesAFolderOfOtherFiles) {
-  const fs::path folder = testing::FreshTestDirectory();
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A design of the two-story building on the three bundled records, no figures: a few seconds.
+std::string QuickDesign(const fs::path& folder, const std::string& extra = "") {
   const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
   const fs::path path = folder / "design.yaml";
   std::ofstream(path) << "model: " << ISOLAB_TEST_DATA_DIR << "/study/data/two_story_lrb.yaml\n"
                       << "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\nsuite:\n  records: ["
                       << motions << "fwn_firm_seed1.at2, " << motions << "fwn_soft_seed2.at2, "
-                      << motions << "elcentro_1940_ns.at2]\n";
-  const fs::path out = folder / "out";
-  const std::string command = "design " + path.string() + " -q --no-figures -o " + out.string();
-  ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);
-  const fs::path stale = out / "histories" / "runs" / "lower" / "earlier_x1.h5";
-  std::ofstream(stale) << "an earlier design's history";
-  ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);
-  EXPECT_FALSE(fs::exists(stale));
-  EXPECT_TRUE(fs::is_regular_file(out / "design_values.csv"));
+                      << motions << "elcentro_1940_ns.at2]\n"
+                      << extra;
+  return path.string();
+}
 
-  std::ofstream(out / "notes.txt") << "the engineer's";
+// A design replaces an earlier design's folder (every file listed in its manifest) and nothing
+// else: a folder with anything more, or anything changed, is refused before any work and left as
+// it was.
+TEST(DesignCommand, ReplacesOnlyAnEarlierDesignsFolder) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const fs::path out = folder / "out";
+  const std::string command =
+      "design " + QuickDesign(folder) + " -q --no-figures -o " + out.string();
+  ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);
+  ASSERT_TRUE(fs::is_regular_file(out / "design_manifest.txt"));
+  EXPECT_NE(ReadFile(out / "design_manifest.txt").find(" design_values.csv\n"), std::string::npos);
+  ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);  // its own earlier design: replaced
+  const std::string values = ReadFile(out / "design_values.csv");
+
+  // A file the design did not write, anywhere in the folder: refused, untouched.
+  const fs::path note = out / "histories" / "notes.txt";
+  std::ofstream(note) << "the engineer's";
   const testing::Outcome refused = testing::RunIsolab(command, true);
   EXPECT_EQ(refused.exit_code, 2);
-  EXPECT_NE(refused.output.find("holds 'notes.txt', which a design does not write"),
+  EXPECT_NE(refused.output.find("holds 'histories/notes.txt', which the earlier design did not "
+                                "write"),
             std::string::npos)
       << refused.output;
+  EXPECT_EQ(ReadFile(note), "the engineer's");
+  EXPECT_EQ(ReadFile(out / "design_values.csv"), values);
+  fs::remove(note);
+
+  // A file of the design's, changed since: refused.
+  std::ofstream(out / "design.md", std::ios::app) << "\nReviewed.\n";
+  const testing::Outcome changed = testing::RunIsolab(command, true);
+  EXPECT_EQ(changed.exit_code, 2);
+  EXPECT_NE(changed.output.find("'design.md' has changed since the earlier design wrote it"),
+            std::string::npos)
+      << changed.output;
+  EXPECT_NE(ReadFile(out / "design.md").find("Reviewed."), std::string::npos);
+}
+
+// A user's project folder that happens to hold folders named as a design's (models/, records/)
+// and no manifest is not an earlier design: refused, nothing in it touched.
+TEST(DesignCommand, RefusesAProjectFolderWithTheDesignsFolderNames) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const fs::path project = folder / "project";
+  fs::create_directories(project / "models");
+  fs::create_directories(project / "records");
+  std::ofstream(project / "models" / "building.yaml") << "mine";
+  std::ofstream(project / "records" / "site.at2") << "mine too";
+  const testing::Outcome refused = testing::RunIsolab(
+      "design " + QuickDesign(folder) + " -q --no-figures -o " + project.string(), true);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("and no design_manifest.txt: it is not a folder an earlier "
+                                "design wrote"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_EQ(ReadFile(project / "models" / "building.yaml"), "mine");
+  EXPECT_EQ(ReadFile(project / "records" / "site.at2"), "mine too");
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::recursive_directory_iterator(project)) ++entries;
+  EXPECT_EQ(entries, 4u);
+}
+
+// A design refused after it claimed the folder (its suite cannot be scaled) leaves the earlier
+// design exactly as it was, and nothing beside it.
+TEST(DesignCommand, ARefusedDesignLeavesTheEarlierOneUntouched) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const fs::path out = folder / "out";
+  ASSERT_EQ(testing::RunIsolab("design " + QuickDesign(folder) + " -q --no-figures -o " +
+                               out.string())
+                .exit_code,
+            0);
+  std::map<std::string, std::string> before;
+  for (const auto& e : fs::recursive_directory_iterator(out)) {
+    if (e.is_regular_file()) before[e.path().lexically_relative(out).string()] = ReadFile(e.path());
+  }
+  // A period range far past the target's: refused once the bounds' T_M are known.
+  const fs::path bad = folder / "bad";
+  fs::create_directories(bad);
+  const std::string refused_design = QuickDesign(bad, "  period_range: [0.75, 400]\n");
+  const testing::Outcome refused =
+      testing::RunIsolab("design " + refused_design + " -q --no-figures -o " + out.string(), true);
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  std::map<std::string, std::string> after;
+  for (const auto& e : fs::recursive_directory_iterator(out)) {
+    if (e.is_regular_file()) after[e.path().lexically_relative(out).string()] = ReadFile(e.path());
+  }
+  EXPECT_EQ(after, before);
+  for (const auto& e : fs::directory_iterator(folder)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(name == "out" || name == "bad" || name == "design.yaml") << name;
+  }
+}
+
+// One design at a time into a folder: a lock beside it, held by a running process, refuses the
+// second; a lock left by a process that is gone is taken over.
+TEST(DesignCommand, ASecondDesignIntoTheSameFolderIsRefused) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const fs::path out = folder / "out";
+  const std::string command =
+      "design " + QuickDesign(folder) + " -q --no-figures -o " + out.string();
+  const fs::path lock = folder / ".out.design-lock";
+  std::ofstream(lock) << getpid() << "\n";  // this test's process: running
+  const testing::Outcome refused = testing::RunIsolab(command, true);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("another design (process " + std::to_string(getpid()) +
+                                ") is writing into"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(fs::exists(lock));  // not ours to remove
+
+  // The pid of a shell that has exited: a design killed while it ran.
+  const std::string gone = testing::RunCommandLine("sh -c 'echo $$'").output;
+  std::ofstream(lock) << gone;
+  const testing::Outcome taken = testing::RunIsolab(command, true);
+  EXPECT_EQ(taken.exit_code, 0) << taken.output;
   EXPECT_TRUE(fs::is_regular_file(out / "design_values.csv"));
+  EXPECT_FALSE(fs::exists(lock));
+}
+
+// The rule for the pendulums' weights is printed with its numbers, and a building whose
+// pendulums are given a weight 60 % short of its own is warned about: in the first line of the
+// summary, in design.md's Warnings, naming both weights.
+TEST(DesignCommand, BearingWeightsAreStatedAndAMismatchWarnedFirst) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const fs::path model = folder / "pendulums.yaml";
+  // 110 t + 4 x 100 t = 510 t: 5001.4 kN. Four pendulums of w = 500 kN carry 2000 kN.
+  std::ofstream(model)
+      << "units: {force: kN, length: mm, time: s}\n"
+         "isolation:\n  count: 4\n"
+         "  components: [{name: fp, type: friction_pendulum, w: 500, r: 2235, mu: 0.06, uy: 0.5}]\n"
+         "  modification: {fp: {mu: {min: 0.8, max: 1.3}}}\n"
+         "structure: {type: shear_building, base_mass: 110 t,\n"
+         "  stories: {count: 4, mass: 100 t, stiffness: 800 kN/mm, height: 3500}}\n"
+         "analysis: {dt: 0.01}\n";
+  const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
+  const fs::path design = folder / "design.yaml";
+  std::ofstream(design) << "model: " << model.string() << "\n"
+                        << "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\nsuite:\n  records: ["
+                        << motions << "fwn_firm_seed1.at2, " << motions << "fwn_soft_seed2.at2, "
+                        << motions << "elcentro_1940_ns.at2]\n";
+  const fs::path out = folder / "out";
+  const testing::Outcome run = testing::RunCommandLine(
+      std::string(ISOLAB_BINARY) + " design " + design.string() + " --no-figures -o " +
+      out.string() + " 2>" + (folder / "progress.txt").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.rfind("WARNING: the runs gave ", 0), 0u) << run.output;
+  const std::string weights =
+      "friction pendulums' weights w sum to 2000 kN, the structure weighs 5001.4 kN (-60.0 %)";
+  EXPECT_NE(run.output.find(weights), std::string::npos) << run.output;
+  const std::string progress = ReadFile(folder / "progress.txt");
+  EXPECT_NE(progress.find("bearing weights: 4 pendulum bearings carry 2000 kN in all (500 to 500 "
+                          "kN each) in the ELF step and the runs alike, their laws' w (no "
+                          "axial_load); the building weighs 5001.4 kN"),
+            std::string::npos)
+      << progress;
+  const std::string report = ReadFile(out / "design.md");
+  EXPECT_NE(report.find("**WARNING: the runs gave "), std::string::npos);
+  const std::size_t section = report.find("## Warnings");
+  ASSERT_NE(section, std::string::npos);
+  EXPECT_NE(report.find("- upper: the " + weights, section), std::string::npos) << report;
+  EXPECT_NE(report.find("| bearing_1 | 500 | 500 |"), std::string::npos) << report;
+}
+
+// What the pipeline would refuse late (or fail on as an "internal error", or run out of memory
+// on) is refused before any work, located at its key in the design file, and leaves no folder.
+TEST(DesignCommand, InputThePipelineCannotUseIsRefusedFirstWithItsPlace) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const std::string building = std::string(ISOLAB_TEST_DATA_DIR) + "/study/data/two_story_lrb.yaml";
+  const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
+  const fs::path zero = folder / "zero.at2";
+  {
+    std::ofstream out(zero);
+    out << "PEER\nall zeros\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  3000, DT=   .0100 SEC\n";
+    for (int k = 0; k < 600; ++k) out << "0.0 0.0 0.0 0.0 0.0\n";
+  }
+  const fs::path long_target = folder / "long_target.csv";
+  {
+    std::ofstream out(long_target);
+    out << "period_s,sa_g\n";
+    for (int k = 1; k <= 10001; ++k) out << 1e-3 * k << ",1\n";
+  }
+  struct Case {
+    std::string suite_or_target, message;
+  };
+  const std::string asce = "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n";
+  const std::vector<Case> cases = {
+      {asce + "suite: {synthetic: {count: 3, dt: 0.005 s, duration: 20 s}}\n",
+       "design.yaml:3:35: suite.synthetic.dt: 0.005 s is finer than the model's analysis.dt, "
+       "0.01 s"},
+      {"target: {asce7: {sms: 1.2 g, sm1: 1e-9 g}}\nsuite: {synthetic: {count: 3}}\n",
+       "design.yaml:2:9: target: the ELF procedure on the nominal bound: no displacement"},
+      {asce + "suite: {synthetic: {count: 3, dt: 1.9 s, duration: 200 s}}\n",
+       "design.yaml:3:35: suite.synthetic.dt: 1.9 s (at most 0.02 s"},
+      {asce + "suite: {synthetic: {count: 3, duration: 1e7 s}}\n",
+       "design.yaml:3:41: suite.synthetic.duration: 1e+07 s at dt = 0.01 s is 1e+09 samples a "
+       "record; at most 1e+06"},
+      {asce + "suite: {synthetic: {count: 1000000}}\n",
+       "design.yaml:3:28: suite.synthetic.count: 1000000 (at most 100 pairs"},
+      {asce + "suite: {records: [" + zero.string() + ", " + motions + "fwn_firm_seed1.at2, " +
+           motions + "fwn_soft_seed2.at2]}\n",
+       "design.yaml:3:19: suite.records[0]: '" + zero.string() + "' is all zeros"},
+      {"target: {file: " + long_target.string() + "}\nsuite: {synthetic: {count: 3}}\n",
+       "long_target.csv:10002: more than 10000 rows"},
+  };
+  for (const Case& c : cases) {
+    const fs::path design = folder / "design.yaml";
+    std::ofstream(design) << "model: " << building << "\n" << c.suite_or_target;
+    const fs::path out = folder / "out";
+    const testing::Outcome refused = testing::RunIsolab(
+        "design " + design.string() + " -q --no-figures -o " + out.string(), true);
+    EXPECT_EQ(refused.exit_code, 2) << c.suite_or_target << refused.output;
+    EXPECT_NE(refused.output.find(c.message), std::string::npos)
+        << c.suite_or_target << refused.output;
+    EXPECT_EQ(refused.output.find("internal error"), std::string::npos) << refused.output;
+    EXPECT_FALSE(fs::exists(out)) << c.suite_or_target;
+  }
 }
 
 TEST(DesignCommand, RefusesBadInputWithItsPlace) {

@@ -393,6 +393,14 @@ TEST(TriplePendulum, ParameterRulesNameTheKey) {
   EXPECT_EQ(violation(with(6, 0.07)).key, "mu2");  // the inner surface rougher than surface 1
   EXPECT_EQ(violation(with(7, 0.11)).key, "mu3");
   EXPECT_EQ(violation(with(10, -1.0)).key, "d2");
+  // The inner slider travels (mu1 - mu2) r2 = 0.04 x 280 = 11.2 mm on surface 2 before surface 1
+  // slides: an inner capacity of 5 mm would stop it there, which the series model cannot show.
+  const ParameterViolation inner = violation(with(10, 5.0));
+  EXPECT_EQ(inner.key, "d2");
+  EXPECT_NE(inner.rule.find("(mu1 - mu2) r2 = 11.2"), std::string::npos) << inner.rule;
+  EXPECT_EQ(violation(with(11, 22.3)).key, "d3");  // (mu4 - mu3) r3 = 0.08 x 280 = 22.4
+  EXPECT_NO_THROW(LawParameters::Make(LawType::kTripleFrictionPendulum, ParameterForm::kMechanical,
+                                      with(11, 22.5)));
   EXPECT_EQ(violation(with(13, 0.0)).key, "uy");
   EXPECT_EQ(violation(with(9, NAN)).key, "d1");  // required
   // Allowed: mu2 != mu3, mu4 < mu1 (the mirror), unequal outer surfaces.

@@ -9,8 +9,9 @@
 // with B_M from beta_M by ASCE 7-16 Table 17.5-1 (DampingCoefficient). The effective properties
 // are the bearings' own laws' (IsolationSystemAt): every isolator driven together along x through
 // three cycles u = D sin(2 pi t / T) at the current T_M (only rate-dependent laws see T), read on
-// the third cycle, where a bilinear loop is steady. Friction pendulums keep the weight their laws
-// carry (`w`): a model's axial_load (docs/axial_load.md) is not applied here.
+// the third cycle, where a bilinear loop is steady. Friction pendulums carry the weight the runs
+// give them: their laws' `w`, or under a model's axial_load (docs/axial_load.md) their static
+// share of the building's weight (the runs' N at rest), so that the ELF step and the runs agree.
 #pragma once
 
 #include <functional>
@@ -46,12 +47,21 @@ class IsolationSystem {
   // Each isolator's k_eff at D, in layout order, and where it stands (zero in one direction).
   std::vector<double> BearingStiffnesses(double displacement, double period) const;
   const std::vector<hysteresis::Vec2>& positions() const { return positions_; }
+  // Per isolator (layout order): its name, the weight its pendulum laws take (`w`, their sum) and
+  // the weight it carries here and in the runs (its static share under axial_load, else `w`);
+  // NaN for an isolator that is not a pendulum bearing.
+  struct BearingWeight {
+    std::string name;
+    double law = 0.0, carried = 0.0;
+  };
+  const std::vector<BearingWeight>& bearing_weights() const { return bearing_weights_; }
   double weight() const { return weight_; }    // W: every level's mass x g (force)
   double gravity() const { return gravity_; }  // 1 g (length/time^2)
 
  private:
   std::vector<std::function<EffectiveProperties(double, double)>> bearings_;
   std::vector<hysteresis::Vec2> positions_;
+  std::vector<BearingWeight> bearing_weights_;
   double weight_ = 0.0, gravity_ = 0.0;
 };
 

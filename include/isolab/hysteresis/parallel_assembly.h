@@ -91,6 +91,10 @@ class ParallelAssembly {
   std::size_t state_size_ = 0;
 };
 
+// The weight W of an assembly whose every law is a friction pendulum (PendulumWeight; their sum,
+// as they act in parallel); nullopt when any law is not, or there is none.
+std::optional<double> PendulumWeight(const ParallelAssembly& assembly);
+
 // An assembly of one law in mathematical form, e.g. a linear story spring; throws
 // InvalidParameter like LawParameters::Make.
 ParallelAssembly SingleLaw(LawType type, std::vector<double> mathematical,

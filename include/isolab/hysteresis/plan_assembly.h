@@ -88,4 +88,8 @@ class PlanAssembly {
   std::size_t state_size_ = 0;
 };
 
+// The weight W of a plan assembly whose every law is a friction pendulum (their sum; an uncoupled
+// pair is one bearing: its x law's); nullopt when any law is not, or there is none.
+std::optional<double> PendulumWeight(const PlanAssembly& assembly);
+
 }  // namespace isolab::hysteresis

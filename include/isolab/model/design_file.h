@@ -60,6 +60,7 @@ struct DesignFile {
   double drift_limit = 0.015;
   std::string output_directory;  // empty: not given
   std::string suite_key;         // "design.yaml:7:3: suite", for messages on the suite
+  std::string target_key;        // "design.yaml:3:1: target", for messages on the target
 };
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, a model that does

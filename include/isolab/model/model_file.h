@@ -217,10 +217,12 @@ std::size_t FirstWithoutCoupledForm(const hysteresis::ParallelAssembly& laws);
 std::string NoCoupledForm(const hysteresis::ParallelAssembly& laws, std::size_t c);
 
 // The model with `laws` as its isolation (a study's isolation variant): a one-direction model's
-// isolation layer, or every isolator of a plan model as a coupled law, identified on `range`
-// (none: the laws carry no range, and the replaced laws' range goes with them). Throws
-// std::invalid_argument (NoCoupledForm) for a plan model and a law without a coupled form.
+// isolation layer, or every isolator of a plan model as coupled laws (or, `uncoupled`, each law
+// along x and y independently), identified on `range` (none: the laws carry no range, and the
+// replaced laws' range goes with them). Throws std::invalid_argument (NoCoupledForm) for a plan
+// model, coupled, and a law without a coupled form.
 void ReplaceIsolation(ModelFile* model, const hysteresis::ParallelAssembly& laws,
-                      std::optional<identification::IdentifiedRange> range = std::nullopt);
+                      std::optional<identification::IdentifiedRange> range = std::nullopt,
+                      bool uncoupled = false);
 
 }  // namespace isolab::model

@@ -21,6 +21,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@
 #include "isolab/model/design_file.h"
 #include "isolab/model/study_file.h"
 #include "isolab/spectra/suite_scaling.h"
+#include "isolab/study/design_folder.h"
 #include "isolab/study/job_result.h"
 #include "isolab/study/quantities.h"
 #include "isolab/study/scheduler.h"
@@ -86,6 +88,14 @@ struct DesignStatistic {
   double value = 0.0;  // mean or max, as the suite's size allows
 };
 
+// A warning the runs gave (implausible input: model_summary.h), once per bound with the number of
+// its runs that gave it.
+struct DesignWarning {
+  std::size_t bound = 0;
+  std::string text;
+  std::size_t runs = 0;
+};
+
 struct DesignOutcome {
   std::vector<DesignBound> bounds;                         // nominal, upper, lower
   std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
@@ -102,7 +112,12 @@ struct DesignOutcome {
   const JobResult& RunOf(std::size_t b, std::size_t c, std::size_t r) const {
     return runs[(b * eccentricities.size() + c) * records.size() + r];
   }
+  // The weights the pendulum bearings carry, in the ELF step and in the runs alike (the nominal
+  // bound's; NaN for a bearing that is not a pendulum), and the building's weight (force).
+  std::vector<analysis::IsolationSystem::BearingWeight> bearing_weights;
+  double building_weight = 0.0;
   std::size_t failed = 0;
+  std::vector<DesignWarning> warnings;  // bound by bound, each in the order first given
   // [bound][quantity]
   std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
   std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value
@@ -113,12 +128,16 @@ struct DesignOutcome {
   double suite_seconds = 0.0, runs_seconds = 0.0, wall_seconds = 0.0;
 };
 
-// `requested` when given, else the design's output.directory, else the design file's stem; made
-// with its parents, or emptied when it holds an earlier design (only what a design writes).
-// Throws InputError naming `option` (or output.directory) when it cannot be made or holds
-// anything else.
-std::string PrepareDesignFolder(const std::string& requested, const model::DesignFile& design,
-                                const std::string& option);
+// The rule the pendulum bearings' weights follow, with the numbers (empty without pendulums):
+// "bearing weights: 4 pendulum bearings carry ... in the ELF step and the runs alike, ...".
+std::string BearingWeightRule(const model::ModelFile& model, const DesignOutcome& outcome);
+
+// The folder a design writes into (design_folder.h), claimed: `requested` when given, else the
+// design's output.directory, else the design file's stem. Throws InputError naming `option` (or
+// output.directory).
+std::unique_ptr<DesignFolder> ClaimDesignFolder(const std::string& requested,
+                                                const model::DesignFile& design,
+                                                const std::string& option);
 
 // `progress` gets a line per step (and per run); it may be empty. Throws InputError for a design
 // the procedure cannot carry out (a period range beyond the target's, a matching that fails),
