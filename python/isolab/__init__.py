@@ -350,8 +350,10 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     story_drift_ratio (%), floor_acceleration (g), residual_displacement), "governing" (the bound
     of the largest value per quantity), "records" (name, files, factor), "period_range" (s),
     "statistic" ("mean" with at least 7 records, else "max"), "summary" (the command line's text)
-    "output" and "warnings" (each run warning of implausible input, per bound: "bound", "text" and
-    "runs", the count of the bound's runs that gave it; each also issued as an IsolabWarning).
+    "output", "warnings" (each run warning, per bound: "bound", "text" and "runs", the count of
+    the bound's runs that gave it; each also issued as an IsolabWarning) and "capacity_checks"
+    (D_TM against the displacement capacity of each group of isolators: "isolators", "D_TM",
+    "capacity", "basis" and "met", None where the laws give no capacity).
     Lengths and forces in the model's units. Raises RuntimeError when a run fails.
 
     The folder must be new, empty, or an earlier design's (design_manifest.txt lists what it

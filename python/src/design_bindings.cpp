@@ -76,7 +76,16 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
     warnings.append(py::dict(py::arg("bound") = outcome.bounds[w.bound].bound,
                              py::arg("text") = w.text, py::arg("runs") = w.runs));
   }
+  py::list capacities;
+  for (const study::CapacityCheck& c : study::CheckCapacities(outcome)) {
+    capacities.append(py::dict(
+        py::arg("isolators") = c.isolators, py::arg("D_TM") = c.demand,
+        py::arg("capacity") = c.capacity ? py::cast(c.capacity->displacement) : py::none(),
+        py::arg("basis") = c.capacity ? py::cast(c.capacity->basis) : py::none(),
+        py::arg("met") = c.capacity ? py::cast(c.met) : py::none()));
+  }
   py::dict result;
+  result["capacity_checks"] = capacities;
   result["warnings"] = warnings;
   result["bounds"] = bounds;
   result["governing"] = governing;

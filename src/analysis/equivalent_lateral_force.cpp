@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -55,6 +58,29 @@ EffectiveProperties LastCycle(const Assembly& assembly, double displacement, dou
   return p;
 }
 
+// What makes two isolators' laws the same, bit for bit: each component's law and its values (an
+// uncoupled pair's y law too).
+void Sign(const hysteresis::LawParameters& law, std::vector<std::uint64_t>* signature) {
+  signature->push_back(static_cast<std::uint64_t>(law.type()));
+  for (const double v : law.Values(hysteresis::ParameterForm::kMathematical)) {
+    signature->push_back(std::bit_cast<std::uint64_t>(v));
+  }
+}
+std::vector<std::uint64_t> Signature(const hysteresis::ParallelAssembly& assembly) {
+  std::vector<std::uint64_t> signature = {0};
+  for (const hysteresis::Component& c : assembly.components()) Sign(c.parameters, &signature);
+  return signature;
+}
+std::vector<std::uint64_t> Signature(const hysteresis::PlanAssembly& assembly) {
+  std::vector<std::uint64_t> signature = {1};
+  for (const hysteresis::PlanComponent& c : assembly.components()) {
+    Sign(c.law, &signature);
+    signature.push_back(c.law_y ? 1 : 0);
+    if (c.law_y) Sign(*c.law_y, &signature);
+  }
+  return signature;
+}
+
 void SetDamping(EffectiveProperties* p) {
   p->damping = p->stiffness > 0.0 ? p->dissipated / (2.0 * std::numbers::pi * p->stiffness *
                                                      p->displacement * p->displacement)
@@ -91,11 +117,9 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
   for (const structure::AxialBearing& bearing : s.axial_loads().bearings) {
     scales[bearing.slot] = bearing.static_load / bearing.weight;
   }
-  const auto scaled = [](EffectiveProperties p, double scale) {
-    p.stiffness *= scale;
-    p.dissipated *= scale;
-    return p;
-  };
+  // Bearings of one type (a group's, or every bearing of a layer) are one law evaluated once: the
+  // cycles at D are the same for each, and each takes them times its own scale.
+  std::vector<std::vector<std::uint64_t>> signatures;
   for (const structure::IsolatorLayout& isolator : laid_out.layout.isolators) {
     positions_.push_back(isolator.position);
     const std::size_t slot = isolator.member >= 0
@@ -107,19 +131,20 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
             : hysteresis::PendulumWeight(s.coupled_members()[isolator.coupled].assembly);
     const double w = law.value_or(std::numeric_limits<double>::quiet_NaN());
     bearing_weights_.push_back({isolator.name, w, w * scales[slot]});
+    const std::vector<std::uint64_t> signature =
+        isolator.member >= 0 ? Signature(s.members()[isolator.member].assembly)
+                             : Signature(s.coupled_members()[isolator.coupled].assembly);
+    const auto same = std::find(signatures.begin(), signatures.end(), signature);
+    bearings_.push_back({static_cast<std::size_t>(same - signatures.begin()), scales[slot]});
+    if (same != signatures.end()) continue;
+    signatures.push_back(signature);
     if (isolator.member >= 0) {
-      bearings_.push_back([assembly = s.members()[isolator.member].assembly,
-                           scale = scales[static_cast<std::size_t>(isolator.member)],
-                           scaled](double d, double t) {
-        return scaled(LastCycle(assembly, d, t), scale);
+      laws_.push_back([assembly = s.members()[isolator.member].assembly](double d, double t) {
+        return LastCycle(assembly, d, t);
       });
     } else {
-      bearings_.push_back([assembly = s.coupled_members()[isolator.coupled].assembly,
-                           scale = scales[s.members().size() +
-                                          static_cast<std::size_t>(isolator.coupled)],
-                           scaled](double d, double t) {
-        return scaled(LastCycle(assembly, d, t), scale);
-      });
+      laws_.push_back([assembly = s.coupled_members()[isolator.coupled].assembly](
+                          double d, double t) { return LastCycle(assembly, d, t); });
     }
   }
   gravity_ = model.units.Convert(1.0, "g", dimension::kAcceleration);
@@ -130,11 +155,24 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
   weight_ = mass * gravity_;
 }
 
+std::vector<EffectiveProperties> IsolationSystem::EachBearing(double displacement,
+                                                              double period) const {
+  std::vector<EffectiveProperties> laws;
+  for (const auto& law : laws_) laws.push_back(law(displacement, period));
+  std::vector<EffectiveProperties> bearings;
+  for (const Bearing& bearing : bearings_) {
+    EffectiveProperties p = laws[bearing.law];
+    p.stiffness *= bearing.scale;
+    p.dissipated *= bearing.scale;
+    bearings.push_back(p);
+  }
+  return bearings;
+}
+
 EffectiveProperties IsolationSystem::At(double displacement, double period) const {
   EffectiveProperties sum;
   sum.displacement = displacement;
-  for (const auto& bearing : bearings_) {
-    const EffectiveProperties p = bearing(displacement, period);
+  for (const EffectiveProperties& p : EachBearing(displacement, period)) {
     sum.stiffness += p.stiffness;
     sum.dissipated += p.dissipated;
   }
@@ -144,8 +182,9 @@ EffectiveProperties IsolationSystem::At(double displacement, double period) cons
 
 std::vector<double> IsolationSystem::BearingStiffnesses(double displacement, double period) const {
   std::vector<double> stiffnesses;
-  for (const auto& bearing : bearings_)
-    stiffnesses.push_back(bearing(displacement, period).stiffness);
+  for (const EffectiveProperties& p : EachBearing(displacement, period)) {
+    stiffnesses.push_back(p.stiffness);
+  }
   return stiffnesses;
 }
 

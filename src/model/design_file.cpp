@@ -161,7 +161,8 @@ DesignFile LoadDesignFile(const std::string& path) {
   reader.RequireMap(root, "");
   reader.CheckKeys(
       root, "",
-      {"description", "model", "target", "suite", "eccentricity", "drift_limit", "output"});
+      {"description", "model", "target", "suite", "eccentricity", "drift_limit",
+       "shear_strain_limit", "output"});
   DesignFile design;
   design.path = path;
   const fs::path directory = fs::path(path).parent_path();
@@ -275,6 +276,15 @@ DesignFile LoadDesignFile(const std::string& path) {
       reader.Fail(
           root["drift_limit"], "drift_limit",
           fmt::format("{:g} (a story drift ratio in (0, 1): 0.015 for 1.5 %)", design.drift_limit));
+    }
+  }
+  if (root["shear_strain_limit"]) {
+    design.shear_strain_limit = reader.ReadNumber(root["shear_strain_limit"], "shear_strain_limit");
+    if (!(design.shear_strain_limit > 0.0 && design.shear_strain_limit <= 10.0)) {
+      reader.Fail(root["shear_strain_limit"], "shear_strain_limit",
+                  fmt::format("{:g} (a ratio of rubber shear strain, 0 < limit <= 10: 2.5 for "
+                              "250 %)",
+                              design.shear_strain_limit));
     }
   }
   if (root["output"]) {

@@ -239,6 +239,21 @@ std::string BearingWeightRule(const model::ModelFile& model, const DesignOutcome
 
 namespace {
 
+// Each isolator's displacement capacity: a plan model's isolators, or a one-direction layer's
+// bearing type (every bearing alike).
+std::vector<IsolatorCapacity> Capacities(const model::ModelFile& model, double strain_limit) {
+  std::vector<IsolatorCapacity> capacities;
+  if (const auto* sites = model::PlanIsolators(model)) {
+    for (const structure::PlanIsolatorSite& site : *sites) {
+      capacities.push_back({site.name, DisplacementCapacity(site.assembly, strain_limit)});
+    }
+  } else {
+    capacities.push_back(
+        {"every bearing of the layer", DisplacementCapacity(model.isolation, strain_limit)});
+  }
+  return capacities;
+}
+
 // Every run's warnings, once per bound with the count of the bound's runs that gave each.
 std::vector<DesignWarning> CollectWarnings(const DesignOutcome& out) {
   std::vector<DesignWarning> warnings;
@@ -323,6 +338,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                     b.elf.displacement, units.length(), b.elf.period / second,
                     b.elf.at_design.damping, b.damping_coefficient));
     if (b.bound == "nominal") {
+      out.capacities = Capacities(b.model, design.shear_strain_limit);
       out.bearing_weights = system.bearing_weights();
       out.building_weight = system.weight();
       if (const std::string rule = BearingWeightRule(design.model, out); !rule.empty()) say(rule);

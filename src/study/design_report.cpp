@@ -40,7 +40,8 @@ struct Checks {
   std::string total_bound, shear_bound;
 };
 
-Checks CheckDesign(const model::DesignFile& design, const DesignOutcome& o) {
+// `drift_limit`: the design's, a ratio.
+Checks CheckDesign(const DesignOutcome& o, double drift_limit) {
   Checks c;
   for (const DesignBound& b : o.bounds) {
     c.elf_total = std::max(c.elf_total, b.elf_total_displacement);
@@ -56,7 +57,7 @@ Checks CheckDesign(const model::DesignFile& design, const DesignOutcome& o) {
   c.design_shear = std::max(c.rha_shear, kElfShearFloor * c.elf_shear);
   const std::size_t d = o.governing[Index(DesignQuantity::kStoryDriftRatio)];
   c.drift = o.values[d][Index(DesignQuantity::kStoryDriftRatio)].value;
-  c.drift_limit = 100.0 * design.drift_limit;
+  c.drift_limit = 100.0 * drift_limit;
   return c;
 }
 
@@ -79,6 +80,25 @@ std::string WarningNote(const DesignOutcome& o) {
       "the design values below.",
       o.warnings.size(), o.warnings.size() == 1 ? "" : "s",
       o.warnings.size() == 1 ? "it" : "them");
+}
+
+// "tfp_1, tfp_2, tfp_3, tfp_4" or "isolation".
+std::string Names(const std::vector<std::string>& isolators) {
+  return fmt::format("{}", fmt::join(isolators, ", "));
+}
+
+std::string CapacityRow(const CapacityCheck& c, const UnitSystem& u) {
+  if (!c.capacity) {
+    return fmt::format(
+        "| D_TM <= displacement capacity of {} (ASCE 7-16 17.2.4) | {:.4g} {} | not known from "
+        "the laws (a single pendulum or a lead-rubber bearing states none; an HDR bearing's needs "
+        "shear_strain_limit) | not checked |",
+        Names(c.isolators), c.demand, u.length());
+  }
+  return fmt::format("| D_TM <= displacement capacity of {} (ASCE 7-16 17.2.4) | {:.4g} {} | "
+                     "{:.4g} {} ({}) | {} |",
+                     Names(c.isolators), c.demand, u.length(), c.capacity->displacement,
+                     u.length(), c.capacity->basis, c.met ? "met" : "EXCEEDED");
 }
 
 std::string StatisticText(const DesignOutcome& o) {
@@ -158,7 +178,7 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   const auto relative = [&](const std::string& path) {
     return fs::path(path).lexically_relative(directory).string();
   };
-  const Checks c = CheckDesign(design, o);
+  const Checks c = CheckDesign(o, design.drift_limit);
   fmt::print(md, "# Design of {}\n\n", design.model_path);
   if (!design.description.empty()) fmt::print(md, "{}\n\n", design.description);
   fmt::print(md, "Design file `{}`. Target: {}. Lengths in {}, forces in {}.\n\n", design.path,
@@ -272,6 +292,11 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
              u.force(), c.design_shear, u.force());
   fmt::print(md, "| story drift ratio <= {:g} % | {} | {:g} % | {} |\n", c.drift_limit,
              Drift(c.drift), c.drift_limit, DriftVerdict(c.drift, c.drift_limit));
+  fmt::print(md, "\n| capacity check | D_TM (design value) | capacity | verdict |\n"
+                 "|---|---|---|---|\n");
+  for (const CapacityCheck& check : CheckCapacities(o)) {
+    fmt::print(md, "{}\n", CapacityRow(check, u));
+  }
 
   fmt::print(md, "\n## Figures\n\n");
   if (!figures) {
@@ -292,6 +317,25 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
 
 }  // namespace
 
+std::vector<CapacityCheck> CheckCapacities(const DesignOutcome& o) {
+  const double demand = CheckDesign(o, 0.0).design_total;
+  std::vector<CapacityCheck> checks;
+  for (const IsolatorCapacity& c : o.capacities) {
+    const auto same = std::find_if(checks.begin(), checks.end(), [&](const CapacityCheck& k) {
+      return k.capacity.has_value() == c.capacity.has_value() &&
+             (!c.capacity || (k.capacity->displacement == c.capacity->displacement &&
+                              k.capacity->basis == c.capacity->basis));
+    });
+    if (same != checks.end()) {
+      same->isolators.push_back(c.isolator);
+      continue;
+    }
+    checks.push_back({{c.isolator}, c.capacity, demand,
+                      c.capacity && demand <= c.capacity->displacement});
+  }
+  return checks;
+}
+
 void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outcome,
                       const std::string& output_directory, bool figures) {
   const fs::path dir(output_directory);
@@ -308,7 +352,7 @@ void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outc
 
 std::string DesignSummaryText(const model::DesignFile& design, const DesignOutcome& o) {
   const UnitSystem& u = design.model.units;
-  const Checks c = CheckDesign(design, o);
+  const Checks c = CheckDesign(o, design.drift_limit);
   std::ostringstream out;
   if (!o.warnings.empty()) fmt::print(out, "{}\n", WarningNote(o));
   fmt::print(out, "design values ({}):\n", StatisticText(o));
@@ -330,6 +374,16 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
              kElfShearFloor * c.elf_shear, c.design_shear, u.force());
   fmt::print(out, "story drift ratio {} against {:g} %: {}\n", Drift(c.drift), c.drift_limit,
              DriftVerdict(c.drift, c.drift_limit));
+  for (const CapacityCheck& check : CheckCapacities(o)) {
+    if (check.capacity) {
+      fmt::print(out, "D_TM {:.5g} {} against the displacement capacity of {}, {:.5g} {} ({}): {}\n",
+                 check.demand, u.length(), Names(check.isolators), check.capacity->displacement,
+                 u.length(), check.capacity->basis, check.met ? "met" : "EXCEEDED");
+    } else {
+      fmt::print(out, "displacement capacity of {}: not known from the laws, not checked\n",
+                 Names(check.isolators));
+    }
+  }
   if (!o.warnings.empty()) fmt::print(out, "warnings:\n");
   for (const std::string& line : WarningLines(o)) fmt::print(out, "  {}\n", line);
   return out.str();

@@ -313,6 +313,61 @@ TEST(DesignCommand, InputThePipelineCannotUseIsRefusedFirstWithItsPlace) {
   }
 }
 
+// D_TM against each bearing's displacement capacity: a triple pendulum's d1 + d2 + d3 + d4 (here
+// 100 + 50 + 50 + 100 = 300 mm, exceeded by this target: the slider runs on against its
+// restrainers at the bearing's elastic stiffness), an HDR bearing's rubber thickness times
+// the design's shear_strain_limit (100 mm x 2.5 = 250 mm), and a lead-rubber bearing's, which its
+// law does not give: said, not guessed.
+TEST(DesignCommand, DisplacementCapacitiesAreCheckedAgainstTheDesignDtm) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
+  const auto design_of = [&](const std::string& name, const std::string& components,
+                             const std::string& modified, const std::string& extra) {
+    std::ofstream(folder / (name + ".yaml"))
+        << "units: {force: kN, length: mm, time: s}\nisolation:\n  count: 4\n  components: ["
+        << components << "]\n  modification: {b: {" << modified
+        << ": {min: 0.9, max: 1.1}}}\n"
+           "structure: {type: shear_building, base_mass: 110 t,\n"
+           "  stories: {count: 2, mass: 200 t, stiffness: 800 kN/mm, height: 3500}}\n"
+           "analysis: {dt: 0.01}\n";
+    const fs::path design = folder / (name + "_design.yaml");
+    std::ofstream(design) << "model: " << name << ".yaml\n"
+                          << "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\nsuite:\n  records: ["
+                          << motions << "fwn_firm_seed1.at2, " << motions << "fwn_soft_seed2.at2, "
+                          << motions << "elcentro_1940_ns.at2]\n"
+                          << extra;
+    return testing::RunIsolab("design " + design.string() + " -q --no-figures -o " +
+                              (folder / name).string());
+  };
+  const testing::Outcome tfp = design_of(
+      "tfp",
+      "{name: b, type: triple_friction_pendulum, w: 1250, r1: 2100, r2: 280, r3: 280, r4: 2100, "
+      "mu1: 0.06, mu2: 0.02, mu3: 0.02, mu4: 0.10, d1: 100, d2: 50, d3: 50, d4: 100, uy: 0.5}",
+      "mu1", "");
+  ASSERT_EQ(tfp.exit_code, 0) << tfp.output;
+  EXPECT_NE(tfp.output.find("against the displacement capacity of every bearing of the layer, "
+                            "300 mm (d1 + d2 + d3 + d4 of b): EXCEEDED"),
+            std::string::npos)
+      << tfp.output;
+  EXPECT_NE(ReadFile(folder / "tfp" / "design.md")
+                .find("| 300 mm (d1 + d2 + d3 + d4 of b) | EXCEEDED |"),
+            std::string::npos);
+
+  const std::string hdr =
+      "{name: b, type: hdr_bearing, g: 4.0e-4, area: 231875, tr: 100, damping: 0.089, strain: "
+      "1.5}";
+  const testing::Outcome rubber = design_of("hdr", hdr, "g", "shear_strain_limit: 2.5\n");
+  ASSERT_EQ(rubber.exit_code, 0) << rubber.output;
+  EXPECT_NE(rubber.output.find("250 mm (tr x shear_strain_limit 2.5 of b): "), std::string::npos)
+      << rubber.output;
+  const testing::Outcome unknown = design_of("hdr_no_limit", hdr, "g", "");
+  ASSERT_EQ(unknown.exit_code, 0) << unknown.output;
+  EXPECT_NE(unknown.output.find("displacement capacity of every bearing of the layer: not known "
+                                "from the laws, not checked"),
+            std::string::npos)
+      << unknown.output;
+}
+
 TEST(DesignCommand, RefusesBadInputWithItsPlace) {
   const fs::path folder = testing::FreshTestDirectory();
   const std::string design =

@@ -59,7 +59,16 @@ class IsolationSystem {
   double gravity() const { return gravity_; }  // 1 g (length/time^2)
 
  private:
-  std::vector<std::function<EffectiveProperties(double, double)>> bearings_;
+  // Each bearing's effective properties at (D, T), in layout order.
+  std::vector<EffectiveProperties> EachBearing(double displacement, double period) const;
+
+  // The distinct laws (one per bearing type), and each bearing as its law times its scale.
+  std::vector<std::function<EffectiveProperties(double, double)>> laws_;
+  struct Bearing {
+    std::size_t law = 0;
+    double scale = 1.0;
+  };
+  std::vector<Bearing> bearings_;
   std::vector<hysteresis::Vec2> positions_;
   std::vector<BearingWeight> bearing_weights_;
   double weight_ = 0.0, gravity_ = 0.0;

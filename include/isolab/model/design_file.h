@@ -58,6 +58,9 @@ struct DesignFile {
   double period_range[2] = {0.75, 1.25};  // factors on T_M upper, T_M lower
   double eccentricity = 0.05;             // plan; 0 in one direction
   double drift_limit = 0.015;
+  // The allowable shear strain of rubber bearings (a ratio, 2.5 for 250 %): a high-damping rubber
+  // bearing's displacement capacity is its rubber thickness times it. 0: not given (not checked).
+  double shear_strain_limit = 0.0;
   std::string output_directory;  // empty: not given
   std::string suite_key;         // "design.yaml:7:3: suite", for messages on the suite
   std::string target_key;        // "design.yaml:3:1: target", for messages on the target

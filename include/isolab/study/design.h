@@ -22,6 +22,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "isolab/model/design_file.h"
 #include "isolab/model/study_file.h"
 #include "isolab/spectra/suite_scaling.h"
+#include "isolab/study/bearing_capacity.h"
 #include "isolab/study/design_folder.h"
 #include "isolab/study/job_result.h"
 #include "isolab/study/quantities.h"
@@ -88,6 +90,12 @@ struct DesignStatistic {
   double value = 0.0;  // mean or max, as the suite's size allows
 };
 
+// An isolator's displacement capacity (bearing_capacity.h), nullopt when its laws give none.
+struct IsolatorCapacity {
+  std::string isolator;
+  std::optional<BearingCapacity> capacity;
+};
+
 // A warning the runs gave (implausible input: model_summary.h), once per bound with the number of
 // its runs that gave it.
 struct DesignWarning {
@@ -115,6 +123,7 @@ struct DesignOutcome {
   // The weights the pendulum bearings carry, in the ELF step and in the runs alike (the nominal
   // bound's; NaN for a bearing that is not a pendulum), and the building's weight (force).
   std::vector<analysis::IsolationSystem::BearingWeight> bearing_weights;
+  std::vector<IsolatorCapacity> capacities;  // per isolator, the nominal bound's
   double building_weight = 0.0;
   std::size_t failed = 0;
   std::vector<DesignWarning> warnings;  // bound by bound, each in the order first given

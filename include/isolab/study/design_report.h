@@ -10,12 +10,25 @@
 // Lengths and forces are in the model's units.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 
 namespace isolab::study {
+
+// D_TM, the design value (the response history's, not below 0.8 of the ELF's: ASCE 7-16 17.6.3),
+// against the displacement capacity of the isolators that share one (bearing_capacity.h); one
+// entry, without a capacity, for the isolators whose laws give none.
+struct CapacityCheck {
+  std::vector<std::string> isolators;
+  std::optional<BearingCapacity> capacity;
+  double demand = 0.0;  // D_TM (length)
+  bool met = false;     // demand <= capacity; false without a capacity
+};
+std::vector<CapacityCheck> CheckCapacities(const DesignOutcome& outcome);
 
 // `figures`: the report shows the figures plot_design.py draws; without, it says they were not
 // drawn.
