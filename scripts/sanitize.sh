@@ -29,7 +29,7 @@ kCiTests=(reader_fuzz_test atomic_file_test hdf5_write_failure_test results_writ
           law_update_test plan_assembly_test newmark_test ida_test run_command_test
           plan_run_command_test cyclic_command_test compare_command_test spectrum_command_test
           synth_command_test output_refusal_test shaketable_command_test design_command_test
-          out_of_memory_test)
+          out_of_memory_test path_replay_test)
 
 if $ci; then
   build="build-sanitize-ci"

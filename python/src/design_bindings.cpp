@@ -78,11 +78,11 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   }
   py::list capacities;
   for (const study::CapacityCheck& c : study::CheckCapacities(outcome)) {
-    capacities.append(py::dict(
-        py::arg("isolators") = c.isolators, py::arg("D_TM") = c.demand,
-        py::arg("capacity") = c.capacity ? py::cast(c.capacity->displacement) : py::none(),
-        py::arg("basis") = c.capacity ? py::cast(c.capacity->basis) : py::none(),
-        py::arg("met") = c.capacity ? py::cast(c.met) : py::none()));
+    capacities.append(
+        py::dict(py::arg("isolators") = c.isolators, py::arg("D_TM") = c.demand,
+                 py::arg("capacity") = c.capacity ? py::cast(c.capacity->displacement) : py::none(),
+                 py::arg("basis") = c.capacity ? py::cast(c.capacity->basis) : py::none(),
+                 py::arg("met") = c.capacity ? py::cast(c.met) : py::none()));
   }
   py::dict result;
   result["capacity_checks"] = capacities;

@@ -332,8 +332,8 @@ void WarnAboutBearingWeights(const structure::Structure& s, const structure::Lay
       "%): their friction and restoring forces are those of {:.5g} {}. Give each bearing its "
       "share of the weight, or axial_load: {{}} to load them with the structure's own "
       "(docs/axial_load.md)",
-      carried, units.force(), total_weight, units.force(),
-      100.0 * (carried / total_weight - 1.0), carried, units.force()));
+      carried, units.force(), total_weight, units.force(), 100.0 * (carried / total_weight - 1.0),
+      carried, units.force()));
 }
 
 }  // namespace

@@ -24,10 +24,7 @@ struct OneDirection {
   std::vector<hysteresis::LawResponse> responses;
 
   explicit OneDirection(const hysteresis::ParallelAssembly& m)
-      : model(m),
-        committed(m.state_size()),
-        trial(m.state_size()),
-        responses(m.size()) {}
+      : model(m), committed(m.state_size()), trial(m.state_size()), responses(m.size()) {}
   std::size_t size() const { return model.size(); }
   Vec2 Update(Vec2 u, Vec2 v, double t) {
     const double f = model.Update(committed, {u.x, v.x, t}, trial, responses).force;
@@ -44,10 +41,7 @@ struct TwoDirections {
   std::vector<hysteresis::PlanLawResponse> responses;
 
   explicit TwoDirections(const hysteresis::PlanAssembly& m)
-      : model(m),
-        committed(m.state_size()),
-        trial(m.state_size()),
-        responses(m.size()) {}
+      : model(m), committed(m.state_size()), trial(m.state_size()), responses(m.size()) {}
   std::size_t size() const { return model.size(); }
   Vec2 Update(Vec2 u, Vec2 v, double t) {
     const Vec2 f = model.Update(committed, {u, v, t}, trial, responses).force;

@@ -21,8 +21,9 @@ void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
       "modification factors (ASCE 7-16 17.2.8.4)");
   command->add_option("model", o.model, "Model file (YAML) with modification factors")->required();
   command
-      ->add_option("-o,--output", o.output,
-                   "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
+      ->add_option(
+          "-o,--output", o.output,
+          "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
       ->required();
   command->add_flag("-q,--quiet", o.quiet, "Print nothing");
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "isolab/core/errors.h"
@@ -159,10 +160,9 @@ DesignFile LoadDesignFile(const std::string& path) {
   const YamlReader reader(path);
   const YAML::Node root = reader.LoadFile();
   reader.RequireMap(root, "");
-  reader.CheckKeys(
-      root, "",
-      {"description", "model", "target", "suite", "eccentricity", "drift_limit",
-       "shear_strain_limit", "output"});
+  reader.CheckKeys(root, "",
+                   {"description", "model", "target", "suite", "eccentricity", "drift_limit",
+                    "shear_strain_limit", "output"});
   DesignFile design;
   design.path = path;
   const fs::path directory = fs::path(path).parent_path();
@@ -184,6 +184,28 @@ DesignFile LoadDesignFile(const std::string& path) {
                             "`modification`: docs/design.md); a design runs the upper and lower "
                             "bounds they give",
                             design.model_path));
+  }
+  if (design.model.axial_load && design.model.axial_load->vertical) {
+    reader.Fail(model_node, "model",
+                fmt::format("'{}' asks for the vertical component's axial loads "
+                            "(axial_load.vertical: true), and a design's suite has none: its "
+                            "records are horizontal (pairs in plan), given or synthetic. Design "
+                            "with vertical: false (the static shares and overturning stay)",
+                            design.model_path));
+  }
+  if (const auto* isolators = PlanIsolators(design.model)) {
+    const bool one_point = std::all_of(isolators->begin(), isolators->end(), [&](const auto& i) {
+      return i.position.x == isolators->front().position.x &&
+             i.position.y == isolators->front().position.y;
+    });
+    if (one_point) {
+      reader.Fail(model_node, "model",
+                  fmt::format("'{}' stands on {} at one point of its plan: nothing in the "
+                              "isolation resists its torsion, which a design's accidental "
+                              "eccentricity drives (give the isolators their own positions)",
+                              design.model_path,
+                              isolators->size() == 1 ? "one isolator" : "isolators all"));
+    }
   }
   const UnitSystem& units = design.model.units;
   const YAML::Node target = reader.Require(root, "", "target");

@@ -30,9 +30,9 @@ std::optional<BearingCapacity> OfLaw(const std::string& name, const hysteresis::
           fmt::format("d1 + d2 + d3 + d4 of {}", name)};
     case LawType::kHdrBearing:
       if (!(shear_strain_limit > 0.0)) return std::nullopt;
-      return BearingCapacity{Value(law, "tr") * shear_strain_limit,
-                             fmt::format("tr x shear_strain_limit {:g} of {}", shear_strain_limit,
-                                         name)};
+      return BearingCapacity{
+          Value(law, "tr") * shear_strain_limit,
+          fmt::format("tr x shear_strain_limit {:g} of {}", shear_strain_limit, name)};
     default:
       return std::nullopt;
   }

@@ -175,13 +175,13 @@ std::vector<std::vector<io::Record>> ReadSuite(const std::vector<model::StudyRec
       io::Record r =
           io::ReadRecord(c.file, {c.units, c.dt * to_seconds, record.entry, record.entry});
       if (r.dt < model.analysis.dt * to_seconds * (1 - 1e-12)) {
-        throw InputError({record.entry},
-                         fmt::format("'{}' is sampled at {:g} s, finer than the model's "
-                                     "analysis.dt {:g} s: a run cannot take a record on a "
-                                     "coarser step than its own (give analysis.dt <= {:g} s in "
-                                     "'{}')",
-                                     c.file, r.dt, model.analysis.dt * to_seconds, r.dt,
-                                     model.path));
+        throw InputError(
+            {record.entry},
+            fmt::format("'{}' is sampled at {:g} s, finer than the model's "
+                        "analysis.dt {:g} s: a run cannot take a record on a "
+                        "coarser step than its own (give analysis.dt <= {:g} s in "
+                        "'{}')",
+                        c.file, r.dt, model.analysis.dt * to_seconds, r.dt, model.path));
       }
       if (std::all_of(r.values.begin(), r.values.end(), [](double a) { return a == 0.0; })) {
         throw InputError({record.entry}, fmt::format("'{}' is all zeros: it has no spectrum to "
@@ -230,10 +230,11 @@ std::string BearingWeightRule(const model::ModelFile& model, const DesignOutcome
       "bearing weights: {} pendulum bearing{} carry {:.5g} {} in all ({:.4g} to {:.4g} {} each) "
       "in the ELF step and the runs alike, {}; the building weighs {:.5g} {}",
       pendulums, pendulums == 1 ? "" : "s", carried, force, low, high, force,
-      model.axial_load ? fmt::format("their static shares of the weight under axial_load (rigid-slab "
-                                     "statics; their laws' w sum to {:.5g} {})",
-                                     law, force)
-                       : "their laws' w (no axial_load)",
+      model.axial_load
+          ? fmt::format("their static shares of the weight under axial_load (rigid-slab "
+                        "statics; their laws' w sum to {:.5g} {})",
+                        law, force)
+          : "their laws' w (no axial_load)",
       out.building_weight, force);
 }
 
@@ -262,9 +263,9 @@ std::vector<DesignWarning> CollectWarnings(const DesignOutcome& out) {
     const std::size_t first = warnings.size();
     for (std::size_t j = b * per_bound; j < (b + 1) * per_bound; ++j) {
       for (const std::string& text : out.runs[j].warnings) {
-        const auto same = std::find_if(warnings.begin() + static_cast<std::ptrdiff_t>(first),
-                                       warnings.end(),
-                                       [&text](const DesignWarning& w) { return w.text == text; });
+        const auto same =
+            std::find_if(warnings.begin() + static_cast<std::ptrdiff_t>(first), warnings.end(),
+                         [&text](const DesignWarning& w) { return w.text == text; });
         if (same != warnings.end()) {
           ++same->runs;
         } else {

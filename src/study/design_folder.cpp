@@ -125,8 +125,8 @@ DesignFolder::DesignFolder(std::string folder, std::string option)
     if (!created_parents_.empty()) {
       fs::create_directories(parent, error);
       if (error) {
-        throw InputError({option_}, fmt::format("cannot make the folder '{}': {}",
-                                                parent.string(), error.message()));
+        throw InputError({option_}, fmt::format("cannot make the folder '{}': {}", parent.string(),
+                                                error.message()));
       }
     }
     const std::string lock = (parent / ("." + name + ".design-lock")).string();
@@ -190,8 +190,8 @@ DesignFolder::DesignFolder(std::string folder, std::string option)
     if (!existed_ || had_earlier_) {
       fs::create_directory(target, error);
       if (error) {
-        throw InputError({option_}, fmt::format("cannot make the folder '{}': {}", folder_,
-                                                error.message()));
+        throw InputError({option_},
+                         fmt::format("cannot make the folder '{}': {}", folder_, error.message()));
       }
     }
     owns_contents_ = true;

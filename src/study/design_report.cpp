@@ -78,8 +78,7 @@ std::string WarningNote(const DesignOutcome& o) {
   return fmt::format(
       "WARNING: the runs gave {} warning{} (listed under \"Warnings\"): read {} before using "
       "the design values below.",
-      o.warnings.size(), o.warnings.size() == 1 ? "" : "s",
-      o.warnings.size() == 1 ? "it" : "them");
+      o.warnings.size(), o.warnings.size() == 1 ? "" : "s", o.warnings.size() == 1 ? "it" : "them");
 }
 
 // "tfp_1, tfp_2, tfp_3, tfp_4" or "isolation".
@@ -95,10 +94,11 @@ std::string CapacityRow(const CapacityCheck& c, const UnitSystem& u) {
         "shear_strain_limit) | not checked |",
         Names(c.isolators), c.demand, u.length());
   }
-  return fmt::format("| D_TM <= displacement capacity of {} (ASCE 7-16 17.2.4) | {:.4g} {} | "
-                     "{:.4g} {} ({}) | {} |",
-                     Names(c.isolators), c.demand, u.length(), c.capacity->displacement,
-                     u.length(), c.capacity->basis, c.met ? "met" : "EXCEEDED");
+  return fmt::format(
+      "| D_TM <= displacement capacity of {} (ASCE 7-16 17.2.4) | {:.4g} {} | "
+      "{:.4g} {} ({}) | {} |",
+      Names(c.isolators), c.demand, u.length(), c.capacity->displacement, u.length(),
+      c.capacity->basis, c.met ? "met" : "EXCEEDED");
 }
 
 std::string StatisticText(const DesignOutcome& o) {
@@ -292,8 +292,9 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
              u.force(), c.design_shear, u.force());
   fmt::print(md, "| story drift ratio <= {:g} % | {} | {:g} % | {} |\n", c.drift_limit,
              Drift(c.drift), c.drift_limit, DriftVerdict(c.drift, c.drift_limit));
-  fmt::print(md, "\n| capacity check | D_TM (design value) | capacity | verdict |\n"
-                 "|---|---|---|---|\n");
+  fmt::print(md,
+             "\n| capacity check | D_TM (design value) | capacity | verdict |\n"
+             "|---|---|---|---|\n");
   for (const CapacityCheck& check : CheckCapacities(o)) {
     fmt::print(md, "{}\n", CapacityRow(check, u));
   }
@@ -330,8 +331,8 @@ std::vector<CapacityCheck> CheckCapacities(const DesignOutcome& o) {
       same->isolators.push_back(c.isolator);
       continue;
     }
-    checks.push_back({{c.isolator}, c.capacity, demand,
-                      c.capacity && demand <= c.capacity->displacement});
+    checks.push_back(
+        {{c.isolator}, c.capacity, demand, c.capacity && demand <= c.capacity->displacement});
   }
   return checks;
 }
@@ -376,7 +377,8 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
              DriftVerdict(c.drift, c.drift_limit));
   for (const CapacityCheck& check : CheckCapacities(o)) {
     if (check.capacity) {
-      fmt::print(out, "D_TM {:.5g} {} against the displacement capacity of {}, {:.5g} {} ({}): {}\n",
+      fmt::print(out,
+                 "D_TM {:.5g} {} against the displacement capacity of {}, {:.5g} {} ({}): {}\n",
                  check.demand, u.length(), Names(check.isolators), check.capacity->displacement,
                  u.length(), check.capacity->basis, check.met ? "met" : "EXCEEDED");
     } else {

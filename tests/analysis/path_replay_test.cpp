@@ -83,12 +83,11 @@ TEST(PathReplay, SeriesLawsAlongCyclicsSinusoidAreCyclicsLoop) {
   const auto triple = hysteresis::ParallelAssembly(
       {{"tfp", hysteresis::LawParameters::Make(
                    LawType::kTripleFrictionPendulum, hysteresis::ParameterForm::kMechanical,
-                   std::vector<double>{1000, 2100, 280, 280, 2100, 0.06, 0.02, 0.02, 0.10, 400,
-                                       50, 50, 400, 0.5})},
-       {"dfp", hysteresis::LawParameters::Make(LawType::kDoubleFrictionPendulum,
-                                               hysteresis::ParameterForm::kMechanical,
-                                               std::vector<double>{500, 1500, 1500, 0.04, 0.07,
-                                                                   150, 150, 0.5})}});
+                   std::vector<double>{1000, 2100, 280, 280, 2100, 0.06, 0.02, 0.02, 0.10, 400, 50,
+                                       50, 400, 0.5})},
+       {"dfp", hysteresis::LawParameters::Make(
+                   LawType::kDoubleFrictionPendulum, hysteresis::ParameterForm::kMechanical,
+                   std::vector<double>{500, 1500, 1500, 0.04, 0.07, 150, 150, 0.5})}});
   ASSERT_GT(triple.state_size(), triple.size());
   // 700 mm: past regime III of the triple pendulum, and the double's restrainers.
   const hysteresis::CyclicResult loop = hysteresis::RunCyclicTest(triple, {700, 2.0, 2, 400});

@@ -163,9 +163,9 @@ TEST(BoundsCommand, WritesThreeModelsThatRunAlone) {
     EXPECT_NE(Read(written).find("lead_rubber"), std::string::npos) << written;
     // From another folder (of the test's own: the run writes its results there): the record's
     // path was made absolute.
-    const testing::Outcome run = testing::RunCommandLine(
-        "cd " + elsewhere.string() + " && " + std::string(ISOLAB_BINARY) + " run " + written +
-        " > /dev/null 2>&1");
+    const testing::Outcome run =
+        testing::RunCommandLine("cd " + elsewhere.string() + " && " + std::string(ISOLAB_BINARY) +
+                                " run " + written + " > /dev/null 2>&1");
     EXPECT_EQ(run.exit_code, 0) << written;
   }
   EXPECT_NE(Read((folder / "out" / "lrb_upper.yaml").string()).find("76.04375"), std::string::npos);
@@ -177,7 +177,6 @@ TEST(BoundsCommand, WritesThreeModelsThatRunAlone) {
   EXPECT_NE(refused.output.find("no property modification factors"), std::string::npos)
       << refused.output;
 }
-
 
 // The bundled plan model shares one pendulum among its four isolators through a YAML anchor
 // (`components: &fp`, then `*fp`). Each isolator's modification scales its own copy once, as if

@@ -244,8 +244,8 @@ TEST(CyclicCommand, MultiplePendulumsFollowPathsAndOrbits) {
   EXPECT_LT(nlohmann::json::parse(replay.output)["runs"][0]["comparison"]["e2"].get<double>(),
             1e-14);
   for (const char* orbit : {"circle", "figure8"}) {
-    const Outcome run = RunIsolab("cyclic " + model.string() + " --orbit " + orbit +
-                                  " -a 300 -n 2 --json");
+    const Outcome run =
+        RunIsolab("cyclic " + model.string() + " --orbit " + orbit + " -a 300 -n 2 --json");
     ASSERT_EQ(run.exit_code, 0) << orbit << ": " << run.output;
     const double dissipated = nlohmann::json::parse(run.output)["runs"][0]["dissipated"];
     EXPECT_TRUE(std::isfinite(dissipated) && dissipated > 0.0) << orbit;
@@ -260,8 +260,8 @@ TEST(CyclicCommand, MultiplePendulumsFollowPathsAndOrbits) {
          "      components: [{name: tfp, type: triple_friction_pendulum, w: 981, uy: 0.5,\n"
          "        r1: 2100, r2: 280, r3: 280, r4: 2100, mu1: 0.06, mu2: 0.02, mu3: 0.02,\n"
          "        mu4: 0.10, d1: 400, d2: 50, d3: 50, d4: 400}]\n";
-  const Outcome corner = RunIsolab("cyclic " + plan.string() +
-                                   " --isolator tfp_1 --orbit circle -a 300 -n 1 --json");
+  const Outcome corner =
+      RunIsolab("cyclic " + plan.string() + " --isolator tfp_1 --orbit circle -a 300 -n 1 --json");
   ASSERT_EQ(corner.exit_code, 0) << corner.output;
   EXPECT_TRUE(nlohmann::json::parse(corner.output)["runs"][0]["plan"].get<bool>());
 }

@@ -161,10 +161,10 @@ TEST(DesignCommand, RefusesAProjectFolderWithTheDesignsFolderNames) {
 TEST(DesignCommand, ARefusedDesignLeavesTheEarlierOneUntouched) {
   const fs::path folder = testing::FreshTestDirectory();
   const fs::path out = folder / "out";
-  ASSERT_EQ(testing::RunIsolab("design " + QuickDesign(folder) + " -q --no-figures -o " +
-                               out.string())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      testing::RunIsolab("design " + QuickDesign(folder) + " -q --no-figures -o " + out.string())
+          .exit_code,
+      0);
   std::map<std::string, std::string> before;
   for (const auto& e : fs::recursive_directory_iterator(out)) {
     if (e.is_regular_file()) before[e.path().lexically_relative(out).string()] = ReadFile(e.path());
@@ -267,7 +267,8 @@ TEST(DesignCommand, InputThePipelineCannotUseIsRefusedFirstWithItsPlace) {
   const fs::path zero = folder / "zero.at2";
   {
     std::ofstream out(zero);
-    out << "PEER\nall zeros\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  3000, DT=   .0100 SEC\n";
+    out << "PEER\nall zeros\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  3000, DT=   .0100 "
+           "SEC\n";
     for (int k = 0; k < 600; ++k) out << "0.0 0.0 0.0 0.0 0.0\n";
   }
   const fs::path long_target = folder / "long_target.csv";
@@ -277,8 +278,24 @@ TEST(DesignCommand, InputThePipelineCannotUseIsRefusedFirstWithItsPlace) {
     for (int k = 1; k <= 10001; ++k) out << 1e-3 * k << ",1\n";
   }
   struct Case {
+    Case(std::string s, std::string m, std::string text = "")
+        : suite_or_target(std::move(s)), message(std::move(m)), model(std::move(text)) {}
     std::string suite_or_target, message;
+    std::string model;  // the model's text, when not the two-story building
   };
+  // A plan building on one isolator, and a model asking for the vertical component's axial loads
+  // (a design's suite is horizontal).
+  const std::string one_isolator =
+      "units: {force: kN, length: mm, time: s}\nplan:\n  footprint: [[0, 0], [20000, 10000]]\n"
+      "  base: {mass: 400 t}\n  isolators:\n    - {name: b, position: [10000, 5000],\n"
+      "       components: [{name: b, type: bhm2, k0: 13.6, k1: 1.36, uy: 28.9}],\n"
+      "       modification: {b: {k1: {min: 0.9, max: 1.1}}}}\nanalysis: {dt: 0.01}\n";
+  const std::string vertical =
+      "units: {force: kN, length: mm, time: s}\nisolation:\n  count: 4\n"
+      "  components: [{name: fp, type: friction_pendulum, w: 1000, r: 2235, mu: 0.06, uy: 0.5}]\n"
+      "  modification: {fp: {mu: {min: 0.8, max: 1.3}}}\n"
+      "structure: {type: shear_building, base_mass: 408 t}\nanalysis: {dt: 0.01}\n"
+      "axial_load: {vertical: true}\n";
   const std::string asce = "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n";
   const std::vector<Case> cases = {
       {asce + "suite: {synthetic: {count: 3, dt: 0.005 s, duration: 20 s}}\n",
@@ -298,10 +315,21 @@ TEST(DesignCommand, InputThePipelineCannotUseIsRefusedFirstWithItsPlace) {
        "design.yaml:3:19: suite.records[0]: '" + zero.string() + "' is all zeros"},
       {"target: {file: " + long_target.string() + "}\nsuite: {synthetic: {count: 3}}\n",
        "long_target.csv:10002: more than 10000 rows"},
+      {asce + "suite: {synthetic: {count: 3}}\n",
+       "design.yaml:1:8: model: '" + (folder / "case.yaml").string() +
+           "' stands on one isolator at one point of its plan",
+       one_isolator},
+      {asce + "suite: {synthetic: {count: 3}}\n",
+       "design.yaml:1:8: model: '" + (folder / "case.yaml").string() +
+           "' asks for the vertical component's axial loads",
+       vertical},
   };
   for (const Case& c : cases) {
     const fs::path design = folder / "design.yaml";
-    std::ofstream(design) << "model: " << building << "\n" << c.suite_or_target;
+    if (!c.model.empty()) std::ofstream(folder / "case.yaml") << c.model;
+    std::ofstream(design) << "model: "
+                          << (c.model.empty() ? building : (folder / "case.yaml").string()) << "\n"
+                          << c.suite_or_target;
     const fs::path out = folder / "out";
     const testing::Outcome refused = testing::RunIsolab(
         "design " + design.string() + " -q --no-figures -o " + out.string(), true);
@@ -349,9 +377,9 @@ TEST(DesignCommand, DisplacementCapacitiesAreCheckedAgainstTheDesignDtm) {
                             "300 mm (d1 + d2 + d3 + d4 of b): EXCEEDED"),
             std::string::npos)
       << tfp.output;
-  EXPECT_NE(ReadFile(folder / "tfp" / "design.md")
-                .find("| 300 mm (d1 + d2 + d3 + d4 of b) | EXCEEDED |"),
-            std::string::npos);
+  EXPECT_NE(
+      ReadFile(folder / "tfp" / "design.md").find("| 300 mm (d1 + d2 + d3 + d4 of b) | EXCEEDED |"),
+      std::string::npos);
 
   const std::string hdr =
       "{name: b, type: hdr_bearing, g: 4.0e-4, area: 231875, tr: 100, damping: 0.089, strain: "

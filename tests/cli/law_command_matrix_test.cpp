@@ -36,9 +36,9 @@ const std::string kMotions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/"
 // bilinear loop of Qd 88 kN, Kd 0.34 kN/mm, Ku 3.4 kN/mm, or a pendulum of that weight.
 struct Law {
   const char* type;
-  std::string components;     // the bearing's components, the modified one named b
-  const char* modified;       // b's key the bounds scale
-  bool coupled_form = true;   // false: a plan isolator must take it uncoupled
+  std::string components;    // the bearing's components, the modified one named b
+  const char* modified;      // b's key the bounds scale
+  bool coupled_form = true;  // false: a plan isolator must take it uncoupled
 };
 void PrintTo(const Law& law, std::ostream* out) { *out << law.type; }
 
@@ -107,8 +107,8 @@ std::string PlanModel(const Law& law, const std::string& coupling) {
          "            stiffness: {x: 800 kN/mm, y: 800 kN/mm, torsion: 3.33e10}}\n"
          "  isolators:\n    - name: b\n"
          "      positions: [[0, 0], [20000, 0], [0, 10000], [20000, 10000]]\n" +
-         coupling + "      components: [" + law.components + "]\n      modification: " +
-         Modification(law) +
+         coupling + "      components: [" + law.components +
+         "]\n      modification: " + Modification(law) +
          "\n"
          "excitation:\n  ground_motion:\n"
          "    h1: {file: " +
@@ -163,8 +163,8 @@ TEST_P(LawCommands, EachCommandCompletesWithItsNumbers) {
   const fs::path folder = OwnTestDirectory() / (std::string(law.type) + (plan ? "_plan" : "_one"));
   fs::remove_all(folder);
   fs::create_directories(folder);
-  const std::string model = Write(
-      folder / "m.yaml", plan ? PlanModel(law, Coupling(law)) : OneDirectionModel(law));
+  const std::string model =
+      Write(folder / "m.yaml", plan ? PlanModel(law, Coupling(law)) : OneDirectionModel(law));
 
   // run: the energy balance closes, the isolators move.
   const Outcome run = Isolab("run " + model + " -q --json -o " + (folder / "r.h5").string());
@@ -178,7 +178,7 @@ TEST_P(LawCommands, EachCommandCompletesWithItsNumbers) {
   // cyclic: one bearing along a sinusoid, or a plan isolator round a circle.
   const Outcome cyclic =
       Isolab("cyclic " + model +
-          (plan ? " --isolator b_1 --orbit circle -a 100 -n 2 --json" : " -a 100 -n 2 --json"));
+             (plan ? " --isolator b_1 --orbit circle -a 100 -n 2 --json" : " -a 100 -n 2 --json"));
   ExpectNoCrash(cyclic, "cyclic");
   ASSERT_EQ(cyclic.exit_code, 0) << cyclic.output;
   const nlohmann::json loops = nlohmann::json::parse(cyclic.output.substr(cyclic.output.find('{')));
@@ -207,15 +207,16 @@ TEST_P(LawCommands, EachCommandCompletesWithItsNumbers) {
                  "h2_fwn_firm_seed3.at2}, h2: {file: " + kMotions + "fwn_soft_seed2.at2}}]"
            : "[" + kMotions + "fwn_firm_seed1.at2, " + kMotions + "fwn_soft_seed2.at2, " +
                  kMotions + "elcentro_1940_ns.at2]";
-  const std::string design =
-      Write(folder / "design.yaml", "model: m.yaml\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n"
-                                    "suite:\n  records: " +
-                                        records + "\neccentricity: 0\n");
+  const std::string design = Write(folder / "design.yaml",
+                                   "model: m.yaml\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n"
+                                   "suite:\n  records: " +
+                                       records + "\neccentricity: 0\n");
   const Outcome designed =
       Isolab("design " + design + " -q --no-figures -o " + (folder / "design").string());
   ExpectNoCrash(designed, "design");
   ASSERT_EQ(designed.exit_code, 0) << designed.output;
-  const std::map<std::string, double> values = DesignValues(folder / "design" / "design_values.csv");
+  const std::map<std::string, double> values =
+      DesignValues(folder / "design" / "design_values.csv");
   for (const char* bound : {"nominal", "upper", "lower"}) {
     const std::string b = bound;
     const double elf = values.at(b + "/D_M/elf"), rha = values.at(b + "/D_M/max");
@@ -386,11 +387,12 @@ TEST(LawCommands, TriplePendulumElfIsItsBackbonesFixedPoint) {
   fs::remove_all(folder);
   fs::create_directories(folder);
   Write(folder / "m.yaml", OneDirectionModel(kLaws[10]));
-  const std::string design = Write(
-      folder / "design.yaml", "model: m.yaml\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n"
-                              "suite:\n  records: [" + kMotions + "fwn_firm_seed1.at2, " +
-                                  kMotions + "fwn_soft_seed2.at2, " + kMotions +
-                                  "elcentro_1940_ns.at2]\n");
+  const std::string design =
+      Write(folder / "design.yaml",
+            "model: m.yaml\ntarget: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n"
+            "suite:\n  records: [" +
+                kMotions + "fwn_firm_seed1.at2, " + kMotions + "fwn_soft_seed2.at2, " + kMotions +
+                "elcentro_1940_ns.at2]\n");
   const Outcome designed =
       Isolab("design " + design + " -q --no-figures -o " + (folder / "design").string());
   ASSERT_EQ(designed.exit_code, 0) << designed.output;
