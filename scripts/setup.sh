@@ -1,8 +1,18 @@
 #!/usr/bin/env bash
 # Installs isolab's Debian packages (only those missing, so a second run is fast) and builds
-# isolab in build/. Non-interactive; safe to run any number of times.
+# isolab in build/: the programs (build/isolab and the executables it hands commands to), which
+# is all a run needs; with --tests, everything else too (the test suite, the benchmarks and the
+# Python module), which `ctest --test-dir build` runs. Non-interactive; safe to run any number of
+# times, in either order.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+targets=(--target isolab)
+case "${1:-}" in
+  "") ;;
+  --tests) targets=() ;;
+  *) echo "usage: scripts/setup.sh [--tests]" >&2; exit 2 ;;
+esac
 
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -28,4 +38,4 @@ if ((${#missing[@]} > 0)); then
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)"
+cmake --build build -j "$(nproc)" "${targets[@]}"

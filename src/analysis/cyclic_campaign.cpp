@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "isolab/core/errors.h"
 #include "isolab/identification/synthetic_tests.h"
@@ -61,6 +62,16 @@ std::vector<hysteresis::CyclicResult> RunCyclicCampaign(const model::ModelFile& 
   for (const CyclicProtocol& protocol : CyclicProtocols(model, request)) {
     if (!request.sequential) std::fill(state.begin(), state.end(), hysteresis::LawState{});
     runs.push_back(hysteresis::RunCyclicTest(model.isolation, protocol, state));
+    const hysteresis::CyclicResult& run = runs.back();
+    const auto finite = [](double v) { return std::isfinite(v); };
+    if (!std::all_of(run.loop.force.begin(), run.loop.force.end(), finite) ||
+        !std::all_of(run.cycles.begin(), run.cycles.end(),
+                     [](const auto& c) { return std::isfinite(c.dissipated); })) {
+      throw InputError({request.where},
+                       fmt::format("amplitude {:g} {}: the loop's forces are not finite (no "
+                                   "bearing reaches such displacements)",
+                                   protocol.amplitude, model.units.length()));
+    }
   }
   return runs;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
@@ -82,6 +83,27 @@ Paths Orbits(const ReplayRequest& request, const model::ModelFile& model, Option
   return orbits;
 }
 
+// A path or an amplitude no bearing reaches (1e300 mm) overflows the laws' forces: refused, never
+// printed as inf and nan.
+const ReplayResult& Finite(const ReplayResult& replay, const std::string& where,
+                           const UnitSystem& units) {
+  const bool finite =
+      std::all_of(replay.force.begin(), replay.force.end(),
+                  [](Vec2 f) { return std::isfinite(f.x) && std::isfinite(f.y); }) &&
+      std::all_of(replay.dissipated.begin(), replay.dissipated.end(),
+                  [](double e) { return std::isfinite(e); }) &&
+      (!replay.comparison ||
+       (std::isfinite(replay.comparison->e2) && std::isfinite(replay.comparison->nrmse)));
+  if (!finite) {
+    throw InputError({where},
+                     fmt::format("the forces along '{}' (peak displacement {:g} {}), or their "
+                                 "error against the measured ones, are not finite: no bearing "
+                                 "reaches such displacements",
+                                 replay.name, replay.peak_displacement, units.length()));
+  }
+  return replay;
+}
+
 }  // namespace
 
 std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRequest& request,
@@ -89,6 +111,10 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
   model::RefuseAxialLoads(model, "a path or an orbit");
   const Paths along = request.paths.empty() ? Orbits(request, model, style)
                                             : ReadPaths(request, model.units, style);
+  // What a run that overflows is blamed on: the orbit's amplitude, or the path's file.
+  const auto where = [&](const io::DisplacementPath& path) {
+    return request.paths.empty() ? OptionName("amplitude", style) : path.name;
+  };
   std::vector<ReplayRun> runs;
   if (const auto* isolators = model::PlanIsolators(model)) {
     if (request.uncoupled) {
@@ -103,7 +129,8 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
         io::DisplacementPath path = along.paths[p];
         path.plan = true;  // a plan isolator moves in plan, whatever the path's columns
         runs.push_back({model.path + ": isolator " + isolator.name, model.units,
-                        Replay(isolator.assembly, path, along.cycle_starts[p])});
+                        Finite(Replay(isolator.assembly, path, along.cycle_starts[p]), where(path),
+                               model.units)});
       }
     }
     if (runs.empty()) {
@@ -125,10 +152,12 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
   for (std::size_t p = 0; p < along.paths.size(); ++p) {
     const io::DisplacementPath& path = along.paths[p];
     try {
-      runs.push_back({model.path, model.units,
-                      path.plan ? Replay(PlanFromIsolation(model.isolation, !request.uncoupled),
-                                         path, along.cycle_starts[p])
-                                : Replay(model.isolation, path, along.cycle_starts[p])});
+      runs.push_back(
+          {model.path, model.units,
+           Finite(path.plan ? Replay(PlanFromIsolation(model.isolation, !request.uncoupled), path,
+                                     along.cycle_starts[p])
+                            : Replay(model.isolation, path, along.cycle_starts[p]),
+                  where(path), model.units)});
     } catch (const std::invalid_argument& error) {
       throw InputError({model.path}, error.what());
     }

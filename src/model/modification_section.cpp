@@ -85,17 +85,19 @@ std::vector<PropertyFactors> ReadModification(const YamlReader& reader, const YA
     for (const auto& property : entry.second) {
       const std::string key = property.first.Scalar();
       const std::string key_path = ChildPath(component_path, key);
-      bool parameter = false;
-      for (const auto form :
-           {hysteresis::ParameterForm::kMathematical, hysteresis::ParameterForm::kMechanical}) {
-        const auto keys = hysteresis::ParameterKeys(type, form);
-        parameter = parameter || std::find(keys.begin(), keys.end(), key) != keys.end();
-      }
-      if (!parameter || !component[key]) {
+      const auto is_parameter = [type](const std::string& k) {
+        for (const auto form :
+             {hysteresis::ParameterForm::kMathematical, hysteresis::ParameterForm::kMechanical}) {
+          const auto keys = hysteresis::ParameterKeys(type, form);
+          if (std::find(keys.begin(), keys.end(), k) != keys.end()) return true;
+        }
+        return false;
+      };
+      if (!is_parameter(key) || !component[key]) {
+        // Only the law's parameters the component states can be scaled: those are listed.
         std::vector<std::string> given;
         for (const auto& k : component) {
-          const std::string g = k.first.Scalar();
-          if (g != "name" && g != "type") given.push_back(g);
+          if (is_parameter(k.first.Scalar())) given.push_back(k.first.Scalar());
         }
         reader.Fail(property.first, key_path,
                     fmt::format("'{}' is not a parameter {} gives (it gives: {})", key, name,

@@ -194,8 +194,13 @@ double YamlReader::ReadQuantity(const YAML::Node& node, const std::string& path,
 
 int YamlReader::ReadInteger(const YAML::Node& node, const std::string& path) const {
   const double value = ReadNumber(node, path);
-  if (!(std::abs(value) < 1e9) || value != std::round(value)) {
+  if (value != std::round(value)) {
     Fail(node, path, fmt::format("'{}' is not a whole number", node.Scalar()));
+  }
+  if (!(std::abs(value) < 1e9)) {
+    Fail(node, path,
+         fmt::format("'{}' is beyond the whole numbers a model takes (less than 10^9 in size)",
+                     node.Scalar()));
   }
   return static_cast<int>(value);
 }

@@ -141,6 +141,15 @@ TEST(PropertyModification, BadFactorsAreLocated) {
                            "bearing's components: lrb)"),
             std::string::npos)
       << component;
+  // A key the component gives that is not one of its law's parameters (a pendulum's period, from
+  // which its radius follows) is neither scalable nor listed as one.
+  const std::string period = ErrorOf(
+      "units: {force: kN, length: mm, time: s}\nisolation:\n  components: [{name: fps, type: "
+      "friction_pendulum, w: 1000, period: 3, mu: 0.05, uy: 0.5}]\n  modification: {fps: "
+      "{period: {min: 0.9, max: 1.1}}}\nstructure: {type: sdof, mass: 100 t}\n");
+  EXPECT_NE(period.find("'period' is not a parameter fps gives (it gives: w, mu, uy)"),
+            std::string::npos)
+      << period;
   const std::string key = ErrorOf(Model(bearing, "{lrb: {mu: {min: 0.9, max: 1.2}}}"));
   EXPECT_NE(key.find("isolation.modification.lrb.mu: 'mu' is not a parameter lrb gives (it "
                      "gives: qd, kd, ku)"),

@@ -266,6 +266,25 @@ TEST(CyclicCommand, MultiplePendulumsFollowPathsAndOrbits) {
   EXPECT_TRUE(nlohmann::json::parse(corner.output)["runs"][0]["plan"].get<bool>());
 }
 
+// Orbits and paths no bearing reaches overflow the laws' forces (or their error against the
+// measured ones): refused with the option or the file to blame, never printed as inf and nan with
+// exit code 0.
+TEST(CyclicCommand, DisplacementsThatOverflowTheForcesAreRefused) {
+  const std::string table7 = Model("table7_thm1_soft.yaml");
+  const Outcome orbit = RunIsolab("cyclic " + table7 + " --orbit circle -a 1e300", true);
+  EXPECT_EQ(orbit.exit_code, 2) << orbit.output;
+  EXPECT_NE(orbit.output.find("--amplitude: the forces along 'circle"), std::string::npos)
+      << orbit.output;
+  EXPECT_NE(orbit.output.find("are not finite"), std::string::npos) << orbit.output;
+  const auto huge = Scratch("huge_path.csv");
+  std::ofstream(huge) << "# units: force kN, length mm\ntime,displacement,force\n0,0,0\n"
+                         "1,1e300,1e300\n2,-1e300,-1e300\n";
+  const Outcome path = RunIsolab("cyclic " + table7 + " --path " + huge.string(), true);
+  EXPECT_EQ(path.exit_code, 2) << path.output;
+  EXPECT_NE(path.output.find("are not finite"), std::string::npos) << path.output;
+  EXPECT_EQ(path.output.find("nan"), std::string::npos) << path.output;
+}
+
 TEST(CyclicCommand, PathsAreCheckedAndErrorsLocated) {
   const auto bare = Scratch("bare_path.csv");
   std::ofstream(bare) << "time,displacement\n0,0\n1,5\n2,0\n";

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/design_values.h"
 #include "own_test_file.h"
 #include "run_isolab.h"
 
@@ -31,25 +32,6 @@ std::string WriteDesign(const fs::path& folder, const std::string& suite,
   return path.string();
 }
 
-// design_values.csv as {bound/quantity/statistic: value}.
-std::map<std::string, double> ReadValues(const fs::path& path) {
-  std::map<std::string, double> values;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::string bound, quantity, unit, statistic, value;
-    std::getline(row, bound, ',');
-    std::getline(row, quantity, ',');
-    std::getline(row, unit, ',');
-    std::getline(row, statistic, ',');
-    std::getline(row, value, ',');
-    values[bound + "/" + quantity + "/" + statistic] = std::stod(value);
-  }
-  return values;
-}
-
 TEST(DesignCommand, DesignsThePlanBuildingOnASyntheticSuite) {
   const fs::path folder = testing::FreshTestDirectory();
   const std::string design = WriteDesign(
@@ -65,7 +47,8 @@ TEST(DesignCommand, DesignsThePlanBuildingOnASyntheticSuite) {
         "models/five_story_lrb_plan_upper.yaml", "records/pair1_h2.at2"}) {
     EXPECT_TRUE(fs::is_regular_file(folder / "out" / name)) << name;
   }
-  const std::map<std::string, double> v = ReadValues(folder / "out" / "design_values.csv");
+  const std::map<std::string, double> v =
+      testing::ReadDesignValues(folder / "out" / "design_values.csv");
   for (const char* bound : {"nominal", "upper", "lower"}) {
     const std::string b(bound);
     // The worst bearing of the worst eccentricity moves more than the centre without it.
@@ -310,6 +293,9 @@ TEST(DesignCommand, InputThePipelineCannotUseIsRefusedFirstWithItsPlace) {
        "record; at most 1e+06"},
       {asce + "suite: {synthetic: {count: 1000000}}\n",
        "design.yaml:3:28: suite.synthetic.count: 1000000 (at most 100 pairs"},
+      {asce + "suite: {synthetic: {count: 2000000000}}\n",
+       "design.yaml:3:28: suite.synthetic.count: '2000000000' is beyond the whole numbers a "
+       "model takes"},
       {asce + "suite: {records: [" + zero.string() + ", " + motions + "fwn_firm_seed1.at2, " +
            motions + "fwn_soft_seed2.at2]}\n",
        "design.yaml:3:19: suite.records[0]: '" + zero.string() + "' is all zeros"},

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/design_values.h"
 #include "cli/run_isolab.h"
 #include "own_test_file.h"
 
@@ -125,25 +126,6 @@ std::string Write(const fs::path& path, const std::string& text) {
   return path.string();
 }
 
-// design_values.csv as {bound/quantity/statistic: value}.
-std::map<std::string, double> DesignValues(const fs::path& path) {
-  std::map<std::string, double> values;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::string bound, quantity, unit, statistic, value;
-    std::getline(row, bound, ',');
-    std::getline(row, quantity, ',');
-    std::getline(row, unit, ',');
-    std::getline(row, statistic, ',');
-    std::getline(row, value, ',');
-    values[bound + "/" + quantity + "/" + statistic] = std::stod(value);
-  }
-  return values;
-}
-
 // No signal, no internal error: a case that ends either way fails here, whatever it was asked.
 void ExpectNoCrash(const Outcome& outcome, const std::string& what) {
   EXPECT_GE(outcome.exit_code, 0) << what << ": ended on a signal\n" << outcome.output;
@@ -216,7 +198,7 @@ TEST_P(LawCommands, EachCommandCompletesWithItsNumbers) {
   ExpectNoCrash(designed, "design");
   ASSERT_EQ(designed.exit_code, 0) << designed.output;
   const std::map<std::string, double> values =
-      DesignValues(folder / "design" / "design_values.csv");
+      ReadDesignValues(folder / "design" / "design_values.csv");
   for (const char* bound : {"nominal", "upper", "lower"}) {
     const std::string b = bound;
     const double elf = values.at(b + "/D_M/elf"), rha = values.at(b + "/D_M/max");
@@ -396,7 +378,8 @@ TEST(LawCommands, TriplePendulumElfIsItsBackbonesFixedPoint) {
   const Outcome designed =
       Isolab("design " + design + " -q --no-figures -o " + (folder / "design").string());
   ASSERT_EQ(designed.exit_code, 0) << designed.output;
-  const double elf = DesignValues(folder / "design" / "design_values.csv").at("nominal/D_M/elf");
+  const double elf =
+      ReadDesignValues(folder / "design" / "design_values.csv").at("nominal/D_M/elf");
   // The law's third cycle at D_M is the steady loop of the closed form; the design's fixed point
   // is found to about 1e-6 of D.
   EXPECT_NEAR(elf, closed_form, 1e-4 * closed_form) << "closed form " << closed_form;
