@@ -11,8 +11,9 @@
 namespace isolab::integrators {
 
 // A passive structure (positive stiffnesses, dampers and sliders that dissipate) cannot hold more
-// kinetic energy than the input energy it has received: kinetic <= input - elastic - damping -
-// hysteretic <= input. A response whose kinetic energy exceeds this many times the largest input
+// kinetic energy than the work it has been supplied (Energies::Supplied: the input's, and the
+// varying axial loads' on pendulum bearings): kinetic <= input + axial - elastic - damping -
+// hysteretic. A response whose kinetic energy exceeds this many times the largest supplied work
 // so far is creating energy (a law with negative stiffnesses, an unstable step): a blow-up. Over
 // the bundled models the ratio peaks at 1.00 (it cannot exceed 1 plus the balance error); a
 // negative-stiffness layer reaches 24 within 4 s. Ten leaves a margin on both sides.
@@ -24,7 +25,8 @@ inline bool EnergiesFinite(const Energies& e) {
 }
 
 // Whether the energies show a blow-up: a non-finite term, or kinetic energy out of reach of the
-// input. `max_input` is the largest |input energy| so far. Inline: it is asked at every step.
+// supplied work. `max_input` is the largest Energies::Supplied() so far. Inline: it is asked at
+// every step.
 inline bool ShowsBlowUp(const Energies& e, double max_input) {
   return !EnergiesFinite(e) || e.kinetic > kBlowUpKineticToInput * max_input;
 }

@@ -284,7 +284,7 @@ RunSummary Run(const structure::Structure& structure, const Excitation& excitati
     }
     const Energies e = run.Record(row * every, observer);
     summary.steps = row * every;
-    max_input = std::max(max_input, std::abs(e.input));
+    max_input = std::max(max_input, e.Supplied());
     max_balance = std::max(max_balance, std::abs(e.Balance()));
     if (ShowsBlowUp(e, max_input)) {
       summary.termination = RunSummary::Termination::kFailed;

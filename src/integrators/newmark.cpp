@@ -402,7 +402,7 @@ RunSummary Run(const Structure& structure, const Excitation& excitation, const T
     }
     run.Record(step, step * grid.dt, observer);
     summary.steps = step;
-    max_input = std::max(max_input, std::abs(run.energies().input));
+    max_input = std::max(max_input, run.energies().Supplied());
     max_balance = std::max(max_balance, std::abs(run.energies().Balance()));
     if (ShowsBlowUp(run.energies(), max_input)) {
       summary.termination = RunSummary::Termination::kFailed;

@@ -72,6 +72,36 @@ YAML::Node WithAliasesExpanded(const YAML::Node& node) {
 
 }  // namespace
 
+std::string WithCentresOfMassShiftedText(const std::string& text, const ModelFile& model,
+                                         hysteresis::Vec2 shift, const std::string& case_name) {
+  YAML::Node root = WithAliasesExpanded(YAML::Load(text));
+  const structure::PlanBuilding& plan = model.structure->plan;
+  const auto at = [](hysteresis::Vec2 p) {
+    YAML::Node point(YAML::NodeType::Sequence);
+    point.SetStyle(YAML::EmitterStyle::Flow);
+    point.push_back(fmt::format("{:.17g}", p.x));
+    point.push_back(fmt::format("{:.17g}", p.y));
+    return point;
+  };
+  root["plan"]["base"]["centre_of_mass"] = at(plan.base.centre_of_mass + shift);
+  if (YAML::Node stories = root["plan"]["stories"]; stories && stories.IsSequence()) {
+    for (std::size_t i = 0; i < stories.size(); ++i) {
+      stories[i]["centre_of_mass"] = at(plan.stories[i].floor.centre_of_mass + shift);
+    }
+  } else if (stories && !plan.stories.empty()) {  // equal stories: one centre for all
+    stories["centre_of_mass"] = at(plan.stories.front().floor.centre_of_mass + shift);
+  }
+  const std::string description =
+      root["description"] ? root["description"].Scalar() + " " : std::string();
+  root["description"] = description + fmt::format(
+                                          "(accidental eccentricity {}: every centre of "
+                                          "mass moved by [{:g}, {:g}])",
+                                          case_name, shift.x, shift.y);
+  YAML::Emitter out;
+  out << root;
+  return std::string(out.c_str()) + "\n";
+}
+
 BoundModels MakeBoundModels(const ModelFile& model) {
   if (model.modifications.empty()) {
     throw InputError({model.path},

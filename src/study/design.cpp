@@ -436,12 +436,24 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   study.units = units;
   study.directions = directions;
   study.rotations = directions == 2;
-  for (const DesignBound& b : out.bounds) {
+  // Each case's model written as it runs, so that `isolab run` on the file reproduces its rows.
+  for (std::size_t i = 0; i < out.bounds.size(); ++i) {
+    DesignBound& b = out.bounds[i];
     for (const analysis::EccentricityCase& c : out.eccentricities) {
       model::StudyVariant variant;
       variant.name = c.name == "none" ? b.bound : b.bound + "_" + c.name;
-      variant.model =
-          c.name == "none" ? b.model : analysis::WithCentresOfMassShifted(b.model, c.shift);
+      if (c.name == "none") {
+        variant.model = b.model;
+        b.case_model_files.push_back(b.model_file);
+      } else {
+        const std::string file =
+            (models / (stem + "_" + b.bound + "_" + c.name + ".yaml")).string();
+        const std::string text =
+            model::WithCentresOfMassShiftedText(bounds.models[i].text, b.model, c.shift, c.name);
+        io::WriteTextFileAtomically(file, [&](std::ostream& f) { f << text; });
+        variant.model = model::LoadModelText(text, file);
+        b.case_model_files.push_back(file);
+      }
       study.variants.push_back(std::move(variant));
     }
   }

@@ -134,12 +134,42 @@ void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::o
   }
 }
 
-void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, std::ostream& file) {
+// The `isolab run` that reproduces a run of the design, from the output folder: its case's model,
+// its record (pair) and the record's factor. Empty where the command line cannot say it (a pair
+// whose components carry different scales).
+std::string RunCommand(const DesignOutcome& o, std::size_t b, std::size_t c, std::size_t r,
+                       const fs::path& directory) {
+  const fs::path folder = fs::absolute(directory).lexically_normal();
+  const auto from_folder = [&](const std::string& path) {
+    return fs::absolute(path).lexically_normal().lexically_relative(folder).string();
+  };
+  const model::StudyRecord& record = o.study.records[r];
+  const std::vector<model::GroundMotionSection>& h = record.components;
+  if (h.size() > 1 && h[1].scale != h[0].scale) return "";
+  std::string command = "isolab run " + from_folder(o.bounds[b].case_model_files[c]) +
+                        " --record " + from_folder(h[0].file);
+  if (h.size() > 1) command += " --record-h2 " + from_folder(h[1].file);
+  if (record.angle != 0.0) command += fmt::format(" --angle {:.17g}", record.angle);
+  if (!h[0].units.empty()) command += " --units " + h[0].units;
+  if (h[0].dt > 0.0) command += fmt::format(" --record-dt {:.17g}", h[0].dt);
+  return command + fmt::format(" --scale {:.17g}", h[0].scale);
+}
+
+// A CSV field, quoted when it holds a comma or a quote.
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
+void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, const fs::path& directory,
+               std::ostream& file) {
   fmt::print(file, "bound,eccentricity,record,factor,completed");
   for (const QuantityInfo& info : Quantities()) {
     fmt::print(file, ",{} [{}]", info.key, QuantityUnit(info.quantity, design.model.units));
   }
-  fmt::print(file, ",file\n");
+  fmt::print(file, ",file,command\n");
   const std::size_t C = o.eccentricities.size(), R = o.records.size();
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (std::size_t c = 0; c < C; ++c) {
@@ -148,7 +178,7 @@ void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, std::ost
         fmt::print(file, "{},{},{},{:.12g},{}", o.bounds[b].bound, o.eccentricities[c].name,
                    o.records[r].name, o.records[r].factor, run.completed ? 1 : 0);
         for (const double v : run.values) fmt::print(file, ",{:.12g}", v);
-        fmt::print(file, ",{}\n", run.file);
+        fmt::print(file, ",{},{}\n", run.file, CsvField(RunCommand(o, b, c, r, directory)));
       }
     }
   }
@@ -343,7 +373,7 @@ void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outc
   io::WriteTextFileAtomically((dir / "design_values.csv").string(),
                               [&](std::ostream& f) { WriteValues(design, outcome, f); });
   io::WriteTextFileAtomically((dir / "design_runs.csv").string(),
-                              [&](std::ostream& f) { WriteRuns(design, outcome, f); });
+                              [&](std::ostream& f) { WriteRuns(design, outcome, dir, f); });
   io::WriteTextFileAtomically((dir / "design_spectra.csv").string(),
                               [&](std::ostream& f) { WriteSpectra(outcome, f); });
   io::WriteTextFileAtomically((dir / "design.md").string(), [&](std::ostream& f) {

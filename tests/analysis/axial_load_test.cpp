@@ -208,6 +208,27 @@ TEST(AxialLoad, AnUncoupledPairCarriesItsShareOnce) {
   }
 }
 
+// Vertical shaking at twice a pendulum's frequency pumps energy into a swinging block through
+// the axial load (parametric resonance: N u^2 / (2 R) raised while displaced): after a short
+// horizontal push the block's kinetic energy grows far beyond the horizontal input, all of it
+// the axial loads' work. The run is not a blow-up: the balance input + axial = kinetic + ...
+// closes, and the blow-up check weighs the kinetic energy against the work supplied, both terms.
+TEST(AxialLoad, EnergyTheVerticalShakingSuppliesIsNotABlowUp) {
+  const double fp = std::sqrt(kG / kR) / (2.0 * kPi);  // the pendulum's frequency, Hz
+  const std::string h1 =
+      WriteRecord("push.txt", 20.0, [](double t) { return t < 1.0 ? 2.0 : 0.0; });
+  const std::string v = WriteRecord(
+      "v_resonant.txt", 20.0, [fp](double t) { return 0.6 * kG * std::sin(2 * kPi * 2 * fp * t); });
+  std::string text = Block(h1, v, "axial_load: {vertical: true}\n");
+  text.replace(text.find("mu: 0.05"), 8, "mu: 0.002");  // little friction to resist the pumping
+  const Solution run = Solved(text);
+  ASSERT_TRUE(run.summary.run.ok()) << run.summary.run.message;
+  const integrators::Energies& e = run.summary.peaks.energies;  // at the last step
+  EXPECT_GT(e.kinetic, 10.0 * std::abs(e.input));  // out of the horizontal input's reach
+  EXPECT_GT(e.axial, e.kinetic);
+  EXPECT_LT(run.summary.run.energy_balance_error, 1e-3);
+}
+
 // Overturning: a two-story building on four bearings at (+-6, +-4) m, its masses at the
 // bearings' centroid at heights 0.5 (base), 3.5 and 6.5 m. By hand statics of the rigid slab,
 // N_j = P / 4 + x_j S_x / (4 a^2) + y_j S_y / (4 b^2), S = -sum_i m_i z_i a_i, from the story

@@ -29,6 +29,13 @@ struct BoundModels {
   std::vector<BoundProperty> properties;
 };
 
+// A bound model's text with every centre of mass (the base's and each story's) at the model's
+// own plus `shift` (length), and its description saying so: an accidental eccentricity case as a
+// model that runs alone. `model` is the text read (its centres of mass as the text gives them or
+// by default).
+std::string WithCentresOfMassShiftedText(const std::string& text, const ModelFile& model,
+                                         hysteresis::Vec2 shift, const std::string& case_name);
+
 // Throws InputError for a model without modification factors and for a bound model that breaks
 // a law's rules (e.g. ku > kd of a lead-rubber bearing whose kd is raised), naming the bound.
 BoundModels MakeBoundModels(const ModelFile& model);

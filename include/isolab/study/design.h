@@ -47,6 +47,9 @@ inline constexpr double kElfShearFloor = 0.9;         // of V_b (ELF)
 struct DesignBound {
   std::string bound;       // "nominal", "upper", "lower"
   std::string model_file;  // the bound's model, written in the output folder
+  // Per eccentricity case (DesignOutcome::eccentricities), the model its runs ran, written in the
+  // output folder: model_file for "none", the bound with its centres of mass shifted otherwise.
+  std::vector<std::string> case_model_files;
   model::ModelFile model;
   analysis::ElfResult elf;
   double damping_coefficient = 0.0;  // B_M of the ELF result (1 / eta for Eurocode 8)

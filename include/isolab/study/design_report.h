@@ -4,7 +4,9 @@
 //   design.md            the report: target, ELF per bound, the scaled suite, the design values,
 //                        the code's checks, and the figures plot_design.py draws
 //   design_values.csv    bound,quantity,unit,statistic,value: the ELF and response-history values
-//   design_runs.csv      every run: bound, eccentricity case, record, factor, its quantities
+//   design_runs.csv      every run: bound, eccentricity case, record, factor, its quantities,
+//                        its summary file and the `isolab run` command (from the output folder)
+//                        that reproduces it on the case's model written in models/
 //   design_spectra.csv   period_s, in_range (1 inside the scaling range), target_g, each record's
 //                        scaled spectrum, the suite's mean, from 0.05 s to twice the range's top
 // Lengths and forces are in the model's units.
