@@ -29,14 +29,19 @@ namespace fs = std::filesystem;
 std::map<std::string, std::uintmax_t> FilesIn(const fs::path& folder, const std::string& option,
                                               const std::string& shown) {
   std::map<std::string, std::uintmax_t> files;
-  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder)) {
-    const std::string relative = entry.path().lexically_relative(folder).generic_string();
-    if (entry.is_symlink() || (!entry.is_regular_file() && !entry.is_directory())) {
-      throw InputError({option}, fmt::format("'{}' holds '{}', which a design does not write "
-                                             "(not a plain file): give a new or empty folder",
-                                             shown, relative));
+  try {
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder)) {
+      const std::string relative = entry.path().lexically_relative(folder).generic_string();
+      if (entry.is_symlink() || (!entry.is_regular_file() && !entry.is_directory())) {
+        throw InputError({option}, fmt::format("'{}' holds '{}', which a design does not write "
+                                               "(not a plain file): give a new or empty folder",
+                                               shown, relative));
+      }
+      if (entry.is_regular_file()) files[relative] = entry.file_size();
     }
-    if (entry.is_regular_file()) files[relative] = entry.file_size();
+  } catch (const fs::filesystem_error& error) {  // a folder it may not read
+    throw InputError({option},
+                     fmt::format("cannot read the folder '{}': {}", shown, error.code().message()));
   }
   return files;
 }
@@ -209,10 +214,14 @@ void DesignFolder::RollBack() noexcept {
   std::error_code ignored;
   const fs::path target(target_);
   if (owns_contents_ && existed_ && !had_earlier_) {
-    // The user's empty folder: emptied again, kept.
-    for (const fs::directory_entry& entry : fs::directory_iterator(target, ignored)) {
-      fs::remove_all(entry.path(), ignored);
+    // The user's empty folder: emptied again, kept (what is in it listed first: a folder is not
+    // changed while it is read).
+    std::vector<fs::path> written;
+    for (fs::directory_iterator it(target, ignored), end; !ignored && it != end;
+         it.increment(ignored)) {
+      written.push_back(it->path());
     }
+    for (const fs::path& path : written) fs::remove_all(path, ignored);
   } else if (owns_contents_) {
     fs::remove_all(target, ignored);
   }
