@@ -51,11 +51,26 @@ TEST(EquivalentLateralForce, EffectivePropertiesAreTheBilinearLoopsClosedForm) {
   }
 }
 
+// ASCE 7-16 Table 17.5-1, written here rather than taken from the code under test: B_M against
+// the effective damping ratio, linear between its rows, constant beyond its ends.
+double TableB(double beta) {
+  const double rows[][2] = {{0.02, 0.8}, {0.05, 1.0}, {0.10, 1.2}, {0.20, 1.5},
+                            {0.30, 1.7}, {0.40, 1.9}, {0.50, 2.0}};
+  if (beta <= rows[0][0]) return rows[0][1];
+  for (int i = 1; i < 7; ++i) {
+    if (beta <= rows[i][0]) {
+      const double f = (beta - rows[i - 1][0]) / (rows[i][0] - rows[i - 1][0]);
+      return rows[i - 1][1] + f * (rows[i][1] - rows[i - 1][1]);
+    }
+  }
+  return rows[6][1];
+}
+
 TEST(EquivalentLateralForce, DesignDisplacementIsTheFixedPointOfEq17_5_1) {
   const IsolationSystem system(model::LoadModelText(kModel, "lrb.yaml"));
   const double g = 9806.65, sm1 = 0.9;  // mm/s^2, g
   const DisplacementDemand demand = [&](double period, double beta) {
-    return g * sm1 * period / (4 * kPi * kPi * DampingCoefficient(beta));
+    return g * sm1 * period / (4 * kPi * kPi * TableB(beta));
   };
   const ElfResult elf = SolveElf(system, demand, 1000.0);
 
@@ -80,6 +95,29 @@ TEST(EquivalentLateralForce, DesignDisplacementIsTheFixedPointOfEq17_5_1) {
   EXPECT_NEAR(elf.base_shear, k * low, 1e-6 * k * low);
   // The demand balances: D = g S_M1 T / (4 pi^2 B) at the result's own T and beta.
   EXPECT_NEAR(demand(elf.period, elf.at_design.damping), elf.displacement, 1e-9 * elf.displacement);
+}
+
+// A pendulum's loop at D (sliding throughout) has F(+-D) = +-(W D / R + mu W), so k_eff =
+// W / R + mu W / D. Four pendulums given w = 500 kN under a 400 t slab carry 2000 kN at their own
+// w, and the slab's 3922.66 kN under axial_load, as the runs load them: the ELF step uses the
+// same weight.
+TEST(EquivalentLateralForce, PendulumsCarryTheWeightTheRunsGiveThem) {
+  const std::string text = R"(units: {force: kN, length: mm, time: s}
+structure: {type: shear_building, base_mass: 400 t}
+isolation:
+  count: 4
+  components: [{name: fp, type: friction_pendulum, w: 500, r: 2000, mu: 0.05, uy: 0.01}]
+)";
+  const double r = 2000, mu = 0.05, d = 300;
+  const auto k_eff = [&](double w) { return w / r + mu * w / d; };
+  const IsolationSystem own(model::LoadModelText(text, "fp.yaml"));
+  EXPECT_NEAR(own.At(d, 3.0).stiffness, k_eff(2000.0), 1e-9 * k_eff(2000.0));
+  const IsolationSystem loaded(model::LoadModelText(text + "axial_load: {}\n", "fp.yaml"));
+  const double weight = 400 * 9.80665;
+  EXPECT_NEAR(loaded.At(d, 3.0).stiffness, k_eff(weight), 1e-9 * k_eff(weight));
+  ASSERT_EQ(loaded.bearing_weights().size(), 4u);
+  EXPECT_EQ(loaded.bearing_weights()[0].law, 500.0);
+  EXPECT_NEAR(loaded.bearing_weights()[0].carried, weight / 4, 1e-9 * weight);
 }
 
 // Eq. 17.5-3 by hand for models/design/five_story_lrb_plan.yaml: 16 equal bearings on a 4 x 4
