@@ -12,7 +12,7 @@ using hysteresis::LawType;
 using hysteresis::ParameterForm;
 
 // The multiple pendulums and the HDR bearing take the same keys in both forms.
-double Value(const hysteresis::LawParameters& law, std::string_view key) {
+double KeyValue(const hysteresis::LawParameters& law, std::string_view key) {
   const auto keys = hysteresis::ParameterKeys(law.type(), ParameterForm::kMechanical);
   const auto at = std::find(keys.begin(), keys.end(), key);
   return law.Values(ParameterForm::kMechanical)[static_cast<std::size_t>(at - keys.begin())];
@@ -22,16 +22,16 @@ std::optional<BearingCapacity> OfLaw(const std::string& name, const hysteresis::
                                      double shear_strain_limit) {
   switch (law.type()) {
     case LawType::kDoubleFrictionPendulum:
-      return BearingCapacity{Value(law, "d1") + Value(law, "d2"),
+      return BearingCapacity{KeyValue(law, "d1") + KeyValue(law, "d2"),
                              fmt::format("d1 + d2 of {}", name)};
     case LawType::kTripleFrictionPendulum:
       return BearingCapacity{
-          Value(law, "d1") + Value(law, "d2") + Value(law, "d3") + Value(law, "d4"),
+          KeyValue(law, "d1") + KeyValue(law, "d2") + KeyValue(law, "d3") + KeyValue(law, "d4"),
           fmt::format("d1 + d2 + d3 + d4 of {}", name)};
     case LawType::kHdrBearing:
       if (!(shear_strain_limit > 0.0)) return std::nullopt;
       return BearingCapacity{
-          Value(law, "tr") * shear_strain_limit,
+          KeyValue(law, "tr") * shear_strain_limit,
           fmt::format("tr x shear_strain_limit {:g} of {}", shear_strain_limit, name)};
     default:
       return std::nullopt;
