@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The synthetic friction damper's characterisation campaign as cyclic test data (kip, in): ten
 sinusoidal tests, 0.25 to 2 Hz and 0.5 to 1.5 in, seven cycles each from rest, sampled at 1024 Hz
 (150,538 samples), through models/diagnosis/friction_damper.yaml (a friction damper with
