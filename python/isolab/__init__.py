@@ -214,8 +214,8 @@ def _refuse(given, why):
 
 
 def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, budget=60000,
-        cycles=None, specimen=None, force_unit=None, length_unit=None, threads=0, force=False,
-        quiet=False):
+        global_budget=None, cycles=None, specimen=None, force_unit=None, length_unit=None,
+        threads=0, force=False, quiet=False):
     """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES), or
     with building, a whole building model from its shake-table motions by output error.
 
@@ -236,14 +236,17 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
     `isolab fit --building`: data are shake-table CSV files, one per motion, or with `input:
     force` in the spec force-driven tests in the cyclic-test format (then force_unit and
     length_unit as above). offsets ("pre-event", the default, or "none": the accelerometers'
-    offsets), specimen, seed, budget, threads and quiet are the command line's options; output is
+    offsets), specimen, seed, budget, global_budget (the CMA-ES stage's simulations before the
+    least-squares refinement; 0: refine from the start alone), threads and quiet are the command
+    line's options; output is
     its -o, the fitted model file (YAML; default <spec stem>.fitted.yaml in the working
     directory), written as the command line writes it. Returns the dict `isolab fit --building
     --json` prints: "parameters" (name, start, value, sigma, log, interval_95, at_bound),
     "channels" (motion, channel, nrmse_start, nrmse), "not_separated", "identified_range",
     "objective_start", "objective", "samples", "effective_samples", "correlation_time",
-    "evaluations", "stop", "stop_reason", "seconds", "sequential" and "output". cycles and force
-    are refused with building, offsets and output without it.
+    "evaluations", "global_evaluations", "iterations", "stop" ("converged", "stalled" or
+    "budget"), "decrement", "step", "stop_reason", "seconds", "sequential" and "output". cycles
+    and force are refused with building, offsets, output and global_budget without it.
     """
     _one_of(model, "model", building, "shake-table motions")
     data = _paths("data", data)
@@ -252,9 +255,11 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
                 "applies to cyclic tests, not to building=")
         return json.loads(_fit_building(data, _path("building", building),
                                         _optional_path("output", output), seed, budget,
+                                        -1 if global_budget is None else global_budget,
                                         specimen or "", offsets or "", force_unit or "",
                                         length_unit or "", threads, quiet))
-    _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
+    _refuse([("offsets", offsets is not None), ("global_budget", global_budget is not None)],
+            "applies to building=, not to cyclic tests")
     _refuse([("output", output is not None)],
             "applies to building=: the cyclic fit writes no file (its components are in the "
             "result)")

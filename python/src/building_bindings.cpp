@@ -45,7 +45,7 @@ analysis::BuildingData Data(const std::vector<std::string>& data, const std::str
 }
 
 std::string FitBuilding(const std::vector<std::string>& data, const std::string& spec_path,
-                        const std::string& output, unsigned seed, long budget,
+                        const std::string& output, unsigned seed, long budget, long global_budget,
                         const std::string& specimen, const std::string& offsets,
                         const std::string& force_unit, const std::string& length_unit, int threads,
                         bool quiet) {
@@ -59,14 +59,13 @@ std::string FitBuilding(const std::vector<std::string>& data, const std::string&
   const std::vector<analysis::BuildingMotion> motions =
       analysis::ReadBuildingMotions(&inputs, read);
   const analysis::BuildingFitSpec& spec = inputs.spec;
-  identification::FitOptions fit = SearchOptions("fit", seed, budget, threads);
+  identification::FitOptions fit = SearchOptions("fit", seed, budget, threads, global_budget);
   if (!quiet) {
     fmt::print(stderr, "  {} parameters, {} motions ({}), budget {} simulations\n",
                spec.parameters.size(), motions.size(),
                spec.sequential ? "one specimen, in order" : "each from rest", budget);
     fit.progress = [](const identification::FitProgress& p) {
-      fmt::print(stderr, "  {} generation {:5d}, {:8d} simulations, best mean NRMSE^2 = {:.6g}\n",
-                 p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations, p.best);
+      fmt::print(stderr, "{}", analysis::BuildingFitProgressLine(p));
     };
   }
   analysis::BuildingFitResult result;
@@ -123,8 +122,9 @@ std::string DiagnoseBuilding(const std::vector<std::string>& data, const std::st
 
 void BindBuilding(py::module_& module) {
   module.def("_fit_building", &FitBuilding, py::arg("data"), py::arg("building"), py::arg("output"),
-             py::arg("seed"), py::arg("budget"), py::arg("specimen"), py::arg("offsets"),
-             py::arg("force_unit"), py::arg("length_unit"), py::arg("threads"), py::arg("quiet"));
+             py::arg("seed"), py::arg("budget"), py::arg("global_budget"), py::arg("specimen"),
+             py::arg("offsets"), py::arg("force_unit"), py::arg("length_unit"), py::arg("threads"),
+             py::arg("quiet"));
   module.def("_diagnose_building", &DiagnoseBuilding, py::arg("data"), py::arg("building"),
              py::arg("seed"), py::arg("budget"), py::arg("specimen"), py::arg("offsets"),
              py::arg("threads"), py::arg("quiet"));

@@ -9,11 +9,12 @@ namespace isolab::python {
 
 // Throws InputError naming `function` ("fit", "diagnose") for a setting out of range.
 inline identification::FitOptions SearchOptions(const char* function, unsigned seed, long budget,
-                                                int threads) {
+                                                int threads, long global_budget = -1) {
   identification::FitOptions fit;
   fit.seed = seed;
   fit.budget = budget;
   fit.threads = threads;
+  fit.global_budget = global_budget;
   try {
     fit.Validate();
   } catch (const InvalidParameter& error) {

@@ -40,9 +40,9 @@ def test_building_fit_equals_the_command_line(tmp_path, isolab_cli, shake_table)
     """isolab.fit(building=) returns what `isolab fit --building --json` prints (one library
     function builds both) and writes the fitted model where it is told, as the command line does."""
     data, spec = shake_table
-    cli = isolab_cli.json("fit", data, "--building", spec, "--budget", 300, "--threads", 1,
+    cli = isolab_cli.json("fit", data, "--building", spec, "--budget", 600, "--threads", 1,
                           "--offsets", "none", "-q", "-o", tmp_path / "cli.fitted.yaml")
-    mine = isolab.fit(data, building=spec, budget=300, threads=1, offsets="none", quiet=True,
+    mine = isolab.fit(data, building=spec, budget=600, threads=1, offsets="none", quiet=True,
                       output=tmp_path / "mine.fitted.yaml")
     assert mine["output"] == str(tmp_path / "mine.fitted.yaml")
     assert (tmp_path / "mine.fitted.yaml").exists()
@@ -69,6 +69,8 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
         (dict(building=spec, offsets="sometimes"), "offsets= sometimes: expected pre-event or none"),
         (dict(building=spec, specimen="one"), "specimen one"),
         (dict(model=repo / SPEC, offsets="none"), "offsets= applies to building=, not to cyclic"),
+        (dict(model=repo / SPEC, global_budget=500), "global_budget= applies to building="),
+        (dict(building=spec, global_budget=50), "global_budget"),
         (dict(model=repo / SPEC, output=output), "output= applies to building="),
     ]
     for kwargs, message in cases:

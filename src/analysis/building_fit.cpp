@@ -13,6 +13,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/spectral.h"
 #include "isolab/identification/fit.h"
+#include "isolab/identification/least_squares.h"
 #include "isolab/identification/parametrisation.h"
 
 namespace isolab::analysis {
@@ -82,6 +83,60 @@ struct Coordinates {
     return values;
   }
 };
+
+std::size_t Length(const std::vector<Signal>& signals) {
+  std::size_t n = 0;
+  for (const Signal& x : signals) n += x.size();
+  return n;
+}
+
+// The global stage: CMA-ES for options.global_budget simulations, leaving the rest to the
+// least-squares refinement; none at 0. The default is half the budget, or one chunk of
+// generations where half is less and the budget leaves ten refinement iterations beside it: a
+// start can lie in the wrong basin of a story stiffness (a mode tuned to another part of the
+// record), and least squares alone stays there.
+identification::SearchOutcome GlobalStage(const identification::Objective& objective,
+                                          const std::vector<double>& start,
+                                          const identification::FitOptions& options,
+                                          double value_at_start) {
+  const long dimension = long(start.size());
+  const long chunk = identification::FirstChunkEvaluations(int(dimension), options.islands);
+  const long budget = options.global_budget >= 0
+                          ? options.global_budget
+                          : std::max(options.budget / 2,
+                                     std::min(chunk, options.budget - 10 * (2 * dimension + 1)));
+  // The refinement needs a Jacobian and a step at least.
+  const long refinement = 2 * dimension + 2;
+  if (budget > options.budget - refinement) {
+    throw InvalidParameter({"global_budget", double(budget),
+                            fmt::format("must leave the refinement at least {} of the budget of {} "
+                                        "simulations",
+                                        refinement, options.budget)});
+  }
+  if (budget < chunk) {
+    identification::SearchOutcome none;
+    none.point = start;
+    none.value = value_at_start;
+    none.stop_reason = budget == 0
+                           ? "no global search (a global budget of 0)"
+                           : fmt::format(
+                                 "no global search (its budget of {} is less than one chunk of "
+                                 "CMA-ES generations, {} simulations)",
+                                 budget, chunk);
+    return none;
+  }
+  identification::FitOptions global = options;
+  global.budget = budget;
+  global.polish_share = 0.0;
+  identification::SearchOutcome outcome =
+      identification::SearchUnitCube(objective, int(dimension), start, global, "mean NRMSE^2");
+  if (outcome.stop == identification::FitStop::kBudget) {
+    outcome.stop_reason = fmt::format(
+        "global search: {} simulations of CMA-ES ({} generations), best mean NRMSE^2 {:.6g}",
+        outcome.evaluations, outcome.generations, outcome.value);
+  }
+  return outcome;
+}
 
 }  // namespace
 
@@ -204,9 +259,60 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   BuildingFitResult result;
   const std::vector<Signal> r_start = residuals(base);
   result.objective_start = objective_of(r_start);
-  result.search =
-      identification::SearchUnitCube(objective, int(start.size()), start, options, "mean NRMSE^2");
-  const std::vector<double>& best = result.search.point;
+  result.search = GlobalStage(objective, start, options, result.objective_start);
+  // The residual the refinement squares and sums: objective_of's terms, so |r|^2 is count times
+  // the objective.
+  const identification::Residual stacked = [&](std::span<const double> x) {
+    const std::vector<Signal> r = residuals(model_at(x));
+    Eigen::VectorXd out(long(Length(r)));
+    long row = 0;
+    for (const Signal& channel : r) {
+      for (const double v : channel) out[row++] = v;
+    }
+    return out;
+  };
+  identification::RefinementOptions local;
+  local.threads = options.threads;
+  long spent = result.search.evaluations;
+  if (options.progress) {
+    local.progress = [&](const identification::RefinementProgress& p) {
+      identification::FitProgress line{spent + p.evaluations, p.iteration, p.value / count, true};
+      line.decrement = p.decrement;
+      line.step = p.step;
+      options.progress(line);
+    };
+  }
+  // Refined from the global search's best (never worse than the start, which its first
+  // population holds), then from the specification's start where the search moved away from it:
+  // a short global search can end in a poorer basin than a good start lies in (the BNCS building
+  // from its diagnosed isolation), so the start is never lost.
+  std::vector<std::pair<std::string, identification::RefinementOutcome>> refined;
+  for (const auto& [from, point] :
+       {std::pair{std::string(result.search.evaluations > 0 ? "the global search's best"
+                                                            : "the specification's start"),
+                  result.search.point},
+        std::pair{std::string("the specification's start"), start}}) {
+    if (!refined.empty() && point == result.search.point) break;
+    local.budget = options.budget - spent;
+    if (!refined.empty() && local.budget < 2L * long(start.size()) + 2) break;
+    refined.emplace_back(from, identification::RefineLeastSquares(stacked, point, local));
+    spent += refined.back().second.evaluations;
+  }
+  const auto kept = std::min_element(
+      refined.begin(), refined.end(),
+      [](const auto& a, const auto& b) { return a.second.value < b.second.value; });
+  result.refinement = kept->second;
+  result.evaluations = spent;
+  result.stop_reason = fmt::format(
+      "{}; least squares from {}: {}", result.search.stop_reason, kept->first,
+      identification::RefinementSummary(result.refinement, local, "mean NRMSE^2", 1.0 / count));
+  for (const auto& [from, outcome] : refined) {
+    if (&outcome == &kept->second) continue;
+    result.stop_reason += fmt::format(" (from {}: {}, mean NRMSE^2 {:.6g} after {} simulations)",
+                                      from, identification::RefinementStopName(outcome.stop),
+                                      outcome.value / count, outcome.evaluations);
+  }
+  const std::vector<double>& best = result.refinement.point;
   result.fitted = model_at(best);
   const std::vector<Signal> r = residuals(result.fitted);
   result.objective = objective_of(r);
@@ -232,27 +338,18 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   }
   result.correlation_time /= result.samples;
 
-  // The Jacobian of the stacked residual in the coordinates (ln p or p), by central differences
-  // of h in the unit cube, one-sided at the cube's faces.
+  // The Jacobian of the stacked residual in the coordinates (ln p or p): the refinement's last,
+  // where it was taken at the fitted point, else by the same central differences there.
   const int parameters = int(best.size());
-  const long rows = long(result.samples);
-  Eigen::MatrixXd jacobian(rows, parameters);
-  const double h = 1e-3;
+  Eigen::MatrixXd jacobian = std::move(result.refinement.jacobian);
+  if (!result.refinement.jacobian_current) {
+    jacobian = identification::DifferenceJacobian(stacked, best, stacked(best),
+                                                  local.difference_step, local.threads)
+                   .jacobian;
+  }
   for (int p = 0; p < parameters; ++p) {
-    std::vector<double> up = best, down = best;
-    up[std::size_t(p)] = std::min(1.0, best[std::size_t(p)] + h);
-    down[std::size_t(p)] = std::max(0.0, best[std::size_t(p)] - h);
-    const std::vector<Signal> r_up = residuals(model_at(up));
-    const std::vector<Signal> r_down = residuals(model_at(down));
     const identification::CoordinateRange& range = coordinates.ranges[std::size_t(p)];
-    const double span = range.log ? std::log(range.high / range.low) : range.high - range.low;
-    const double step = (up[std::size_t(p)] - down[std::size_t(p)]) * span;
-    long row = 0;
-    for (std::size_t c = 0; c < r.size(); ++c) {
-      for (std::size_t k = 0; k < r[c].size(); ++k) {
-        jacobian(row++, p) = (r_up[c][k] - r_down[c][k]) / step;
-      }
-    }
+    jacobian.col(p) /= range.log ? std::log(range.high / range.low) : range.high - range.low;
   }
   const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
   const double ssr = result.objective * count;

@@ -1,5 +1,7 @@
 #include "isolab/analysis/building_fit_report.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -9,6 +11,19 @@ std::pair<double, double> Interval95(const FittedParameter& p) {
   const double half = 1.96 * p.sigma;
   return p.log ? std::pair{p.value * std::exp(-half), p.value * std::exp(half)}
                : std::pair{p.value - half, p.value + half};
+}
+
+std::string BuildingFitProgressLine(const identification::FitProgress& p) {
+  if (!p.polishing) {
+    return fmt::format("  CMA-ES generation {:5d}, {:8d} simulations, best mean NRMSE^2 = {:.6g}\n",
+                       p.generation, p.evaluations, p.best);
+  }
+  const identification::RefinementOptions tolerances;
+  return fmt::format(
+      "  least squares {:3d}, {:8d} simulations, mean NRMSE^2 = {:.6g}, decrement {:.2g} "
+      "(to {:g}), step {:.2g} (to {:g})\n",
+      p.generation, p.evaluations, p.best, p.decrement, tolerances.decrement_tolerance, p.step,
+      tolerances.step_tolerance);
 }
 
 std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
@@ -45,9 +60,13 @@ std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
   json["samples"] = result.samples;
   json["effective_samples"] = result.effective_samples;
   json["correlation_time"] = result.correlation_time;
-  json["evaluations"] = result.search.evaluations;
-  json["stop"] = result.search.stop == identification::FitStop::kConverged ? "converged" : "budget";
-  json["stop_reason"] = result.search.stop_reason;
+  json["evaluations"] = result.evaluations;
+  json["global_evaluations"] = result.search.evaluations;
+  json["iterations"] = result.refinement.iterations;
+  json["stop"] = identification::RefinementStopName(result.refinement.stop);
+  json["decrement"] = result.refinement.decrement;
+  json["step"] = result.refinement.step;
+  json["stop_reason"] = result.stop_reason;
   json["seconds"] = result.seconds;
   json["sequential"] = sequential;
   json["output"] = output;

@@ -49,16 +49,24 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   fit.seed = options.seed;
   fit.budget = options.budget;
   fit.threads = options.threads;
+  fit.global_budget = options.global_budget;
   if (!options.quiet) {
     fmt::print(stderr, "  {} parameters, {} motions ({}), budget {} simulations\n",
                spec.parameters.size(), motions.size(),
                spec.sequential ? "one specimen, in order" : "each from rest", options.budget);
     fit.progress = [](const identification::FitProgress& p) {
-      fmt::print(stderr, "  {} generation {:5d}, {:8d} simulations, best mean NRMSE^2 = {:.6g}\n",
-                 p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations, p.best);
+      fmt::print(stderr, "{}", analysis::BuildingFitProgressLine(p));
     };
   }
-  const analysis::BuildingFitResult result = analysis::FitBuilding(model, motions, spec, fit);
+  analysis::BuildingFitResult result;
+  try {
+    result = analysis::FitBuilding(model, motions, spec, fit);
+  } catch (const InvalidParameter& error) {
+    // Only the search's settings are checked so, and each is an option of this command.
+    std::string text = error.violation().Describe();
+    if (text.rfind("global_budget", 0) == 0) text.replace(0, 13, "--global-budget");
+    throw InputError({"command line"}, text);
+  }
   const std::string text = model::FittedBuildingText(
       result.fitted, fmt::format("identified by isolab fit --building {} from {}", options.building,
                                  fmt::join(options.data, ", ")));
@@ -69,8 +77,8 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     return;
   }
   fmt::print(out, "mean NRMSE^2 over {} channels: {:.4g} -> {:.4g}\n{} ({:.1f} s)\n\n",
-             result.channels.size(), result.objective_start, result.objective,
-             result.search.stop_reason, result.seconds);
+             result.channels.size(), result.objective_start, result.objective, result.stop_reason,
+             result.seconds);
   fmt::print(out, "| parameter | start | fitted | 95 % interval |\n|---|---|---|---|\n");
   for (const analysis::FittedParameter& p : result.parameters) {
     const auto [low, high] = analysis::Interval95(p);

@@ -127,6 +127,12 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
   command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the fit exactly");
   command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
       ->check(Between(100, 1e9));
+  command
+      ->add_option("--global-budget", options.global_budget,
+                   "With --building: simulations of the global search (CMA-ES) before the "
+                   "least-squares refinement; 0 refines from the specification's start (default: "
+                   "100 per parameter, at most half the budget)")
+      ->check(Between(0, 1e9));
   command->add_option("--cycles", options.cycles,
                       "Whole cycles to fit, 1-based, e.g. --cycles 3 as the paper fits HDRB tests "
                       "(default: every test's whole history)");
@@ -155,6 +161,10 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   }
   if (!options.offsets.empty()) {
     throw InputError({"command line"}, "--offsets applies to --building, not to cyclic tests");
+  }
+  if (options.global_budget >= 0) {
+    throw InputError({"command line"},
+                     "--global-budget applies to --building, not to cyclic tests");
   }
   const model::FitSpec spec = model::LoadFitSpec(options.spec);
   const std::string output =

@@ -22,6 +22,7 @@ struct FitOptions {
   std::string offsets;            // --building: accelerometer offsets; empty: pre-event
   unsigned seed = 1;
   long budget = 60000;
+  long global_budget = -1;  // --building: the CMA-ES stage's simulations; -1: the default
   std::vector<int> cycles;  // 1-based; empty: SelectCycles' default
   std::string specimen;     // "sequential", "independent"; empty: the data's header
   std::string output;       // fitted model file; default: <spec stem>.fitted.yaml

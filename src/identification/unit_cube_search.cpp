@@ -40,6 +40,10 @@ struct SearchProblem {
 constexpr int kGenerationsPerChunk = 20;
 constexpr double kSettledValue = 1e-12;
 
+// CMA-ES's default population 4 + 3 ln D, doubled for the multimodal landscapes of parallel
+// hysteretic components.
+int PopulationSize(int dimension) { return 2 * (4 + static_cast<int>(3.0 * std::log(dimension))); }
+
 unsigned IslandSeed(unsigned seed, int island, int restart) {
   return seed * 2654435761u + 7919u * static_cast<unsigned>(island) +
          104729u * static_cast<unsigned>(restart);
@@ -83,6 +87,10 @@ void FitOptions::Validate() const {
   if (!(polish_share >= 0.0 && polish_share < 1.0)) {
     throw InvalidParameter({"polish_share", polish_share, "must be in [0, 1)"});
   }
+  if (global_budget < -1 || (global_budget > 0 && global_budget < 100)) {
+    throw InvalidParameter(
+        {"global_budget", double(global_budget), "must be -1 (the default), 0 or >= 100"});
+  }
   if (stop_window < 0) {
     throw InvalidParameter({"stop_window", double(stop_window), "must be >= 0 evaluations"});
   }
@@ -97,14 +105,17 @@ void FitOptions::Validate() const {
   }
 }
 
+long FirstChunkEvaluations(int dimension, int islands) {
+  // The first populations, the start set into the first one (evaluated again), the generations.
+  return long(islands) * PopulationSize(dimension) * (kGenerationsPerChunk + 1) + 1;
+}
+
 SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
                              const std::vector<double>& start, const FitOptions& options,
                              const std::string& objective_name) {
   const int threads = ThreadCount(options.threads);
   const int islands = options.islands;
-  // Population of CMA-ES's default 4 + 3 ln D, doubled for the multimodal landscapes of
-  // parallel hysteretic components.
-  const int population_size = 2 * (4 + static_cast<int>(3.0 * std::log(dimension)));
+  const int population_size = PopulationSize(dimension);
   const pagmo::problem problem{
       SearchProblem{std::make_shared<const Objective>(objective), dimension}};
 
@@ -240,7 +251,7 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
       (result.stop == FitStop::kConverged ? std::min(remaining, options.budget - cmaes_budget)
                                           : remaining) -
       2 * dimension - 1;
-  if (polish_budget > 2 * dimension) {
+  if (options.polish_share > 0.0 && polish_budget > 2 * dimension) {
     pagmo::population single{problem, 0u, options.seed};
     single.push_back(best_x);
     pagmo::algorithm compass{

@@ -18,7 +18,7 @@ TEST(BuildingFitReport, IntervalsAndTheJsonBothFrontsReturn) {
   result.channels.push_back({"ica50", "d1", 0.5, 0.01});
   result.objective_start = 0.25;
   result.objective = 1e-4;
-  result.search.stop = identification::FitStop::kConverged;
+  result.refinement.stop = identification::RefinementStop::kConverged;
   const auto [low, high] = Interval95(result.parameters[0]);
   EXPECT_NEAR(low, 0.4 * std::exp(-1.96 * 0.05), 1e-15);
   EXPECT_NEAR(high, 0.4 * std::exp(1.96 * 0.05), 1e-15);

@@ -56,7 +56,7 @@ TEST(BuildingFit, RecoversHiddenParametersWithinTheirUncertaintyFromTwoNoisyChan
     EXPECT_NEAR(channel.nrmse, noise, 0.25 * noise);
     EXPECT_GT(channel.nrmse_start, 5 * noise);
   }
-  EXPECT_EQ(fit.search.stop, identification::FitStop::kConverged);
+  EXPECT_EQ(fit.refinement.stop, identification::RefinementStop::kConverged) << fit.stop_reason;
   // Under motions that take the layer far beyond its yield displacement, the data fix the yield
   // force k0 uy far more sharply than k0 and uy apart: the one pair reported.
   ASSERT_EQ(fit.not_separated.size(), 1u);

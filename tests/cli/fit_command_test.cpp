@@ -274,18 +274,22 @@ TEST(FitCommand, DataWithoutUnitsAreRefusedUnlessTheCommandLineGivesThem) {
   EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
-TEST(FitCommand, OffsetsAreRefusedToCyclicTests) {
-  // --offsets reads shake-table accelerometers: a cyclic fit has none, and would ignore it.
+TEST(FitCommand, BuildingOptionsAreRefusedToCyclicTests) {
+  // --offsets reads shake-table accelerometers and --global-budget splits a building fit's
+  // search: a cyclic fit has neither, and would ignore them.
   const auto output = TemporaryFile("offsets.yaml");
-  const auto run =
-      RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
-                    " --offsets none -q -o " + output.string(),
-                true);
-  EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("--offsets applies to --building, not to cyclic tests"),
-            std::string::npos)
-      << run.output;
-  EXPECT_FALSE(std::filesystem::exists(output));
+  for (const std::string option : {"--offsets none", "--global-budget 500"}) {
+    const auto run =
+        RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
+                      " " + option + " -q -o " + output.string(),
+                  true);
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(option.substr(0, option.find(' ')) +
+                              " applies to --building, not to cyclic tests"),
+              std::string::npos)
+        << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output));
+  }
 }
 
 TEST(FitCommand, DataBeyondWhatSquaresHoldAreLocated) {
@@ -409,6 +413,18 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
   EXPECT_NEAR(json["parameters"][0]["value"].get<double>() / 5e4, 1.0, 0.01);
   EXPECT_NEAR(json["parameters"][1]["value"].get<double>() / 10.0, 1.0, 0.1);
   EXPECT_EQ(json["channels"][0]["channel"], "d1");
+  EXPECT_EQ(json["stop"], "converged") << json["stop_reason"];
+  // A global stage below CMA-ES's least or leaving the refinement less than its first Jacobian
+  // and step (2 x 2 + 2 of the budget) is refused by its option's name, nothing written.
+  const auto refused = TemporaryFile("refused.fitted.yaml");
+  for (const std::string option : {"--global-budget 50", "--global-budget 295"}) {
+    const auto bad = RunIsolab("fit " + data.string() + " --building " + spec("") +
+                                   " --budget 300 " + option + " -q -o " + refused.string(),
+                               true);
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--global-budget"), std::string::npos) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(refused));
+  }
   EXPECT_LT(json["channels"][0]["nrmse"].get<double>(), 0.005);
   EXPECT_EQ(isolab::model::LoadModelFile(fitted.string()).identified_range->data,
             std::vector<std::string>{"sweep"});

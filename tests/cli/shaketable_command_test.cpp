@@ -488,7 +488,7 @@ TEST(ShakeTableCommand, DiagnoseBuildingNamesTheViscousPartTheModelLacks) {
   const auto stem = Scratch("viscous").string();
   const auto run =
       RunIsolab("diagnose " + data.string() + " --building " + spec.string() + " --out " + stem +
-                " --budget 1500 --threads 1 --offsets none --no-plot --json -q");
+                " --budget 3000 --threads 1 --offsets none --no-plot --json -q");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto json = nlohmann::json::parse(run.output)["building"];
   ASSERT_EQ(json["added"].size(), 1u) << json["conclusion"];

@@ -12,8 +12,10 @@
 // independent tests from rest, or one specimen in the order given: each then starts from the
 // state the previous one left, the building brought to rest by a pause of zero table motion
 // between them (the bearings' internal state, their scragging, degradation and residual offset,
-// carried). The search is the unit-cube CMA-ES every fit runs (identification/unit_cube_search.h)
-// over the parameters' ranges, log-uniform where positive.
+// carried). The search has two stages over the parameters' ranges (log-uniform where positive):
+// the unit-cube CMA-ES every fit runs (identification/unit_cube_search.h) finds the basin, for
+// FitOptions::global_budget simulations, and a Levenberg-Marquardt refinement on the residual
+// (identification/least_squares.h) converges in it, with a gradient and a step criterion.
 //
 // Uncertainty, from the curvature at the optimum: J the Jacobian of the weighted residual vector
 // (central differences in the parameters' coordinates, ln p where the range is log), the
@@ -31,6 +33,7 @@
 
 #include "isolab/analysis/building_parameters.h"
 #include "isolab/analysis/building_response.h"
+#include "isolab/identification/least_squares.h"
 #include "isolab/identification/unit_cube_search.h"
 #include "isolab/model/model_file.h"
 
@@ -82,7 +85,11 @@ struct BuildingFitResult {
   double objective_start = 0.0, objective = 0.0;  // mean NRMSE^2 over channels
   double samples = 0.0, effective_samples = 0.0;
   double correlation_time = 0.0;  // (time) of the residual, over channels weighted by samples
-  identification::SearchOutcome search;
+  identification::SearchOutcome search;  // the global stage
+  // The least-squares stage kept (its Jacobian moved into the covariance, so left empty).
+  identification::RefinementOutcome refinement;
+  long evaluations = 0;     // simulations of both stages
+  std::string stop_reason;  // both stages, one sentence each
   double seconds = 0.0;
 };
 

@@ -12,10 +12,16 @@ namespace isolab::analysis {
 // The 95 % interval of a fitted value from its coordinate's standard deviation (log: a factor).
 std::pair<double, double> Interval95(const FittedParameter& p);
 
+// One line of a building fit's progress on stderr (with its newline): a CMA-ES generation, or a
+// least-squares iteration with its convergence measures against their tolerances.
+std::string BuildingFitProgressLine(const identification::FitProgress& progress);
+
 // The JSON object (indented by two, no final newline): "parameters" (name, start, value, sigma,
 // log, interval_95, at_bound), "channels" (motion, channel, nrmse_start, nrmse),
 // "not_separated", "identified_range", "objective_start", "objective", "samples",
-// "effective_samples", "correlation_time", "evaluations", "stop", "stop_reason", "seconds",
+// "effective_samples", "correlation_time", "evaluations" (both stages), "global_evaluations",
+// "iterations" (of the refinement kept), "stop" ("converged", "stalled" or "budget": the
+// refinement's), "decrement" and "step" (its convergence measures), "stop_reason", "seconds",
 // "sequential" (the motions were one specimen) and "output" (where the fitted model went).
 std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
                             const std::string& output);

@@ -20,9 +20,11 @@ namespace isolab::identification {
 
 struct FitProgress {
   long evaluations = 0;
-  int generation = 0;  // CMA-ES generations of the leading island
-  double best = 0.0;   // best objective (e^2) so far
-  bool polishing = false;
+  int generation = 0;      // CMA-ES generations of the leading island
+  double best = 0.0;       // best objective (e^2) so far
+  bool polishing = false;  // the polish, or a least-squares refinement (least_squares.h)
+  // A refinement's convergence measures (RefinementOutcome::decrement and step); 0 otherwise.
+  double decrement = 0.0, step = 0.0;
 };
 
 struct FitOptions {
@@ -34,7 +36,15 @@ struct FitOptions {
   // Threads that run the islands side by side and share each evaluation's work; 0: one per
   // hardware thread, else 1 to 1024. Changes how fast a fit runs, never its result.
   int threads = 0;
-  double polish_share = 0.1;  // share of the budget for the compass-search polish; [0, 1)
+  // Share of the budget for the compass-search polish; [0, 1); 0: no polish, the CMA-ES stage
+  // ends with its last whole chunk of generations that fits the budget.
+  double polish_share = 0.1;
+  // Fits that end with a least-squares refinement instead of the polish (the building fit,
+  // analysis/building_fit.h) give the CMA-ES stage this many evaluations and the refinement the
+  // rest of the budget. -1: half the budget, or one chunk of generations where half is less
+  // and the budget allows it; 0: no global stage; else >= 100. A global budget below
+  // FirstChunkEvaluations runs no global stage either: CMA-ES would not move.
+  long global_budget = -1;
   // Convergence stop of the CMA-ES stage: it ends when, over a window of the last
   // max(stop_window, stop_window_share x evaluations so far) evaluations, the best e^2 has
   // improved by less than `stop_e2` relative and the step size with which the island that holds
@@ -73,6 +83,10 @@ struct SearchOutcome {
   FitStop stop = FitStop::kBudget;
   std::string stop_reason;  // one sentence with the numbers, for the output
 };
+
+// The evaluations of the islands' first populations and their first chunk of generations: the
+// least budget in which CMA-ES moves at all.
+long FirstChunkEvaluations(int dimension, int islands);
 
 // Minimises `objective` over [0, 1]^dimension (dimension >= 1) from `start` (the first island's
 // first member) with `options` (validated by the caller); `objective_name` names it in the stop
