@@ -121,7 +121,8 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     the units of path files without a "# units:" line. Returns a list of dicts, one per model
     (isolator) and path, as `isolab cyclic --path --json` has them, with the histories as numpy
     arrays: "time", "displacement", "force" (n or n x 2), "component_force" (one array per
-    component), "measured" and "comparison" (e2, nrmse, peak_measured, peak_modelled) when the
+    component), "measured" and "comparison" (e2, nrmse: RMS error over the measured force's RMS,
+    error_over_range: over its peak-to-peak range, peak_measured, peak_modelled) when the
     path has a force, "dissipated", "peak_force", "peak_displacement", "cycles" (an orbit's).
     """
     given = {"sequential": sequential, "test_data": test_data is not None, "noise": noise != 0.0,

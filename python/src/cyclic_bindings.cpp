@@ -99,6 +99,7 @@ py::dict ReplayDict(const std::string& model, const analysis::ReplayResult& r,
   if (r.comparison) {
     out["comparison"] =
         py::dict(py::arg("e2") = r.comparison->e2, py::arg("nrmse") = r.comparison->nrmse,
+                 py::arg("error_over_range") = r.comparison->error_over_range,
                  py::arg("peak_measured") = r.comparison->peak_measured,
                  py::arg("peak_modelled") = r.comparison->peak_modelled);
   }

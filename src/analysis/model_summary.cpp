@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
 #include "isolab/hysteresis/friction_pendulum.h"
 #include "isolab/hysteresis/law_kernel.h"
@@ -411,20 +412,29 @@ std::string IdentifiedRangeWarning(const identification::IdentifiedRange& range,
                                    double displacement, double velocity, const UnitSystem& units) {
   const std::string velocity_unit = fmt::format("{}/{}", units.length(), units.time());
   std::vector<std::string> beyond;
-  if (displacement > range.displacement) {
-    beyond.push_back(fmt::format("{:.4g} {} ({:.2f} times)", displacement, units.length(),
-                                 displacement / range.displacement));
-  }
-  if (velocity > range.velocity) {
-    beyond.push_back(fmt::format("{:.4g} {} ({:.2f} times)", velocity, velocity_unit,
-                                 velocity / range.velocity));
+  double farthest = 0.0;
+  for (const auto& [reached, identified, unit] :
+       {std::tuple{displacement, range.displacement, std::string(units.length())},
+        std::tuple{velocity, range.velocity, velocity_unit}}) {
+    const double ratio = reached / identified;
+    farthest = std::max(farthest, ratio);
+    if (ratio > kIdentifiedRangeMargin) {
+      beyond.push_back(fmt::format("{:.4g} {} ({:.2f} times)", reached, unit, ratio));
+    }
   }
   if (beyond.empty()) return "";
+  const std::string grade =
+      farthest > kFarBeyondIdentifiedRange
+          ? fmt::format(
+                "far beyond the range the fit saw (more than {:g} times it): the response "
+                "there rests on the law's form alone, not on the data",
+                kFarBeyondIdentifiedRange)
+          : "beyond the range the fit saw, the model extrapolates";
   return fmt::format(
       "the isolation was identified up to {:.4g} {} and {:.4g} {} over {:g} cycles ({}); this "
-      "run reaches {}: beyond the range the fit saw, the model extrapolates",
+      "run reaches {}: {}",
       range.displacement, units.length(), range.velocity, velocity_unit, range.cycles,
-      fmt::join(range.data, ", "), fmt::join(beyond, " and "));
+      fmt::join(range.data, ", "), fmt::join(beyond, " and "), grade);
 }
 
 }  // namespace isolab::analysis

@@ -1,5 +1,7 @@
 #include "isolab/analysis/parameter_draws.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -18,14 +20,37 @@ ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed)
   }
   const model::ParameterUncertainty& u = *model.uncertainty;
   const long n = long(u.names.size());
+  for (long p = 0; p < n; ++p) {
+    // One standard deviation of a factor 10 or more is not a measurement: drawn from, it gives
+    // bands of many decades (a variance of 1e6 in ln p: 1e-170 to 1e2).
+    const double sigma = std::sqrt(u.covariance(p, p));
+    if (u.log[std::size_t(p)] && sigma > std::log(10.0)) {
+      throw InputError(
+          {model.path},
+          fmt::format("uncertainty.covariance[{}][{}]: '{}' has a standard deviation of {:.3g} in "
+                      "ln p, a factor {:.3g} per sigma: implausibly wide for a band (at most a "
+                      "factor 10)",
+                      p, p, u.names[std::size_t(p)], sigma, std::exp(sigma)));
+    }
+  }
+  // The covariance is positive semi-definite (model_file.cpp checks it); eigenvalues at
+  // round-off below zero draw nothing in their direction.
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(u.covariance);
   root_ = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  // Centred on the model's own values, not on those the fit wrote beside the covariance: a model
+  // edited since (or set from Python) gets a band about the run it makes.
   centre_.resize(n);
   for (long p = 0; p < n; ++p) {
     const std::size_t q = std::size_t(p);
-    centre_[p] = u.log[q] ? std::log(u.values[q]) : u.values[q];
+    const double value = ParameterValue(model, u.names[q]);
+    if (u.log[q] && !(value > 0.0)) {
+      throw InputError({model.path},
+                       fmt::format("{} is {:g}, drawn log-normally by the uncertainty section: "
+                                   "it must be > 0",
+                                   u.names[q], value));
+    }
+    centre_[p] = u.log[q] ? std::log(value) : value;
   }
-  for (const std::string& name : u.names) ParameterValue(model, name);
 }
 
 model::ModelFile ParameterDraws::Next() {

@@ -103,7 +103,8 @@ ReplayResult Drive(Driver driver, std::vector<std::string> components,
     c.peak_modelled = r.peak_force;
     c.e2 = norm > 0.0 ? error / norm : error;
     const double range = std::max(high.x - low.x, high.y - low.y);
-    c.nrmse = range > 0.0 ? std::sqrt(error / double(n)) / range : 0.0;
+    c.nrmse = std::sqrt(c.e2);
+    c.error_over_range = range > 0.0 ? std::sqrt(error / double(n)) / range : 0.0;
     r.comparison = c;
   }
   return r;

@@ -184,9 +184,12 @@ void PrintReplay(const Replayed& run, std::ostream& out) {
   if (r.comparison) {
     const auto& c = *r.comparison;
     fmt::print(out,
-               "against the measured force: e^2 = {:.4g} %, NRMSE = {:.4g} % of its range, peak "
-               "|F| measured {:.6g}, modelled {:.6g} ({:+.1f} %)\n",
-               100 * c.e2, 100 * c.nrmse, c.peak_measured, c.peak_modelled,
+               "against the measured force: e^2 = {:.4g} %, NRMSE = {:.4g} (RMS error over the "
+               "measured force's RMS{}), RMS error {:.4g} % of its range, peak |F| measured "
+               "{:.6g}, modelled {:.6g} ({:+.1f} %)\n",
+               100 * c.e2, c.nrmse,
+               c.nrmse > 1.0 ? "; above 1: worse than predicting a force of zero" : "",
+               100 * c.error_over_range, c.peak_measured, c.peak_modelled,
                100 * (c.peak_modelled / c.peak_measured - 1));
   }
   if (!r.cycles.empty()) {
@@ -230,6 +233,7 @@ nlohmann::json ReplayJson(const Replayed& run) {
   if (r.comparison) {
     json["comparison"] = {{"e2", r.comparison->e2},
                           {"nrmse", r.comparison->nrmse},
+                          {"error_over_range", r.comparison->error_over_range},
                           {"peak_measured", r.comparison->peak_measured},
                           {"peak_modelled", r.comparison->peak_modelled}};
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
 #include <filesystem>
 #include <optional>
 #include <utility>
@@ -254,6 +255,16 @@ ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node&
   if (!((c - c.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * c.cwiseAbs().maxCoeff()) ||
       c.diagonal().minCoeff() < 0.0) {
     reader.Fail(rows, path + ".covariance", "must be symmetric with a non-negative diagonal");
+  }
+  // A covariance has no negative variance in any direction. The file's nine digits leave
+  // eigenvalues of about 1e-9 of the largest on either side of zero, so the test allows 1e-6.
+  const Eigen::VectorXd eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(c, Eigen::EigenvaluesOnly).eigenvalues();
+  if (eigenvalues.minCoeff() < -1e-6 * eigenvalues.cwiseAbs().maxCoeff()) {
+    reader.Fail(rows, path + ".covariance",
+                fmt::format("must be positive semi-definite: it has a negative variance ({:.3g}) "
+                            "along an eigenvector",
+                            eigenvalues.minCoeff()));
   }
   return uncertainty;
 }

@@ -106,5 +106,26 @@ TEST(ModelSummary, IsolatorDisplacementBeyondAnyBearing) {
   EXPECT_NE(IsolatorDisplacementWarning(2.0, UnitSystem("kN", "m")), "");
 }
 
+// The range warning's margin and grades: silent up to 1.1 times the identified peaks (a rerun of
+// the fitted motion reaches 1.03 to 1.05), "beyond" to twice them, "far beyond" past that; each
+// quantity named only where it passes the margin.
+TEST(ModelSummary, IdentifiedRangeWarningHasAMarginAndGrades) {
+  const UnitSystem mm("kN", "mm");
+  const identification::IdentifiedRange range{100.0, 300.0, 10.0, {"ica50"}};
+  EXPECT_EQ(IdentifiedRangeWarning(range, 105.0, 310.0, mm), "");
+  EXPECT_EQ(IdentifiedRangeWarning(range, 110.0, 330.0, mm), "");
+  const std::string beyond = IdentifiedRangeWarning(range, 150.0, 320.0, mm);
+  EXPECT_NE(beyond.find("this run reaches 150 mm (1.50 times): beyond the range the fit saw, the "
+                        "model extrapolates"),
+            std::string::npos)
+      << beyond;
+  EXPECT_EQ(beyond.find("mm/s ("), std::string::npos) << beyond;  // the velocity is within
+  const std::string far = IdentifiedRangeWarning(range, 150.0, 900.0, mm);
+  EXPECT_NE(far.find("150 mm (1.50 times) and 900 mm/s (3.00 times): far beyond the range the "
+                     "fit saw (more than 2 times it)"),
+            std::string::npos)
+      << far;
+}
+
 }  // namespace
 }  // namespace isolab::analysis

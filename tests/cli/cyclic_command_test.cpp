@@ -163,6 +163,28 @@ TEST(CyclicCommand, APathReplaysCyclicsOwnSinusoidToTheDigitsItsCsvKeeps) {
   for (std::size_t k = 0; k < rows.size(); k += 7) {
     EXPECT_NEAR(again[k][2], rows[k][2], 1e-7 * (1 + std::abs(rows[k][2]))) << k;
   }
+
+  // Measured forces of the opposite sign: the error is twice the measured force, an NRMSE of 2
+  // (RMS-normalised, as shaketable's), and the line says the model does worse than zero.
+  const auto flipped = Scratch("flipped_path.csv");
+  {
+    std::ofstream out(flipped);
+    out.precision(12);
+    out << "# units: force kN, length mm\ntime,displacement,force\n";
+    for (const auto& row : rows) out << row[0] << "," << row[1] << "," << -row[2] << "\n";
+  }
+  const auto json_flipped = RunIsolab("cyclic " + Model("table9_thm1_system.yaml") + " --path " +
+                                      flipped.string() + " --json");
+  ASSERT_EQ(json_flipped.exit_code, 0) << json_flipped.output;
+  const auto comparison = nlohmann::json::parse(json_flipped.output)["runs"][0]["comparison"];
+  EXPECT_NEAR(comparison["nrmse"].get<double>(), 2.0, 1e-6);
+  EXPECT_NEAR(comparison["e2"].get<double>(), 4.0, 1e-5);
+  const auto text =
+      RunIsolab("cyclic " + Model("table9_thm1_system.yaml") + " --path " + flipped.string());
+  EXPECT_NE(text.output.find("NRMSE = 2 (RMS error over the measured force's RMS; above 1: worse "
+                             "than predicting a force of zero)"),
+            std::string::npos)
+      << text.output;
 }
 
 TEST(CyclicCommand, RoundACircleTheCoupledSliderMeetsItsClosedForms) {

@@ -622,6 +622,54 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
   const auto one = RunIsolab("run " + model("[[0]]") + " --samples 1 -q -o " + results, true);
   EXPECT_NE(one.exit_code, 0);
   EXPECT_NE(one.output.find("--samples"), std::string::npos) << one.output;
+
+  // A covariance with a negative variance along an eigenvector, and one of a factor 1e434 per
+  // sigma, are refused by their key before the run writes anything.
+  for (const auto& [covariance, message] :
+       {std::pair{"[[1, 2], [2, 1]]", "positive semi-definite"},
+        std::pair{"[[1.0e6, 0], [0, 0]]", "implausibly wide"}}) {
+    const auto bad = RunIsolab("run " + model(covariance) + " --samples 4 -q -o " + results, true);
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("uncertainty.covariance"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find(message), std::string::npos) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(results));
+  }
+}
+
+// The band is drawn about the model as it stands: a model whose story stiffness was edited from
+// the fitted 60 to 80 kN/mm (the uncertainty section still says 60) gets, with a zero covariance,
+// a band that is its own run's peaks, not the fitted model's.
+TEST(RunCommand, ABandIsCentredOnTheModelItRunsNotOnTheFittedValues) {
+  const auto model = [](const std::string& name, int stiffness) {
+    const auto path = isolab::testing::OwnTestFile(name);
+    std::ofstream(path) << "units: {force: kN, length: mm, time: s}\n"
+                           "structure:\n  type: shear_building\n  base_mass: 30 t\n"
+                           "  stories: {count: 3, mass: 30 t, stiffness: "
+                        << stiffness
+                        << " kN/mm}\n"
+                           "  damping: {type: rayleigh, modes: [1, 2], ratios: [0.02, 0.02]}\n"
+                           "isolation:\n  components:\n"
+                           "    - {name: iso, type: bhm2, k0: 3, k1: 0.4, uy: 5}\n"
+                           "excitation:\n  ground_motion: {file: "
+                        << Source("ground_motions/fwn_firm_seed1.at2")
+                        << "}\nanalysis: {dt: 0.01}\n"
+                           "uncertainty:\n  parameters: [{name: stories.stiffness, value: 60, "
+                           "log: true}]\n  covariance: [[0]]\n";
+    return path.string();
+  };
+  const auto peaks = [&](const std::string& path) {
+    const auto run = RunIsolab("run " + path + " --samples 3 --json -q -o " + path + ".h5");
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return nlohmann::json::parse(run.output);
+  };
+  const auto fitted = peaks(model("fitted.yaml", 60));
+  const auto edited = peaks(model("edited.yaml", 80));
+  const double own = edited["peaks"]["story_drift"]["value"].get<double>();
+  const double fitted_drift = fitted["peaks"]["story_drift"]["value"].get<double>();
+  ASSERT_GT(std::abs(own - fitted_drift), 0.05 * own);  // the edit moves the drift
+  for (const char* p : {"p5", "p50", "p95"}) {
+    EXPECT_NEAR(edited["band"]["story_drift"][p].get<double>(), own, 1e-9 * own) << p;
+  }
 }
 
 }  // namespace

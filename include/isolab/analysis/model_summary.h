@@ -91,9 +91,17 @@ hysteresis::Vec2 SecantStiffness(const hysteresis::PlanAssembly& assembly, doubl
 // model's units).
 std::string IsolatorDisplacementWarning(double peak, const UnitSystem& units);
 
+// How far past the identified range a run may go unwarned: the data's own peak is one sample of
+// a continuous motion, and a run at 1.03 times it (the motions the model was fitted to, rerun)
+// is within what the fit saw.
+inline constexpr double kIdentifiedRangeMargin = 1.1;
+// Past this factor the warning says "far beyond": the response rests on the law's form alone.
+inline constexpr double kFarBeyondIdentifiedRange = 2.0;
+
 // The warning for a run whose peak isolator displacement or velocity (|u|, |du/dt|: the resultant
-// in plan) goes beyond the range its isolation was identified on, with how far, or empty (in the
-// model's units). Beyond that range the fitted laws extrapolate.
+// in plan) goes more than kIdentifiedRangeMargin times beyond the range its isolation was
+// identified on, with how far and graded (beyond; far beyond past kFarBeyondIdentifiedRange), or
+// empty (in the model's units). Beyond that range the fitted laws extrapolate.
 std::string IdentifiedRangeWarning(const identification::IdentifiedRange& range,
                                    double displacement, double velocity, const UnitSystem& units);
 

@@ -1,6 +1,7 @@
 // Parameter sets drawn from the uncertainty a fit reported (model_file.h's `uncertainty`, written
 // by `isolab fit --building`): normal in the parameters' coordinates (ln p where the fit searched
-// log-uniformly), through the covariance's eigenvalues, so that a direction the data did not see
+// log-uniformly) about the model's own values (which an edit may have moved from the fitted
+// ones), through the covariance's eigenvalues, so that a direction the data did not see
 // (a zero eigenvalue) still gives the others. What a prediction band runs (prediction_band.h,
 // run_band.h), and the percentiles it reports.
 #pragma once
@@ -15,8 +16,9 @@ namespace isolab::analysis {
 
 class ParameterDraws {
  public:
-  // Throws InputError when the model carries no uncertainty or names a parameter it lacks
-  // (checked before any draw, so a wrong name is an error, not a band of refused sets).
+  // Throws InputError when the model carries no uncertainty, names a parameter it lacks (checked
+  // before any draw, so a wrong name is an error, not a band of refused sets), or gives a log
+  // parameter a standard deviation above ln 10 (a factor 10 per sigma).
   ParameterDraws(const model::ModelFile& model, unsigned seed);
 
   // The model with the next drawn set. Throws InvalidParameter or InputError for a set that
