@@ -73,6 +73,12 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
         (dict(building=spec, global_budget=50), "global_budget"),
         (dict(model=repo / SPEC, output=output), "output= applies to building="),
     ]
+    # A pause between one specimen's motions of ten million seconds (a billion samples) is not a
+    # rest but a run out of memory: refused before any simulation.
+    paused = tmp_path / "paused.yaml"
+    paused.write_text(spec.read_text() + "pause: 1.0e7\n")
+    cases.append((dict(building=paused, specimen="sequential"),
+                  r"pause: 1e\+07 is 1e\+09 samples of motion's step; at most 1e\+06"))
     for kwargs, message in cases:
         kwargs.setdefault("output", output) if "building" in kwargs else None
         with pytest.raises(isolab.InputError, match=message):

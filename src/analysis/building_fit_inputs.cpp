@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "isolab/analysis/shake_table_measurements.h"
+#include "isolab/analysis/shake_table_prediction.h"
 #include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/cyclic_test_file.h"
@@ -127,6 +128,18 @@ std::vector<BuildingMotion> ReadBuildingMotions(BuildingFitInputs* inputs,
                  measured.reference_note);
     }
     motions.push_back({std::filesystem::path(path).stem().string(), std::move(measured)});
+  }
+  // The pause between one specimen's motions is simulated sample by sample: a few isolated
+  // periods are what it is for, and a million samples is minutes of rest at any sampling.
+  constexpr double kMaxPauseSamples = 1e6;
+  for (const BuildingMotion& motion : motions) {
+    const double samples = inputs->spec.pause / SampleStep(motion.measured);
+    if (inputs->spec.sequential && samples > kMaxPauseSamples) {
+      throw InputError({inputs->file.path},
+                       fmt::format("pause: {:g} is {:.3g} samples of {}'s step; at most {:g} (a "
+                                   "few isolated periods bring the building to rest)",
+                                   inputs->spec.pause, samples, motion.name, kMaxPauseSamples));
+    }
   }
   return motions;
 }

@@ -1,5 +1,7 @@
 #include "isolab/analysis/prediction_band.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,6 +21,12 @@ void Band(const std::vector<Signal>& runs, Signal* low, Signal* high) {
     (*low)[k] = Quantile(&at, 0.05);
     (*high)[k] = Quantile(&at, 0.95);
   }
+}
+
+double Rms(const Signal& x) {
+  double sum = 0.0;
+  for (const double v : x) sum += v * v;
+  return x.empty() ? 0.0 : std::sqrt(sum / double(x.size()));
 }
 
 }  // namespace
@@ -59,7 +67,54 @@ PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& 
   band.peak_roof_acceleration = Spread(peak_a);
   band.nrmse_isolator_displacement = Spread(nrmse_u);
   band.nrmse_roof_acceleration = Spread(nrmse_a);
+  // Inside within 1e-4 of the measured history's RMS: a fit to data with no model error gives a
+  // band narrower than the data's own digits, which a measurement on its edge must not leave.
+  const auto covered = [](const Signal& measured, const Signal& low, const Signal& high) {
+    const double tolerance = 1e-4 * Rms(measured);
+    std::size_t inside = 0;
+    for (std::size_t k = 0; k < measured.size(); ++k) {
+      inside += measured[k] >= low[k] - tolerance && measured[k] <= high[k] + tolerance;
+    }
+    return measured.empty() ? 0.0 : double(inside) / double(measured.size());
+  };
+  const Signal& u = motion.measured.displacement.front();
+  const Signal& a = motion.measured.acceleration.back();
+  band.isolator_coverage = covered(u, band.isolator_p5, band.isolator_p95);
+  band.roof_coverage = covered(a, band.roof_p5, band.roof_p95);
+  band.measured_peak_isolator = PeakAbs(u);
+  band.measured_peak_roof = PeakAbs(a);
+  const auto within = [](double value, const Percentiles& p, const Signal& measured) {
+    const double tolerance = 1e-4 * Rms(measured);
+    return value >= p.p5 - tolerance && value <= p.p95 + tolerance;
+  };
+  band.isolator_peak_inside =
+      within(band.measured_peak_isolator, band.peak_isolator_displacement, u);
+  band.roof_peak_inside = within(band.measured_peak_roof, band.peak_roof_acceleration, a);
   return band;
+}
+
+std::string CoverageSentence(const PredictionBand& band, const std::string& length_unit,
+                             const std::string& acceleration_unit) {
+  const auto peak = [](const char* what, double measured, const Percentiles& p, bool inside,
+                       const std::string& unit) {
+    return fmt::format("the measured peak {} ({:.4g} {}) is {} it ({:.4g} to {:.4g})", what,
+                       measured, unit, inside ? "inside" : "OUTSIDE", p.p5, p.p95);
+  };
+  std::string sentence = fmt::format(
+      "band coverage: the 5-95 % band of {} parameter sets holds {:.1f} % of the measured "
+      "isolator displacement history and {:.1f} % of the roof acceleration's; {}; {}",
+      band.samples, 100 * band.isolator_coverage, 100 * band.roof_coverage,
+      peak("isolator displacement", band.measured_peak_isolator, band.peak_isolator_displacement,
+           band.isolator_peak_inside, length_unit),
+      peak("roof acceleration", band.measured_peak_roof, band.peak_roof_acceleration,
+           band.roof_peak_inside, acceleration_unit));
+  if (band.isolator_coverage < 0.9 || band.roof_coverage < 0.9 || !band.isolator_peak_inside ||
+      !band.roof_peak_inside) {
+    sentence +=
+        ". The band is the parameters' uncertainty only: where it misses the measurements, the "
+        "model lacks something the data show, and the band understates the prediction's error";
+  }
+  return sentence;
 }
 
 }  // namespace isolab::analysis

@@ -213,7 +213,13 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
                       {"peak_isolator_displacement", spread(band->peak_isolator_displacement)},
                       {"peak_roof_acceleration", spread(band->peak_roof_acceleration)},
                       {"nrmse_isolator_displacement", spread(band->nrmse_isolator_displacement)},
-                      {"nrmse_roof_acceleration", spread(band->nrmse_roof_acceleration)}};
+                      {"nrmse_roof_acceleration", spread(band->nrmse_roof_acceleration)},
+                      {"coverage",
+                       {{"isolator_displacement", band->isolator_coverage},
+                        {"roof_acceleration", band->roof_coverage}}},
+                      {"peak_inside",
+                       {{"isolator_displacement", band->isolator_peak_inside},
+                        {"roof_acceleration", band->roof_peak_inside}}}};
     }
     if (options.predict) {
       json["nrmse"] = {{"isolator_displacement", nrmse_u}, {"roof_acceleration", nrmse_roof}};
@@ -228,6 +234,11 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
              "channels {}\n{}\n",
              options.data, m.time.size(), isolator.half_cycles.size(), fmt::join(m.channels, ","),
              m.reference_note);
+  if (band) {
+    fmt::print(out, "{}\n",
+               analysis::CoverageSentence(*band, units.length(),
+                                          DescribeUnits(units, dimension::kAcceleration)));
+  }
   fmt::print(out, "peak isolator displacement {:.4g} {}, peak base shear {:.4g} {} ({:.3g} W)\n",
              analysis::PeakAbs(m.displacement.front()), units.length(), analysis::PeakAbs(shear),
              units.force(), analysis::PeakAbs(shear) / weight);

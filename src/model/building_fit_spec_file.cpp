@@ -57,6 +57,13 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
         reader.Fail(entry["start"], at + ".start", "must lie in the range");
       }
     }
+    for (std::size_t j = 0; j < spec.parameters.size(); ++j) {
+      if (spec.parameters[j].name == parameter.name) {
+        reader.Fail(entry, at,
+                    fmt::format("'{}' is fitted twice (also {}): one parameter, one entry",
+                                parameter.name, IndexPath("parameters", j)));
+      }
+    }
     spec.parameters.push_back(std::move(parameter));
   }
   if (const YAML::Node channels = root["channels"]) {

@@ -437,6 +437,7 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
       {"", "--offsets pre-event", "--offsets applies to shake-table motions"},
       {"", "--cycles 2", "--cycles applies to cyclic tests"},
       {"", "", "force_spec.yaml:3:11: substeps: must be >= 1", "0"},
+      {"  - isolation.k.k\n", "", "'isolation.k.k' is fitted twice (also parameters[0])"},
   };
   for (const Case& c : cases) {
     const auto refused = TemporaryFile("refused.yaml");

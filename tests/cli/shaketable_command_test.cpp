@@ -170,7 +170,8 @@ TEST(ShakeTableCommand, DerivesTheIsolatorForceOfAKnownBuildingAndPredictsItBack
 // model's prediction carries a band drawn from its uncertainty.
 TEST(ShakeTableCommand, FitBuildingRecoversAKnownBuildingAndItsPredictionCarriesABand) {
   Matrix u;
-  const auto data = WriteShakeTable(WriteBuilding(), "fit_building", nullptr, &u);
+  const auto truth = WriteBuilding();
+  const auto data = WriteShakeTable(truth, "fit_building", nullptr, &u);
   const auto start = WriteStart();
   const auto spec = Scratch("spec.yaml");
   std::ofstream(spec) << "model: start.yaml\nparameters:\n  - isolation.iso.k1\n"
@@ -204,6 +205,55 @@ TEST(ShakeTableCommand, FitBuildingRecoversAKnownBuildingAndItsPredictionCarries
   EXPECT_LE(peak["p5"].get<double>(), peak["p50"].get<double>());
   EXPECT_LE(peak["p50"].get<double>(), peak["p95"].get<double>());
   EXPECT_NEAR(peak["p50"].get<double>(), measured, 2e-3 * measured);
+  // The coverage, counted again from the comparison CSV's measured history and band columns.
+  // The fitted band is far narrower than the CSV's six digits, so the count runs on the truth
+  // given a story stiffness known to 5 % (six digits resolve that band; a sample on its edge may
+  // count either way, hence 1 %), and the peak's place is checked against the peaks' range.
+  const auto wide = Scratch("wide.yaml");
+  std::ofstream(wide) << isolab::testing::ReadText(truth)
+                      << "uncertainty:\n  parameters: [{name: stories.stiffness, value: 60, log: "
+                         "true}]\n  covariance: [[0.0025]]\n";
+  const auto comparison = Scratch("band.csv");
+  const auto text =
+      RunIsolab("shaketable " + data.string() + " --model " + wide.string() +
+                " --predict --samples 8 --offsets none --results " +
+                Scratch("band_text.h5").string() + " --comparison " + comparison.string());
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  const auto wide_json = RunIsolab("shaketable " + data.string() + " --model " + wide.string() +
+                                   " --predict --samples 8 --offsets none --json -q --results " +
+                                   Scratch("band_json.h5").string());
+  ASSERT_EQ(wide_json.exit_code, 0) << wide_json.output;
+  const auto wide_band = nlohmann::json::parse(wide_json.output)["band"];
+  std::ifstream csv(comparison);
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<double>> table;
+  double square = 0.0;
+  while (std::getline(csv, line)) {
+    std::vector<double>& v = table.emplace_back();
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 11u) << line;
+    square += v[1] * v[1];
+  }
+  // Inside within 1e-4 of the measured history's RMS, as the command counts.
+  const double tolerance = 1e-4 * std::sqrt(square / double(table.size()));
+  long inside = 0;
+  for (const auto& v : table) {
+    inside += v[1] >= v[7] - tolerance && v[1] <= v[8] + tolerance;  // measured in [p5, p95]
+  }
+  const long rows = long(table.size());
+  const double coverage = wide_band["coverage"]["isolator_displacement"].get<double>();
+  EXPECT_NEAR(coverage, double(inside) / double(rows), 0.01);
+  EXPECT_GT(coverage, 0.5);  // the truth's own data, in a band about the truth
+  const auto& wide_peak = wide_band["peak_isolator_displacement"];
+  EXPECT_EQ(
+      wide_band["peak_inside"]["isolator_displacement"].get<bool>(),
+      measured >= wide_peak["p5"].get<double>() && measured <= wide_peak["p95"].get<double>());
+  // Said in the text's first lines, before the table of peaks.
+  const auto coverage_line = text.output.find("band coverage: the 5-95 % band of ");
+  EXPECT_NE(coverage_line, std::string::npos) << text.output;
+  EXPECT_LT(coverage_line, text.output.find("| quantity |")) << text.output;
 
   // Options that do not apply are refused, naming them.
   const auto cycles = RunIsolab("fit " + data.string() + " --building " + spec.string() +

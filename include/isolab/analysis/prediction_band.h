@@ -20,7 +20,20 @@ struct PredictionBand {
   Signal roof_p5, roof_p95;          // the roof's absolute acceleration
   Percentiles peak_isolator_displacement, peak_roof_acceleration;
   Percentiles nrmse_isolator_displacement, nrmse_roof_acceleration;
+  // How far the band holds the measurements: the share of the measured samples inside
+  // [p5, p95] at their time, and whether the measured peak lies within the peaks' 5-95 % range
+  // (both within 1e-4 of the measured history's RMS).
+  // A band of parameter uncertainty alone says nothing of the model's error, so a low coverage
+  // is what a model lacking something shows.
+  double isolator_coverage = 0.0, roof_coverage = 0.0;
+  double measured_peak_isolator = 0.0, measured_peak_roof = 0.0;
+  bool isolator_peak_inside = false, roof_peak_inside = false;
 };
+
+// One sentence on the band's coverage for the text's first lines: the shares and the peaks,
+// each peak said inside or outside with the range, and what a low coverage means.
+std::string CoverageSentence(const PredictionBand& band, const std::string& length_unit,
+                             const std::string& acceleration_unit);
 
 // Draws `samples` parameter sets (>= 2) with `seed` and runs each (one motion, from rest). Throws
 // InputError when the model carries no uncertainty or names a parameter it lacks.
