@@ -24,9 +24,7 @@ std::string Diagnose(const std::vector<std::string>& data, const std::string& ba
                      bool force, bool quiet) {
   const model::FitSpec base = model::LoadFitSpec(base_path);
   const bool units_given = !force_unit.empty() && !length_unit.empty();
-  io::CyclicTestSet set = io::ReadCyclicTests(
-      data, {force_unit.empty() ? "kN" : force_unit, length_unit.empty() ? "mm" : length_unit},
-      base.units);
+  io::CyclicTestSet set = io::ReadCyclicTests(data, {force_unit, length_unit}, base.units);
   analysis::RequireUnits(set, units_given, "force_unit= and length_unit=");
   analysis::RequireFiniteSquares(set);
   const identification::FitData fit_data =

@@ -28,9 +28,7 @@ py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path,
              bool quiet) {
   const model::FitSpec spec = model::LoadFitSpec(spec_path);
   const bool units_given = !force_unit.empty() && !length_unit.empty();
-  io::CyclicTestSet set = io::ReadCyclicTests(
-      data, {force_unit.empty() ? "kN" : force_unit, length_unit.empty() ? "mm" : length_unit},
-      spec.units);
+  io::CyclicTestSet set = io::ReadCyclicTests(data, {force_unit, length_unit}, spec.units);
   analysis::RequireUnits(set, units_given, "force_unit= and length_unit=");
   analysis::RequireFiniteSquares(set);
   const bool one_specimen = io::OneSpecimen(specimen, set.one_specimen);

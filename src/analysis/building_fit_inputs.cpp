@@ -23,10 +23,8 @@ void RefuseOption(const BuildingOptionNames& names, const std::string& option, c
 // a motion, sampled at one step.
 std::vector<BuildingMotion> ReadForceDriven(const BuildingData& data, const model::ModelFile& model,
                                             bool* one_specimen) {
-  io::CyclicTestSet set = io::ReadCyclicTests(data.data,
-                                              {data.force_unit.empty() ? "kN" : data.force_unit,
-                                               data.length_unit.empty() ? "mm" : data.length_unit},
-                                              model.units);
+  io::CyclicTestSet set =
+      io::ReadCyclicTests(data.data, {data.force_unit, data.length_unit}, model.units);
   RequireUnits(set, !data.force_unit.empty() && !data.length_unit.empty(),
                data.names.force_unit + " and " + data.names.length_unit);
   RequireFiniteSquares(set);

@@ -26,9 +26,8 @@ struct Paths {
 
 Paths ReadPaths(const ReplayRequest& request, const UnitSystem& units, OptionStyle style) {
   Paths read;
-  io::DisplacementPathSet set = io::ReadDisplacementPaths(
-      request.paths, request.force_unit.empty() ? units.force() : request.force_unit,
-      request.length_unit.empty() ? units.length() : request.length_unit, units);
+  io::DisplacementPathSet set =
+      io::ReadDisplacementPaths(request.paths, request.force_unit, request.length_unit, units);
   if (!set.without_units.empty() && (request.force_unit.empty() || request.length_unit.empty())) {
     throw InputError(
         {set.without_units.front()},

@@ -133,10 +133,7 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   io::CheckOutputs(inputs, files.outputs);
   const bool units_given = !options.force_unit.empty() && !options.length_unit.empty();
   io::CyclicTestSet set =
-      io::ReadCyclicTests(options.data,
-                          {options.force_unit.empty() ? "kN" : options.force_unit,
-                           options.length_unit.empty() ? "mm" : options.length_unit},
-                          base.units);
+      io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
   analysis::RequireUnits(set, units_given, "--force-unit and --length-unit");
   analysis::RequireFiniteSquares(set);
   const identification::FitData data = diagnosis::AllCycles(

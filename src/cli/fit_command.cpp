@@ -176,10 +176,7 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   io::CheckOutputs(inputs, {output});
   const bool units_given = !options.force_unit.empty() && !options.length_unit.empty();
   io::CyclicTestSet set =
-      io::ReadCyclicTests(options.data,
-                          {options.force_unit.empty() ? "kN" : options.force_unit,
-                           options.length_unit.empty() ? "mm" : options.length_unit},
-                          spec.units);
+      io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, spec.units);
   analysis::RequireUnits(set, units_given, "--force-unit and --length-unit");
   analysis::RequireFiniteSquares(set);
   const bool one_specimen = io::OneSpecimen(options.specimen, set.one_specimen);

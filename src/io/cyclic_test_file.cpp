@@ -15,25 +15,12 @@
 #include "isolab/core/number.h"
 #include "isolab/core/text_file.h"
 #include "isolab/io/atomic_file.h"
+#include "units_line.h"
 
 namespace isolab::io {
 namespace {
 
 using identification::CyclicTestData;
-
-// "# units: force kN, length mm" (either order, either part). True when the line is one.
-bool ReadUnitsComment(const std::string& line, CyclicTestUnits* units) {
-  const auto colon = line.find(':');
-  if (Lower(line).find("units") == std::string::npos || colon == std::string::npos) return false;
-  for (const std::string& part : Split(line.substr(colon + 1))) {
-    std::stringstream words(part);
-    std::string what, unit;
-    words >> what >> unit;
-    if (Lower(what) == "force") units->force = unit;
-    if (Lower(what) == "length") units->length = unit;
-  }
-  return true;
-}
 
 // "# specimen: one, in order" (or "independent").
 void ReadSpecimenComment(const std::string& path, int line_number, const std::string& line,
@@ -50,13 +37,14 @@ void ReadSpecimenComment(const std::string& path, int line_number, const std::st
   }
 }
 
-void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& into,
+void ReadFile(const std::string& path, const CyclicTestUnits& given, const UnitSystem& into,
               std::vector<CyclicTestData>* tests, bool* one_specimen, bool* has_units) {
   TextLines in(path);
   if (!in.is_open()) throw InputError({path}, "cannot open the test data");
   std::map<std::string, int> column;
   std::map<std::string, std::size_t> test_index;
   double force_factor = 1.0, length_factor = 1.0;
+  UnitsLine declared;
   int line_number = 0, header_line = 0;
   const std::size_t tests_before = tests->size();
   for (std::string line; in.Next(&line);) {
@@ -65,7 +53,7 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
     if (line.empty()) continue;
     if (line[0] == '#') {
       if (column.empty()) {
-        *has_units = ReadUnitsComment(line, &units) || *has_units;
+        *has_units = ReadUnitsLine(line, line_number, &declared) || *has_units;
         ReadSpecimenComment(path, line_number, line, one_specimen);
       }
       continue;
@@ -83,6 +71,8 @@ void ReadFile(const std::string& path, CyclicTestUnits units, const UnitSystem& 
                                        needed));
         }
       }
+      const ResolvedUnits units =
+          ResolveUnits(path, declared, given.force, given.length, "kN", "mm");
       try {
         force_factor = into.Convert(1.0, units.force, dimension::kForce);
         length_factor = into.Convert(1.0, units.length, dimension::kLength);

@@ -11,6 +11,7 @@
 #include "csv_fields.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "units_line.h"
 
 namespace isolab::io {
 namespace {
@@ -23,14 +24,15 @@ int Column(const std::map<std::string, int>& columns, std::initializer_list<cons
   return -1;
 }
 
-void ReadFile(const std::string& path, std::string force_unit, std::string length_unit,
-              const UnitSystem& into, DisplacementPathSet* set) {
+void ReadFile(const std::string& path, const std::string& given_force,
+              const std::string& given_length, const UnitSystem& into, DisplacementPathSet* set) {
   std::ifstream in(path);
   if (!in) throw InputError({path}, "cannot open the displacement path");
   std::map<std::string, int> columns;
   int time = -1, test = -1, ux = -1, uy = -1, fx = -1, fy = -1;
   double force_factor = 1.0, length_factor = 1.0;
   bool has_units = false, header = false;
+  UnitsLine declared;
   std::map<std::string, std::size_t> index;
   const std::size_t first = set->paths.size();
   int line_number = 0;
@@ -39,17 +41,7 @@ void ReadFile(const std::string& path, std::string force_unit, std::string lengt
     line = Trim(line);
     if (line.empty()) continue;
     if (line[0] == '#') {
-      const auto colon = line.find(':');
-      if (!header && colon != std::string::npos && Lower(line).find("units") != std::string::npos) {
-        has_units = true;
-        for (const std::string& part : Split(line.substr(colon + 1))) {
-          std::stringstream words(part);
-          std::string what, unit;
-          words >> what >> unit;
-          if (Lower(what) == "force") force_unit = unit;
-          if (Lower(what) == "length") length_unit = unit;
-        }
-      }
+      if (!header && ReadUnitsLine(line, line_number, &declared)) has_units = true;
       continue;
     }
     const std::vector<std::string> fields = Split(line);
@@ -76,9 +68,11 @@ void ReadFile(const std::string& path, std::string force_unit, std::string lengt
       if (uy >= 0 && (fx >= 0) != (fy >= 0)) {
         throw InputError({path, line_number}, "force_x and force_y go together");
       }
+      const ResolvedUnits units =
+          ResolveUnits(path, declared, given_force, given_length, into.force(), into.length());
       try {
-        force_factor = into.Convert(1.0, force_unit, dimension::kForce);
-        length_factor = into.Convert(1.0, length_unit, dimension::kLength);
+        force_factor = into.Convert(1.0, units.force, dimension::kForce);
+        length_factor = into.Convert(1.0, units.length, dimension::kLength);
       } catch (const std::invalid_argument& error) {
         throw InputError({path, line_number}, fmt::format("units: {}", error.what()));
       }

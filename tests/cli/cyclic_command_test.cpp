@@ -327,6 +327,15 @@ TEST(CyclicCommand, PathsAreCheckedAndErrorsLocated) {
   EXPECT_NE(run.output.find("broken_path.csv:4: column 2"), std::string::npos) << run.output;
   run = RunIsolab("cyclic " + table7 + " --orbit circle", true);  // the file's amplitude is used
   EXPECT_EQ(run.exit_code, 0) << run.output;
+  // A length unit given beside a file's line that names another is refused at the line.
+  const auto metres = Scratch("metres_path.csv");
+  std::ofstream(metres) << "# units: force kN, length m\ntime,displacement\n0,0\n1,0.005\n2,0\n";
+  run = RunIsolab("cyclic " + table7 + " --path " + metres.string() + " --length-unit mm", true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("metres_path.csv:1: units: the file's line says length m, the length "
+                            "unit given beside it says mm"),
+            std::string::npos)
+      << run.output;
 }
 
 }  // namespace

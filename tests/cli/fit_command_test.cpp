@@ -272,6 +272,20 @@ TEST(FitCommand, DataWithoutUnitsAreRefusedUnlessTheCommandLineGivesThem) {
   EXPECT_EQ(run.exit_code, 2) << run.output;
   run = RunIsolab(command + " --force-unit kN --length-unit mm --json");
   EXPECT_EQ(run.exit_code, 0) << run.output;
+
+  // A file whose line gives its units takes a unit given beside it only if it is the same one:
+  // kN against N would read the forces a thousandfold off, so it is refused at the line.
+  const std::string with_line = "fit " + Data("linear_spring.csv") + " --model " +
+                                Data("three_laws_spec.yaml") + " --budget 300 -q -o " +
+                                output.string();
+  run = RunIsolab(with_line + " --force-unit N --length-unit mm", true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("linear_spring.csv:1: units: the file's line says force kN, the force "
+                            "unit given beside it says N"),
+            std::string::npos)
+      << run.output;
+  std::filesystem::remove(output);
+  EXPECT_EQ(RunIsolab(with_line + " --force-unit kN --length-unit mm").exit_code, 0);
 }
 
 TEST(FitCommand, BuildingOptionsAreRefusedToCyclicTests) {

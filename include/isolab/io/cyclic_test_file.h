@@ -19,8 +19,11 @@
 
 namespace isolab::io {
 
+// The units the caller was given for the files' values (--force-unit, force_unit=); empty where
+// none. A file's "# units:" line gives its own (a given unit that contradicts it is refused);
+// without either, kN and mm.
 struct CyclicTestUnits {
-  std::string force = "kN", length = "mm";  // of the file's values, unless its header says
+  std::string force, length;
 };
 
 struct CyclicTestSet {

@@ -31,7 +31,8 @@ struct DisplacementPathSet {
 };
 
 // Values are converted from the file's units (its "# units:" line, else `force_unit` and
-// `length_unit`) into `into`. Throws InputError.
+// `length_unit` where given, else `into`'s) into `into`. Throws InputError, also for a given unit
+// that contradicts a file's line.
 DisplacementPathSet ReadDisplacementPaths(const std::vector<std::string>& files,
                                           const std::string& force_unit,
                                           const std::string& length_unit, const UnitSystem& into);
