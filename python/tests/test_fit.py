@@ -79,6 +79,15 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
     paused.write_text(spec.read_text() + "pause: 1.0e7\n")
     cases.append((dict(building=paused, specimen="sequential"),
                   r"pause: 1e\+07 is 1e\+09 samples of motion's step; at most 1e\+06"))
+    # A band above the data's Nyquist frequency (50 Hz at 0.01 s) and substeps beyond a run's
+    # steps are the specification's, and named so (not the model's, nor --dt's).
+    for name, extra, message in [
+            ("nyquist", "band: [60, 100]\n",
+             r"band: \[60, 100\] lies above motion's Nyquist frequency \(50, sampled every 0.01\)"),
+            ("substeps", "substeps: 10000\n", r"substeps: 10000 makes 4.5e\+07 steps a simulation")]:
+        variant = tmp_path / f"{name}.yaml"
+        variant.write_text(spec.read_text() + extra)
+        cases.append((dict(building=variant), f"{variant}: " + message))
     for kwargs, message in cases:
         kwargs.setdefault("output", output) if "building" in kwargs else None
         with pytest.raises(isolab.InputError, match=message):

@@ -211,11 +211,13 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   std::vector<double> scale;  // per motion x channel: 1 / sum of squares of the measured
   for (std::size_t m = 0; m < motions.size(); ++m) {
     std::vector<Signal>& filtered = measured.emplace_back();
-    for (const Signal& x : measured_raw[m]) {
-      filtered.push_back(bands[m](x));
+    for (std::size_t c = 0; c < measured_raw[m].size(); ++c) {
+      filtered.push_back(bands[m](measured_raw[m][c]));
       const double sum = SumOfSquares(filtered.back());
       if (!(sum > 0.0)) {
-        throw InputError({model.path}, "a fitted channel is zero throughout (in the band)");
+        throw InputError({motions[m].name},
+                         fmt::format("channel {} is zero throughout{}: nothing to fit",
+                                     channels[c].Name(), bands[m].active() ? " in the band" : ""));
       }
       scale.push_back(1.0 / sum);
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "isolab/analysis/problem.h"
 #include "isolab/analysis/shake_table_measurements.h"
 #include "isolab/analysis/shake_table_prediction.h"
 #include "isolab/analysis/test_data_checks.h"
@@ -110,35 +111,67 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
   return inputs;
 }
 
+namespace {
+
+// What the specification asks of each motion that its data cannot give: a pause of more than a
+// million samples, more steps a simulation than a run may take, a band above the sampling's
+// Nyquist frequency. Each is the specification's, so it names that file.
+void CheckAgainstMotions(const BuildingFitInputs& inputs,
+                         const std::vector<BuildingMotion>& motions) {
+  const BuildingFitSpec& spec = inputs.spec;
+  const std::string& where = inputs.file.path;
+  // A few isolated periods bring the building to rest; a million samples is minutes of it.
+  constexpr double kMaxPauseSamples = 1e6;
+  for (const BuildingMotion& motion : motions) {
+    const double step = SampleStep(motion.measured);
+    const double pause = spec.pause / step;
+    if (spec.sequential && pause > kMaxPauseSamples) {
+      throw InputError({where}, fmt::format("pause: {:g} is {:.3g} samples of {}'s step; at most "
+                                            "{:g} (a few isolated periods bring the building to "
+                                            "rest)",
+                                            spec.pause, pause, motion.name, kMaxPauseSamples));
+    }
+    const double steps = double(motion.measured.time.size()) * spec.substeps;
+    if (steps > double(kDefaultMaxSteps)) {
+      throw InputError({where}, fmt::format("substeps: {} makes {:.3g} steps a simulation of {} "
+                                            "({} samples); at most {} (a run's limit)",
+                                            spec.substeps, steps, motion.name,
+                                            motion.measured.time.size(), kDefaultMaxSteps));
+    }
+    const double nyquist = 0.5 / step;
+    if (spec.band_low && *spec.band_low >= nyquist) {
+      throw InputError({where}, fmt::format("band: [{:g}, {:g}] lies above {}'s Nyquist frequency "
+                                            "({:g}, sampled every {:g}): nothing of the data is "
+                                            "in it",
+                                            *spec.band_low, spec.band_high.value_or(nyquist),
+                                            motion.name, nyquist, step));
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<BuildingMotion> ReadBuildingMotions(BuildingFitInputs* inputs,
                                                 const BuildingData& data) {
   const model::ModelFile& model = inputs->model;
-  if (inputs->file.force_driven) return ReadForceDriven(data, model, &inputs->spec.sequential);
-  const std::size_t levels = LevelMasses(model).size();
   std::vector<BuildingMotion> motions;
-  for (const std::string& path : data.data) {
-    ShakeTableChannels read;
-    if (!data.offsets.empty()) read.offsets = data.offsets;
-    LevelMeasurements measured = ReadShakeTableMeasurements(path, read, model.units, levels);
-    if (!data.quiet) {
-      fmt::print(stderr, "{}: {}: {} samples, levels (slab to roof) = channels {}; {}\n",
-                 data.command, path, measured.time.size(), fmt::join(measured.channels, ","),
-                 measured.reference_note);
-    }
-    motions.push_back({std::filesystem::path(path).stem().string(), std::move(measured)});
-  }
-  // The pause between one specimen's motions is simulated sample by sample: a few isolated
-  // periods are what it is for, and a million samples is minutes of rest at any sampling.
-  constexpr double kMaxPauseSamples = 1e6;
-  for (const BuildingMotion& motion : motions) {
-    const double samples = inputs->spec.pause / SampleStep(motion.measured);
-    if (inputs->spec.sequential && samples > kMaxPauseSamples) {
-      throw InputError({inputs->file.path},
-                       fmt::format("pause: {:g} is {:.3g} samples of {}'s step; at most {:g} (a "
-                                   "few isolated periods bring the building to rest)",
-                                   inputs->spec.pause, samples, motion.name, kMaxPauseSamples));
+  if (inputs->file.force_driven) {
+    motions = ReadForceDriven(data, model, &inputs->spec.sequential);
+  } else {
+    const std::size_t levels = LevelMasses(model).size();
+    for (const std::string& path : data.data) {
+      ShakeTableChannels read;
+      if (!data.offsets.empty()) read.offsets = data.offsets;
+      LevelMeasurements measured = ReadShakeTableMeasurements(path, read, model.units, levels);
+      if (!data.quiet) {
+        fmt::print(stderr, "{}: {}: {} samples, levels (slab to roof) = channels {}; {}\n",
+                   data.command, path, measured.time.size(), fmt::join(measured.channels, ","),
+                   measured.reference_note);
+      }
+      motions.push_back({std::filesystem::path(path).stem().string(), std::move(measured)});
     }
   }
+  CheckAgainstMotions(*inputs, motions);
   return motions;
 }
 

@@ -99,9 +99,15 @@ std::vector<PropertyFactors> ReadModification(const YamlReader& reader, const YA
         for (const auto& k : component) {
           if (is_parameter(k.first.Scalar())) given.push_back(k.first.Scalar());
         }
+        // A pendulum's period is its radius given another way: geometry, which testing, ageing
+        // and the environment do not vary.
+        const std::string why =
+            key == "period" && type == hysteresis::LawType::kFrictionPendulum
+                ? "'period' sets the pendulum's radius, its geometry, which property modification "
+                  "factors do not vary"
+                : fmt::format("'{}' is not a parameter {} gives", key, name);
         reader.Fail(property.first, key_path,
-                    fmt::format("'{}' is not a parameter {} gives (it gives: {})", key, name,
-                                fmt::join(given, ", ")));
+                    fmt::format("{} (it gives: {})", why, fmt::join(given, ", ")));
       }
       PropertyFactors factors;
       factors.component = index;

@@ -147,7 +147,8 @@ TEST(PropertyModification, BadFactorsAreLocated) {
       "units: {force: kN, length: mm, time: s}\nisolation:\n  components: [{name: fps, type: "
       "friction_pendulum, w: 1000, period: 3, mu: 0.05, uy: 0.5}]\n  modification: {fps: "
       "{period: {min: 0.9, max: 1.1}}}\nstructure: {type: sdof, mass: 100 t}\n");
-  EXPECT_NE(period.find("'period' is not a parameter fps gives (it gives: w, mu, uy)"),
+  EXPECT_NE(period.find("'period' sets the pendulum's radius, its geometry, which property "
+                        "modification factors do not vary (it gives: w, mu, uy)"),
             std::string::npos)
       << period;
   const std::string key = ErrorOf(Model(bearing, "{lrb: {mu: {min: 0.9, max: 1.2}}}"));
