@@ -9,6 +9,9 @@ Areas depend one way (docs/architecture.md):
 
 An area may include its own headers and those of the areas listed for it in ALLOWED, nothing
 else: a lower area never sees a higher one (hysteresis knows no YAML, no files, no integrator).
+A relative include ("../x/y.h") that leaves the area's folder is refused whatever it reaches: it
+would pass another area's private header through the table unseen. Every source belongs to an
+area: a file directly under src/ or include/isolab/ is refused.
 Third-party headers are checked too where an area must not see them (yaml-cpp outside model,
 HDF5 outside io and analysis, MPI outside study, SUNDIALS outside integrators).
 
@@ -70,6 +73,8 @@ def main() -> int:
     for path in files:
         area = area_of(path, root)
         if area is None:
+            problems.append(f"{path.relative_to(root)}: belongs to no area (sources live in "
+                            "src/<area>/, public headers in include/isolab/<area>/)")
             continue
         if area not in ALLOWED:
             problems.append(f"{path.relative_to(root)}: area '{area}' is not in the layering table")
@@ -80,6 +85,16 @@ def main() -> int:
                 continue
             header = match.group(1)
             where = f"{path.relative_to(root)}:{number}"
+            if ".." in pathlib.PurePosixPath(header).parts:
+                reached = (path.parent / header).resolve()
+                folder = path.parent
+                while folder.name != area and folder != root:
+                    folder = folder.parent
+                if folder not in reached.parents:
+                    problems.append(f"{where}: {area} includes \"{header}\" by a relative path "
+                                    f"out of its folder: include a public header as "
+                                    f"isolab/<area>/..., or keep the header in {area}")
+                continue
             if header.startswith("isolab/"):
                 target = header.split("/")[1]
                 if target == area:

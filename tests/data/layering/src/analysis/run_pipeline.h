@@ -1,0 +1,2 @@
+// A fixture of scripts/check_layering.py: a private header of analysis.
+#pragma once
