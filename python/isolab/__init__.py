@@ -215,8 +215,8 @@ def _refuse(given, why):
 
 
 def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, budget=60000,
-        global_budget=None, cycles=None, specimen=None, force_unit=None, length_unit=None,
-        threads=0, force=False, quiet=False):
+        global_budget=None, cross_validate=False, cycles=None, specimen=None, force_unit=None,
+        length_unit=None, threads=0, force=False, quiet=False):
     """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES), or
     with building, a whole building model from its shake-table motions by output error.
 
@@ -247,19 +247,30 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
     "objective_start", "objective", "samples", "effective_samples", "correlation_time",
     "evaluations", "global_evaluations", "iterations", "stop" ("converged", "stalled" or
     "budget"), "decrement", "step", "stop_reason", "seconds", "sequential" and "output". cycles
-    and force are refused with building, offsets, output and global_budget without it.
+    and force are refused with building, offsets, output, global_budget and cross_validate
+    without it.
+
+    cross_validate=True (building, two motions or more, not one specimen) is `isolab fit
+    --building --cross-validate --json`: each motion held out in turn, the building fitted to the
+    others and its prediction of the held-out motion compared with it; returns {"folds": [...],
+    "seconds"} (docs/building_fit.md) and writes no model (output is refused with it).
     """
     _one_of(model, "model", building, "shake-table motions")
     data = _paths("data", data)
     if building is not None:
         _refuse([("cycles", cycles is not None), ("force", force)],
                 "applies to cyclic tests, not to building=")
+        if cross_validate and output is not None:
+            raise InputError("output= with cross_validate=True: the cross-validation writes no "
+                             "model (fit all the motions without it for the model)")
         return json.loads(_fit_building(data, _path("building", building),
                                         _optional_path("output", output), seed, budget,
                                         -1 if global_budget is None else global_budget,
                                         specimen or "", offsets or "", force_unit or "",
-                                        length_unit or "", threads, quiet))
-    _refuse([("offsets", offsets is not None), ("global_budget", global_budget is not None)],
+                                        length_unit or "", threads, bool(cross_validate),
+                                        quiet))
+    _refuse([("offsets", offsets is not None), ("global_budget", global_budget is not None),
+             ("cross_validate", cross_validate)],
             "applies to building=, not to cyclic tests")
     _refuse([("output", output is not None)],
             "applies to building=: the cyclic fit writes no file (its components are in the "

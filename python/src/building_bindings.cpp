@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "bindings.h"
+#include "isolab/analysis/building_cross_validation.h"
 #include "isolab/analysis/building_diagnosis.h"
 #include "isolab/analysis/building_diagnosis_report.h"
 #include "isolab/analysis/building_fit.h"
@@ -48,14 +49,14 @@ std::string FitBuilding(const std::vector<std::string>& data, const std::string&
                         const std::string& output, unsigned seed, long budget, long global_budget,
                         const std::string& specimen, const std::string& offsets,
                         const std::string& force_unit, const std::string& length_unit, int threads,
-                        bool quiet) {
+                        bool cross_validate, bool quiet) {
   const analysis::BuildingData read =
       Data(data, "fit", specimen, offsets, force_unit, length_unit, quiet);
   analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(spec_path, read);
   // Where the command line writes it: beside the working directory, named after the spec.
   const std::string path =
       !output.empty() ? output : std::filesystem::path(spec_path).stem().string() + ".fitted.yaml";
-  io::CheckOutputs(inputs.files, {path});
+  if (!cross_validate) io::CheckOutputs(inputs.files, {path});
   const std::vector<analysis::BuildingMotion> motions =
       analysis::ReadBuildingMotions(&inputs, read);
   const analysis::BuildingFitSpec& spec = inputs.spec;
@@ -71,6 +72,10 @@ std::string FitBuilding(const std::vector<std::string>& data, const std::string&
   analysis::BuildingFitResult result;
   {
     py::gil_scoped_release release;
+    if (cross_validate) {
+      return analysis::CrossValidationJson(analysis::CrossValidate(
+          inputs.model, motions, spec, fit, analysis::kCrossValidationDraws, seed));
+    }
     result = analysis::FitBuilding(inputs.model, motions, spec, fit);
   }
   const std::string text = model::FittedBuildingText(
@@ -124,7 +129,7 @@ void BindBuilding(py::module_& module) {
   module.def("_fit_building", &FitBuilding, py::arg("data"), py::arg("building"), py::arg("output"),
              py::arg("seed"), py::arg("budget"), py::arg("global_budget"), py::arg("specimen"),
              py::arg("offsets"), py::arg("force_unit"), py::arg("length_unit"), py::arg("threads"),
-             py::arg("quiet"));
+             py::arg("cross_validate"), py::arg("quiet"));
   module.def("_diagnose_building", &DiagnoseBuilding, py::arg("data"), py::arg("building"),
              py::arg("seed"), py::arg("budget"), py::arg("specimen"), py::arg("offsets"),
              py::arg("threads"), py::arg("quiet"));

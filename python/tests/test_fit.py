@@ -71,6 +71,8 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
         (dict(model=repo / SPEC, offsets="none"), "offsets= applies to building=, not to cyclic"),
         (dict(model=repo / SPEC, global_budget=500), "global_budget= applies to building="),
         (dict(building=spec, global_budget=50), "global_budget"),
+        (dict(model=repo / SPEC, cross_validate=True), "cross_validate= applies to building="),
+        (dict(building=spec, cross_validate=True), "output= with cross_validate=True"),
         (dict(model=repo / SPEC, output=output), "output= applies to building="),
     ]
     # A pause between one specimen's motions of ten million seconds (a billion samples) is not a
@@ -93,3 +95,6 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
         with pytest.raises(isolab.InputError, match=message):
             isolab.fit(data, budget=300, quiet=True, **kwargs)
         assert not output.exists(), message
+    # Cross-validation holds one motion out and fits the others: one motion is not enough.
+    with pytest.raises(isolab.InputError, match="it needs two motions or more"):
+        isolab.fit(data, building=spec, cross_validate=True, budget=300, quiet=True)

@@ -140,6 +140,18 @@ identification::SearchOutcome GlobalStage(const identification::Objective& objec
 
 }  // namespace
 
+std::vector<BuildingChannel> FittedChannels(const model::ModelFile& model,
+                                            const BuildingFitSpec& spec) {
+  if (!spec.channels.empty()) return spec.channels;
+  std::vector<BuildingChannel> channels;
+  const std::size_t levels = LevelMasses(model).size();
+  for (const auto kind :
+       {BuildingChannel::Kind::kDisplacement, BuildingChannel::Kind::kAcceleration}) {
+    for (std::size_t l = 1; l <= levels; ++l) channels.push_back({kind, int(l)});
+  }
+  return channels;
+}
+
 BuildingFitResult FitBuilding(const model::ModelFile& model,
                               const std::vector<BuildingMotion>& motions,
                               const BuildingFitSpec& spec,
@@ -149,13 +161,7 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   if (motions.empty()) throw InputError({model.path}, "no motions to fit");
   if (spec.parameters.empty()) throw InputError({model.path}, "no parameters to fit");
   const std::size_t levels = LevelMasses(model).size();
-  std::vector<BuildingChannel> channels = spec.channels;
-  if (channels.empty()) {
-    for (const auto kind :
-         {BuildingChannel::Kind::kDisplacement, BuildingChannel::Kind::kAcceleration}) {
-      for (std::size_t l = 1; l <= levels; ++l) channels.push_back({kind, int(l)});
-    }
-  }
+  const std::vector<BuildingChannel> channels = FittedChannels(model, spec);
   for (const BuildingChannel& channel : channels) {
     if (std::size_t(channel.level) > levels) {
       throw InputError({model.path},

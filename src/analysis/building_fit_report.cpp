@@ -1,6 +1,7 @@
 #include "isolab/analysis/building_fit_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -71,6 +72,62 @@ std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
   json["sequential"] = sequential;
   json["output"] = output;
   return json.dump(2);
+}
+
+std::string CrossValidationJson(const CrossValidation& outcome) {
+  nlohmann::json json;
+  json["folds"] = nlohmann::json::array();
+  for (const HeldOutMotion& fold : outcome.folds) {
+    nlohmann::json entry = {{"held_out", fold.motion},
+                            {"fitted_on", fold.fitted_on},
+                            {"objective_fitted", fold.objective_fitted},
+                            {"objective_held_out", fold.objective_held_out},
+                            {"stop", fold.stop},
+                            {"evaluations", fold.evaluations}};
+    for (const ChannelError& c : fold.channels) {
+      entry["channels"].push_back({{"channel", c.channel}, {"nrmse", c.nrmse}});
+    }
+    if (fold.band) {
+      entry["band"] = {{"samples", fold.band->samples},
+                       {"coverage",
+                        {{"isolator_displacement", fold.band->isolator_coverage},
+                         {"roof_acceleration", fold.band->roof_coverage}}},
+                       {"peak_inside",
+                        {{"isolator_displacement", fold.band->isolator_peak_inside},
+                         {"roof_acceleration", fold.band->roof_peak_inside}}}};
+    }
+    json["folds"].push_back(std::move(entry));
+  }
+  json["seconds"] = outcome.seconds;
+  return json.dump(2);
+}
+
+std::string CrossValidationText(const CrossValidation& outcome) {
+  std::string text =
+      "| held out | fitted on | mean NRMSE^2 fitted | mean NRMSE^2 held out | NRMSE held out, per "
+      "channel | band coverage: isolator, roof (peaks inside) |\n|---|---|---|---|---|---|\n";
+  for (const HeldOutMotion& fold : outcome.folds) {
+    std::vector<std::string> channels, fitted_on = fold.fitted_on;
+    for (const ChannelError& c : fold.channels) {
+      channels.push_back(fmt::format("{} {:.3f}", c.channel, c.nrmse));
+    }
+    const std::string band =
+        fold.band ? fmt::format("{:.0f} %, {:.0f} % ({}, {})", 100 * fold.band->isolator_coverage,
+                                100 * fold.band->roof_coverage,
+                                fold.band->isolator_peak_inside ? "yes" : "no",
+                                fold.band->roof_peak_inside ? "yes" : "no")
+                  : std::string("-");
+    text += fmt::format("| {} | {} | {:.4g} ({}) | {:.4g} | {} | {} |\n", fold.motion,
+                        fmt::join(fitted_on, ", "), fold.objective_fitted, fold.stop,
+                        fold.objective_held_out, fmt::join(channels, ", "), band);
+  }
+  text += fmt::format(
+      "\nEach motion predicted by the building fitted to the others ({:.1f} s): the held-out "
+      "error is the one to quote for this model; where it is well above the fitted one, the "
+      "parameters move with the motion and the model lacks something that changes between "
+      "motions.\n",
+      outcome.seconds);
+  return text;
 }
 
 }  // namespace isolab::analysis

@@ -36,11 +36,16 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
       options.length_unit, options.quiet,    "isolab fit --building", {}};
   analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(options.building, data);
   const model::ModelFile& model = inputs.model;
+  if (options.cross_validate && !options.output.empty()) {
+    throw InputError({"command line"},
+                     "--cross-validate writes no model (each held-out fit is a step of the "
+                     "check): -o does not apply; fit all the motions without it for the model");
+  }
   const std::string output =
       !options.output.empty()
           ? options.output
           : std::filesystem::path(options.building).stem().string() + ".fitted.yaml";
-  io::CheckOutputs(inputs.files, {output});
+  if (!options.cross_validate) io::CheckOutputs(inputs.files, {output});
   const std::vector<analysis::BuildingMotion> motions =
       analysis::ReadBuildingMotions(&inputs, data);
   const analysis::BuildingFitSpec& spec = inputs.spec;
@@ -60,6 +65,13 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   }
   analysis::BuildingFitResult result;
   try {
+    if (options.cross_validate) {
+      const analysis::CrossValidation outcome = analysis::CrossValidate(
+          model, motions, spec, fit, analysis::kCrossValidationDraws, options.seed);
+      out << (options.json ? analysis::CrossValidationJson(outcome) + "\n"
+                           : analysis::CrossValidationText(outcome));
+      return;
+    }
     result = analysis::FitBuilding(model, motions, spec, fit);
   } catch (const InvalidParameter& error) {
     // Only the search's settings are checked so, and each is an option of this command.

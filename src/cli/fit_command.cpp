@@ -133,6 +133,9 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                    "least-squares refinement; 0 refines from the specification's start (default: "
                    "100 per parameter, at most half the budget)")
       ->check(Between(0, 1e9));
+  command->add_flag("--cross-validate", options.cross_validate,
+                    "With --building and two motions or more: fit the building to all but one, "
+                    "predict the one held out, each in turn; writes no model");
   command->add_option("--cycles", options.cycles,
                       "Whole cycles to fit, 1-based, e.g. --cycles 3 as the paper fits HDRB tests "
                       "(default: every test's whole history)");
@@ -165,6 +168,10 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   if (options.global_budget >= 0) {
     throw InputError({"command line"},
                      "--global-budget applies to --building, not to cyclic tests");
+  }
+  if (options.cross_validate) {
+    throw InputError({"command line"},
+                     "--cross-validate applies to --building, not to cyclic tests");
   }
   const model::FitSpec spec = model::LoadFitSpec(options.spec);
   const std::string output =

@@ -22,10 +22,11 @@ struct FitOptions {
   std::string offsets;            // --building: accelerometer offsets; empty: pre-event
   unsigned seed = 1;
   long budget = 60000;
-  long global_budget = -1;  // --building: the CMA-ES stage's simulations; -1: the default
-  std::vector<int> cycles;  // 1-based; empty: SelectCycles' default
-  std::string specimen;     // "sequential", "independent"; empty: the data's header
-  std::string output;       // fitted model file; default: <spec stem>.fitted.yaml
+  long global_budget = -1;      // --building: the CMA-ES stage's simulations; -1: the default
+  bool cross_validate = false;  // --building: each motion predicted by a fit of the others
+  std::vector<int> cycles;      // 1-based; empty: SelectCycles' default
+  std::string specimen;         // "sequential", "independent"; empty: the data's header
+  std::string output;           // fitted model file; default: <spec stem>.fitted.yaml
   // Of the data, unless a file's "# units:" line says; a file without one needs both.
   std::string force_unit, length_unit;
   int threads = 0;     // 0: every hardware thread (speed only: the result is the same)

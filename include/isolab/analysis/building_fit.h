@@ -93,6 +93,10 @@ struct BuildingFitResult {
   double seconds = 0.0;
 };
 
+// The channels a fit compares: the spec's, or every level's displacement and acceleration.
+std::vector<BuildingChannel> FittedChannels(const model::ModelFile& model,
+                                            const BuildingFitSpec& spec);
+
 // Throws InputError for a spec that names what the model lacks, a channel beyond the levels or
 // not measured in a motion, motions without samples, and FitOptions::Validate's InvalidParameter.
 BuildingFitResult FitBuilding(const model::ModelFile& model,

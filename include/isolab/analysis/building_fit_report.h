@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "isolab/analysis/building_cross_validation.h"
 #include "isolab/analysis/building_fit.h"
 
 namespace isolab::analysis {
@@ -25,5 +26,15 @@ std::string BuildingFitProgressLine(const identification::FitProgress& progress)
 // "sequential" (the motions were one specimen) and "output" (where the fitted model went).
 std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
                             const std::string& output);
+
+// A cross-validation as `isolab fit --building --cross-validate --json` prints it and
+// isolab.fit(building=..., cross_validate=True) returns it: "folds" (held_out, fitted_on,
+// objective_fitted, objective_held_out, channels (channel, nrmse), stop, evaluations and, for
+// shake-table motions, band (samples, coverage and peak_inside of the isolator displacement and
+// roof acceleration)) and "seconds".
+std::string CrossValidationJson(const CrossValidation& outcome);
+
+// Its text: one table row per held-out motion, then what the numbers mean.
+std::string CrossValidationText(const CrossValidation& outcome);
 
 }  // namespace isolab::analysis
