@@ -27,6 +27,12 @@ CrossValidation CrossValidate(const model::ModelFile& model,
                      "the state the motions before it left, which a fit without it cannot give; "
                      "give the motions as independent tests");
   }
+  if (spec.band_low || spec.band_high) {
+    throw InputError({model.path},
+                     "cross-validation compares whole histories: with the specification's band "
+                     "the fitted and held-out errors would be different quantities; leave band: "
+                     "out to cross-validate");
+  }
   const std::vector<BuildingChannel> channels = FittedChannels(model, spec);
   CrossValidation out;
   for (std::size_t held = 0; held < motions.size(); ++held) {
@@ -55,7 +61,11 @@ CrossValidation CrossValidate(const model::ModelFile& model,
       fold.objective_held_out += nrmse * nrmse / double(channels.size());
     }
     if (band_samples > 0 && !measured.table_acceleration.empty()) {
-      fold.band = PredictBand(fit.fitted, motions[held], band_samples, seed);
+      try {
+        fold.band = PredictBand(fit.fitted, motions[held], band_samples, seed, spec.substeps);
+      } catch (const InputError& error) {
+        fold.band_refused = error.what();
+      }
     }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();

@@ -101,12 +101,15 @@ identification::SearchOutcome GlobalStage(const identification::Objective& objec
                                           double value_at_start) {
   const long dimension = long(start.size());
   const long chunk = identification::FirstChunkEvaluations(int(dimension), options.islands);
-  const long budget = options.global_budget >= 0
-                          ? options.global_budget
-                          : std::max(options.budget / 2,
-                                     std::min(chunk, options.budget - 10 * (2 * dimension + 1)));
-  // The refinement needs a Jacobian and a step at least.
+  // The refinement needs a Jacobian and a step at least: the default leaves it that, a global
+  // budget given that does not is refused.
   const long refinement = 2 * dimension + 2;
+  const long budget =
+      options.global_budget >= 0
+          ? options.global_budget
+          : std::min(std::max(options.budget / 2,
+                              std::min(chunk, options.budget - 10 * (2 * dimension + 1))),
+                     options.budget - refinement);
   if (budget > options.budget - refinement) {
     throw InvalidParameter({"global_budget", double(budget),
                             fmt::format("must leave the refinement at least {} of the budget of {} "
@@ -130,11 +133,12 @@ identification::SearchOutcome GlobalStage(const identification::Objective& objec
   global.polish_share = 0.0;
   identification::SearchOutcome outcome =
       identification::SearchUnitCube(objective, int(dimension), start, global, "mean NRMSE^2");
-  if (outcome.stop == identification::FitStop::kBudget) {
-    outcome.stop_reason = fmt::format(
-        "global search: {} simulations of CMA-ES ({} generations), best mean NRMSE^2 {:.6g}",
-        outcome.evaluations, outcome.generations, outcome.value);
-  }
+  // Said as the first stage of two: CMA-ES's own convergence is not the fit's.
+  outcome.stop_reason = fmt::format(
+      "global search: {} simulations of CMA-ES ({} generations{}), best mean NRMSE^2 {:.6g}",
+      outcome.evaluations, outcome.generations,
+      outcome.stop == identification::FitStop::kConverged ? ", its convergence stop met" : "",
+      outcome.value);
   return outcome;
 }
 
@@ -301,8 +305,12 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
                   result.search.point},
         std::pair{std::string("the specification's start"), start}}) {
     if (!refined.empty() && point == result.search.point) break;
+    // An IPOP restart can take the global stage past its budget by a population; the first
+    // refinement still gets a Jacobian and a step, the second only what is left.
+    const long least = 2L * long(start.size()) + 2;
     local.budget = options.budget - spent;
-    if (!refined.empty() && local.budget < 2L * long(start.size()) + 2) break;
+    if (!refined.empty() && local.budget < least) break;
+    local.budget = std::max(local.budget, least);
     refined.emplace_back(from, identification::RefineLeastSquares(stacked, point, local));
     spent += refined.back().second.evaluations;
   }

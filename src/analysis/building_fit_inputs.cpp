@@ -147,6 +147,21 @@ void CheckAgainstMotions(const BuildingFitInputs& inputs,
                                             motion.name, nyquist, step));
     }
   }
+  // One specimen's motions are one run: their samples and the pauses between them, together.
+  if (spec.sequential && motions.size() > 1) {
+    double steps = 0.0;
+    for (std::size_t m = 0; m < motions.size(); ++m) {
+      steps += double(motions[m].measured.time.size());
+      if (m > 0) steps += spec.pause / SampleStep(motions[m].measured);
+    }
+    steps *= spec.substeps;
+    if (steps > double(kDefaultMaxSteps)) {
+      throw InputError({where}, fmt::format("substeps: {} makes {:.3g} steps of the one run the "
+                                            "motions and pauses of one specimen make; at most {} "
+                                            "(a run's limit)",
+                                            spec.substeps, steps, kDefaultMaxSteps));
+    }
+  }
 }
 
 }  // namespace

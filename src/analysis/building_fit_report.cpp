@@ -96,6 +96,7 @@ std::string CrossValidationJson(const CrossValidation& outcome) {
                         {{"isolator_displacement", fold.band->isolator_peak_inside},
                          {"roof_acceleration", fold.band->roof_peak_inside}}}};
     }
+    if (!fold.band_refused.empty()) entry["band_refused"] = fold.band_refused;
     json["folds"].push_back(std::move(entry));
   }
   json["seconds"] = outcome.seconds;
@@ -116,7 +117,8 @@ std::string CrossValidationText(const CrossValidation& outcome) {
                                 100 * fold.band->roof_coverage,
                                 fold.band->isolator_peak_inside ? "yes" : "no",
                                 fold.band->roof_peak_inside ? "yes" : "no")
-                  : std::string("-");
+        : fold.band_refused.empty() ? std::string("-")
+                                    : std::string("none: ") + fold.band_refused;
     text += fmt::format("| {} | {} | {:.4g} ({}) | {:.4g} | {} | {} |\n", fold.motion,
                         fmt::join(fitted_on, ", "), fold.objective_fitted, fold.stop,
                         fold.objective_held_out, fmt::join(channels, ", "), band);

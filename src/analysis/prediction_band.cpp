@@ -32,7 +32,7 @@ double Rms(const Signal& x) {
 }  // namespace
 
 PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion, int samples,
-                           unsigned seed) {
+                           unsigned seed, int substeps) {
   ParameterDraws draws(model, seed);
   const std::vector<BuildingChannel> channels = {
       {BuildingChannel::Kind::kDisplacement, 1},
@@ -43,7 +43,7 @@ PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& 
   for (int s = 0; s < samples; ++s) {
     ChannelHistories run;
     try {
-      run = SimulateChannels(draws.Next(), {motion}, channels, false, 0.0);
+      run = SimulateChannels(draws.Next(), {motion}, channels, false, 0.0, substeps);
     } catch (const std::exception&) {
       ++band.refused;  // a draw beyond a law's rules (k1 > k0, say) is no building
       continue;

@@ -74,9 +74,10 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     }
     result = analysis::FitBuilding(model, motions, spec, fit);
   } catch (const InvalidParameter& error) {
-    // Only the search's settings are checked so, and each is an option of this command.
+    // The search's settings are this command's options: said by their names.
     std::string text = error.violation().Describe();
-    if (text.rfind("global_budget", 0) == 0) text.replace(0, 13, "--global-budget");
+    if (text.rfind("global_budget", 0) != 0) throw;
+    text.replace(0, 13, "--global-budget");
     throw InputError({"command line"}, text);
   }
   const std::string text = model::FittedBuildingText(

@@ -131,7 +131,8 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
       ->add_option("--global-budget", options.global_budget,
                    "With --building: simulations of the global search (CMA-ES) before the "
                    "least-squares refinement; 0 refines from the specification's start (default: "
-                   "100 per parameter, at most half the budget)")
+                   "half the budget, or one chunk of CMA-ES generations where that is more and "
+                   "the budget allows it)")
       ->check(Between(0, 1e9));
   command->add_flag("--cross-validate", options.cross_validate,
                     "With --building and two motions or more: fit the building to all but one, "

@@ -86,12 +86,16 @@ TEST(BuildingCrossValidation, ALinearIsolationFittedToAYieldingOneMissesTheOther
   EXPECT_GT(worst, 3.0);
 }
 
-TEST(BuildingCrossValidation, OneMotionAndOneSpecimensMotionsAreRefused) {
+TEST(BuildingCrossValidation, OneMotionOneSpecimensMotionsAndABandAreRefused) {
   const model::ModelFile truth = Model(BuildingText(kBilinear));
   std::vector<BuildingMotion> motions = TwoMotions(truth, 0.01, 900.0);
   BuildingFitSpec spec = Spec({"stories.stiffness"});
   EXPECT_THROW(CrossValidate(truth, {motions[0]}, spec, Options(300), 0, 1), InputError);
   spec.sequential = true;
+  EXPECT_THROW(CrossValidate(truth, motions, spec, Options(300), 0, 1), InputError);
+  // A band makes the fitted error (in it) and the held-out one (whole) different quantities.
+  spec.sequential = false;
+  spec.band_low = 0.1;
   EXPECT_THROW(CrossValidate(truth, motions, spec, Options(300), 0, 1), InputError);
 }
 

@@ -30,6 +30,7 @@ struct HeldOutMotion {
   std::string stop;                    // the fit's refinement stop ("converged", ...)
   long evaluations = 0;
   std::optional<PredictionBand> band;  // shake-table motions, with band draws asked for
+  std::string band_refused;            // why no band could be drawn (a fold's wide uncertainty)
 };
 
 // Parameter sets drawn for each held-out motion's band by the command line and Python: enough for
@@ -41,9 +42,11 @@ struct CrossValidation {
   double seconds = 0.0;
 };
 
-// Throws InputError for fewer than two motions and for motions of one specimen (a held-out
-// motion's start is the state the others left, which a fit without it cannot give), and what
-// FitBuilding throws. `band_samples` parameter sets (0: none; else >= 2) drawn with `seed`.
+// Throws InputError for fewer than two motions, for motions of one specimen (a held-out motion's
+// start is the state the others left, which a fit without it cannot give) and for a spec with a
+// band (the held-out error is over the whole history), and what FitBuilding throws. A fold whose
+// fit gives no band (an uncertainty too wide to draw from) says why and the others go on.
+// `band_samples` parameter sets (0: none; else >= 2) drawn with `seed`.
 CrossValidation CrossValidate(const model::ModelFile& model,
                               const std::vector<BuildingMotion>& motions,
                               const BuildingFitSpec& spec,

@@ -37,7 +37,8 @@ std::string CoverageSentence(const PredictionBand& band, const std::string& leng
 
 // Draws `samples` parameter sets (>= 2) with `seed` and runs each (one motion, from rest). Throws
 // InputError when the model carries no uncertainty or names a parameter it lacks.
+// `substeps` integration steps per measured sample, as the fit ran (building_fit.h).
 PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion, int samples,
-                           unsigned seed);
+                           unsigned seed, int substeps = 1);
 
 }  // namespace isolab::analysis
