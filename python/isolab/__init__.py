@@ -352,7 +352,8 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, run
 
 
 def design(design_file, *, output=None, jobs=0, quiet=False):
-    """`isolab design`: an isolated building designed as ASCE 7-16 chapter 17 asks.
+    """`isolab design`: an isolated building designed as ASCE 7-16 chapter 17 or EN 1998-1 section
+    10 asks (the target's code).
 
     design_file: the design file (YAML, docs/design.md). output (the folder; default the design's
     output.directory, else its file name's stem), jobs (worker processes; 0: every hardware
@@ -368,9 +369,12 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     of the largest value per quantity), "records" (name, files, factor), "period_range" (s),
     "statistic" ("mean" with at least 7 records, else "max"), "summary" (the command line's text)
     "output", "warnings" (each run warning, per bound: "bound", "text" and "runs", the count of
-    the bound's runs that gave it; each also issued as an IsolabWarning) and "capacity_checks"
-    (D_TM against the displacement capacity of each group of isolators: "isolators", "D_TM",
-    "capacity", "basis" and "met", None where the laws give no capacity).
+    the bound's runs that gave it; each also issued as an IsolabWarning), "code" ("ASCE 7-16" or
+    "EN 1998-1:2004", the target's), "design_values" ("D_TM" and "V_b" by the code's rule: "value",
+    the governing "bound", its "response_history" value, the "factor" (gamma_x) and "floor" on
+    the "elf" value, and the "rule") and "checks" (each check of design.md: "check", "clause",
+    "unit", "demand", "limit" (None where none is known), "basis", "verdict" ("met", "EXCEEDED"
+    or "not checked") and "isolators").
     Lengths and forces in the model's units. Raises RuntimeError when a run fails.
 
     The folder must be new, empty, or an earlier design's (design_manifest.txt lists what it

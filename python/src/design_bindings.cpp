@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 #include "bindings.h"
@@ -76,16 +77,27 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
     warnings.append(py::dict(py::arg("bound") = outcome.bounds[w.bound].bound,
                              py::arg("text") = w.text, py::arg("runs") = w.runs));
   }
-  py::list capacities;
-  for (const study::CapacityCheck& c : study::CheckCapacities(outcome)) {
-    capacities.append(
-        py::dict(py::arg("isolators") = c.isolators, py::arg("D_TM") = c.demand,
-                 py::arg("capacity") = c.capacity ? py::cast(c.capacity->displacement) : py::none(),
-                 py::arg("basis") = c.capacity ? py::cast(c.capacity->basis) : py::none(),
-                 py::arg("met") = c.capacity ? py::cast(c.met) : py::none()));
+  const study::DesignChecks& c = outcome.checks;
+  py::list checks;
+  for (const study::DesignCheck& k : c.checks) {
+    const auto number = [](double v) { return std::isnan(v) ? py::none() : py::cast(v); };
+    checks.append(py::dict(py::arg("check") = k.check, py::arg("clause") = k.clause,
+                           py::arg("unit") = k.unit, py::arg("demand") = number(k.demand),
+                           py::arg("limit") = number(k.limit), py::arg("basis") = k.basis,
+                           py::arg("verdict") = std::string(study::VerdictName(k.verdict)),
+                           py::arg("isolators") = k.isolators));
   }
+  const auto design_value = [&](const study::DesignValue& v) {
+    return py::dict(py::arg("value") = v.value, py::arg("bound") = outcome.bounds[v.bound].bound,
+                    py::arg("response_history") = v.response_history, py::arg("factor") = v.factor,
+                    py::arg("floor") = v.floor, py::arg("elf") = v.elf, py::arg("rule") = v.rule);
+  };
+  py::dict design_values(py::arg("D_TM") = design_value(c.total_displacement),
+                         py::arg("V_b") = design_value(c.base_shear));
   py::dict result;
-  result["capacity_checks"] = capacities;
+  result["code"] = std::string(model::CodeName(design.code));
+  result["design_values"] = design_values;
+  result["checks"] = checks;
   result["warnings"] = warnings;
   result["bounds"] = bounds;
   result["governing"] = governing;

@@ -68,10 +68,10 @@ def test_the_runs_warnings_come_back_as_data_and_as_isolab_warnings(repo, tmp_pa
     assert all(w["runs"] == 3 for w in weights)
     assert result["summary"].startswith("WARNING: the runs gave ")
     # A single pendulum's law states no displacement capacity: the check says so, as data.
-    [check] = result["capacity_checks"]
+    [check] = [c for c in result["checks"] if c["check"].startswith("D_TM <= displacement")]
     assert check["isolators"] == ["every bearing of the layer"]
-    assert check["capacity"] is None and check["met"] is None
-    assert check["D_TM"] > 0
+    assert check["limit"] is None and check["verdict"] == "not checked"
+    assert check["demand"] == result["design_values"]["D_TM"]["value"] > 0
 
 
 @pytest.mark.parametrize("output", [b"out", 42, {"folder": "out"}, 3.5])

@@ -120,4 +120,4 @@ def test_design_is_the_command_lines(repo, tmp_path, isolab_cli, law, plan):
     for bound, data in result["bounds"].items():
         assert data["elf"]["D_M"] == pytest.approx(values[(bound, "D_M", "elf")], rel=1e-11)
         assert data["values"]["D_TM"] == pytest.approx(values[(bound, "D_TM", "max")], rel=1e-11)
-    assert json.dumps(result["capacity_checks"])  # data, not text
+    assert json.dumps(result["checks"])  # data, not text

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string_view>
+#include <variant>
 
 #include "isolab/core/errors.h"
 #include "isolab/io/target_spectrum_file.h"
@@ -156,13 +158,17 @@ SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
 
 }  // namespace
 
+std::string_view CodeName(DesignCode code) {
+  return code == DesignCode::kEn1998_1 ? "EN 1998-1:2004" : "ASCE 7-16";
+}
+
 DesignFile LoadDesignFile(const std::string& path) {
   const YamlReader reader(path);
   const YAML::Node root = reader.LoadFile();
   reader.RequireMap(root, "");
   reader.CheckKeys(root, "",
                    {"description", "model", "target", "suite", "eccentricity", "drift_limit",
-                    "shear_strain_limit", "output"});
+                    "shear_strain_limit", "gamma_x", "output"});
   DesignFile design;
   design.path = path;
   const fs::path directory = fs::path(path).parent_path();
@@ -211,6 +217,27 @@ DesignFile LoadDesignFile(const std::string& path) {
   const YAML::Node target = reader.Require(root, "", "target");
   design.target = ReadTarget(reader, target, directory, units);
   design.target_key = fmt::format("{}: target", reader.Locate(target).Describe());
+  if (std::holds_alternative<spectra::Eurocode8Spectrum>(design.target)) {
+    design.code = DesignCode::kEn1998_1;
+    design.gamma_x = kRecommendedReliabilityFactor;
+    design.period_range[0] = 0.2;
+    design.period_range[1] = 2.0;
+  }
+  if (root["gamma_x"]) {
+    if (design.code != DesignCode::kEn1998_1) {
+      reader.Fail(root["gamma_x"], "gamma_x",
+                  "is Eurocode 8's reliability factor on the isolators' displacements (EN 1998-1 "
+                  "10.3(2)), and the target is not eurocode8: an ASCE 7-16 design has its ELF "
+                  "floors instead (remove gamma_x)");
+    }
+    design.gamma_x = reader.ReadNumber(root["gamma_x"], "gamma_x");
+    if (!(design.gamma_x >= 1.0 && design.gamma_x <= 2.0)) {
+      reader.Fail(root["gamma_x"], "gamma_x",
+                  fmt::format("{:g} (a factor on displacements in [1, 2]; EN 1998-1 recommends "
+                              "{:g})",
+                              design.gamma_x, kRecommendedReliabilityFactor));
+    }
+  }
 
   const YAML::Node suite = reader.Require(root, "", "suite");
   reader.RequireMap(suite, "suite");

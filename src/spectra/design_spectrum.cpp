@@ -13,7 +13,6 @@ namespace isolab::spectra {
 namespace {
 
 // EN 1998-1 Sec. 3.2.2.2: the longest period Se(T) is defined for (s).
-constexpr double kEurocode8LastPeriod = 4.0;
 
 // S, T_B, T_C, T_D of one ground type and spectrum type.
 struct Eurocode8Shape {

@@ -104,6 +104,22 @@ std::vector<double> RecordSpectrum(const model::StudyRecord& record,
   return sa;
 }
 
+// A record's peak ground acceleration (g) with its entry's scale: a pair's largest horizontal
+// resultant max_t |(a_1, a_2)|, which is its RotD100 at period zero.
+double RecordPeakAcceleration(const model::StudyRecord& record,
+                              const std::vector<io::Record>& read) {
+  std::vector<double> squared;
+  for (std::size_t k = 0; k < record.components.size(); ++k) {
+    const io::Record& r = read[k];
+    const double in_g = record.components[k].scale *
+                        UnitSystem("N", "m", "s").Convert(1.0, r.units, dimension::kAcceleration) /
+                        9.80665;
+    squared.resize(std::max(squared.size(), r.values.size()), 0.0);
+    for (std::size_t i = 0; i < r.values.size(); ++i) squared[i] += std::pow(in_g * r.values[i], 2);
+  }
+  return std::sqrt(*std::max_element(squared.begin(), squared.end()));
+}
+
 // Synthetic pairs matched to the target over [0.1 s, 1.5 x the scaling range's top], written as
 // AT2 files in <output>/records; H1 alone for a building in one direction.
 std::vector<model::StudyRecord> SyntheticRecords(
@@ -118,6 +134,9 @@ std::vector<model::StudyRecord> SyntheticRecords(
   spec.motion.dt = s.dt;
   spec.period_min = std::max(0.1, 5.0 * s.dt);
   spec.period_max = std::min(1.5 * top, s.duration / kCyclesOfLongestPeriod);
+  if (design.code == model::DesignCode::kEn1998_1) {
+    spec.period_max = std::min(spec.period_max, spectra::kEurocode8LastPeriod);
+  }
   spec.tolerance = s.tolerance;
   spec.target_name = spectra::Describe(design.target);
   if (spec.period_max < top) {
@@ -355,6 +374,11 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       design.period_range[0] * out.bounds[bound_index("upper")].elf.period / second;
   out.period_range[1] =
       design.period_range[1] * out.bounds[bound_index("lower")].elf.period / second;
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
+  if (eurocode && out.period_range[1] > spectra::kEurocode8LastPeriod) {
+    out.uncut_range_top = out.period_range[1];
+    out.period_range[1] = spectra::kEurocode8LastPeriod;
+  }
 
   // 3. The suite, scaled to the target.
   const auto suite_start = std::chrono::steady_clock::now();
@@ -375,11 +399,15 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                        : design.records;
   const std::vector<std::vector<io::Record>> suite =
       design.synthetic ? ReadSuite(records, design.model) : given;
-  // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top.
+  // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top (Eurocode 8's
+  // to 4 s at most: beyond it the code gives no spectrum to draw).
+  const double display_top =
+      eurocode ? std::min(2.0 * out.period_range[1], spectra::kEurocode8LastPeriod)
+               : 2.0 * out.period_range[1];
   std::vector<double> grid = periods;
   for (int i = 0; i <= kDisplayPoints; ++i) {
-    grid.push_back(kDisplayLow * std::pow(2.0 * out.period_range[1] / kDisplayLow,
-                                          static_cast<double>(i) / kDisplayPoints));
+    grid.push_back(kDisplayLow *
+                   std::pow(display_top / kDisplayLow, static_cast<double>(i) / kDisplayPoints));
   }
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
@@ -399,19 +427,47 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   out.display_periods = grid;
   for (const double t : grid)
     out.display_target.push_back(spectra::ContinuedSpectralAcceleration(design.target, t));
+  out.target_fraction = eurocode ? kEurocode8SuiteFraction : 1.0;
   std::vector<double> target;
-  for (const double t : periods) target.push_back(spectra::SpectralAcceleration(design.target, t));
+  for (const double t : periods) {
+    target.push_back(out.target_fraction * spectra::SpectralAcceleration(design.target, t));
+  }
   out.scaling = spectra::ScaleSuite(periods, target, in_range);
+  if (eurocode) {
+    // The mean peak ground acceleration must reach the target's a_g S = Se(0) too: where it falls
+    // short, the common factor rises until it does.
+    double sum = 0.0;
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      sum += out.scaling.factors[r] * RecordPeakAcceleration(records[r], suite[r]);
+    }
+    out.mean_pga = sum / static_cast<double>(records.size());
+    out.pga_floor = spectra::SpectralAcceleration(design.target, 0.0);
+    if (out.mean_pga < out.pga_floor) {
+      const double raise = out.pga_floor / out.mean_pga;
+      out.pga_governs = true;
+      out.mean_pga = out.pga_floor;
+      out.scaling.common_factor *= raise;
+      for (double& f : out.scaling.factors) f *= raise;
+      for (double& m : out.scaling.scaled_mean) m *= raise;
+    }
+  }
   for (std::size_t r = 0; r < records.size(); ++r) {
     for (model::GroundMotionSection& c : records[r].components) c.scale *= out.scaling.factors[r];
     out.records[r].shape_factor = out.scaling.pair_shape_factors[r];
     out.records[r].factor = out.scaling.factors[r];
   }
   say(fmt::format(
-      "suite: {} {} scaled to the target over {:.3g} to {:.3g} s (common factor "
-      "{:.4g}, governing at {:.3g} s)",
-      records.size(), directions == 2 ? "pairs" : "records", out.period_range[0],
-      out.period_range[1], out.scaling.common_factor, out.scaling.periods[out.scaling.governing]));
+      "suite: {} {} scaled to {} over {:.3g} to {:.3g} s{} (common factor {:.4g}, governing {})",
+      records.size(), directions == 2 ? "pairs" : "records",
+      eurocode ? "90 % of the target (EN 1998-1 3.2.3.1.2(4))" : "the target (ASCE 7-16 17.3.3)",
+      out.period_range[0], out.period_range[1],
+      out.uncut_range_top > 0.0
+          ? fmt::format(" (cut from {:.3g} s at 4 s, where the code's spectrum ends)",
+                        out.uncut_range_top)
+          : "",
+      out.scaling.common_factor,
+      out.pga_governs ? fmt::format("by the mean PGA {:.4g} g = a_g S", out.pga_floor)
+                      : fmt::format("at {:.3g} s", out.scaling.periods[out.scaling.governing])));
 
   out.suite_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
@@ -544,6 +600,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     }
     out.history_files.push_back((fs::path("histories") / r.file).string());
   }
+  out.checks = CheckDesign(design, out);
   out.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

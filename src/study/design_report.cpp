@@ -22,45 +22,6 @@ std::string UnitOf(DesignQuantity q, const UnitSystem& units) {
   return QuantityUnit(SourceOf(q), units);
 }
 
-// "0.148 %", or why there is no value (a model without story heights has no drift ratio).
-std::string Drift(double ratio) {
-  return std::isnan(ratio) ? "n/a (no story has a height)" : fmt::format("{:.3g} %", ratio);
-}
-
-std::string DriftVerdict(double ratio, double limit) {
-  if (std::isnan(ratio)) return "not checked";
-  return ratio <= limit ? "met" : "EXCEEDED";
-}
-
-// The code's checks, once for the report and the terminal.
-struct Checks {
-  double elf_total = 0.0, rha_total = 0.0, design_total = 0.0;  // D_TM
-  double elf_shear = 0.0, rha_shear = 0.0, design_shear = 0.0;  // V_b
-  double drift = 0.0, drift_limit = 0.0;                        // ratios (%)
-  std::string total_bound, shear_bound;
-};
-
-// `drift_limit`: the design's, a ratio.
-Checks CheckDesign(const DesignOutcome& o, double drift_limit) {
-  Checks c;
-  for (const DesignBound& b : o.bounds) {
-    c.elf_total = std::max(c.elf_total, b.elf_total_displacement);
-    c.elf_shear = std::max(c.elf_shear, b.elf.base_shear);
-  }
-  const std::size_t t = o.governing[Index(DesignQuantity::kTotalDisplacement)];
-  const std::size_t v = o.governing[Index(DesignQuantity::kBaseShear)];
-  c.total_bound = o.bounds[t].bound;
-  c.shear_bound = o.bounds[v].bound;
-  c.rha_total = o.values[t][Index(DesignQuantity::kTotalDisplacement)].value;
-  c.rha_shear = o.values[v][Index(DesignQuantity::kBaseShear)].value;
-  c.design_total = std::max(c.rha_total, kElfDisplacementFloor * c.elf_total);
-  c.design_shear = std::max(c.rha_shear, kElfShearFloor * c.elf_shear);
-  const std::size_t d = o.governing[Index(DesignQuantity::kStoryDriftRatio)];
-  c.drift = o.values[d][Index(DesignQuantity::kStoryDriftRatio)].value;
-  c.drift_limit = 100.0 * drift_limit;
-  return c;
-}
-
 // "upper: PGA 3.26 g exceeds 3 g (in 3 of 3 runs)", a line per bound and warning.
 std::vector<std::string> WarningLines(const DesignOutcome& o) {
   const std::size_t per_bound = o.eccentricities.size() * o.records.size();
@@ -81,24 +42,56 @@ std::string WarningNote(const DesignOutcome& o) {
       o.warnings.size(), o.warnings.size() == 1 ? "" : "s", o.warnings.size() == 1 ? "it" : "them");
 }
 
-// "tfp_1, tfp_2, tfp_3, tfp_4" or "isolation".
-std::string Names(const std::vector<std::string>& isolators) {
-  return fmt::format("{}", fmt::join(isolators, ", "));
+// How the suite was scaled, by the code's rule, with the numbers.
+std::string SuiteRuleText(const model::DesignFile& design, const DesignOutcome& o) {
+  const bool pairs = o.study.directions == 2;
+  const std::string head = fmt::format(
+      "{} {}, each scaled by its own factor so that the mean of their {} is nowhere below {} from "
+      "{:.3g} s ({:g} T_M upper) to {:.3g} s ({:g} T_M lower{})",
+      o.records.size(), pairs ? "pairs" : "records", pairs ? "RotD100 spectra" : "5 % spectra",
+      o.target_fraction == 1.0 ? std::string("the target")
+                               : fmt::format("{:g} % of the target", 100.0 * o.target_fraction),
+      o.period_range[0], design.period_range[0], o.period_range[1], design.period_range[1],
+      o.uncut_range_top > 0.0
+          ? fmt::format(", cut from {:.3g} s at 4 s, where EN 1998-1 3.2.2.2's spectrum ends",
+                        o.uncut_range_top)
+          : "");
+  if (design.code != model::DesignCode::kEn1998_1) {
+    return head + fmt::format(
+                      " (ASCE 7-16 17.3.3). Common factor {:.4g}; the mean touches the target at "
+                      "{:.3g} s.",
+                      o.scaling.common_factor, o.scaling.periods[o.scaling.governing]);
+  }
+  return head +
+         fmt::format(
+             " (EN 1998-1 3.2.3.1.2(4)c with T_1 the isolated period T_M; a narrower range "
+             "section 10 may set for isolated buildings is not at hand here and is not applied), "
+             "and their mean peak ground acceleration{}, {:.4g} g, is not below a_g S = {:.4g} g "
+             "(3.2.3.1.2(4)b). Common factor {:.4g}; {}.",
+             pairs ? " (each pair's largest horizontal resultant)" : "", o.mean_pga, o.pga_floor,
+             o.scaling.common_factor,
+             o.pga_governs
+                 ? std::string("the mean peak ground acceleration sets it")
+                 : fmt::format("the mean touches {:g} % of the target at {:.3g} s",
+                               100.0 * o.target_fraction, o.scaling.periods[o.scaling.governing]));
 }
 
-std::string CapacityRow(const CapacityCheck& c, const UnitSystem& u) {
-  if (!c.capacity) {
-    return fmt::format(
-        "| D_TM <= displacement capacity of {} (ASCE 7-16 17.2.4) | {:.4g} {} | not known from "
-        "the laws (a single pendulum or a lead-rubber bearing states none; an HDR bearing's needs "
-        "shear_strain_limit) | not checked |",
-        Names(c.isolators), c.demand, u.length());
+// "12.3 mm", or "-" for a value the check has none of.
+std::string Amount(double value, const std::string& unit) {
+  return std::isnan(value) ? "-" : fmt::format("{:.4g} {}", value, unit);
+}
+
+// "D_TM 524.6 mm (upper: 480.1 mm, not below 0.8 D_TM (ELF), ASCE 7-16 17.6.3)"
+std::string DesignValueText(std::string_view name, const DesignValue& v, const DesignOutcome& o,
+                            const std::string& unit) {
+  std::string text = fmt::format("design {} {:.5g} {}: {} bound's {:.5g} {}", name, v.value, unit,
+                                 o.bounds[v.bound].bound, v.response_history, unit);
+  if (v.factor != 1.0) text += fmt::format(" x {:g}", v.factor);
+  if (v.floor > 0.0) {
+    text +=
+        fmt::format(", ELF floor {:g} x {:.5g} = {:.5g} {}", v.floor, v.elf, v.floor * v.elf, unit);
   }
-  return fmt::format(
-      "| D_TM <= displacement capacity of {} (ASCE 7-16 17.2.4) | {:.4g} {} | "
-      "{:.4g} {} ({}) | {} |",
-      Names(c.isolators), c.demand, u.length(), c.capacity->displacement, u.length(),
-      c.capacity->basis, c.met ? "met" : "EXCEEDED");
+  return text + fmt::format(" ({})", v.rule);
 }
 
 std::string StatisticText(const DesignOutcome& o) {
@@ -124,6 +117,9 @@ void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::o
     row("D_TM", u.length(), b.elf_total_displacement);
   }
   fmt::print(file, "design,drift_limit,%,limit,{:.12g}\n", 100.0 * design.drift_limit);
+  fmt::print(file, "design,D_TM,{},design,{:.12g}\n", u.length(),
+             o.checks.total_displacement.value);
+  fmt::print(file, "design,V_b,{},design,{:.12g}\n", u.force(), o.checks.base_shear.value);
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (const DesignQuantityInfo& info : DesignQuantities()) {
       const DesignStatistic& s = o.values[b][Index(info.quantity)];
@@ -184,6 +180,14 @@ void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, const fs
   }
 }
 
+void WriteChecks(const DesignOutcome& o, std::ostream& file) {
+  fmt::print(file, "check,clause,unit,demand,limit,basis,verdict\n");
+  for (const DesignCheck& c : o.checks.checks) {
+    fmt::print(file, "{},{},{},{:.12g},{:.12g},{},{}\n", CsvField(c.check), CsvField(c.clause),
+               c.unit, c.demand, c.limit, CsvField(c.basis), VerdictName(c.verdict));
+  }
+}
+
 void WriteSpectra(const DesignOutcome& o, std::ostream& file) {
   fmt::print(file, "period_s,in_range,target_g");
   for (const DesignRecord& r : o.records) fmt::print(file, ",{}_g", r.name);
@@ -208,10 +212,14 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   const auto relative = [&](const std::string& path) {
     return fs::path(path).lexically_relative(directory).string();
   };
-  const Checks c = CheckDesign(o, design.drift_limit);
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
   fmt::print(md, "# Design of {}\n\n", design.model_path);
   if (!design.description.empty()) fmt::print(md, "{}\n\n", design.description);
-  fmt::print(md, "Design file `{}`. Target: {}. Lengths in {}, forces in {}.\n\n", design.path,
+  fmt::print(md, "Design file `{}`. Code: {}, {}. Target: {}. Lengths in {}, forces in {}.\n\n",
+             design.path, model::CodeName(design.code),
+             eurocode ? "section 10 (base isolation)"
+                      : "chapter 17 (seismically isolated "
+                        "structures)",
              spectra::Describe(design.target), u.length(), u.force());
   if (!o.warnings.empty()) fmt::print(md, "**{}**\n\n", WarningNote(o));
 
@@ -223,7 +231,9 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
     fmt::print(md, "- {}: `{}`\n", b.bound, relative(b.model_file));
   }
 
-  fmt::print(md, "\n## Equivalent lateral force procedure (ASCE 7-16 17.5)\n\n");
+  fmt::print(md, "\n## {}\n\n",
+             eurocode ? "Simplified linear analysis (EN 1998-1 10.9.3)"
+                      : "Equivalent lateral force procedure (ASCE 7-16 17.5)");
   fmt::print(md,
              "| bound | D_M ({0}) | T_M (s) | beta_M | B_M | k_M ({1}/{0}) | V_b ({1}) | "
              "D_TM ({0}) |\n|---|---|---|---|---|---|---|---|\n",
@@ -244,6 +254,12 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                    "B_M = 1 / eta (EN 1998-1 Eq. 3.6),"
                  : "D_M = Sa(T_M) g T_M^2 / (4 pi^2 B_M), the target's spectral displacement, "
                    "B_M from ASCE 7-16 Table 17.5-1,");
+  if (eurocode) {
+    fmt::print(md,
+               "D_TM amplifies D_M for torsion by ASCE 7-16 Eq. 17.5-3 (not below 1.15 D_M): EN "
+               "1998-1 10.9.3's own amplification is not at hand here and is not applied. V_b = "
+               "k_M D_M.\n");
+  }
 
   if (const std::string rule = BearingWeightRule(design.model, o); !rule.empty()) {
     fmt::print(md, "\n### Bearing weights\n\n");
@@ -258,14 +274,7 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   }
 
   fmt::print(md, "\n## The suite\n\n");
-  fmt::print(md,
-             "{} {}, each scaled by its own factor so that the mean of their {} is nowhere "
-             "below the target from {:.3g} s ({:g} T_M upper) to {:.3g} s ({:g} T_M lower). "
-             "Common factor {:.4g}; the mean touches the target at {:.3g} s.\n\n",
-             o.records.size(), o.study.directions == 2 ? "pairs" : "records",
-             o.study.directions == 2 ? "RotD100 spectra" : "5 % spectra", o.period_range[0],
-             design.period_range[0], o.period_range[1], design.period_range[1],
-             o.scaling.common_factor, o.scaling.periods[o.scaling.governing]);
+  fmt::print(md, "{}\n\n", SuiteRuleText(design, o));
   fmt::print(md, "| record | shape factor | factor | matched to |\n|---|---|---|---|\n");
   const std::string matched_note =
       o.study.directions == 2 ? "" : " (the pair's RotD100; its H1 runs)";
@@ -308,25 +317,27 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   if (o.warnings.empty()) fmt::print(md, "None: no run warned of implausible input.\n");
   for (const std::string& line : WarningLines(o)) fmt::print(md, "- {}\n", line);
 
+  const DesignChecks& c = o.checks;
+  fmt::print(md, "\n## Design values ({})\n\n", model::CodeName(design.code));
+  fmt::print(md,
+             "| value | governing bound | response history | factor | ELF floor | design value "
+             "| rule |\n|---|---|---|---|---|---|---|\n");
+  const auto value_row = [&](std::string_view name, const DesignValue& v, const std::string& unit) {
+    fmt::print(md, "| {} | {} | {:.4g} {} | {:g} | {} | {:.4g} {} | {} |\n", name,
+               o.bounds[v.bound].bound, v.response_history, unit, v.factor,
+               v.floor > 0.0 ? fmt::format("{:g} x {:.4g} {}", v.floor, v.elf, unit) : "none",
+               v.value, unit, v.rule);
+  };
+  value_row("D_TM", c.total_displacement, u.length());
+  value_row("V_b", c.base_shear, u.force());
+
   fmt::print(md, "\n## Checks\n\n");
-  fmt::print(md, "| check | response history | limit | design value |\n|---|---|---|---|\n");
   fmt::print(md,
-             "| D_TM >= {:g} D_TM (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
-             "{:.4g} {} |\n",
-             kElfDisplacementFloor, c.rha_total, u.length(), c.total_bound,
-             kElfDisplacementFloor * c.elf_total, u.length(), c.design_total, u.length());
-  fmt::print(md,
-             "| V_b >= {:g} V_b (ELF) (ASCE 7-16 17.6.3) | {:.4g} {} ({}) | {:.4g} {} | "
-             "{:.4g} {} |\n",
-             kElfShearFloor, c.rha_shear, u.force(), c.shear_bound, kElfShearFloor * c.elf_shear,
-             u.force(), c.design_shear, u.force());
-  fmt::print(md, "| story drift ratio <= {:g} % | {} | {:g} % | {} |\n", c.drift_limit,
-             Drift(c.drift), c.drift_limit, DriftVerdict(c.drift, c.drift_limit));
-  fmt::print(md,
-             "\n| capacity check | D_TM (design value) | capacity | verdict |\n"
-             "|---|---|---|---|\n");
-  for (const CapacityCheck& check : CheckCapacities(o)) {
-    fmt::print(md, "{}\n", CapacityRow(check, u));
+             "| check | clause | demand | limit | basis | verdict |\n|---|---|---|---|---|---|\n");
+  for (const DesignCheck& check : c.checks) {
+    fmt::print(md, "| {} | {} | {} | {} | {} | {} |\n", check.check, check.clause,
+               Amount(check.demand, check.unit), Amount(check.limit, check.unit), check.basis,
+               VerdictName(check.verdict));
   }
 
   fmt::print(md, "\n## Figures\n\n");
@@ -343,29 +354,12 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   if (o.study.directions == 2) {
     fmt::print(md, "![The orbits of the bearings that move most](design_orbits.png)\n\n");
   }
-  if (!std::isnan(c.drift)) fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
+  if (!std::isnan(o.values[0][Index(DesignQuantity::kStoryDriftRatio)].value)) {
+    fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
+  }
 }
 
 }  // namespace
-
-std::vector<CapacityCheck> CheckCapacities(const DesignOutcome& o) {
-  const double demand = CheckDesign(o, 0.0).design_total;
-  std::vector<CapacityCheck> checks;
-  for (const IsolatorCapacity& c : o.capacities) {
-    const auto same = std::find_if(checks.begin(), checks.end(), [&](const CapacityCheck& k) {
-      return k.capacity.has_value() == c.capacity.has_value() &&
-             (!c.capacity || (k.capacity->displacement == c.capacity->displacement &&
-                              k.capacity->basis == c.capacity->basis));
-    });
-    if (same != checks.end()) {
-      same->isolators.push_back(c.isolator);
-      continue;
-    }
-    checks.push_back(
-        {{c.isolator}, c.capacity, demand, c.capacity && demand <= c.capacity->displacement});
-  }
-  return checks;
-}
 
 void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outcome,
                       const std::string& output_directory, bool figures) {
@@ -374,6 +368,8 @@ void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outc
                               [&](std::ostream& f) { WriteValues(design, outcome, f); });
   io::WriteTextFileAtomically((dir / "design_runs.csv").string(),
                               [&](std::ostream& f) { WriteRuns(design, outcome, dir, f); });
+  io::WriteTextFileAtomically((dir / "design_checks.csv").string(),
+                              [&](std::ostream& f) { WriteChecks(outcome, f); });
   io::WriteTextFileAtomically((dir / "design_spectra.csv").string(),
                               [&](std::ostream& f) { WriteSpectra(outcome, f); });
   io::WriteTextFileAtomically((dir / "design.md").string(), [&](std::ostream& f) {
@@ -383,7 +379,6 @@ void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outc
 
 std::string DesignSummaryText(const model::DesignFile& design, const DesignOutcome& o) {
   const UnitSystem& u = design.model.units;
-  const Checks c = CheckDesign(o, design.drift_limit);
   std::ostringstream out;
   if (!o.warnings.empty()) fmt::print(out, "{}\n", WarningNote(o));
   fmt::print(out, "design values ({}):\n", StatisticText(o));
@@ -397,24 +392,14 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
     }
     fmt::print(out, "  {}\n", o.bounds[o.governing[Index(info.quantity)]].bound);
   }
-  fmt::print(out, "D_TM {:.5g} {} ({}), ELF floor {:g} x {:.5g} = {:.5g}: design D_TM {:.5g} {}\n",
-             c.rha_total, u.length(), c.total_bound, kElfDisplacementFloor, c.elf_total,
-             kElfDisplacementFloor * c.elf_total, c.design_total, u.length());
-  fmt::print(out, "V_b {:.5g} {} ({}), ELF floor {:g} x {:.5g} = {:.5g}: design V_b {:.5g} {}\n",
-             c.rha_shear, u.force(), c.shear_bound, kElfShearFloor, c.elf_shear,
-             kElfShearFloor * c.elf_shear, c.design_shear, u.force());
-  fmt::print(out, "story drift ratio {} against {:g} %: {}\n", Drift(c.drift), c.drift_limit,
-             DriftVerdict(c.drift, c.drift_limit));
-  for (const CapacityCheck& check : CheckCapacities(o)) {
-    if (check.capacity) {
-      fmt::print(out,
-                 "D_TM {:.5g} {} against the displacement capacity of {}, {:.5g} {} ({}): {}\n",
-                 check.demand, u.length(), Names(check.isolators), check.capacity->displacement,
-                 u.length(), check.capacity->basis, check.met ? "met" : "EXCEEDED");
-    } else {
-      fmt::print(out, "displacement capacity of {}: not known from the laws, not checked\n",
-                 Names(check.isolators));
-    }
+  const DesignChecks& c = o.checks;
+  fmt::print(out, "{}\n", DesignValueText("D_TM", c.total_displacement, o, u.length()));
+  fmt::print(out, "{}\n", DesignValueText("V_b", c.base_shear, o, u.force()));
+  fmt::print(out, "checks ({}):\n", model::CodeName(design.code));
+  for (const DesignCheck& check : c.checks) {
+    fmt::print(out, "  {}: {} against {} ({}; {}): {}\n", check.check,
+               Amount(check.demand, check.unit), Amount(check.limit, check.unit), check.basis,
+               check.clause, VerdictName(check.verdict));
   }
   if (!o.warnings.empty()) fmt::print(out, "warnings:\n");
   for (const std::string& line : WarningLines(o)) fmt::print(out, "  {}\n", line);

@@ -23,6 +23,8 @@ TEST(JobResult, RoundTripsThroughBytes) {
   result.pga = 0.1 + 0.7;
   result.warnings = {"first", "", "third, with a comma"};
   result.wall_seconds = 0.25;
+  result.axial_bearings = {"tfp_1", "tfp_2"};
+  result.least_axial_loads = {-0.0, 0.1 + 0.2};
   const JobResult back = Deserialize(Serialize(result));
   EXPECT_EQ(back.job, result.job);
   EXPECT_EQ(back.completed, result.completed);
@@ -33,6 +35,10 @@ TEST(JobResult, RoundTripsThroughBytes) {
   EXPECT_EQ(back.pga, result.pga);
   EXPECT_EQ(back.warnings, result.warnings);
   EXPECT_EQ(back.wall_seconds, result.wall_seconds);
+  EXPECT_EQ(back.axial_bearings, result.axial_bearings);
+  ASSERT_EQ(back.least_axial_loads.size(), 2u);
+  EXPECT_TRUE(std::signbit(back.least_axial_loads[0]));
+  EXPECT_EQ(back.least_axial_loads[1], result.least_axial_loads[1]);
 }
 
 TEST(JobResult, RejectsTruncatedOrPaddedBytes) {

@@ -16,6 +16,10 @@
 //                                        # pairs matched to the target (analysis/matched_pairs.h)
 //     period_range: [0.75, 1.25]         # x T_M of the upper bound, x T_M of the lower bound:
 //                                        # where the suite's mean spectrum must reach the target
+//                                        # (ASCE 7-16 17.3.3; [0.2, 2] for Eurocode 8: EN 1998-1
+//                                        # 3.2.3.1.2(4)c with T_1 = T_M, at most 4 s)
+//   gamma_x: 1.2                         # Eurocode 8 only: the reliability factor on the
+//                                        # isolators' displacements (EN 1998-1 10.3(2))
 //   eccentricity: 0.05                   # accidental, of the footprint (plan models; 0: none)
 //   drift_limit: 0.015                   # story drift ratio (ASCE 7-16 17.6.4.4)
 //   output: {directory: design}          # relative to the working directory
@@ -38,6 +42,14 @@ namespace isolab::model {
 // three (ASCE 7-16 17.3.2 asks for seven, the number from which both take the suite's mean).
 inline constexpr int kMinimumDesignRecords = 3;
 
+// The code whose rules a design follows: its target's. A tabulated target is designed by ASCE
+// 7-16's rules (its spectrum is the user's, its procedure chapter 17's).
+enum class DesignCode { kAsce7_16, kEn1998_1 };
+// "ASCE 7-16", "EN 1998-1:2004"
+std::string_view CodeName(DesignCode code);
+// gamma_x's recommended value (EN 1998-1 10.3(2); a nationally determined parameter).
+inline constexpr double kRecommendedReliabilityFactor = 1.2;
+
 // Pairs generated and matched to the target, so a design runs without a record database.
 struct SyntheticSuite {
   int count = 11;
@@ -53,9 +65,13 @@ struct DesignFile {
   std::string model_path;  // as found (relative to the working directory or absolute)
   ModelFile model;
   spectra::TargetSpectrum target;
+  DesignCode code = DesignCode::kAsce7_16;
+  // The factor on the isolators' displacements in the design values: gamma_x for Eurocode 8, 1
+  // for ASCE 7-16 (whose margin is the 0.8 ELF floor instead).
+  double gamma_x = 1.0;
   std::vector<StudyRecord> records;  // empty when synthetic
   std::optional<SyntheticSuite> synthetic;
-  double period_range[2] = {0.75, 1.25};  // factors on T_M upper, T_M lower
+  double period_range[2] = {0.75, 1.25};  // factors on T_M upper, T_M lower (code default)
   double eccentricity = 0.05;             // plan; 0 in one direction
   double drift_limit = 0.015;
   // The allowable shear strain of rubber bearings (a ratio, 2.5 for 250 %): a high-damping rubber
@@ -69,7 +85,8 @@ struct DesignFile {
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, a model that does
 // not load or has no modification factors, a target out of range, a suite that is neither
 // records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not
-// 0 < lower <= 1 <= upper, an eccentricity given for a one-direction model, a drift limit not in
+// 0 < lower <= 1 <= upper, gamma_x on a target other than Eurocode 8's or outside [1, 2], an
+// eccentricity given for a one-direction model, a drift limit not in
 // (0, 1), a target given on a suite record (the design scales the suite itself).
 DesignFile LoadDesignFile(const std::string& path);
 

@@ -64,6 +64,10 @@ using TargetSpectrum = std::variant<Asce7Spectrum, Eurocode8Spectrum, TabulatedS
 // (a size other than the periods').
 void Validate(const TargetSpectrum& spectrum);
 
+// The last period (s) EN 1998-1 3.2.2.2 defines its elastic spectrum at (beyond: Annex A's
+// displacement spectrum, not modelled here).
+inline constexpr double kEurocode8LastPeriod = 4.0;
+
 // Sa (g) at `period` (s). Throws InvalidParameter ("period") for a period that is negative or not
 // finite, above 4 s for Eurocode 8, or outside a table's [first, last] period; and as Validate.
 double SpectralAcceleration(const TargetSpectrum& spectrum, double period);

@@ -14,9 +14,13 @@
 //     local worker processes, each as `isolab run` runs it;
 //  5. the design values: per bound and record the envelope over the eccentricity cases, then the
 //     mean over the suite when it has at least kMinimumRecordsForMean records (ASCE 7-16 17.6.3.2
-//     allows it), the maximum otherwise; the governing bound per quantity; and the ELF lower
-//     limits on the response-history results (ASCE 7-16 17.6.3: D_TM not below 0.8 D_TM of the
-//     ELF procedure, the isolation system's V_b not below 0.9 of its V_b).
+//     allows it), the maximum otherwise; the governing bound per quantity; and the code's design
+//     values and checks (design_checks.h: ASCE 7-16's ELF floors, or EN 1998-1's gamma_x; drift,
+//     displacement capacities, uplift).
+// A Eurocode 8 design scales its suite by EN 1998-1's rule instead of ASCE's: the mean nowhere
+// below 90 % of the target over the range (3.2.3.1.2(4)c, its range 0.2 T_1 to 2 T_1 with T_1 the
+// isolated period, cut at 4 s where 3.2.2.2's spectrum ends), and the mean peak ground
+// acceleration not below the target's a_g S (3.2.3.1.2(4)b).
 #pragma once
 
 #include <array>
@@ -33,6 +37,7 @@
 #include "isolab/model/study_file.h"
 #include "isolab/spectra/suite_scaling.h"
 #include "isolab/study/bearing_capacity.h"
+#include "isolab/study/design_checks.h"
 #include "isolab/study/design_folder.h"
 #include "isolab/study/job_result.h"
 #include "isolab/study/quantities.h"
@@ -43,6 +48,8 @@ namespace isolab::study {
 inline constexpr std::size_t kMinimumRecordsForMean = 7;
 inline constexpr double kElfDisplacementFloor = 0.8;  // of D_TM (ELF)
 inline constexpr double kElfShearFloor = 0.9;         // of V_b (ELF)
+// EN 1998-1 3.2.3.1.2(4)c: the suite's mean spectrum not below 90 % of the target.
+inline constexpr double kEurocode8SuiteFraction = 0.9;
 
 struct DesignBound {
   std::string bound;       // "nominal", "upper", "lower"
@@ -116,6 +123,15 @@ struct DesignOutcome {
   // target there (continued past a code's or a table's last period at constant displacement).
   std::vector<double> display_periods, display_target;
   double period_range[2] = {0.0, 0.0};  // s
+  // The code's suite rule: the share of the target the scaled mean may not fall below (1: ASCE
+  // 7-16 17.3.3; 0.9: EN 1998-1 3.2.3.1.2(4)c); the range's top before EN 1998-1's cut at 4 s (0:
+  // not cut); EN 1998-1 3.2.3.1.2(4)b's mean peak ground acceleration of the scaled suite (each
+  // pair's largest horizontal resultant) and its floor a_g S (g; both 0 for ASCE 7-16), and
+  // whether that floor set the common factor.
+  double target_fraction = 1.0;
+  double uncut_range_top = 0.0;
+  double mean_pga = 0.0, pga_floor = 0.0;
+  bool pga_governs = false;
   bool mean_of_suite = false;           // values are means (>= 7 records), else maxima
   model::StudyFile study;               // what ran: variants bound x case, the scaled records
   std::vector<JobResult> runs;          // job order (variant-major)
@@ -130,6 +146,7 @@ struct DesignOutcome {
   double building_weight = 0.0;
   std::size_t failed = 0;
   std::vector<DesignWarning> warnings;  // bound by bound, each in the order first given
+  DesignChecks checks;                  // the code's design values and checks
   // [bound][quantity]
   std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
   std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value

@@ -3,7 +3,10 @@
 // folder, each written whole or not at all:
 //   design.md            the report: target, ELF per bound, the scaled suite, the design values,
 //                        the code's checks, and the figures plot_design.py draws
-//   design_values.csv    bound,quantity,unit,statistic,value: the ELF and response-history values
+//   design_values.csv    bound,quantity,unit,statistic,value: the ELF and response-history values,
+//                        and the code's design values (bound "design", statistic "design")
+//   design_checks.csv    check,clause,unit,demand,limit,basis,verdict: the code's checks
+//                        (design_checks.h)
 //   design_runs.csv      every run: bound, eccentricity case, record, factor, its quantities,
 //                        its summary file and the `isolab run` command (from the output folder)
 //                        that reproduces it on the case's model written in models/
@@ -12,7 +15,6 @@
 // Lengths and forces are in the model's units.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,17 +22,6 @@
 #include "isolab/study/design.h"
 
 namespace isolab::study {
-
-// D_TM, the design value (the response history's, not below 0.8 of the ELF's: ASCE 7-16 17.6.3),
-// against the displacement capacity of the isolators that share one (bearing_capacity.h); one
-// entry, without a capacity, for the isolators whose laws give none.
-struct CapacityCheck {
-  std::vector<std::string> isolators;
-  std::optional<BearingCapacity> capacity;
-  double demand = 0.0;  // D_TM (length)
-  bool met = false;     // demand <= capacity; false without a capacity
-};
-std::vector<CapacityCheck> CheckCapacities(const DesignOutcome& outcome);
 
 // `figures`: the report shows the figures plot_design.py draws; without, it says they were not
 // drawn.

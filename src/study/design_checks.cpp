@@ -1,0 +1,179 @@
+#include "isolab/study/design_checks.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "isolab/study/design.h"
+
+namespace isolab::study {
+namespace {
+
+using model::DesignCode;
+
+std::size_t Index(DesignQuantity q) { return static_cast<std::size_t>(q); }
+
+// The governing bound's response-history value of `q`, and the largest ELF value over the bounds.
+DesignValue FromResponseHistory(const DesignOutcome& o, DesignQuantity q, double elf) {
+  DesignValue v;
+  v.bound = o.governing[Index(q)];
+  v.response_history = o.values[v.bound][Index(q)].value;
+  v.elf = elf;
+  return v;
+}
+
+DesignValue TotalDisplacement(const model::DesignFile& design, const DesignOutcome& o) {
+  double elf = 0.0;
+  for (const DesignBound& b : o.bounds) elf = std::max(elf, b.elf_total_displacement);
+  DesignValue v = FromResponseHistory(o, DesignQuantity::kTotalDisplacement, elf);
+  if (design.code == DesignCode::kEn1998_1) {
+    v.factor = design.gamma_x;
+    v.rule = fmt::format("gamma_x {:g} x the response history's, EN 1998-1 10.3(2)", v.factor);
+  } else {
+    v.floor = kElfDisplacementFloor;
+    v.rule = fmt::format("not below {:g} D_TM (ELF), ASCE 7-16 17.6.3", v.floor);
+  }
+  v.value = std::max(v.factor * v.response_history, v.floor * v.elf);
+  return v;
+}
+
+DesignValue BaseShear(const model::DesignFile& design, const DesignOutcome& o) {
+  double elf = 0.0;
+  for (const DesignBound& b : o.bounds) elf = std::max(elf, b.elf.base_shear);
+  DesignValue v = FromResponseHistory(o, DesignQuantity::kBaseShear, elf);
+  if (design.code == DesignCode::kEn1998_1) {
+    v.rule = "the response history's, EN 1998-1 4.3.3.4.3";
+  } else {
+    v.floor = kElfShearFloor;
+    v.rule = fmt::format("not below {:g} V_b (ELF), ASCE 7-16 17.6.3", v.floor);
+  }
+  v.value = std::max(v.response_history, v.floor * v.elf);
+  return v;
+}
+
+DesignCheck DriftCheck(const model::DesignFile& design, const DesignOutcome& o) {
+  DesignCheck c;
+  const std::size_t d = o.governing[Index(DesignQuantity::kStoryDriftRatio)];
+  c.check = "story drift ratio <= drift_limit";
+  c.clause = design.code == DesignCode::kEn1998_1
+                 ? "the design's drift_limit (EN 1998-1 4.4.3.2 limits drifts under the "
+                   "damage-limitation action, which this design does not run)"
+                 : "ASCE 7-16 17.6.4.4";
+  c.unit = "%";
+  c.demand = o.values[d][Index(DesignQuantity::kStoryDriftRatio)].value;
+  c.limit = 100.0 * design.drift_limit;
+  if (std::isnan(c.demand)) {
+    c.basis = "no story has a height";
+    return c;
+  }
+  c.basis = fmt::format("{} bound", o.bounds[d].bound);
+  c.verdict = c.demand <= c.limit ? Verdict::kMet : Verdict::kExceeded;
+  return c;
+}
+
+// One check per group of isolators that share a capacity (and its basis), in the order first met.
+std::vector<DesignCheck> CapacityChecks(const model::DesignFile& design, const DesignOutcome& o,
+                                        double demand) {
+  std::vector<DesignCheck> checks;
+  std::vector<std::optional<BearingCapacity>> capacities;
+  for (const IsolatorCapacity& c : o.capacities) {
+    const auto same = std::find_if(capacities.begin(), capacities.end(), [&](const auto& k) {
+      return k.has_value() == c.capacity.has_value() &&
+             (!k || (k->displacement == c.capacity->displacement && k->basis == c.capacity->basis));
+    });
+    if (same != capacities.end()) {
+      checks[static_cast<std::size_t>(same - capacities.begin())].isolators.push_back(c.isolator);
+      continue;
+    }
+    capacities.push_back(c.capacity);
+    DesignCheck check;
+    check.clause = design.code == DesignCode::kEn1998_1 ? "EN 1998-1 10.3(2)" : "ASCE 7-16 17.2.4";
+    check.unit = design.model.units.length();
+    check.demand = demand;
+    check.isolators = {c.isolator};
+    if (c.capacity) {
+      check.limit = c.capacity->displacement;
+      check.basis = c.capacity->basis;
+      check.verdict = demand <= check.limit ? Verdict::kMet : Verdict::kExceeded;
+    } else {
+      check.basis =
+          "not known from the laws (a single pendulum or a lead-rubber bearing states none; an "
+          "HDR bearing's needs shear_strain_limit)";
+    }
+    checks.push_back(std::move(check));
+  }
+  for (DesignCheck& check : checks) {
+    check.check =
+        fmt::format("D_TM <= displacement capacity of {}", fmt::join(check.isolators, ", "));
+  }
+  return checks;
+}
+
+// Each bearing's least axial load over every run of every bound, case and record.
+std::vector<DesignCheck> UpliftChecks(const model::DesignFile& design, const DesignOutcome& o) {
+  std::vector<DesignCheck> checks;
+  std::vector<std::size_t> lifted;
+  for (const JobResult& run : o.runs) {
+    for (std::size_t j = 0; j < run.axial_bearings.size(); ++j) {
+      const std::string& name = run.axial_bearings[j];
+      auto at = std::find_if(checks.begin(), checks.end(),
+                             [&](const DesignCheck& c) { return c.isolators.front() == name; });
+      if (at == checks.end()) {
+        DesignCheck check;
+        check.check = fmt::format("least axial load of {} > 0 (no uplift)", name);
+        check.clause = design.code == DesignCode::kEn1998_1
+                           ? "EN 1998-1 section 10 (its uplift clause is not at hand here)"
+                           : "ASCE 7-16 17.2.4.7";
+        check.unit = design.model.units.force();
+        check.demand = run.least_axial_loads[j];
+        check.limit = 0.0;
+        check.isolators = {name};
+        checks.push_back(std::move(check));
+        lifted.push_back(0);
+        at = checks.end() - 1;
+      }
+      at->demand = std::min(at->demand, run.least_axial_loads[j]);
+      if (run.least_axial_loads[j] <= 0.0) ++lifted[static_cast<std::size_t>(at - checks.begin())];
+    }
+  }
+  for (std::size_t k = 0; k < checks.size(); ++k) {
+    DesignCheck& c = checks[k];
+    c.verdict = lifted[k] == 0 ? Verdict::kMet : Verdict::kExceeded;
+    c.basis = lifted[k] == 0 ? fmt::format("the least over all {} runs", o.runs.size())
+                             : fmt::format(
+                                   "lifts off in {} of the {} runs: local uplift is allowed only "
+                                   "where the isolator is shown to take it",
+                                   lifted[k], o.runs.size());
+  }
+  return checks;
+}
+
+}  // namespace
+
+std::string_view VerdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kMet:
+      return "met";
+    case Verdict::kExceeded:
+      return "EXCEEDED";
+    case Verdict::kNotChecked:
+      return "not checked";
+  }
+  return "";
+}
+
+DesignChecks CheckDesign(const model::DesignFile& design, const DesignOutcome& o) {
+  DesignChecks c;
+  c.code = design.code;
+  c.total_displacement = TotalDisplacement(design, o);
+  c.base_shear = BaseShear(design, o);
+  c.checks.push_back(DriftCheck(design, o));
+  for (DesignCheck& check : CapacityChecks(design, o, c.total_displacement.value)) {
+    c.checks.push_back(std::move(check));
+  }
+  for (DesignCheck& check : UpliftChecks(design, o)) c.checks.push_back(std::move(check));
+  return c;
+}
+
+}  // namespace isolab::study
