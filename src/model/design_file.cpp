@@ -241,7 +241,7 @@ DesignFile LoadDesignFile(const std::string& path) {
 
   const YAML::Node suite = reader.Require(root, "", "suite");
   reader.RequireMap(suite, "suite");
-  reader.CheckKeys(suite, "suite", {"records", "synthetic", "period_range"});
+  reader.CheckKeys(suite, "suite", {"records", "synthetic", "period_range", "orientations"});
   design.suite_key = fmt::format("{}: suite", reader.Locate(suite).Describe());
   if (suite["records"] && suite["synthetic"]) {
     reader.Fail(suite, "suite", "give records or synthetic, not both");
@@ -302,6 +302,35 @@ DesignFile LoadDesignFile(const std::string& path) {
       reader.Fail(range, "suite.period_range",
                   fmt::format("[{:g}, {:g}] (0 < lower <= 1 <= upper: the range must hold T_M)",
                               design.period_range[0], design.period_range[1]));
+    }
+  }
+  if (directions == 2) design.orientations = {0.0, 90.0};
+  if (suite["orientations"]) {
+    const YAML::Node node = suite["orientations"];
+    const std::string key = "suite.orientations";
+    if (!node.IsSequence() || node.size() == 0 || node.size() > kMaxOrientations) {
+      reader.Fail(node, key,
+                  fmt::format("expected a list of 1 to {} angles (degrees from x to H1), e.g. "
+                              "[0, 90]",
+                              kMaxOrientations));
+    }
+    design.orientations.clear();
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const double angle = reader.ReadNumber(node[i], IndexPath(key, i));
+      if (!(angle >= 0.0 && angle < 360.0)) {
+        reader.Fail(node[i], IndexPath(key, i), fmt::format("{:g} (degrees in [0, 360))", angle));
+      }
+      if (std::find(design.orientations.begin(), design.orientations.end(), angle) !=
+          design.orientations.end()) {
+        reader.Fail(node[i], IndexPath(key, i), fmt::format("{:g} is given twice", angle));
+      }
+      design.orientations.push_back(angle);
+    }
+    if (directions == 1 && design.orientations != std::vector<double>{0.0}) {
+      reader.Fail(node, key,
+                  fmt::format("'{}' moves in one direction: its records run along x alone, with "
+                              "no orientation to turn (give [0], or a model in plan)",
+                              design.model_path));
     }
   }
   if (directions == 1) design.eccentricity = 0.0;

@@ -277,7 +277,7 @@ std::vector<IsolatorCapacity> Capacities(const model::ModelFile& model, double s
 // Every run's warnings, once per bound with the count of the bound's runs that gave each.
 std::vector<DesignWarning> CollectWarnings(const DesignOutcome& out) {
   std::vector<DesignWarning> warnings;
-  const std::size_t per_bound = out.eccentricities.size() * out.records.size();
+  const std::size_t per_bound = out.RunsPerBound();
   for (std::size_t b = 0; b < out.bounds.size(); ++b) {
     const std::size_t first = warnings.size();
     for (std::size_t j = b * per_bound; j < (b + 1) * per_bound; ++j) {
@@ -477,7 +477,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                                 [&](std::ostream& file) { file << bounds.models[i].text; });
   }
 
-  // 4. Every bound x eccentricity case x record.
+  // 4. Every bound x eccentricity case x record x orientation.
   out.eccentricities.push_back({"none", {}});
   if (design.eccentricity > 0.0) {
     for (const analysis::EccentricityCase& c :
@@ -513,13 +513,26 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       study.variants.push_back(std::move(variant));
     }
   }
-  study.records = records;
+  out.orientations = design.orientations;
+  study.records.clear();
+  for (const model::StudyRecord& record : records) {
+    for (const double angle : out.orientations) {
+      model::StudyRecord turned = record;
+      turned.angle += angle;
+      if (angle != 0.0) turned.name += fmt::format("_at{:g}", angle);
+      study.records.push_back(std::move(turned));
+    }
+  }
   study.scales = {1.0};
   study.runs = model::RunFiles::kSummary;
   const std::vector<Job> jobs = ExpandJobs(study);
-  say(fmt::format("runs: {} bounds x {} eccentricity cases x {} records = {} runs on {}",
-                  out.bounds.size(), out.eccentricities.size(), records.size(), jobs.size(),
-                  scheduler.Describe()));
+  say(fmt::format("runs: {} bounds x {} eccentricity cases x {} records{} = {} runs on {}",
+                  out.bounds.size(), out.eccentricities.size(), records.size(),
+                  out.orientations.size() > 1
+                      ? fmt::format(" x {} orientations ({} degrees)", out.orientations.size(),
+                                    fmt::join(out.orientations, ", "))
+                      : "",
+                  jobs.size(), scheduler.Describe()));
   const ScheduleOutcome outcome =
       RunStudy(study, jobs, output_directory, version, scheduler,
                [&](const JobResult& result, std::size_t done, std::size_t total) {
@@ -531,8 +544,10 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   out.warnings = CollectWarnings(out);
   if (out.failed > 0) return out;
 
-  // 5. Design values: per bound and record the envelope over the cases, then over the suite.
+  // 5. Design values: per bound and record the envelope over the cases and orientations, then
+  // over the suite.
   const std::size_t C = out.eccentricities.size(), R = records.size();
+  const std::size_t O = out.orientations.size();
   out.mean_of_suite = R >= kMinimumRecordsForMean;
   for (std::size_t b = 0; b < out.bounds.size(); ++b) {
     std::array<DesignStatistic, kDesignQuantityCount> values;
@@ -543,9 +558,11 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
         // D_M is the base's displacement without eccentricity; the others the envelope.
         const std::size_t cases = info.quantity == DesignQuantity::kDisplacement ? 1 : C;
         for (std::size_t c = 0; c < cases; ++c) {
-          const double v = out.RunOf(b, c, r).values[q];
-          if (!std::isnan(v))
-            per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
+          for (std::size_t o = 0; o < O; ++o) {
+            const double v = out.RunOf(b, c, r, o).values[q];
+            if (!std::isnan(v))
+              per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
+          }
         }
       }
       values[static_cast<std::size_t>(info.quantity)] =
@@ -560,24 +577,34 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     }
   }
 
-  // Histories for the figures: the record of the largest D_TM of the governing bound, each bound
-  // in its worst eccentricity case for that record.
+  // Histories for the figures: the record of the largest D_TM of the governing bound in the
+  // orientation that gave it, each bound in its worst eccentricity case for that record.
   const std::size_t total = static_cast<std::size_t>(DesignQuantity::kTotalDisplacement);
-  const std::vector<double>& governing = out.values[out.governing[total]][total].per_record;
+  const std::size_t g = out.governing[total];
+  const std::vector<double>& governing = out.values[g][total].per_record;
   out.figure_record = static_cast<std::size_t>(
       std::max_element(governing.begin(), governing.end()) - governing.begin());
+  const std::size_t q_total = static_cast<std::size_t>(Quantity::kIsolatorDisplacement);
+  const auto peak = [&](std::size_t b, std::size_t c, std::size_t o) {
+    return out.RunOf(b, c, out.figure_record, o).values[q_total];
+  };
+  double largest = -INFINITY;
+  for (std::size_t c = 0; c < C; ++c) {
+    for (std::size_t o = 0; o < O; ++o) {
+      if (peak(g, c, o) > largest) {
+        largest = peak(g, c, o);
+        out.figure_orientation = o;
+      }
+    }
+  }
   model::StudyFile histories = study;
   histories.variants.clear();
-  histories.records = {records[out.figure_record]};
+  histories.records = {study.records[out.figure_record * O + out.figure_orientation]};
   histories.runs = model::RunFiles::kFull;
-  const std::size_t q_total = static_cast<std::size_t>(Quantity::kIsolatorDisplacement);
   for (std::size_t b = 0; b < out.bounds.size(); ++b) {
     std::size_t worst = 0;
     for (std::size_t c = 1; c < C; ++c) {
-      if (out.RunOf(b, c, out.figure_record).values[q_total] >
-          out.RunOf(b, worst, out.figure_record).values[q_total]) {
-        worst = c;
-      }
+      if (peak(b, c, out.figure_orientation) > peak(b, worst, out.figure_orientation)) worst = c;
     }
     model::StudyVariant variant = study.variants[b * C + worst];
     variant.name = out.bounds[b].bound;

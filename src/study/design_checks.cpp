@@ -12,13 +12,11 @@ namespace {
 
 using model::DesignCode;
 
-std::size_t Index(DesignQuantity q) { return static_cast<std::size_t>(q); }
-
 // The governing bound's response-history value of `q`, and the largest ELF value over the bounds.
 DesignValue FromResponseHistory(const DesignOutcome& o, DesignQuantity q, double elf) {
   DesignValue v;
-  v.bound = o.governing[Index(q)];
-  v.response_history = o.values[v.bound][Index(q)].value;
+  v.bound = o.governing[IndexOf(q)];
+  v.response_history = o.values[v.bound][IndexOf(q)].value;
   v.elf = elf;
   return v;
 }
@@ -54,14 +52,14 @@ DesignValue BaseShear(const model::DesignFile& design, const DesignOutcome& o) {
 
 DesignCheck DriftCheck(const model::DesignFile& design, const DesignOutcome& o) {
   DesignCheck c;
-  const std::size_t d = o.governing[Index(DesignQuantity::kStoryDriftRatio)];
+  const std::size_t d = o.governing[IndexOf(DesignQuantity::kStoryDriftRatio)];
   c.check = "story drift ratio <= drift_limit";
   c.clause = design.code == DesignCode::kEn1998_1
                  ? "the design's drift_limit (EN 1998-1 4.4.3.2 limits drifts under the "
                    "damage-limitation action, which this design does not run)"
                  : "ASCE 7-16 17.6.4.4";
   c.unit = "%";
-  c.demand = o.values[d][Index(DesignQuantity::kStoryDriftRatio)].value;
+  c.demand = o.values[d][IndexOf(DesignQuantity::kStoryDriftRatio)].value;
   c.limit = 100.0 * design.drift_limit;
   if (std::isnan(c.demand)) {
     c.basis = "no story has a height";

@@ -16,15 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t Index(DesignQuantity q) { return static_cast<std::size_t>(q); }
-
 std::string UnitOf(DesignQuantity q, const UnitSystem& units) {
   return QuantityUnit(SourceOf(q), units);
 }
 
 // "upper: PGA 3.26 g exceeds 3 g (in 3 of 3 runs)", a line per bound and warning.
 std::vector<std::string> WarningLines(const DesignOutcome& o) {
-  const std::size_t per_bound = o.eccentricities.size() * o.records.size();
+  const std::size_t per_bound = o.RunsPerBound();
   std::vector<std::string> lines;
   for (const DesignWarning& w : o.warnings) {
     lines.push_back(fmt::format("{}: {} (in {} of its {} runs)", o.bounds[w.bound].bound, w.text,
@@ -122,7 +120,7 @@ void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::o
   fmt::print(file, "design,V_b,{},design,{:.12g}\n", u.force(), o.checks.base_shear.value);
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (const DesignQuantityInfo& info : DesignQuantities()) {
-      const DesignStatistic& s = o.values[b][Index(info.quantity)];
+      const DesignStatistic& s = o.values[b][IndexOf(info.quantity)];
       const std::string unit = UnitOf(info.quantity, u);
       fmt::print(file, "{},{},{},mean,{:.12g}\n", o.bounds[b].bound, info.key, unit, s.mean);
       fmt::print(file, "{},{},{},max,{:.12g}\n", o.bounds[b].bound, info.key, unit, s.max);
@@ -131,15 +129,15 @@ void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::o
 }
 
 // The `isolab run` that reproduces a run of the design, from the output folder: its case's model,
-// its record (pair) and the record's factor. Empty where the command line cannot say it (a pair
-// whose components carry different scales).
-std::string RunCommand(const DesignOutcome& o, std::size_t b, std::size_t c, std::size_t r,
+// its record (pair) at its angle (`s`: the index in the study's records) and the record's factor.
+// Empty where the command line cannot say it (a pair whose components carry different scales).
+std::string RunCommand(const DesignOutcome& o, std::size_t b, std::size_t c, std::size_t s,
                        const fs::path& directory) {
   const fs::path folder = fs::absolute(directory).lexically_normal();
   const auto from_folder = [&](const std::string& path) {
     return fs::absolute(path).lexically_normal().lexically_relative(folder).string();
   };
-  const model::StudyRecord& record = o.study.records[r];
+  const model::StudyRecord& record = o.study.records[s];
   const std::vector<model::GroundMotionSection>& h = record.components;
   if (h.size() > 1 && h[1].scale != h[0].scale) return "";
   std::string command = "isolab run " + from_folder(o.bounds[b].case_model_files[c]) +
@@ -161,20 +159,25 @@ std::string CsvField(const std::string& text) {
 
 void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, const fs::path& directory,
                std::ostream& file) {
-  fmt::print(file, "bound,eccentricity,record,factor,completed");
+  fmt::print(file, "bound,eccentricity,record,orientation,factor,completed");
   for (const QuantityInfo& info : Quantities()) {
     fmt::print(file, ",{} [{}]", info.key, QuantityUnit(info.quantity, design.model.units));
   }
   fmt::print(file, ",file,command\n");
   const std::size_t C = o.eccentricities.size(), R = o.records.size();
+  const std::size_t O = o.orientations.size();
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (std::size_t c = 0; c < C; ++c) {
       for (std::size_t r = 0; r < R; ++r) {
-        const JobResult& run = o.RunOf(b, c, r);
-        fmt::print(file, "{},{},{},{:.12g},{}", o.bounds[b].bound, o.eccentricities[c].name,
-                   o.records[r].name, o.records[r].factor, run.completed ? 1 : 0);
-        for (const double v : run.values) fmt::print(file, ",{:.12g}", v);
-        fmt::print(file, ",{},{}\n", run.file, CsvField(RunCommand(o, b, c, r, directory)));
+        for (std::size_t k = 0; k < O; ++k) {
+          const JobResult& run = o.RunOf(b, c, r, k);
+          fmt::print(file, "{},{},{},{:g},{:.12g},{}", o.bounds[b].bound, o.eccentricities[c].name,
+                     o.records[r].name, o.orientations[k], o.records[r].factor,
+                     run.completed ? 1 : 0);
+          for (const double v : run.values) fmt::print(file, ",{:.12g}", v);
+          fmt::print(file, ",{},{}\n", run.file,
+                     CsvField(RunCommand(o, b, c, r * O + k, directory)));
+        }
       }
     }
   }
@@ -287,19 +290,18 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   }
 
   fmt::print(md, "\n## Response-history design values\n\n");
+  std::vector<std::string> cases;
+  for (const auto& e : o.eccentricities) cases.push_back(e.name);
+  const bool turned = o.orientations.size() > 1;
   fmt::print(md,
-             "{} bounds x {} eccentricity cases ({}) x {} records = {} runs. Per bound and "
-             "record the envelope over the eccentricity cases (D_M: without eccentricity), "
+             "{} bounds x {} eccentricity cases ({}) x {} records{} = {} runs. Per bound and "
+             "record the envelope over the eccentricity cases (D_M: without eccentricity){}, "
              "then the {}.\n\n",
-             o.bounds.size(), o.eccentricities.size(),
-             fmt::join(
-                 [&] {
-                   std::vector<std::string> names;
-                   for (const auto& e : o.eccentricities) names.push_back(e.name);
-                   return names;
-                 }(),
-                 ", "),
-             o.records.size(), o.runs.size(), StatisticText(o));
+             o.bounds.size(), o.eccentricities.size(), fmt::join(cases, ", "), o.records.size(),
+             turned ? fmt::format(" x {} orientations ({} degrees from x to H1)",
+                                  o.orientations.size(), fmt::join(o.orientations, ", "))
+                    : "",
+             o.runs.size(), turned ? " and the orientations" : "", StatisticText(o));
   fmt::print(md, "| quantity |");
   for (const DesignBound& b : o.bounds) fmt::print(md, " {} |", b.bound);
   fmt::print(md, " governing |\n|---|");
@@ -308,9 +310,9 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   for (const DesignQuantityInfo& info : DesignQuantities()) {
     fmt::print(md, "| {} ({}) |", info.label, UnitOf(info.quantity, u));
     for (std::size_t b = 0; b < o.bounds.size(); ++b) {
-      fmt::print(md, " {:.4g} |", o.values[b][Index(info.quantity)].value);
+      fmt::print(md, " {:.4g} |", o.values[b][IndexOf(info.quantity)].value);
     }
-    fmt::print(md, " {} |\n", o.bounds[o.governing[Index(info.quantity)]].bound);
+    fmt::print(md, " {} |\n", o.bounds[o.governing[IndexOf(info.quantity)]].bound);
   }
 
   fmt::print(md, "\n## Warnings\n\n");
@@ -347,14 +349,18 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
     return;
   }
   fmt::print(md,
-             "Histories kept for record {} (the largest D_TM of the governing bound), each "
+             "Histories kept for record {}{} (the largest D_TM of the governing bound), each "
              "bound in its worst eccentricity case: `{}`.\n\n",
-             o.records[o.figure_record].name, fmt::join(o.history_files, "`, `"));
+             o.records[o.figure_record].name,
+             o.orientations.size() > 1
+                 ? fmt::format(" at {:g} degrees", o.orientations[o.figure_orientation])
+                 : "",
+             fmt::join(o.history_files, "`, `"));
   fmt::print(md, "![The worst bearing's loops at the three bounds](design_loops.png)\n\n");
   if (o.study.directions == 2) {
     fmt::print(md, "![The orbits of the bearings that move most](design_orbits.png)\n\n");
   }
-  if (!std::isnan(o.values[0][Index(DesignQuantity::kStoryDriftRatio)].value)) {
+  if (!std::isnan(o.values[0][IndexOf(DesignQuantity::kStoryDriftRatio)].value)) {
     fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
   }
 }
@@ -388,9 +394,9 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
   for (const DesignQuantityInfo& info : DesignQuantities()) {
     fmt::print(out, "{:<54}", fmt::format("{} ({})", info.label, UnitOf(info.quantity, u)));
     for (std::size_t b = 0; b < o.bounds.size(); ++b) {
-      fmt::print(out, " {:>12.5g}", o.values[b][Index(info.quantity)].value);
+      fmt::print(out, " {:>12.5g}", o.values[b][IndexOf(info.quantity)].value);
     }
-    fmt::print(out, "  {}\n", o.bounds[o.governing[Index(info.quantity)]].bound);
+    fmt::print(out, "  {}\n", o.bounds[o.governing[IndexOf(info.quantity)]].bound);
   }
   const DesignChecks& c = o.checks;
   fmt::print(out, "{}\n", DesignValueText("D_TM", c.total_displacement, o, u.length()));

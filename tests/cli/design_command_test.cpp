@@ -87,6 +87,10 @@ TEST(DesignCommand, DesignsThePlanBuildingOnASyntheticSuite) {
   const std::string command = cells[column("command")];
   ASSERT_EQ(command.rfind("isolab run models/five_story_lrb_plan_", 0), 0u) << command;
   EXPECT_NE(command.find("_ex-ey+.yaml --record records/pair"), std::string::npos) << command;
+  // Each pair runs H1 along x, then along y: the last row of a case is the pair turned by 90
+  // degrees, and its command turns it.
+  EXPECT_EQ(cells[column("orientation")], "90");
+  EXPECT_NE(command.find(" --angle 90 "), std::string::npos) << command;
   const testing::Outcome again = testing::RunCommandLine(
       "cd " + (folder / "out").string() + " && " + std::string(ISOLAB_BINARY) +
       command.substr(std::string("isolab").size()) + " --json -q -o " +

@@ -85,6 +85,37 @@ TEST_F(DesignFileTest, ReadsEurocode8AndSyntheticSuites) {
   EXPECT_EQ(design.synthetic->count, 7);
   EXPECT_EQ(design.synthetic->seed, 3u);
   EXPECT_DOUBLE_EQ(design.synthetic->duration, 40.0);
+  // EN 1998-1's rules: its period range (3.2.3.1.2(4)c, T_1 the isolated period) and gamma_x.
+  EXPECT_EQ(design.code, DesignCode::kEn1998_1);
+  EXPECT_DOUBLE_EQ(design.period_range[0], 0.2);
+  EXPECT_DOUBLE_EQ(design.period_range[1], 2.0);
+  EXPECT_DOUBLE_EQ(design.gamma_x, 1.2);
+  EXPECT_EQ(design.orientations, std::vector<double>{0.0});  // one direction
+}
+
+// A building in plan runs each pair H1 along x and then along y unless the file says otherwise;
+// a building in one direction has no orientation to turn.
+TEST_F(DesignFileTest, OrientationsOfThePairs) {
+  const std::string plan =
+      std::string(ISOLAB_SOURCE_DIR) + "/models/design/four_story_tfp_plan.yaml";
+  const std::string head = "model: " + plan + "\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n";
+  const std::string suite = "suite:\n  synthetic: {count: 3}\n";
+  EXPECT_EQ(LoadDesignFile(Write(head + suite)).orientations, (std::vector<double>{0.0, 90.0}));
+  EXPECT_EQ(LoadDesignFile(Write(head + suite + "  orientations: [0, 45, 90]\n")).orientations,
+            (std::vector<double>{0.0, 45.0, 90.0}));
+  EXPECT_TRUE(Holds(ErrorOf(head + suite + "  orientations: [0, 0]\n"),
+                    "design.yaml:5:21: suite.orientations[1]: 0 is given twice"));
+  EXPECT_TRUE(Holds(ErrorOf(head + suite + "  orientations: [360]\n"),
+                    "suite.orientations[0]: 360 (degrees in [0, 360))"));
+  EXPECT_TRUE(Holds(ErrorOf(head + suite + "  orientations: []\n"),
+                    "suite.orientations: expected a list of 1 to 8 angles"));
+  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n" +
+                            kRecords + "  orientations: [0, 90]\n"),
+                    "suite.orientations: '" + (directory_ / "building.yaml").string() +
+                        "' moves in one direction"));
+  EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n" +
+                            kRecords + "gamma_x: 1.2\n"),
+                    "gamma_x: is Eurocode 8's reliability factor"));
 }
 
 TEST_F(DesignFileTest, RefusesWhatTheProcedureCannotDo) {

@@ -18,6 +18,9 @@
 //                                        # where the suite's mean spectrum must reach the target
 //                                        # (ASCE 7-16 17.3.3; [0.2, 2] for Eurocode 8: EN 1998-1
 //                                        # 3.2.3.1.2(4)c with T_1 = T_M, at most 4 s)
+//     orientations: [0, 90]              # in plan: each pair runs at each angle (degrees from
+//                                        # x to H1, added to the pair's own angle): H1 along x,
+//                                        # then along y, by default; [0] in one direction
 //   gamma_x: 1.2                         # Eurocode 8 only: the reliability factor on the
 //                                        # isolators' displacements (EN 1998-1 10.3(2))
 //   eccentricity: 0.05                   # accidental, of the footprint (plan models; 0: none)
@@ -50,6 +53,9 @@ std::string_view CodeName(DesignCode code);
 // gamma_x's recommended value (EN 1998-1 10.3(2); a nationally determined parameter).
 inline constexpr double kRecommendedReliabilityFactor = 1.2;
 
+// The most orientations a pair runs at: each multiplies the design's runs.
+inline constexpr std::size_t kMaxOrientations = 8;
+
 // Pairs generated and matched to the target, so a design runs without a record database.
 struct SyntheticSuite {
   int count = 11;
@@ -72,6 +78,7 @@ struct DesignFile {
   std::vector<StudyRecord> records;  // empty when synthetic
   std::optional<SyntheticSuite> synthetic;
   double period_range[2] = {0.75, 1.25};  // factors on T_M upper, T_M lower (code default)
+  std::vector<double> orientations = {0.0};  // degrees; {0, 90} in plan unless given
   double eccentricity = 0.05;             // plan; 0 in one direction
   double drift_limit = 0.015;
   // The allowable shear strain of rubber bearings (a ratio, 2.5 for 250 %): a high-damping rubber
@@ -85,7 +92,8 @@ struct DesignFile {
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, a model that does
 // not load or has no modification factors, a target out of range, a suite that is neither
 // records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not
-// 0 < lower <= 1 <= upper, gamma_x on a target other than Eurocode 8's or outside [1, 2], an
+// 0 < lower <= 1 <= upper, orientations that are not distinct angles in [0, 360) (at most
+// kMaxOrientations) or other than [0] in one direction, gamma_x on a target other than Eurocode 8's or outside [1, 2], an
 // eccentricity given for a one-direction model, a drift limit not in
 // (0, 1), a target given on a suite record (the design scales the suite itself).
 DesignFile LoadDesignFile(const std::string& path);

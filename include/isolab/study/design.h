@@ -12,7 +12,8 @@
 //  4. every bound x accidental-eccentricity case (analysis/accidental_torsion.h: none, and the
 //     four shifted cases of a building in plan) x record run through the study scheduler on
 //     local worker processes, each as `isolab run` runs it;
-//  5. the design values: per bound and record the envelope over the eccentricity cases, then the
+//  5. the design values: per bound and record the envelope over the eccentricity cases and the
+//     record's orientations (a pair runs H1 along x, then along y: DesignFile::orientations), then the
 //     mean over the suite when it has at least kMinimumRecordsForMean records (ASCE 7-16 17.6.3.2
 //     allows it), the maximum otherwise; the governing bound per quantity; and the code's design
 //     values and checks (design_checks.h: ASCE 7-16's ELF floors, or EN 1998-1's gamma_x; drift,
@@ -85,6 +86,9 @@ enum class DesignQuantity {
 };
 inline constexpr std::size_t kDesignQuantityCount = 7;
 
+// Where a quantity's value is in a bound's array of values.
+inline std::size_t IndexOf(DesignQuantity q) { return static_cast<std::size_t>(q); }
+
 struct DesignQuantityInfo {
   DesignQuantity quantity;
   std::string_view key;    // CSV column
@@ -118,6 +122,8 @@ struct DesignOutcome {
   std::vector<DesignBound> bounds;                         // nominal, upper, lower
   std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
   std::vector<DesignRecord> records;
+  // The angles (degrees from x to H1) each record runs at: model::DesignFile::orientations.
+  std::vector<double> orientations = {0.0};
   spectra::SuiteScaling scaling;
   // The scaling periods and more, from 0.05 s to twice the range's top, for the report; the
   // target there (continued past a code's or a table's last period at constant displacement).
@@ -133,11 +139,15 @@ struct DesignOutcome {
   double mean_pga = 0.0, pga_floor = 0.0;
   bool pga_governs = false;
   bool mean_of_suite = false;           // values are means (>= 7 records), else maxima
-  model::StudyFile study;               // what ran: variants bound x case, the scaled records
-  std::vector<JobResult> runs;          // job order (variant-major)
-  // The run of bound b, eccentricity case c and record r.
-  const JobResult& RunOf(std::size_t b, std::size_t c, std::size_t r) const {
-    return runs[(b * eccentricities.size() + c) * records.size() + r];
+  // What ran: variants bound x case; records the scaled records x orientations (record-major).
+  model::StudyFile study;
+  std::vector<JobResult> runs;  // job order (variant-major)
+  // The run of bound b, eccentricity case c, record r and orientation o.
+  const JobResult& RunOf(std::size_t b, std::size_t c, std::size_t r, std::size_t o = 0) const {
+    return runs[((b * eccentricities.size() + c) * records.size() + r) * orientations.size() + o];
+  }
+  std::size_t RunsPerBound() const {
+    return eccentricities.size() * records.size() * orientations.size();
   }
   // The weights the pendulum bearings carry, in the ELF step and in the runs alike (the nominal
   // bound's; NaN for a bearing that is not a pendulum), and the building's weight (force).
@@ -151,6 +161,7 @@ struct DesignOutcome {
   std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
   std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value
   std::size_t figure_record = 0;           // the record of the histories kept for figures
+  std::size_t figure_orientation = 0;      // and its orientation
   std::vector<std::string> history_files;  // per bound, relative to the output folder
   // Machine-dependent, for progress only: the suite (matching synthetic pairs, spectra), the
   // runs, and everything.
