@@ -23,7 +23,8 @@ install(TARGETS ${isolab_library_targets} EXPORT isolabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/isolab DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-file(GLOB isolab_installed_scripts ${PROJECT_SOURCE_DIR}/scripts/plot_*.py)
+file(GLOB isolab_installed_scripts ${PROJECT_SOURCE_DIR}/scripts/plot_*.py
+     ${PROJECT_SOURCE_DIR}/scripts/design_html.py)
 install(PROGRAMS ${isolab_installed_scripts} DESTINATION ${CMAKE_INSTALL_DATADIR}/isolab/scripts)
 
 install(EXPORT isolabTargets NAMESPACE isolab::

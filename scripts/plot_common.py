@@ -147,6 +147,7 @@ def save(plt, np, fig, path, metadata=False):
             "figure": os.path.basename(stem + ".png"), "pdf": os.path.basename(stem + ".pdf"),
             "dpi": DPI, "size_px": [round(width * DPI), round(height * DPI)],
             "title": title, "axes": describe(np, fig),
+            "legend": [t.get_text() for legend in fig.legends for t in legend.get_texts()],
         }
         with open(stem + ".json", "w", encoding="utf-8") as stream:
             json.dump(sidecar, stream, indent=1)

@@ -370,11 +370,15 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     "statistic" ("mean" with at least 7 records, else "max"), "summary" (the command line's text)
     "output", "warnings" (each run warning, per bound: "bound", "text" and "runs", the count of
     the bound's runs that gave it; each also issued as an IsolabWarning), "code" ("ASCE 7-16" or
-    "EN 1998-1:2004", the target's), "design_values" ("D_TM" and "V_b" by the code's rule: "value",
+    "EN 1998-1:2004", the target's), "design_values" ("D_TM" and "V_b" by the code's rule, and
+    "V_s" with r_i on an ASCE 7-16 design: "value",
     the governing "bound", its "response_history" value, the "factor" (gamma_x) and "floor" on
     the "elf" value, and the "rule") and "checks" (each check of design.md: "check", "clause",
     "unit", "demand", "limit" (None where none is known), "basis", "verdict" ("met", "EXCEEDED"
-    or "not checked") and "isolators").
+    or "not checked") and "isolators") and "parts" (each story's drift ratio and shear, each
+    floor's acceleration, each bearing's displacement and greatest and least axial load:
+    "quantity", "part", "unit", "values" per bound (None where a part has no value, a story
+    without a height its drift ratio) and the "governing" bound).
     Lengths and forces in the model's units. Raises RuntimeError when a run fails.
 
     The folder must be new, empty, or an earlier design's (design_manifest.txt lists what it

@@ -77,10 +77,12 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
     warnings.append(py::dict(py::arg("bound") = outcome.bounds[w.bound].bound,
                              py::arg("text") = w.text, py::arg("runs") = w.runs));
   }
+  const auto number = [](double v) -> py::object {
+    return std::isnan(v) ? py::none() : py::cast(v);
+  };
   const study::DesignChecks& c = outcome.checks;
   py::list checks;
   for (const study::DesignCheck& k : c.checks) {
-    const auto number = [](double v) { return std::isnan(v) ? py::none() : py::cast(v); };
     checks.append(py::dict(py::arg("check") = k.check, py::arg("clause") = k.clause,
                            py::arg("unit") = k.unit, py::arg("demand") = number(k.demand),
                            py::arg("limit") = number(k.limit), py::arg("basis") = k.basis,
@@ -94,7 +96,21 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   };
   py::dict design_values(py::arg("D_TM") = design_value(c.total_displacement),
                          py::arg("V_b") = design_value(c.base_shear));
+  if (c.superstructure) design_values["V_s"] = design_value(c.superstructure->v_s);
+  py::list parts;
+  for (const study::DesignPartValue& part : outcome.parts) {
+    py::dict values;
+    for (std::size_t b = 0; b < outcome.bounds.size(); ++b) {
+      values[py::str(outcome.bounds[b].bound)] = number(part.bounds[b].value);
+    }
+    parts.append(py::dict(
+        py::arg("quantity") = std::string(study::PartQuantityName(part.quantity)),
+        py::arg("part") = part.part,
+        py::arg("unit") = study::PartQuantityUnit(part.quantity, design.model.units),
+        py::arg("values") = values, py::arg("governing") = outcome.bounds[part.governing].bound));
+  }
   py::dict result;
+  result["parts"] = parts;
   result["code"] = std::string(model::CodeName(design.code));
   result["design_values"] = design_values;
   result["checks"] = checks;

@@ -10,12 +10,12 @@ import pytest
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def repo():
     return REPO
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def isolab_cli():
     """Runs the isolab executable (ctest names it in ISOLAB_BINARY) and returns its result."""
     binary = os.environ.get("ISOLAB_BINARY", str(REPO / "build" / "isolab"))

@@ -155,8 +155,8 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
   weight_ = mass * gravity_;
 }
 
-std::vector<EffectiveProperties> IsolationSystem::EachBearing(double displacement,
-                                                              double period) const {
+std::vector<EffectiveProperties> IsolationSystem::BearingProperties(double displacement,
+                                                                    double period) const {
   std::vector<EffectiveProperties> laws;
   for (const auto& law : laws_) laws.push_back(law(displacement, period));
   std::vector<EffectiveProperties> bearings;
@@ -164,6 +164,7 @@ std::vector<EffectiveProperties> IsolationSystem::EachBearing(double displacemen
     EffectiveProperties p = laws[bearing.law];
     p.stiffness *= bearing.scale;
     p.dissipated *= bearing.scale;
+    SetDamping(&p);
     bearings.push_back(p);
   }
   return bearings;
@@ -172,20 +173,12 @@ std::vector<EffectiveProperties> IsolationSystem::EachBearing(double displacemen
 EffectiveProperties IsolationSystem::At(double displacement, double period) const {
   EffectiveProperties sum;
   sum.displacement = displacement;
-  for (const EffectiveProperties& p : EachBearing(displacement, period)) {
+  for (const EffectiveProperties& p : BearingProperties(displacement, period)) {
     sum.stiffness += p.stiffness;
     sum.dissipated += p.dissipated;
   }
   SetDamping(&sum);
   return sum;
-}
-
-std::vector<double> IsolationSystem::BearingStiffnesses(double displacement, double period) const {
-  std::vector<double> stiffnesses;
-  for (const EffectiveProperties& p : EachBearing(displacement, period)) {
-    stiffnesses.push_back(p.stiffness);
-  }
-  return stiffnesses;
 }
 
 ElfResult SolveElf(const IsolationSystem& system, const DisplacementDemand& demand, double metre) {
@@ -273,7 +266,10 @@ double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& s
     mass_centre = mass_centre + story.floor.mass * story.floor.centre_of_mass;
   }
   mass_centre = (1.0 / mass) * mass_centre;
-  const std::vector<double> k = system.BearingStiffnesses(elf.displacement, elf.period);
+  std::vector<double> k;
+  for (const EffectiveProperties& b : system.BearingProperties(elf.displacement, elf.period)) {
+    k.push_back(b.stiffness);
+  }
   const std::vector<hysteresis::Vec2>& p = system.positions();
   hysteresis::Vec2 rigidity;
   double k_sum = 0.0;

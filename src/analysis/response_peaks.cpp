@@ -42,6 +42,7 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   }
   for (std::size_t s = 0; s < layout.stories.size(); ++s) {
     peaks_.story_drifts.push_back({0.0, 0.0, static_cast<int>(s)});
+    peaks_.story_shears.push_back({0.0, 0.0, static_cast<int>(s)});
   }
   if (layout.rotations) {
     for (std::size_t l = 0; l < layout.levels.size(); ++l) {
@@ -51,6 +52,7 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   const bool base = layout.isolated() && !layout.stories.empty();
   for (std::size_t l = base ? 1 : 0; l < layout.levels.size(); ++l) {
     floors_.push_back(static_cast<int>(l));
+    peaks_.floor_accelerations.push_back({0.0, 0.0, static_cast<int>(l)});
   }
   // Every step may be a row (Newmark): the window holds at most this many.
   const double dt = problem.grid.dt > 0.0 ? problem.grid.dt : 1.0;
@@ -61,6 +63,8 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   for (std::size_t j = 0; j < bearings; ++j) {
     peaks_.axial_load_minima.push_back(
         {std::numeric_limits<double>::infinity(), 0.0, static_cast<int>(j)});
+    peaks_.axial_load_maxima.push_back(
+        {-std::numeric_limits<double>::infinity(), 0.0, static_cast<int>(j)});
   }
   peaks_.uplift_durations.assign(bearings, 0.0);
   peaks_.first_uplift_times.assign(bearings, -1.0);
@@ -178,11 +182,16 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   };
   const int roof = static_cast<int>(layout.levels.size()) - 1;
   Consider(&peaks.roof_absolute_acceleration, Magnitude(acceleration(layout.roof())), t, roof);
-  for (const int level : floors_) {
-    Consider(&peaks.floor_acceleration, Magnitude(acceleration(layout.levels[level])), t, level);
+  for (std::size_t f = 0; f < floors_.size(); ++f) {
+    const int level = floors_[f];
+    const double a = Magnitude(acceleration(layout.levels[level]));
+    Consider(&peaks.floor_acceleration, a, t, level);
+    Consider(&peaks.floor_accelerations[f], a, t, level);
   }
   for (std::size_t s = 0; s < layout.stories.size(); ++s) {
-    if (s == 0) Consider(&peaks.first_story_shear, Magnitude(StoryShear(s, row)), t);
+    const double shear = Magnitude(StoryShear(s, row));
+    if (s == 0) Consider(&peaks.first_story_shear, shear, t);
+    Consider(&peaks.story_shears[s], shear, t, static_cast<int>(s));
     Consider(&peaks.story_drifts[s], Magnitude(StoryDrift(s, row)), t, static_cast<int>(s));
   }
   if (layout.rotations) {
@@ -204,6 +213,8 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
       const double n = row.axial_load[j];
       Peak& least = peaks.axial_load_minima[j];
       if (n < least.value) least = {n, t, static_cast<int>(j)};
+      Peak& greatest = peaks.axial_load_maxima[j];
+      if (n > greatest.value) greatest = {n, t, static_cast<int>(j)};
       if (n <= 0.0) {
         if (peaks.first_uplift_times[j] < 0.0) peaks.first_uplift_times[j] = t;
         if (peaks.rows > 0) peaks.uplift_durations[j] += t - last_time_;

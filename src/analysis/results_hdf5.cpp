@@ -116,12 +116,13 @@ void WritePeaks(io::Hdf5File& file, const RunDescription& run) {
     // Per bearing that takes an axial load, in /isolator/axial_load's column order: the JSON
     // summary's axial_loads (first_uplift -1: never uplifted).
     std::vector<std::string> names;
-    std::vector<double> statics, minima, minimum_times;
+    std::vector<double> statics, minima, minimum_times, maxima;
     for (std::size_t j = 0; j < axial.bearings.size(); ++j) {
       names.push_back(axial.bearings[j].name);
       statics.push_back(axial.bearings[j].static_load);
       minima.push_back(peaks.axial_load_minima[j].value);
       minimum_times.push_back(peaks.axial_load_minima[j].time);
+      maxima.push_back(peaks.axial_load_maxima[j].value);
     }
     const std::string force = DescribeUnits(units, dimension::kForce);
     const std::string time = DescribeUnits(units, dimension::kTime);
@@ -133,6 +134,7 @@ void WritePeaks(io::Hdf5File& file, const RunDescription& run) {
     const Column columns[] = {{"static", statics, force},
                               {"minimum", minima, force},
                               {"minimum_time", minimum_times, time},
+                              {"maximum", maxima, force},
                               {"uplift_duration", peaks.uplift_durations, time},
                               {"first_uplift", peaks.first_uplift_times, time}};
     file.CreateGroup("peaks/axial_loads");

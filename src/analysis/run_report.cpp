@@ -123,6 +123,7 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
     json["axial_loads"][axial.bearings[j].name] = {
         {"static", axial.bearings[j].static_load},
         {"minimum", PeakJson(peaks.axial_load_minima[j])},
+        {"maximum", PeakJson(peaks.axial_load_maxima[j])},
         {"uplift_duration", peaks.uplift_durations[j]},
         {"first_uplift", peaks.first_uplift_times[j]}};
   }

@@ -168,7 +168,7 @@ DesignFile LoadDesignFile(const std::string& path) {
   reader.RequireMap(root, "");
   reader.CheckKeys(root, "",
                    {"description", "model", "target", "suite", "eccentricity", "drift_limit",
-                    "shear_strain_limit", "gamma_x", "output"});
+                    "shear_strain_limit", "gamma_x", "r_i", "output"});
   DesignFile design;
   design.path = path;
   const fs::path directory = fs::path(path).parent_path();
@@ -222,6 +222,20 @@ DesignFile LoadDesignFile(const std::string& path) {
     design.gamma_x = kRecommendedReliabilityFactor;
     design.period_range[0] = 0.2;
     design.period_range[1] = 2.0;
+  }
+  if (root["r_i"]) {
+    if (design.code != DesignCode::kAsce7_16) {
+      reader.Fail(root["r_i"], "r_i",
+                  "is ASCE 7-16's response modification of the structure above the isolation "
+                  "(17.5.4.2), and the target is eurocode8: EN 1998-1's rules for the "
+                  "superstructure are not applied here (remove r_i)");
+    }
+    design.r_i = reader.ReadNumber(root["r_i"], "r_i");
+    if (!(design.r_i >= 1.0 && design.r_i <= 2.0)) {
+      reader.Fail(root["r_i"], "r_i",
+                  fmt::format("{:g} (R_I = 3/8 R, not below 1 nor above 2: ASCE 7-16 17.5.4.2)",
+                              design.r_i));
+    }
   }
   if (root["gamma_x"]) {
     if (design.code != DesignCode::kEn1998_1) {

@@ -12,8 +12,6 @@
 namespace isolab::spectra {
 namespace {
 
-// EN 1998-1 Sec. 3.2.2.2: the longest period Se(T) is defined for (s).
-
 // S, T_B, T_C, T_D of one ground type and spectrum type.
 struct Eurocode8Shape {
   double soil = 1.0;                    // S

@@ -1,6 +1,7 @@
 #include "isolab/study/design.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -64,12 +65,15 @@ Quantity SourceOf(DesignQuantity q) {
 
 namespace {
 
-// A record's spectrum at `periods` (g): a pair's RotD100, one record's 5 % Sa; with its entry's
+// A record's spectrum at `periods` (g): a pair's RotD100 (ASCE 7-16 17.3.3), or with
+// `components` the mean of its components' 5 % spectra (EN 1998-1 3.2.3.1.2(4) takes each
+// horizontal component as a time history of the suite); one record's 5 % Sa; with its entry's
 // scale. Throws InputError naming the entry for a record too short for the range's top period
 // `top` (s): its spectrum there is not a record's but its length's.
 std::vector<double> RecordSpectrum(const model::StudyRecord& record,
                                    const std::vector<io::Record>& read,
-                                   const std::vector<double>& periods, double top) {
+                                   const std::vector<double>& periods, double top,
+                                   bool components) {
   std::vector<integrators::SampledHistory> histories;
   for (std::size_t k = 0; k < record.components.size(); ++k) {
     const model::GroundMotionSection& c = record.components[k];
@@ -90,7 +94,15 @@ std::vector<double> RecordSpectrum(const model::StudyRecord& record,
   }
   const std::vector<double> damping = {kDamping};
   std::vector<double> sa;
-  if (histories.size() == 2) {
+  if (histories.size() == 2 && components) {
+    sa.assign(periods.size(), 0.0);
+    for (const integrators::SampledHistory& h : histories) {
+      const spectra::ElasticSpectrum s = spectra::ComputeElasticSpectrum(h, periods, damping);
+      for (std::size_t p = 0; p < periods.size(); ++p) {
+        sa[p] += s.at(0, p).pseudo_acceleration / static_cast<double>(histories.size());
+      }
+    }
+  } else if (histories.size() == 2) {
     const spectra::PairSpectrum s =
         spectra::ComputePairSpectrum(histories[0], histories[1], periods, damping);
     for (std::size_t p = 0; p < periods.size(); ++p) {
@@ -104,20 +116,21 @@ std::vector<double> RecordSpectrum(const model::StudyRecord& record,
   return sa;
 }
 
-// A record's peak ground acceleration (g) with its entry's scale: a pair's largest horizontal
-// resultant max_t |(a_1, a_2)|, which is its RotD100 at period zero.
+// A record's peak ground acceleration (g) with its entry's scale, a pair's the mean of its
+// components' (EN 1998-1 3.2.3.1.2(4)b: each horizontal component a time history of the suite).
 double RecordPeakAcceleration(const model::StudyRecord& record,
                               const std::vector<io::Record>& read) {
-  std::vector<double> squared;
+  double sum = 0.0;
   for (std::size_t k = 0; k < record.components.size(); ++k) {
     const io::Record& r = read[k];
     const double in_g = record.components[k].scale *
                         UnitSystem("N", "m", "s").Convert(1.0, r.units, dimension::kAcceleration) /
                         9.80665;
-    squared.resize(std::max(squared.size(), r.values.size()), 0.0);
-    for (std::size_t i = 0; i < r.values.size(); ++i) squared[i] += std::pow(in_g * r.values[i], 2);
+    double peak = 0.0;
+    for (const double a : r.values) peak = std::max(peak, std::abs(in_g * a));
+    sum += peak;
   }
-  return std::sqrt(*std::max_element(squared.begin(), squared.end()));
+  return sum / static_cast<double>(record.components.size());
 }
 
 // Synthetic pairs matched to the target over [0.1 s, 1.5 x the scaling range's top], written as
@@ -214,15 +227,17 @@ std::vector<std::vector<io::Record>> ReadSuite(const std::vector<model::StudyRec
 }
 
 // A quantity a model does not have (a drift without story heights) is NaN for every record, and
-// stays NaN: never 0.
-DesignStatistic SuiteStatistic(std::vector<double> per_record, bool mean_of_suite) {
+// stays NaN: never 0. `least`: the most unfavourable record is the least (a least axial load).
+DesignStatistic SuiteStatistic(std::vector<double> per_record, bool mean_of_suite,
+                               bool least = false) {
   DesignStatistic s;
   s.per_record = std::move(per_record);
   double sum = 0.0;
-  s.max = -std::numeric_limits<double>::infinity();
+  s.max =
+      least ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
   for (const double v : s.per_record) {
     sum += v;
-    s.max = std::max(s.max, v);
+    s.max = least ? std::min(s.max, v) : std::max(s.max, v);
   }
   if (std::isnan(sum)) s.max = kAbsent;
   s.mean = sum / static_cast<double>(s.per_record.size());
@@ -272,6 +287,46 @@ std::vector<IsolatorCapacity> Capacities(const model::ModelFile& model, double s
         {"every bearing of the layer", DisplacementCapacity(model.isolation, strain_limit)});
   }
   return capacities;
+}
+
+// Every part's design values: per bound and record the envelope over the eccentricity cases and
+// orientations, then over the suite, as the headline quantities.
+std::vector<DesignPartValue> PartValues(const DesignOutcome& out) {
+  std::vector<DesignPartValue> parts;
+  const std::size_t C = out.eccentricities.size(), R = out.records.size();
+  const std::size_t O = out.orientations.size();
+  // The parts as the first run lists them: every run of a bound has the same; the bounds too.
+  for (const PartPeak& p : out.runs.front().parts) parts.push_back({p.quantity, p.part, {}, 0});
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    DesignPartValue& part = parts[k];
+    const bool least = part.quantity == PartQuantity::kLeastAxialLoad;
+    for (std::size_t b = 0; b < out.bounds.size(); ++b) {
+      std::vector<double> per_record(R, kAbsent);
+      for (std::size_t r = 0; r < R; ++r) {
+        for (std::size_t c = 0; c < C; ++c) {
+          for (std::size_t o = 0; o < O; ++o) {
+            // Every run of a design has the same parts in the same order; looked up by name
+            // where a run's differ.
+            const std::vector<PartPeak>& run = out.RunOf(b, c, r, o).parts;
+            const auto same = [&](const PartPeak& p) {
+              return p.part == part.part && p.quantity == part.quantity;
+            };
+            const auto found = k < run.size() && same(run[k])
+                                   ? run.begin() + static_cast<std::ptrdiff_t>(k)
+                                   : std::find_if(run.begin(), run.end(), same);
+            const double v = found != run.end() ? found->value : kAbsent;
+            if (std::isnan(v)) continue;
+            double& e = per_record[r];
+            e = std::isnan(e) ? v : least ? std::min(e, v) : std::max(e, v);
+          }
+        }
+      }
+      part.bounds.push_back(SuiteStatistic(per_record, out.mean_of_suite, least));
+      const double v = part.bounds.back().value, g = part.bounds[part.governing].value;
+      if ((least ? v < g : v > g) || (std::isnan(g) && !std::isnan(v))) part.governing = b;
+    }
+  }
+  return parts;
 }
 
 // Every run's warnings, once per bound with the count of the bound's runs that gave each.
@@ -328,6 +383,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   // 1. The bound models, read as they will run; written once the suite is ready, so that a
   // design refused on its suite leaves nothing behind.
   const model::BoundModels bounds = model::MakeBoundModels(design.model);
+  out.modified = bounds.properties;
   const fs::path models = fs::path(output_directory) / "models";
   const std::string stem = fs::path(design.model_path).stem().string();
   for (const model::BoundModel& bound : bounds.models) {
@@ -354,6 +410,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     b.damping_coefficient =
         analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
     b.elf_total_displacement = analysis::TotalDisplacement(b.model, system, b.elf);
+    b.bearings = system.BearingProperties(b.elf.displacement, b.elf.period);
     say(fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}", b.bound,
                     b.elf.displacement, units.length(), b.elf.period / second,
                     b.elf.at_design.damping, b.damping_coefficient));
@@ -361,6 +418,11 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       out.capacities = Capacities(b.model, design.shear_strain_limit);
       out.bearing_weights = system.bearing_weights();
       out.building_weight = system.weight();
+      const structure::LaidOutStructure laid = model::BuildStructure(b.model);
+      if (laid.layout.isolated() && !laid.layout.stories.empty()) {
+        const int base = laid.layout.levels.front().dofs[structure::kX];
+        out.structure_weight = system.weight() - laid.structure.mass()[base] * system.gravity();
+      }
       if (const std::string rule = BearingWeightRule(design.model, out); !rule.empty()) say(rule);
     }
   }
@@ -413,7 +475,8 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   std::vector<std::vector<double>> in_range(records.size());
   for (std::size_t r = 0; r < records.size(); ++r) {
-    const std::vector<double> sa = RecordSpectrum(records[r], suite[r], grid, out.period_range[1]);
+    const std::vector<double> sa =
+        RecordSpectrum(records[r], suite[r], grid, out.period_range[1], eurocode);
     for (const double t : periods) {
       in_range[r].push_back(sa[std::lower_bound(grid.begin(), grid.end(), t) - grid.begin()]);
     }
@@ -572,10 +635,12 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   }
   for (std::size_t q = 0; q < kDesignQuantityCount; ++q) {
     for (std::size_t b = 1; b < out.bounds.size(); ++b) {
-      // A NaN never governs (the comparison is false).
-      if (out.values[b][q].value > out.values[out.governing[q]][q].value) out.governing[q] = b;
+      // A NaN never governs: a number replaces it, and it replaces nothing.
+      const double v = out.values[b][q].value, g = out.values[out.governing[q]][q].value;
+      if (v > g || (std::isnan(g) && !std::isnan(v))) out.governing[q] = b;
     }
   }
+  out.parts = PartValues(out);
 
   // Histories for the figures: the record of the largest D_TM of the governing bound in the
   // orientation that gave it, each bound in its worst eccentricity case for that record.

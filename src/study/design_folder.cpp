@@ -64,13 +64,18 @@ std::map<std::string, std::uintmax_t> ReadManifest(const fs::path& path) {
   return listed;
 }
 
-// A figure scripts/plot_design.py draws into a design's folder after the design (Python's
-// design() leaves the figures to it): the folder is still only the design's.
+// What scripts/plot_design.py draws into a design's folder after the design (Python's design()
+// leaves the figures to it): its figures (with their metadata) and design.html. The folder is
+// still only the design's.
 bool DrawnFromTheDesign(const std::string& relative) {
   const fs::path path(relative);
   const std::string name = path.filename().string(), extension = path.extension().string();
-  return !path.has_parent_path() && name.rfind("design_", 0) == 0 &&
-         (extension == ".png" || extension == ".pdf");
+  if (path.has_parent_path()) return false;
+  if (name == "design.html") return true;
+  const std::string stem = path.stem().string();
+  const bool figure = stem == "design_spectra" || stem == "design_loops" ||
+                      stem == "design_orbits" || stem == "design_drifts";
+  return figure && (extension == ".png" || extension == ".pdf" || extension == ".json");
 }
 
 bool ProcessRuns(pid_t pid) { return pid > 0 && (kill(pid, 0) == 0 || errno == EPERM); }

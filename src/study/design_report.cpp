@@ -2,14 +2,17 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
 #include <variant>
 
 #include "isolab/io/atomic_file.h"
+#include "isolab/io/csv.h"
 
 namespace isolab::study {
 namespace {
@@ -46,7 +49,10 @@ std::string SuiteRuleText(const model::DesignFile& design, const DesignOutcome& 
   const std::string head = fmt::format(
       "{} {}, each scaled by its own factor so that the mean of their {} is nowhere below {} from "
       "{:.3g} s ({:g} T_M upper) to {:.3g} s ({:g} T_M lower{})",
-      o.records.size(), pairs ? "pairs" : "records", pairs ? "RotD100 spectra" : "5 % spectra",
+      o.records.size(), pairs ? "pairs" : "records",
+      !pairs                                        ? "5 % spectra"
+      : design.code == model::DesignCode::kEn1998_1 ? "components' 5 % spectra"
+                                                    : "RotD100 spectra",
       o.target_fraction == 1.0 ? std::string("the target")
                                : fmt::format("{:g} % of the target", 100.0 * o.target_fraction),
       o.period_range[0], design.period_range[0], o.period_range[1], design.period_range[1],
@@ -66,7 +72,7 @@ std::string SuiteRuleText(const model::DesignFile& design, const DesignOutcome& 
              "section 10 may set for isolated buildings is not at hand here and is not applied), "
              "and their mean peak ground acceleration{}, {:.4g} g, is not below a_g S = {:.4g} g "
              "(3.2.3.1.2(4)b). Common factor {:.4g}; {}.",
-             pairs ? " (each pair's largest horizontal resultant)" : "", o.mean_pga, o.pga_floor,
+             pairs ? " (of the components, each a time history)" : "", o.mean_pga, o.pga_floor,
              o.scaling.common_factor,
              o.pga_governs
                  ? std::string("the mean peak ground acceleration sets it")
@@ -115,9 +121,20 @@ void WriteValues(const model::DesignFile& design, const DesignOutcome& o, std::o
     row("D_TM", u.length(), b.elf_total_displacement);
   }
   fmt::print(file, "design,drift_limit,%,limit,{:.12g}\n", 100.0 * design.drift_limit);
+  fmt::print(file, "design,target_fraction,1,rule,{:.12g}\n", o.target_fraction);
+  fmt::print(file, "design,directions,1,model,{}\n", o.study.directions);
+  fmt::print(file, "design,pga_governs,1,rule,{}\n", o.pga_governs ? 1 : 0);
+  fmt::print(file, "design,mean_of_suite,1,rule,{}\n", o.mean_of_suite ? 1 : 0);
   fmt::print(file, "design,D_TM,{},design,{:.12g}\n", u.length(),
              o.checks.total_displacement.value);
   fmt::print(file, "design,V_b,{},design,{:.12g}\n", u.force(), o.checks.base_shear.value);
+  if (const auto& s = o.checks.superstructure) {
+    for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+      fmt::print(file, "{},V_st,{},elf,{:.12g}\n", o.bounds[b].bound, u.force(), s->v_st[b]);
+    }
+    fmt::print(file, "design,V_s,{},elf,{:.12g}\n", u.force(), s->elf);
+    fmt::print(file, "design,V_s,{},design,{:.12g}\n", u.force(), s->v_s.value);
+  }
   for (std::size_t b = 0; b < o.bounds.size(); ++b) {
     for (const DesignQuantityInfo& info : DesignQuantities()) {
       const DesignStatistic& s = o.values[b][IndexOf(info.quantity)];
@@ -149,14 +166,6 @@ std::string RunCommand(const DesignOutcome& o, std::size_t b, std::size_t c, std
   return command + fmt::format(" --scale {:.17g}", h[0].scale);
 }
 
-// A CSV field, quoted when it holds a comma or a quote.
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return quoted + "\"";
-}
-
 void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, const fs::path& directory,
                std::ostream& file) {
   fmt::print(file, "bound,eccentricity,record,orientation,factor,completed");
@@ -172,11 +181,11 @@ void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, const fs
         for (std::size_t k = 0; k < O; ++k) {
           const JobResult& run = o.RunOf(b, c, r, k);
           fmt::print(file, "{},{},{},{:g},{:.12g},{}", o.bounds[b].bound, o.eccentricities[c].name,
-                     o.records[r].name, o.orientations[k], o.records[r].factor,
+                     io::CsvField(o.records[r].name), o.orientations[k], o.records[r].factor,
                      run.completed ? 1 : 0);
           for (const double v : run.values) fmt::print(file, ",{:.12g}", v);
           fmt::print(file, ",{},{}\n", run.file,
-                     CsvField(RunCommand(o, b, c, r * O + k, directory)));
+                     io::CsvField(RunCommand(o, b, c, r * O + k, directory)));
         }
       }
     }
@@ -186,14 +195,135 @@ void WriteRuns(const model::DesignFile& design, const DesignOutcome& o, const fs
 void WriteChecks(const DesignOutcome& o, std::ostream& file) {
   fmt::print(file, "check,clause,unit,demand,limit,basis,verdict\n");
   for (const DesignCheck& c : o.checks.checks) {
-    fmt::print(file, "{},{},{},{:.12g},{:.12g},{},{}\n", CsvField(c.check), CsvField(c.clause),
-               c.unit, c.demand, c.limit, CsvField(c.basis), VerdictName(c.verdict));
+    fmt::print(file, "{},{},{},{:.12g},{:.12g},{},{}\n", io::CsvField(c.check),
+               io::CsvField(c.clause), c.unit, c.demand, c.limit, io::CsvField(c.basis),
+               VerdictName(c.verdict));
+  }
+}
+
+void WriteParts(const model::DesignFile& design, const DesignOutcome& o, std::ostream& file) {
+  fmt::print(file, "bound,quantity,part,unit,statistic,value\n");
+  for (const DesignPartValue& p : o.parts) {
+    const std::string unit = PartQuantityUnit(p.quantity, design.model.units);
+    const char* extreme = p.quantity == PartQuantity::kLeastAxialLoad ? "min" : "max";
+    for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+      fmt::print(file, "{},{},{},{},mean,{:.12g}\n", o.bounds[b].bound,
+                 PartQuantityName(p.quantity), io::CsvField(p.part), unit, p.bounds[b].mean);
+      fmt::print(file, "{},{},{},{},{},{:.12g}\n", o.bounds[b].bound, PartQuantityName(p.quantity),
+                 io::CsvField(p.part), unit, extreme, p.bounds[b].max);
+    }
+  }
+}
+
+// A table of parts (rows: the parts in the runs' order) and their quantities (columns), each cell
+// the governing design value and its bound.
+void WritePartTable(const DesignOutcome& o, const UnitSystem& u, std::string_view heading,
+                    std::initializer_list<std::pair<PartQuantity, std::string_view>> wanted,
+                    std::ostream& md) {
+  // The columns some part has a value of (a model without axial loads has none of theirs).
+  std::vector<std::pair<PartQuantity, std::string_view>> columns;
+  std::vector<std::string> rows;
+  for (const auto& [q, label] : wanted) {
+    bool any = false;
+    for (const DesignPartValue& p : o.parts) {
+      if (p.quantity != q || std::isnan(p.bounds[p.governing].value)) continue;
+      any = true;
+      if (std::find(rows.begin(), rows.end(), p.part) == rows.end()) rows.push_back(p.part);
+    }
+    if (any) columns.emplace_back(q, label);
+  }
+  if (rows.empty()) return;
+  fmt::print(md, "| {} |", heading);
+  for (const auto& [q, label] : columns)
+    fmt::print(md, " {} ({}) |", label, PartQuantityUnit(q, u));
+  fmt::print(md, "\n|---|");
+  for (std::size_t k = 0; k < columns.size(); ++k) fmt::print(md, "---|");
+  fmt::print(md, "\n");
+  for (const std::string& row : rows) {
+    fmt::print(md, "| {} |", row);
+    for (const auto& [q, label] : columns) {
+      const auto part = std::find_if(o.parts.begin(), o.parts.end(), [&](const DesignPartValue& p) {
+        return p.quantity == q && p.part == row;
+      });
+      if (part == o.parts.end() || std::isnan(part->bounds[part->governing].value)) {
+        fmt::print(md, " - |");
+      } else {
+        fmt::print(md, " {:.4g} ({}) |", part->bounds[part->governing].value,
+                   o.bounds[part->governing].bound);
+      }
+    }
+    fmt::print(md, "\n");
+  }
+  fmt::print(md, "\n");
+}
+
+// Each isolator's properties at its bound's D_M, and the bilinear loop of the same area and
+// secant (its yield displacement neglected): Qd = E / (4 D), Kd = k_eff - Qd / D.
+void WriteBearings(const model::DesignFile& design, const DesignOutcome& o, std::ostream& file) {
+  const UnitSystem& u = design.model.units;
+  fmt::print(file,
+             "bound,bearing,D_M [{0}],k_eff [{1}/{0}],beta_eff,energy_per_cycle [{1}*{0}],"
+             "Qd_equivalent [{1}],Kd_equivalent [{1}/{0}]\n",
+             u.length(), u.force());
+  for (const DesignBound& b : o.bounds) {
+    for (std::size_t i = 0; i < b.bearings.size(); ++i) {
+      const analysis::EffectiveProperties& p = b.bearings[i];
+      const double qd = p.dissipated / (4.0 * p.displacement);
+      fmt::print(file, "{},{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", b.bound,
+                 io::CsvField(o.bearing_weights[i].name), p.displacement, p.stiffness, p.damping,
+                 p.dissipated, qd, p.stiffness - qd / p.displacement);
+    }
+  }
+}
+
+// The isolators' effective properties at each bound's D_M, one row per group of isolators whose
+// properties are the same at every bound.
+void WriteBearingTable(const DesignOutcome& o, const UnitSystem& u, std::ostream& md) {
+  std::vector<std::vector<std::size_t>> groups;
+  const auto same = [&](std::size_t i, std::size_t j) {
+    for (const DesignBound& b : o.bounds) {
+      const analysis::EffectiveProperties &p = b.bearings[i], &q = b.bearings[j];
+      if (std::abs(p.stiffness - q.stiffness) > 1e-9 * std::abs(p.stiffness) ||
+          std::abs(p.damping - q.damping) > 1e-9) {
+        return false;
+      }
+    }
+    return true;
+  };
+  for (std::size_t i = 0; i < o.bearing_weights.size(); ++i) {
+    const auto group = std::find_if(groups.begin(), groups.end(),
+                                    [&](const auto& g) { return same(g.front(), i); });
+    if (group != groups.end()) {
+      group->push_back(i);
+    } else {
+      groups.push_back({i});
+    }
+  }
+  fmt::print(md,
+             "\nEach bearing at its bound's D_M, from its own law (`design_bearings.csv` adds the "
+             "energy per cycle and the bilinear loop of the same area and secant, Qd and Kd, for "
+             "another program's link properties):\n\n| bearings |");
+  for (const DesignBound& b : o.bounds)
+    fmt::print(md, " k_eff {} ({}/{}) |", b.bound, u.force(), u.length());
+  for (const DesignBound& b : o.bounds) fmt::print(md, " beta_eff {} |", b.bound);
+  fmt::print(md, "\n|---|");
+  for (std::size_t k = 0; k < 2 * o.bounds.size(); ++k) fmt::print(md, "---|");
+  fmt::print(md, "\n");
+  for (const std::vector<std::size_t>& g : groups) {
+    std::vector<std::string> names;
+    for (const std::size_t i : g) names.push_back(o.bearing_weights[i].name);
+    fmt::print(md, "| {} |", fmt::join(names, ", "));
+    for (const DesignBound& b : o.bounds)
+      fmt::print(md, " {:.4g} |", b.bearings[g.front()].stiffness);
+    for (const DesignBound& b : o.bounds)
+      fmt::print(md, " {:.3g} |", b.bearings[g.front()].damping);
+    fmt::print(md, "\n");
   }
 }
 
 void WriteSpectra(const DesignOutcome& o, std::ostream& file) {
   fmt::print(file, "period_s,in_range,target_g");
-  for (const DesignRecord& r : o.records) fmt::print(file, ",{}_g", r.name);
+  for (const DesignRecord& r : o.records) fmt::print(file, ",{}", io::CsvField(r.name + "_g"));
   fmt::print(file, ",mean_g\n");
   const double low = o.period_range[0] * (1 - 1e-12), high = o.period_range[1] * (1 + 1e-12);
   for (std::size_t p = 0; p < o.display_periods.size(); ++p) {
@@ -208,6 +338,47 @@ void WriteSpectra(const DesignOutcome& o, std::ostream& file) {
   }
 }
 
+// The first screen: the design values, how the checks came out, and what the analysis leaves
+// out.
+void WriteSummary(const model::DesignFile& design, const DesignOutcome& o, std::ostream& md) {
+  const UnitSystem& u = design.model.units;
+  const DesignChecks& c = o.checks;
+  fmt::print(md, "## Summary\n\n");
+  fmt::print(md, "- Design D_TM {:.4g} {} ({} bound; {}).\n", c.total_displacement.value,
+             u.length(), o.bounds[c.total_displacement.bound].bound, c.total_displacement.rule);
+  fmt::print(md, "- Design V_b {:.4g} {} ({} bound; {}).\n", c.base_shear.value, u.force(),
+             o.bounds[c.base_shear.bound].bound, c.base_shear.rule);
+  if (c.superstructure) {
+    fmt::print(md, "- Design V_s {:.4g} {} (R_I {:g}).\n", c.superstructure->v_s.value, u.force(),
+               c.superstructure->r_i);
+  }
+  std::size_t met = 0, exceeded = 0, unchecked = 0;
+  std::vector<std::string> failed;
+  for (const DesignCheck& check : c.checks) {
+    if (check.verdict == Verdict::kMet) ++met;
+    if (check.verdict == Verdict::kNotChecked) ++unchecked;
+    if (check.verdict == Verdict::kExceeded) {
+      ++exceeded;
+      failed.push_back(check.check);
+    }
+  }
+  fmt::print(md, "- Checks: {} met, {}, {} not checked (\"Checks\" below).\n", met,
+             failed.empty() ? std::string("none exceeded")
+                            : fmt::format("{} EXCEEDED ({})", exceeded, fmt::join(failed, "; ")),
+             unchecked);
+  fmt::print(md, "- {} run warning{} (\"Warnings\" below).\n", o.warnings.size(),
+             o.warnings.size() == 1 ? "" : "s");
+  const bool overturning = design.model.axial_load && design.model.axial_load->overturning;
+  fmt::print(md,
+             "- What the analysis does not model: the building is a shear building of rigid "
+             "floors (its stories' members are not modelled, so there are no member forces), "
+             "without P-Delta effects and without a vertical component of the ground motion{}."
+             "\n\n",
+             design.model.axial_load && !overturning
+                 ? "; the bearings' axial loads are their static shares, without overturning"
+                 : "");
+}
+
 void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                  const std::string& directory, bool figures, std::ostream& md) {
   const UnitSystem& u = design.model.units;
@@ -216,22 +387,35 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
     return fs::path(path).lexically_relative(directory).string();
   };
   const bool eurocode = design.code == model::DesignCode::kEn1998_1;
-  fmt::print(md, "# Design of {}\n\n", design.model_path);
-  if (!design.description.empty()) fmt::print(md, "{}\n\n", design.description);
-  fmt::print(md, "Design file `{}`. Code: {}, {}. Target: {}. Lengths in {}, forces in {}.\n\n",
-             design.path, model::CodeName(design.code),
+  fmt::print(md, "# Isolation design: {}\n\n",
+             design.description.empty() ? fs::path(design.model_path).stem().string()
+                                        : design.description);
+  fmt::print(md,
+             "Model `{}`, design file `{}`. Code: {}, {}. Target: {}. Lengths in {}, forces in "
+             "{}.\n\n",
+             design.model_path, design.path, model::CodeName(design.code),
              eurocode ? "section 10 (base isolation)"
                       : "chapter 17 (seismically isolated "
                         "structures)",
              spectra::Describe(design.target), u.length(), u.force());
   if (!o.warnings.empty()) fmt::print(md, "**{}**\n\n", WarningNote(o));
+  WriteSummary(design, o, md);
 
   fmt::print(md, "## Bound models\n\n");
   fmt::print(md,
-             "The bearings' properties at nominal, upper-bound and lower-bound values (ASCE "
-             "7-16 17.2.8.4), each a model that runs alone:\n\n");
+             "The bearings' properties at nominal, upper-bound and lower-bound values ({}), "
+             "each a model that runs alone:\n\n",
+             eurocode ? "the design file's modification factors"
+                      : "ASCE 7-16 17.2.8.4, the factors combined as 17.2.8.4 combines them");
   for (const DesignBound& b : o.bounds) {
     fmt::print(md, "- {}: `{}`\n", b.bound, relative(b.model_file));
+  }
+  fmt::print(md,
+             "\n| bearing | component | property | lambda_min | lambda_max | lower | nominal | "
+             "upper |\n|---|---|---|---|---|---|---|---|\n");
+  for (const model::BoundProperty& p : o.modified) {
+    fmt::print(md, "| {} | {} | {} | {:.4g} | {:.4g} | {} | {} | {} |\n", p.bearing, p.component,
+               p.key, p.lambda.min, p.lambda.max, p.lower, p.nominal, p.upper);
   }
 
   fmt::print(md, "\n## {}\n\n",
@@ -263,6 +447,8 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                "1998-1 10.9.3's own amplification is not at hand here and is not applied. V_b = "
                "k_M D_M.\n");
   }
+
+  WriteBearingTable(o, u, md);
 
   if (const std::string rule = BearingWeightRule(design.model, o); !rule.empty()) {
     fmt::print(md, "\n### Bearing weights\n\n");
@@ -315,6 +501,23 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
     fmt::print(md, " {} |\n", o.bounds[o.governing[IndexOf(info.quantity)]].bound);
   }
 
+  fmt::print(md,
+             "\n## Stories, floors and bearings\n\n"
+             "Each part's design value from the response history, as above (per bound and record "
+             "the envelope over the cases{}, then the {}), with the bound that governs it: the "
+             "largest, or for a least axial load the least. Every bound's values are in "
+             "`design_parts.csv`.\n\n",
+             o.orientations.size() > 1 ? " and orientations" : "", StatisticText(o));
+  WritePartTable(
+      o, u, "story",
+      {{PartQuantity::kStoryDriftRatio, "drift ratio"}, {PartQuantity::kStoryShear, "shear"}}, md);
+  WritePartTable(o, u, "floor", {{PartQuantity::kFloorAcceleration, "absolute acceleration"}}, md);
+  WritePartTable(o, u, "bearing",
+                 {{PartQuantity::kIsolatorDisplacement, "displacement"},
+                  {PartQuantity::kGreatestAxialLoad, "greatest axial load"},
+                  {PartQuantity::kLeastAxialLoad, "least axial load"}},
+                 md);
+
   fmt::print(md, "\n## Warnings\n\n");
   if (o.warnings.empty()) fmt::print(md, "None: no run warned of implausible input.\n");
   for (const std::string& line : WarningLines(o)) fmt::print(md, "- {}\n", line);
@@ -332,6 +535,31 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   };
   value_row("D_TM", c.total_displacement, u.length());
   value_row("V_b", c.base_shear, u.force());
+  if (c.superstructure) value_row("V_s", c.superstructure->v_s, u.force());
+  if (const auto& s = c.superstructure) {
+    fmt::print(md,
+               "\nV_s (ELF) = max over the bounds of V_st / R_I = {:.4g} {}, V_st = V_b (W_s / "
+               "W)^(1 - 2.5 beta_M) (ASCE 7-16 Eqs. 17.5-7, 17.5-8; W_s {:.5g} {}, W {:.5g} {}, "
+               "R_I {:g}):",
+               s->elf, u.force(), s->structure_weight, u.force(), s->weight, u.force(), s->r_i);
+    for (std::size_t b = 0; b < o.bounds.size(); ++b) {
+      fmt::print(md, "{}{} V_st {:.4g} {}", b == 0 ? " " : ", ", o.bounds[b].bound, s->v_st[b],
+                 u.force());
+    }
+    fmt::print(md,
+               ". The limits of 17.5.4.3 (the fixed-base force of section 12.8 at T_M, the wind "
+               "shear, the force that activates the isolation) are not checked: the design file "
+               "does not give their inputs.\n");
+  } else if (design.code == model::DesignCode::kAsce7_16) {
+    fmt::print(md,
+               "\nV_s of the structure above the isolation (ASCE 7-16 17.5.4.2) is not "
+               "computed: the design file gives no `r_i`{}.\n",
+               o.structure_weight > 0.0 ? "" : " (and the model has no stories)");
+  } else {
+    fmt::print(md,
+               "\nThe design forces of the structure above the isolation by EN 1998-1 "
+               "section 10 are not computed here: its rules are not at hand.\n");
+  }
 
   fmt::print(md, "\n## Checks\n\n");
   fmt::print(md,
@@ -358,7 +586,7 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
              fmt::join(o.history_files, "`, `"));
   fmt::print(md, "![The worst bearing's loops at the three bounds](design_loops.png)\n\n");
   if (o.study.directions == 2) {
-    fmt::print(md, "![The orbits of the bearings that move most](design_orbits.png)\n\n");
+    fmt::print(md, "![The orbits of the bearings that move most and least](design_orbits.png)\n\n");
   }
   if (!std::isnan(o.values[0][IndexOf(DesignQuantity::kStoryDriftRatio)].value)) {
     fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
@@ -376,6 +604,10 @@ void WriteDesignFiles(const model::DesignFile& design, const DesignOutcome& outc
                               [&](std::ostream& f) { WriteRuns(design, outcome, dir, f); });
   io::WriteTextFileAtomically((dir / "design_checks.csv").string(),
                               [&](std::ostream& f) { WriteChecks(outcome, f); });
+  io::WriteTextFileAtomically((dir / "design_parts.csv").string(),
+                              [&](std::ostream& f) { WriteParts(design, outcome, f); });
+  io::WriteTextFileAtomically((dir / "design_bearings.csv").string(),
+                              [&](std::ostream& f) { WriteBearings(design, outcome, f); });
   io::WriteTextFileAtomically((dir / "design_spectra.csv").string(),
                               [&](std::ostream& f) { WriteSpectra(outcome, f); });
   io::WriteTextFileAtomically((dir / "design.md").string(), [&](std::ostream& f) {
@@ -401,6 +633,9 @@ std::string DesignSummaryText(const model::DesignFile& design, const DesignOutco
   const DesignChecks& c = o.checks;
   fmt::print(out, "{}\n", DesignValueText("D_TM", c.total_displacement, o, u.length()));
   fmt::print(out, "{}\n", DesignValueText("V_b", c.base_shear, o, u.force()));
+  if (c.superstructure) {
+    fmt::print(out, "{}\n", DesignValueText("V_s", c.superstructure->v_s, o, u.force()));
+  }
   fmt::print(out, "checks ({}):\n", model::CodeName(design.code));
   for (const DesignCheck& check : c.checks) {
     fmt::print(out, "  {}: {} against {} ({}; {}): {}\n", check.check,

@@ -67,10 +67,11 @@ std::vector<char> Serialize(const JobResult& result) {
   PutString(&bytes, result.record_units);
   Put(&bytes, static_cast<std::uint64_t>(result.warnings.size()));
   for (const std::string& warning : result.warnings) PutString(&bytes, warning);
-  Put(&bytes, static_cast<std::uint64_t>(result.axial_bearings.size()));
-  for (std::size_t j = 0; j < result.axial_bearings.size(); ++j) {
-    PutString(&bytes, result.axial_bearings[j]);
-    Put(&bytes, result.least_axial_loads[j]);
+  Put(&bytes, static_cast<std::uint64_t>(result.parts.size()));
+  for (const PartPeak& part : result.parts) {
+    Put(&bytes, static_cast<std::uint8_t>(part.quantity));
+    PutString(&bytes, part.part);
+    Put(&bytes, part.value);
   }
   return bytes;
 }
@@ -89,10 +90,15 @@ JobResult Deserialize(std::span<const char> bytes) {
   result.record_units = reader.GetString();
   const auto warnings = reader.Get<std::uint64_t>();
   for (std::uint64_t k = 0; k < warnings; ++k) result.warnings.push_back(reader.GetString());
-  const auto bearings = reader.Get<std::uint64_t>();
-  for (std::uint64_t k = 0; k < bearings; ++k) {
-    result.axial_bearings.push_back(reader.GetString());
-    result.least_axial_loads.push_back(reader.Get<double>());
+  const auto parts = reader.Get<std::uint64_t>();
+  for (std::uint64_t k = 0; k < parts; ++k) {
+    PartPeak part;
+    const auto quantity = reader.Get<std::uint8_t>();
+    if (quantity >= kPartQuantityCount) throw std::runtime_error("job result with a bad part");
+    part.quantity = static_cast<PartQuantity>(quantity);
+    part.part = reader.GetString();
+    part.value = reader.Get<double>();
+    result.parts.push_back(std::move(part));
   }
   if (!reader.AtEnd()) throw std::runtime_error("job result with trailing bytes");
   return result;

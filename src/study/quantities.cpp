@@ -107,4 +107,72 @@ QuantityValues MeasureQuantities(const analysis::Problem& problem,
   return values;
 }
 
+std::string_view PartQuantityName(PartQuantity q) {
+  switch (q) {
+    case PartQuantity::kStoryDriftRatio:
+      return "story_drift_ratio";
+    case PartQuantity::kStoryShear:
+      return "story_shear";
+    case PartQuantity::kFloorAcceleration:
+      return "floor_acceleration";
+    case PartQuantity::kIsolatorDisplacement:
+      return "isolator_displacement";
+    case PartQuantity::kLeastAxialLoad:
+      return "least_axial_load";
+    case PartQuantity::kGreatestAxialLoad:
+      return "greatest_axial_load";
+  }
+  return "";
+}
+
+std::string PartQuantityUnit(PartQuantity quantity, const UnitSystem& units) {
+  switch (quantity) {
+    case PartQuantity::kStoryDriftRatio:
+      return "%";
+    case PartQuantity::kFloorAcceleration:
+      return "g";
+    case PartQuantity::kIsolatorDisplacement:
+      return units.length();
+    case PartQuantity::kStoryShear:
+    case PartQuantity::kLeastAxialLoad:
+    case PartQuantity::kGreatestAxialLoad:
+      return units.force();
+  }
+  return "";
+}
+
+std::vector<PartPeak> MeasurePartPeaks(const analysis::Problem& problem,
+                                       const analysis::ResponsePeaks& peaks,
+                                       const UnitSystem& model_units,
+                                       const UnitSystem& study_units) {
+  const double length = Conversion(model_units, study_units, dimension::kLength);
+  const double force = Conversion(model_units, study_units, dimension::kForce);
+  const double g = model_units.Convert(1.0, "g", dimension::kAcceleration);
+  const structure::Layout& layout = problem.layout;
+  std::vector<PartPeak> parts;
+  for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+    const structure::StoryLayout& story = layout.stories[s];
+    parts.push_back(
+        {PartQuantity::kStoryDriftRatio, story.name,
+         story.height > 0.0 ? 100.0 * peaks.story_drifts[s].value / story.height : kNaN});
+    parts.push_back({PartQuantity::kStoryShear, story.name, peaks.story_shears[s].value * force});
+  }
+  for (const analysis::Peak& floor : peaks.floor_accelerations) {
+    parts.push_back({PartQuantity::kFloorAcceleration,
+                     layout.levels[static_cast<std::size_t>(floor.index)].name, floor.value / g});
+  }
+  for (std::size_t i = 0; i < peaks.isolator_displacements.size(); ++i) {
+    parts.push_back({PartQuantity::kIsolatorDisplacement, layout.isolators[i].name,
+                     peaks.isolator_displacements[i].value * length});
+  }
+  const structure::AxialLoads& axial = problem.structure.axial_loads();
+  for (std::size_t j = 0; j < peaks.axial_load_minima.size(); ++j) {
+    parts.push_back({PartQuantity::kLeastAxialLoad, axial.bearings[j].name,
+                     peaks.axial_load_minima[j].value * force});
+    parts.push_back({PartQuantity::kGreatestAxialLoad, axial.bearings[j].name,
+                     peaks.axial_load_maxima[j].value * force});
+  }
+  return parts;
+}
+
 }  // namespace isolab::study

@@ -116,12 +116,7 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
     if (summary.ok()) {
       result.completed = true;
       result.values = MeasureQuantities(problem, summary.peaks, model.units, study.units);
-      const double force = study.units.Convert(1.0, model.units.force(), dimension::kForce);
-      const structure::AxialLoads& axial = problem.structure.axial_loads();
-      for (std::size_t j = 0; j < summary.peaks.axial_load_minima.size(); ++j) {
-        result.axial_bearings.push_back(axial.bearings[j].name);
-        result.least_axial_loads.push_back(summary.peaks.axial_load_minima[j].value * force);
-      }
+      result.parts = MeasurePartPeaks(problem, summary.peaks, model.units, study.units);
     } else {
       result.message = summary.run.message;
     }

@@ -46,6 +46,7 @@ TEST(DesignCommand, DesignsThePlanBuildingOnASyntheticSuite) {
   for (const char* name :
        {"design.md", "design_values.csv", "design_runs.csv", "design_spectra.csv",
         "design_spectra.png", "design_loops.png", "design_orbits.png", "design_drifts.png",
+        "design.html", "design_checks.csv", "design_parts.csv", "design_bearings.csv",
         "models/five_story_lrb_plan_upper.yaml", "records/pair1_h2.at2"}) {
     EXPECT_TRUE(fs::is_regular_file(folder / "out" / name)) << name;
   }

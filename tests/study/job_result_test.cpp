@@ -23,8 +23,8 @@ TEST(JobResult, RoundTripsThroughBytes) {
   result.pga = 0.1 + 0.7;
   result.warnings = {"first", "", "third, with a comma"};
   result.wall_seconds = 0.25;
-  result.axial_bearings = {"tfp_1", "tfp_2"};
-  result.least_axial_loads = {-0.0, 0.1 + 0.2};
+  result.parts = {{PartQuantity::kLeastAxialLoad, "tfp_1", -0.0},
+                  {PartQuantity::kStoryShear, "story 2", 0.1 + 0.2}};
   const JobResult back = Deserialize(Serialize(result));
   EXPECT_EQ(back.job, result.job);
   EXPECT_EQ(back.completed, result.completed);
@@ -35,10 +35,13 @@ TEST(JobResult, RoundTripsThroughBytes) {
   EXPECT_EQ(back.pga, result.pga);
   EXPECT_EQ(back.warnings, result.warnings);
   EXPECT_EQ(back.wall_seconds, result.wall_seconds);
-  EXPECT_EQ(back.axial_bearings, result.axial_bearings);
-  ASSERT_EQ(back.least_axial_loads.size(), 2u);
-  EXPECT_TRUE(std::signbit(back.least_axial_loads[0]));
-  EXPECT_EQ(back.least_axial_loads[1], result.least_axial_loads[1]);
+  ASSERT_EQ(back.parts.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(back.parts[k].quantity, result.parts[k].quantity);
+    EXPECT_EQ(back.parts[k].part, result.parts[k].part);
+  }
+  EXPECT_TRUE(std::signbit(back.parts[0].value));
+  EXPECT_EQ(back.parts[1].value, result.parts[1].value);
 }
 
 TEST(JobResult, RejectsTruncatedOrPaddedBytes) {

@@ -44,8 +44,9 @@ class IsolationSystem {
  public:
   explicit IsolationSystem(const model::ModelFile& model);
   EffectiveProperties At(double displacement, double period) const;
-  // Each isolator's k_eff at D, in layout order, and where it stands (zero in one direction).
-  std::vector<double> BearingStiffnesses(double displacement, double period) const;
+  // Each isolator's effective properties at D (in layout order: bearing_weights() names them),
+  // and where it stands (zero in one direction).
+  std::vector<EffectiveProperties> BearingProperties(double displacement, double period) const;
   const std::vector<hysteresis::Vec2>& positions() const { return positions_; }
   // Per isolator (layout order): its name, the weight its pendulum laws take (`w`, their sum) and
   // the weight it carries here and in the runs (its static share under axial_load, else `w`);
@@ -59,9 +60,6 @@ class IsolationSystem {
   double gravity() const { return gravity_; }  // 1 g (length/time^2)
 
  private:
-  // Each bearing's effective properties at (D, T), in layout order.
-  std::vector<EffectiveProperties> EachBearing(double displacement, double period) const;
-
   // The distinct laws (one per bearing type), and each bearing as its law times its scale.
   std::vector<std::function<EffectiveProperties(double, double)>> laws_;
   struct Bearing {

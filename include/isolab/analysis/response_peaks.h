@@ -43,10 +43,12 @@ struct ResponsePeaks {
   Peak isolator_velocity;
   Peak base_shear;                  // the force into the ground
   Peak first_story_shear;           // the lowest story's (absent without stories)
+  std::vector<Peak> story_shears;   // per story: the peak of its shear (x, y resultant in plan)
   Peak roof_absolute_acceleration;  // the top level's
   // The largest absolute acceleration of the floors above the isolators (every level of a
   // structure without stories); index: the level.
   Peak floor_acceleration;
+  std::vector<Peak> floor_accelerations;  // each of those floors' (index: the level)
   std::vector<Peak> story_drifts;  // per story: its drift at its centre of stiffness
   Peak story_drift;                // the largest (index: the story)
   double story_drift_ratio = 0.0;  // that drift / its story's height (0 without a height)
@@ -71,6 +73,7 @@ struct ResponsePeaks {
   // least axial load N (signed; its time; index: the bearing), the time spent at N <= 0 (uplift:
   // the bearing carries no shear) summed over the rows, and when uplift first happened (-1: never).
   std::vector<Peak> axial_load_minima;
+  std::vector<Peak> axial_load_maxima;  // the greatest axial load N of each
   std::vector<double> uplift_durations, first_uplift_times;
   // Per isolator: the largest fraction of its displacement capacity a triple friction pendulum's
   // surfaces used (|u_i| / d_i, surfaces 1 to 4; multiple_pendulum.h), all zero for an isolator

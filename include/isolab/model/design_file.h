@@ -21,6 +21,8 @@
 //     orientations: [0, 90]              # in plan: each pair runs at each angle (degrees from
 //                                        # x to H1, added to the pair's own angle): H1 along x,
 //                                        # then along y, by default; [0] in one direction
+//   r_i: 2.0                             # ASCE 7-16 only: R_I of 17.5.4.2 (3/8 R, in [1, 2]),
+//                                        # for the superstructure's shear V_s
 //   gamma_x: 1.2                         # Eurocode 8 only: the reliability factor on the
 //                                        # isolators' displacements (EN 1998-1 10.3(2))
 //   eccentricity: 0.05                   # accidental, of the footprint (plan models; 0: none)
@@ -75,6 +77,7 @@ struct DesignFile {
   // The factor on the isolators' displacements in the design values: gamma_x for Eurocode 8, 1
   // for ASCE 7-16 (whose margin is the 0.8 ELF floor instead).
   double gamma_x = 1.0;
+  double r_i = 0.0;  // ASCE 7-16 17.5.4.2's R_I; 0: not given (V_s not computed)
   std::vector<StudyRecord> records;  // empty when synthetic
   std::optional<SyntheticSuite> synthetic;
   double period_range[2] = {0.75, 1.25};  // factors on T_M upper, T_M lower (code default)
@@ -93,7 +96,8 @@ struct DesignFile {
 // not load or has no modification factors, a target out of range, a suite that is neither
 // records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not
 // 0 < lower <= 1 <= upper, orientations that are not distinct angles in [0, 360) (at most
-// kMaxOrientations) or other than [0] in one direction, gamma_x on a target other than Eurocode 8's or outside [1, 2], an
+// kMaxOrientations) or other than [0] in one direction, r_i on a Eurocode 8 target or outside
+// [1, 2], gamma_x on a target other than Eurocode 8's or outside [1, 2], an
 // eccentricity given for a one-direction model, a drift limit not in
 // (0, 1), a target given on a suite record (the design scales the suite itself).
 DesignFile LoadDesignFile(const std::string& path);

@@ -13,15 +13,16 @@
 //     four shifted cases of a building in plan) x record run through the study scheduler on
 //     local worker processes, each as `isolab run` runs it;
 //  5. the design values: per bound and record the envelope over the eccentricity cases and the
-//     record's orientations (a pair runs H1 along x, then along y: DesignFile::orientations), then the
-//     mean over the suite when it has at least kMinimumRecordsForMean records (ASCE 7-16 17.6.3.2
-//     allows it), the maximum otherwise; the governing bound per quantity; and the code's design
-//     values and checks (design_checks.h: ASCE 7-16's ELF floors, or EN 1998-1's gamma_x; drift,
-//     displacement capacities, uplift).
-// A Eurocode 8 design scales its suite by EN 1998-1's rule instead of ASCE's: the mean nowhere
-// below 90 % of the target over the range (3.2.3.1.2(4)c, its range 0.2 T_1 to 2 T_1 with T_1 the
-// isolated period, cut at 4 s where 3.2.2.2's spectrum ends), and the mean peak ground
-// acceleration not below the target's a_g S (3.2.3.1.2(4)b).
+//     record's orientations (a pair runs H1 along x, then along y: DesignFile::orientations), then
+//     the mean over the suite when it has at least kMinimumRecordsForMean records (ASCE
+//     7-16 17.6.3.2 allows it), the maximum otherwise; the governing bound per quantity; and the
+//     code's design values and checks (design_checks.h: ASCE 7-16's ELF floors, or EN 1998-1's
+//     gamma_x; drift, displacement capacities, uplift).
+// A Eurocode 8 design scales its suite by EN 1998-1's rule instead of ASCE's, each horizontal
+// component a time history of the suite: the mean of the components' 5 % spectra nowhere below
+// 90 % of the target over the range (3.2.3.1.2(4)c, its range 0.2 T_1 to 2 T_1 with T_1 the
+// isolated period, cut at 4 s where 3.2.2.2's spectrum ends), and the components' mean peak
+// ground acceleration not below the target's a_g S (3.2.3.1.2(4)b).
 #pragma once
 
 #include <array>
@@ -34,6 +35,7 @@
 
 #include "isolab/analysis/accidental_torsion.h"
 #include "isolab/analysis/equivalent_lateral_force.h"
+#include "isolab/model/bounds.h"
 #include "isolab/model/design_file.h"
 #include "isolab/model/study_file.h"
 #include "isolab/spectra/suite_scaling.h"
@@ -64,6 +66,9 @@ struct DesignBound {
   // D_TM of ASCE 7-16 Eq. 17.5-3 (not below 1.15 D_M) in plan; 1.15 D_M in one direction, where
   // the model has no plan to twist in.
   double elf_total_displacement = 0.0;
+  // Each isolator's effective properties at D_M (ELF), in layout order (bearing_weights names
+  // them): what another program's linear link takes.
+  std::vector<analysis::EffectiveProperties> bearings;
 };
 
 struct DesignRecord {
@@ -71,7 +76,9 @@ struct DesignRecord {
   std::vector<std::string> files;           // H1 (and H2)
   double shape_factor = 1.0, factor = 1.0;  // spectra/suite_scaling.h's s_i and f_i
   double misfit = -1.0;  // a synthetic pair's max |RotD100 / target - 1| as matched; -1: given
-  std::vector<double> spectrum;  // unscaled RotD100 (or 5 % Sa) at display_periods (g)
+  // Unscaled at display_periods (g): a pair's RotD100 (ASCE 7-16), or the mean of its components'
+  // 5 % spectra (EN 1998-1); one record's 5 % Sa.
+  std::vector<double> spectrum;
 };
 
 // Per bound: each design quantity's value over the suite (model units; drift ratio in %).
@@ -99,9 +106,22 @@ std::span<const DesignQuantityInfo> DesignQuantities();
 Quantity SourceOf(DesignQuantity quantity);
 
 struct DesignStatistic {
-  std::vector<double> per_record;  // the envelope over the eccentricity cases, per record
-  double mean = 0.0, max = 0.0;
+  // The envelope over the eccentricity cases and orientations, per record: the largest, or for a
+  // least axial load the least.
+  std::vector<double> per_record;
+  double mean = 0.0;
+  double max = 0.0;    // the most unfavourable record's: the largest (a least axial load: least)
   double value = 0.0;  // mean or max, as the suite's size allows
+};
+
+// A part's design values (a story's drift ratio and shear, a floor's acceleration, a bearing's
+// displacement and axial loads: PartQuantity), per bound, and the bound that governs: the
+// largest value (for a least axial load, the least).
+struct DesignPartValue {
+  PartQuantity quantity = PartQuantity::kStoryDriftRatio;
+  std::string part;
+  std::vector<DesignStatistic> bounds;
+  std::size_t governing = 0;
 };
 
 // An isolator's displacement capacity (bearing_capacity.h), nullopt when its laws give none.
@@ -121,6 +141,7 @@ struct DesignWarning {
 struct DesignOutcome {
   std::vector<DesignBound> bounds;                         // nominal, upper, lower
   std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
+  std::vector<model::BoundProperty> modified;  // each modified property, its lambdas and values
   std::vector<DesignRecord> records;
   // The angles (degrees from x to H1) each record runs at: model::DesignFile::orientations.
   std::vector<double> orientations = {0.0};
@@ -131,14 +152,14 @@ struct DesignOutcome {
   double period_range[2] = {0.0, 0.0};  // s
   // The code's suite rule: the share of the target the scaled mean may not fall below (1: ASCE
   // 7-16 17.3.3; 0.9: EN 1998-1 3.2.3.1.2(4)c); the range's top before EN 1998-1's cut at 4 s (0:
-  // not cut); EN 1998-1 3.2.3.1.2(4)b's mean peak ground acceleration of the scaled suite (each
-  // pair's largest horizontal resultant) and its floor a_g S (g; both 0 for ASCE 7-16), and
+  // not cut); EN 1998-1 3.2.3.1.2(4)b's mean peak ground acceleration of the scaled suite's
+  // components and its floor a_g S (g; both 0 for ASCE 7-16), and
   // whether that floor set the common factor.
   double target_fraction = 1.0;
   double uncut_range_top = 0.0;
   double mean_pga = 0.0, pga_floor = 0.0;
   bool pga_governs = false;
-  bool mean_of_suite = false;           // values are means (>= 7 records), else maxima
+  bool mean_of_suite = false;  // values are means (>= 7 records), else maxima
   // What ran: variants bound x case; records the scaled records x orientations (record-major).
   model::StudyFile study;
   std::vector<JobResult> runs;  // job order (variant-major)
@@ -154,12 +175,15 @@ struct DesignOutcome {
   std::vector<analysis::IsolationSystem::BearingWeight> bearing_weights;
   std::vector<IsolatorCapacity> capacities;  // per isolator, the nominal bound's
   double building_weight = 0.0;
+  // W_s: the weight above the isolation, the base level's excluded (0 without stories).
+  double structure_weight = 0.0;
   std::size_t failed = 0;
   std::vector<DesignWarning> warnings;  // bound by bound, each in the order first given
   DesignChecks checks;                  // the code's design values and checks
   // [bound][quantity]
   std::vector<std::array<DesignStatistic, kDesignQuantityCount>> values;
   std::array<std::size_t, kDesignQuantityCount> governing{};  // the bound with the largest value
+  std::vector<DesignPartValue> parts;      // per part and quantity, in the runs' order
   std::size_t figure_record = 0;           // the record of the histories kept for figures
   std::size_t figure_orientation = 0;      // and its orientation
   std::vector<std::string> history_files;  // per bound, relative to the output folder

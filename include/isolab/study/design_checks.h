@@ -14,7 +14,9 @@
 //   * where the model has axial loads (structure/axial_load.h), each bearing's least axial load
 //     over every run against zero: at or below it the bearing lifts off (ASCE 7-16 17.2.4.7
 //     permits local uplift only where the isolator is shown to take it, so it is reported as
-//     exceeded, with the count of runs that lifted it).
+//     exceeded, with the count of runs that lifted it). Without overturning in the model the
+//     loads are static shares: a bearing they lift is exceeded, otherwise the check is not
+//     checked (the overturning that lifts bearings is not modelled).
 #pragma once
 
 #include <cstddef>
@@ -57,10 +59,26 @@ struct DesignCheck {
   std::vector<std::string> isolators;  // the isolators (bearings) the check is of; empty: all
 };
 
+// ASCE 7-16's shear on the structure above the isolation, where the design gives R_I:
+//   V_st = V_b (W_s / W)^(1 - 2.5 beta_M)    (Eq. 17.5-7, per bound, from its ELF V_b and beta_M)
+//   V_s  = V_st / R_I                        (Eq. 17.5-8)
+// and from the response history, the first story's shear / R_I, not below 0.8 V_s (17.6.3 as
+// read here; a lower floor the edition may allow a regular structure is not taken). 17.5.4.3's
+// further limits (the fixed-base force of 12.8, wind, the force that activates the isolation) need
+// inputs a design file does not give: not checked, said so.
+struct SuperstructureShear {
+  double r_i = 0.0;
+  double structure_weight = 0.0, weight = 0.0;  // W_s, W
+  std::vector<double> v_st;                     // per bound
+  double elf = 0.0;                             // V_s (ELF): the largest V_st / R_I
+  DesignValue v_s;  // response history: first story's shear / R_I, floor 0.8 x elf
+};
+
 struct DesignChecks {
   model::DesignCode code = model::DesignCode::kAsce7_16;
-  DesignValue total_displacement;  // D_TM
-  DesignValue base_shear;          // V_b
+  DesignValue total_displacement;                     // D_TM
+  DesignValue base_shear;                             // V_b
+  std::optional<SuperstructureShear> superstructure;  // ASCE 7-16 with r_i and stories
   std::vector<DesignCheck> checks;
 };
 

@@ -1,7 +1,8 @@
 // The folder a design writes into, claimed so that a design never touches what it did not write:
 //  * the folder must be new, empty, or an earlier design's: every file in it listed, with its
-//    size, in that design's manifest (design_manifest.txt, written last), or a figure that
-//    scripts/plot_design.py drew from it afterwards (design_*.png or .pdf at its top). Anything
+//    size, in that design's manifest (design_manifest.txt, written last), or what
+//    scripts/plot_design.py drew from it afterwards (its four figures design_spectra, _loops,
+//    _orbits and _drifts as .png, .pdf or .json, and design.html, at its top). Anything
 //    else is refused before any work, naming the first file that is not the design's own;
 //  * one design at a time: a lock file beside the folder (".<name>.design-lock", holding the
 //    writer's pid) refuses a second design into the same folder while the first runs; a lock

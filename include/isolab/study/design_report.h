@@ -7,6 +7,11 @@
 //                        and the code's design values (bound "design", statistic "design")
 //   design_checks.csv    check,clause,unit,demand,limit,basis,verdict: the code's checks
 //                        (design_checks.h)
+//   design_parts.csv     bound,quantity,part,unit,statistic,value: each story's, floor's and
+//                        bearing's design values (DesignPartValue), mean and most unfavourable
+//   design_bearings.csv  bound,bearing,D_M,k_eff,beta_eff,energy_per_cycle,Qd_equivalent,
+//                        Kd_equivalent: each isolator at its bound's D_M (ELF), for another
+//                        program's link properties
 //   design_runs.csv      every run: bound, eccentricity case, record, factor, its quantities,
 //                        its summary file and the `isolab run` command (from the output folder)
 //                        that reproduces it on the case's model written in models/

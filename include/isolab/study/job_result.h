@@ -22,11 +22,8 @@ struct JobResult {
   std::string record_units;  // the record's units as read ("g", "cm/s^2"); empty: not read
   double pga = std::numeric_limits<double>::quiet_NaN();  // of the scaled record (g)
   std::vector<std::string> warnings;                      // implausible values (model_summary.h)
-  // Per bearing whose axial load the run modelled (structure/axial_load.h; empty without), its
-  // name and its least axial load N over the run (force, in the study's units; <= 0: uplift).
-  std::vector<std::string> axial_bearings;
-  std::vector<double> least_axial_loads;
-  double wall_seconds = 0.0;  // for progress only: never in a summary (machine-dependent)
+  std::vector<PartPeak> parts;  // the peaks of its stories, floors and bearings (quantities.h)
+  double wall_seconds = 0.0;    // for progress only: never in a summary (machine-dependent)
   // Of wall_seconds, the time spent writing the run's file. Like wall_seconds, never in a
   // summary.
   double output_seconds = 0.0;

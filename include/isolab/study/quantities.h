@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -67,6 +68,32 @@ std::vector<Quantity> StudyQuantities(bool rotations);
 // "mm", "kN", "%", "g": the unit quantity values are in, for a study in `units`.
 std::string QuantityUnit(Quantity quantity, const UnitSystem& units);
 
+// The peaks of a run's parts, for a design's per-story and per-bearing values (study units): each
+// story's drift ratio (%; NaN without a height) and shear, each floor's absolute acceleration (g)
+// above the isolation, each isolator's displacement, and each axially loaded bearing's least and
+// greatest axial load N (structure/axial_load.h).
+enum class PartQuantity : std::uint8_t {
+  kStoryDriftRatio,
+  kStoryShear,
+  kFloorAcceleration,
+  kIsolatorDisplacement,
+  kLeastAxialLoad,
+  kGreatestAxialLoad,
+};
+inline constexpr std::size_t kPartQuantityCount = 6;
+
+struct PartPeak {
+  PartQuantity quantity = PartQuantity::kStoryDriftRatio;
+  std::string part;  // the story's, floor's, isolator's or bearing's name
+  double value = 0.0;
+};
+
+// "story_drift_ratio", "story_shear", "floor_acceleration", "isolator_displacement",
+// "least_axial_load", "greatest_axial_load": a part quantity's key in files and Python.
+std::string_view PartQuantityName(PartQuantity quantity);
+// "%", "kN", "g", "mm": the unit of a part's quantity in `units`.
+std::string PartQuantityUnit(PartQuantity quantity, const UnitSystem& units);
+
 // All NaN: nothing measured.
 QuantityValues NoValues();
 
@@ -74,5 +101,9 @@ QuantityValues NoValues();
 QuantityValues MeasureQuantities(const analysis::Problem& problem,
                                  const analysis::ResponsePeaks& peaks,
                                  const UnitSystem& model_units, const UnitSystem& study_units);
+std::vector<PartPeak> MeasurePartPeaks(const analysis::Problem& problem,
+                                       const analysis::ResponsePeaks& peaks,
+                                       const UnitSystem& model_units,
+                                       const UnitSystem& study_units);
 
 }  // namespace isolab::study
