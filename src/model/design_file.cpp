@@ -347,6 +347,20 @@ DesignFile LoadDesignFile(const std::string& path) {
                               design.model_path));
     }
   }
+  // A pair turned by an angle runs under its name + "_at<angle>": no given record may be named so.
+  for (const StudyRecord& record : design.records) {
+    for (const double angle : design.orientations) {
+      const std::string turned = fmt::format("{}_at{:g}", record.name, angle);
+      const auto clash = std::find_if(design.records.begin(), design.records.end(),
+                                      [&](const StudyRecord& r) { return r.name == turned; });
+      if (angle != 0.0 && clash != design.records.end()) {
+        reader.Fail(suite["records"], "suite.records",
+                    fmt::format("'{}' is also the name '{}' runs under turned by {:g} degrees "
+                                "(give the record another name)",
+                                turned, record.name, angle));
+      }
+    }
+  }
   if (directions == 1) design.eccentricity = 0.0;
   if (root["eccentricity"]) {
     design.eccentricity = reader.ReadNumber(root["eccentricity"], "eccentricity");

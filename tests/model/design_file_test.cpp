@@ -116,6 +116,13 @@ TEST_F(DesignFileTest, OrientationsOfThePairs) {
   EXPECT_TRUE(Holds(ErrorOf("model: building.yaml\ntarget: {asce7: {sms: 1.5, sm1: 0.9}}\n" +
                             kRecords + "gamma_x: 1.2\n"),
                     "gamma_x: is Eurocode 8's reliability factor"));
+  // A record named as another turned by 90 degrees would share its run files.
+  const std::string pair = "{h1: {file: " + kGroundMotions +
+                           "fwn_firm_seed1.at2}, h2: {file: " + kGroundMotions +
+                           "h2_fwn_firm_seed3.at2}";
+  EXPECT_TRUE(Holds(ErrorOf(head + "suite:\n  records: [" + pair + ", name: a}, " + pair +
+                            ", name: a_at90}, " + pair + ", name: b}]\n"),
+                    "suite.records: 'a_at90' is also the name 'a' runs under turned by 90"));
 }
 
 TEST_F(DesignFileTest, RefusesWhatTheProcedureCannotDo) {

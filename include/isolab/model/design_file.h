@@ -96,7 +96,8 @@ struct DesignFile {
 // not load or has no modification factors, a target out of range, a suite that is neither
 // records nor synthetic (or both), fewer than kMinimumDesignRecords, a period range not
 // 0 < lower <= 1 <= upper, orientations that are not distinct angles in [0, 360) (at most
-// kMaxOrientations) or other than [0] in one direction, r_i on a Eurocode 8 target or outside
+// kMaxOrientations) or other than [0] in one direction, a record named as another turned by one
+// (its name + "_at90": they would share run files), r_i on a Eurocode 8 target or outside
 // [1, 2], gamma_x on a target other than Eurocode 8's or outside [1, 2], an
 // eccentricity given for a one-direction model, a drift limit not in
 // (0, 1), a target given on a suite record (the design scales the suite itself).
