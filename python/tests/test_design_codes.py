@@ -85,7 +85,7 @@ def design_file(repo, folder, target, extra=""):
     path = folder / "design.yaml"
     path.write_text(f"model: {model}\ntarget: {target}\n"
                     "suite:\n  synthetic: {count: 3, seed: 2, duration: 30 s, dt: 0.01 s, "
-                    "tolerance: 0.12}\n"
+                    "tolerance: 0.12}\n  orientations: [0]\n"
                     f"eccentricity: 0.05\n{extra}")
     return path
 

@@ -27,6 +27,7 @@ def design(repo, tmp_path_factory, isolab_cli):
     path.write_text(f"model: {repo / 'models' / 'design' / 'four_story_tfp_plan.yaml'}\n"
                     "target: {eurocode8: {agr: 0.3 g, ground: C, type: 1}}\n"
                     "suite:\n  synthetic: {count: 3, seed: 2, duration: 30 s, tolerance: 0.12}\n"
+                    "  orientations: [0]\n"
                     "eccentricity: 0.05\n")
     out = folder / "out"
     isolab_cli("design", path, "-q", "--no-figures", "-o", out)
