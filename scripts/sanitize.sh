@@ -51,19 +51,9 @@ fi
 jobs="${ISOLAB_JOBS:-$(nproc)}"
 # The Python module is left out: it would run inside an uninstrumented python3, which cannot load
 # an ASan library without LD_PRELOAD (and then reports the interpreter's own allocations).
-# A unity build (sources compiled in batches) built by Ninja, which compiles every library's
-# objects at once: half the CPU time and half the wall time of a Makefile build of single sources.
-# A build directory of another generator is made again.
-if ! command -v ninja >/dev/null; then
-  echo "sanitize.sh: needs ninja (scripts/setup.sh installs ninja-build)" >&2
-  exit 1
-fi
-cache="$build/CMakeCache.txt"
-if [[ -f "$cache" ]] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$cache"; then
-  rm -rf "$build"
-fi
-cmake -G Ninja -S . -B "$build" "${flags[@]}" -DCMAKE_UNITY_BUILD=ON -DISOLAB_SANITIZE=ON \
-  -DISOLAB_BUILD_PYTHON=OFF -DISOLAB_BUILD_BENCHMARKS=OFF "${launcher[@]}" >/dev/null
+source scripts/configure_build.sh
+configure_build "$build" "${flags[@]}" -DISOLAB_SANITIZE=ON -DISOLAB_BUILD_PYTHON=OFF \
+  -DISOLAB_BUILD_BENCHMARKS=OFF "${launcher[@]}"
 cmake --build "$build" -j "$jobs" "${targets[@]}"
 
 suppressions="$PWD/scripts/lsan_suppressions.txt"

@@ -37,5 +37,6 @@ if ((${#missing[@]} > 0)); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+source scripts/configure_build.sh
+configure_build build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)" "${targets[@]}"
