@@ -227,11 +227,12 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
     limit) and quiet are the command line's --seed, --budget, --cycles, --specimen,
     --force-unit, --length-unit, --threads, --force and -q; progress goes to stderr unless quiet.
 
-    Returns a dict as `isolab fit --json`: "e2" (the paper's sum over tests), "e2_mean",
-    "e2_per_test", "components" (name, type and the mathematical parameters), "evaluations",
-    "restarts", "seconds", "stop" ("converged" or "budget") and "stop_reason",
-    "identifiability" (findings, empty when none), "seed", "one_specimen". The cyclic fit
-    writes no file.
+    Returns the dict `isolab fit --json` prints (but its "output"): "e2" (the paper's sum over
+    tests), "e2_mean", "e2_per_test", "components" (name, type and the mathematical parameters),
+    "units", "energy_per_cycle", "identified_range", "evaluations", "restarts", "seconds",
+    "stop" ("converged" or "budget") and "stop_reason", "identifiability" (findings, empty when
+    none), "testing_factors", "notes" (the components the fit gave no stiffness, which a model
+    would leave out), "work", "seed", "one_specimen". The cyclic fit writes no file.
 
     building: a building fit specification (YAML, docs/building_fit.md) instead of model, as
     `isolab fit --building`: data are shake-table CSV files, one per motion, or with `input:

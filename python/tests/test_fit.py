@@ -26,6 +26,17 @@ def test_fit_equals_the_command_line(repo, tmp_path, isolab_cli):
     for a, b in zip(mine["components"], cli["components"]):
         assert (a["name"], a["type"]) == (b["name"], b["type"])
         assert a["parameters"] == pytest.approx(b["parameters"], rel=1e-9, abs=1e-12)
+    # One workflow and one rendering (analysis/cyclic_fit.h): every key the command line prints
+    # but the model file it wrote, with the same values.
+    assert set(mine) == set(cli) - {"output"}
+    for key in ("units", "identified_range", "identifiability", "one_specimen", "stop", "seed"):
+        assert mine[key] == cli[key], key
+    assert [(r["test"], r["cycle"]) for r in mine["energy_per_cycle"]] == \
+        [(r["test"], r["cycle"]) for r in cli["energy_per_cycle"]]
+    for a, b in zip(mine["energy_per_cycle"], cli["energy_per_cycle"]):
+        assert a["fitted"] == pytest.approx(b["fitted"], rel=1e-9)
+        assert a["measured"] == b["measured"]
+    assert mine["testing_factors"]["qd"] == cli["testing_factors"]["qd"]
     # The data came from the trilinear spring of three_laws.yaml: it comes back (its k1, k2, uyh).
     assert mine["components"][2]["parameters"]["k1"] == pytest.approx(0.2, abs=1e-3)
     assert mine["e2"] < 1e-4

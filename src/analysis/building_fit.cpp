@@ -142,30 +142,14 @@ identification::SearchOutcome GlobalStage(const identification::Objective& objec
   return outcome;
 }
 
-}  // namespace
-
-std::vector<BuildingChannel> FittedChannels(const model::ModelFile& model,
-                                            const BuildingFitSpec& spec) {
-  if (!spec.channels.empty()) return spec.channels;
-  std::vector<BuildingChannel> channels;
-  const std::size_t levels = LevelMasses(model).size();
-  for (const auto kind :
-       {BuildingChannel::Kind::kDisplacement, BuildingChannel::Kind::kAcceleration}) {
-    for (std::size_t l = 1; l <= levels; ++l) channels.push_back({kind, int(l)});
-  }
-  return channels;
-}
-
-BuildingFitResult FitBuilding(const model::ModelFile& model,
-                              const std::vector<BuildingMotion>& motions,
-                              const BuildingFitSpec& spec,
-                              const identification::FitOptions& options) {
-  options.Validate();
-  const auto clock = std::chrono::steady_clock::now();
+// The motions and channels checked against the model and the specification before any run.
+std::vector<BuildingChannel> CheckedChannels(const model::ModelFile& model,
+                                             const std::vector<BuildingMotion>& motions,
+                                             const BuildingFitSpec& spec) {
   if (motions.empty()) throw InputError({model.path}, "no motions to fit");
   if (spec.parameters.empty()) throw InputError({model.path}, "no parameters to fit");
   const std::size_t levels = LevelMasses(model).size();
-  const std::vector<BuildingChannel> channels = FittedChannels(model, spec);
+  std::vector<BuildingChannel> channels = FittedChannels(model, spec);
   for (const BuildingChannel& channel : channels) {
     if (std::size_t(channel.level) > levels) {
       throw InputError({model.path},
@@ -191,9 +175,13 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
     throw InputError({model.path}, fmt::format("substeps {}: expected >= 1", spec.substeps));
   }
 
+  return channels;
+}
+
+// The fitted parameters' search coordinates, and the start in them (`start`).
+Coordinates SearchCoordinates(const model::ModelFile& model, const BuildingFitSpec& spec,
+                              std::vector<double>& start) {
   Coordinates coordinates;
-  std::vector<double> start;
-  model::ModelFile base = model;
   for (const FittedParameterSpec& parameter : spec.parameters) {
     const double value = parameter.start.value_or(ParameterValue(model, parameter.name));
     ParameterRange range = DefaultRange(parameter.name, value);
@@ -208,81 +196,75 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
     coordinates.ranges.push_back({range.low, range.high, range.log});
     start.push_back(coordinates.ranges.back().Inverse(value));
   }
-  // The starting values must make a model that runs: a name the model lacks is an error here,
-  // not an infinite objective in the search.
-  SetParameters(&base, coordinates.names, coordinates.Values(start));
+  return coordinates;
+}
 
-  const ChannelHistories measured_raw = Measured(motions, channels);
-  std::vector<Band> bands;  // per motion, at its own sampling step
-  for (const BuildingMotion& motion : motions) {
-    bands.emplace_back(spec.band_low, spec.band_high, SampleStep(motion.measured));
-  }
-  ChannelHistories measured;
-  std::vector<double> scale;  // per motion x channel: 1 / sum of squares of the measured
-  for (std::size_t m = 0; m < motions.size(); ++m) {
-    std::vector<Signal>& filtered = measured.emplace_back();
-    for (std::size_t c = 0; c < measured_raw[m].size(); ++c) {
-      filtered.push_back(bands[m](measured_raw[m][c]));
-      const double sum = SumOfSquares(filtered.back());
-      if (!(sum > 0.0)) {
-        throw InputError({motions[m].name},
-                         fmt::format("channel {} is zero throughout{}: nothing to fit",
-                                     channels[c].Name(), bands[m].active() ? " in the band" : ""));
+// The weighted residual of a trial model against the measurements: per motion and channel
+// band(simulated - measured) / |band(measured)|.
+class BuildingResiduals {
+ public:
+  BuildingResiduals(const std::vector<BuildingMotion>& motions,
+                    const std::vector<BuildingChannel>& channels, const BuildingFitSpec& spec)
+      : motions_(motions), channels_(channels), spec_(spec) {
+    const ChannelHistories measured_raw = Measured(motions, channels);
+    for (const BuildingMotion& motion : motions) {
+      bands_.emplace_back(spec.band_low, spec.band_high, SampleStep(motion.measured));
+    }
+    for (std::size_t m = 0; m < motions.size(); ++m) {
+      std::vector<Signal>& filtered = measured_.emplace_back();
+      for (std::size_t c = 0; c < measured_raw[m].size(); ++c) {
+        filtered.push_back(bands_[m](measured_raw[m][c]));
+        const double sum = SumOfSquares(filtered.back());
+        if (!(sum > 0.0)) {
+          throw InputError(
+              {motions[m].name},
+              fmt::format("channel {} is zero throughout{}: nothing to fit", channels_[c].Name(),
+                          bands_[m].active() ? " in the band" : ""));
+        }
+        scale_.push_back(1.0 / sum);
       }
-      scale.push_back(1.0 / sum);
     }
   }
-  const double count = double(scale.size());
-  // Per channel the weighted residual band(simulated - measured) / |measured|.
-  const auto residuals = [&](const model::ModelFile& trial) {
+
+  std::vector<Signal> operator()(const model::ModelFile& trial) const {
     const ChannelHistories simulated =
-        SimulateChannels(trial, motions, channels, spec.sequential, spec.pause, spec.substeps);
+        SimulateChannels(trial, motions_, channels_, spec_.sequential, spec_.pause, spec_.substeps);
     std::vector<Signal> out;
     std::size_t i = 0;
-    for (std::size_t m = 0; m < motions.size(); ++m) {
-      for (std::size_t c = 0; c < channels.size(); ++c, ++i) {
-        Signal r = bands[m](simulated[m][c]);
-        const double weight = std::sqrt(scale[i]);
-        for (std::size_t k = 0; k < r.size(); ++k) r[k] = (r[k] - measured[m][c][k]) * weight;
+    for (std::size_t m = 0; m < motions_.size(); ++m) {
+      for (std::size_t c = 0; c < channels_.size(); ++c, ++i) {
+        Signal r = bands_[m](simulated[m][c]);
+        const double weight = std::sqrt(scale_[i]);
+        for (std::size_t k = 0; k < r.size(); ++k) r[k] = (r[k] - measured_[m][c][k]) * weight;
         out.push_back(std::move(r));
       }
     }
     return out;
-  };
-  const auto objective_of = [&](const std::vector<Signal>& r) {
+  }
+  // The objective: the mean over motions and channels of the squared NRMSE.
+  double Objective(const std::vector<Signal>& r) const {
     double sum = 0.0;
     for (const Signal& x : r) sum += SumOfSquares(x);
-    return sum / count;
-  };
-  const auto model_at = [&](std::span<const double> x) {
-    model::ModelFile trial = base;
-    SetParameters(&trial, coordinates.names, coordinates.Values(x));
-    return trial;
-  };
-  const identification::Objective objective = [&](std::span<const double> x) {
-    try {
-      return objective_of(residuals(model_at(x)));
-    } catch (const std::exception&) {
-      // A point where a law's rules break or the run fails is no answer.
-      return std::numeric_limits<double>::infinity();
-    }
-  };
+    return sum / count();
+  }
+  double count() const { return double(scale_.size()); }
 
-  BuildingFitResult result;
-  const std::vector<Signal> r_start = residuals(base);
-  result.objective_start = objective_of(r_start);
-  result.search = GlobalStage(objective, start, options, result.objective_start);
-  // The residual the refinement squares and sums: objective_of's terms, so |r|^2 is count times
-  // the objective.
-  const identification::Residual stacked = [&](std::span<const double> x) {
-    const std::vector<Signal> r = residuals(model_at(x));
-    Eigen::VectorXd out(long(Length(r)));
-    long row = 0;
-    for (const Signal& channel : r) {
-      for (const double v : channel) out[row++] = v;
-    }
-    return out;
-  };
+ private:
+  const std::vector<BuildingMotion>& motions_;
+  const std::vector<BuildingChannel>& channels_;
+  const BuildingFitSpec& spec_;
+  std::vector<Band> bands_;    // per motion, at its own sampling step
+  ChannelHistories measured_;  // band-passed
+  std::vector<double> scale_;  // per motion x channel: 1 / sum of squares of the measured
+};
+
+// The least-squares refinement from the global search's best (never worse than the start, which
+// its first population holds), then from the specification's start where the search moved away
+// from it: a short global search can end in a poorer basin than a good start lies in (the BNCS
+// building from its diagnosed isolation), so the start is never lost. Sets the result's
+// refinement, evaluations and stop reason.
+void Refine(const identification::Residual& stacked, const std::vector<double>& start,
+            const identification::FitOptions& options, double count, BuildingFitResult& result) {
   identification::RefinementOptions local;
   local.threads = options.threads;
   long spent = result.search.evaluations;
@@ -294,10 +276,6 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
       options.progress(line);
     };
   }
-  // Refined from the global search's best (never worse than the start, which its first
-  // population holds), then from the specification's start where the search moved away from it:
-  // a short global search can end in a poorer basin than a good start lies in (the BNCS building
-  // from its diagnosed isolation), so the start is never lost.
   std::vector<std::pair<std::string, identification::RefinementOutcome>> refined;
   for (const auto& [from, point] :
        {std::pair{std::string(result.search.evaluations > 0 ? "the global search's best"
@@ -328,41 +306,26 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
                                       from, identification::RefinementStopName(outcome.stop),
                                       outcome.value / count, outcome.evaluations);
   }
-  const std::vector<double>& best = result.refinement.point;
-  result.fitted = model_at(best);
-  const std::vector<Signal> r = residuals(result.fitted);
-  result.objective = objective_of(r);
+}
 
-  // Each channel's NRMSE before and after.
-  std::size_t i = 0;
-  for (std::size_t m = 0; m < motions.size(); ++m) {
-    for (const BuildingChannel& channel : channels) {
-      result.channels.push_back({motions[m].name, channel.Name(),
-                                 std::sqrt(SumOfSquares(r_start[i])),
-                                 std::sqrt(SumOfSquares(r[i]))});
-      ++i;
-    }
-  }
-
-  // Samples and their worth: each channel's samples over its residual's correlation time.
+// Samples and their worth: each channel's samples over its residual's correlation time.
+void CountSamples(const std::vector<Signal>& r, const std::vector<BuildingMotion>& motions,
+                  std::size_t channels, BuildingFitResult& result) {
   for (std::size_t c = 0; c < r.size(); ++c) {
     const double n = double(r[c].size());
     const double tau = diagnosis::IntegratedCorrelationTime(r[c]);
     result.samples += n;
     result.effective_samples += n / tau;
-    result.correlation_time += n * tau * SampleStep(motions[c / channels.size()].measured);
+    result.correlation_time += n * tau * SampleStep(motions[c / channels].measured);
   }
   result.correlation_time /= result.samples;
+}
 
-  // The Jacobian of the stacked residual in the coordinates (ln p or p): the refinement's last,
-  // where it was taken at the fitted point, else by the same central differences there.
-  const int parameters = int(best.size());
-  Eigen::MatrixXd jacobian = std::move(result.refinement.jacobian);
-  if (!result.refinement.jacobian_current) {
-    jacobian = identification::DifferenceJacobian(stacked, best, stacked(best),
-                                                  local.difference_step, local.threads)
-                   .jacobian;
-  }
+// The parameters' covariance from the Jacobian in the unit coordinates (s^2 (J'J)^+, inflated by
+// samples over effective samples), their correlations, and the pairs the data do not separate.
+void Uncertainty(Eigen::MatrixXd jacobian, const Coordinates& coordinates, double count,
+                 BuildingFitResult& result) {
+  const int parameters = int(coordinates.names.size());
   for (int p = 0; p < parameters; ++p) {
     const identification::CoordinateRange& range = coordinates.ranges[std::size_t(p)];
     jacobian.col(p) /= range.log ? std::log(range.high / range.low) : range.high - range.low;
@@ -396,17 +359,11 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
             [](const auto& x, const auto& y) {
               return std::abs(x.correlation) > std::abs(y.correlation);
             });
+}
 
-  const std::vector<double> values = coordinates.Values(best);
-  const std::vector<double> starts = coordinates.Values(start);
-  for (int p = 0; p < parameters; ++p) {
-    const std::size_t q = std::size_t(p);
-    const identification::CoordinateRange& range = coordinates.ranges[q];
-    result.parameters.push_back({coordinates.names[q], starts[q], values[q], range.low, range.high,
-                                 range.log, sd[p], best[q] < 1e-3 || best[q] > 1.0 - 1e-3});
-  }
-  // The range the isolation was identified on: the slab's motion relative to the table over the
-  // motions fitted, as a cyclic-test fit reads its data.
+// The range the isolation was identified on: the slab's motion relative to the table over the
+// motions fitted, as a cyclic-test fit reads its data.
+identification::IdentifiedRange SlabRange(const std::vector<BuildingMotion>& motions) {
   std::vector<identification::CyclicTestData> slab;
   for (const BuildingMotion& motion : motions) {
     identification::CyclicTestData& test = slab.emplace_back();
@@ -416,8 +373,105 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
     test.force.assign(test.time.size(), 0.0);
     identification::Segment(&test);
   }
-  result.fitted.identified_range =
-      identification::RangeOf(identification::SelectCycles(std::move(slab), {}));
+  return identification::RangeOf(identification::SelectCycles(std::move(slab), {}));
+}
+
+}  // namespace
+
+std::vector<BuildingChannel> FittedChannels(const model::ModelFile& model,
+                                            const BuildingFitSpec& spec) {
+  if (!spec.channels.empty()) return spec.channels;
+  std::vector<BuildingChannel> channels;
+  const std::size_t levels = LevelMasses(model).size();
+  for (const auto kind :
+       {BuildingChannel::Kind::kDisplacement, BuildingChannel::Kind::kAcceleration}) {
+    for (std::size_t l = 1; l <= levels; ++l) channels.push_back({kind, int(l)});
+  }
+  return channels;
+}
+
+BuildingFitResult FitBuilding(const model::ModelFile& model,
+                              const std::vector<BuildingMotion>& motions,
+                              const BuildingFitSpec& spec,
+                              const identification::FitOptions& options) {
+  options.Validate();
+  const auto clock = std::chrono::steady_clock::now();
+  const std::vector<BuildingChannel> channels = CheckedChannels(model, motions, spec);
+  std::vector<double> start;
+  const Coordinates coordinates = SearchCoordinates(model, spec, start);
+  // The starting values must make a model that runs: a name the model lacks is an error here,
+  // not an infinite objective in the search.
+  model::ModelFile base = model;
+  SetParameters(&base, coordinates.names, coordinates.Values(start));
+  const BuildingResiduals residuals(motions, channels, spec);
+  const double count = residuals.count();
+  const auto model_at = [&](std::span<const double> x) {
+    model::ModelFile trial = base;
+    SetParameters(&trial, coordinates.names, coordinates.Values(x));
+    return trial;
+  };
+  const identification::Objective objective = [&](std::span<const double> x) {
+    try {
+      return residuals.Objective(residuals(model_at(x)));
+    } catch (const std::exception&) {
+      // A point where a law's rules break or the run fails is no answer.
+      return std::numeric_limits<double>::infinity();
+    }
+  };
+
+  BuildingFitResult result;
+  const std::vector<Signal> r_start = residuals(base);
+  result.objective_start = residuals.Objective(r_start);
+  result.search = GlobalStage(objective, start, options, result.objective_start);
+  // The residual the refinement squares and sums: the objective's terms, so |r|^2 is count times
+  // the objective.
+  const identification::Residual stacked = [&](std::span<const double> x) {
+    const std::vector<Signal> r = residuals(model_at(x));
+    Eigen::VectorXd out(long(Length(r)));
+    long row = 0;
+    for (const Signal& channel : r) {
+      for (const double v : channel) out[row++] = v;
+    }
+    return out;
+  };
+  Refine(stacked, start, options, count, result);
+  const std::vector<double>& best = result.refinement.point;
+  result.fitted = model_at(best);
+  const std::vector<Signal> r = residuals(result.fitted);
+  result.objective = residuals.Objective(r);
+
+  // Each channel's NRMSE before and after.
+  std::size_t i = 0;
+  for (std::size_t m = 0; m < motions.size(); ++m) {
+    for (const BuildingChannel& channel : channels) {
+      result.channels.push_back({motions[m].name, channel.Name(),
+                                 std::sqrt(SumOfSquares(r_start[i])),
+                                 std::sqrt(SumOfSquares(r[i]))});
+      ++i;
+    }
+  }
+  CountSamples(r, motions, channels.size(), result);
+
+  // The Jacobian of the stacked residual in the coordinates (ln p or p): the refinement's last,
+  // where it was taken at the fitted point, else by the same central differences there.
+  Eigen::MatrixXd jacobian = std::move(result.refinement.jacobian);
+  if (!result.refinement.jacobian_current) {
+    jacobian = identification::DifferenceJacobian(
+                   stacked, best, stacked(best),
+                   identification::RefinementOptions{}.difference_step, options.threads)
+                   .jacobian;
+  }
+  Uncertainty(std::move(jacobian), coordinates, count, result);
+
+  const std::vector<double> values = coordinates.Values(best);
+  const std::vector<double> starts = coordinates.Values(start);
+  const Eigen::VectorXd sd = result.covariance.diagonal().cwiseMax(0.0).cwiseSqrt();
+  for (std::size_t q = 0; q < best.size(); ++q) {
+    const identification::CoordinateRange& range = coordinates.ranges[q];
+    result.parameters.push_back({coordinates.names[q], starts[q], values[q], range.low, range.high,
+                                 range.log, sd[long(q)], best[q] < 1e-3 || best[q] > 1.0 - 1e-3});
+  }
+  result.fitted.identified_range = SlabRange(motions);
   model::ParameterUncertainty& uncertainty = result.fitted.uncertainty.emplace();
   uncertainty.names = coordinates.names;
   uncertainty.values = values;

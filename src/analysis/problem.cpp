@@ -223,23 +223,18 @@ integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_step
   return {dt, static_cast<int>(steps)};
 }
 
-Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
-  if (overrides.fixed_base && model.axial_load) {
-    throw InputError(model.axial_load->location,
-                     "axial_load: the run is on a fixed base (--fixed-base, fixed_base): no "
-                     "bearing carries the weight; leave one of the two out");
-  }
-  structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
-  // The superstructure on a fixed base, for its periods: the run's own structure, or built once
-  // more (an SDOF and a slab on isolators have none).
-  std::optional<structure::LaidOutStructure> fixed_base;
-  if (!overrides.fixed_base && !built.layout.stories.empty()) {
-    fixed_base = model::BuildStructure(model, true);
-  }
-  Problem problem{model, std::move(built.structure), std::move(built.layout), {}, {}, {}, 0.0, {}};
-  const structure::Layout& layout = problem.layout;
-  const int dofs = problem.structure.dofs();
+namespace {
 
+// A command-line component's location is its option already; a model's names file and line.
+std::string KeyOf(const Component& c) {
+  return c.motion.location.file == c.motion.key ? std::string() : c.motion.key + ": ";
+}
+
+// The run's horizontal components, and its vertical one into `vertical` where the record has one
+// and the model asks for it (a vertical component acts only through the axial loads).
+std::vector<Component> ChooseHorizontalComponents(const model::ModelFile& model,
+                                                  const RunOverrides& overrides,
+                                                  std::optional<Component>& vertical) {
   if (overrides.vertical && overrides.records.empty()) {
     throw InputError({overrides.vertical->name}, "needs --record: the record's first component");
   }
@@ -261,21 +256,26 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
                          : std::string("axial_load.vertical: the record replacing the model's has "
                                        "no vertical component (give --record-v)"));
   }
-  std::optional<Component> vertical;
   if (has_vertical) {
     vertical = std::move(components.back());
     components.pop_back();
   }
+  return components;
+}
+
+// The components applied to the problem (scaled, in the model's units, turned by the angle), each
+// checked against h1; returns the record's step (0 without a record).
+double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& overrides,
+                          std::vector<Component>& components, std::optional<Component>& vertical,
+                          Problem& problem) {
+  const structure::Layout& layout = problem.layout;
   const double angle = overrides.records.empty() ? model.excitation.angle : overrides.angle;
   // A command-line component's location is its option already; a model's names file and line.
-  const auto key_of = [](const Component& c) {
-    return c.motion.location.file == c.motion.key ? std::string() : c.motion.key + ": ";
-  };
   if (static_cast<int>(components.size()) > layout.directions) {
     throw InputError(components[1].motion.location,
                      fmt::format("{}the structure moves along x only: one component, along x "
                                  "(a second component needs a building in plan)",
-                                 key_of(components[1])));
+                                 KeyOf(components[1])));
   }
   if (layout.directions == 1 && angle != 0.0) {
     throw InputError(
@@ -304,12 +304,12 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
       throw InputError(c.motion.location,
                        fmt::format("{}its step {:g} differs from h1's {:g}; a pair must share "
                                    "one step",
-                                   key_of(c), histories[i].dt, h1.dt));
+                                   KeyOf(c), histories[i].dt, h1.dt));
     }
     if (histories[i].values.size() != h1.values.size()) {
       throw InputError(c.motion.location,
                        fmt::format("{}{} samples, h1 has {}; a pair must have the same length",
-                                   key_of(c), histories[i].values.size(), h1.values.size()));
+                                   KeyOf(c), histories[i].values.size(), h1.values.size()));
     }
   }
   problem.angle = angle;
@@ -323,7 +323,7 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
     if (histories.empty()) {
       throw InputError(
           c.motion.location,
-          fmt::format("{}a vertical component needs the horizontal h1 beside it", key_of(c)));
+          fmt::format("{}a vertical component needs the horizontal h1 beside it", KeyOf(c)));
     }
     const integrators::SampledHistory& h1 = histories[0];
     if (std::abs(problem.excitation.vertical.dt - h1.dt) > 1e-9 * h1.dt ||
@@ -332,12 +332,19 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
           c.motion.location,
           fmt::format("{}its step {:g} and {} samples differ from h1's {:g} and {}; "
                       "the record's components must share their step and length",
-                      key_of(c), problem.excitation.vertical.dt,
+                      KeyOf(c), problem.excitation.vertical.dt,
                       problem.excitation.vertical.values.size(), h1.dt, h1.values.size()));
     }
   }
-  double record_dt = histories.empty() ? 0.0 : histories[0].dt;
+  return histories.empty() ? 0.0 : histories[0].dt;
+}
 
+// The model's applied forces, on the variant's dofs; returns the step to run on where no record
+// gives one.
+double ApplyForces(const model::ModelFile& model, const RunOverrides& overrides, double record_dt,
+                   Problem& problem) {
+  const structure::Layout& layout = problem.layout;
+  const int dofs = problem.structure.dofs();
   // A fixed-base variant loses the base's dofs: applied forces shift down by them.
   int dof_shift = 0;
   if (overrides.fixed_base && model::BuildStructure(model).layout.isolated()) {
@@ -356,7 +363,12 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   if (problem.excitation.duration() <= 0.0 && record_dt == 0.0) {
     throw InputError({model.path}, "no excitation: give excitation.ground_motion or forces");
   }
+  return record_dt;
+}
 
+// The step, the model's summary and the run's length: the excitation, then free vibration.
+void SetTimeGrid(const model::ModelFile& model, const RunOverrides& overrides, double record_dt,
+                 const structure::LaidOutStructure* fixed_base, Problem& problem) {
   const double dt = overrides.dt.value_or(model.analysis.dt > 0.0 ? model.analysis.dt : record_dt);
   if (!(dt > 0.0)) throw InputError({"command line"}, fmt::format("--dt {:g} must be > 0", dt));
   if (!problem.records.empty() && dt > record_dt * (1.0 + 1e-9)) {
@@ -372,8 +384,8 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   }
   double pga = 0.0;
   for (const io::AppliedRecord& record : problem.records) pga = std::max(pga, record.pga);
-  problem.summary = SummariseModel(problem.structure, problem.layout,
-                                   fixed_base ? &*fixed_base : nullptr, model.units, pga, trial);
+  problem.summary =
+      SummariseModel(problem.structure, problem.layout, fixed_base, model.units, pga, trial);
 
   problem.excitation_end = problem.excitation.duration();
   double duration = model.analysis.duration;
@@ -391,6 +403,29 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
   }
   problem.residual_window = std::min(problem.summary.LongestPeriod(), problem.free_vibration);
   problem.grid = StepGrid(dt, duration, overrides.max_steps, overrides.dt ? "--dt" : model.path);
+}
+
+}  // namespace
+
+Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
+  if (overrides.fixed_base && model.axial_load) {
+    throw InputError(model.axial_load->location,
+                     "axial_load: the run is on a fixed base (--fixed-base, fixed_base): no "
+                     "bearing carries the weight; leave one of the two out");
+  }
+  structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
+  // The superstructure on a fixed base, for its periods: the run's own structure, or built once
+  // more (an SDOF and a slab on isolators have none).
+  std::optional<structure::LaidOutStructure> fixed_base;
+  if (!overrides.fixed_base && !built.layout.stories.empty()) {
+    fixed_base = model::BuildStructure(model, true);
+  }
+  Problem problem{model, std::move(built.structure), std::move(built.layout), {}, {}, {}, 0.0, {}};
+  std::optional<Component> vertical;
+  std::vector<Component> components = ChooseHorizontalComponents(model, overrides, vertical);
+  double record_dt = ApplyGroundMotions(model, overrides, components, vertical, problem);
+  record_dt = ApplyForces(model, overrides, record_dt, problem);
+  SetTimeGrid(model, overrides, record_dt, fixed_base ? &*fixed_base : nullptr, problem);
   return problem;
 }
 

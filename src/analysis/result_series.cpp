@@ -67,6 +67,244 @@ MemberLevels LevelsOfMembers(const Problem& problem) {
   return levels;
 }
 
+bool IsSelected(const std::vector<int>& sorted_levels, int level) {
+  return std::binary_search(sorted_levels.begin(), sorted_levels.end(), level);
+}
+
+// Time and the ground's accelerations.
+void AppendGroundSeries(const Problem& problem, std::vector<Series>& series) {
+  const UnitSystem& units = problem.units();
+  const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
+  series.push_back(Vector("time", units.time(), [](const ResponseRow& row) { return row.time; }));
+  if (!problem.records.empty()) {
+    std::vector<std::string> columns;
+    if (problem.layout.directions == 2) columns = {"x", "y"};
+    series.push_back({"ground_acceleration", acceleration, columns,
+                      [&problem](const ResponseRow& row, double* out) {
+                        for (const integrators::GroundMotion& motion : problem.excitation.ground) {
+                          *out++ = motion.acceleration.At(row.time);
+                        }
+                      }});
+  }
+  if (!problem.excitation.vertical.values.empty()) {
+    series.push_back(Vector(
+        "vertical_ground_acceleration", acceleration,
+        [&problem](const ResponseRow& row) { return problem.excitation.vertical.At(row.time); }));
+  }
+}
+
+// The selected levels' motions per dof, and the forces of the members that belong to them.
+void AppendLevelSeries(const Problem& problem, const model::OutputSelection& selection,
+                       const std::vector<int>& levels, std::vector<Series>& series) {
+  const UnitSystem& units = problem.units();
+  const structure::Structure& s = problem.structure;
+  const structure::Layout& layout = problem.layout;
+  const bool two = layout.directions == 2;
+  std::vector<int> translations, rotations;
+  std::vector<std::string> translation_names, rotation_names;
+  for (const int level : levels) {
+    const structure::Level& l = layout.levels[level];
+    const std::vector<std::string> names = Directional(l.name, two);
+    for (int d = 0; d < layout.directions; ++d) {
+      translations.push_back(l.dofs[d]);
+      translation_names.push_back(names[d]);
+    }
+    if (l.dofs[structure::kRotation] != kGround) {
+      rotations.push_back(l.dofs[structure::kRotation]);
+      rotation_names.push_back(l.name);
+    }
+  }
+  // Torsion members' forces are torques: they are the stories' torque, not connection forces.
+  std::vector<bool> torque(s.members().size(), false);
+  for (const structure::StoryLayout& story : layout.stories) {
+    if (story.members[structure::kRotation] >= 0)
+      torque[story.members[structure::kRotation]] = true;
+  }
+  const MemberLevels member_levels = LevelsOfMembers(problem);
+  std::vector<int> force_columns;
+  std::vector<std::string> force_names;
+  for (std::size_t k = 0; k < s.members().size(); ++k) {
+    if (torque[k] || !IsSelected(levels, member_levels.member[k])) continue;
+    force_columns.push_back(static_cast<int>(k));
+    force_names.push_back(s.members()[k].name);
+  }
+  for (std::size_t i = 0; i < s.coupled_members().size(); ++i) {
+    if (!IsSelected(levels, member_levels.coupled[i])) continue;
+    int column = static_cast<int>(s.coupled_force_column(i));
+    for (const std::string& name : Directional(s.coupled_members()[i].name, true)) {
+      force_names.push_back(name);
+      force_columns.push_back(column++);
+    }
+  }
+  const auto per_dof = [&](const char* name, Dimension dimension, RowValues values) {
+    if (selection.Records(name)) {
+      series.push_back(
+          Columns(name, DescribeUnits(units, dimension), translation_names, values, translations));
+    }
+  };
+  per_dof("displacement", dimension::kLength, &ResponseRow::displacement);
+  if (selection.Records("displacement") && !rotations.empty()) {
+    series.push_back(
+        Columns("rotation", "rad", rotation_names, &ResponseRow::displacement, rotations));
+  }
+  per_dof("velocity", dimension::kVelocity, &ResponseRow::velocity);
+  per_dof("acceleration", dimension::kAcceleration, &ResponseRow::acceleration);
+  per_dof("absolute_acceleration", dimension::kAcceleration, &ResponseRow::absolute_acceleration);
+  if (selection.Records("connection_force") && !force_columns.empty()) {
+    series.push_back(Columns("connection_force", DescribeUnits(units, dimension::kForce),
+                             force_names, &ResponseRow::connection_force, force_columns));
+  }
+}
+
+// Each isolator's (x[, y]) deformation and force, as the row gives them, its resultant, axial
+// load and the forces of its components.
+void AppendIsolatorSeries(const Problem& problem, std::vector<Series>& series) {
+  const structure::Structure& s = problem.structure;
+  const structure::Layout& layout = problem.layout;
+  const std::string length = DescribeUnits(problem.units(), dimension::kLength);
+  const std::string force = DescribeUnits(problem.units(), dimension::kForce);
+  std::vector<std::string> names, resultants, components;
+  std::vector<int> force_of;  // per column: its force column
+  bool any_coupled = false;
+  std::vector<std::size_t> component_laws;  // per component column: its law state
+  const bool many = layout.isolators.size() > 1;
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    const bool coupled = isolator.coupled >= 0;
+    any_coupled = any_coupled || coupled;
+    for (const std::string& name : Directional(isolator.name, coupled)) names.push_back(name);
+    resultants.push_back(isolator.name);
+    const std::string prefix = many ? isolator.name + "/" : "";
+    if (coupled) {
+      const std::size_t column = s.coupled_force_column(isolator.coupled);
+      force_of.push_back(static_cast<int>(column));
+      force_of.push_back(static_cast<int>(column + 1));
+      std::size_t law = s.coupled_law_offset(isolator.coupled);
+      for (const auto& component : s.coupled_members()[isolator.coupled].assembly.components()) {
+        for (const std::string& name : Directional(prefix + component.name, true)) {
+          components.push_back(name);
+          component_laws.push_back(law++);
+        }
+      }
+    } else {
+      force_of.push_back(isolator.member);
+      std::size_t law = s.law_offset(isolator.member);
+      for (const auto& component : s.members()[isolator.member].assembly.components()) {
+        components.push_back(prefix + component.name);
+        component_laws.push_back(law++);
+      }
+    }
+  }
+  const auto deformations = [&problem](const ResponseRow& row, double* out) {
+    for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+      if (isolator.member >= 0) {
+        *out++ = problem.structure.MemberDeformation(isolator.member, row.displacement);
+      } else {
+        const Vec2 u = problem.structure.CoupledDeformation(isolator.coupled, row.displacement);
+        *out++ = u.x;
+        *out++ = u.y;
+      }
+    }
+  };
+  series.push_back({"isolator/displacement", length, Named(names), deformations});
+  series.push_back(
+      Columns("isolator/force", force, Named(names), &ResponseRow::connection_force, force_of));
+  if (any_coupled) {
+    series.push_back({"isolator/resultant", length, Named(resultants),
+                      [&problem](const ResponseRow& row, double* out) {
+                        for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+                          *out++ = isolator.member >= 0
+                                       ? std::abs(problem.structure.MemberDeformation(
+                                             isolator.member, row.displacement))
+                                       : Norm(problem.structure.CoupledDeformation(
+                                             isolator.coupled, row.displacement));
+                        }
+                      }});
+  }
+  const structure::AxialLoads& axial = s.axial_loads();
+  if (!axial.empty()) {
+    std::vector<std::string> bearings;
+    for (const structure::AxialBearing& bearing : axial.bearings) bearings.push_back(bearing.name);
+    series.push_back({"isolator/axial_load", force, Named(bearings),
+                      [count = axial.bearings.size()](const ResponseRow& row, double* out) {
+                        for (std::size_t j = 0; j < count; ++j) {
+                          out[j] = j < row.axial_load.size()
+                                       ? row.axial_load[j]
+                                       : std::numeric_limits<double>::quiet_NaN();
+                        }
+                      }});
+  }
+  series.push_back({"isolator/component_force", force, components,
+                    [laws = std::move(component_laws)](const ResponseRow& row, double* out) {
+                      for (const std::size_t law : laws) *out++ = row.law_force[law];
+                    }});
+}
+
+// Per selected story and direction: its drift (and drift ratio, where stories have heights) and
+// shear; in plan its twist and torque.
+void AppendStorySeries(const Problem& problem, const std::vector<std::size_t>& stories,
+                       std::vector<Series>& series) {
+  const structure::Layout& layout = problem.layout;
+  const bool two = layout.directions == 2;
+  const std::string length = DescribeUnits(problem.units(), dimension::kLength);
+  const std::string force = DescribeUnits(problem.units(), dimension::kForce);
+  const std::string energy =
+      fmt::format("{}*{}", problem.units().force(), problem.units().length());
+  std::vector<int> members, twists;
+  std::vector<std::string> names, twist_names;
+  std::vector<double> per_height;
+  bool heights = false;
+  for (const std::size_t k : stories) {
+    const structure::StoryLayout& story = layout.stories[k];
+    heights = heights || story.height > 0.0;
+    const std::vector<std::string> directional = Directional(story.name, two);
+    for (int d = 0; d < layout.directions; ++d) {
+      if (story.members[d] < 0) continue;
+      members.push_back(story.members[d]);
+      names.push_back(directional[d]);
+      per_height.push_back(story.height > 0.0 ? 100.0 / story.height
+                                              : std::numeric_limits<double>::quiet_NaN());
+    }
+    if (story.members[structure::kRotation] >= 0) {
+      twists.push_back(story.members[structure::kRotation]);
+      twist_names.push_back(story.name);
+    }
+  }
+  const auto drifts = [&](std::string name, std::string units, std::vector<int> chosen_members,
+                          std::vector<std::string> columns, std::vector<double> factors) {
+    return Series{std::move(name), std::move(units), std::move(columns),
+                  [&problem, chosen_members, factors](const ResponseRow& row, double* out) {
+                    for (std::size_t c = 0; c < chosen_members.size(); ++c) {
+                      out[c] = factors[c] * problem.structure.MemberDeformation(chosen_members[c],
+                                                                                row.displacement);
+                    }
+                  }};
+  };
+  series.push_back(
+      drifts("story/drift", length, members, names, std::vector<double>(members.size(), 1.0)));
+  if (heights) series.push_back(drifts("story/drift_ratio", "%", members, names, per_height));
+  series.push_back(Columns("story/shear", force, names, &ResponseRow::connection_force, members));
+  if (!twists.empty()) {
+    series.push_back(
+        drifts("story/twist", "rad", twists, twist_names, std::vector<double>(twists.size(), 1.0)));
+    series.push_back(
+        Columns("story/torque", energy, twist_names, &ResponseRow::connection_force, twists));
+  }
+}
+
+void AppendEnergySeries(const Problem& problem, std::vector<Series>& series) {
+  const std::string energy =
+      fmt::format("{}*{}", problem.units().force(), problem.units().length());
+  const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
+    series.push_back(Vector(fmt::format("energy/{}", name), energy,
+                            [term](const ResponseRow& row) { return row.energies.*term; }));
+  };
+  energy_term("input", &integrators::Energies::input);
+  energy_term("kinetic", &integrators::Energies::kinetic);
+  energy_term("damping", &integrators::Energies::damping);
+  energy_term("elastic", &integrators::Energies::elastic);
+  energy_term("hysteretic", &integrators::Energies::hysteretic);
+}
+
 }  // namespace
 
 std::vector<NamedPeak> FilePeaks(const Problem& problem, const ResponsePeaks& peaks) {
@@ -137,230 +375,17 @@ std::vector<std::string> RecordedLevels(const model::OutputSelection& selection,
 std::vector<Series> ResultSeries(const Problem& problem, const model::OutputSelection& selection) {
   std::vector<Series> series;
   if (selection.summary_only) return series;
-  const UnitSystem& units = problem.units();
-  const structure::Structure& s = problem.structure;
   const structure::Layout& layout = problem.layout;
-  const bool two = layout.directions == 2;
-  const std::string length = DescribeUnits(units, dimension::kLength);
-  const std::string force = DescribeUnits(units, dimension::kForce);
-  const std::string velocity = DescribeUnits(units, dimension::kVelocity);
-  const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
-  const std::string energy = fmt::format("{}*{}", units.force(), units.length());
-
-  // The selected levels: their dofs, and the members and stories that belong to them.
   const std::vector<int> levels = SelectedLevels(selection, layout, "output.levels");
-  const auto chosen = [&levels](int level) {
-    return std::binary_search(levels.begin(), levels.end(), level);
-  };
-  std::vector<int> translations, rotations;
-  std::vector<std::string> translation_names, rotation_names;
-  for (const int level : levels) {
-    const structure::Level& l = layout.levels[level];
-    const std::vector<std::string> names = Directional(l.name, two);
-    for (int d = 0; d < layout.directions; ++d) {
-      translations.push_back(l.dofs[d]);
-      translation_names.push_back(names[d]);
-    }
-    if (l.dofs[structure::kRotation] != kGround) {
-      rotations.push_back(l.dofs[structure::kRotation]);
-      rotation_names.push_back(l.name);
-    }
-  }
-  // Torsion members' forces are torques: they are the stories' torque, not connection forces.
-  std::vector<bool> torque(s.members().size(), false);
-  for (const structure::StoryLayout& story : layout.stories) {
-    if (story.members[structure::kRotation] >= 0)
-      torque[story.members[structure::kRotation]] = true;
-  }
-  const MemberLevels member_levels = LevelsOfMembers(problem);
-  std::vector<int> force_columns;
-  std::vector<std::string> force_names;
-  for (std::size_t k = 0; k < s.members().size(); ++k) {
-    if (torque[k] || !chosen(member_levels.member[k])) continue;
-    force_columns.push_back(static_cast<int>(k));
-    force_names.push_back(s.members()[k].name);
-  }
-  for (std::size_t i = 0; i < s.coupled_members().size(); ++i) {
-    if (!chosen(member_levels.coupled[i])) continue;
-    int column = static_cast<int>(s.coupled_force_column(i));
-    for (const std::string& name : Directional(s.coupled_members()[i].name, true)) {
-      force_names.push_back(name);
-      force_columns.push_back(column++);
-    }
-  }
-
-  series.push_back(Vector("time", units.time(), [](const ResponseRow& row) { return row.time; }));
-  if (!problem.records.empty()) {
-    std::vector<std::string> columns;
-    if (two) columns = {"x", "y"};
-    series.push_back({"ground_acceleration", acceleration, columns,
-                      [&problem](const ResponseRow& row, double* out) {
-                        for (const integrators::GroundMotion& motion : problem.excitation.ground) {
-                          *out++ = motion.acceleration.At(row.time);
-                        }
-                      }});
-  }
-  if (!problem.excitation.vertical.values.empty()) {
-    series.push_back(Vector(
-        "vertical_ground_acceleration", acceleration,
-        [&problem](const ResponseRow& row) { return problem.excitation.vertical.At(row.time); }));
-  }
-  const auto per_dof = [&](const char* name, const std::string& units, RowValues values) {
-    if (selection.Records(name)) {
-      series.push_back(Columns(name, units, translation_names, values, translations));
-    }
-  };
-  per_dof("displacement", length, &ResponseRow::displacement);
-  if (selection.Records("displacement") && !rotations.empty()) {
-    series.push_back(
-        Columns("rotation", "rad", rotation_names, &ResponseRow::displacement, rotations));
-  }
-  per_dof("velocity", velocity, &ResponseRow::velocity);
-  per_dof("acceleration", acceleration, &ResponseRow::acceleration);
-  per_dof("absolute_acceleration", acceleration, &ResponseRow::absolute_acceleration);
-  if (selection.Records("connection_force") && !force_columns.empty()) {
-    series.push_back(Columns("connection_force", force, force_names, &ResponseRow::connection_force,
-                             force_columns));
-  }
-
-  if (layout.isolated() && selection.Records("isolator")) {
-    // Each isolator's (x[, y]) deformation and force, as the row gives them.
-    std::vector<std::string> names, resultants, components;
-    std::vector<int> force_of;  // per column: its force column
-    bool any_coupled = false;
-    std::vector<std::size_t> component_laws;  // per component column: its law state
-    const bool many = layout.isolators.size() > 1;
-    for (const structure::IsolatorLayout& isolator : layout.isolators) {
-      const bool coupled = isolator.coupled >= 0;
-      any_coupled = any_coupled || coupled;
-      for (const std::string& name : Directional(isolator.name, coupled)) names.push_back(name);
-      resultants.push_back(isolator.name);
-      const std::string prefix = many ? isolator.name + "/" : "";
-      if (coupled) {
-        const std::size_t column = s.coupled_force_column(isolator.coupled);
-        force_of.push_back(static_cast<int>(column));
-        force_of.push_back(static_cast<int>(column + 1));
-        std::size_t law = s.coupled_law_offset(isolator.coupled);
-        for (const auto& component : s.coupled_members()[isolator.coupled].assembly.components()) {
-          for (const std::string& name : Directional(prefix + component.name, true)) {
-            components.push_back(name);
-            component_laws.push_back(law++);
-          }
-        }
-      } else {
-        force_of.push_back(isolator.member);
-        std::size_t law = s.law_offset(isolator.member);
-        for (const auto& component : s.members()[isolator.member].assembly.components()) {
-          components.push_back(prefix + component.name);
-          component_laws.push_back(law++);
-        }
-      }
-    }
-    const auto deformations = [&problem](const ResponseRow& row, double* out) {
-      for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-        if (isolator.member >= 0) {
-          *out++ = problem.structure.MemberDeformation(isolator.member, row.displacement);
-        } else {
-          const Vec2 u = problem.structure.CoupledDeformation(isolator.coupled, row.displacement);
-          *out++ = u.x;
-          *out++ = u.y;
-        }
-      }
-    };
-    series.push_back({"isolator/displacement", length, Named(names), deformations});
-    series.push_back(
-        Columns("isolator/force", force, Named(names), &ResponseRow::connection_force, force_of));
-    if (any_coupled) {
-      series.push_back(
-          {"isolator/resultant", length, Named(resultants),
-           [&problem](const ResponseRow& row, double* out) {
-             for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-               *out++ = isolator.member >= 0 ? std::abs(problem.structure.MemberDeformation(
-                                                   isolator.member, row.displacement))
-                                             : Norm(problem.structure.CoupledDeformation(
-                                                   isolator.coupled, row.displacement));
-             }
-           }});
-    }
-    const structure::AxialLoads& axial = s.axial_loads();
-    if (!axial.empty()) {
-      std::vector<std::string> bearings;
-      for (const structure::AxialBearing& bearing : axial.bearings)
-        bearings.push_back(bearing.name);
-      series.push_back({"isolator/axial_load", force, Named(bearings),
-                        [count = axial.bearings.size()](const ResponseRow& row, double* out) {
-                          for (std::size_t j = 0; j < count; ++j) {
-                            out[j] = j < row.axial_load.size()
-                                         ? row.axial_load[j]
-                                         : std::numeric_limits<double>::quiet_NaN();
-                          }
-                        }});
-    }
-    series.push_back({"isolator/component_force", force, components,
-                      [laws = std::move(component_laws)](const ResponseRow& row, double* out) {
-                        for (const std::size_t law : laws) *out++ = row.law_force[law];
-                      }});
-  }
-
+  AppendGroundSeries(problem, series);
+  AppendLevelSeries(problem, selection, levels, series);
+  if (layout.isolated() && selection.Records("isolator")) AppendIsolatorSeries(problem, series);
   std::vector<std::size_t> stories;  // the selected stories
   for (std::size_t k = 0; k < layout.stories.size(); ++k) {
-    if (chosen(layout.stories[k].level)) stories.push_back(k);
+    if (IsSelected(levels, layout.stories[k].level)) stories.push_back(k);
   }
-  if (!stories.empty() && selection.Records("story")) {
-    // Per story and direction: its member, its name and its drift's factor (1, or 100 / height for
-    // the ratio in %).
-    std::vector<int> members, twists;
-    std::vector<std::string> names, twist_names;
-    std::vector<double> per_height;
-    bool heights = false;
-    for (const std::size_t k : stories) {
-      const structure::StoryLayout& story = layout.stories[k];
-      heights = heights || story.height > 0.0;
-      const std::vector<std::string> directional = Directional(story.name, two);
-      for (int d = 0; d < layout.directions; ++d) {
-        if (story.members[d] < 0) continue;
-        members.push_back(story.members[d]);
-        names.push_back(directional[d]);
-        per_height.push_back(story.height > 0.0 ? 100.0 / story.height
-                                                : std::numeric_limits<double>::quiet_NaN());
-      }
-      if (story.members[structure::kRotation] >= 0) {
-        twists.push_back(story.members[structure::kRotation]);
-        twist_names.push_back(story.name);
-      }
-    }
-    const auto drifts = [&](std::string name, std::string units, std::vector<int> chosen_members,
-                            std::vector<std::string> columns, std::vector<double> factors) {
-      return Series{std::move(name), std::move(units), std::move(columns),
-                    [&problem, chosen_members, factors](const ResponseRow& row, double* out) {
-                      for (std::size_t c = 0; c < chosen_members.size(); ++c) {
-                        out[c] = factors[c] * problem.structure.MemberDeformation(chosen_members[c],
-                                                                                  row.displacement);
-                      }
-                    }};
-    };
-    series.push_back(
-        drifts("story/drift", length, members, names, std::vector<double>(members.size(), 1.0)));
-    if (heights) series.push_back(drifts("story/drift_ratio", "%", members, names, per_height));
-    series.push_back(Columns("story/shear", force, names, &ResponseRow::connection_force, members));
-    if (!twists.empty()) {
-      series.push_back(drifts("story/twist", "rad", twists, twist_names,
-                              std::vector<double>(twists.size(), 1.0)));
-      series.push_back(
-          Columns("story/torque", energy, twist_names, &ResponseRow::connection_force, twists));
-    }
-  }
-  if (selection.Records("energy")) {
-    const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
-      series.push_back(Vector(fmt::format("energy/{}", name), energy,
-                              [term](const ResponseRow& row) { return row.energies.*term; }));
-    };
-    energy_term("input", &integrators::Energies::input);
-    energy_term("kinetic", &integrators::Energies::kinetic);
-    energy_term("damping", &integrators::Energies::damping);
-    energy_term("elastic", &integrators::Energies::elastic);
-    energy_term("hysteretic", &integrators::Energies::hysteretic);
-  }
+  if (!stories.empty() && selection.Records("story")) AppendStorySeries(problem, stories, series);
+  if (selection.Records("energy")) AppendEnergySeries(problem, series);
   return series;
 }
 

@@ -74,6 +74,143 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
   command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
 }
 
+namespace {
+
+// What `isolab shaketable` measured and predicted, composed before anything is written.
+struct ShakeTableOutcome {
+  analysis::LevelMeasurements m;
+  identification::CyclicTestData isolator;  // the slab's displacement against the base shear
+  analysis::Signal shear;
+  double weight = 0.0;
+  std::optional<analysis::ShakeTablePrediction> prediction;
+  std::optional<analysis::PredictionBand> band;
+  std::string results_path;
+};
+
+// Measured against predicted in time, with the band's 5 and 95 % where one was drawn.
+void WriteComparison(const std::string& path, const ShakeTableOutcome& o) {
+  const analysis::LevelMeasurements& m = o.m;
+  const analysis::ShakeTablePrediction& p = *o.prediction;
+  const std::optional<analysis::PredictionBand>& band = o.band;
+  io::WriteTextFileAtomically(path, [&](std::ostream& file) {
+    fmt::print(file,
+               "time_s,isolator_displacement_measured,isolator_displacement_predicted,"
+               "base_shear_measured,base_shear_predicted,roof_acceleration_measured,"
+               "roof_acceleration_predicted{}\n",
+               band ? ",isolator_displacement_p5,isolator_displacement_p95,"
+                      "roof_acceleration_p5,roof_acceleration_p95"
+                    : "");
+    for (std::size_t k = 0; k < m.time.size(); ++k) {
+      fmt::print(file, "{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", m.time[k],
+                 m.displacement.front()[k], p.isolator_displacement[k], o.shear[k], p.base_shear[k],
+                 m.acceleration.back()[k], p.roof_acceleration[k]);
+      if (band) {
+        fmt::print(file, ",{:.6g},{:.6g},{:.6g},{:.6g}", band->isolator_p5[k],
+                   band->isolator_p95[k], band->roof_p5[k], band->roof_p95[k]);
+      }
+      fmt::print(file, "\n");
+    }
+  });
+}
+
+nlohmann::json ShakeTableJson(const ShakeTableOptions& options, const UnitSystem& units,
+                              const ShakeTableOutcome& o) {
+  const analysis::LevelMeasurements& m = o.m;
+  const std::optional<analysis::PredictionBand>& band = o.band;
+  nlohmann::json json;
+  json["data"] = options.data;
+  json["model"] = options.model;
+  json["levels"] = m.channels;
+  json["displacement_reference"] = m.reference_note;
+  json["samples"] = m.time.size();
+  json["half_cycles"] = o.isolator.half_cycles.size();
+  json["weight"] = o.weight;
+  json["units"] = {{"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
+  if (o.prediction) {
+    for (const analysis::ComparedPeak& row : o.prediction->peaks) {
+      json["comparison"].push_back({{"quantity", row.quantity},
+                                    {"unit", row.unit},
+                                    {"measured", row.measured},
+                                    {"predicted", row.predicted}});
+    }
+  }
+  if (band) {
+    const auto spread = [](const analysis::Percentiles& p) {
+      return nlohmann::json{{"p5", p.p5}, {"p50", p.p50}, {"p95", p.p95}};
+    };
+    json["band"] = {{"samples", band->samples},
+                    {"refused", band->refused},
+                    {"seed", options.seed},
+                    {"peak_isolator_displacement", spread(band->peak_isolator_displacement)},
+                    {"peak_roof_acceleration", spread(band->peak_roof_acceleration)},
+                    {"nrmse_isolator_displacement", spread(band->nrmse_isolator_displacement)},
+                    {"nrmse_roof_acceleration", spread(band->nrmse_roof_acceleration)},
+                    {"coverage",
+                     {{"isolator_displacement", band->isolator_coverage},
+                      {"roof_acceleration", band->roof_coverage}}},
+                    {"peak_inside",
+                     {{"isolator_displacement", band->isolator_peak_inside},
+                      {"roof_acceleration", band->roof_peak_inside}}}};
+  }
+  if (options.predict) {
+    json["nrmse"] = {{"isolator_displacement", o.prediction->nrmse_isolator_displacement},
+                     {"roof_acceleration", o.prediction->nrmse_roof_acceleration}};
+    json["results"] = o.results_path;
+    json["warnings"] = o.prediction->summary.warnings;
+  }
+  return json;
+}
+
+void PrintShakeTable(const ShakeTableOptions& options, const UnitSystem& units,
+                     const ShakeTableOutcome& o, std::ostream& out) {
+  const analysis::LevelMeasurements& m = o.m;
+  const std::optional<analysis::PredictionBand>& band = o.band;
+  fmt::print(out,
+             "{}: {} samples, {} half-cycles of the isolator; levels (slab to roof) = "
+             "channels {}\n{}\n",
+             options.data, m.time.size(), o.isolator.half_cycles.size(), fmt::join(m.channels, ","),
+             m.reference_note);
+  if (band) {
+    fmt::print(out, "{}\n",
+               analysis::CoverageSentence(*band, units.length(),
+                                          DescribeUnits(units, dimension::kAcceleration)));
+  }
+  fmt::print(out, "peak isolator displacement {:.4g} {}, peak base shear {:.4g} {} ({:.3g} W)\n",
+             analysis::PeakAbs(m.displacement.front()), units.length(), analysis::PeakAbs(o.shear),
+             units.force(), analysis::PeakAbs(o.shear) / o.weight);
+  if (!options.isolator.empty()) fmt::print(out, "isolator history: {}\n", options.isolator);
+  if (!options.record.empty()) fmt::print(out, "table record: {}\n", options.record);
+  if (options.predict) {
+    fmt::print(out,
+               "\n| quantity | measured | predicted | predicted / measured |\n|---|---|---|---|\n");
+    for (const analysis::ComparedPeak& row : o.prediction->peaks) {
+      fmt::print(out, "| {} [{}] | {:.4g} | {:.4g} | {:.3f} |\n", row.quantity, row.unit,
+                 row.measured, row.predicted, row.predicted / row.measured);
+    }
+    fmt::print(out, "| NRMSE isolator displacement | | {:.3f} | |\n",
+               o.prediction->nrmse_isolator_displacement);
+    fmt::print(out, "| NRMSE roof absolute acceleration | | {:.3f} | |\n",
+               o.prediction->nrmse_roof_acceleration);
+    if (band) {
+      const auto row = [&](const char* what, const analysis::Percentiles& p) {
+        fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} |\n", what, p.p5, p.p50, p.p95);
+      };
+      fmt::print(
+          out,
+          "\n{} parameter sets drawn from the model's uncertainty ({} left out: beyond a "
+          "law's rules), seed {}:\n\n| quantity | 5 % | median | 95 % |\n|---|---|---|---|\n",
+          band->samples, band->refused, options.seed);
+      row("peak isolator displacement", band->peak_isolator_displacement);
+      row("peak roof absolute acceleration", band->peak_roof_acceleration);
+      row("NRMSE isolator displacement", band->nrmse_isolator_displacement);
+      row("NRMSE roof absolute acceleration", band->nrmse_roof_acceleration);
+    }
+    fmt::print(out, "\nresults: {}\n", o.results_path);
+  }
+}
+
+}  // namespace
+
 void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   const model::ModelFile model = model::LoadModelFile(options.model);
   if (options.samples > 0 && !options.predict) {
@@ -97,18 +234,20 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   if (!results_path.empty()) analysis::CheckResultsPath(results_path);
   const std::vector<double> masses = analysis::LevelMasses(model);
   const UnitSystem& units = model.units;
-  const analysis::LevelMeasurements m =
-      analysis::ReadShakeTableMeasurements(options.data, options.channels, units, masses.size());
+  ShakeTableOutcome o;
+  o.m = analysis::ReadShakeTableMeasurements(options.data, options.channels, units, masses.size());
+  const analysis::LevelMeasurements& m = o.m;
   if (!options.quiet) {
     fmt::print(stderr, "isolab shaketable: {} samples, levels (slab to roof) = channels {}; {}\n",
                m.time.size(), fmt::join(m.channels, ","), m.reference_note);
   }
-  const analysis::Signal shear = analysis::BaseShear(m.acceleration, masses);
-  identification::CyclicTestData isolator;
+  o.results_path = results_path;
+  o.shear = analysis::BaseShear(m.acceleration, masses);
+  identification::CyclicTestData& isolator = o.isolator;
   isolator.name = std::filesystem::path(options.data).stem().string();
   isolator.time = m.time;
   isolator.displacement = m.displacement.front();
-  isolator.force = shear;
+  isolator.force = o.shear;
   identification::Segment(&isolator);
   if (isolator.half_cycles.empty()) {
     throw InputError({options.data}, "the isolator never reverses: too short to identify anything");
@@ -125,150 +264,42 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     }
   }
 
-  std::optional<analysis::ShakeTablePrediction> prediction;
   if (options.predict) {
     analysis::SolveOptions solve;
     solve.analysis = model.analysis;
     solve.results_path = results_path;
     solve.version = ISOLAB_VERSION;
     if (!options.quiet) fmt::print(stderr, "  predicting under the measured table motion\n");
-    prediction = analysis::PredictShakeTable(model, m, solve);
+    o.prediction = analysis::PredictShakeTable(model, m, solve);
   }
-  std::optional<analysis::PredictionBand> band;
   if (options.samples > 0) {
     if (!options.quiet) {
       fmt::print(stderr, "  {} parameter sets drawn from the model's uncertainty\n",
                  options.samples);
     }
-    band = analysis::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
+    o.band = analysis::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
   }
-  const analysis::Signal& predicted_u =
-      prediction ? prediction->isolator_displacement : analysis::Signal{};
-  const analysis::Signal& predicted_shear =
-      prediction ? prediction->base_shear : analysis::Signal{};
-  const analysis::Signal& predicted_roof =
-      prediction ? prediction->roof_acceleration : analysis::Signal{};
-  const double nrmse_u = prediction ? prediction->nrmse_isolator_displacement : 0.0;
-  const double nrmse_roof = prediction ? prediction->nrmse_roof_acceleration : 0.0;
-  const std::vector<analysis::ComparedPeak> rows =
-      prediction ? prediction->peaks : std::vector<analysis::ComparedPeak>{};
   double total_mass = 0.0;
   for (const double mass : masses) total_mass += mass;
-  const double weight = total_mass * units.Convert(1.0, "g", dimension::kAcceleration);
+  o.weight = total_mass * units.Convert(1.0, "g", dimension::kAcceleration);
 
   if (!options.isolator.empty()) io::WriteCyclicTests(options.isolator, {isolator}, units);
   if (!options.record.empty()) {
-    io::WriteTextFileAtomically(options.record, [&](std::ostream& o) { o << record_text; });
+    io::WriteTextFileAtomically(options.record, [&](std::ostream& file) { file << record_text; });
   }
-  if (!options.comparison.empty() && options.predict) {
-    io::WriteTextFileAtomically(options.comparison, [&](std::ostream& o) {
-      fmt::print(o,
-                 "time_s,isolator_displacement_measured,isolator_displacement_predicted,"
-                 "base_shear_measured,base_shear_predicted,roof_acceleration_measured,"
-                 "roof_acceleration_predicted{}\n",
-                 band ? ",isolator_displacement_p5,isolator_displacement_p95,"
-                        "roof_acceleration_p5,roof_acceleration_p95"
-                      : "");
-      for (std::size_t k = 0; k < m.time.size(); ++k) {
-        fmt::print(o, "{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", m.time[k],
-                   m.displacement.front()[k], predicted_u[k], shear[k], predicted_shear[k],
-                   m.acceleration.back()[k], predicted_roof[k]);
-        if (band) {
-          fmt::print(o, ",{:.6g},{:.6g},{:.6g},{:.6g}", band->isolator_p5[k], band->isolator_p95[k],
-                     band->roof_p5[k], band->roof_p95[k]);
-        }
-        fmt::print(o, "\n");
-      }
-    });
-  }
-
+  if (!options.comparison.empty() && options.predict) WriteComparison(options.comparison, o);
   // The prediction's warnings (a model beyond the range it was identified on, ...), as `isolab
   // run` prints them; the JSON carries them too.
-  const std::vector<std::string> warnings =
-      prediction ? prediction->summary.warnings : std::vector<std::string>{};
-  for (const std::string& warning : warnings) fmt::print(stderr, "isolab: warning: {}\n", warning);
+  if (o.prediction) {
+    for (const std::string& warning : o.prediction->summary.warnings) {
+      fmt::print(stderr, "isolab: warning: {}\n", warning);
+    }
+  }
   if (options.json) {
-    nlohmann::json json;
-    json["data"] = options.data;
-    json["model"] = options.model;
-    json["levels"] = m.channels;
-    json["displacement_reference"] = m.reference_note;
-    json["samples"] = m.time.size();
-    json["half_cycles"] = isolator.half_cycles.size();
-    json["weight"] = weight;
-    json["units"] = {{"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
-    for (const analysis::ComparedPeak& row : rows) {
-      json["comparison"].push_back({{"quantity", row.quantity},
-                                    {"unit", row.unit},
-                                    {"measured", row.measured},
-                                    {"predicted", row.predicted}});
-    }
-    if (band) {
-      const auto spread = [](const analysis::Percentiles& p) {
-        return nlohmann::json{{"p5", p.p5}, {"p50", p.p50}, {"p95", p.p95}};
-      };
-      json["band"] = {{"samples", band->samples},
-                      {"refused", band->refused},
-                      {"seed", options.seed},
-                      {"peak_isolator_displacement", spread(band->peak_isolator_displacement)},
-                      {"peak_roof_acceleration", spread(band->peak_roof_acceleration)},
-                      {"nrmse_isolator_displacement", spread(band->nrmse_isolator_displacement)},
-                      {"nrmse_roof_acceleration", spread(band->nrmse_roof_acceleration)},
-                      {"coverage",
-                       {{"isolator_displacement", band->isolator_coverage},
-                        {"roof_acceleration", band->roof_coverage}}},
-                      {"peak_inside",
-                       {{"isolator_displacement", band->isolator_peak_inside},
-                        {"roof_acceleration", band->roof_peak_inside}}}};
-    }
-    if (options.predict) {
-      json["nrmse"] = {{"isolator_displacement", nrmse_u}, {"roof_acceleration", nrmse_roof}};
-      json["results"] = results_path;
-      json["warnings"] = warnings;
-    }
-    out << json.dump(2) << "\n";
+    out << ShakeTableJson(options, units, o).dump(2) << "\n";
     return;
   }
-  fmt::print(out,
-             "{}: {} samples, {} half-cycles of the isolator; levels (slab to roof) = "
-             "channels {}\n{}\n",
-             options.data, m.time.size(), isolator.half_cycles.size(), fmt::join(m.channels, ","),
-             m.reference_note);
-  if (band) {
-    fmt::print(out, "{}\n",
-               analysis::CoverageSentence(*band, units.length(),
-                                          DescribeUnits(units, dimension::kAcceleration)));
-  }
-  fmt::print(out, "peak isolator displacement {:.4g} {}, peak base shear {:.4g} {} ({:.3g} W)\n",
-             analysis::PeakAbs(m.displacement.front()), units.length(), analysis::PeakAbs(shear),
-             units.force(), analysis::PeakAbs(shear) / weight);
-  if (!options.isolator.empty()) fmt::print(out, "isolator history: {}\n", options.isolator);
-  if (!options.record.empty()) fmt::print(out, "table record: {}\n", options.record);
-  if (options.predict) {
-    fmt::print(out,
-               "\n| quantity | measured | predicted | predicted / measured |\n|---|---|---|---|\n");
-    for (const analysis::ComparedPeak& row : rows) {
-      fmt::print(out, "| {} [{}] | {:.4g} | {:.4g} | {:.3f} |\n", row.quantity, row.unit,
-                 row.measured, row.predicted, row.predicted / row.measured);
-    }
-    fmt::print(out, "| NRMSE isolator displacement | | {:.3f} | |\n", nrmse_u);
-    fmt::print(out, "| NRMSE roof absolute acceleration | | {:.3f} | |\n", nrmse_roof);
-    if (band) {
-      const auto row = [&](const char* what, const analysis::Percentiles& p) {
-        fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} |\n", what, p.p5, p.p50, p.p95);
-      };
-      fmt::print(
-          out,
-          "\n{} parameter sets drawn from the model's uncertainty ({} left out: beyond a "
-          "law's rules), seed {}:\n\n| quantity | 5 % | median | 95 % |\n|---|---|---|---|\n",
-          band->samples, band->refused, options.seed);
-      row("peak isolator displacement", band->peak_isolator_displacement);
-      row("peak roof absolute acceleration", band->peak_roof_acceleration);
-      row("NRMSE isolator displacement", band->nrmse_isolator_displacement);
-      row("NRMSE roof absolute acceleration", band->nrmse_roof_acceleration);
-    }
-    fmt::print(out, "\nresults: {}\n", results_path);
-  }
+  PrintShakeTable(options, units, o, out);
 }
 
 }  // namespace isolab::cli

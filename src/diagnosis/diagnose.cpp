@@ -123,14 +123,105 @@ double InformationCriterion(double e2, double samples, int parameters) {
   return n * std::log(std::max(e2, 1e-300) / n) + parameters * std::log(n);
 }
 
+namespace {
+
+void Say(const DiagnoseOptions& options, const std::string& line) {
+  if (options.progress) options.progress(line);
+}
+
+// The residual of a fitted model, and from it the model's effective samples and BIC.
+Discrepancy Evaluate(Fitted* fitted, const identification::FitData& data,
+                     const std::vector<NoiseEstimate>& force_noise) {
+  const Discrepancy d = Discrepancy::Of(fitted->assembly, data, &force_noise);
+  fitted->model.effective_samples = EffectiveSamples(d);
+  fitted->model.bic = InformationCriterion(
+      fitted->model.fit.error.total, fitted->model.effective_samples, fitted->model.parameters);
+  return d;
+}
+
+// The current model refitted with a candidate's component added, the candidate judged: refused
+// where the fit gave its component no stiffness, the component cancels one already there, or it
+// closes too little of the excess of e^2 over the noise floor.
+Fitted RefitCandidate(Candidate& candidate, const Fitted& current, double noise_floor,
+                      const identification::FitData& data, const identification::DataScales& scales,
+                      const std::vector<NoiseEstimate>& force_noise, unsigned seed,
+                      const DiagnoseOptions& options) {
+  const double e2 = current.model.fit.error.total;
+  std::vector<ComponentSpec> components = current.model.components;
+  ComponentSpec added = EffectComponent(candidate.evidence.effect);
+  added.name = UniqueName(components, added.name);
+  for (const auto& [coordinate, value] : candidate.evidence.start) {
+    if (!added.fixed.count(coordinate)) added.start[coordinate] = value;
+  }
+  components.push_back(added);
+  Fitted refit = FitModel(std::move(components), data, scales, seed, options);
+  Evaluate(&refit, data, force_noise);
+  candidate.refitted = true;
+  candidate.e2 = refit.model.fit.error.total;
+  candidate.bic = refit.model.bic;
+  candidate.bic_current =
+      InformationCriterion(e2, refit.model.effective_samples, current.model.parameters);
+  candidate.parameters = refit.model.parameters;
+  // The added component, if the fit kept it, against the ones already there.
+  const bool kept = refit.model.components.back().name == added.name;
+  if (kept && candidate.Gain() >= options.bic_margin) {
+    const ModelParametrisation parametrisation(refit.model.components, scales);
+    const auto identifiability =
+        identification::AssessIdentifiability(parametrisation, data, refit.model.fit);
+    for (const auto& pair : identifiability.cancelling) {
+      if (pair.b == refit.model.components.size() - 1) candidate.refused = pair.finding;
+    }
+  } else if (!kept) {
+    candidate.refused =
+        fmt::format("the refit gave the added {} no stiffness", hysteresis::LawName(added.type));
+  }
+  const double excess = e2 - noise_floor;
+  const double closure = excess > 0.0 ? (e2 - candidate.e2) / excess : 1.0;
+  if (candidate.refused.empty() && candidate.Gain() >= options.bic_margin &&
+      closure < options.min_closure) {
+    candidate.refused = fmt::format(
+        "it closes {:.1f} % of the excess of e^2 over the noise floor (less than {:g} %): "
+        "the component fits a sliver of a residual it does not explain",
+        100 * closure, 100 * options.min_closure);
+  }
+  Say(options,
+      fmt::format(
+          "  + {:<32} evidence {:.3g} (threshold {:.3g}): e^2 = {:.4g} %, BIC gain {:.1f}{}",
+          EffectName(candidate.evidence.effect), candidate.evidence.value,
+          candidate.evidence.threshold, 100 * candidate.e2, candidate.Gain(),
+          candidate.refused.empty() ? "" : " (refused: " + candidate.refused + ")"));
+  return refit;
+}
+
+// Why no candidate was kept: refused, no gain in BIC, or no evidence.
+std::pair<StopReason, std::string> WhyNoCandidate(const std::vector<Candidate>& candidates,
+                                                  const DiagnoseOptions& options) {
+  const bool any_supported = std::any_of(candidates.begin(), candidates.end(),
+                                         [](const auto& c) { return c.evidence.Supported(); });
+  const bool any_refused = std::any_of(candidates.begin(), candidates.end(), [&](const auto& c) {
+    return !c.refused.empty() && c.Gain() >= options.bic_margin;
+  });
+  if (any_refused) {
+    return {StopReason::kRefused,
+            fmt::format("every candidate that lowered BIC by {:g} or more was refused (its "
+                        "component cancels one already there, or it closes too little of what "
+                        "noise does not explain)",
+                        options.bic_margin)};
+  }
+  if (any_supported) {
+    return {StopReason::kNoBicGain,
+            fmt::format("no candidate lowers BIC by {:g} or more", options.bic_margin)};
+  }
+  return {StopReason::kNoEvidence, "no detector finds evidence of a missing effect"};
+}
+
+}  // namespace
+
 Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitData& data,
                    const DiagnoseOptions& options) {
   options.Validate();
   if (base.empty()) throw std::invalid_argument("the base model has no components");
   const auto start = std::chrono::steady_clock::now();
-  const auto say = [&](const std::string& line) {
-    if (options.progress) options.progress(line);
-  };
   const identification::DataScales scales = identification::ScalesOf(data);
 
   Diagnosis diagnosis;
@@ -149,21 +240,14 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
     for (const NoiseEstimate& n : diagnosis.noise) sigma.push_back(n.sigma);
     diagnosis.noise_floor = NoiseFloor(data, sigma);
   };
-  const auto evaluate = [&](Fitted* fitted) {
-    const Discrepancy d = residual_of(fitted->assembly);
-    fitted->model.effective_samples = EffectiveSamples(d);
-    fitted->model.bic = InformationCriterion(
-        fitted->model.fit.error.total, fitted->model.effective_samples, fitted->model.parameters);
-    return d;
-  };
 
   unsigned seed = options.seed;
   Fitted current = FitModel(std::move(base), data, scales, seed, options);
-  set_floor(evaluate(&current));
+  set_floor(Evaluate(&current, data, force_noise));
   diagnosis.base = current.model;
-  say(fmt::format("base model: e^2 = {:.4g} %, BIC = {:.1f}, {}",
-                  100 * diagnosis.base.fit.error.total, diagnosis.base.bic,
-                  diagnosis.base.fit.stop_reason));
+  Say(options, fmt::format("base model: e^2 = {:.4g} %, BIC = {:.1f}, {}",
+                           100 * diagnosis.base.fit.error.total, diagnosis.base.bic,
+                           diagnosis.base.fit.stop_reason));
   std::vector<Effect> remaining(AllEffects().begin(), AllEffects().end());
 
   while (true) {
@@ -199,49 +283,9 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       Candidate& candidate = candidates[c];
       if (!candidate.evidence.Supported()) continue;
-      std::vector<ComponentSpec> components = current.model.components;
-      ComponentSpec added = EffectComponent(candidate.evidence.effect);
-      added.name = UniqueName(components, added.name);
-      for (const auto& [coordinate, value] : candidate.evidence.start) {
-        if (!added.fixed.count(coordinate)) added.start[coordinate] = value;
-      }
-      components.push_back(added);
       seed += 1;
-      Fitted refit = FitModel(std::move(components), data, scales, seed, options);
-      evaluate(&refit);
-      candidate.refitted = true;
-      candidate.e2 = refit.model.fit.error.total;
-      candidate.bic = refit.model.bic;
-      candidate.bic_current =
-          InformationCriterion(e2, refit.model.effective_samples, current.model.parameters);
-      candidate.parameters = refit.model.parameters;
-      // The added component, if the fit kept it, against the ones already there.
-      const bool kept = refit.model.components.back().name == added.name;
-      if (kept && candidate.Gain() >= options.bic_margin) {
-        const ModelParametrisation parametrisation(refit.model.components, scales);
-        const auto identifiability =
-            identification::AssessIdentifiability(parametrisation, data, refit.model.fit);
-        for (const auto& pair : identifiability.cancelling) {
-          if (pair.b == refit.model.components.size() - 1) candidate.refused = pair.finding;
-        }
-      } else if (!kept) {
-        candidate.refused = fmt::format("the refit gave the added {} no stiffness",
-                                        hysteresis::LawName(added.type));
-      }
-      const double excess = e2 - diagnosis.noise_floor;
-      const double closure = excess > 0.0 ? (e2 - candidate.e2) / excess : 1.0;
-      if (candidate.refused.empty() && candidate.Gain() >= options.bic_margin &&
-          closure < options.min_closure) {
-        candidate.refused = fmt::format(
-            "it closes {:.1f} % of the excess of e^2 over the noise floor (less than {:g} %): "
-            "the component fits a sliver of a residual it does not explain",
-            100 * closure, 100 * options.min_closure);
-      }
-      say(fmt::format(
-          "  + {:<32} evidence {:.3g} (threshold {:.3g}): e^2 = {:.4g} %, BIC gain {:.1f}{}",
-          EffectName(candidate.evidence.effect), candidate.evidence.value,
-          candidate.evidence.threshold, 100 * candidate.e2, candidate.Gain(),
-          candidate.refused.empty() ? "" : " (refused: " + candidate.refused + ")"));
+      Fitted refit = RefitCandidate(candidate, current, diagnosis.noise_floor, data, scales,
+                                    force_noise, seed, options);
       if (candidate.Gain() < options.bic_margin || !candidate.refused.empty()) continue;
       const bool better = best < 0 ||
                           candidate.Gain() > candidates[best].Gain() + options.equal_bic ||
@@ -253,23 +297,8 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
       }
     }
     if (best < 0) {
-      const bool any_supported = std::any_of(candidates.begin(), candidates.end(),
-                                             [](const auto& c) { return c.evidence.Supported(); });
-      const bool any_refused = std::any_of(
-          candidates.begin(), candidates.end(),
-          [&](const auto& c) { return !c.refused.empty() && c.Gain() >= options.bic_margin; });
-      if (any_refused) {
-        stop(StopReason::kRefused,
-             fmt::format("every candidate that lowered BIC by {:g} or more was refused (its "
-                         "component cancels one already there, or it closes too little of what "
-                         "noise does not explain)",
-                         options.bic_margin));
-      } else if (any_supported) {
-        stop(StopReason::kNoBicGain,
-             fmt::format("no candidate lowers BIC by {:g} or more", options.bic_margin));
-      } else {
-        stop(StopReason::kNoEvidence, "no detector finds evidence of a missing effect");
-      }
+      const auto [reason, why] = WhyNoCandidate(candidates, options);
+      stop(reason, why);
       break;
     }
     DiagnosisStep step;
@@ -282,8 +311,8 @@ Diagnosis Diagnose(std::vector<ComponentSpec> base, const identification::FitDat
     step.added = best_model.model.components.back();
     step.added_parameters = best_model.model.fit.mathematical.back();
     step.candidates = std::move(candidates);
-    say(fmt::format("step {}: {} (e^2 {:.4g} % -> {:.4g} %)", diagnosis.steps.size() + 1,
-                    EffectName(step.effect), 100 * step.e2_before, 100 * step.e2_after));
+    Say(options, fmt::format("step {}: {} (e^2 {:.4g} % -> {:.4g} %)", diagnosis.steps.size() + 1,
+                             EffectName(step.effect), 100 * step.e2_before, 100 * step.e2_after));
     remaining.erase(std::find(remaining.begin(), remaining.end(), step.effect));
     diagnosis.steps.push_back(std::move(step));
     current = std::move(best_model);

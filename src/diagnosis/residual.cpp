@@ -54,6 +54,107 @@ ResidualTable Table(std::string title, std::vector<std::string> rows,
   return table;
 }
 
+// Each sample's half-cycle (-1 outside every one) and its phase: its share of the half-cycle's
+// duration since the reversal that opened it, in kPhaseEdges' bins.
+void HalfCyclePhases(const identification::CyclicTestData& test, std::vector<int>& phase,
+                     std::vector<int>& half_index) {
+  phase.assign(test.time.size(), kPhases - 1);
+  half_index.assign(test.time.size(), -1);
+  for (std::size_t h = 0; h < test.half_cycles.size(); ++h) {
+    const CycleSpan& half = test.half_cycles[h];
+    const double start = test.time[half.begin], length = test.time[half.end - 1] - start;
+    for (std::size_t k = half.begin; k + 1 < half.end; ++k) {
+      const double share = length > 0.0 ? (test.time[k] - start) / length : 0.0;
+      int p = 0;
+      while (p < 3 && share >= kPhaseEdges[p]) ++p;
+      phase[k] = p;
+      half_index[k] = static_cast<int>(h);
+    }
+  }
+}
+
+// The share of the residual the state explains, cross-validated: sum over cells of n_c times the
+// product of the cell's means in the two sets of alternate cycles. Each mean is the cell's true
+// mean plus its own error, and the two sets' errors are independent, so the product is unbiased
+// for the squared true mean: near zero for a residual the state does not drive, however
+// correlated. (The plain sum of squared means would add cells / n_eff of chance.) Also the share
+// chance alone would give: the occupied cells over the effective samples.
+void SetStateShare(const Cells& state, const Cells (&alternate)[2], double total_square,
+                   double effective, ResidualVerdict& verdict) {
+  double explained = 0.0;
+  std::size_t occupied = 0;
+  for (std::size_t c = 0; c < state.count.size(); ++c) {
+    if (state.count[c] == 0) continue;
+    ++occupied;
+    if (alternate[0].count[c] == 0 || alternate[1].count[c] == 0) continue;
+    explained += double(state.count[c]) * (alternate[0].sum[c] / double(alternate[0].count[c])) *
+                 (alternate[1].sum[c] / double(alternate[1].count[c]));
+  }
+  verdict.state_share = total_square > 0.0 ? std::max(0.0, explained) / total_square : 0.0;
+  verdict.state_share_noise = std::min(1.0, double(occupied) / std::max(effective, 1.0));
+}
+
+// The verdict's kind and headline: noise, a residual the state of motion drives, or one it does
+// not.
+void SetHeadline(const VerdictOptions& options, ResidualVerdict& verdict) {
+  const double e2 = verdict.e2, noise_floor = verdict.floor;
+  const bool above = !(verdict.ratio <= options.noise_margin);
+  const bool follows_state = verdict.state_share >= options.state_share;
+  if (!above) {
+    verdict.kind = ResidualVerdict::Kind::kNoise;
+    verdict.headline = fmt::format(
+        "the residual is noise: e^2 = {:.4g} % is within {:g} x the noise floor ({:.4g} %)",
+        100 * e2, options.noise_margin, 100 * noise_floor);
+  } else if (follows_state) {
+    verdict.kind = ResidualVerdict::Kind::kStructured;
+    verdict.headline = fmt::format(
+        "a structured residual remains: e^2 = {:.4g} % is {:.3g} times the noise floor "
+        "({:.4g} %), and it follows the state of motion (direction, |u| and time since reversal "
+        "explain {:.0f} % of it, alike in alternate cycles)",
+        100 * e2, verdict.ratio, 100 * noise_floor, 100 * verdict.state_share);
+  } else {
+    verdict.kind = ResidualVerdict::Kind::kUnexplained;
+    verdict.headline = fmt::format(
+        "a structured residual remains: e^2 = {:.4g} % is {:.3g} times the noise floor "
+        "({:.4g} %), but the state of motion explains only {:.1f} % of it: a disturbance the "
+        "motion does not drive, or noise inside the device's own band that the floor cannot see "
+        "(correlation time {:.3g} s)",
+        100 * e2, verdict.ratio, 100 * noise_floor, 100 * verdict.state_share,
+        verdict.correlation_time);
+  }
+}
+
+// The cells that stand out: the largest mean residuals of direction x time since reversal and
+// direction x |u|, as many as say something (at least 2 noise units of mean).
+std::vector<std::string> WhereItStandsOut(const ResidualVerdict& verdict, long samples) {
+  std::vector<std::string> where;
+  struct Spot {
+    double mean;
+    std::string text;
+  };
+  std::vector<Spot> spots;
+  for (const std::size_t t : {std::size_t{1}, std::size_t{0}}) {
+    const ResidualTable& table = verdict.tables[t];
+    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+      for (std::size_t c = 0; c < table.columns.size(); ++c) {
+        // Cells of at least 1 % of the samples, so a stretch of a few samples does not lead.
+        if (table.samples[r][c] < samples / 100 || std::abs(table.mean[r][c]) < 2.0) continue;
+        spots.push_back(
+            {table.mean[r][c],
+             fmt::format("{}, {} {}: mean residual {:+.1f} x noise (RMS {:.1f}) over {} samples",
+                         table.rows[r], t == 1 ? "time since reversal" : "|u| / u_a",
+                         table.columns[c], table.mean[r][c], table.rms[r][c],
+                         table.samples[r][c])});
+      }
+    }
+  }
+  std::stable_sort(spots.begin(), spots.end(), [](const Spot& a, const Spot& b) {
+    return std::abs(a.mean) > std::abs(b.mean);
+  });
+  for (std::size_t k = 0; k < spots.size() && k < 4; ++k) where.push_back(spots[k].text);
+  return where;
+}
+
 }  // namespace
 
 void VerdictOptions::Validate() const {
@@ -115,19 +216,8 @@ ResidualVerdict JudgeResidual(const Discrepancy& d, double e2, double noise_floo
     seconds += double(test_samples) * times[i] * dt;
     samples += test_samples;
     effective += double(test_samples) / times[i];
-    // Each sample's share of its half-cycle's duration since the reversal that opened it.
-    std::vector<int> phase(test.time.size(), kPhases - 1), half_index(test.time.size(), -1);
-    for (std::size_t h = 0; h < test.half_cycles.size(); ++h) {
-      const CycleSpan& half = test.half_cycles[h];
-      const double start = test.time[half.begin], length = test.time[half.end - 1] - start;
-      for (std::size_t k = half.begin; k + 1 < half.end; ++k) {
-        const double share = length > 0.0 ? (test.time[k] - start) / length : 0.0;
-        int p = 0;
-        while (p < 3 && share >= kPhaseEdges[p]) ++p;
-        phase[k] = p;
-        half_index[k] = static_cast<int>(h);
-      }
-    }
+    std::vector<int> phase, half_index;
+    HalfCyclePhases(test, phase, half_index);
     for (const CycleSpan& span : data.fitted[i]) {
       for (std::size_t k = span.begin; k < span.end; ++k) {
         const double r = (test.force[k] - d.model_force[i][k]) / noise;
@@ -156,22 +246,7 @@ ResidualVerdict JudgeResidual(const Discrepancy& d, double e2, double noise_floo
   }
   verdict.correlation_time = samples > 0 ? seconds / double(samples) : 0.0;
   verdict.whiteness = samples > 0 ? effective / double(samples) : 1.0;
-  // The share of the residual the state explains, cross-validated: sum over cells of n_c times
-  // the product of the cell's means in the two sets of alternate cycles. Each mean is the cell's
-  // true mean plus its own error, and the two sets' errors are independent, so the product is
-  // unbiased for the squared true mean: near zero for a residual the state does not drive,
-  // however correlated. (The plain sum of squared means would add cells / n_eff of chance.)
-  double explained = 0.0;
-  std::size_t occupied = 0;
-  for (std::size_t c = 0; c < test_cells; ++c) {
-    if (state.count[c] == 0) continue;
-    ++occupied;
-    if (alternate[0].count[c] == 0 || alternate[1].count[c] == 0) continue;
-    explained += double(state.count[c]) * (alternate[0].sum[c] / double(alternate[0].count[c])) *
-                 (alternate[1].sum[c] / double(alternate[1].count[c]));
-  }
-  verdict.state_share = total_square > 0.0 ? std::max(0.0, explained) / total_square : 0.0;
-  verdict.state_share_noise = std::min(1.0, double(occupied) / std::max(effective, 1.0));
+  SetStateShare(state, alternate, total_square, effective, verdict);
 
   const std::vector<std::string> directions(std::begin(kDirectionNames), std::end(kDirectionNames));
   const std::vector<std::string> bands(std::begin(kBandNames), std::end(kBandNames));
@@ -186,58 +261,8 @@ ResidualVerdict JudgeResidual(const Discrepancy& d, double e2, double noise_floo
             std::vector<std::string>(std::begin(kBranchNames), std::end(kBranchNames)), bands,
             branch_band));
 
-  const bool above = !(verdict.ratio <= options.noise_margin);
-  const bool follows_state = verdict.state_share >= options.state_share;
-  if (!above) {
-    verdict.kind = ResidualVerdict::Kind::kNoise;
-    verdict.headline = fmt::format(
-        "the residual is noise: e^2 = {:.4g} % is within {:g} x the noise floor ({:.4g} %)",
-        100 * e2, options.noise_margin, 100 * noise_floor);
-  } else if (follows_state) {
-    verdict.kind = ResidualVerdict::Kind::kStructured;
-    verdict.headline = fmt::format(
-        "a structured residual remains: e^2 = {:.4g} % is {:.3g} times the noise floor "
-        "({:.4g} %), and it follows the state of motion (direction, |u| and time since reversal "
-        "explain {:.0f} % of it, alike in alternate cycles)",
-        100 * e2, verdict.ratio, 100 * noise_floor, 100 * verdict.state_share);
-  } else {
-    verdict.kind = ResidualVerdict::Kind::kUnexplained;
-    verdict.headline = fmt::format(
-        "a structured residual remains: e^2 = {:.4g} % is {:.3g} times the noise floor "
-        "({:.4g} %), but the state of motion explains only {:.1f} % of it: a disturbance the "
-        "motion does not drive, or noise inside the device's own band that the floor cannot see "
-        "(correlation time {:.3g} s)",
-        100 * e2, verdict.ratio, 100 * noise_floor, 100 * verdict.state_share,
-        verdict.correlation_time);
-  }
-  // The cells that stand out: the largest mean residuals of direction x time since reversal
-  // and direction x |u|, as many as say something (at least 2 noise units of mean).
-  if (verdict.Structured()) {
-    struct Spot {
-      double mean;
-      std::string text;
-    };
-    std::vector<Spot> spots;
-    for (const std::size_t t : {std::size_t{1}, std::size_t{0}}) {
-      const ResidualTable& table = verdict.tables[t];
-      for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        for (std::size_t c = 0; c < table.columns.size(); ++c) {
-          // Cells of at least 1 % of the samples, so a stretch of a few samples does not lead.
-          if (table.samples[r][c] < samples / 100 || std::abs(table.mean[r][c]) < 2.0) continue;
-          spots.push_back(
-              {table.mean[r][c],
-               fmt::format("{}, {} {}: mean residual {:+.1f} x noise (RMS {:.1f}) over {} samples",
-                           table.rows[r], t == 1 ? "time since reversal" : "|u| / u_a",
-                           table.columns[c], table.mean[r][c], table.rms[r][c],
-                           table.samples[r][c])});
-        }
-      }
-    }
-    std::stable_sort(spots.begin(), spots.end(), [](const Spot& a, const Spot& b) {
-      return std::abs(a.mean) > std::abs(b.mean);
-    });
-    for (std::size_t k = 0; k < spots.size() && k < 4; ++k) verdict.where.push_back(spots[k].text);
-  }
+  SetHeadline(options, verdict);
+  if (verdict.Structured()) verdict.where = WhereItStandsOut(verdict, samples);
   return verdict;
 }
 

@@ -72,6 +72,113 @@ double Spread(const pagmo::population& population) {
   return spread;
 }
 
+// Per island: its algorithm and population, IPOP restarts (a fresh random population, twice
+// as large, when the island has stagnated), and the best point it has found across restarts.
+struct Island {
+  pagmo::algorithm algorithm;
+  pagmo::population population;
+  int restarts = 0;
+  int population_size = 0;
+  int chunks_without_progress = 0;
+  double best_f = INFINITY;
+  pagmo::vector_double best_x;
+  double best_step = 1.0;  // the population's spread when it found best_x
+};
+
+// The islands, each with its own seeds; the first population holds the start.
+std::vector<Island> MakeArchipelago(const pagmo::problem& problem, const std::vector<double>& start,
+                                    const FitOptions& options, int population_size) {
+  std::vector<Island> archipelago;
+  for (int i = 0; i < options.islands; ++i) {
+    pagmo::population population{problem,
+                                 static_cast<pagmo::population::size_type>(population_size),
+                                 IslandSeed(options.seed, i, 1000)};
+    if (i == 0) population.set_x(0, start);
+    Island island{Cmaes(IslandSeed(options.seed, i, 0)),
+                  std::move(population),
+                  0,
+                  population_size,
+                  0,
+                  INFINITY,
+                  {},
+                  1.0};
+    archipelago.push_back(std::move(island));
+  }
+  return archipelago;
+}
+
+// An island after a chunk of generations: its best kept where it improved; after 100 stagnant
+// generations, restarted from new random points with a larger population (IPOP-CMA-ES), which
+// explores more widely each time. `retired` counts the evaluations of the population replaced.
+void AfterChunk(Island& island, int i, const pagmo::problem& problem, const FitOptions& options,
+                int population_size, long& retired) {
+  const double f = island.population.champion_f()[0];
+  if (f < island.best_f * (1.0 - 1e-6)) {
+    island.best_f = f;
+    island.best_x = island.population.champion_x();
+    island.best_step = Spread(island.population);
+    island.chunks_without_progress = 0;
+  } else if (++island.chunks_without_progress >= 5) {
+    ++island.restarts;
+    island.population_size = std::min(2 * island.population_size, 16 * population_size);
+    island.chunks_without_progress = 0;
+    retired += static_cast<long>(island.population.get_problem().get_fevals());
+    if (f < island.best_f) {
+      island.best_f = f;
+      island.best_x = island.population.champion_x();
+      island.best_step = Spread(island.population);
+    }
+    island.algorithm = Cmaes(IslandSeed(options.seed, i, island.restarts));
+    island.population = pagmo::population{
+        problem, static_cast<pagmo::population::size_type>(island.population_size),
+        IslandSeed(options.seed, i, 1000 + island.restarts)};
+  }
+}
+
+// The convergence stop: over the last window of evaluations the best improved by less than
+// stop_e2 relative and the step size is below stop_step. Sets the result's stop where met.
+bool Converged(const std::vector<std::pair<long, double>>& history, long evaluations, double best,
+               double step, const FitOptions& options, const std::string& objective_name,
+               SearchOutcome& result) {
+  const long window = std::max(options.stop_window,
+                               static_cast<long>(options.stop_window_share * double(evaluations)));
+  if (options.stop_window > 0 && evaluations - history.front().first >= window) {
+    // The best as it stood a window ago (the latest record at least a window back).
+    double then = history.front().second;
+    for (const auto& [at, value] : history) {
+      if (evaluations - at >= window) then = value;
+    }
+    // A value at round-off (1e-12: an RMS error of 1e-6 of the data, for the objectives of
+    // fit.h and building_fit.h) counts as settled however its last digits move.
+    if (then - best <= options.stop_e2 * then + kSettledValue && step <= options.stop_step) {
+      result.stop = FitStop::kConverged;
+      result.stop_reason = fmt::format(
+          "converged after {} evaluations: over the last {} the best {} ({:.6g} %) improved "
+          "by less than {:g} relative and the step size is {:.2g} (below {:g}) in the unit "
+          "cube of search coordinates",
+          evaluations, window, objective_name, 100 * best, options.stop_e2, step,
+          options.stop_step);
+      return true;
+    }
+  }
+  return false;
+}
+
+// The best point over the islands, their restarts included.
+void BestOverIslands(const std::vector<Island>& archipelago, pagmo::vector_double& best_x,
+                     double& best_f) {
+  for (const Island& island : archipelago) {
+    if (island.population.champion_f()[0] < best_f) {
+      best_f = island.population.champion_f()[0];
+      best_x = island.population.champion_x();
+    }
+    if (island.best_f < best_f) {
+      best_f = island.best_f;
+      best_x = island.best_x;
+    }
+  }
+}
+
 }  // namespace
 
 void FitOptions::Validate() const {
@@ -120,34 +227,7 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
       SearchProblem{std::make_shared<const Objective>(objective), dimension}};
 
   const long cmaes_budget = static_cast<long>(options.budget * (1.0 - options.polish_share));
-  // Per island: its algorithm and population, IPOP restarts (a fresh random population, twice
-  // as large, when the island has stagnated), and the best point it has found across restarts.
-  struct Island {
-    pagmo::algorithm algorithm;
-    pagmo::population population;
-    int restarts = 0;
-    int population_size = 0;
-    int chunks_without_progress = 0;
-    double best_f = INFINITY;
-    pagmo::vector_double best_x;
-    double best_step = 1.0;  // the population's spread when it found best_x
-  };
-  std::vector<Island> archipelago;
-  for (int i = 0; i < islands; ++i) {
-    pagmo::population population{problem,
-                                 static_cast<pagmo::population::size_type>(population_size),
-                                 IslandSeed(options.seed, i, 1000)};
-    if (i == 0) population.set_x(0, start);
-    Island island{Cmaes(IslandSeed(options.seed, i, 0)),
-                  std::move(population),
-                  0,
-                  population_size,
-                  0,
-                  INFINITY,
-                  {},
-                  1.0};
-    archipelago.push_back(std::move(island));
-  }
+  std::vector<Island> archipelago = MakeArchipelago(problem, start, options, population_size);
   long retired = 0;  // evaluations of populations replaced at restarts
   const auto evaluations_so_far = [&] {
     long sum = retired;
@@ -172,30 +252,8 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
     });
     generation += kGenerationsPerChunk;
     for (int i = 0; i < islands; ++i) {
-      Island& island = archipelago[static_cast<std::size_t>(i)];
-      const double f = island.population.champion_f()[0];
-      if (f < island.best_f * (1.0 - 1e-6)) {
-        island.best_f = f;
-        island.best_x = island.population.champion_x();
-        island.best_step = Spread(island.population);
-        island.chunks_without_progress = 0;
-      } else if (++island.chunks_without_progress >= 5) {
-        // Stagnated for 100 generations: restart from new random points with a larger
-        // population (IPOP-CMA-ES), which explores more widely each time.
-        ++island.restarts;
-        island.population_size = std::min(2 * island.population_size, 16 * population_size);
-        island.chunks_without_progress = 0;
-        retired += static_cast<long>(island.population.get_problem().get_fevals());
-        if (f < island.best_f) {
-          island.best_f = f;
-          island.best_x = island.population.champion_x();
-          island.best_step = Spread(island.population);
-        }
-        island.algorithm = Cmaes(IslandSeed(options.seed, i, island.restarts));
-        island.population = pagmo::population{
-            problem, static_cast<pagmo::population::size_type>(island.population_size),
-            IslandSeed(options.seed, i, 1000 + island.restarts)};
-      }
+      AfterChunk(archipelago[static_cast<std::size_t>(i)], i, problem, options, population_size,
+                 retired);
     }
     const auto leader =
         std::min_element(archipelago.begin(), archipelago.end(),
@@ -204,43 +262,15 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
     const long evaluations = evaluations_so_far();
     history.emplace_back(evaluations, best);
     if (options.progress) options.progress({evaluations, generation, best, false});
-    const long window = std::max(
-        options.stop_window, static_cast<long>(options.stop_window_share * double(evaluations)));
-    if (options.stop_window > 0 && evaluations - history.front().first >= window) {
-      // The best as it stood a window ago (the latest record at least a window back).
-      double then = history.front().second;
-      for (const auto& [at, value] : history) {
-        if (evaluations - at >= window) then = value;
-      }
-      const double step = leader->best_step;
-      // A value at round-off (1e-12: an RMS error of 1e-6 of the data, for the objectives of
-      // fit.h and building_fit.h) counts as settled however its last digits move.
-      if (then - best <= options.stop_e2 * then + kSettledValue && step <= options.stop_step) {
-        result.stop = FitStop::kConverged;
-        result.stop_reason = fmt::format(
-            "converged after {} evaluations: over the last {} the best {} ({:.6g} %) improved "
-            "by less than {:g} relative and the step size is {:.2g} (below {:g}) in the unit "
-            "cube of search coordinates",
-            evaluations, window, objective_name, 100 * best, options.stop_e2, step,
-            options.stop_step);
-        break;
-      }
+    if (Converged(history, evaluations, best, leader->best_step, options, objective_name, result)) {
+      break;
     }
   }
 
   // The best point over islands and restarts, then a compass-search polish from it.
   pagmo::vector_double best_x = start;
   double best_f = INFINITY;
-  for (const Island& island : archipelago) {
-    if (island.population.champion_f()[0] < best_f) {
-      best_f = island.population.champion_f()[0];
-      best_x = island.population.champion_x();
-    }
-    if (island.best_f < best_f) {
-      best_f = island.best_f;
-      best_x = island.best_x;
-    }
-  }
+  BestOverIslands(archipelago, best_x, best_f);
   long evaluations = evaluations_so_far();
   // The polish gets what CMA-ES left of the budget, or, after the convergence stop, its own
   // share. Compass search may overrun its count by one poll of the 2 D points around the current

@@ -156,25 +156,9 @@ SyntheticSuite ReadSynthetic(const YamlReader& reader, const YAML::Node& node,
   return suite;
 }
 
-}  // namespace
-
-std::string_view CodeName(DesignCode code) {
-  return code == DesignCode::kEn1998_1 ? "EN 1998-1:2004" : "ASCE 7-16";
-}
-
-DesignFile LoadDesignFile(const std::string& path) {
-  const YamlReader reader(path);
-  const YAML::Node root = reader.LoadFile();
-  reader.RequireMap(root, "");
-  reader.CheckKeys(root, "",
-                   {"description", "model", "target", "suite", "eccentricity", "drift_limit",
-                    "shear_strain_limit", "gamma_x", "r_i", "output"});
-  DesignFile design;
-  design.path = path;
-  const fs::path directory = fs::path(path).parent_path();
-  if (root["description"]) {
-    design.description = reader.ReadString(root["description"], "description");
-  }
+// The model a design runs, refused where a design cannot run it.
+void ReadDesignModel(const YamlReader& reader, const YAML::Node& root, const fs::path& directory,
+                     DesignFile& design) {
   const YAML::Node model_node = reader.Require(root, "", "model");
   design.model_path =
       (directory / reader.ReadString(model_node, "model")).lexically_normal().string();
@@ -213,6 +197,11 @@ DesignFile LoadDesignFile(const std::string& path) {
                               isolators->size() == 1 ? "one isolator" : "isolators all"));
     }
   }
+}
+
+// The target spectrum, the code it sets, and that code's factors (r_i, gamma_x).
+void ReadTargetAndFactors(const YamlReader& reader, const YAML::Node& root,
+                          const fs::path& directory, DesignFile& design) {
   const UnitSystem& units = design.model.units;
   const YAML::Node target = reader.Require(root, "", "target");
   design.target = ReadTarget(reader, target, directory, units);
@@ -252,11 +241,12 @@ DesignFile LoadDesignFile(const std::string& path) {
                               design.gamma_x, kRecommendedReliabilityFactor));
     }
   }
+}
 
-  const YAML::Node suite = reader.Require(root, "", "suite");
-  reader.RequireMap(suite, "suite");
-  reader.CheckKeys(suite, "suite", {"records", "synthetic", "period_range", "orientations"});
-  design.suite_key = fmt::format("{}: suite", reader.Locate(suite).Describe());
+// The suite's records: given (files or pairs), or synthetic.
+void ReadSuiteRecords(const YamlReader& reader, const YAML::Node& suite, const fs::path& directory,
+                      DesignFile& design) {
+  const UnitSystem& units = design.model.units;
   if (suite["records"] && suite["synthetic"]) {
     reader.Fail(suite, "suite", "give records or synthetic, not both");
   }
@@ -302,6 +292,9 @@ DesignFile LoadDesignFile(const std::string& path) {
   } else {
     reader.Fail(suite, "suite", "give records (files or pairs) or synthetic");
   }
+}
+
+void ReadPeriodRange(const YamlReader& reader, const YAML::Node& suite, DesignFile& design) {
   if (suite["period_range"]) {
     const YAML::Node range = suite["period_range"];
     if (!range.IsSequence() || range.size() != 2) {
@@ -318,6 +311,11 @@ DesignFile LoadDesignFile(const std::string& path) {
                               design.period_range[0], design.period_range[1]));
     }
   }
+}
+
+// The orientations each pair runs in; a record's name that another would take turned is refused.
+void ReadOrientations(const YamlReader& reader, const YAML::Node& suite, DesignFile& design) {
+  const int directions = Directions(design.model);
   if (directions == 2) design.orientations = {0.0, 90.0};
   if (suite["orientations"]) {
     const YAML::Node node = suite["orientations"];
@@ -361,6 +359,12 @@ DesignFile LoadDesignFile(const std::string& path) {
       }
     }
   }
+}
+
+// The accidental eccentricity and the limits the checks compare with.
+void ReadEccentricityAndLimits(const YamlReader& reader, const YAML::Node& root,
+                               DesignFile& design) {
+  const int directions = Directions(design.model);
   if (directions == 1) design.eccentricity = 0.0;
   if (root["eccentricity"]) {
     design.eccentricity = reader.ReadNumber(root["eccentricity"], "eccentricity");
@@ -393,6 +397,37 @@ DesignFile LoadDesignFile(const std::string& path) {
                               design.shear_strain_limit));
     }
   }
+}
+
+}  // namespace
+
+std::string_view CodeName(DesignCode code) {
+  return code == DesignCode::kEn1998_1 ? "EN 1998-1:2004" : "ASCE 7-16";
+}
+
+DesignFile LoadDesignFile(const std::string& path) {
+  const YamlReader reader(path);
+  const YAML::Node root = reader.LoadFile();
+  reader.RequireMap(root, "");
+  reader.CheckKeys(root, "",
+                   {"description", "model", "target", "suite", "eccentricity", "drift_limit",
+                    "shear_strain_limit", "gamma_x", "r_i", "output"});
+  DesignFile design;
+  design.path = path;
+  const fs::path directory = fs::path(path).parent_path();
+  if (root["description"]) {
+    design.description = reader.ReadString(root["description"], "description");
+  }
+  ReadDesignModel(reader, root, directory, design);
+  ReadTargetAndFactors(reader, root, directory, design);
+  const YAML::Node suite = reader.Require(root, "", "suite");
+  reader.RequireMap(suite, "suite");
+  reader.CheckKeys(suite, "suite", {"records", "synthetic", "period_range", "orientations"});
+  design.suite_key = fmt::format("{}: suite", reader.Locate(suite).Describe());
+  ReadSuiteRecords(reader, suite, directory, design);
+  ReadPeriodRange(reader, suite, design);
+  ReadOrientations(reader, suite, design);
+  ReadEccentricityAndLimits(reader, root, design);
   if (root["output"]) {
     const YAML::Node output = root["output"];
     reader.RequireMap(output, "output");

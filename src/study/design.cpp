@@ -289,42 +289,86 @@ std::vector<IsolatorCapacity> Capacities(const model::ModelFile& model, double s
   return capacities;
 }
 
-// Every part's design values: per bound and record the envelope over the eccentricity cases and
-// orientations, then over the suite, as the headline quantities.
+// One bound's envelope per record over its runs: over the first `cases` eccentricity cases and
+// every orientation, the largest `value` of a run (the least with `least`); NaN where no run of
+// the record has one.
+template <class RunValue>
+std::vector<double> RecordEnvelopes(const DesignOutcome& out, std::size_t b, std::size_t cases,
+                                    bool least, const RunValue& value) {
+  std::vector<double> per_record(out.records.size(), kAbsent);
+  for (std::size_t r = 0; r < per_record.size(); ++r) {
+    double& e = per_record[r];
+    for (std::size_t c = 0; c < cases; ++c) {
+      for (std::size_t o = 0; o < out.orientations.size(); ++o) {
+        const double v = value(out.RunOf(b, c, r, o));
+        if (std::isnan(v)) continue;
+        e = std::isnan(e) ? v : least ? std::min(e, v) : std::max(e, v);
+      }
+    }
+  }
+  return per_record;
+}
+
+// The bound whose value governs: the largest (the least with `least`). A NaN never governs: a
+// number replaces it, and it replaces nothing.
+template <class BoundValue>
+std::size_t GoverningBound(std::size_t bounds, bool least, const BoundValue& value) {
+  std::size_t governing = 0;
+  for (std::size_t b = 1; b < bounds; ++b) {
+    const double v = value(b), g = value(governing);
+    if ((least ? v < g : v > g) || (std::isnan(g) && !std::isnan(v))) governing = b;
+  }
+  return governing;
+}
+
+// The headline design values per bound, each the envelope over the cases and orientations (D_M,
+// the base's displacement, without eccentricity), then over the suite; and the governing bounds.
+void HeadlineValues(DesignOutcome& out) {
+  for (std::size_t b = 0; b < out.bounds.size(); ++b) {
+    std::array<DesignStatistic, kDesignQuantityCount> values;
+    for (const DesignQuantityInfo& info : kDesignQuantities) {
+      const std::size_t q = static_cast<std::size_t>(SourceOf(info.quantity));
+      const std::size_t cases =
+          info.quantity == DesignQuantity::kDisplacement ? 1 : out.eccentricities.size();
+      values[static_cast<std::size_t>(info.quantity)] =
+          SuiteStatistic(RecordEnvelopes(out, b, cases, false,
+                                         [q](const JobResult& run) { return run.values[q]; }),
+                         out.mean_of_suite);
+    }
+    out.values.push_back(values);
+  }
+  for (std::size_t q = 0; q < kDesignQuantityCount; ++q) {
+    out.governing[q] = GoverningBound(out.bounds.size(), false,
+                                      [&](std::size_t b) { return out.values[b][q].value; });
+  }
+}
+
+// Every part's design values, as the headline ones.
 std::vector<DesignPartValue> PartValues(const DesignOutcome& out) {
   std::vector<DesignPartValue> parts;
-  const std::size_t C = out.eccentricities.size(), R = out.records.size();
-  const std::size_t O = out.orientations.size();
   // The parts as the first run lists them: every run of a bound has the same; the bounds too.
   for (const PartPeak& p : out.runs.front().parts) parts.push_back({p.quantity, p.part, {}, 0});
   for (std::size_t k = 0; k < parts.size(); ++k) {
     DesignPartValue& part = parts[k];
     const bool least = part.quantity == PartQuantity::kLeastAxialLoad;
+    // Every run of a design has the same parts in the same order; looked up by name where a
+    // run's differ.
+    const auto value = [&](const JobResult& run) {
+      const auto same = [&](const PartPeak& p) {
+        return p.part == part.part && p.quantity == part.quantity;
+      };
+      const auto found = k < run.parts.size() && same(run.parts[k])
+                             ? run.parts.begin() + static_cast<std::ptrdiff_t>(k)
+                             : std::find_if(run.parts.begin(), run.parts.end(), same);
+      return found != run.parts.end() ? found->value : kAbsent;
+    };
     for (std::size_t b = 0; b < out.bounds.size(); ++b) {
-      std::vector<double> per_record(R, kAbsent);
-      for (std::size_t r = 0; r < R; ++r) {
-        for (std::size_t c = 0; c < C; ++c) {
-          for (std::size_t o = 0; o < O; ++o) {
-            // Every run of a design has the same parts in the same order; looked up by name
-            // where a run's differ.
-            const std::vector<PartPeak>& run = out.RunOf(b, c, r, o).parts;
-            const auto same = [&](const PartPeak& p) {
-              return p.part == part.part && p.quantity == part.quantity;
-            };
-            const auto found = k < run.size() && same(run[k])
-                                   ? run.begin() + static_cast<std::ptrdiff_t>(k)
-                                   : std::find_if(run.begin(), run.end(), same);
-            const double v = found != run.end() ? found->value : kAbsent;
-            if (std::isnan(v)) continue;
-            double& e = per_record[r];
-            e = std::isnan(e) ? v : least ? std::min(e, v) : std::max(e, v);
-          }
-        }
-      }
-      part.bounds.push_back(SuiteStatistic(per_record, out.mean_of_suite, least));
-      const double v = part.bounds.back().value, g = part.bounds[part.governing].value;
-      if ((least ? v < g : v > g) || (std::isnan(g) && !std::isnan(v))) part.governing = b;
+      part.bounds.push_back(
+          SuiteStatistic(RecordEnvelopes(out, b, out.eccentricities.size(), least, value),
+                         out.mean_of_suite, least));
     }
+    part.governing = GoverningBound(out.bounds.size(), least,
+                                    [&](std::size_t b) { return part.bounds[b].value; });
   }
   return parts;
 }
@@ -365,26 +409,20 @@ std::unique_ptr<DesignFolder> ClaimDesignFolder(const std::string& requested,
   return std::make_unique<DesignFolder>(folder, requested.empty() ? "output.directory" : option);
 }
 
-DesignOutcome RunDesign(const model::DesignFile& design, const std::string& output_directory,
-                        const std::string& version, Scheduler& scheduler,
-                        const std::function<void(const std::string&)>& progress) {
-  const auto say = [&](const std::string& line) {
-    if (progress) progress(line);
-  };
-  const auto start = std::chrono::steady_clock::now();
-  DesignOutcome out;
-  const UnitSystem& units = design.model.units;
-  const double second = 1.0 / units.SiFactor(dimension::kTime);
-  const double metre = units.Convert(1.0, "m", dimension::kLength);
+namespace {
 
-  // 0. The given records, read and checked before any work.
-  const std::vector<std::vector<io::Record>> given = ReadSuite(design.records, design.model);
+using Progress = std::function<void(const std::string&)>;
 
-  // 1. The bound models, read as they will run; written once the suite is ready, so that a
-  // design refused on its suite leaves nothing behind.
-  const model::BoundModels bounds = model::MakeBoundModels(design.model);
+void Tell(const Progress& progress, const std::string& line) {
+  if (progress) progress(line);
+}
+
+// 1. The bound models, read as they will run, into out.bounds (to be written once the suite is
+// ready, so that a design refused on its suite leaves nothing behind).
+model::BoundModels ReadBoundModels(const model::DesignFile& design, const fs::path& models,
+                                   DesignOutcome& out) {
+  model::BoundModels bounds = model::MakeBoundModels(design.model);
   out.modified = bounds.properties;
-  const fs::path models = fs::path(output_directory) / "models";
   const std::string stem = fs::path(design.model_path).stem().string();
   for (const model::BoundModel& bound : bounds.models) {
     DesignBound b;
@@ -393,8 +431,32 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     b.model = model::LoadModelText(bound.text, b.model_file);
     out.bounds.push_back(std::move(b));
   }
+  return bounds;
+}
 
-  // 2. The ELF procedure on each bound.
+// The nominal bound's building: its capacities and the weights its bearings carry.
+void DescribeNominalBuilding(const model::DesignFile& design,
+                             const analysis::IsolationSystem& system, const DesignBound& b,
+                             DesignOutcome& out, const Progress& progress) {
+  out.capacities = Capacities(b.model, design.shear_strain_limit);
+  out.bearing_weights = system.bearing_weights();
+  out.building_weight = system.weight();
+  const structure::LaidOutStructure laid = model::BuildStructure(b.model);
+  if (laid.layout.isolated() && !laid.layout.stories.empty()) {
+    const int base = laid.layout.levels.front().dofs[structure::kX];
+    out.structure_weight = system.weight() - laid.structure.mass()[base] * system.gravity();
+  }
+  if (const std::string rule = BearingWeightRule(design.model, out); !rule.empty()) {
+    Tell(progress, rule);
+  }
+}
+
+// 2. The ELF procedure on each bound.
+void SolveBoundsByElf(const model::DesignFile& design, DesignOutcome& out,
+                      const Progress& progress) {
+  const UnitSystem& units = design.model.units;
+  const double second = 1.0 / units.SiFactor(dimension::kTime);
+  const double metre = units.Convert(1.0, "m", dimension::kLength);
   const analysis::DisplacementDemand demand = analysis::CodeDemand(design.target, units);
   for (DesignBound& b : out.bounds) {
     const analysis::IsolationSystem system(b.model);
@@ -411,39 +473,94 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
         analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
     b.elf_total_displacement = analysis::TotalDisplacement(b.model, system, b.elf);
     b.bearings = system.BearingProperties(b.elf.displacement, b.elf.period);
-    say(fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}", b.bound,
-                    b.elf.displacement, units.length(), b.elf.period / second,
-                    b.elf.at_design.damping, b.damping_coefficient));
-    if (b.bound == "nominal") {
-      out.capacities = Capacities(b.model, design.shear_strain_limit);
-      out.bearing_weights = system.bearing_weights();
-      out.building_weight = system.weight();
-      const structure::LaidOutStructure laid = model::BuildStructure(b.model);
-      if (laid.layout.isolated() && !laid.layout.stories.empty()) {
-        const int base = laid.layout.levels.front().dofs[structure::kX];
-        out.structure_weight = system.weight() - laid.structure.mass()[base] * system.gravity();
-      }
-      if (const std::string rule = BearingWeightRule(design.model, out); !rule.empty()) say(rule);
-    }
+    Tell(progress, fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}",
+                               b.bound, b.elf.displacement, units.length(), b.elf.period / second,
+                               b.elf.at_design.damping, b.damping_coefficient));
+    if (b.bound == "nominal") DescribeNominalBuilding(design, system, b, out, progress);
   }
-  const auto bound_index = [&](const std::string& name) {
-    for (std::size_t i = 0; i < out.bounds.size(); ++i) {
-      if (out.bounds[i].bound == name) return i;
+}
+
+// The scaling range (s) from the bounds' T_M: from the upper bound's, to the lower bound's; an
+// EN 1998-1 range cut at 4 s, where the code's spectrum ends.
+void SetScalingRange(const model::DesignFile& design, DesignOutcome& out) {
+  const double second = 1.0 / design.model.units.SiFactor(dimension::kTime);
+  const auto period_of = [&](const std::string& name) {
+    for (const DesignBound& b : out.bounds) {
+      if (b.bound == name) return b.elf.period / second;
     }
-    return std::size_t{0};
+    return out.bounds.front().elf.period / second;
   };
-  out.period_range[0] =
-      design.period_range[0] * out.bounds[bound_index("upper")].elf.period / second;
-  out.period_range[1] =
-      design.period_range[1] * out.bounds[bound_index("lower")].elf.period / second;
-  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
-  if (eurocode && out.period_range[1] > spectra::kEurocode8LastPeriod) {
+  out.period_range[0] = design.period_range[0] * period_of("upper");
+  out.period_range[1] = design.period_range[1] * period_of("lower");
+  if (design.code == model::DesignCode::kEn1998_1 &&
+      out.period_range[1] > spectra::kEurocode8LastPeriod) {
     out.uncut_range_top = out.period_range[1];
     out.period_range[1] = spectra::kEurocode8LastPeriod;
   }
+}
 
-  // 3. The suite, scaled to the target.
+// The report's periods: the scaling grid, and from 0.05 s to twice its top (Eurocode 8's to 4 s
+// at most: beyond it the code gives no spectrum to draw).
+std::vector<double> DisplayPeriods(const std::vector<double>& scaling_periods, double top,
+                                   bool eurocode) {
+  const double display_top =
+      eurocode ? std::min(2.0 * top, spectra::kEurocode8LastPeriod) : 2.0 * top;
+  std::vector<double> grid = scaling_periods;
+  for (int i = 0; i <= kDisplayPoints; ++i) {
+    grid.push_back(kDisplayLow *
+                   std::pow(display_top / kDisplayLow, static_cast<double>(i) / kDisplayPoints));
+  }
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  return grid;
+}
+
+// EN 1998-1 3.2.3.1.2(4)b: the suite's mean peak ground acceleration must reach the target's
+// a_g S = Se(0) too; where it falls short, the common factor rises until it does.
+void RaiseToPeakGroundAcceleration(const model::DesignFile& design,
+                                   const std::vector<model::StudyRecord>& records,
+                                   const std::vector<std::vector<io::Record>>& suite,
+                                   DesignOutcome& out) {
+  double sum = 0.0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    sum += out.scaling.factors[r] * RecordPeakAcceleration(records[r], suite[r]);
+  }
+  out.mean_pga = sum / static_cast<double>(records.size());
+  out.pga_floor = spectra::SpectralAcceleration(design.target, 0.0);
+  if (out.mean_pga < out.pga_floor) {
+    const double raise = out.pga_floor / out.mean_pga;
+    out.pga_governs = true;
+    out.mean_pga = out.pga_floor;
+    out.scaling.common_factor *= raise;
+    for (double& f : out.scaling.factors) f *= raise;
+    for (double& m : out.scaling.scaled_mean) m *= raise;
+  }
+}
+
+std::string SuiteLine(const model::DesignFile& design, std::size_t records, int directions,
+                      const DesignOutcome& out) {
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
+  return fmt::format(
+      "suite: {} {} scaled to {} over {:.3g} to {:.3g} s{} (common factor {:.4g}, governing {})",
+      records, directions == 2 ? "pairs" : "records",
+      eurocode ? "90 % of the target (EN 1998-1 3.2.3.1.2(4))" : "the target (ASCE 7-16 17.3.3)",
+      out.period_range[0], out.period_range[1],
+      out.uncut_range_top > 0.0
+          ? fmt::format(" (cut from {:.3g} s at 4 s, where the code's spectrum ends)",
+                        out.uncut_range_top)
+          : "",
+      out.scaling.common_factor,
+      out.pga_governs ? fmt::format("by the mean PGA {:.4g} g = a_g S", out.pga_floor)
+                      : fmt::format("at {:.3g} s", out.scaling.periods[out.scaling.governing]));
+}
+
+// 3. The suite, scaled to the target: its records with their scales applied, and in `out` its
+// spectra and scaling. A synthetic suite is matched and written first.
+std::vector<model::StudyRecord> ScaleSuiteToTarget(
+    const model::DesignFile& design, const std::vector<std::vector<io::Record>>& given,
+    const std::string& output_directory, DesignOutcome& out, const Progress& progress) {
   const auto suite_start = std::chrono::steady_clock::now();
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
   const int directions = model::Directions(design.model);
   // The range first: a design refused on it spends no time on a suite and writes nothing.
   std::vector<double> periods;
@@ -461,18 +578,7 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
                        : design.records;
   const std::vector<std::vector<io::Record>> suite =
       design.synthetic ? ReadSuite(records, design.model) : given;
-  // Spectra on the scaling grid and, for the report, from 0.05 s to twice its top (Eurocode 8's
-  // to 4 s at most: beyond it the code gives no spectrum to draw).
-  const double display_top =
-      eurocode ? std::min(2.0 * out.period_range[1], spectra::kEurocode8LastPeriod)
-               : 2.0 * out.period_range[1];
-  std::vector<double> grid = periods;
-  for (int i = 0; i <= kDisplayPoints; ++i) {
-    grid.push_back(kDisplayLow *
-                   std::pow(display_top / kDisplayLow, static_cast<double>(i) / kDisplayPoints));
-  }
-  std::sort(grid.begin(), grid.end());
-  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  const std::vector<double> grid = DisplayPeriods(periods, out.period_range[1], eurocode);
   std::vector<std::vector<double>> in_range(records.size());
   for (std::size_t r = 0; r < records.size(); ++r) {
     const std::vector<double> sa =
@@ -496,51 +602,23 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     target.push_back(out.target_fraction * spectra::SpectralAcceleration(design.target, t));
   }
   out.scaling = spectra::ScaleSuite(periods, target, in_range);
-  if (eurocode) {
-    // The mean peak ground acceleration must reach the target's a_g S = Se(0) too: where it falls
-    // short, the common factor rises until it does.
-    double sum = 0.0;
-    for (std::size_t r = 0; r < records.size(); ++r) {
-      sum += out.scaling.factors[r] * RecordPeakAcceleration(records[r], suite[r]);
-    }
-    out.mean_pga = sum / static_cast<double>(records.size());
-    out.pga_floor = spectra::SpectralAcceleration(design.target, 0.0);
-    if (out.mean_pga < out.pga_floor) {
-      const double raise = out.pga_floor / out.mean_pga;
-      out.pga_governs = true;
-      out.mean_pga = out.pga_floor;
-      out.scaling.common_factor *= raise;
-      for (double& f : out.scaling.factors) f *= raise;
-      for (double& m : out.scaling.scaled_mean) m *= raise;
-    }
-  }
+  if (eurocode) RaiseToPeakGroundAcceleration(design, records, suite, out);
   for (std::size_t r = 0; r < records.size(); ++r) {
     for (model::GroundMotionSection& c : records[r].components) c.scale *= out.scaling.factors[r];
     out.records[r].shape_factor = out.scaling.pair_shape_factors[r];
     out.records[r].factor = out.scaling.factors[r];
   }
-  say(fmt::format(
-      "suite: {} {} scaled to {} over {:.3g} to {:.3g} s{} (common factor {:.4g}, governing {})",
-      records.size(), directions == 2 ? "pairs" : "records",
-      eurocode ? "90 % of the target (EN 1998-1 3.2.3.1.2(4))" : "the target (ASCE 7-16 17.3.3)",
-      out.period_range[0], out.period_range[1],
-      out.uncut_range_top > 0.0
-          ? fmt::format(" (cut from {:.3g} s at 4 s, where the code's spectrum ends)",
-                        out.uncut_range_top)
-          : "",
-      out.scaling.common_factor,
-      out.pga_governs ? fmt::format("by the mean PGA {:.4g} g = a_g S", out.pga_floor)
-                      : fmt::format("at {:.3g} s", out.scaling.periods[out.scaling.governing])));
-
+  Tell(progress, SuiteLine(design, records.size(), directions, out));
   out.suite_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
-  fs::create_directories(models);
-  for (std::size_t i = 0; i < bounds.models.size(); ++i) {
-    io::WriteTextFileAtomically(out.bounds[i].model_file,
-                                [&](std::ostream& file) { file << bounds.models[i].text; });
-  }
+  return records;
+}
 
-  // 4. Every bound x eccentricity case x record x orientation.
+// 4. The study of every bound x eccentricity case x record x orientation. Each case's model is
+// written as it runs, so that `isolab run` on the file reproduces its rows.
+model::StudyFile DesignStudy(const model::DesignFile& design, const model::BoundModels& bounds,
+                             const std::vector<model::StudyRecord>& records, const fs::path& models,
+                             DesignOutcome& out) {
   out.eccentricities.push_back({"none", {}});
   if (design.eccentricity > 0.0) {
     for (const analysis::EccentricityCase& c :
@@ -548,14 +626,15 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       out.eccentricities.push_back(c);
     }
   }
-  model::StudyFile& study = out.study;
+  const int directions = model::Directions(design.model);
+  model::StudyFile study;
   study.path = design.path;
   study.description = design.description;
   study.building_path = design.model_path;
-  study.units = units;
+  study.units = design.model.units;
   study.directions = directions;
   study.rotations = directions == 2;
-  // Each case's model written as it runs, so that `isolab run` on the file reproduces its rows.
+  const std::string stem = fs::path(design.model_path).stem().string();
   for (std::size_t i = 0; i < out.bounds.size(); ++i) {
     DesignBound& b = out.bounds[i];
     for (const analysis::EccentricityCase& c : out.eccentricities) {
@@ -577,7 +656,6 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     }
   }
   out.orientations = design.orientations;
-  study.records.clear();
   for (const model::StudyRecord& record : records) {
     for (const double angle : out.orientations) {
       model::StudyRecord turned = record;
@@ -588,62 +666,15 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   }
   study.scales = {1.0};
   study.runs = model::RunFiles::kSummary;
-  const std::vector<Job> jobs = ExpandJobs(study);
-  say(fmt::format("runs: {} bounds x {} eccentricity cases x {} records{} = {} runs on {}",
-                  out.bounds.size(), out.eccentricities.size(), records.size(),
-                  out.orientations.size() > 1
-                      ? fmt::format(" x {} orientations ({} degrees)", out.orientations.size(),
-                                    fmt::join(out.orientations, ", "))
-                      : "",
-                  jobs.size(), scheduler.Describe()));
-  const ScheduleOutcome outcome =
-      RunStudy(study, jobs, output_directory, version, scheduler,
-               [&](const JobResult& result, std::size_t done, std::size_t total) {
-                 say(JobProgressLine(study, jobs[result.job], result, done, total));
-               });
-  out.runs = outcome.results;
-  out.failed = outcome.failed;
-  out.runs_seconds = outcome.wall_seconds;
-  out.warnings = CollectWarnings(out);
-  if (out.failed > 0) return out;
+  return study;
+}
 
-  // 5. Design values: per bound and record the envelope over the cases and orientations, then
-  // over the suite.
-  const std::size_t C = out.eccentricities.size(), R = records.size();
-  const std::size_t O = out.orientations.size();
-  out.mean_of_suite = R >= kMinimumRecordsForMean;
-  for (std::size_t b = 0; b < out.bounds.size(); ++b) {
-    std::array<DesignStatistic, kDesignQuantityCount> values;
-    for (const DesignQuantityInfo& info : kDesignQuantities) {
-      const std::size_t q = static_cast<std::size_t>(SourceOf(info.quantity));
-      std::vector<double> per_record(R, kAbsent);
-      for (std::size_t r = 0; r < R; ++r) {
-        // D_M is the base's displacement without eccentricity; the others the envelope.
-        const std::size_t cases = info.quantity == DesignQuantity::kDisplacement ? 1 : C;
-        for (std::size_t c = 0; c < cases; ++c) {
-          for (std::size_t o = 0; o < O; ++o) {
-            const double v = out.RunOf(b, c, r, o).values[q];
-            if (!std::isnan(v))
-              per_record[r] = std::isnan(per_record[r]) ? v : std::max(per_record[r], v);
-          }
-        }
-      }
-      values[static_cast<std::size_t>(info.quantity)] =
-          SuiteStatistic(per_record, out.mean_of_suite);
-    }
-    out.values.push_back(values);
-  }
-  for (std::size_t q = 0; q < kDesignQuantityCount; ++q) {
-    for (std::size_t b = 1; b < out.bounds.size(); ++b) {
-      // A NaN never governs: a number replaces it, and it replaces nothing.
-      const double v = out.values[b][q].value, g = out.values[out.governing[q]][q].value;
-      if (v > g || (std::isnan(g) && !std::isnan(v))) out.governing[q] = b;
-    }
-  }
-  out.parts = PartValues(out);
-
-  // Histories for the figures: the record of the largest D_TM of the governing bound in the
-  // orientation that gave it, each bound in its worst eccentricity case for that record.
+// 6. Histories for the figures: the record of the largest D_TM of the governing bound in the
+// orientation that gave it, each bound in its worst eccentricity case for that record; run again
+// with every history written, into <output>/histories.
+void KeepFigureHistories(const std::string& output_directory, const std::string& version,
+                         Scheduler& scheduler, DesignOutcome& out) {
+  const std::size_t C = out.eccentricities.size(), O = out.orientations.size();
   const std::size_t total = static_cast<std::size_t>(DesignQuantity::kTotalDisplacement);
   const std::size_t g = out.governing[total];
   const std::vector<double>& governing = out.values[g][total].per_record;
@@ -662,16 +693,16 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
       }
     }
   }
-  model::StudyFile histories = study;
+  model::StudyFile histories = out.study;
   histories.variants.clear();
-  histories.records = {study.records[out.figure_record * O + out.figure_orientation]};
+  histories.records = {out.study.records[out.figure_record * O + out.figure_orientation]};
   histories.runs = model::RunFiles::kFull;
   for (std::size_t b = 0; b < out.bounds.size(); ++b) {
     std::size_t worst = 0;
     for (std::size_t c = 1; c < C; ++c) {
       if (peak(b, c, out.figure_orientation) > peak(b, worst, out.figure_orientation)) worst = c;
     }
-    model::StudyVariant variant = study.variants[b * C + worst];
+    model::StudyVariant variant = out.study.variants[b * C + worst];
     variant.name = out.bounds[b].bound;
     histories.variants.push_back(std::move(variant));
   }
@@ -692,6 +723,55 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
     }
     out.history_files.push_back((fs::path("histories") / r.file).string());
   }
+}
+
+}  // namespace
+
+DesignOutcome RunDesign(const model::DesignFile& design, const std::string& output_directory,
+                        const std::string& version, Scheduler& scheduler,
+                        const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  DesignOutcome out;
+  // 0. The given records, read and checked before any work.
+  const std::vector<std::vector<io::Record>> given = ReadSuite(design.records, design.model);
+  const fs::path models = fs::path(output_directory) / "models";
+  const model::BoundModels bounds = ReadBoundModels(design, models, out);
+  SolveBoundsByElf(design, out, progress);
+  SetScalingRange(design, out);
+  const std::vector<model::StudyRecord> records =
+      ScaleSuiteToTarget(design, given, output_directory, out, progress);
+  fs::create_directories(models);
+  for (std::size_t i = 0; i < bounds.models.size(); ++i) {
+    io::WriteTextFileAtomically(out.bounds[i].model_file,
+                                [&](std::ostream& file) { file << bounds.models[i].text; });
+  }
+  out.study = DesignStudy(design, bounds, records, models, out);
+  const model::StudyFile& study = out.study;
+  const std::vector<Job> jobs = ExpandJobs(study);
+  Tell(progress,
+       fmt::format("runs: {} bounds x {} eccentricity cases x {} records{} = {} runs on {}",
+                   out.bounds.size(), out.eccentricities.size(), records.size(),
+                   out.orientations.size() > 1
+                       ? fmt::format(" x {} orientations ({} degrees)", out.orientations.size(),
+                                     fmt::join(out.orientations, ", "))
+                       : "",
+                   jobs.size(), scheduler.Describe()));
+  const ScheduleOutcome outcome =
+      RunStudy(study, jobs, output_directory, version, scheduler,
+               [&](const JobResult& result, std::size_t done, std::size_t total) {
+                 Tell(progress, JobProgressLine(study, jobs[result.job], result, done, total));
+               });
+  out.runs = outcome.results;
+  out.failed = outcome.failed;
+  out.runs_seconds = outcome.wall_seconds;
+  out.warnings = CollectWarnings(out);
+  if (out.failed > 0) return out;
+  // 5. Design values: per bound and record the envelope over the cases and orientations, then
+  // over the suite.
+  out.mean_of_suite = out.records.size() >= kMinimumRecordsForMean;
+  HeadlineValues(out);
+  out.parts = PartValues(out);
+  KeepFigureHistories(output_directory, version, scheduler, out);
   out.checks = CheckDesign(design, out);
   out.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

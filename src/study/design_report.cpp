@@ -379,28 +379,13 @@ void WriteSummary(const model::DesignFile& design, const DesignOutcome& o, std::
                  : "");
 }
 
-void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
-                 const std::string& directory, bool figures, std::ostream& md) {
-  const UnitSystem& u = design.model.units;
-  const double second = 1.0 / u.SiFactor(dimension::kTime);
+// The bound models' files and the modified properties with their lambdas.
+void WriteBoundModels(const model::DesignFile& design, const DesignOutcome& o,
+                      const std::string& directory, std::ostream& md) {
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
   const auto relative = [&](const std::string& path) {
     return fs::path(path).lexically_relative(directory).string();
   };
-  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
-  fmt::print(md, "# Isolation design: {}\n\n",
-             design.description.empty() ? fs::path(design.model_path).stem().string()
-                                        : design.description);
-  fmt::print(md,
-             "Model `{}`, design file `{}`. Code: {}, {}. Target: {}. Lengths in {}, forces in "
-             "{}.\n\n",
-             design.model_path, design.path, model::CodeName(design.code),
-             eurocode ? "section 10 (base isolation)"
-                      : "chapter 17 (seismically isolated "
-                        "structures)",
-             spectra::Describe(design.target), u.length(), u.force());
-  if (!o.warnings.empty()) fmt::print(md, "**{}**\n\n", WarningNote(o));
-  WriteSummary(design, o, md);
-
   fmt::print(md, "## Bound models\n\n");
   fmt::print(md,
              "The bearings' properties at nominal, upper-bound and lower-bound values ({}), "
@@ -417,7 +402,13 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
     fmt::print(md, "| {} | {} | {} | {:.4g} | {:.4g} | {} | {} | {} |\n", p.bearing, p.component,
                p.key, p.lambda.min, p.lambda.max, p.lower, p.nominal, p.upper);
   }
+}
 
+// The code's simplified procedure per bound (ASCE 7-16 17.5, EN 1998-1 10.9.3).
+void WriteElfSection(const model::DesignFile& design, const DesignOutcome& o, std::ostream& md) {
+  const UnitSystem& u = design.model.units;
+  const double second = 1.0 / u.SiFactor(dimension::kTime);
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
   fmt::print(md, "\n## {}\n\n",
              eurocode ? "Simplified linear analysis (EN 1998-1 10.9.3)"
                       : "Equivalent lateral force procedure (ASCE 7-16 17.5)");
@@ -447,9 +438,12 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                "1998-1 10.9.3's own amplification is not at hand here and is not applied. V_b = "
                "k_M D_M.\n");
   }
+}
 
-  WriteBearingTable(o, u, md);
-
+// The weights the friction pendulums carry, where the model has any.
+void WriteBearingWeights(const model::DesignFile& design, const DesignOutcome& o,
+                         std::ostream& md) {
+  const UnitSystem& u = design.model.units;
   if (const std::string rule = BearingWeightRule(design.model, o); !rule.empty()) {
     fmt::print(md, "\n### Bearing weights\n\n");
     fmt::print(md, "The friction pendulums' forces are their weight times constants: {}.\n\n",
@@ -461,7 +455,11 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
       }
     }
   }
+}
 
+// The suite's rule, records and factors.
+void WriteSuiteSection(const model::DesignFile& design, const DesignOutcome& o, bool figures,
+                       std::ostream& md) {
   fmt::print(md, "\n## The suite\n\n");
   fmt::print(md, "{}\n\n", SuiteRuleText(design, o));
   fmt::print(md, "| record | shape factor | factor | matched to |\n|---|---|---|---|\n");
@@ -474,7 +472,12 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   if (figures) {
     fmt::print(md, "\n![The scaled suite's spectra against the target](design_spectra.png)\n");
   }
+}
 
+// The headline values per bound, then each story's, floor's and bearing's.
+void WriteResponseHistoryValues(const model::DesignFile& design, const DesignOutcome& o,
+                                std::ostream& md) {
+  const UnitSystem& u = design.model.units;
   fmt::print(md, "\n## Response-history design values\n\n");
   std::vector<std::string> cases;
   for (const auto& e : o.eccentricities) cases.push_back(e.name);
@@ -517,11 +520,17 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                   {PartQuantity::kGreatestAxialLoad, "greatest axial load"},
                   {PartQuantity::kLeastAxialLoad, "least axial load"}},
                  md);
+}
 
+void WriteWarningsSection(const DesignOutcome& o, std::ostream& md) {
   fmt::print(md, "\n## Warnings\n\n");
   if (o.warnings.empty()) fmt::print(md, "None: no run warned of implausible input.\n");
   for (const std::string& line : WarningLines(o)) fmt::print(md, "- {}\n", line);
+}
 
+// The code's design values (D_TM, V_b, V_s) with their floors or factors.
+void WriteDesignValues(const model::DesignFile& design, const DesignOutcome& o, std::ostream& md) {
+  const UnitSystem& u = design.model.units;
   const DesignChecks& c = o.checks;
   fmt::print(md, "\n## Design values ({})\n\n", model::CodeName(design.code));
   fmt::print(md,
@@ -560,16 +569,22 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
                "\nThe design forces of the structure above the isolation by EN 1998-1 "
                "section 10 are not computed here: its rules are not at hand.\n");
   }
+}
 
+void WriteChecksSection(const DesignOutcome& o, std::ostream& md) {
   fmt::print(md, "\n## Checks\n\n");
   fmt::print(md,
              "| check | clause | demand | limit | basis | verdict |\n|---|---|---|---|---|---|\n");
-  for (const DesignCheck& check : c.checks) {
+  for (const DesignCheck& check : o.checks.checks) {
     fmt::print(md, "| {} | {} | {} | {} | {} | {} |\n", check.check, check.clause,
                Amount(check.demand, check.unit), Amount(check.limit, check.unit), check.basis,
                VerdictName(check.verdict));
   }
+}
 
+// The figures, or where the figures are not drawn here, the command that draws them.
+void WriteFiguresSection(const DesignOutcome& o, const std::string& directory, bool figures,
+                         std::ostream& md) {
   fmt::print(md, "\n## Figures\n\n");
   if (!figures) {
     fmt::print(md, "Not drawn here: `scripts/plot_design.py {}` draws them from this folder.\n",
@@ -591,6 +606,35 @@ void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
   if (!std::isnan(o.values[0][IndexOf(DesignQuantity::kStoryDriftRatio)].value)) {
     fmt::print(md, "![Peak story drift ratios](design_drifts.png)\n");
   }
+}
+
+void WriteReport(const model::DesignFile& design, const DesignOutcome& o,
+                 const std::string& directory, bool figures, std::ostream& md) {
+  const UnitSystem& u = design.model.units;
+  const bool eurocode = design.code == model::DesignCode::kEn1998_1;
+  fmt::print(md, "# Isolation design: {}\n\n",
+             design.description.empty() ? fs::path(design.model_path).stem().string()
+                                        : design.description);
+  fmt::print(md,
+             "Model `{}`, design file `{}`. Code: {}, {}. Target: {}. Lengths in {}, forces in "
+             "{}.\n\n",
+             design.model_path, design.path, model::CodeName(design.code),
+             eurocode ? "section 10 (base isolation)"
+                      : "chapter 17 (seismically isolated "
+                        "structures)",
+             spectra::Describe(design.target), u.length(), u.force());
+  if (!o.warnings.empty()) fmt::print(md, "**{}**\n\n", WarningNote(o));
+  WriteSummary(design, o, md);
+  WriteBoundModels(design, o, directory, md);
+  WriteElfSection(design, o, md);
+  WriteBearingTable(o, u, md);
+  WriteBearingWeights(design, o, md);
+  WriteSuiteSection(design, o, figures, md);
+  WriteResponseHistoryValues(design, o, md);
+  WriteWarningsSection(o, md);
+  WriteDesignValues(design, o, md);
+  WriteChecksSection(o, md);
+  WriteFiguresSection(o, directory, figures, md);
 }
 
 }  // namespace

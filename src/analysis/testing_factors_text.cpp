@@ -1,8 +1,8 @@
-#include "testing_factors_text.h"
+#include "isolab/analysis/testing_factors_text.h"
 
 #include <fmt/format.h>
 
-namespace isolab::cli {
+namespace isolab::analysis {
 namespace {
 
 std::string Pair(const identification::PropertyFactors& f) {
@@ -78,4 +78,4 @@ nlohmann::json TestingFactorsJson(const identification::TestingFactors& factors)
   return json;
 }
 
-}  // namespace isolab::cli
+}  // namespace isolab::analysis
