@@ -9,10 +9,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <optional>
-#include <thread>
 
 #include "bindings.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/study_file.h"
 #include "isolab/study/jobs.h"
@@ -110,8 +110,7 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
   if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
   const std::string folder = study::PrepareOutputFolder(output, study_path, study);
   const std::vector<study::Job> expanded = study::ExpandJobs(study);
-  const int threads =
-      jobs > 0 ? jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = ThreadsOrHardware(jobs);
   study::ScheduleOutcome outcome;
   {
     // The runs touch no Python object; progress goes to stderr as the command line's does.

@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 #include "bindings.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 #include "isolab/study/design_report.h"
@@ -27,8 +27,7 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   const std::unique_ptr<study::DesignFolder> claimed =
       study::ClaimDesignFolder(output, design, "output");
   const std::string& folder = claimed->path();
-  const int threads =
-      jobs > 0 ? jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = ThreadsOrHardware(jobs);
   study::DesignOutcome outcome;
   {
     py::gil_scoped_release release;

@@ -4,9 +4,9 @@
 
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 
 namespace isolab::analysis {
 
@@ -78,9 +78,7 @@ FitWork EstimateFitWork(const identification::ModelParametrisation& model,
     }
   }
   work.laws = std::max(work.laws, 1L);
-  const int hardware = options.threads > 0
-                           ? options.threads
-                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int hardware = ThreadsOrHardware(options.threads);
   work.threads = std::max(1, std::min(hardware, options.islands));
   const auto start = std::chrono::steady_clock::now();
   identification::SolveAmplitudes(model, model.StartPoint(), data);

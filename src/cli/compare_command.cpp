@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include "finite_options.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/study_file.h"
 #include "isolab/study/jobs.h"
@@ -69,11 +69,7 @@ void WriteSummary(const CompareOptions& options, const model::StudyFile& study_f
 
 constexpr int kWorkersPerHardwareThread = 8;
 
-int LocalWorkers(const CompareOptions& options) {
-  const int workers =
-      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  return std::max(workers, 1);
-}
+int LocalWorkers(const CompareOptions& options) { return ThreadsOrHardware(options.jobs); }
 
 std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, bool mpi) {
   if (mpi) {
@@ -119,7 +115,7 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
 int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   const bool mpi = study::LaunchedByMpirun();
   // More workers than this only share the same cores, each with its own run buffers.
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int hardware = HardwareThreads();
   if (!mpi && options.jobs > kWorkersPerHardwareThread * hardware) {
     throw InputError({"--jobs"},
                      fmt::format("{} workers on {} hardware threads: at most {} "

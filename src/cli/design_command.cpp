@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-#include <thread>
 
 #include "finite_options.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 #include "isolab/study/design_report.h"
@@ -57,9 +57,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   const std::unique_ptr<study::DesignFolder> claimed =
       study::ClaimDesignFolder(options.output, design, "--output");
   const std::string& folder = claimed->path();
-  const int threads = options.jobs > 0
-                          ? options.jobs
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = ThreadsOrHardware(options.jobs);
   const std::unique_ptr<study::Scheduler> scheduler = study::MakeLocalScheduler(threads);
   const study::DesignOutcome outcome =
       study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {

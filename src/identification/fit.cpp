@@ -8,6 +8,7 @@
 #include <string>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "parallel_for.h"
 
 namespace isolab::identification {
@@ -216,7 +217,7 @@ long FittedSamples(const FitData& data) {
 FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitOptions& options) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
-  const int threads = ThreadCount(options.threads);
+  const int threads = ThreadsOrHardware(options.threads);
   // Threads beyond one per island share each evaluation; below some work per evaluation the
   // threads would cost more to start than they save.
   const bool large = FittedSamples(data) * std::max(1L, LawRuns(model)) >= 200000;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "parallel_for.h"
 
 namespace isolab::identification {
@@ -72,7 +73,7 @@ DifferenceJacobianResult DifferenceJacobian(const Residual& residual, const std:
   DifferenceJacobianResult out;
   out.jacobian.resize(r.size(), long(n));
   std::vector<long> spent(n, 0);
-  ParallelFor(n, std::min(ThreadCount(threads), int(n)), [&](std::size_t p) {
+  ParallelFor(n, std::min(ThreadsOrHardware(threads), int(n)), [&](std::size_t p) {
     std::vector<double> point = x;
     const double up = std::min(1.0, x[p] + h), down = std::max(0.0, x[p] - h);
     Eigen::VectorXd r_up = r, r_down = r;

@@ -41,9 +41,4 @@ void ParallelFor(std::size_t count, int threads, const Task& task) {
   if (failure) std::rethrow_exception(failure);
 }
 
-// Hardware threads when `threads` is 0, else `threads`.
-inline int ThreadCount(int threads) {
-  return threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
 }  // namespace isolab::identification

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "isolab/core/errors.h"
+#include "isolab/core/hardware_threads.h"
 #include "parallel_for.h"
 
 namespace isolab::identification {
@@ -220,7 +221,7 @@ long FirstChunkEvaluations(int dimension, int islands) {
 SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
                              const std::vector<double>& start, const FitOptions& options,
                              const std::string& objective_name) {
-  const int threads = ThreadCount(options.threads);
+  const int threads = ThreadsOrHardware(options.threads);
   const int islands = options.islands;
   const int population_size = PopulationSize(dimension);
   const pagmo::problem problem{
