@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "common_options.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/model/bounds.h"
@@ -25,7 +26,7 @@ void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
           "-o,--output", o.output,
           "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
       ->required();
-  command->add_flag("-q,--quiet", o.quiet, "Print nothing");
+  AddQuietFlag(command, &o.quiet, "Print nothing");
 }
 
 void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {

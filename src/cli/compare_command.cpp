@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common_options.h"
 #include "finite_options.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
@@ -95,11 +96,8 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
       ->check(CLI::ExistingFile);
   command->add_option("-o,--output", options.output,
                       "Output folder (default: the study's output.directory, else its name)");
-  command
-      ->add_option("-j,--jobs", options.jobs,
-                   "Worker processes without mpirun (default: every hardware thread)")
-      ->check(Positive());
-  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  AddJobsOption(command, &options.jobs, "Worker processes without mpirun");
+  AddQuietFlag(command, &options.quiet);
   command->add_flag("--plot", options.plot,
                     "Bar charts of the summary in <output>/plots (plot_study.py)");
   command->add_option("--free-vibration", options.free_vibration,

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "common_options.h"
 #include "finite_options.h"
 #include "isolab/analysis/cyclic_campaign.h"
 #include "isolab/analysis/model_replay.h"
@@ -414,8 +415,8 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
                       "Force unit of path files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of path files without a '# units:' line (with --force-unit)");
-  command->add_flag("--json", options.json, "Print machine-readable JSON instead of tables");
-  command->add_flag("-q,--quiet", options.quiet, "No component table before the cycles");
+  AddJsonFlag(command, &options.json, "Print machine-readable JSON instead of tables");
+  AddQuietFlag(command, &options.quiet, "No component table before the cycles");
 }
 
 void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "common_options.h"
 #include "finite_options.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
@@ -37,10 +38,8 @@ void RegisterDesignCommand(CLI::App& app, DesignOptions& options) {
       ->check(CLI::ExistingFile);
   command->add_option("-o,--output", options.output,
                       "Output folder (default: the design's output.directory, else its name)");
-  command
-      ->add_option("-j,--jobs", options.jobs, "Worker processes (default: every hardware thread)")
-      ->check(Positive());
-  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  AddJobsOption(command, &options.jobs);
+  AddQuietFlag(command, &options.quiet);
   command->add_flag("!--no-figures", options.figures,
                     "Skip the report's figures (plot_design.py, which needs matplotlib and h5py)");
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "building_diagnose_command.h"
+#include "common_options.h"
 #include "diagnosis_files.h"
 #include "finite_options.h"
 #include "isolab/analysis/test_data_checks.h"
@@ -98,16 +99,13 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
                       "Force unit of data files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of data files without a '# units:' line (with --force-unit)");
-  command
-      ->add_option("--threads", options.threads,
-                   "Threads (default: every hardware thread); the result does not depend on it")
-      ->check(CLI::Range(0, 1024));
+  AddThreadsOption(command, &options.threads);
   command->add_flag("!--no-plot", options.plot, "Do not plot the residual");
   command->add_flag("--force", options.force,
                     "Diagnose even when one fit's work (evaluations x samples x laws) is beyond "
                     "the limit");
-  command->add_flag("--json", options.json, "Print the report as JSON instead of a summary");
-  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  AddJsonFlag(command, &options.json, "Print the report as JSON instead of a summary");
+  AddQuietFlag(command, &options.quiet);
 }
 
 void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {

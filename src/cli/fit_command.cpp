@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "building_fit_command.h"
+#include "common_options.h"
 #include "finite_options.h"
 #include "isolab/analysis/cyclic_fit.h"
 #include "isolab/analysis/testing_factors_text.h"
@@ -66,14 +67,11 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                       "Force unit of data files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of data files without a '# units:' line (with --force-unit)");
-  command
-      ->add_option("--threads", options.threads,
-                   "Threads (default: every hardware thread); the result does not depend on it")
-      ->check(CLI::Range(0, 1024));
+  AddThreadsOption(command, &options.threads);
   command->add_flag("--force", options.force,
                     "Fit even when the work (evaluations x samples x laws) is beyond the limit");
-  command->add_flag("--json", options.json, "Print the result as JSON");
-  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  AddJsonFlag(command, &options.json, "Print the result as JSON");
+  AddQuietFlag(command, &options.quiet);
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "common_options.h"
 #include "finite_options.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
@@ -189,9 +190,9 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                    "--building) for the 5-50-95 % spread of the peaks")
       ->check(CLI::Range(2, 100000));
   command->add_option("--seed", options.seed, "Seed of the drawn parameter sets (--samples)");
-  command->add_flag("--json", options.json, "Print the summary as JSON");
-  command->add_flag("-q,--quiet", options.quiet,
-                    "No preamble (record, model summary, grid) before the peaks");
+  AddJsonFlag(command, &options.json, "Print the summary as JSON");
+  AddQuietFlag(command, &options.quiet,
+               "No preamble (record, model summary, grid) before the peaks");
   command->add_flag("--plot{}", options.plot,
                     "After writing, plot with plot_result.py; --plot=DIR puts the PNGs in DIR "
                     "(default: beside the results file)");

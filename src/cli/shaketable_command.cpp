@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "common_options.h"
 #include "isolab/analysis/prediction_band.h"
 #include "isolab/analysis/results_file.h"
 #include "isolab/analysis/shake_table_measurements.h"
@@ -70,8 +71,8 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
   command->add_option("--results", options.results, "HDF5 results of the prediction");
   command->add_option("--comparison", options.comparison,
                       "CSV of measured and predicted histories (for the overlay plot)");
-  command->add_flag("--json", options.json, "Print the summary as JSON");
-  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  AddJsonFlag(command, &options.json, "Print the summary as JSON");
+  AddQuietFlag(command, &options.quiet);
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common_options.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
 #include "isolab/core/units.h"
@@ -323,8 +324,8 @@ void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
   command->add_flag("--plot{}", options.plot,
                     "After writing, plot with plot_spectrum.py; --plot=DIR puts the PNGs in DIR "
                     "(default: beside the first output)");
-  command->add_flag("--json", options.json, "Print the spectra as JSON");
-  command->add_flag("-q,--quiet", options.quiet, "No progress on stderr");
+  AddJsonFlag(command, &options.json, "Print the spectra as JSON");
+  AddQuietFlag(command, &options.quiet);
 }
 
 void RunSpectrumCommand(const SpectrumOptions& options, std::ostream& out) {

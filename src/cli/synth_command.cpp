@@ -11,6 +11,7 @@
 #include <ostream>
 #include <variant>
 
+#include "common_options.h"
 #include "isolab/analysis/matched_pairs.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/output_check.h"
@@ -202,8 +203,8 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s), (0, 30]");
   command->add_option("--oscillations", o.pulse.oscillations, "pulse: gamma, (1, 100]");
   command->add_option("--phase", o.pulse.phase, "pulse: nu (rad)");
-  command->add_flag("-q,--quiet", o.quiet,
-                    "Accepted by every command (synth prints nothing but the pairs' misfits)");
+  AddQuietFlag(command, &o.quiet,
+               "Accepted by every command (synth prints nothing but the pairs' misfits)");
 }
 
 int RunSynthCommand(const SynthOptions& o, std::ostream& out) {

@@ -1,0 +1,36 @@
+// The options several commands share, declared here once so that each is spelt, checked and
+// described alike in every command: -q/--quiet, --json, --threads (searches: the result does not
+// depend on it) and -j/--jobs (studies: worker processes). The default count, 0, is one per
+// hardware thread (core/hardware_threads.h).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "finite_options.h"
+
+namespace isolab::cli {
+
+inline void AddQuietFlag(CLI::App* command, bool* quiet,
+                         const std::string& what = "No progress on stderr") {
+  command->add_flag("-q,--quiet", *quiet, what);
+}
+
+inline void AddJsonFlag(CLI::App* command, bool* json, const std::string& what) {
+  command->add_flag("--json", *json, what);
+}
+
+inline void AddThreadsOption(CLI::App* command, int* threads) {
+  command
+      ->add_option("--threads", *threads,
+                   "Threads (default: every hardware thread); the result does not depend on it")
+      ->check(CLI::Range(0, 1024));
+}
+
+inline void AddJobsOption(CLI::App* command, int* jobs,
+                          const std::string& what = "Worker processes") {
+  command->add_option("-j,--jobs", *jobs, what + " (default: every hardware thread)")
+      ->check(Positive());
+}
+
+}  // namespace isolab::cli
