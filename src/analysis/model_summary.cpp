@@ -12,6 +12,7 @@
 #include "isolab/hysteresis/friction_pendulum.h"
 #include "isolab/hysteresis/law_kernel.h"
 #include "isolab/structure/shear_building.h"
+#include "tridiagonal_eigenvalues.h"
 
 namespace isolab::analysis {
 namespace {
@@ -110,8 +111,8 @@ std::vector<Mode> Modes(const structure::Structure& s, const structure::Layout& 
                                  [](const auto& e) { return std::abs(e.row() - e.col()) <= 1; });
   std::vector<Mode> modes;
   if (chain && layout.directions == 1 && !layout.rotations) {
-    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd off_diagonal = Eigen::VectorXd::Zero(std::max(n - 1, 0));
+    std::vector<double> diagonal(static_cast<std::size_t>(n), 0.0);
+    std::vector<double> off_diagonal(static_cast<std::size_t>(std::max(n - 1, 0)), 0.0);
     for (const auto& e : entries) {
       if (e.row() == e.col()) {
         diagonal[e.row()] += e.value() / m[e.row()];
@@ -119,9 +120,9 @@ std::vector<Mode> Modes(const structure::Structure& s, const structure::Layout& 
         off_diagonal[e.col()] += e.value() / std::sqrt(m[e.row()] * m[e.col()]);
       }
     }
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
-    solver.computeFromTridiagonal(diagonal, off_diagonal, Eigen::EigenvaluesOnly);
-    for (Eigen::Index i = 0; i < n; ++i) modes.push_back({PeriodOf(solver.eigenvalues()[i]), "x"});
+    for (const double eigenvalue : TridiagonalEigenvalues(std::move(diagonal), off_diagonal)) {
+      modes.push_back({PeriodOf(eigenvalue), "x"});
+    }
     return modes;
   }
   if (n > kMaxDenseModalDofs) return modes;
