@@ -29,11 +29,7 @@ py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path,
   request.names = {"force_unit= and length_unit=", "cycles", "", "force="};
   analysis::CyclicFitProblem problem = analysis::PrepareCyclicFit(std::move(request));
   if (!quiet) {
-    problem.request.search.progress = [](const identification::FitProgress& p) {
-      fmt::print(stderr, "  {} generation {:5d}, {:8d} evaluations, best e^2 = {:.6g} %\n",
-                 p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations,
-                 100 * p.best);
-    };
+    problem.request.search.progress = analysis::PrintCyclicFitProgress;
   }
   analysis::CyclicFitOutcome outcome;
   {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "isolab/analysis/testing_factors_text.h"
@@ -62,6 +63,11 @@ CyclicFitProblem PrepareCyclicFit(CyclicFitRequest request) {
   RequireWorkWithin(problem.work, kWorkLimit, request.force, request.names.force);
   problem.request = std::move(request);
   return problem;
+}
+
+void PrintCyclicFitProgress(const identification::FitProgress& p) {
+  fmt::print(stderr, "  {} generation {:5d}, {:8d} evaluations, best e^2 = {:.6g} %\n",
+             p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations, 100 * p.best);
 }
 
 CyclicFitOutcome FitCyclicTests(const CyclicFitProblem& problem) {

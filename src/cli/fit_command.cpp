@@ -167,11 +167,7 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
                problem.one_specimen ? "one specimen, in order" : "independent specimens",
                problem.model->dimension(), problem.model->amplitude_count(), options.budget,
                problem.work.Describe(analysis::kWorkLimit));
-    problem.request.search.progress = [](const identification::FitProgress& p) {
-      fmt::print(stderr, "  {} generation {:5d}, {:8d} evaluations, best e^2 = {:.6g} %\n",
-                 p.polishing ? "polish    " : "CMA-ES    ", p.generation, p.evaluations,
-                 100 * p.best);
-    };
+    problem.request.search.progress = analysis::PrintCyclicFitProgress;
   }
   analysis::CyclicFitOutcome outcome = analysis::FitCyclicTests(problem);
   analysis::WriteCyclicFitModel(output, problem, outcome);

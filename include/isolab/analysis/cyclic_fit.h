@@ -75,6 +75,10 @@ struct CyclicFitOutcome {
 // option by `request.names`.
 CyclicFitProblem PrepareCyclicFit(CyclicFitRequest request);
 
+// The search's progress line on stderr, as both fronts print it (CMA-ES or polish, generation,
+// evaluations, best e^2).
+void PrintCyclicFitProgress(const identification::FitProgress& progress);
+
 // Fits. Throws InputError when the fit leaves no component any stiffness.
 CyclicFitOutcome FitCyclicTests(const CyclicFitProblem& problem);
 
