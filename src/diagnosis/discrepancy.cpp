@@ -80,11 +80,17 @@ double SecondDifferenceNoise(const CyclicTestData& test) {
 }
 
 std::string NoiseEstimate::Describe() const {
+  const std::string rest = fmt::format("rest, {} samples", rest_samples);
+  const std::string band = fmt::format("band {:.3g}-{:.4g} per unit time", band_low, nyquist);
+  if (uncertain) {
+    return fmt::format("uncertain: {} read {:.4g}, {} read {:.4g}; the larger taken", rest,
+                       rest_sigma, band, band_sigma);
+  }
   switch (source) {
     case Source::kRest:
-      return fmt::format("rest, {} samples", rest_samples);
+      return rest;
     case Source::kBand:
-      return fmt::format("band {:.3g}-{:.4g} per unit time", band_low, nyquist);
+      return band;
     case Source::kNone:
       break;
   }
@@ -95,28 +101,34 @@ NoiseEstimate EstimateForceNoise(const CyclicTestData& test) {
   return EstimateNoise(test, test.force);
 }
 
-NoiseEstimate EstimateNoise(const CyclicTestData& test, const std::vector<double>& f) {
-  NoiseEstimate estimate;
+namespace {
+
+// The rest read (discrepancy.h): sets rest_samples and rest_sigma where there are enough samples
+// at rest before the motion.
+void ReadAtRest(const CyclicTestData& test, const std::vector<double>& f, NoiseEstimate& estimate) {
   const std::vector<double>& u = test.displacement;
   const std::size_t n = f.size();
-  if (n < 8) return estimate;
   const auto [low, high] = std::minmax_element(u.begin(), u.end());
   const double range = *high - *low;
-  // Samples at rest before the motion starts: the channel with nothing to measure.
   std::size_t rest = 0;
   while (rest < n && std::abs(u[rest] - u[0]) <= kRestBand * range) ++rest;
-  if (rest >= kRestSamples) {
-    double sum = 0.0, square = 0.0;
-    for (std::size_t k = 0; k < rest; ++k) sum += f[k], square += f[k] * f[k];
-    const double mean = sum / double(rest);
-    estimate.sigma = std::sqrt(std::max(square / double(rest) - mean * mean, 0.0) * double(rest) /
-                               double(rest - 1));
-    estimate.source = NoiseEstimate::Source::kRest;
-    estimate.rest_samples = static_cast<long>(rest);
-    return estimate;
-  }
+  if (rest < kRestSamples) return;
+  double sum = 0.0, square = 0.0;
+  for (std::size_t k = 0; k < rest; ++k) sum += f[k], square += f[k] * f[k];
+  const double mean = sum / double(rest);
+  estimate.rest_sigma = std::sqrt(std::max(square / double(rest) - mean * mean, 0.0) *
+                                  double(rest) / double(rest - 1));
+  estimate.rest_samples = static_cast<long>(rest);
+}
+
+// The band read (discrepancy.h): sets band_sigma, band_low and nyquist where there is a band
+// above the response to read.
+void ReadAboveTheResponse(const CyclicTestData& test, const std::vector<double>& f,
+                          NoiseEstimate& estimate) {
+  const std::vector<double>& u = test.displacement;
+  const std::size_t n = f.size();
   const double dt = (test.time.back() - test.time.front()) / double(n - 1);
-  if (!(dt > 0.0)) return estimate;
+  if (!(dt > 0.0)) return;
   const double nyquist = 0.5 / dt;
   const std::size_t m = PaddedLength(n);
   const double bin = 1.0 / (double(m) * dt);
@@ -167,19 +179,38 @@ NoiseEstimate EstimateNoise(const CyclicTestData& test, const std::vector<double
     }
     lo = hi;
   }
-  if (first_level < 0.0) {  // no band above the response to read
-    CyclicTestData series = test;
-    series.force = f;
-    estimate.sigma = SecondDifferenceNoise(series);
-    return estimate;
-  }
+  if (first_level < 0.0) return;  // no band above the response to read
   // Below the band the noise is taken at the median level of the first octave above it: lines of
   // the loops' harmonics raise a few bands' levels, which the median passes over.
   if (!first_octave.empty()) first_level = Median(first_octave);
-  estimate.sigma = std::sqrt((first_level * band_low + integral) / nyquist);
-  estimate.source = NoiseEstimate::Source::kBand;
+  estimate.band_sigma = std::sqrt((first_level * band_low + integral) / nyquist);
   estimate.band_low = band_low;
   estimate.nyquist = nyquist;
+}
+
+}  // namespace
+
+NoiseEstimate EstimateNoise(const CyclicTestData& test, const std::vector<double>& f) {
+  NoiseEstimate estimate;
+  if (f.size() < 8) return estimate;
+  ReadAtRest(test, f, estimate);
+  ReadAboveTheResponse(test, f, estimate);
+  const bool rest = estimate.rest_samples > 0, band = estimate.band_low > 0.0;
+  if (rest && band) {
+    const double larger = std::max(estimate.rest_sigma, estimate.band_sigma);
+    estimate.uncertain =
+        !(larger <= kNoiseReadsAgree * std::min(estimate.rest_sigma, estimate.band_sigma));
+    const bool from_band = estimate.uncertain && estimate.band_sigma > estimate.rest_sigma;
+    estimate.source = from_band ? NoiseEstimate::Source::kBand : NoiseEstimate::Source::kRest;
+    estimate.sigma = from_band ? estimate.band_sigma : estimate.rest_sigma;
+  } else if (rest || band) {
+    estimate.source = rest ? NoiseEstimate::Source::kRest : NoiseEstimate::Source::kBand;
+    estimate.sigma = rest ? estimate.rest_sigma : estimate.band_sigma;
+  } else {
+    CyclicTestData series = test;
+    series.force = f;
+    estimate.sigma = SecondDifferenceNoise(series);
+  }
   return estimate;
 }
 

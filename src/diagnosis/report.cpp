@@ -180,6 +180,26 @@ std::vector<TestLoops> Loops(const Discrepancy& base, const Discrepancy& final_f
   return result;
 }
 
+// Where the two reads of a test's noise disagree (discrepancy.h), what that does to the floor;
+// empty where every test's reads agree.
+std::string UncertainFloorText(const Diagnosis& d) {
+  int count = 0;
+  double apart = 1.0;
+  for (const NoiseEstimate& n : d.noise) {
+    if (!n.uncertain) continue;
+    ++count;
+    apart = std::max(apart, std::max(n.rest_sigma, n.band_sigma) /
+                                std::max(std::min(n.rest_sigma, n.band_sigma), 1e-300));
+  }
+  if (count == 0) return "";
+  return fmt::format(
+      "the noise floor is uncertain: for {} of {} tests the force's noise read at rest and read "
+      "above the response differ by more than a factor of {:g} (up to {:.3g} times: the device's "
+      "own noise while it moves, such as stick-slip chatter, or noise inside its band); the floor "
+      "and the gates use the larger",
+      count, d.noise.size(), kNoiseReadsAgree, apart);
+}
+
 std::vector<std::string> Head(const Diagnosis& d, const ReportContext& context) {
   std::vector<std::string> head;
   head.push_back("Verdict: " + d.verdict.headline + ".");
@@ -205,17 +225,21 @@ std::vector<std::string> Head(const Diagnosis& d, const ReportContext& context) 
   for (const std::string& finding : d.identifiability.Findings()) {
     head.push_back("Identifiability: " + finding + ".");
   }
+  if (const std::string uncertain = UncertainFloorText(d); !uncertain.empty()) {
+    head.push_back("Note: " + uncertain + ".");
+  }
   for (const std::string& note : d.final_model.dropped) head.push_back("Note: " + note + ".");
   for (const std::string& note : context.notes) head.push_back("Note: " + note + ".");
   return head;
 }
 
 std::string NoiseText(const Diagnosis& d) {
-  int rest = 0, band = 0, other = 0;
+  int rest = 0, band = 0, other = 0, uncertain = 0;
   for (const NoiseEstimate& n : d.noise) {
     rest += n.source == NoiseEstimate::Source::kRest;
     band += n.source == NoiseEstimate::Source::kBand;
     other += n.source == NoiseEstimate::Source::kNone;
+    uncertain += n.uncertain;
   }
   std::string text;
   if (band > 0) text += fmt::format("in the band above the response for {} tests", band);
@@ -224,6 +248,9 @@ std::string NoiseText(const Diagnosis& d) {
   if (other > 0) {
     text += fmt::format("{}from second differences for {} (no band above the response)",
                         text.empty() ? "" : ", ", other);
+  }
+  if (uncertain > 0) {
+    text += fmt::format(" ({} uncertain: the larger of the two reads)", uncertain);
   }
   return text;
 }
@@ -295,7 +322,10 @@ std::string RenderJson(const DiagnosisReport& report) {
   out["noise_floor_e2"] = d.noise_floor;
   out["noise"] = json::array();
   for (const NoiseEstimate& n : d.noise) {
-    out["noise"].push_back({{"sigma", n.sigma}, {"source", n.Describe()}});
+    json entry = {{"sigma", n.sigma}, {"source", n.Describe()}, {"uncertain", n.uncertain}};
+    if (n.rest_samples > 0) entry["rest_sigma"] = n.rest_sigma;
+    if (n.band_low > 0.0) entry["band_sigma"] = n.band_sigma;
+    out["noise"].push_back(entry);
   }
   out["base"] = ModelJson(d.base);
   out["steps"] = json::array();

@@ -129,6 +129,50 @@ TEST(NoiseFloor, TheSameDataAt1024And128HzHaveTheSameFloor) {
   EXPECT_GT(second_128 / second_1024, 100.0);
 }
 
+// A device that chatters while it slides, a quarter of a second at rest before each test: at
+// 1024 Hz 256 samples at rest (enough to read there), at 128 Hz 32 (too few). The rest read sees
+// the load cell's noise alone, the band read the chatter too, so read one way at one rate and the
+// other way at the other the floors would be far apart (584 times on a real damper). Both reads
+// are taken where they can be, and the larger where they disagree: the floors at the two rates
+// agree, the 1024 Hz tests are marked uncertain, and the floor is the e^2 the truth leaves
+// (noise and chatter: what no model of the hysteresis can take out).
+TEST(NoiseFloor, AChatteringDeviceHasTheSameFloorAt1024And128Hz) {
+  testing::DamperNoise noise;
+  noise.rest_seconds = 0.25;
+  noise.chatter = 0.1;  // kip, five times the load cell's noise
+  const auto high = testing::FrictionDamperTests(1024.0, noise);
+  const auto at_1024 = AllCycles(high);
+  const auto at_128 = AllCycles(testing::Decimate(high, 8));
+  const auto truth = testing::FrictionDamperTruth();
+  const double truth_1024 = identification::ComputeFitError(truth, at_1024).total;
+  const double truth_128 = identification::ComputeFitError(truth, at_128).total;
+  const double residual_1024 = Floor(at_1024, Read::kResidual);
+  const double residual_128 = Floor(at_128, Read::kResidual);
+  const double force_1024 = Floor(at_1024, Read::kForce), force_128 = Floor(at_128, Read::kForce);
+  std::printf(
+      "chatter, noise floor %%, at 1024 and 128 Hz: the truth leaves %.4g and %.4g; from the "
+      "truth's residual %.4g and %.4g; from the force %.4g and %.4g\n",
+      100 * truth_1024, 100 * truth_128, 100 * residual_1024, 100 * residual_128, 100 * force_1024,
+      100 * force_128);
+  for (const auto& test : at_1024.tests) {
+    const NoiseEstimate n = EstimateForceNoise(test);
+    std::printf("  %s at 1024 Hz: %s\n", test.name.c_str(), n.Describe().c_str());
+    EXPECT_TRUE(n.uncertain) << test.name;
+    EXPECT_EQ(n.source, NoiseEstimate::Source::kBand) << test.name;
+    // The load cell alone; 257 samples of 50 Hz noise are some 25 independent ones, so 40 %.
+    EXPECT_NEAR(n.rest_sigma, 0.02, 0.008) << test.name;
+  }
+  for (const auto& test : at_128.tests) {
+    const NoiseEstimate n = EstimateForceNoise(test);
+    EXPECT_FALSE(n.uncertain) << test.name;
+    EXPECT_EQ(n.rest_samples, 0) << test.name;
+  }
+  EXPECT_LT(std::max(force_1024, force_128) / std::min(force_1024, force_128), 2.0);
+  EXPECT_LT(std::max(residual_1024, residual_128) / std::min(residual_1024, residual_128), 1.5);
+  EXPECT_NEAR(residual_1024 / truth_1024, 1.0, 0.3);
+  EXPECT_NEAR(residual_128 / truth_128, 1.0, 0.3);
+}
+
 TEST(EffectiveSamples, AnAr1ResidualCountsAsNTimesOneLessRhoOverOnePlusRho) {
   const auto spring = hysteresis::SingleLaw(LawType::kLinearSpring, {0.5});
   auto tests = identification::SyntheticTests(spring, {{50, 100}, {2.0}, 10, 2000});

@@ -6,7 +6,9 @@
 // 1.3 kip one way and 2.6 kip the other, so the device slips at +3.3 and -4.6 kip. The force
 // channel carries Gaussian noise through a load cell's anti-alias filter (a 4th-order
 // Butterworth low-pass), as a laboratory's does; `Decimate` keeps every k-th sample, as a
-// lower-rate acquisition of the same tests would.
+// lower-rate acquisition of the same tests would. Optionally the device makes noise of its own
+// while it slides (stick-slip chatter: band-limited Gaussian noise, on while the speed is above a
+// fifth of the test's peak), which samples at rest before the motion cannot see.
 #pragma once
 
 #include <cmath>
@@ -35,10 +37,12 @@ inline hysteresis::ParallelAssembly FrictionDamperTruth() {
 }
 
 struct DamperNoise {
-  double sigma = 0.02;        // kip, after the filter
-  double cutoff = 50.0;       // Hz; <= 0: white
-  double quantum = 0.0;       // kip; > 0 rounds the force to it (an ADC's step)
-  double rest_seconds = 0.0;  // samples at rest before each test's motion
+  double sigma = 0.02;           // kip, after the filter
+  double cutoff = 50.0;          // Hz; <= 0: white
+  double quantum = 0.0;          // kip; > 0 rounds the force to it (an ADC's step)
+  double rest_seconds = 0.0;     // samples at rest before each test's motion
+  double chatter = 0.0;          // kip, RMS of the chatter while it is on
+  double chatter_cutoff = 40.0;  // Hz, its 4th-order Butterworth low-pass
   unsigned seed = 1;
 };
 
@@ -95,8 +99,16 @@ inline std::vector<identification::CyclicTestData> FrictionDamperTests(
     }
     test.force = identification::SimulateForce(truth, test);
     const std::vector<double> e = FilteredNoise(test.force.size(), rate, noise, &random);
+    DamperNoise chatter = noise;
+    chatter.sigma = noise.chatter, chatter.cutoff = noise.chatter_cutoff;
+    const std::vector<double> c = noise.chatter > 0.0
+                                      ? FilteredNoise(test.force.size(), rate, chatter, &random)
+                                      : std::vector<double>(test.force.size(), 0.0);
     for (std::size_t k = 0; k < test.force.size(); ++k) {
-      test.force[k] += e[k];
+      const double phase =
+          k < rest ? 0.0 : 2 * std::numbers::pi * double(k - rest) / (period * rate);
+      const bool sliding = k >= rest && std::abs(std::cos(phase)) > 0.2;
+      test.force[k] += e[k] + (sliding ? c[k] : 0.0);
       if (noise.quantum > 0.0)
         test.force[k] = noise.quantum * std::round(test.force[k] / noise.quantum);
     }

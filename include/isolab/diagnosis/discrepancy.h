@@ -35,34 +35,46 @@ struct CycleRecord {
 };
 
 // The noise of a test's force channel, estimated where the signal has no content, so that the
-// estimate does not depend on the sampling rate or on how many samples sit at rest:
+// estimate does not depend on the sampling rate or on how many samples sit at rest. Two reads:
 //  * rest: the force's variance over the samples at the start of the test before the
 //    displacement moves (by more than 0.1 % of its range), when there are at least 64: what the
 //    channel reads with nothing to measure, whatever its spectrum;
-//  * band: otherwise, from the Hann-windowed periodogram of the force above the band of the
-//    device's response, f_c = 10 f_u, where f_u bounds 99 % of the displacement's power (its
-//    loops' harmonics decay past that), and at most half the Nyquist frequency. Above f_c the
-//    noise level is read quarter octave by quarter octave as a low quantile of the periodogram
-//    (the 25th percentile, over the chi-squared spread of periodogram ordinates: harmonic lines
-//    of the loops occupy few bins and do not move it); below f_c the noise is taken as flat at
-//    the first octave's median level. The variance is that spectrum's mean over the whole band
-//    [0, Nyquist]. For
-//    white noise this is its variance at any rate; for noise band-limited by a load cell's
-//    filter above f_c it is the filtered noise's variance; decimation folds noise into the kept
-//    band without changing its variance, and the estimate follows.
-// What it cannot see: noise confined below f_c, inside the device's own band (a moving average
-// much longer than a sample, for instance), is indistinguishable there from model error.
+//  * band: from the Hann-windowed periodogram of the force above the band of the device's
+//    response, f_c = 10 f_u, where f_u bounds 99 % of the displacement's power (its loops'
+//    harmonics decay past that), and at most half the Nyquist frequency. Above f_c the noise
+//    level is read quarter octave by quarter octave as a low quantile of the periodogram (the
+//    25th percentile, over the chi-squared spread of periodogram ordinates: harmonic lines of the
+//    loops occupy few bins and do not move it); below f_c the noise is taken as flat at the first
+//    octave's median level. The variance is that spectrum's mean over the whole band
+//    [0, Nyquist]. For white noise this is its variance at any rate; for noise band-limited by a
+//    load cell's filter above f_c it is the filtered noise's variance; decimation folds noise
+//    into the kept band without changing its variance, and the estimate follows.
+// The two read different things where the device makes noise of its own only while it moves
+// (stick-slip chatter): the rest read sees the channel alone, the band read the channel and the
+// chatter. Which of them a test gets must not depend on the rate (a lower rate leaves fewer
+// samples at rest), so both are read wherever they can be: within a factor of two of each other
+// the rest read is taken (it needs no assumption about the spectrum); further apart the estimate
+// is `uncertain` and the larger is taken, since a floor read too low makes the diagnosis name
+// components that fit the chatter, and the report says so.
+// What neither can see: noise confined below f_c, inside the device's own band (a moving
+// average much longer than a sample, for instance), is indistinguishable there from model error.
 struct NoiseEstimate {
   enum class Source { kRest, kBand, kNone };
   double sigma = 0.0;  // standard deviation of the force noise (force)
   Source source = Source::kNone;
-  long rest_samples = 0;  // samples read at rest (kRest)
-  double band_low = 0.0;  // f_c, the band's lower edge (1/time) (kBand)
-  double nyquist = 0.0;   // the band's upper edge (1/time)
+  long rest_samples = 0;    // samples read at rest (0: too few to read)
+  double rest_sigma = 0.0;  // the rest read (force); 0 where not read
+  double band_sigma = 0.0;  // the band read (force); 0 where not read
+  double band_low = 0.0;    // f_c, the band's lower edge (1/time); 0 where not read
+  double nyquist = 0.0;     // the band's upper edge (1/time)
+  bool uncertain = false;   // both read, more than kNoiseReadsAgree apart: sigma the larger
 
-  // "rest: 5120 samples" or "band 2.5-512 Hz (per s)".
+  // "rest, 5120 samples", "band 2.5-512 per unit time", or both reads when uncertain.
   std::string Describe() const;
 };
+
+// Two reads of one test's noise within this factor of each other agree.
+inline constexpr double kNoiseReadsAgree = 2.0;
 
 NoiseEstimate EstimateForceNoise(const identification::CyclicTestData& test);
 
