@@ -215,7 +215,8 @@ def _refuse(given, why):
 
 
 def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, budget=60000,
-        global_budget=None, cross_validate=False, cycles=None, specimen=None, force_unit=None,
+        global_budget=None, cross_validate=False, model_form=False, cycles=None, specimen=None,
+        force_unit=None,
         length_unit=None, threads=0, force=False, quiet=False):
     """`isolab fit`: identifies an assembly's parameters from measured cyclic tests (CMA-ES), or
     with building, a whole building model from its shake-table motions by output error.
@@ -255,12 +256,21 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
     --building --cross-validate --json`: each motion held out in turn, the building fitted to the
     others and its prediction of the held-out motion compared with it; returns {"folds": [...],
     "seconds"} (docs/building_fit.md) and writes no model (output is refused with it).
+
+    model_form=True (building, two motions or more, not one specimen) is `isolab fit --building
+    --model-form --json`: the fit to every motion, then each motion held out in turn; the model is
+    written with those fits as its uncertainty's model_form, which prediction bands (run and
+    shaketable samples) draw beside the fit's covariance; the result adds "model_form" ("fits",
+    "parameters" with sigma_fit and sigma_drawn).
     """
     _one_of(model, "model", building, "shake-table motions")
     data = _paths("data", data)
     if building is not None:
         _refuse([("cycles", cycles is not None), ("force", force)],
                 "applies to cyclic tests, not to building=")
+        if cross_validate and model_form:
+            raise InputError("cross_validate=True and model_form=True: the model form already "
+                             "fits each motion held out; give one of the two")
         if cross_validate and output is not None:
             raise InputError("output= with cross_validate=True: the cross-validation writes no "
                              "model (fit all the motions without it for the model)")
@@ -269,9 +279,9 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
                                         -1 if global_budget is None else global_budget,
                                         specimen or "", offsets or "", force_unit or "",
                                         length_unit or "", threads, bool(cross_validate),
-                                        quiet))
+                                        bool(model_form), quiet))
     _refuse([("offsets", offsets is not None), ("global_budget", global_budget is not None),
-             ("cross_validate", cross_validate)],
+             ("cross_validate", cross_validate), ("model_form", model_form)],
             "applies to building=, not to cyclic tests")
     _refuse([("output", output is not None)],
             "applies to building=: the cyclic fit writes no file (its components are in the "

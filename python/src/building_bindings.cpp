@@ -18,6 +18,7 @@
 #include "isolab/analysis/building_fit.h"
 #include "isolab/analysis/building_fit_inputs.h"
 #include "isolab/analysis/building_fit_report.h"
+#include "isolab/analysis/building_fit_workflow.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
@@ -49,7 +50,7 @@ std::string FitBuilding(const std::vector<std::string>& data, const std::string&
                         const std::string& output, unsigned seed, long budget, long global_budget,
                         const std::string& specimen, const std::string& offsets,
                         const std::string& force_unit, const std::string& length_unit, int threads,
-                        bool cross_validate, bool quiet) {
+                        bool cross_validate, bool model_form, bool quiet) {
   const analysis::BuildingData read =
       Data(data, "fit", specimen, offsets, force_unit, length_unit, quiet);
   analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(spec_path, read);
@@ -69,20 +70,20 @@ std::string FitBuilding(const std::vector<std::string>& data, const std::string&
       fmt::print(stderr, "{}", analysis::BuildingFitProgressLine(p));
     };
   }
-  analysis::BuildingFitResult result;
+  const analysis::BuildingFitMode mode = cross_validate ? analysis::BuildingFitMode::kCrossValidate
+                                         : model_form   ? analysis::BuildingFitMode::kModelForm
+                                                        : analysis::BuildingFitMode::kFit;
+  analysis::BuildingFitOutcome outcome;
   {
     py::gil_scoped_release release;
-    if (cross_validate) {
-      return analysis::CrossValidationJson(analysis::CrossValidate(
-          inputs.model, motions, spec, fit, analysis::kCrossValidationDraws, seed));
-    }
-    result = analysis::FitBuilding(inputs.model, motions, spec, fit);
+    outcome = analysis::RunBuildingFit(inputs.model, motions, spec, fit, mode);
   }
+  if (!outcome.fit) return analysis::BuildingFitOutcomeJson(outcome, spec.sequential, "");
   const std::string text = model::FittedBuildingText(
-      result.fitted, fmt::format("identified by isolab.fit(building={}) from {}", spec_path,
-                                 fmt::join(data, ", ")));
+      outcome.fit->fitted, fmt::format("identified by isolab.fit(building={}) from {}", spec_path,
+                                       fmt::join(data, ", ")));
   io::WriteTextFileAtomically(path, [&](std::ostream& o) { o << text; });
-  return analysis::BuildingFitJson(result, spec.sequential, path);
+  return analysis::BuildingFitOutcomeJson(outcome, spec.sequential, path);
 }
 
 std::string DiagnoseBuilding(const std::vector<std::string>& data, const std::string& spec_path,
@@ -129,7 +130,7 @@ void BindBuilding(py::module_& module) {
   module.def("_fit_building", &FitBuilding, py::arg("data"), py::arg("building"), py::arg("output"),
              py::arg("seed"), py::arg("budget"), py::arg("global_budget"), py::arg("specimen"),
              py::arg("offsets"), py::arg("force_unit"), py::arg("length_unit"), py::arg("threads"),
-             py::arg("cross_validate"), py::arg("quiet"));
+             py::arg("cross_validate"), py::arg("model_form"), py::arg("quiet"));
   module.def("_diagnose_building", &DiagnoseBuilding, py::arg("data"), py::arg("building"),
              py::arg("seed"), py::arg("budget"), py::arg("specimen"), py::arg("offsets"),
              py::arg("threads"), py::arg("quiet"));

@@ -68,6 +68,29 @@ def test_building_fit_equals_the_command_line(tmp_path, isolab_cli, shake_table)
     assert fitted.get("isolation.components[0].k1") == pytest.approx(0.4, rel=1e-3)
 
 
+def test_building_model_form_equals_the_command_line(tmp_path, isolab_cli, shake_table):
+    """isolab.fit(building=, model_form=True) returns what `isolab fit --building --model-form
+    --json` prints, and both write the model with the fits to each motion as its model form."""
+    data, spec = shake_table
+    other = tmp_path / "other.csv"
+    other.write_text(data.read_text())
+    common = ["--budget", 400, "--threads", 1, "--offsets", "none", "-q"]
+    cli = isolab_cli.json("fit", data, other, "--building", spec, "--model-form", *common,
+                          "-o", tmp_path / "cli.fitted.yaml")
+    mine = isolab.fit([data, other], building=spec, model_form=True, budget=400, threads=1,
+                      offsets="none", quiet=True, output=tmp_path / "mine.fitted.yaml")
+    for key in ("seconds", "output"):  # the run's own
+        del mine[key], cli[key]
+    assert mine == cli
+    fits = mine["model_form"]["fits"]
+    assert [f["fitted_on"] for f in fits] == [["other"], ["motion"]]
+    assert [p["name"] for p in mine["model_form"]["parameters"]] == \
+        ["isolation.iso.k1", "stories.stiffness"]
+    for name in ("cli", "mine"):
+        text = (tmp_path / f"{name}.fitted.yaml").read_text()
+        assert "model_form:" in text and "fitted_on: [other]" in text, name
+
+
 def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
     data, spec = shake_table
     output = tmp_path / "refused.yaml"
@@ -83,6 +106,11 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
         (dict(model=repo / SPEC, global_budget=500), "global_budget= applies to building="),
         (dict(building=spec, global_budget=50), "global_budget"),
         (dict(model=repo / SPEC, cross_validate=True), "cross_validate= applies to building="),
+        (dict(model=repo / SPEC, model_form=True), "model_form= applies to building="),
+        (dict(building=spec, cross_validate=True, model_form=True),
+         "cross_validate=True and model_form=True"),
+        (dict(building=spec, model_form=True),
+         r"the model form \(--model-form\) holds one motion out and fits the others"),
         (dict(building=spec, cross_validate=True), "output= with cross_validate=True"),
         (dict(model=repo / SPEC, output=output), "output= applies to building="),
     ]

@@ -9,30 +9,36 @@
 
 namespace isolab::analysis {
 
+void CheckCrossValidation(const model::ModelFile& model, const std::vector<BuildingMotion>& motions,
+                          const BuildingFitSpec& spec, const std::string& why) {
+  if (motions.size() < 2) {
+    throw InputError({model.path}, fmt::format("{} holds one motion out and fits the others: it "
+                                               "needs two motions or more ({} given)",
+                                               why, motions.size()));
+  }
+  if (spec.sequential) {
+    throw InputError({model.path},
+                     fmt::format("{} of one specimen's motions: a held-out motion starts from "
+                                 "the state the motions before it left, which a fit without it "
+                                 "cannot give; give the motions as independent tests",
+                                 why));
+  }
+  if (spec.band_low || spec.band_high) {
+    throw InputError({model.path},
+                     fmt::format("{} compares whole histories: with the specification's band "
+                                 "the fitted and held-out errors would be different quantities; "
+                                 "leave band: out for it",
+                                 why));
+  }
+}
+
 CrossValidation CrossValidate(const model::ModelFile& model,
                               const std::vector<BuildingMotion>& motions,
                               const BuildingFitSpec& spec,
                               const identification::FitOptions& options, int band_samples,
                               unsigned seed) {
   const auto clock = std::chrono::steady_clock::now();
-  if (motions.size() < 2) {
-    throw InputError({model.path}, fmt::format("cross-validation holds one motion out and fits "
-                                               "the others: it needs two motions or more ({} "
-                                               "given)",
-                                               motions.size()));
-  }
-  if (spec.sequential) {
-    throw InputError({model.path},
-                     "cross-validation of one specimen's motions: a held-out motion starts from "
-                     "the state the motions before it left, which a fit without it cannot give; "
-                     "give the motions as independent tests");
-  }
-  if (spec.band_low || spec.band_high) {
-    throw InputError({model.path},
-                     "cross-validation compares whole histories: with the specification's band "
-                     "the fitted and held-out errors would be different quantities; leave band: "
-                     "out to cross-validate");
-  }
+  CheckCrossValidation(model, motions, spec, "cross-validation");
   const std::vector<BuildingChannel> channels = FittedChannels(model, spec);
   CrossValidation out;
   for (std::size_t held = 0; held < motions.size(); ++held) {
@@ -48,6 +54,7 @@ CrossValidation CrossValidate(const model::ModelFile& model,
     fold.objective_fitted = fit.objective;
     fold.stop = identification::RefinementStopName(fit.refinement.stop);
     fold.evaluations = fit.evaluations;
+    fold.values = fit.fitted.uncertainty->values;
     const ChannelHistories predicted =
         SimulateChannels(fit.fitted, {motions[held]}, channels, false, 0.0, spec.substeps);
     const BuildingMeasurements& measured = motions[held].measured;
@@ -70,6 +77,12 @@ CrossValidation CrossValidate(const model::ModelFile& model,
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
   return out;
+}
+
+void AddModelForm(const CrossValidation& folds, model::ModelFile* fitted) {
+  for (const HeldOutMotion& fold : folds.folds) {
+    fitted->uncertainty->model_form.push_back({fold.fitted_on, fold.values});
+  }
 }
 
 }  // namespace isolab::analysis

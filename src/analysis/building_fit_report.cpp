@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+
+#include "isolab/analysis/parameter_draws.h"
 
 namespace isolab::analysis {
 
@@ -101,6 +104,64 @@ std::string CrossValidationJson(const CrossValidation& outcome) {
   }
   json["seconds"] = outcome.seconds;
   return json.dump(2);
+}
+
+std::string ModelFormJson(const BuildingFitResult& fit, const CrossValidation& folds) {
+  const model::ParameterUncertainty& u = *fit.fitted.uncertainty;
+  const Eigen::MatrixXd drawn = DrawnCovariance(u);
+  nlohmann::json json;
+  for (const HeldOutMotion& fold : folds.folds) {
+    nlohmann::json values;
+    for (std::size_t p = 0; p < u.names.size(); ++p) values[u.names[p]] = fold.values[p];
+    json["fits"].push_back({{"fitted_on", fold.fitted_on},
+                            {"held_out", fold.motion},
+                            {"values", values},
+                            {"objective_held_out", fold.objective_held_out},
+                            {"stop", fold.stop}});
+  }
+  for (std::size_t p = 0; p < u.names.size(); ++p) {
+    const long q = long(p);
+    json["parameters"].push_back({{"name", u.names[p]},
+                                  {"value", u.values[p]},
+                                  {"log", bool(u.log[p])},
+                                  {"sigma_fit", std::sqrt(std::max(u.covariance(q, q), 0.0))},
+                                  {"sigma_drawn", std::sqrt(std::max(drawn(q, q), 0.0))}});
+  }
+  return json.dump(2);
+}
+
+std::string ModelFormText(const BuildingFitResult& fit, const CrossValidation& folds) {
+  const model::ParameterUncertainty& u = *fit.fitted.uncertainty;
+  const Eigen::MatrixXd drawn = DrawnCovariance(u);
+  std::vector<std::string> heads;
+  for (const HeldOutMotion& fold : folds.folds) {
+    heads.push_back(fmt::format("fit to {}", fmt::join(fold.fitted_on, ", ")));
+  }
+  std::string rule;
+  for (std::size_t k = 0; k < folds.folds.size(); ++k) rule += "---|";
+  std::string text = fmt::format(
+      "\nModel form: the building fitted to every motion but one, each in turn ({:.1f} s). "
+      "Prediction bands draw from the fit's covariance plus the spread of these fits, each "
+      "weighted alike (sigma in ln p for log parameters):\n\n| parameter | all motions | {} | "
+      "sigma, fit | sigma, with model form |\n|---|---|{}---|---|\n",
+      folds.seconds, fmt::join(heads, " | "), rule);
+  for (std::size_t p = 0; p < u.names.size(); ++p) {
+    std::vector<std::string> values;
+    for (const HeldOutMotion& fold : folds.folds) {
+      values.push_back(fmt::format("{:.4g}", fold.values[p]));
+    }
+    const long q = long(p);
+    text += fmt::format("| {} | {:.4g} | {} | {:.3g} | {:.3g} |\n", u.names[p], u.values[p],
+                        fmt::join(values, " | "), std::sqrt(std::max(u.covariance(q, q), 0.0)),
+                        std::sqrt(std::max(drawn(q, q), 0.0)));
+  }
+  std::vector<std::string> held;
+  for (const HeldOutMotion& fold : folds.folds) {
+    held.push_back(fmt::format("{} {:.4g}", fold.motion, fold.objective_held_out));
+  }
+  text += fmt::format("\nmean NRMSE^2 of each held-out motion, predicted by the others' fit: {}\n",
+                      fmt::join(held, ", "));
+  return text;
 }
 
 std::string CrossValidationText(const CrossValidation& outcome) {

@@ -11,6 +11,34 @@
 
 namespace isolab::analysis {
 
+Eigen::MatrixXd DrawnCovariance(const model::ParameterUncertainty& u) {
+  Eigen::MatrixXd covariance = u.covariance;
+  const long n = long(u.names.size());
+  const auto coordinates = [&](const std::vector<double>& values) {
+    Eigen::VectorXd c(n);
+    for (long p = 0; p < n; ++p) {
+      const std::size_t q = std::size_t(p);
+      c[p] = u.log[q] ? std::log(values[q]) : values[q];
+    }
+    return c;
+  };
+  const Eigen::VectorXd all = coordinates(u.values);
+  for (const model::ModelFormFit& fit : u.model_form) {
+    const Eigen::VectorXd offset = coordinates(fit.values) - all;
+    covariance += offset * offset.transpose() / double(u.model_form.size());
+  }
+  return covariance;
+}
+
+std::string BandContents(const model::ModelFile& model) {
+  const std::size_t fits = model.uncertainty ? model.uncertainty->model_form.size() : 0;
+  if (fits == 0) return "the parameters' uncertainty";
+  return fmt::format(
+      "the parameters' uncertainty and the spread of {} fit{} to subsets of the motions (model "
+      "form, weighted alike)",
+      fits, fits == 1 ? "" : "s");
+}
+
 ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed)
     : model_(model), random_(seed) {
   if (!model.uncertainty) {
@@ -20,22 +48,28 @@ ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed)
   }
   const model::ParameterUncertainty& u = *model.uncertainty;
   const long n = long(u.names.size());
+  const Eigen::MatrixXd covariance = DrawnCovariance(u);
   for (long p = 0; p < n; ++p) {
     // One standard deviation of a factor 10 or more is not a measurement: drawn from, it gives
     // bands of many decades (a variance of 1e6 in ln p: 1e-170 to 1e2).
-    const double sigma = std::sqrt(u.covariance(p, p));
+    const double sigma = std::sqrt(covariance(p, p));
     if (u.log[std::size_t(p)] && sigma > std::log(10.0)) {
+      const std::string where = u.model_form.empty()
+                                    ? fmt::format("uncertainty.covariance[{}][{}]", p, p)
+                                    : fmt::format(
+                                          "uncertainty (covariance[{}][{}] and the "
+                                          "model_form fits' spread)",
+                                          p, p);
       throw InputError(
           {model.path},
-          fmt::format("uncertainty.covariance[{}][{}]: '{}' has a standard deviation of {:.3g} in "
-                      "ln p, a factor {:.3g} per sigma: implausibly wide for a band (at most a "
-                      "factor 10)",
-                      p, p, u.names[std::size_t(p)], sigma, std::exp(sigma)));
+          fmt::format("{}: '{}' has a standard deviation of {:.3g} in ln p, a factor {:.3g} per "
+                      "sigma: implausibly wide for a band (at most a factor 10)",
+                      where, u.names[std::size_t(p)], sigma, std::exp(sigma)));
     }
   }
-  // The covariance is positive semi-definite (model_file.cpp checks it); eigenvalues at
-  // round-off below zero draw nothing in their direction.
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(u.covariance);
+  // The covariance is positive semi-definite (model_file.cpp checks it; the model form adds
+  // outer products); eigenvalues at round-off below zero draw nothing in their direction.
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(covariance);
   root_ = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   // Centred on the model's own values, not on those the fit wrote beside the covariance: a model
   // edited since (or set from Python) gets a band about the run it makes.

@@ -38,6 +38,7 @@ PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& 
       {BuildingChannel::Kind::kDisplacement, 1},
       {BuildingChannel::Kind::kAcceleration, int(motion.measured.acceleration.size())}};
   PredictionBand band;
+  band.contents = BandContents(model);
   std::vector<Signal> isolator, roof;
   std::vector<double> peak_u, peak_a, nrmse_u, nrmse_a;
   for (int s = 0; s < samples; ++s) {
@@ -101,18 +102,19 @@ std::string CoverageSentence(const PredictionBand& band, const std::string& leng
                        measured, unit, inside ? "inside" : "OUTSIDE", p.p5, p.p95);
   };
   std::string sentence = fmt::format(
-      "band coverage: the 5-95 % band of {} parameter sets holds {:.1f} % of the measured "
+      "band coverage: the 5-95 % band of {} parameter sets ({}) holds {:.1f} % of the measured "
       "isolator displacement history and {:.1f} % of the roof acceleration's; {}; {}",
-      band.samples, 100 * band.isolator_coverage, 100 * band.roof_coverage,
+      band.samples, band.contents, 100 * band.isolator_coverage, 100 * band.roof_coverage,
       peak("isolator displacement", band.measured_peak_isolator, band.peak_isolator_displacement,
            band.isolator_peak_inside, length_unit),
       peak("roof acceleration", band.measured_peak_roof, band.peak_roof_acceleration,
            band.roof_peak_inside, acceleration_unit));
   if (band.isolator_coverage < 0.9 || band.roof_coverage < 0.9 || !band.isolator_peak_inside ||
       !band.roof_peak_inside) {
-    sentence +=
-        ". The band is the parameters' uncertainty only: where it misses the measurements, the "
-        "model lacks something the data show, and the band understates the prediction's error";
+    sentence += fmt::format(
+        ". The band holds {} only: where it misses the measurements, the model lacks something "
+        "the data show, and the band understates the prediction's error",
+        band.contents);
   }
   return sentence;
 }

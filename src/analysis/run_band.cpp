@@ -16,6 +16,7 @@ RunBand PredictRunBand(const model::ModelFile& model, const RunOverrides& overri
   options.analysis = analysis;
   options.output.summary_only = true;
   RunBand band;
+  band.contents = BandContents(model);
   std::vector<double> isolator, shear, roof, drift;
   for (int s = 0; s < samples; ++s) {
     Summary summary;
@@ -53,6 +54,7 @@ nlohmann::json RunBandJson(const RunBand& band, unsigned seed) {
   };
   return {{"samples", band.samples},
           {"refused", band.refused},
+          {"contents", band.contents},
           {"seed", seed},
           {"isolator_displacement", spread(band.isolator_displacement)},
           {"base_shear", spread(band.base_shear)},
@@ -62,9 +64,9 @@ nlohmann::json RunBandJson(const RunBand& band, unsigned seed) {
 
 void PrintRunBand(const RunBand& band, unsigned seed, const UnitSystem& units, std::ostream& out) {
   fmt::print(out,
-             "\nwith the fitted parameters' uncertainty ({} sets drawn, seed {}; {} left out: a "
-             "law's rules broken or the run stopped):\n",
-             band.samples + band.refused, seed, band.refused);
+             "\nwith {} ({} sets drawn, seed {}; {} left out: a law's rules broken or the run "
+             "stopped):\n",
+             band.contents, band.samples + band.refused, seed, band.refused);
   fmt::print(out, "{:<34} {:>12} {:>12} {:>12}\n", "peak", "5 %", "50 %", "95 %");
   const auto row = [&](const char* what, const Percentiles& p, const std::string& unit) {
     fmt::print(out, "{:<34} {:>12.5g} {:>12.5g} {:>12.5g} {}\n", what, p.p5, p.p50, p.p95, unit);

@@ -9,6 +9,7 @@
 #include "isolab/analysis/building_fit.h"
 #include "isolab/analysis/building_fit_inputs.h"
 #include "isolab/analysis/building_fit_report.h"
+#include "isolab/analysis/building_fit_workflow.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
@@ -36,11 +37,20 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
       options.length_unit, options.quiet,    "isolab fit --building", {}};
   analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(options.building, data);
   const model::ModelFile& model = inputs.model;
+  if (options.cross_validate && options.model_form) {
+    throw InputError({"command line"},
+                     "--cross-validate and --model-form: --model-form already fits each motion "
+                     "held out (and reports its held-out error); give one of the two");
+  }
   if (options.cross_validate && !options.output.empty()) {
     throw InputError({"command line"},
                      "--cross-validate writes no model (each held-out fit is a step of the "
                      "check): -o does not apply; fit all the motions without it for the model");
   }
+  const analysis::BuildingFitMode mode =
+      options.cross_validate ? analysis::BuildingFitMode::kCrossValidate
+      : options.model_form   ? analysis::BuildingFitMode::kModelForm
+                             : analysis::BuildingFitMode::kFit;
   const std::string output =
       !options.output.empty()
           ? options.output
@@ -63,16 +73,9 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
       fmt::print(stderr, "{}", analysis::BuildingFitProgressLine(p));
     };
   }
-  analysis::BuildingFitResult result;
+  analysis::BuildingFitOutcome outcome;
   try {
-    if (options.cross_validate) {
-      const analysis::CrossValidation outcome = analysis::CrossValidate(
-          model, motions, spec, fit, analysis::kCrossValidationDraws, options.seed);
-      out << (options.json ? analysis::CrossValidationJson(outcome) + "\n"
-                           : analysis::CrossValidationText(outcome));
-      return;
-    }
-    result = analysis::FitBuilding(model, motions, spec, fit);
+    outcome = analysis::RunBuildingFit(model, motions, spec, fit, mode);
   } catch (const InvalidParameter& error) {
     // The search's settings are this command's options: said by their names.
     std::string text = error.violation().Describe();
@@ -80,13 +83,19 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     text.replace(0, 13, "--global-budget");
     throw InputError({"command line"}, text);
   }
+  if (!outcome.fit) {
+    out << (options.json ? analysis::BuildingFitOutcomeJson(outcome, spec.sequential, "") + "\n"
+                         : analysis::CrossValidationText(*outcome.folds));
+    return;
+  }
+  const analysis::BuildingFitResult& result = *outcome.fit;
   const std::string text = model::FittedBuildingText(
       result.fitted, fmt::format("identified by isolab fit --building {} from {}", options.building,
                                  fmt::join(options.data, ", ")));
   io::WriteTextFileAtomically(output, [&](std::ostream& o) { o << text; });
 
   if (options.json) {
-    out << analysis::BuildingFitJson(result, spec.sequential, output) << "\n";
+    out << analysis::BuildingFitOutcomeJson(outcome, spec.sequential, output) << "\n";
     return;
   }
   fmt::print(out, "mean NRMSE^2 over {} channels: {:.4g} -> {:.4g}\n{} ({:.1f} s)\n\n",
@@ -112,6 +121,7 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
                "combination of the two\n",
                pair.a, pair.b, pair.correlation);
   }
+  if (outcome.folds) out << analysis::ModelFormText(result, *outcome.folds);
   fmt::print(out, "fitted model: {}\n", output);
 }
 

@@ -58,6 +58,10 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
   command->add_flag("--cross-validate", options.cross_validate,
                     "With --building and two motions or more: fit the building to all but one, "
                     "predict the one held out, each in turn; writes no model");
+  command->add_flag("--model-form", options.model_form,
+                    "With --building and two motions or more: fit every motion, then each motion "
+                    "held out in turn, and write the model with those fits' spread, which its "
+                    "prediction bands then carry beside the fit's own uncertainty");
   command->add_option("--cycles", options.cycles,
                       "Whole cycles to fit, 1-based, e.g. --cycles 3 as the paper fits HDRB tests "
                       "(default: every test's whole history)");
@@ -136,9 +140,12 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     throw InputError({"command line"},
                      "--global-budget applies to --building, not to cyclic tests");
   }
-  if (options.cross_validate) {
-    throw InputError({"command line"},
-                     "--cross-validate applies to --building, not to cyclic tests");
+  for (const auto& [given, option] : {std::pair{options.cross_validate, "--cross-validate"},
+                                      std::pair{options.model_form, "--model-form"}}) {
+    if (given) {
+      throw InputError({"command line"},
+                       fmt::format("{} applies to --building, not to cyclic tests", option));
+    }
   }
   const std::string output =
       !options.output.empty()

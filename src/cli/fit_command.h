@@ -24,6 +24,7 @@ struct FitOptions {
   long budget = 60000;
   long global_budget = -1;      // --building: the CMA-ES stage's simulations; -1: the default
   bool cross_validate = false;  // --building: each motion predicted by a fit of the others
+  bool model_form = false;      // --building: the fit, and the others' fits as its model form
   std::vector<int> cycles;      // 1-based; empty: SelectCycles' default
   std::string specimen;         // "sequential", "independent"; empty: the data's header
   std::string output;           // fitted model file; default: <spec stem>.fitted.yaml

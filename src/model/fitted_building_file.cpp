@@ -112,6 +112,14 @@ std::string FittedBuildingText(const ModelFile& fitted, const std::string& note)
       for (long j = 0; j < u.covariance.cols(); ++j) row.push_back(Number(u.covariance(i, j)));
       section["covariance"].push_back(Flow(row));
     }
+    for (const ModelFormFit& fit : u.model_form) {
+      YAML::Node entry, motions, values;
+      for (const std::string& motion : fit.fitted_on) motions.push_back(motion);
+      for (const double value : fit.values) values.push_back(Number(value));
+      entry["fitted_on"] = Flow(motions);
+      entry["values"] = Flow(values);
+      section["model_form"].push_back(entry);
+    }
     root["uncertainty"] = section;
   }
   const std::string from = root["description"] ? root["description"].Scalar() : "";

@@ -208,12 +208,47 @@ AxialLoadSection ReadAxialLoad(const YamlReader& reader, const YAML::Node& node,
   return section;
 }
 
-// uncertainty: {parameters: [{name, value, log}], covariance: [[...]]}, the covariance square,
-// symmetric, with a non-negative diagonal.
+// uncertainty.model_form: [{fitted_on: [names], values: [one per parameter]}], each value finite
+// and > 0 where its parameter is drawn in ln p.
+std::vector<ModelFormFit> ReadModelForm(const YamlReader& reader, const YAML::Node& node,
+                                        const ParameterUncertainty& uncertainty) {
+  const std::string path = "uncertainty.model_form";
+  reader.RequireSequence(node, path);
+  if (node.size() == 0) reader.Fail(node, path, "expected at least one fit");
+  std::vector<ModelFormFit> fits;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string at = IndexPath(path, i);
+    reader.RequireMap(node[i], at);
+    reader.CheckKeys(node[i], at, {"fitted_on", "values"});
+    ModelFormFit& fit = fits.emplace_back();
+    const YAML::Node motions = reader.Require(node[i], at, "fitted_on");
+    reader.RequireSequence(motions, at + ".fitted_on");
+    for (std::size_t m = 0; m < motions.size(); ++m) {
+      fit.fitted_on.push_back(reader.ReadString(motions[m], IndexPath(at + ".fitted_on", m)));
+    }
+    const YAML::Node values = reader.Require(node[i], at, "values");
+    reader.RequireSequence(values, at + ".values");
+    if (values.size() != uncertainty.names.size()) {
+      reader.Fail(values, at + ".values",
+                  fmt::format("expected {} numbers, one per parameter", uncertainty.names.size()));
+    }
+    for (std::size_t p = 0; p < values.size(); ++p) {
+      fit.values.push_back(reader.ReadNumber(values[p], IndexPath(at + ".values", p)));
+      if (uncertainty.log[p] && !(fit.values.back() > 0.0)) {
+        reader.Fail(values[p], IndexPath(at + ".values", p),
+                    fmt::format("must be > 0: {} is drawn in ln p", uncertainty.names[p]));
+      }
+    }
+  }
+  return fits;
+}
+
+// uncertainty: {parameters: [{name, value, log}], covariance: [[...]], model_form: [...]}, the
+// covariance square, symmetric, with a non-negative diagonal.
 ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node& node) {
   const std::string path = "uncertainty";
   reader.RequireMap(node, path);
-  reader.CheckKeys(node, path, {"parameters", "covariance"});
+  reader.CheckKeys(node, path, {"parameters", "covariance", "model_form"});
   ParameterUncertainty uncertainty;
   const YAML::Node parameters = reader.Require(node, path, "parameters");
   reader.RequireSequence(parameters, path + ".parameters");
@@ -265,6 +300,9 @@ ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node&
                 fmt::format("must be positive semi-definite: it has a negative variance ({:.3g}) "
                             "along an eigenvector",
                             eigenvalues.minCoeff()));
+  }
+  if (node["model_form"]) {
+    uncertainty.model_form = ReadModelForm(reader, node["model_form"], uncertainty);
   }
   return uncertainty;
 }

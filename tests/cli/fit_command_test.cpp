@@ -292,7 +292,8 @@ TEST(FitCommand, BuildingOptionsAreRefusedToCyclicTests) {
   // --offsets reads shake-table accelerometers and --global-budget splits a building fit's
   // search: a cyclic fit has neither, and would ignore them.
   const auto output = TemporaryFile("offsets.yaml");
-  for (const std::string option : {"--offsets none", "--global-budget 500", "--cross-validate"}) {
+  for (const std::string option :
+       {"--offsets none", "--global-budget 500", "--cross-validate", "--model-form"}) {
     const auto run =
         RunIsolab("fit " + Data("linear_spring.csv") + " --model " + Data("three_laws_spec.yaml") +
                       " " + option + " -q -o " + output.string(),

@@ -27,6 +27,7 @@ struct HeldOutMotion {
   double objective_fitted = 0.0;       // the fit's mean NRMSE^2 on the motions it saw
   double objective_held_out = 0.0;     // mean NRMSE^2 of the held-out motion's channels
   std::vector<ChannelError> channels;  // held out
+  std::vector<double> values;          // the fit's parameters, in the spec's order (model units)
   std::string stop;                    // the fit's refinement stop ("converged", ...)
   long evaluations = 0;
   std::optional<PredictionBand> band;  // shake-table motions, with band draws asked for
@@ -44,13 +45,21 @@ struct CrossValidation {
 
 // Throws InputError for fewer than two motions, for motions of one specimen (a held-out motion's
 // start is the state the others left, which a fit without it cannot give) and for a spec with a
-// band (the held-out error is over the whole history), and what FitBuilding throws. A fold whose
-// fit gives no band (an uncertainty too wide to draw from) says why and the others go on.
-// `band_samples` parameter sets (0: none; else >= 2) drawn with `seed`.
+// band (the held-out error is over the whole history): `why` names what holds the motions out.
+void CheckCrossValidation(const model::ModelFile& model, const std::vector<BuildingMotion>& motions,
+                          const BuildingFitSpec& spec, const std::string& why);
+
+// Throws as CheckCrossValidation, and what FitBuilding throws. A fold whose fit gives no band (an
+// uncertainty too wide to draw from) says why and the others go on. `band_samples` parameter sets
+// (0: none; else >= 2) drawn with `seed`.
 CrossValidation CrossValidate(const model::ModelFile& model,
                               const std::vector<BuildingMotion>& motions,
                               const BuildingFitSpec& spec,
                               const identification::FitOptions& options, int band_samples,
                               unsigned seed);
+
+// The folds' fits as the model form of `fitted` (a fit to every motion, with its uncertainty):
+// fitted->uncertainty->model_form, one entry per fold (model_file.h, parameter_draws.h).
+void AddModelForm(const CrossValidation& folds, model::ModelFile* fitted);
 
 }  // namespace isolab::analysis

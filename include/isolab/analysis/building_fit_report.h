@@ -37,4 +37,13 @@ std::string CrossValidationJson(const CrossValidation& outcome);
 // Its text: one table row per held-out motion, then what the numbers mean.
 std::string CrossValidationText(const CrossValidation& outcome);
 
+// The model form of a fit to every motion (`fit`, its fitted model carrying the folds' fits):
+// "fits" (fitted_on, held_out, values by parameter name, objective_held_out, stop) and
+// "parameters" (name, value, sigma of the fit alone and sigma drawn with the model form, in the
+// coordinate: ln p where log), as JSON (no final newline).
+std::string ModelFormJson(const BuildingFitResult& fit, const CrossValidation& folds);
+
+// Its text: one row per parameter, the fit to every motion, each fold's and the two sigmas.
+std::string ModelFormText(const BuildingFitResult& fit, const CrossValidation& folds);
+
 }  // namespace isolab::analysis

@@ -4,10 +4,19 @@
 // ones), through the covariance's eigenvalues, so that a direction the data did not see
 // (a zero eigenvalue) still gives the others. What a prediction band runs (prediction_band.h,
 // run_band.h), and the percentiles it reports.
+//
+// Model form: where the uncertainty carries fits to subsets of the motions (`model_form`), their
+// spread about the fit to every motion is added to the covariance, each fit weighted alike:
+//   C = covariance + (1/J) sum_j (c_j - c)(c_j - c)^T,
+// c_j the coordinates of fit j, c those of `values`. The fits differ where the data cannot tell
+// the models apart (a damping traded for a stiffness between two motions), which the covariance
+// of one fit, a local curvature, does not hold; the normal law over C is a stated approximation
+// of that spread, not a distribution the data gave.
 #pragma once
 
 #include <Eigen/Core>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "isolab/model/model_file.h"
@@ -32,6 +41,15 @@ class ParameterDraws {
   std::mt19937_64 random_;
   std::normal_distribution<double> normal_;
 };
+
+// The covariance the draws use: the parameters' own, plus the model form's spread where there is
+// one (above).
+Eigen::MatrixXd DrawnCovariance(const model::ParameterUncertainty& uncertainty);
+
+// What a band drawn from `model` holds, for the text beside it: "the parameters' uncertainty" or
+// "the parameters' uncertainty and the spread of 2 fits to subsets of the motions (model form,
+// weighted alike)".
+std::string BandContents(const model::ModelFile& model);
 
 struct Percentiles {
   double p5 = 0.0, p50 = 0.0, p95 = 0.0;

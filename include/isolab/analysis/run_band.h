@@ -13,8 +13,9 @@
 namespace isolab::analysis {
 
 struct RunBand {
-  int samples = 0;  // parameter sets run to the end
-  int refused = 0;  // drawn sets that broke a law's rules or whose run stopped early, left out
+  int samples = 0;       // parameter sets run to the end
+  int refused = 0;       // drawn sets that broke a law's rules or whose run stopped early, left out
+  std::string contents;  // what the draws hold (BandContents)
   Percentiles isolator_displacement, base_shear, roof_absolute_acceleration, story_drift;
 };
 

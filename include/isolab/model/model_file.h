@@ -48,6 +48,7 @@
 //   uncertainty:                                     # a fitted model's (ParameterUncertainty)
 //     parameters: [{name: isolation.c1.k0, value: 13.2, log: true}, ...]
 //     covariance: [[...], ...]                       # of the coordinates, one row per parameter
+//     model_form: [{fitted_on: [ica50], values: [...]}, ...]  # fits to subsets of the motions
 //
 // A model with `structure` or `plan` can be run in time (build_structure.h lays it out); a model
 // with only `isolation` is a bearing, for `cyclic` and `fit`. Every error is an InputError
@@ -158,11 +159,21 @@ struct AnalysisSection {
 // `isolab fit --building`), which a prediction samples for a band: the names as
 // analysis/building_parameters.h gives them, the values in the model's units, and the covariance
 // of their coordinates (ln value where `log`, else the value).
+// Model form (`model_form:`, written by `isolab fit --building --model-form`): the same
+// parameters fitted to subsets of the motions (each motion held out in turn), whose spread about
+// `values` (the fit to every motion) is what the data cannot tell apart; prediction bands add it
+// to the covariance (analysis/parameter_draws.h).
+struct ModelFormFit {
+  std::vector<std::string> fitted_on;  // the motions the fit saw
+  std::vector<double> values;          // one per parameter, in the model's units
+};
+
 struct ParameterUncertainty {
   std::vector<std::string> names;
   std::vector<double> values;
   std::vector<bool> log;
   Eigen::MatrixXd covariance;
+  std::vector<ModelFormFit> model_form;  // empty: the parameters' uncertainty alone
 };
 
 struct ModelFile {

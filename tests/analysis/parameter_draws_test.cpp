@@ -1,0 +1,99 @@
+// The parameter draws of a prediction band (analysis/parameter_draws.h) against moments computed
+// in the test: with a model form, the draws' covariance in ln p is the fit's covariance plus the
+// mean outer product of the model-form fits' offsets from the fit to every motion, and the draws
+// are centred on the model's own values. The model form is read with its errors located.
+#include "isolab/analysis/parameter_draws.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "isolab/analysis/building_parameters.h"
+#include "isolab/core/errors.h"
+#include "synthetic_building.h"
+
+namespace isolab::analysis {
+namespace {
+
+using namespace synthetic;
+
+const char* const kUncertainty =
+    "uncertainty:\n"
+    "  parameters: [{name: isolation.iso.k1, value: 1.5, log: true},\n"
+    "               {name: stories.stiffness, value: 60, log: true}]\n"
+    "  covariance: [[0.0004, 0.0001], [0.0001, 0.0009]]\n";
+
+TEST(ParameterDraws, TheModelFormAddsTheFitsSpreadToTheCovarianceAboutTheModelsValues) {
+  const model::ModelFile model =
+      Model(BuildingText(kBilinear) + kUncertainty +
+            "  model_form:\n"
+            "    - {fitted_on: [weak], values: [1.8, 54]}\n"
+            "    - {fitted_on: [strong], values: [1.2, 63]}\n");
+  ASSERT_EQ(model.uncertainty->model_form.size(), 2u);
+  // The covariance the draws must have, in (ln k1, ln k): the fit's plus (d1 d1^T + d2 d2^T) / 2.
+  const double d[2][2] = {{std::log(1.8 / 1.5), std::log(54.0 / 60.0)},
+                          {std::log(1.2 / 1.5), std::log(63.0 / 60.0)}};
+  const double fit[2][2] = {{0.0004, 0.0001}, {0.0001, 0.0009}};
+  double expected[2][2];
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      expected[i][j] = fit[i][j] + 0.5 * (d[0][i] * d[0][j] + d[1][i] * d[1][j]);
+    }
+  }
+  const Eigen::MatrixXd drawn = DrawnCovariance(*model.uncertainty);
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) EXPECT_NEAR(drawn(i, j), expected[i][j], 1e-15);
+  }
+  // The draws themselves: 40,000 sets, their sample moments within a few standard errors (a
+  // variance's relative standard error is sqrt(2 / n) = 0.7 %; 3 % allows four of them).
+  ParameterDraws draws(model, 5);
+  const int n = 40000;
+  double sum[2] = {0, 0}, square[2][2] = {{0, 0}, {0, 0}};
+  for (int s = 0; s < n; ++s) {
+    const model::ModelFile drawn_model = draws.Next();
+    const double x[2] = {std::log(ParameterValue(drawn_model, "isolation.iso.k1")),
+                         std::log(ParameterValue(drawn_model, "stories.stiffness"))};
+    for (int i = 0; i < 2; ++i) {
+      sum[i] += x[i];
+      for (int j = 0; j < 2; ++j) square[i][j] += x[i] * x[j];
+    }
+  }
+  const double centre[2] = {std::log(1.5), std::log(60.0)};
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(sum[i] / n, centre[i], 4 * std::sqrt(expected[i][i] / n)) << i;
+    for (int j = 0; j < 2; ++j) {
+      const double covariance = square[i][j] / n - (sum[i] / n) * (sum[j] / n);
+      const double scale = std::sqrt(expected[i][i] * expected[j][j]);
+      EXPECT_NEAR(covariance, expected[i][j], 0.03 * scale) << i << "," << j;
+    }
+  }
+  EXPECT_EQ(BandContents(model),
+            "the parameters' uncertainty and the spread of 2 fits to subsets of the motions "
+            "(model form, weighted alike)");
+}
+
+TEST(ParameterDraws, AModelFormWithTheWrongCountOrANonPositiveLogValueIsRefusedWhereItIs) {
+  const auto error = [](const std::string& model_form) {
+    try {
+      Model(BuildingText(kBilinear) + kUncertainty + "  model_form:\n" + model_form);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(error("    - {fitted_on: [a], values: [1.8]}\n")
+                .find("uncertainty.model_form[0].values: expected 2 numbers, one per parameter"),
+            std::string::npos);
+  EXPECT_NE(error("    - {fitted_on: [a], values: [1.8, 60]}\n"
+                  "    - {fitted_on: [b], values: [-1, 60]}\n")
+                .find("uncertainty.model_form[1].values[0]: must be > 0"),
+            std::string::npos);
+  EXPECT_NE(error("    - {fitted_on: [a], value: [1.8, 60]}\n").find("model_form[0]"),
+            std::string::npos);
+  EXPECT_NE(error("    []\n").find("uncertainty.model_form: expected at least one fit"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace isolab::analysis
