@@ -409,16 +409,20 @@ std::string IsolatorDisplacementWarning(double peak, const UnitSystem& units) {
       peak, units.length(), kMaxBearingDisplacement);
 }
 
+double IdentifiedRangeFactor(const identification::IdentifiedRange& range, double displacement,
+                             double velocity) {
+  return std::max(displacement / range.displacement, velocity / range.velocity);
+}
+
 std::string IdentifiedRangeWarning(const identification::IdentifiedRange& range,
                                    double displacement, double velocity, const UnitSystem& units) {
   const std::string velocity_unit = fmt::format("{}/{}", units.length(), units.time());
   std::vector<std::string> beyond;
-  double farthest = 0.0;
+  const double farthest = IdentifiedRangeFactor(range, displacement, velocity);
   for (const auto& [reached, identified, unit] :
        {std::tuple{displacement, range.displacement, std::string(units.length())},
         std::tuple{velocity, range.velocity, velocity_unit}}) {
     const double ratio = reached / identified;
-    farthest = std::max(farthest, ratio);
     if (ratio > kIdentifiedRangeMargin) {
       beyond.push_back(fmt::format("{:.4g} {} ({:.2f} times)", reached, unit, ratio));
     }

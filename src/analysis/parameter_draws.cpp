@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "isolab/analysis/building_parameters.h"
+#include "isolab/analysis/model_summary.h"
 #include "isolab/core/errors.h"
 
 namespace isolab::analysis {
@@ -30,16 +31,30 @@ Eigen::MatrixXd DrawnCovariance(const model::ParameterUncertainty& u) {
   return covariance;
 }
 
-std::string BandContents(const model::ModelFile& model) {
-  const std::size_t fits = model.uncertainty ? model.uncertainty->model_form.size() : 0;
-  if (fits == 0) return "the parameters' uncertainty";
-  return fmt::format(
-      "the parameters' uncertainty and the spread of {} fit{} to subsets of the motions (model "
-      "form, weighted alike)",
-      fits, fits == 1 ? "" : "s");
+double BandWidening(const model::ModelFile& model, double displacement, double velocity) {
+  if (!model.identified_range) return 1.0;
+  const double factor = IdentifiedRangeFactor(*model.identified_range, displacement, velocity);
+  return factor > kIdentifiedRangeMargin ? factor : 1.0;
 }
 
-ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed)
+std::string BandContents(const model::ModelFile& model, double widening) {
+  const std::size_t fits = model.uncertainty ? model.uncertainty->model_form.size() : 0;
+  std::string contents = "the parameters' uncertainty";
+  if (fits > 0) {
+    contents += fmt::format(
+        " and the spread of {} fit{} to subsets of the motions (model form, weighted alike)", fits,
+        fits == 1 ? "" : "s");
+  }
+  if (widening > 1.0) {
+    contents += fmt::format(
+        ", widened {:.2f} times beyond the identified range (a stated rule: past the last "
+        "measured cycle the laws are assumed, not measured)",
+        widening);
+  }
+  return contents;
+}
+
+ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed, double widening)
     : model_(model), random_(seed) {
   if (!model.uncertainty) {
     throw InputError({model.path},
@@ -70,7 +85,8 @@ ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed)
   // The covariance is positive semi-definite (model_file.cpp checks it; the model form adds
   // outer products); eigenvalues at round-off below zero draw nothing in their direction.
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(covariance);
-  root_ = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  root_ =
+      widening * eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   // Centred on the model's own values, not on those the fit wrote beside the covariance: a model
   // edited since (or set from Python) gets a band about the run it makes.
   centre_.resize(n);

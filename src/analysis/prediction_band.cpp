@@ -29,16 +29,32 @@ double Rms(const Signal& x) {
   return x.empty() ? 0.0 : std::sqrt(sum / double(x.size()));
 }
 
+// The peak |u| and |du/dt| of the isolator's displacement history, the rate by backward
+// differences, as the identified range reads the data's (identification::RangeOf).
+std::pair<double, double> Peaks(const Signal& u, const Signal& time) {
+  double velocity = 0.0;
+  for (std::size_t k = 1; k < u.size(); ++k) {
+    velocity = std::max(velocity, std::abs(u[k] - u[k - 1]) / (time[k] - time[k - 1]));
+  }
+  return {PeakAbs(u), velocity};
+}
+
 }  // namespace
 
 PredictionBand PredictBand(const model::ModelFile& model, const BuildingMotion& motion, int samples,
                            unsigned seed, int substeps) {
-  ParameterDraws draws(model, seed);
   const std::vector<BuildingChannel> channels = {
       {BuildingChannel::Kind::kDisplacement, 1},
       {BuildingChannel::Kind::kAcceleration, int(motion.measured.acceleration.size())}};
   PredictionBand band;
-  band.contents = BandContents(model);
+  if (model.identified_range) {  // how far the model's own run goes past it (parameter_draws.h)
+    const ChannelHistories own =
+        SimulateChannels(model, {motion}, {channels[0]}, false, 0.0, substeps);
+    const auto [displacement, velocity] = Peaks(own[0][0], motion.measured.time);
+    band.widening = BandWidening(model, displacement, velocity);
+  }
+  ParameterDraws draws(model, seed, band.widening);
+  band.contents = BandContents(model, band.widening);
   std::vector<Signal> isolator, roof;
   std::vector<double> peak_u, peak_a, nrmse_u, nrmse_a;
   for (int s = 0; s < samples; ++s) {

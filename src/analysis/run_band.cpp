@@ -11,12 +11,17 @@ void CheckRunBand(const model::ModelFile& model) { ParameterDraws(model, 0); }
 
 RunBand PredictRunBand(const model::ModelFile& model, const RunOverrides& overrides,
                        const model::AnalysisSection& analysis, int samples, unsigned seed) {
-  ParameterDraws draws(model, seed);
   SolveOptions options;
   options.analysis = analysis;
   options.output.summary_only = true;
   RunBand band;
-  band.contents = BandContents(model);
+  if (model.identified_range) {  // how far the model's own run goes past it (parameter_draws.h)
+    const Summary own = Solve(options, Prepare(model, overrides));
+    band.widening = BandWidening(model, own.peaks.isolator_displacement.value,
+                                 own.peaks.isolator_velocity.value);
+  }
+  ParameterDraws draws(model, seed, band.widening);
+  band.contents = BandContents(model, band.widening);
   std::vector<double> isolator, shear, roof, drift;
   for (int s = 0; s < samples; ++s) {
     Summary summary;
@@ -55,6 +60,7 @@ nlohmann::json RunBandJson(const RunBand& band, unsigned seed) {
   return {{"samples", band.samples},
           {"refused", band.refused},
           {"contents", band.contents},
+          {"widening", band.widening},
           {"seed", seed},
           {"isolator_displacement", spread(band.isolator_displacement)},
           {"base_shear", spread(band.base_shear)},

@@ -142,6 +142,7 @@ nlohmann::json ShakeTableJson(const ShakeTableOptions& options, const UnitSystem
     json["band"] = {{"samples", band->samples},
                     {"refused", band->refused},
                     {"contents", band->contents},
+                    {"widening", band->widening},
                     {"seed", options.seed},
                     {"peak_isolator_displacement", spread(band->peak_isolator_displacement)},
                     {"peak_roof_acceleration", spread(band->peak_roof_acceleration)},

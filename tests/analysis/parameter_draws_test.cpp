@@ -1,7 +1,8 @@
 // The parameter draws of a prediction band (analysis/parameter_draws.h) against moments computed
 // in the test: with a model form, the draws' covariance in ln p is the fit's covariance plus the
 // mean outer product of the model-form fits' offsets from the fit to every motion, and the draws
-// are centred on the model's own values. The model form is read with its errors located.
+// are centred on the model's own values. Beyond the identified range the offsets widen by the
+// stated factor. The model form is read with its errors located.
 #include "isolab/analysis/parameter_draws.h"
 
 #include <gtest/gtest.h>
@@ -25,11 +26,10 @@ const char* const kUncertainty =
     "  covariance: [[0.0004, 0.0001], [0.0001, 0.0009]]\n";
 
 TEST(ParameterDraws, TheModelFormAddsTheFitsSpreadToTheCovarianceAboutTheModelsValues) {
-  const model::ModelFile model =
-      Model(BuildingText(kBilinear) + kUncertainty +
-            "  model_form:\n"
-            "    - {fitted_on: [weak], values: [1.8, 54]}\n"
-            "    - {fitted_on: [strong], values: [1.2, 63]}\n");
+  const model::ModelFile model = Model(BuildingText(kBilinear) + kUncertainty +
+                                       "  model_form:\n"
+                                       "    - {fitted_on: [weak], values: [1.8, 54]}\n"
+                                       "    - {fitted_on: [strong], values: [1.2, 63]}\n");
   ASSERT_EQ(model.uncertainty->model_form.size(), 2u);
   // The covariance the draws must have, in (ln k1, ln k): the fit's plus (d1 d1^T + d2 d2^T) / 2.
   const double d[2][2] = {{std::log(1.8 / 1.5), std::log(54.0 / 60.0)},
@@ -71,6 +71,32 @@ TEST(ParameterDraws, TheModelFormAddsTheFitsSpreadToTheCovarianceAboutTheModelsV
   EXPECT_EQ(BandContents(model),
             "the parameters' uncertainty and the spread of 2 fits to subsets of the motions "
             "(model form, weighted alike)");
+}
+
+// Beyond the identified range the draws' offsets are multiplied by how far the run goes past it
+// (the larger of the displacement and velocity ratios), once that passes the 1.1 margin; within
+// it, and for a model without an identified range, they are not. With the same seed a widened
+// draw is the model's values plus exactly that multiple of the unwidened draw's offset.
+TEST(ParameterDraws, BeyondTheIdentifiedRangeTheOffsetsGrowByHowFarTheRunGoes) {
+  model::ModelFile model = Model(BuildingText(kBilinear) + kUncertainty);
+  EXPECT_EQ(BandWidening(model, 500.0, 5000.0), 1.0);  // no identified range
+  model.identified_range = identification::IdentifiedRange{100.0, 300.0, 5.0, {"m"}};
+  EXPECT_EQ(BandWidening(model, 109.0, 320.0), 1.0);  // within 1.1 times both
+  EXPECT_DOUBLE_EQ(BandWidening(model, 230.0, 200.0), 2.3);
+  EXPECT_DOUBLE_EQ(BandWidening(model, 50.0, 400.0), 4.0 / 3.0);
+  ParameterDraws plain(model, 9), widened(model, 9, 2.3);
+  for (int s = 0; s < 5; ++s) {
+    const model::ModelFile a = plain.Next(), b = widened.Next();
+    for (const char* name : {"isolation.iso.k1", "stories.stiffness"}) {
+      const double centre = std::log(ParameterValue(model, name));
+      EXPECT_NEAR(std::log(ParameterValue(b, name)) - centre,
+                  2.3 * (std::log(ParameterValue(a, name)) - centre), 1e-12)
+          << name;
+    }
+  }
+  EXPECT_EQ(BandContents(model, 2.3),
+            "the parameters' uncertainty, widened 2.30 times beyond the identified range (a "
+            "stated rule: past the last measured cycle the laws are assumed, not measured)");
 }
 
 TEST(ParameterDraws, AModelFormWithTheWrongCountOrANonPositiveLogValueIsRefusedWhereItIs) {

@@ -612,6 +612,32 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
     EXPECT_LT(band["p50"].get<double>(), band["p95"].get<double>()) << peak;
   }
 
+  // Identified up to a third of the run's own peak: the band's draws are widened by the factor
+  // the run goes past it, and the band says so.
+  const auto own = spread["peaks"]["isolator_displacement"]["value"].get<double>();
+  const auto beyond = isolab::testing::OwnTestFile("beyond.yaml");
+  {
+    std::ifstream in(model("[[0.01, 0], [0, 0.0025]]"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string components = "isolation:\n  components:\n";
+    text.replace(text.find(components), components.size(),
+                 components.substr(0, components.size() - 12) +
+                     "identified_range: {displacement: " + std::to_string(own / 3) +
+                     ", velocity: 1.0e9, cycles: 3, data: [m]}\n  components:\n");
+    std::ofstream(beyond) << text;
+  }
+  const auto widened = run(beyond.string());
+  // 3 to the six decimals std::to_string wrote the identified displacement with.
+  EXPECT_NEAR(widened["band"]["widening"].get<double>(), 3.0, 1e-6);
+  EXPECT_NE(widened["band"]["contents"].get<std::string>().find("widened 3.00 times beyond"),
+            std::string::npos);
+  EXPECT_EQ(spread["band"]["widening"].get<double>(), 1.0);  // no identified range
+  const auto width = [](const nlohmann::json& band) {
+    return band["isolator_displacement"]["p95"].get<double>() -
+           band["isolator_displacement"]["p5"].get<double>();
+  };
+  EXPECT_GT(width(widened["band"]), 2.0 * width(spread["band"]));
+
   std::filesystem::remove(results);
   const auto none = RunIsolab(
       "run " + Source("models/buildings/five_story_table9.yaml") + " --samples 12 -q -o " + results,

@@ -98,6 +98,11 @@ inline constexpr double kIdentifiedRangeMargin = 1.1;
 // Past this factor the warning says "far beyond": the response rests on the law's form alone.
 inline constexpr double kFarBeyondIdentifiedRange = 2.0;
 
+// How far a run goes past the range its isolation was identified on: the larger of its peak
+// isolator displacement and velocity over the identified ones (> 0).
+double IdentifiedRangeFactor(const identification::IdentifiedRange& range, double displacement,
+                             double velocity);
+
 // The warning for a run whose peak isolator displacement or velocity (|u|, |du/dt|: the resultant
 // in plan) goes more than kIdentifiedRangeMargin times beyond the range its isolation was
 // identified on, with how far and graded (beyond; far beyond past kFarBeyondIdentifiedRange), or

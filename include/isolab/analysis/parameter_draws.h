@@ -12,6 +12,13 @@
 // the models apart (a damping traded for a stiffness between two motions), which the covariance
 // of one fit, a local curvature, does not hold; the normal law over C is a stated approximation
 // of that spread, not a distribution the data gave.
+//
+// Beyond the identified range: where the model's own run goes past the range its isolation was
+// identified on by more than kIdentifiedRangeMargin, by a factor r (IdentifiedRangeFactor), every
+// draw's offset from the model's values is multiplied by r, so the standard deviations are r
+// times the ones above. Past the last measured cycle the laws' behaviour is their form's, not
+// the data's; the band widens with how far the run extrapolates. A rule the project states, not
+// something the data measured: the band's text says it was applied and by how much.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,8 +34,9 @@ class ParameterDraws {
  public:
   // Throws InputError when the model carries no uncertainty, names a parameter it lacks (checked
   // before any draw, so a wrong name is an error, not a band of refused sets), or gives a log
-  // parameter a standard deviation above ln 10 (a factor 10 per sigma).
-  ParameterDraws(const model::ModelFile& model, unsigned seed);
+  // parameter a standard deviation above ln 10 (a factor 10 per sigma). `widening` (>= 1)
+  // multiplies every draw's offset (BandWidening).
+  ParameterDraws(const model::ModelFile& model, unsigned seed, double widening = 1.0);
 
   // The model with the next drawn set. Throws InvalidParameter or InputError for a set that
   // breaks a law's rules (k1 > k0, say): no building, to be counted as refused.
@@ -46,10 +54,16 @@ class ParameterDraws {
 // one (above).
 Eigen::MatrixXd DrawnCovariance(const model::ParameterUncertainty& uncertainty);
 
-// What a band drawn from `model` holds, for the text beside it: "the parameters' uncertainty" or
-// "the parameters' uncertainty and the spread of 2 fits to subsets of the motions (model form,
-// weighted alike)".
-std::string BandContents(const model::ModelFile& model);
+// The widening of a band whose model, run itself, reaches `displacement` and `velocity` at its
+// isolator: the factor past the identified range beyond kIdentifiedRangeMargin, else 1 (and 1
+// for a model without an identified range).
+double BandWidening(const model::ModelFile& model, double displacement, double velocity);
+
+// What a band drawn from `model` with `widening` holds, for the text beside it: "the parameters'
+// uncertainty", "... and the spread of 2 fits to subsets of the motions (model form, weighted
+// alike)", and with a widening "..., widened 2.3 times beyond the identified range (a stated
+// rule: past the last measured cycle the laws are assumed, not measured)".
+std::string BandContents(const model::ModelFile& model, double widening = 1.0);
 
 struct Percentiles {
   double p5 = 0.0, p50 = 0.0, p95 = 0.0;

@@ -14,9 +14,10 @@
 namespace isolab::analysis {
 
 struct PredictionBand {
-  int samples = 0;       // parameter sets run
-  int refused = 0;       // drawn sets that broke a law's rules or whose run failed, left out
-  std::string contents;  // what the draws hold (BandContents)
+  int samples = 0;        // parameter sets run
+  int refused = 0;        // drawn sets that broke a law's rules or whose run failed, left out
+  double widening = 1.0;  // beyond the identified range (BandWidening); 1 within it
+  std::string contents;   // what the draws hold (BandContents)
   Signal isolator_p5, isolator_p95;  // the slab's displacement relative to the table
   Signal roof_p5, roof_p95;          // the roof's absolute acceleration
   Percentiles peak_isolator_displacement, peak_roof_acceleration;

@@ -13,9 +13,10 @@
 namespace isolab::analysis {
 
 struct RunBand {
-  int samples = 0;       // parameter sets run to the end
-  int refused = 0;       // drawn sets that broke a law's rules or whose run stopped early, left out
-  std::string contents;  // what the draws hold (BandContents)
+  int samples = 0;  // parameter sets run to the end
+  int refused = 0;  // drawn sets that broke a law's rules or whose run stopped early, left out
+  double widening = 1.0;  // beyond the identified range (BandWidening); 1 within it
+  std::string contents;   // what the draws hold (BandContents)
   Percentiles isolator_displacement, base_shear, roof_absolute_acceleration, story_drift;
 };
 
