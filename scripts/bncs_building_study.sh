@@ -2,7 +2,8 @@
 # The BNCS building identified as a whole from its floor responses (docs/bncs.md, "Identifying
 # the building"): the building fit of models/bncs/building_spec.yaml on ICA50 alone, on LAC100
 # alone and on both as one specimen in either order, then each motion predicted by the fits that
-# did not see it, with a band from the fitted parameters' uncertainty.
+# did not see it, with a band from the fitted parameters' uncertainty; and both motions as
+# independent tests with the model form (--model-form), each predicted with and without it.
 # Usage: scripts/bncs_building_study.sh [DATA_DIR]   (default ../shared/measured/bncs)
 # Writes into build/bncs_building/; the fit of both motions in the order that fits them better
 # (the lower mean NRMSE^2) becomes models/bncs/bncs_diagnosed.yaml.
@@ -29,8 +30,23 @@ predict() {  # model, motion
     --results "$out/$(basename "$1" .yaml)_on_$2.h5" \
     --comparison "$out/$(basename "$1" .yaml)_on_$2.csv" > "$out/$(basename "$1" .yaml)_on_$2.json"
 }
+# Both motions as independent tests with the model form (docs/bncs.md, "With the model form"),
+# and the same fit with its model form taken out, for the band without it.
+fit model_form "$out/ica50.csv" "$out/lac100.csv" --model-form
+/usr/bin/python3 - "$out" <<'PY'
+import sys
+folder = sys.argv[1]
+lines = open(f"{folder}/fit_model_form.yaml").read().split("\n")
+start = lines.index("  model_form:")
+end = start + 1
+while end < len(lines) and lines[end].startswith("    "):
+    end += 1
+open(f"{folder}/fit_covariance_only.yaml", "w").write("\n".join(lines[:start] + lines[end:]))
+PY
 for motion in ica50 lac100; do
-  for fitted in ica50 lac100 ica50_lac100 lac100_ica50; do predict "$out/fit_$fitted.yaml" "$motion"; done
+  for fitted in ica50 lac100 ica50_lac100 lac100_ica50 model_form covariance_only; do
+    predict "$out/fit_$fitted.yaml" "$motion"
+  done
 done
 /usr/bin/python3 scripts/plot_shaketable.py overlay "$out/fit_ica50_on_lac100.csv" \
   -o docs/images/bncs_building_lac100.png \
