@@ -70,10 +70,14 @@ def test_building_fit_equals_the_command_line(tmp_path, isolab_cli, shake_table)
 
 def test_building_model_form_equals_the_command_line(tmp_path, isolab_cli, shake_table):
     """isolab.fit(building=, model_form=True) returns what `isolab fit --building --model-form
-    --json` prints, and both write the model with the fits to each motion as its model form."""
+    --json` prints, and both write the model with the fits to each motion as its model form and
+    the spec's prior."""
     data, spec = shake_table
     other = tmp_path / "other.csv"
     other.write_text(data.read_text())
+    # With a prior too: the isolator's yield displacement held at the model's 5 mm.
+    spec.write_text(spec.read_text() +
+                    "priors:\n  - {name: isolation.iso.uy, sigma: 0.1, source: design data}\n")
     common = ["--budget", 400, "--threads", 1, "--offsets", "none", "-q"]
     cli = isolab_cli.json("fit", data, other, "--building", spec, "--model-form", *common,
                           "-o", tmp_path / "cli.fitted.yaml")
@@ -82,6 +86,8 @@ def test_building_model_form_equals_the_command_line(tmp_path, isolab_cli, shake
     for key in ("seconds", "output"):  # the run's own
         del mine[key], cli[key]
     assert mine == cli
+    assert mine["priors"] == [{"name": "isolation.iso.uy", "value": 5.0, "sigma": 0.1,
+                               "source": "design data"}]
     fits = mine["model_form"]["fits"]
     assert [f["fitted_on"] for f in fits] == [["other"], ["motion"]]
     assert [p["name"] for p in mine["model_form"]["parameters"]] == \
@@ -89,6 +95,7 @@ def test_building_model_form_equals_the_command_line(tmp_path, isolab_cli, shake
     for name in ("cli", "mine"):
         text = (tmp_path / f"{name}.fitted.yaml").read_text()
         assert "model_form:" in text and "fitted_on: [other]" in text, name
+        assert "priors:" in text and "source: design data" in text, name
 
 
 def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):

@@ -179,6 +179,30 @@ std::vector<BuildingChannel> CheckedChannels(const model::ModelFile& model,
 }
 
 // The fitted parameters' search coordinates, and the start in them (`start`).
+// The spec's priors with their values: given, or the model's. Throws InputError for a name the
+// model lacks (building_parameters.h), a fitted one, or a value not > 0.
+std::vector<model::ParameterPrior> ResolvedPriors(const model::ModelFile& model,
+                                                  const BuildingFitSpec& spec) {
+  std::vector<model::ParameterPrior> priors;
+  for (const PriorSpec& prior : spec.priors) {
+    for (const FittedParameterSpec& fitted : spec.parameters) {
+      if (fitted.name == prior.name) {
+        throw InputError({model.path}, fmt::format("prior '{}': the parameter is also fitted; a "
+                                                   "prior gives what the fit does not",
+                                                   prior.name));
+      }
+    }
+    const double value = prior.value ? *prior.value : ParameterValue(model, prior.name);
+    if (!(value > 0.0)) {
+      throw InputError({model.path}, fmt::format("prior '{}': its value {:g} must be > 0 (drawn "
+                                                 "in ln p)",
+                                                 prior.name, value));
+    }
+    priors.push_back({prior.name, value, prior.sigma, prior.source});
+  }
+  return priors;
+}
+
 Coordinates SearchCoordinates(const model::ModelFile& model, const BuildingFitSpec& spec,
                               std::vector<double>& start) {
   Coordinates coordinates;
@@ -400,8 +424,12 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   std::vector<double> start;
   const Coordinates coordinates = SearchCoordinates(model, spec, start);
   // The starting values must make a model that runs: a name the model lacks is an error here,
-  // not an infinite objective in the search.
+  // not an infinite objective in the search. The priors hold their values throughout.
   model::ModelFile base = model;
+  const std::vector<model::ParameterPrior> priors = ResolvedPriors(model, spec);
+  for (const model::ParameterPrior& prior : priors) {
+    SetParameters(&base, std::span(&prior.name, 1), std::span(&prior.value, 1));
+  }
   SetParameters(&base, coordinates.names, coordinates.Values(start));
   const BuildingResiduals residuals(motions, channels, spec);
   const double count = residuals.count();
@@ -477,6 +505,7 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   uncertainty.values = values;
   for (const auto& range : coordinates.ranges) uncertainty.log.push_back(range.log);
   uncertainty.covariance = result.covariance;
+  uncertainty.priors = priors;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
   return result;
 }

@@ -96,6 +96,9 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
   for (const model::BuildingFitParameterEntry& entry : file.parameters) {
     spec.parameters.push_back({entry.name, entry.low, entry.high, entry.start});
   }
+  for (const model::BuildingFitPriorEntry& entry : file.priors) {
+    spec.priors.push_back({entry.name, entry.value, entry.sigma, entry.source});
+  }
   for (const std::string& channel : file.channels) {
     spec.channels.push_back(ParseChannel(channel, file.path));
   }

@@ -43,6 +43,15 @@ std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
                                   {"interval_95", {low, high}},
                                   {"at_bound", p.at_bound}});
   }
+  json["priors"] = nlohmann::json::array();
+  const auto& uncertainty = result.fitted.uncertainty;
+  for (const model::ParameterPrior& prior :
+       uncertainty ? uncertainty->priors : std::vector<model::ParameterPrior>{}) {
+    json["priors"].push_back({{"name", prior.name},
+                              {"value", prior.value},
+                              {"sigma", prior.sigma},
+                              {"source", prior.source}});
+  }
   for (const ChannelFit& c : result.channels) {
     json["channels"].push_back({{"motion", c.motion},
                                 {"channel", c.channel},

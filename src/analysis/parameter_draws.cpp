@@ -1,6 +1,7 @@
 #include "isolab/analysis/parameter_draws.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -45,6 +46,14 @@ std::string BandContents(const model::ModelFile& model, double widening) {
         " and the spread of {} fit{} to subsets of the motions (model form, weighted alike)", fits,
         fits == 1 ? "" : "s");
   }
+  if (model.uncertainty && !model.uncertainty->priors.empty()) {
+    std::vector<std::string> given;
+    for (const model::ParameterPrior& prior : model.uncertainty->priors) {
+      given.push_back(fmt::format("{}: {}", prior.name, prior.source));
+    }
+    contents += fmt::format(", with {} parameter{} from a prior ({})", given.size(),
+                            given.size() == 1 ? "" : "s", fmt::join(given, "; "));
+  }
   if (widening > 1.0) {
     contents += fmt::format(
         ", widened {:.2f} times beyond the identified range (a stated rule: past the last "
@@ -52,6 +61,16 @@ std::string BandContents(const model::ModelFile& model, double widening) {
         widening);
   }
   return contents;
+}
+
+std::string PriorsBeyondRangeText(const model::ModelFile& model) {
+  if (!model.uncertainty || model.uncertainty->priors.empty()) return "";
+  std::vector<std::string> given;
+  for (const model::ParameterPrior& prior : model.uncertainty->priors) {
+    given.push_back(fmt::format("{} = {:.4g} ({})", prior.name, prior.value, prior.source));
+  }
+  return fmt::format("; beyond it the response also rests on parameters given, not fitted: {}",
+                     fmt::join(given, ", "));
 }
 
 ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed, double widening)
@@ -101,6 +120,17 @@ ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed, dou
     }
     centre_[p] = u.log[q] ? std::log(value) : value;
   }
+  for (const model::ParameterPrior& prior : u.priors) {
+    const double value = ParameterValue(model, prior.name);
+    if (!(value > 0.0)) {
+      throw InputError({model.path},
+                       fmt::format("{} is {:g}, drawn log-normally by its prior: it must be > 0",
+                                   prior.name, value));
+    }
+    prior_names_.push_back(prior.name);
+    prior_centres_.push_back(std::log(value));
+    prior_sigmas_.push_back(prior.sigma);
+  }
 }
 
 model::ModelFile ParameterDraws::Next() {
@@ -115,6 +145,13 @@ model::ModelFile ParameterDraws::Next() {
   }
   model::ModelFile drawn = model_;
   SetParameters(&drawn, u.names, values);
+  if (!prior_names_.empty()) {
+    std::vector<double> given(prior_names_.size());
+    for (std::size_t p = 0; p < given.size(); ++p) {
+      given[p] = std::exp(prior_centres_[p] + prior_sigmas_[p] * normal_(random_));
+    }
+    SetParameters(&drawn, prior_names_, given);
+  }
   return drawn;
 }
 

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "isolab/analysis/parameter_draws.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
@@ -71,7 +72,7 @@ std::vector<std::string> RunWarnings(const RunDescription& run) {
     const std::string range = IdentifiedRangeWarning(
         *run.problem->model.identified_range, run.peaks->isolator_displacement.value,
         run.peaks->isolator_velocity.value, run.problem->units());
-    if (!range.empty()) warnings.push_back(range);
+    if (!range.empty()) warnings.push_back(range + PriorsBeyondRangeText(run.problem->model));
   }
   const structure::AxialLoads& axial = run.problem->structure.axial_loads();
   const ResponsePeaks& peaks = *run.peaks;

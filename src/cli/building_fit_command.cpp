@@ -107,6 +107,10 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} to {:.4g}{} |\n", p.name, p.start, p.value,
                low, high, p.at_bound ? " (at the range's end)" : "");
   }
+  for (const model::ParameterPrior& prior : result.fitted.uncertainty->priors) {
+    fmt::print(out, "| {} | prior | {:.4g} | held: sigma {:.3g} in ln p ({}) |\n", prior.name,
+               prior.value, prior.sigma, prior.source);
+  }
   fmt::print(out, "\n| motion | channel | NRMSE start | NRMSE fitted |\n|---|---|---|---|\n");
   for (const analysis::ChannelFit& c : result.channels) {
     fmt::print(out, "| {} | {} | {:.3f} | {:.3f} |\n", c.motion, c.channel, c.nrmse_start, c.nrmse);

@@ -120,6 +120,14 @@ std::string FittedBuildingText(const ModelFile& fitted, const std::string& note)
       entry["values"] = Flow(values);
       section["model_form"].push_back(entry);
     }
+    for (const ParameterPrior& prior : u.priors) {
+      YAML::Node entry;
+      entry["name"] = prior.name;
+      entry["value"] = Number(prior.value);
+      entry["sigma"] = Number(prior.sigma);
+      entry["source"] = prior.source;
+      section["priors"].push_back(Flow(entry));
+    }
     root["uncertainty"] = section;
   }
   const std::string from = root["description"] ? root["description"].Scalar() : "";

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <utility>
@@ -10,6 +12,15 @@
 #include "model_sections.h"
 
 namespace isolab::model {
+
+void CheckPrior(const YamlReader& reader, const YAML::Node& entry, const std::string& at,
+                double value, double sigma) {
+  if (!(value > 0.0)) reader.Fail(entry["value"], at + ".value", "must be > 0 (drawn in ln p)");
+  if (!(sigma > 0.0 && sigma <= std::log(10.0))) {
+    reader.Fail(entry["sigma"], at + ".sigma",
+                "must be in (0, ln 10 = 2.303]: a standard deviation in ln p, at most a factor 10");
+  }
+}
 
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root) {
   const YAML::Node node = reader.Require(root, "", "units");
@@ -243,12 +254,38 @@ std::vector<ModelFormFit> ReadModelForm(const YamlReader& reader, const YAML::No
   return fits;
 }
 
-// uncertainty: {parameters: [{name, value, log}], covariance: [[...]], model_form: [...]}, the
-// covariance square, symmetric, with a non-negative diagonal.
+// uncertainty.priors: [{name, value, sigma, source}], none naming a fitted parameter.
+std::vector<ParameterPrior> ReadPriors(const YamlReader& reader, const YAML::Node& node,
+                                       const ParameterUncertainty& uncertainty) {
+  const std::string path = "uncertainty.priors";
+  reader.RequireSequence(node, path);
+  std::vector<ParameterPrior> priors;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string at = IndexPath(path, i);
+    reader.RequireMap(node[i], at);
+    reader.CheckKeys(node[i], at, {"name", "value", "sigma", "source"});
+    ParameterPrior& prior = priors.emplace_back();
+    prior.name = reader.ReadString(reader.Require(node[i], at, "name"), at + ".name");
+    prior.value = reader.ReadNumber(reader.Require(node[i], at, "value"), at + ".value");
+    prior.sigma = reader.ReadNumber(reader.Require(node[i], at, "sigma"), at + ".sigma");
+    prior.source = reader.ReadString(reader.Require(node[i], at, "source"), at + ".source");
+    CheckPrior(reader, node[i], at, prior.value, prior.sigma);
+    const auto& names = uncertainty.names;
+    if (std::find(names.begin(), names.end(), prior.name) != names.end()) {
+      reader.Fail(node[i]["name"], at + ".name",
+                  fmt::format("'{}' is a fitted parameter: a prior gives what the fit did not",
+                              prior.name));
+    }
+  }
+  return priors;
+}
+
+// uncertainty: {parameters: [{name, value, log}], covariance: [[...]], model_form: [...],
+// priors: [...]}, the covariance square, symmetric, with a non-negative diagonal.
 ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node& node) {
   const std::string path = "uncertainty";
   reader.RequireMap(node, path);
-  reader.CheckKeys(node, path, {"parameters", "covariance", "model_form"});
+  reader.CheckKeys(node, path, {"parameters", "covariance", "model_form", "priors"});
   ParameterUncertainty uncertainty;
   const YAML::Node parameters = reader.Require(node, path, "parameters");
   reader.RequireSequence(parameters, path + ".parameters");
@@ -304,6 +341,7 @@ ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node&
   if (node["model_form"]) {
     uncertainty.model_form = ReadModelForm(reader, node["model_form"], uncertainty);
   }
+  if (node["priors"]) uncertainty.priors = ReadPriors(reader, node["priors"], uncertainty);
   return uncertainty;
 }
 

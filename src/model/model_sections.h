@@ -15,6 +15,11 @@ double ReadPositive(const YamlReader& reader, const YAML::Node& map, const std::
                     std::string_view key, Dimension dimension, const UnitSystem& units);
 double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::string& path);
 
+// A prior's value (> 0) and sigma (in ln p: (0, ln 10]), as a building fit specification's
+// priors and a fitted model's uncertainty.priors give them; `at` locates `entry`.
+void CheckPrior(const YamlReader& reader, const YAML::Node& entry, const std::string& at,
+                double value, double sigma);
+
 // The required `units` section of a model (or fit specification) file.
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
 

@@ -35,6 +35,7 @@ TEST(BuildingFitReport, IntervalsAndTheJsonBothFrontsReturn) {
   EXPECT_EQ(json["output"], "fitted.yaml");
   EXPECT_FALSE(json.contains("identified_range"));  // none in the fitted model
   EXPECT_FALSE(json.contains("not_separated"));
+  EXPECT_TRUE(json["priors"].empty());  // no uncertainty, so nothing given
 }
 
 }  // namespace

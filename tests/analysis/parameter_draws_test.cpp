@@ -99,6 +99,39 @@ TEST(ParameterDraws, BeyondTheIdentifiedRangeTheOffsetsGrowByHowFarTheRunGoes) {
             "stated rule: past the last measured cycle the laws are assumed, not measured)");
 }
 
+// A prior (a parameter given, not fitted) is drawn independently, log-normally with its sigma
+// about the model's own value (an edited 7 here, not the prior's 6), unwidened; a prior naming a
+// fitted parameter is refused where it is.
+TEST(ParameterDraws, APriorIsDrawnWithItsSigmaAboutTheModelsValue) {
+  const std::string prior =
+      "  priors: [{name: isolation.iso.uy, value: 6, sigma: 0.2, source: design data}]\n";
+  model::ModelFile model = Model(BuildingText(kBilinear) + kUncertainty + prior);
+  SetParameters(&model, std::vector<std::string>{"isolation.iso.uy"}, std::vector<double>{7.0});
+  ParameterDraws draws(model, 11, 3.0);
+  const int n = 20000;
+  double sum = 0.0, square = 0.0;
+  for (int s = 0; s < n; ++s) {
+    const double x = std::log(ParameterValue(draws.Next(), "isolation.iso.uy"));
+    sum += x, square += x * x;
+  }
+  const double mean = sum / n, sd = std::sqrt(square / n - mean * mean);
+  EXPECT_NEAR(mean, std::log(7.0), 4 * 0.2 / std::sqrt(double(n)));
+  EXPECT_NEAR(sd, 0.2, 0.03 * 0.2);  // sqrt(1 / (2 n)) = 0.5 % relative; 3 % allows six
+  EXPECT_EQ(BandContents(model),
+            "the parameters' uncertainty, with 1 parameter from a prior (isolation.iso.uy: "
+            "design data)");
+  try {
+    Model(BuildingText(kBilinear) + kUncertainty +
+          "  priors: [{name: isolation.iso.k1, value: 2, sigma: 0.2, source: x}]\n");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("uncertainty.priors[0].name: 'isolation.iso.k1' is a fitted parameter"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(ParameterDraws, AModelFormWithTheWrongCountOrANonPositiveLogValueIsRefusedWhereItIs) {
   const auto error = [](const std::string& model_form) {
     try {

@@ -453,6 +453,17 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
       {"", "--cycles 2", "--cycles applies to cyclic tests"},
       {"", "", "force_spec.yaml:3:11: substeps: must be >= 1", "0"},
       {"  - isolation.k.k\n", "", "'isolation.k.k' is fitted twice (also parameters[0])"},
+      // Priors: given, so never fitted; a sigma of a factor 10 or more, a value not > 0 and a
+      // prior without its source are refused where they are.
+      {"priors:\n  - {name: isolation.k.k, sigma: 0.1, source: x}\n", "",
+       "priors[0].name: 'isolation.k.k' is fitted (parameters[0])"},
+      {"priors:\n  - {name: isolation.z.gamma, sigma: 3, source: x}\n", "",
+       "priors[0].sigma: must be in (0, ln 10 = 2.303]"},
+      {"priors:\n  - {name: isolation.z.gamma, value: -1, sigma: 0.1, source: x}\n", "",
+       "priors[0].value: must be > 0"},
+      {"priors:\n  - {name: isolation.z.gamma, sigma: 0.1}\n", "",
+       "priors[0]: missing key 'source'"},
+      {"priors:\n  - {name: isolation.z.no_such, sigma: 0.1, source: x}\n", "", "no_such"},
   };
   for (const Case& c : cases) {
     const auto refused = TemporaryFile("refused.yaml");
@@ -463,6 +474,27 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
     EXPECT_NE(bad.output.find(c.message), std::string::npos) << bad.output;
     EXPECT_FALSE(std::filesystem::exists(refused)) << c.message;
   }
+  // A prior holds the Bouc-Wen's gamma at a value from outside the data (0.7, the model's 0.8)
+  // through the fit; the fitted model carries it with its sigma and source, and the JSON says so.
+  const auto held = TemporaryFile("held.fitted.yaml");
+  const auto with_prior = RunIsolab(
+      "fit " + data.string() + " --building " +
+      spec("priors:\n  - {name: isolation.z.gamma, value: 0.7, sigma: 0.1, source: the vendor's "
+           "test}\n") +
+      " --budget 300 --json -q -o " + held.string());
+  ASSERT_EQ(with_prior.exit_code, 0) << with_prior.output;
+  const auto prior_json = nlohmann::json::parse(with_prior.output);
+  ASSERT_EQ(prior_json["priors"].size(), 1u);
+  EXPECT_EQ(prior_json["priors"][0]["name"], "isolation.z.gamma");
+  EXPECT_EQ(prior_json["priors"][0]["value"].get<double>(), 0.7);
+  EXPECT_EQ(prior_json["priors"][0]["source"], "the vendor's test");
+  const auto held_model = isolab::model::LoadModelFile(held.string());
+  ASSERT_EQ(held_model.uncertainty->priors.size(), 1u);
+  EXPECT_EQ(held_model.uncertainty->priors[0].sigma, 0.1);
+  EXPECT_EQ(held_model.isolation.components()[1].parameters.Values(
+                isolab::hysteresis::ParameterForm::kMathematical)[2],
+            0.7);
+
   const auto shaker = TemporaryFile("shaker_spec.yaml");
   std::ofstream(shaker) << "model: boucwen.yaml\ninput: shaker\nparameters: [isolation.k.k]\n";
   const auto word =

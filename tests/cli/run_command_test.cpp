@@ -613,7 +613,8 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
   }
 
   // Identified up to a third of the run's own peak: the band's draws are widened by the factor
-  // the run goes past it, and the band says so.
+  // the run goes past it, and the band says so; the range warning names the parameter given by
+  // a prior, which the response beyond the range rests on too.
   const auto own = spread["peaks"]["isolator_displacement"]["value"].get<double>();
   const auto beyond = isolab::testing::OwnTestFile("beyond.yaml");
   {
@@ -624,7 +625,9 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
                  components.substr(0, components.size() - 12) +
                      "identified_range: {displacement: " + std::to_string(own / 3) +
                      ", velocity: 1.0e9, cycles: 3, data: [m]}\n  components:\n");
-    std::ofstream(beyond) << text;
+    std::ofstream(beyond)
+        << text
+        << "  priors: [{name: isolation.iso.uy, value: 5, sigma: 0.1, source: design data}]\n";
   }
   const auto widened = run(beyond.string());
   // 3 to the six decimals std::to_string wrote the identified displacement with.
@@ -632,6 +635,18 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
   EXPECT_NE(widened["band"]["contents"].get<std::string>().find("widened 3.00 times beyond"),
             std::string::npos);
   EXPECT_EQ(spread["band"]["widening"].get<double>(), 1.0);  // no identified range
+  EXPECT_NE(widened["band"]["contents"].get<std::string>().find(
+                "with 1 parameter from a prior (isolation.iso.uy: design data)"),
+            std::string::npos);
+  bool named = false;
+  for (const auto& warning : widened["warnings"]) {
+    named |= warning.get<std::string>().find(
+                 "far beyond the range the fit saw (more than 2 times it): the response there "
+                 "rests on the law's form alone, not on the data; beyond it the response also "
+                 "rests on parameters given, not fitted: isolation.iso.uy = 5 (design data)") !=
+             std::string::npos;
+  }
+  EXPECT_TRUE(named) << widened["warnings"].dump();
   const auto width = [](const nlohmann::json& band) {
     return band["isolator_displacement"]["p95"].get<double>() -
            band["isolator_displacement"]["p5"].get<double>();

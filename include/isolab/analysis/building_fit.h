@@ -45,8 +45,17 @@ struct FittedParameterSpec {
   std::optional<double> start{};        // default the model's value
 };
 
+struct PriorSpec {
+  std::string name;              // building_parameters.h
+  std::optional<double> value;   // default the model's
+  double sigma = 0.0;            // in ln p
+  std::string source;
+};
+
 struct BuildingFitSpec {
   std::vector<FittedParameterSpec> parameters;
+  // Held at their values through the fit and written as the fitted model's uncertainty.priors.
+  std::vector<PriorSpec> priors;
   std::vector<BuildingChannel> channels;      // empty: every level's displacement and acceleration
   std::optional<double> band_low, band_high;  // (1/time) the band the residual is read in
   bool sequential = false;                    // the motions are one specimen, in the order given

@@ -18,7 +18,7 @@ std::pair<double, double> Interval95(const FittedParameter& p);
 std::string BuildingFitProgressLine(const identification::FitProgress& progress);
 
 // The JSON object (indented by two, no final newline): "parameters" (name, start, value, sigma,
-// log, interval_95, at_bound), "channels" (motion, channel, nrmse_start, nrmse),
+// log, interval_95, at_bound), "priors" (name, value, sigma, source: held, not fitted), "channels" (motion, channel, nrmse_start, nrmse),
 // "not_separated", "identified_range", "objective_start", "objective", "samples",
 // "effective_samples", "correlation_time", "evaluations" (both stages), "global_evaluations",
 // "iterations" (of the refinement kept), "stop" ("converged", "stalled" or "budget": the

@@ -19,6 +19,10 @@
 // times the ones above. Past the last measured cycle the laws' behaviour is their form's, not
 // the data's; the band widens with how far the run extrapolates. A rule the project states, not
 // something the data measured: the band's text says it was applied and by how much.
+//
+// Priors (`priors`: parameters given from design data or a preset, not fitted) are drawn too,
+// each independently, log-normally about the model's own value with its sigma; the widening
+// does not apply to them, whose sigma is already what is assumed of them.
 #pragma once
 
 #include <Eigen/Core>
@@ -46,6 +50,10 @@ class ParameterDraws {
   const model::ModelFile& model_;
   Eigen::VectorXd centre_;
   Eigen::MatrixXd root_;  // root root^T = the covariance
+  // The priors' names and ln of the model's values, drawn independently (not widened: a prior's
+  // sigma is already what is assumed of it).
+  std::vector<std::string> prior_names_;
+  std::vector<double> prior_centres_, prior_sigmas_;
   std::mt19937_64 random_;
   std::normal_distribution<double> normal_;
 };
@@ -61,9 +69,15 @@ double BandWidening(const model::ModelFile& model, double displacement, double v
 
 // What a band drawn from `model` with `widening` holds, for the text beside it: "the parameters'
 // uncertainty", "... and the spread of 2 fits to subsets of the motions (model form, weighted
-// alike)", and with a widening "..., widened 2.3 times beyond the identified range (a stated
-// rule: past the last measured cycle the laws are assumed, not measured)".
+// alike)", "..., with 1 parameter from a prior (isolation.s.k2: design data)", and with a
+// widening "..., widened 2.3 times beyond the identified range (a stated rule: past the last
+// measured cycle the laws are assumed, not measured)".
 std::string BandContents(const model::ModelFile& model, double widening = 1.0);
+
+// What a run beyond the identified range rests on besides the fit, for its warning: "; beyond it
+// the response also rests on parameters given, not fitted: isolation.s.k2 = 0.8 (design data)",
+// or empty for a model without priors (model_file.h's ParameterPrior).
+std::string PriorsBeyondRangeText(const model::ModelFile& model);
 
 struct Percentiles {
   double p5 = 0.0, p50 = 0.0, p95 = 0.0;

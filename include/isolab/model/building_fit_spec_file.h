@@ -11,6 +11,8 @@
 //   band: [0.1, 10]                  # (1/time of the model) default: the whole record
 //   pause: 60                        # (time) of rest between one specimen's motions
 //   substeps: 20                     # integration steps per sample (default 1)
+//   priors:                          # not fitted: given from what engineers know
+//     - {name: isolation.stiffening.k2, value: 0.8, sigma: 0.2, source: "design data"}
 #pragma once
 
 #include <optional>
@@ -26,10 +28,20 @@ struct BuildingFitParameterEntry {
   std::optional<double> low{}, high{}, start{};
 };
 
+// A parameter the data cannot fix, held at a value from outside them (model_file.h's
+// ParameterPrior): `value` default the model's, `sigma` in ln p, `source` required.
+struct BuildingFitPriorEntry {
+  std::string name;
+  std::optional<double> value{};
+  double sigma = 0.0;
+  std::string source;
+};
+
 struct BuildingFitSpecFile {
   std::string path;
   std::string model;  // resolved against the spec's folder
   std::vector<BuildingFitParameterEntry> parameters;
+  std::vector<BuildingFitPriorEntry> priors;
   std::vector<std::string> channels;
   std::optional<double> band_low{}, band_high{};
   bool force_driven = false;  // input: force

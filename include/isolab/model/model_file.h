@@ -49,6 +49,7 @@
 //     parameters: [{name: isolation.c1.k0, value: 13.2, log: true}, ...]
 //     covariance: [[...], ...]                       # of the coordinates, one row per parameter
 //     model_form: [{fitted_on: [ica50], values: [...]}, ...]  # fits to subsets of the motions
+//     priors: [{name: isolation.c2.k2, value: 0.8, sigma: 0.2, source: "design data"}, ...]
 //
 // A model with `structure` or `plan` can be run in time (build_structure.h lays it out); a model
 // with only `isolation` is a bearing, for `cyclic` and `fit`. Every error is an InputError
@@ -168,12 +169,24 @@ struct ModelFormFit {
   std::vector<double> values;          // one per parameter, in the model's units
 };
 
+// A parameter the data could not fix, given instead from what engineers know (`priors:`, from a
+// building fit specification's priors): its value (model units, > 0), its standard deviation in
+// ln p, and where it comes from (design data, a preset, a manufacturer's test). A band draws it
+// log-normally about the model's own value, beside the fitted parameters.
+struct ParameterPrior {
+  std::string name;
+  double value = 0.0;
+  double sigma = 0.0;
+  std::string source;
+};
+
 struct ParameterUncertainty {
   std::vector<std::string> names;
   std::vector<double> values;
   std::vector<bool> log;
   Eigen::MatrixXd covariance;
   std::vector<ModelFormFit> model_form;  // empty: the parameters' uncertainty alone
+  std::vector<ParameterPrior> priors;    // not fitted: given from outside the data
 };
 
 struct ModelFile {
