@@ -117,7 +117,7 @@ def test_building_fit_refuses_what_does_not_apply(repo, tmp_path, shake_table):
         (dict(building=spec, cross_validate=True, model_form=True),
          "cross_validate=True and model_form=True"),
         (dict(building=spec, model_form=True),
-         r"the model form \(--model-form\) holds one motion out and fits the others"),
+         "the model form holds one motion out and fits the others"),
         (dict(building=spec, cross_validate=True), "output= with cross_validate=True"),
         (dict(model=repo / SPEC, output=output), "output= applies to building="),
     ]

@@ -104,6 +104,19 @@ BuildingDiagnosis DiagnoseBuilding(const model::ModelFile& model,
   const auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
   };
+  // The isolation is derived again from its loops, every component refitted there: a value
+  // given from outside the data could not be held through that. The structure's priors hold in
+  // both building fits.
+  for (const PriorSpec& prior : spec.priors) {
+    if (prior.name.rfind("isolation.", 0) == 0) {
+      throw InputError({model.path},
+                       fmt::format("prior '{}': the building's diagnosis derives the isolation "
+                                   "again from its loops, refitting every component, so a value "
+                                   "given for one cannot be held; give priors on the structure "
+                                   "only, or fit the building (isolab fit --building) with it",
+                                   prior.name));
+    }
+  }
   BuildingDiagnosis result;
   result.base = FitBuilding(model, motions, spec, fit);
   result.base_parameters = int(spec.parameters.size());

@@ -96,7 +96,26 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
   for (const model::BuildingFitParameterEntry& entry : file.parameters) {
     spec.parameters.push_back({entry.name, entry.low, entry.high, entry.start});
   }
-  for (const model::BuildingFitPriorEntry& entry : file.priors) {
+  for (std::size_t i = 0; i < file.priors.size(); ++i) {
+    const model::BuildingFitPriorEntry& entry = file.priors[i];
+    // The name and, where no value is given, the model's value are the model's to check; said at
+    // the specification's line.
+    const std::string at = fmt::format("priors[{}]", i);
+    double value = 0.0;
+    try {
+      value = ParameterValue(inputs.model, entry.name);
+    } catch (const InputError& error) {
+      std::string reason = error.what();
+      const std::string prefix = error.location().Describe() + ": ";
+      if (reason.rfind(prefix, 0) == 0) reason.erase(0, prefix.size());
+      throw InputError(entry.where, fmt::format("{}.name: {}", at, reason));
+    }
+    if (!entry.value && !(value > 0.0)) {
+      throw InputError(entry.where,
+                       fmt::format("{}: the model's {} is {:g}; a prior is drawn in ln p, so "
+                                   "give a value > 0",
+                                   at, entry.name, value));
+    }
     spec.priors.push_back({entry.name, entry.value, entry.sigma, entry.source});
   }
   for (const std::string& channel : file.channels) {

@@ -101,6 +101,7 @@ std::string CrossValidationJson(const CrossValidation& outcome) {
     }
     if (fold.band) {
       entry["band"] = {{"samples", fold.band->samples},
+                       {"widening", fold.band->widening},
                        {"coverage",
                         {{"isolator_displacement", fold.band->isolator_coverage},
                          {"roof_acceleration", fold.band->roof_coverage}}},
@@ -183,10 +184,15 @@ std::string CrossValidationText(const CrossValidation& outcome) {
       channels.push_back(fmt::format("{} {:.3f}", c.channel, c.nrmse));
     }
     const std::string band =
-        fold.band ? fmt::format("{:.0f} %, {:.0f} % ({}, {})", 100 * fold.band->isolator_coverage,
+        fold.band ? fmt::format("{:.0f} %, {:.0f} % ({}, {}{})", 100 * fold.band->isolator_coverage,
                                 100 * fold.band->roof_coverage,
                                 fold.band->isolator_peak_inside ? "yes" : "no",
-                                fold.band->roof_peak_inside ? "yes" : "no")
+                                fold.band->roof_peak_inside ? "yes" : "no",
+                                fold.band->widening > 1.0
+                                    ? fmt::format("; widened {:.2f} times beyond the identified "
+                                                  "range",
+                                                  fold.band->widening)
+                                    : "")
         : fold.band_refused.empty() ? std::string("-")
                                     : std::string("none: ") + fold.band_refused;
     text += fmt::format("| {} | {} | {:.4g} ({}) | {:.4g} | {} | {} |\n", fold.motion,

@@ -17,7 +17,7 @@ BuildingFitOutcome RunBuildingFit(const model::ModelFile& model,
     return outcome;
   }
   if (mode == BuildingFitMode::kModelForm) {
-    CheckCrossValidation(model, motions, spec, "the model form (--model-form)");
+    CheckCrossValidation(model, motions, spec, "the model form");
   }
   outcome.fit = FitBuilding(model, motions, spec, options);
   if (mode == BuildingFitMode::kModelForm) {

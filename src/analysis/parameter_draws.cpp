@@ -12,6 +12,15 @@
 #include "isolab/core/errors.h"
 
 namespace isolab::analysis {
+namespace {
+
+// The priors' random stream: seeded from the draws' seed, apart from the fitted parameters'.
+std::mt19937_64 PriorEngine(unsigned seed) {
+  std::seed_seq sequence{seed, 1u};
+  return std::mt19937_64(sequence);
+}
+
+}  // namespace
 
 Eigen::MatrixXd DrawnCovariance(const model::ParameterUncertainty& u) {
   Eigen::MatrixXd covariance = u.covariance;
@@ -24,10 +33,13 @@ Eigen::MatrixXd DrawnCovariance(const model::ParameterUncertainty& u) {
     }
     return c;
   };
+  // The jackknife's pseudo-values J c - (J - 1) c_j stand for what each motion alone would give;
+  // their spread about c is (J - 1)^2 / J times the sum of the held-out fits' outer products.
   const Eigen::VectorXd all = coordinates(u.values);
+  const double folds = double(u.model_form.size());
   for (const model::ModelFormFit& fit : u.model_form) {
     const Eigen::VectorXd offset = coordinates(fit.values) - all;
-    covariance += offset * offset.transpose() / double(u.model_form.size());
+    covariance += (folds - 1.0) * (folds - 1.0) / folds * offset * offset.transpose();
   }
   return covariance;
 }
@@ -67,14 +79,21 @@ std::string PriorsBeyondRangeText(const model::ModelFile& model) {
   if (!model.uncertainty || model.uncertainty->priors.empty()) return "";
   std::vector<std::string> given;
   for (const model::ParameterPrior& prior : model.uncertainty->priors) {
-    given.push_back(fmt::format("{} = {:.4g} ({})", prior.name, prior.value, prior.source));
+    // The model's value as it runs (an edit may have moved it from the prior's); the prior's
+    // where the model no longer has the parameter, which only a band (ParameterDraws) refuses.
+    double value = prior.value;
+    try {
+      value = ParameterValue(model, prior.name);
+    } catch (const InputError&) {
+    }
+    given.push_back(fmt::format("{} = {:.4g} ({})", prior.name, value, prior.source));
   }
   return fmt::format("; beyond it the response also rests on parameters given, not fitted: {}",
                      fmt::join(given, ", "));
 }
 
 ParameterDraws::ParameterDraws(const model::ModelFile& model, unsigned seed, double widening)
-    : model_(model), random_(seed) {
+    : model_(model), random_(seed), prior_random_(PriorEngine(seed)) {
   if (!model.uncertainty) {
     throw InputError({model.path},
                      "the model carries no uncertainty: section (a model written by isolab fit "
@@ -148,7 +167,7 @@ model::ModelFile ParameterDraws::Next() {
   if (!prior_names_.empty()) {
     std::vector<double> given(prior_names_.size());
     for (std::size_t p = 0; p < given.size(); ++p) {
-      given[p] = std::exp(prior_centres_[p] + prior_sigmas_[p] * normal_(random_));
+      given[p] = std::exp(prior_centres_[p] + prior_sigmas_[p] * prior_normal_(prior_random_));
     }
     SetParameters(&drawn, prior_names_, given);
   }

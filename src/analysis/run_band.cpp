@@ -17,8 +17,11 @@ RunBand PredictRunBand(const model::ModelFile& model, const RunOverrides& overri
   RunBand band;
   if (model.identified_range) {  // how far the model's own run goes past it (parameter_draws.h)
     const Summary own = Solve(options, Prepare(model, overrides));
-    band.widening = BandWidening(model, own.peaks.isolator_displacement.value,
-                                 own.peaks.isolator_velocity.value);
+    // A run that stopped early has no peaks to go by; the run itself says why.
+    if (own.ok()) {
+      band.widening = BandWidening(model, own.peaks.isolator_displacement.value,
+                                   own.peaks.isolator_velocity.value);
+    }
   }
   ParameterDraws draws(model, seed, band.widening);
   band.contents = BandContents(model, band.widening);

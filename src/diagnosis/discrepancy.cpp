@@ -116,8 +116,12 @@ void ReadAtRest(const CyclicTestData& test, const std::vector<double>& f, NoiseE
   double sum = 0.0, square = 0.0;
   for (std::size_t k = 0; k < rest; ++k) sum += f[k], square += f[k] * f[k];
   const double mean = sum / double(rest);
-  estimate.rest_sigma = std::sqrt(std::max(square / double(rest) - mean * mean, 0.0) *
-                                  double(rest) / double(rest - 1));
+  const double sigma = std::sqrt(std::max(square / double(rest) - mean * mean, 0.0) *
+                                 double(rest) / double(rest - 1));
+  // A channel that reads one value at rest (a quantised load cell whose noise is below its step)
+  // shows no noise there: no read, not a floor of zero.
+  if (!(sigma > 0.0)) return;
+  estimate.rest_sigma = sigma;
   estimate.rest_samples = static_cast<long>(rest);
 }
 

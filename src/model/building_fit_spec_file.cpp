@@ -8,51 +8,13 @@
 
 namespace isolab::model {
 
-namespace {
-
-// priors: [{name, value, sigma, source}], none fitted, none twice.
-void ReadPriors(const YamlReader& reader, const YAML::Node& priors, BuildingFitSpecFile* spec) {
-  reader.RequireSequence(priors, "priors");
-  for (std::size_t i = 0; i < priors.size(); ++i) {
-    const std::string at = IndexPath("priors", i);
-    const YAML::Node entry = priors[i];
-    reader.RequireMap(entry, at);
-    reader.CheckKeys(entry, at, {"name", "value", "sigma", "source"});
-    BuildingFitPriorEntry prior;
-    prior.name = reader.ReadString(reader.Require(entry, at, "name"), at + ".name");
-    if (entry["value"]) prior.value = reader.ReadNumber(entry["value"], at + ".value");
-    prior.sigma = reader.ReadNumber(reader.Require(entry, at, "sigma"), at + ".sigma");
-    prior.source = reader.ReadString(reader.Require(entry, at, "source"), at + ".source");
-    // An absent value is the model's, checked when the fit reads it.
-    CheckPrior(reader, entry, at, prior.value.value_or(1.0), prior.sigma);
-    for (std::size_t j = 0; j < spec->parameters.size(); ++j) {
-      if (spec->parameters[j].name == prior.name) {
-        reader.Fail(entry["name"], at + ".name",
-                    fmt::format("'{}' is fitted ({}): a prior gives what the fit does not",
-                                prior.name, IndexPath("parameters", j)));
-      }
-    }
-    for (std::size_t j = 0; j < spec->priors.size(); ++j) {
-      if (spec->priors[j].name == prior.name) {
-        reader.Fail(entry["name"], at + ".name",
-                    fmt::format("'{}' has a prior already ({})", prior.name,
-                                IndexPath("priors", j)));
-      }
-    }
-    spec->priors.push_back(std::move(prior));
-  }
-}
-
-}  // namespace
-
 BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
   const YamlReader reader(path);
   const YAML::Node root = reader.LoadFile();
   reader.RequireMap(root, "");
-  reader.CheckKeys(
-      root, "",
-      {"description", "model", "input", "parameters", "channels", "band", "pause", "substeps",
-       "priors"});
+  reader.CheckKeys(root, "",
+                   {"description", "model", "input", "parameters", "channels", "band", "pause",
+                    "substeps", "priors"});
   BuildingFitSpecFile spec;
   spec.path = path;
   const std::string model = reader.ReadString(reader.Require(root, "", "model"), "model");
@@ -104,7 +66,13 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
     }
     spec.parameters.push_back(std::move(parameter));
   }
-  if (const YAML::Node priors = root["priors"]) ReadPriors(reader, priors, &spec);
+  if (const YAML::Node priors = root["priors"]) {
+    std::vector<std::string> fitted;
+    for (const BuildingFitParameterEntry& parameter : spec.parameters) {
+      fitted.push_back(parameter.name);
+    }
+    spec.priors = ReadPriorEntries(reader, priors, "priors", false, fitted);
+  }
   if (const YAML::Node channels = root["channels"]) {
     reader.RequireSequence(channels, "channels");
     for (std::size_t i = 0; i < channels.size(); ++i) {

@@ -13,13 +13,46 @@
 
 namespace isolab::model {
 
-void CheckPrior(const YamlReader& reader, const YAML::Node& entry, const std::string& at,
-                double value, double sigma) {
-  if (!(value > 0.0)) reader.Fail(entry["value"], at + ".value", "must be > 0 (drawn in ln p)");
-  if (!(sigma > 0.0 && sigma <= std::log(10.0))) {
-    reader.Fail(entry["sigma"], at + ".sigma",
-                "must be in (0, ln 10 = 2.303]: a standard deviation in ln p, at most a factor 10");
+std::vector<BuildingFitPriorEntry> ReadPriorEntries(const YamlReader& reader,
+                                                    const YAML::Node& node, const std::string& path,
+                                                    bool value_required,
+                                                    std::span<const std::string> fitted) {
+  reader.RequireSequence(node, path);
+  std::vector<BuildingFitPriorEntry> priors;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string at = IndexPath(path, i);
+    const YAML::Node entry = node[i];
+    reader.RequireMap(entry, at);
+    reader.CheckKeys(entry, at, {"name", "value", "sigma", "source"});
+    BuildingFitPriorEntry prior;
+    prior.where = reader.Locate(entry["name"]);
+    prior.name = reader.ReadString(reader.Require(entry, at, "name"), at + ".name");
+    if (value_required || entry["value"]) {
+      prior.value = reader.ReadNumber(reader.Require(entry, at, "value"), at + ".value");
+      if (!(*prior.value > 0.0)) {
+        reader.Fail(entry["value"], at + ".value", "must be > 0 (drawn in ln p)");
+      }
+    }
+    prior.sigma = reader.ReadNumber(reader.Require(entry, at, "sigma"), at + ".sigma");
+    if (!(prior.sigma > 0.0 && prior.sigma <= std::log(10.0))) {
+      reader.Fail(
+          entry["sigma"], at + ".sigma",
+          "must be in (0, ln 10 = 2.303]: a standard deviation in ln p, at most a factor 10");
+    }
+    prior.source = reader.ReadString(reader.Require(entry, at, "source"), at + ".source");
+    if (const auto it = std::find(fitted.begin(), fitted.end(), prior.name); it != fitted.end()) {
+      reader.Fail(entry["name"], at + ".name",
+                  fmt::format("'{}' is fitted: a prior gives what the fit does not", prior.name));
+    }
+    for (std::size_t j = 0; j < priors.size(); ++j) {
+      if (priors[j].name == prior.name) {
+        reader.Fail(entry["name"], at + ".name",
+                    fmt::format("'{}' has a prior already ({})", prior.name, IndexPath(path, j)));
+      }
+    }
+    priors.push_back(std::move(prior));
   }
+  return priors;
 }
 
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root) {
@@ -225,7 +258,9 @@ std::vector<ModelFormFit> ReadModelForm(const YamlReader& reader, const YAML::No
                                         const ParameterUncertainty& uncertainty) {
   const std::string path = "uncertainty.model_form";
   reader.RequireSequence(node, path);
-  if (node.size() == 0) reader.Fail(node, path, "expected at least one fit");
+  if (node.size() < 2) {
+    reader.Fail(node, path, "expected at least two fits, one for each motion held out");
+  }
   std::vector<ModelFormFit> fits;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string at = IndexPath(path, i);
@@ -252,32 +287,6 @@ std::vector<ModelFormFit> ReadModelForm(const YamlReader& reader, const YAML::No
     }
   }
   return fits;
-}
-
-// uncertainty.priors: [{name, value, sigma, source}], none naming a fitted parameter.
-std::vector<ParameterPrior> ReadPriors(const YamlReader& reader, const YAML::Node& node,
-                                       const ParameterUncertainty& uncertainty) {
-  const std::string path = "uncertainty.priors";
-  reader.RequireSequence(node, path);
-  std::vector<ParameterPrior> priors;
-  for (std::size_t i = 0; i < node.size(); ++i) {
-    const std::string at = IndexPath(path, i);
-    reader.RequireMap(node[i], at);
-    reader.CheckKeys(node[i], at, {"name", "value", "sigma", "source"});
-    ParameterPrior& prior = priors.emplace_back();
-    prior.name = reader.ReadString(reader.Require(node[i], at, "name"), at + ".name");
-    prior.value = reader.ReadNumber(reader.Require(node[i], at, "value"), at + ".value");
-    prior.sigma = reader.ReadNumber(reader.Require(node[i], at, "sigma"), at + ".sigma");
-    prior.source = reader.ReadString(reader.Require(node[i], at, "source"), at + ".source");
-    CheckPrior(reader, node[i], at, prior.value, prior.sigma);
-    const auto& names = uncertainty.names;
-    if (std::find(names.begin(), names.end(), prior.name) != names.end()) {
-      reader.Fail(node[i]["name"], at + ".name",
-                  fmt::format("'{}' is a fitted parameter: a prior gives what the fit did not",
-                              prior.name));
-    }
-  }
-  return priors;
 }
 
 // uncertainty: {parameters: [{name, value, log}], covariance: [[...]], model_form: [...],
@@ -341,7 +350,12 @@ ParameterUncertainty ReadUncertainty(const YamlReader& reader, const YAML::Node&
   if (node["model_form"]) {
     uncertainty.model_form = ReadModelForm(reader, node["model_form"], uncertainty);
   }
-  if (node["priors"]) uncertainty.priors = ReadPriors(reader, node["priors"], uncertainty);
+  if (node["priors"]) {
+    for (const BuildingFitPriorEntry& prior :
+         ReadPriorEntries(reader, node["priors"], "uncertainty.priors", true, uncertainty.names)) {
+      uncertainty.priors.push_back({prior.name, *prior.value, prior.sigma, prior.source});
+    }
+  }
   return uncertainty;
 }
 

@@ -2,8 +2,11 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
+#include <vector>
 
+#include "isolab/model/building_fit_spec_file.h"
 #include "isolab/model/model_file.h"
 #include "isolab/model/study_file.h"
 #include "yaml_reader.h"
@@ -15,10 +18,13 @@ double ReadPositive(const YamlReader& reader, const YAML::Node& map, const std::
                     std::string_view key, Dimension dimension, const UnitSystem& units);
 double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::string& path);
 
-// A prior's value (> 0) and sigma (in ln p: (0, ln 10]), as a building fit specification's
-// priors and a fitted model's uncertainty.priors give them; `at` locates `entry`.
-void CheckPrior(const YamlReader& reader, const YAML::Node& entry, const std::string& at,
-                double value, double sigma);
+// A list of priors at `path` (a building fit specification's `priors`, a fitted model's
+// `uncertainty.priors`): each {name, value, sigma, source}, the value > 0 (required, or default
+// the model's), sigma in ln p in (0, ln 10], none named twice nor among `fitted`.
+std::vector<BuildingFitPriorEntry> ReadPriorEntries(const YamlReader& reader,
+                                                    const YAML::Node& node, const std::string& path,
+                                                    bool value_required,
+                                                    std::span<const std::string> fitted);
 
 // The required `units` section of a model (or fit specification) file.
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);

@@ -102,5 +102,28 @@ TEST(BuildingDiagnosis, RefusesMotionsWithoutEveryLevelsAcceleration) {
       InputError);
 }
 
+// The diagnosis refits every isolation component from the loops, so it cannot hold a prior given
+// for one: refused before any fit, by the prior's name. A prior on the structure holds (here the
+// loops name nothing, so the base fit is the final model).
+TEST(BuildingDiagnosis, RefusesAPriorOnTheIsolationAndHoldsOneOnTheStructure) {
+  const std::vector<BuildingMotion> motions = Measured(Model(BuildingText(kBilinear)));
+  BuildingFitSpec spec = Spec();
+  spec.parameters.pop_back();  // damping.ratio: given instead
+  spec.priors = {{"isolation.iso.uy", 6.0, 0.1, "design data"}};
+  try {
+    DiagnoseBuilding(Model(BuildingText(kBilinear)), motions, spec, Options(100), Settings());
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("prior 'isolation.iso.uy': the building's diagnosis"),
+              std::string::npos)
+        << error.what();
+  }
+  spec.priors = {{"damping.ratio", 0.04, 0.2, "design data"}};
+  const BuildingDiagnosis result = DiagnoseBuilding(Model(BuildingText(kBilinear, 60.0, 0.03)),
+                                                    motions, spec, Options(600), Settings());
+  EXPECT_EQ(ParameterValue(result.base.fitted, "damping.ratio"), 0.04);
+  EXPECT_EQ(ParameterValue(result.Final(), "damping.ratio"), 0.04);
+}
+
 }  // namespace
 }  // namespace isolab::analysis

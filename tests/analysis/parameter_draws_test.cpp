@@ -77,6 +77,43 @@ TEST(ParameterDraws, TheModelFormAddsTheFitsSpreadToTheCovarianceAboutTheModelsV
 // (the larger of the displacement and velocity ratios), once that passes the 1.1 margin; within
 // it, and for a model without an identified range, they are not. With the same seed a widened
 // draw is the model's values plus exactly that multiple of the unwidened draw's offset.
+// Three motions whose own fits would give m_1, m_2, m_3 (in ln p), a fit that averages them (as a
+// linear least-squares fit of equally weighted motions does): the fit to every motion is their
+// mean and each held-out fit the mean of the other two. The model form must then add the spread of
+// the three motions' own values about their mean, (1/3) sum (m_j - mean)^2, which the held-out
+// fits alone, each two thirds of the way back to the mean, would understate fourfold.
+TEST(ParameterDraws, WithThreeMotionsTheModelFormIsTheSpreadOfWhatEachMotionAloneGives) {
+  const double m[3][2] = {{std::log(1.2), std::log(50.0)},
+                          {std::log(1.5), std::log(66.0)},
+                          {std::log(2.1), std::log(58.0)}};
+  double mean[2] = {0, 0};
+  for (const auto& motion : m) mean[0] += motion[0] / 3, mean[1] += motion[1] / 3;
+  const auto held_out = [&](int j, int p) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) sum += k == j ? 0.0 : m[k][p] / 2;
+    return std::exp(sum);
+  };
+  std::string text =
+      BuildingText(kBilinear) + "uncertainty:\n  parameters: [" +
+      "{name: isolation.iso.k1, value: " + std::to_string(std::exp(mean[0])) +
+      ", log: true}, {name: stories.stiffness, value: " + std::to_string(std::exp(mean[1])) +
+      ", log: true}]\n" + "  covariance: [[0, 0], [0, 0]]\n  model_form:\n";
+  for (int j = 0; j < 3; ++j) {
+    text += "    - {fitted_on: [m" + std::to_string(j) + "], values: [" +
+            std::to_string(held_out(j, 0)) + ", " + std::to_string(held_out(j, 1)) + "]}\n";
+  }
+  const model::ModelFile model = Model(text);
+  const Eigen::MatrixXd drawn = DrawnCovariance(*model.uncertainty);
+  for (int a = 0; a < 2; ++a) {
+    for (int b = 0; b < 2; ++b) {
+      double spread = 0.0;
+      for (const auto& motion : m) spread += (motion[a] - mean[a]) * (motion[b] - mean[b]) / 3;
+      // std::to_string's six decimals of the values written above: 1e-6 relative in ln p.
+      EXPECT_NEAR(drawn(a, b), spread, 2e-5 * std::abs(spread) + 1e-9) << a << "," << b;
+    }
+  }
+}
+
 TEST(ParameterDraws, BeyondTheIdentifiedRangeTheOffsetsGrowByHowFarTheRunGoes) {
   model::ModelFile model = Model(BuildingText(kBilinear) + kUncertainty);
   EXPECT_EQ(BandWidening(model, 500.0, 5000.0), 1.0);  // no identified range
@@ -100,8 +137,8 @@ TEST(ParameterDraws, BeyondTheIdentifiedRangeTheOffsetsGrowByHowFarTheRunGoes) {
 }
 
 // A prior (a parameter given, not fitted) is drawn independently, log-normally with its sigma
-// about the model's own value (an edited 7 here, not the prior's 6), unwidened; a prior naming a
-// fitted parameter is refused where it is.
+// about the model's own value (an edited 7 here, not the prior's 6), unwidened, from a stream of
+// its own; a prior naming a fitted parameter is refused where it is.
 TEST(ParameterDraws, APriorIsDrawnWithItsSigmaAboutTheModelsValue) {
   const std::string prior =
       "  priors: [{name: isolation.iso.uy, value: 6, sigma: 0.2, source: design data}]\n";
@@ -120,13 +157,21 @@ TEST(ParameterDraws, APriorIsDrawnWithItsSigmaAboutTheModelsValue) {
   EXPECT_EQ(BandContents(model),
             "the parameters' uncertainty, with 1 parameter from a prior (isolation.iso.uy: "
             "design data)");
+  // The prior draws from its own stream: the fitted parameters' draws are those without it.
+  model::ModelFile without = model;
+  without.uncertainty->priors.clear();
+  ParameterDraws a(model, 4), b(without, 4);
+  for (int s = 0; s < 3; ++s) {
+    EXPECT_EQ(ParameterValue(a.Next(), "isolation.iso.k1"),
+              ParameterValue(b.Next(), "isolation.iso.k1"));
+  }
   try {
     Model(BuildingText(kBilinear) + kUncertainty +
           "  priors: [{name: isolation.iso.k1, value: 2, sigma: 0.2, source: x}]\n");
     ADD_FAILURE() << "accepted";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what())
-                  .find("uncertainty.priors[0].name: 'isolation.iso.k1' is a fitted parameter"),
+                  .find("uncertainty.priors[0].name: 'isolation.iso.k1' is fitted: a prior gives"),
               std::string::npos)
         << error.what();
   }
@@ -141,16 +186,19 @@ TEST(ParameterDraws, AModelFormWithTheWrongCountOrANonPositiveLogValueIsRefusedW
     }
     return std::string("accepted");
   };
-  EXPECT_NE(error("    - {fitted_on: [a], values: [1.8]}\n")
+  EXPECT_NE(error("    - {fitted_on: [a], values: [1.8]}\n    - {fitted_on: [b], values: [1, 2]}\n")
                 .find("uncertainty.model_form[0].values: expected 2 numbers, one per parameter"),
             std::string::npos);
   EXPECT_NE(error("    - {fitted_on: [a], values: [1.8, 60]}\n"
                   "    - {fitted_on: [b], values: [-1, 60]}\n")
                 .find("uncertainty.model_form[1].values[0]: must be > 0"),
             std::string::npos);
-  EXPECT_NE(error("    - {fitted_on: [a], value: [1.8, 60]}\n").find("model_form[0]"),
-            std::string::npos);
-  EXPECT_NE(error("    []\n").find("uncertainty.model_form: expected at least one fit"),
+  EXPECT_NE(
+      error("    - {fitted_on: [a], value: [1.8, 60]}\n    - {fitted_on: [b], values: [1, 2]}\n")
+          .find("model_form[0]"),
+      std::string::npos);
+  EXPECT_NE(error("    - {fitted_on: [a], values: [1.8, 60]}\n")
+                .find("uncertainty.model_form: expected at least two fits"),
             std::string::npos);
 }
 

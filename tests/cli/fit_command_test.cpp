@@ -456,14 +456,15 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
       // Priors: given, so never fitted; a sigma of a factor 10 or more, a value not > 0 and a
       // prior without its source are refused where they are.
       {"priors:\n  - {name: isolation.k.k, sigma: 0.1, source: x}\n", "",
-       "priors[0].name: 'isolation.k.k' is fitted (parameters[0])"},
+       "priors[0].name: 'isolation.k.k' is fitted: a prior gives what the fit does not"},
       {"priors:\n  - {name: isolation.z.gamma, sigma: 3, source: x}\n", "",
        "priors[0].sigma: must be in (0, ln 10 = 2.303]"},
       {"priors:\n  - {name: isolation.z.gamma, value: -1, sigma: 0.1, source: x}\n", "",
        "priors[0].value: must be > 0"},
       {"priors:\n  - {name: isolation.z.gamma, sigma: 0.1}\n", "",
        "priors[0]: missing key 'source'"},
-      {"priors:\n  - {name: isolation.z.no_such, sigma: 0.1, source: x}\n", "", "no_such"},
+      {"priors:\n  - {name: isolation.z.no_such, sigma: 0.1, source: x}\n", "",
+       "force_spec.yaml:8:12: priors[0].name: parameter 'isolation.z.no_such'"},
   };
   for (const Case& c : cases) {
     const auto refused = TemporaryFile("refused.yaml");

@@ -617,6 +617,7 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
   // a prior, which the response beyond the range rests on too.
   const auto own = spread["peaks"]["isolator_displacement"]["value"].get<double>();
   const auto beyond = isolab::testing::OwnTestFile("beyond.yaml");
+  const auto beyond_prior = isolab::testing::OwnTestFile("beyond_prior.yaml");
   {
     std::ifstream in(model("[[0.01, 0], [0, 0.0025]]"));
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -625,28 +626,30 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
                  components.substr(0, components.size() - 12) +
                      "identified_range: {displacement: " + std::to_string(own / 3) +
                      ", velocity: 1.0e9, cycles: 3, data: [m]}\n  components:\n");
-    std::ofstream(beyond)
+    std::ofstream(beyond) << text;
+    std::ofstream(beyond_prior)
         << text
         << "  priors: [{name: isolation.iso.uy, value: 5, sigma: 0.1, source: design data}]\n";
   }
   const auto widened = run(beyond.string());
+  const auto with_prior = run(beyond_prior.string());
   // 3 to the six decimals std::to_string wrote the identified displacement with.
   EXPECT_NEAR(widened["band"]["widening"].get<double>(), 3.0, 1e-6);
   EXPECT_NE(widened["band"]["contents"].get<std::string>().find("widened 3.00 times beyond"),
             std::string::npos);
   EXPECT_EQ(spread["band"]["widening"].get<double>(), 1.0);  // no identified range
-  EXPECT_NE(widened["band"]["contents"].get<std::string>().find(
+  EXPECT_NE(with_prior["band"]["contents"].get<std::string>().find(
                 "with 1 parameter from a prior (isolation.iso.uy: design data)"),
             std::string::npos);
   bool named = false;
-  for (const auto& warning : widened["warnings"]) {
+  for (const auto& warning : with_prior["warnings"]) {
     named |= warning.get<std::string>().find(
                  "far beyond the range the fit saw (more than 2 times it): the response there "
                  "rests on the law's form alone, not on the data; beyond it the response also "
                  "rests on parameters given, not fitted: isolation.iso.uy = 5 (design data)") !=
              std::string::npos;
   }
-  EXPECT_TRUE(named) << widened["warnings"].dump();
+  EXPECT_TRUE(named) << with_prior["warnings"].dump();
   const auto width = [](const nlohmann::json& band) {
     return band["isolator_displacement"]["p95"].get<double>() -
            band["isolator_displacement"]["p5"].get<double>();

@@ -173,6 +173,29 @@ TEST(NoiseFloor, AChatteringDeviceHasTheSameFloorAt1024And128Hz) {
   EXPECT_NEAR(residual_128 / truth_128, 1.0, 0.3);
 }
 
+// The same damper without chatter, at rest for a quarter of a second: the two reads agree within
+// the factor of two (the friction's sharp reversals put harmonic lines above the response, which
+// the band read's low quantile passes over), so no test is uncertain and the floor is the rest
+// read's. A load cell quantised far above its noise reads one value at rest: no rest read.
+TEST(NoiseEstimate, AQuietDeviceIsNotUncertainAndAConstantRestIsNoRead) {
+  testing::DamperNoise noise;
+  noise.rest_seconds = 0.25;
+  for (const auto& test : testing::FrictionDamperTests(1024.0, noise)) {
+    const NoiseEstimate n = EstimateForceNoise(test);
+    std::printf("  %s quiet: rest read %.4g, band read %.4g\n", test.name.c_str(), n.rest_sigma,
+                n.band_sigma);
+    EXPECT_FALSE(n.uncertain) << test.name << ": " << n.Describe();
+    EXPECT_EQ(n.source, NoiseEstimate::Source::kRest) << test.name;
+  }
+  noise.quantum = 0.5;  // kip: 25 times the noise
+  for (const auto& test : testing::FrictionDamperTests(1024.0, noise)) {
+    const NoiseEstimate n = EstimateForceNoise(test);
+    EXPECT_EQ(n.rest_samples, 0) << test.name;
+    EXPECT_FALSE(n.uncertain) << test.name;
+    EXPECT_EQ(n.source, NoiseEstimate::Source::kBand) << test.name;
+  }
+}
+
 TEST(EffectiveSamples, AnAr1ResidualCountsAsNTimesOneLessRhoOverOnePlusRho) {
   const auto spring = hysteresis::SingleLaw(LawType::kLinearSpring, {0.5});
   auto tests = identification::SyntheticTests(spring, {{50, 100}, {2.0}, 10, 2000});

@@ -30,8 +30,8 @@ std::string BuildingFitJson(const BuildingFitResult& result, bool sequential,
 // A cross-validation as `isolab fit --building --cross-validate --json` prints it and
 // isolab.fit(building=..., cross_validate=True) returns it: "folds" (held_out, fitted_on,
 // objective_fitted, objective_held_out, channels (channel, nrmse), stop, evaluations and, for
-// shake-table motions, band (samples, coverage and peak_inside of the isolator displacement and
-// roof acceleration)) and "seconds".
+// shake-table motions, band (samples, widening beyond the fold's identified range, coverage and
+// peak_inside of the isolator displacement and roof acceleration)) and "seconds".
 std::string CrossValidationJson(const CrossValidation& outcome);
 
 // Its text: one table row per held-out motion, then what the numbers mean.

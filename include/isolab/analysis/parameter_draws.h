@@ -5,20 +5,25 @@
 // (a zero eigenvalue) still gives the others. What a prediction band runs (prediction_band.h,
 // run_band.h), and the percentiles it reports.
 //
-// Model form: where the uncertainty carries fits to subsets of the motions (`model_form`), their
-// spread about the fit to every motion is added to the covariance, each fit weighted alike:
-//   C = covariance + (1/J) sum_j (c_j - c)(c_j - c)^T,
-// c_j the coordinates of fit j, c those of `values`. The fits differ where the data cannot tell
-// the models apart (a damping traded for a stiffness between two motions), which the covariance
-// of one fit, a local curvature, does not hold; the normal law over C is a stated approximation
-// of that spread, not a distribution the data gave.
+// Model form: where the uncertainty carries the fits with each of J motions held out in turn
+// (`model_form`), the spread between motions is added to the covariance, each motion weighted
+// alike. The jackknife's pseudo-values p_j = J c - (J - 1) c_j stand for what motion j alone
+// would give, and their spread about c is
+//   C = covariance + ((J - 1)^2 / J) sum_j (c_j - c)(c_j - c)^T,
+// c_j the coordinates of fit j, c those of `values` (the fit to every motion); for two motions,
+// p_j is the other fit's c_j and this is (1/2) sum_j (c_j - c)(c_j - c)^T. The fits differ where
+// the data cannot tell the models apart (a damping traded for a stiffness between two motions),
+// which the covariance of one fit, a local curvature, does not hold; the normal law over C is a
+// stated approximation of that spread, not a distribution the data gave.
 //
 // Beyond the identified range: where the model's own run goes past the range its isolation was
 // identified on by more than kIdentifiedRangeMargin, by a factor r (IdentifiedRangeFactor), every
 // draw's offset from the model's values is multiplied by r, so the standard deviations are r
 // times the ones above. Past the last measured cycle the laws' behaviour is their form's, not
 // the data's; the band widens with how far the run extrapolates. A rule the project states, not
-// something the data measured: the band's text says it was applied and by how much.
+// something the data measured: the band's text says it was applied and by how much. (The check
+// that refuses an implausibly wide uncertainty, a factor 10 per sigma, reads the model's own,
+// before this widening.)
 //
 // Priors (`priors`: parameters given from design data or a preset, not fitted) are drawn too,
 // each independently, log-normally about the model's own value with its sigma; the widening
@@ -55,7 +60,10 @@ class ParameterDraws {
   std::vector<std::string> prior_names_;
   std::vector<double> prior_centres_, prior_sigmas_;
   std::mt19937_64 random_;
-  std::normal_distribution<double> normal_;
+  // The priors' own stream, so that adding a prior leaves the fitted parameters' draws as they
+  // were for the same seed.
+  std::mt19937_64 prior_random_;
+  std::normal_distribution<double> normal_, prior_normal_;
 };
 
 // The covariance the draws use: the parameters' own, plus the model form's spread where there is

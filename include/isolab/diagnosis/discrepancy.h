@@ -37,8 +37,9 @@ struct CycleRecord {
 // The noise of a test's force channel, estimated where the signal has no content, so that the
 // estimate does not depend on the sampling rate or on how many samples sit at rest. Two reads:
 //  * rest: the force's variance over the samples at the start of the test before the
-//    displacement moves (by more than 0.1 % of its range), when there are at least 64: what the
-//    channel reads with nothing to measure, whatever its spectrum;
+//    displacement moves (by more than 0.1 % of its range), when there are at least 64 and they
+//    are not all one value: what the channel reads with nothing to measure, whatever its
+//    spectrum;
 //  * band: from the Hann-windowed periodogram of the force above the band of the device's
 //    response, f_c = 10 f_u, where f_u bounds 99 % of the displacement's power (its loops'
 //    harmonics decay past that), and at most half the Nyquist frequency. Above f_c the noise

@@ -35,6 +35,7 @@ struct BuildingFitPriorEntry {
   std::optional<double> value{};
   double sigma = 0.0;
   std::string source;
+  SourceLocation where;  // the entry's line, for what only the model can check (its name)
 };
 
 struct BuildingFitSpecFile {
