@@ -6,12 +6,8 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "isolab/analysis/test_data_checks.h"
+#include "isolab/analysis/cyclic_diagnosis.h"
 #include "isolab/core/errors.h"
-#include "isolab/diagnosis/diagnose.h"
-#include "isolab/diagnosis/report.h"
-#include "isolab/io/cyclic_test_file.h"
-#include "isolab/model/fit_spec_file.h"
 
 namespace py = pybind11;
 
@@ -22,45 +18,32 @@ std::string Diagnose(const std::vector<std::string>& data, const std::string& ba
                      unsigned seed, long budget, const std::string& specimen,
                      const std::string& force_unit, const std::string& length_unit, int threads,
                      bool force, bool quiet) {
-  const model::FitSpec base = model::LoadFitSpec(base_path);
-  const bool units_given = !force_unit.empty() && !length_unit.empty();
-  io::CyclicTestSet set = io::ReadCyclicTests(data, {force_unit, length_unit}, base.units);
-  analysis::RequireUnits(set, units_given, "force_unit= and length_unit=");
-  analysis::RequireFiniteSquares(set);
-  const identification::FitData fit_data =
-      diagnosis::AllCycles(std::move(set.tests), io::OneSpecimen(specimen, set.one_specimen));
-  diagnosis::DiagnoseOptions options;
-  options.seed = seed;
-  options.budget = budget;
-  options.threads = threads;
+  analysis::CyclicDiagnosisRequest request;
+  request.data = data;
+  request.base_path = base_path;
+  request.specimen = specimen;
+  request.force_unit = force_unit;
+  request.length_unit = length_unit;
+  request.settings.seed = seed;
+  request.settings.budget = budget;
+  request.settings.threads = threads;
+  request.force = force;
+  request.names.units = "force_unit= and length_unit=";
+  request.names.force = "force=";
   if (!quiet) {
-    options.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
+    request.settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
-  diagnosis::ReportContext context;
-  context.data_files = data;
-  context.base_file = base_path;
-  context.seed = seed;
-  context.force_unit = base.units.force();
-  context.length_unit = base.units.length();
-  std::string json;
   try {
-    const identification::ModelParametrisation parametrisation(base.components,
-                                                               identification::ScalesOf(fit_data));
-    analysis::RequireMoreSamplesThanParameters(fit_data, parametrisation, base_path);
-    identification::FitOptions fit;
-    fit.budget = budget;
-    fit.threads = threads;
-    analysis::RequireWorkWithin(analysis::EstimateFitWork(parametrisation, fit_data, fit),
-                                analysis::kWorkLimit, force, "force=");
+    const analysis::CyclicDiagnosisProblem problem =
+        analysis::PrepareCyclicDiagnosis(std::move(request));
+    diagnosis::ReportContext context;
+    analysis::NameCyclicDiagnosis(problem, &context);
     py::gil_scoped_release release;
-    const diagnosis::Diagnosis result = diagnosis::Diagnose(base.components, fit_data, options);
-    json = diagnosis::RenderJson(diagnosis::BuildReport(result, fit_data, context));
+    const diagnosis::Diagnosis result = analysis::DiagnoseCyclicTests(problem);
+    return diagnosis::RenderJson(diagnosis::BuildReport(result, problem.data, context));
   } catch (const InvalidParameter& error) {
     throw InputError({"diagnose"}, error.violation().Describe());
-  } catch (const std::invalid_argument& error) {
-    throw InputError({base_path}, error.what());
   }
-  return json;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "common_options.h"
 #include "diagnosis_files.h"
 #include "finite_options.h"
+#include "isolab/analysis/cyclic_diagnosis.h"
 #include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
 #include "isolab/diagnosis/diagnose.h"
@@ -117,58 +118,39 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
   if (!options.offsets.empty()) {
     throw InputError({"command line"}, "--offsets applies to --building, not to cyclic tests");
   }
-  const model::FitSpec base = model::LoadFitSpec(options.base);
+  // The files first, so that a refused output costs no diagnosis.
   diagnosis::ReportContext context;
-  context.data_files = options.data;
-  context.base_file = options.base;
-  context.seed = options.seed;
-  context.force_unit = base.units.force();
-  context.length_unit = base.units.length();
   const DiagnosisFiles files =
       DiagnosisFiles::Plan(options.out, options.data.front(), options.plot, &context);
   std::vector<std::string> inputs = options.data;
   inputs.push_back(options.base);
   io::CheckOutputs(inputs, files.outputs);
-  const bool units_given = !options.force_unit.empty() && !options.length_unit.empty();
-  io::CyclicTestSet set =
-      io::ReadCyclicTests(options.data, {options.force_unit, options.length_unit}, base.units);
-  analysis::RequireUnits(set, units_given, "--force-unit and --length-unit");
-  analysis::RequireFiniteSquares(set);
-  const identification::FitData data = diagnosis::AllCycles(
-      std::move(set.tests), io::OneSpecimen(options.specimen, set.one_specimen));
 
-  diagnosis::DiagnoseOptions settings;
-  settings.seed = options.seed;
-  settings.budget = options.budget;
-  settings.threads = options.threads;
-  try {
-    const identification::ModelParametrisation parametrisation(base.components,
-                                                               identification::ScalesOf(data));
-    analysis::RequireMoreSamplesThanParameters(data, parametrisation, options.base);
-    identification::FitOptions fit;
-    fit.budget = options.budget;
-    fit.threads = options.threads;
-    const analysis::FitWork work = analysis::EstimateFitWork(parametrisation, data, fit);
-    analysis::RequireWorkWithin(work, analysis::kWorkLimit, options.force,
-                                "command line (--force)");
-    if (!options.quiet) {
-      fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n  base fit's {}\n",
-                 data.tests.size(),
-                 data.one_specimen ? "one specimen, in order" : "independent specimens",
-                 options.base, work.Describe(analysis::kWorkLimit));
-    }
-  } catch (const std::invalid_argument& error) {
-    throw InputError({options.base}, error.what());
-  }
+  analysis::CyclicDiagnosisRequest request;
+  request.data = options.data;
+  request.base_path = options.base;
+  request.specimen = options.specimen;
+  request.force_unit = options.force_unit;
+  request.length_unit = options.length_unit;
+  request.settings.seed = options.seed;
+  request.settings.budget = options.budget;
+  request.settings.threads = options.threads;
+  request.force = options.force;
   if (!options.quiet) {
-    settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
+    request.settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
-  diagnosis::Diagnosis result;
-  try {
-    result = diagnosis::Diagnose(base.components, data, settings);
-  } catch (const std::invalid_argument& error) {
-    throw InputError({options.base}, error.what());
+  const analysis::CyclicDiagnosisProblem problem =
+      analysis::PrepareCyclicDiagnosis(std::move(request));
+  const model::FitSpec& base = problem.base;
+  const identification::FitData& data = problem.data;
+  analysis::NameCyclicDiagnosis(problem, &context);
+  if (!options.quiet) {
+    fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n  base fit's {}\n",
+               data.tests.size(),
+               data.one_specimen ? "one specimen, in order" : "independent specimens", options.base,
+               problem.work.Describe(analysis::kWorkLimit));
   }
+  const diagnosis::Diagnosis result = analysis::DiagnoseCyclicTests(problem);
 
   // The model first: a model isolab would refuse is a note in the report, not a lost diagnosis.
   try {
