@@ -14,12 +14,12 @@
 #include <numbers>
 #include <string>
 
+#include "brute_force_spectrum.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/record.h"
 #include "isolab/model/design_file.h"
-#include "isolab/spectra/elastic_spectrum.h"
 #include "isolab/study/design_report.h"
 #include "own_test_file.h"
 
@@ -115,22 +115,24 @@ TEST(Design, ScaledSuiteMeanReachesTheTargetOverTheRange) {
   std::vector<double> mean(periods.size(), 0.0);
   for (const DesignRecord& r : o.records) {
     const io::Record record = io::ReadRecord(r.files[0]);  // these are in g
-    integrators::SampledHistory h{record.dt, record.values};
-    for (double& v : h.values) v *= r.factor;
-    const std::vector<double> damping = {0.05};
-    const spectra::ElasticSpectrum s = spectra::ComputeElasticSpectrum(h, periods, damping);
+    std::vector<double> scaled = record.values;
+    for (double& v : scaled) v *= r.factor;
     for (std::size_t p = 0; p < periods.size(); ++p) {
-      mean[p] += s.at(0, p).pseudo_acceleration / 3.0;
+      mean[p] += isolab::testing::BruteForceSa(scaled, record.dt, periods[p], 0.05) / 3.0;
     }
   }
+  // The spectra by the tests' brute force, not the library's the scaling used: it reads a peak
+  // at most 2e-5 below the library's and up to 1e-3 above it
+  // (ElasticSpectrum.AgreesWithTheTestsBruteForceSpectrum).
   double least = 1e9;
   for (std::size_t p = 0; p < periods.size(); ++p) {
     const double t = periods[p];
     const double target = t <= 0.5 ? 1.2 : 0.6 / t;  // S_MS up to S_M1/S_MS = 0.5 s
-    EXPECT_GE(mean[p], target * (1 - 1e-9)) << t;
+    EXPECT_GE(mean[p], target * (1 - 2e-5)) << t;
     least = std::min(least, mean[p] / target);
   }
-  EXPECT_NEAR(least, 1.0, 1e-9);
+  EXPECT_GE(least, 1.0 - 2e-5);
+  EXPECT_LE(least, 1.0 + 1e-3);
 }
 
 // Each bound's written model run alone under each record at its factor: the design's per-record
