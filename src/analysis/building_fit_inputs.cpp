@@ -25,10 +25,8 @@ void RefuseOption(const BuildingOptionNames& names, const std::string& option, c
 std::vector<BuildingMotion> ReadForceDriven(const BuildingData& data, const model::ModelFile& model,
                                             bool* one_specimen) {
   io::CyclicTestSet set =
-      io::ReadCyclicTests(data.data, {data.force_unit, data.length_unit}, model.units);
-  RequireUnits(set, !data.force_unit.empty() && !data.length_unit.empty(),
-               data.names.force_unit + " and " + data.names.length_unit);
-  RequireFiniteSquares(set);
+      ReadCheckedTests(data.data, data.force_unit, data.length_unit, model.units,
+                       data.names.force_unit + " and " + data.names.length_unit);
   *one_specimen = io::OneSpecimen(data.specimen, set.one_specimen);
   const double seconds = model.units.SiFactor(dimension::kTime);
   std::vector<BuildingMotion> motions;

@@ -13,11 +13,8 @@ namespace isolab::analysis {
 CyclicDiagnosisProblem PrepareCyclicDiagnosis(CyclicDiagnosisRequest request) {
   CyclicDiagnosisProblem problem;
   problem.base = model::LoadFitSpec(request.base_path);
-  const bool units_given = !request.force_unit.empty() && !request.length_unit.empty();
-  io::CyclicTestSet set = io::ReadCyclicTests(
-      request.data, {request.force_unit, request.length_unit}, problem.base.units);
-  RequireUnits(set, units_given, request.names.units);
-  RequireFiniteSquares(set);
+  io::CyclicTestSet set = ReadCheckedTests(request.data, request.force_unit, request.length_unit,
+                                           problem.base.units, request.names.units);
   const bool one_specimen = io::OneSpecimen(request.specimen, set.one_specimen);
   try {
     problem.data = diagnosis::AllCycles(std::move(set.tests), one_specimen);

@@ -41,11 +41,8 @@ std::vector<CyclicFitEnergy> EnergyPerSpan(const hysteresis::ParallelAssembly& m
 CyclicFitProblem PrepareCyclicFit(CyclicFitRequest request) {
   CyclicFitProblem problem;
   problem.spec = model::LoadFitSpec(request.spec_path);
-  const bool units_given = !request.force_unit.empty() && !request.length_unit.empty();
-  io::CyclicTestSet set = io::ReadCyclicTests(
-      request.data, {request.force_unit, request.length_unit}, problem.spec.units);
-  RequireUnits(set, units_given, request.names.units);
-  RequireFiniteSquares(set);
+  io::CyclicTestSet set = ReadCheckedTests(request.data, request.force_unit, request.length_unit,
+                                           problem.spec.units, request.names.units);
   problem.one_specimen = io::OneSpecimen(request.specimen, set.one_specimen);
   try {
     problem.data =

@@ -19,6 +19,15 @@ void RequireUnits(const io::CyclicTestSet& set, bool units_given, const std::str
                                how));
 }
 
+io::CyclicTestSet ReadCheckedTests(const std::vector<std::string>& files,
+                                   const std::string& force_unit, const std::string& length_unit,
+                                   const UnitSystem& model_units, const std::string& how) {
+  io::CyclicTestSet set = io::ReadCyclicTests(files, {force_unit, length_unit}, model_units);
+  RequireUnits(set, !force_unit.empty() && !length_unit.empty(), how);
+  RequireFiniteSquares(set);
+  return set;
+}
+
 void RequireFiniteSquares(const io::CyclicTestSet& set) {
   constexpr double kLargest = 1e150;  // its square, 1e300, still fits a double
   for (std::size_t i = 0; i < set.tests.size(); ++i) {

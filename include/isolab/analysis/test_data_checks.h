@@ -28,6 +28,13 @@ void RequireUnits(const io::CyclicTestSet& set, bool units_given, const std::str
 // Throws InputError naming the file, test and column of the first value beyond 1e150.
 void RequireFiniteSquares(const io::CyclicTestSet& set);
 
+// The cyclic tests in `files`, read in `model_units` (or the units the caller gave: both or none,
+// `how` naming them) and checked by RequireUnits and RequireFiniteSquares: what the cyclic fit,
+// the diagnosis and a force-driven building fit read.
+io::CyclicTestSet ReadCheckedTests(const std::vector<std::string>& files,
+                                   const std::string& force_unit, const std::string& length_unit,
+                                   const UnitSystem& model_units, const std::string& how);
+
 // Throws InputError at `spec_path` when the samples to fit are fewer than the model's parameters
 // (shape coordinates plus stiffnesses).
 void RequireMoreSamplesThanParameters(const identification::FitData& data,
