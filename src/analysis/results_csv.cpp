@@ -35,9 +35,8 @@ void WriteComments(std::ostream& out, const RunDescription& run) {
                r.units, r.units_source, r.dt, io::DescribeScale(r), r.pga,
                DescribeUnits(units, dimension::kAcceleration), r.pga / g);
   }
-  if (problem.layout.directions > 1) {
-    fmt::print(out, "# H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle,
-               problem.angle + 90.0);
+  if (const std::optional<double> angle = problem.IncidenceAngle()) {
+    fmt::print(out, "# H1 at {:g} degrees from x, H2 at {:g}\n", *angle, *angle + 90.0);
   }
   fmt::print(out, "# integrator: {}\n", DescribeIntegrator(*run.analysis, problem.grid.dt));
   fmt::print(out, "# excitation ends at {:g} {}, then free vibration for {:g} {}\n",

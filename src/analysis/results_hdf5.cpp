@@ -52,7 +52,9 @@ void WriteRunAttributes(io::Hdf5File& file, const RunDescription& run) {
                             problem.records.empty() ? io::AppliedRecord{} : problem.records[0], g);
   if (problem.records.size() > 1)
     io::WriteRecordAttributes(file, problem.records[1], g, "record_h2");
-  if (problem.layout.directions > 1) file.WriteAttribute("/", "incidence_angle", problem.angle);
+  if (const std::optional<double> angle = problem.IncidenceAngle()) {
+    file.WriteAttribute("/", "incidence_angle", *angle);
+  }
   WriteIntegratorAttributes(file, *run.analysis, problem.grid.dt, summary);
   file.WriteAttribute("/", "excitation_end", problem.excitation_end);
   file.WriteAttribute("/", "free_vibration", problem.free_vibration);

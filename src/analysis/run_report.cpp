@@ -62,7 +62,7 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
   json.update(RecordJson(problem.records.empty() ? io::AppliedRecord{} : problem.records[0], g));
   if (problem.records.size() > 1) json["h2"] = RecordJson(problem.records[1], g);
   if (problem.vertical_record) json["v"] = RecordJson(*problem.vertical_record, g);
-  if (layout.directions > 1) json["angle"] = problem.angle;
+  if (const std::optional<double> angle = problem.IncidenceAngle()) json["angle"] = *angle;
   json["dt"] = problem.grid.dt;
   json["steps"] = problem.grid.steps;
   json["excitation_end"] = problem.excitation_end;

@@ -83,8 +83,8 @@ void PrintPreamble(const Problem& problem, std::ostream& out) {
                axial.bearings.size(), asked.vertical ? ", vertical component" : "",
                asked.overturning ? ", overturning (Newmark: from the step's start)" : "");
   }
-  if (layout.directions > 1 && !problem.records.empty()) {
-    fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", problem.angle, problem.angle + 90.0);
+  if (const std::optional<double> angle = problem.IncidenceAngle()) {
+    fmt::print(out, "H1 at {:g} degrees from x, H2 at {:g}\n", *angle, *angle + 90.0);
   }
   const double tonnes = m.total_mass * u.SiFactor(dimension::kMass) / 1000.0;
   fmt::print(out, "model: ");

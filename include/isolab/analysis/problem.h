@@ -93,6 +93,12 @@ struct Problem {
   std::optional<io::AppliedRecord> vertical_record{};  // the vertical component as applied
 
   const UnitSystem& units() const { return model.units; }
+  // The angle of H1 from x where it means something: a structure that moves in two directions,
+  // under a record. Every output that states the angle asks this.
+  std::optional<double> IncidenceAngle() const {
+    if (layout.directions > 1 && !records.empty()) return angle;
+    return std::nullopt;
+  }
 };
 
 // Reads the record `motion` names (its file resolved already), or takes `data` when given (a
