@@ -58,8 +58,11 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
         py::arg("beta_M") = bound.elf.at_design.damping, py::arg("B_M") = bound.damping_coefficient,
         py::arg("k_M") = bound.elf.at_design.stiffness, py::arg("V_b") = bound.elf.base_shear,
         py::arg("D_TM") = bound.elf_total_displacement);
-    bounds[py::str(bound.bound)] = py::dict(py::arg("model") = bound.model_file,
-                                            py::arg("elf") = elf, py::arg("values") = values);
+    const py::object opensees =
+        bound.opensees_file.empty() ? py::object(py::none()) : py::str(bound.opensees_file);
+    bounds[py::str(bound.bound)] =
+        py::dict(py::arg("model") = bound.model_file, py::arg("opensees") = opensees,
+                 py::arg("elf") = elf, py::arg("values") = values);
   }
   py::list records;
   for (const study::DesignRecord& r : outcome.records) {
@@ -114,6 +117,8 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   result["design_values"] = design_values;
   result["checks"] = checks;
   result["warnings"] = warnings;
+  result["opensees_refused"] =
+      outcome.opensees_refused.empty() ? py::object(py::none()) : py::str(outcome.opensees_refused);
   result["bounds"] = bounds;
   result["governing"] = governing;
   result["records"] = records;

@@ -120,4 +120,17 @@ def test_design_is_the_command_lines(repo, tmp_path, isolab_cli, law, plan):
     for bound, data in result["bounds"].items():
         assert data["elf"]["D_M"] == pytest.approx(values[(bound, "D_M", "elf")], rel=1e-11)
         assert data["values"]["D_TM"] == pytest.approx(values[(bound, "D_TM", "max")], rel=1e-11)
+        # The bearings as OpenSees elements, the command line's file; none for a lead core that
+        # heats (no OpenSees element reproduces it), and the design says why.
+        written = tmp_path / "cli" / "models" / f"m_{bound}.tcl"
+        if law[0] == "lead_rubber":
+            assert data["opensees"] is None and not written.exists()
+        else:
+            with open(data["opensees"]) as ours, open(written) as theirs:
+                assert ours.read() == theirs.read()
+    if law[0] == "lead_rubber":
+        assert "lead_rubber with the lead core's heating" in result["opensees_refused"]
+        assert result["opensees_refused"] in (tmp_path / "cli" / "design.md").read_text()
+    else:
+        assert result["opensees_refused"] is None
     assert json.dumps(result["checks"])  # data, not text

@@ -12,6 +12,7 @@
 #include "isolab/io/atomic_file.h"
 #include "isolab/model/bounds.h"
 #include "isolab/model/model_file.h"
+#include "isolab/model/opensees_export.h"
 
 namespace isolab::cli {
 
@@ -26,6 +27,9 @@ void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
           "-o,--output", o.output,
           "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
       ->required();
+  command->add_flag("--opensees", o.opensees,
+                    "Also write each bound's bearings as OpenSees elements, <model>_<bound>.tcl "
+                    "(docs/bearings.md names the elements)");
   AddQuietFlag(command, &o.quiet, "Print nothing");
 }
 
@@ -37,9 +41,17 @@ void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
   }
   const model::BoundModels bounds = model::MakeBoundModels(model);
   const std::string stem = std::filesystem::path(o.model).stem().string();
-  std::vector<std::string> paths;
+  // Every file's text first, so that a bound the export refuses writes nothing.
+  std::vector<std::string> paths, texts;
   for (const model::BoundModel& bound : bounds.models) {
-    paths.push_back((folder / (stem + "_" + bound.bound + ".yaml")).string());
+    const std::string path = (folder / (stem + "_" + bound.bound + ".yaml")).string();
+    paths.push_back(path);
+    texts.push_back(bound.text);
+    if (!o.opensees) continue;
+    paths.push_back((folder / (stem + "_" + bound.bound + ".tcl")).string());
+    texts.push_back(model::OpenSeesBearingsTcl(
+        model::LoadModelText(bound.text, path),
+        fmt::format("{} bound of {} (isolab bounds)", bound.bound, o.model)));
   }
   // Made as `design` makes its folder, once the models are known to be right.
   std::error_code error;
@@ -50,7 +62,7 @@ void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
   }
   for (const std::string& path : paths) io::CheckOutputPath(path);
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    const std::string& text = bounds.models[i].text;
+    const std::string& text = texts[i];
     io::WriteTextFileAtomically(paths[i], [&text](std::ostream& file) { file << text; });
   }
   if (o.quiet) return;

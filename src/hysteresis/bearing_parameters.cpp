@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "hdr_bearing.h"
+#include "isolab/hysteresis/hdr_bearing.h"
 
 namespace isolab::hysteresis {
 namespace {

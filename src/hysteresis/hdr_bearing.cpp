@@ -1,4 +1,4 @@
-#include "hdr_bearing.h"
+#include "isolab/hysteresis/hdr_bearing.h"
 
 #include <numbers>
 

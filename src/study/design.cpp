@@ -16,6 +16,7 @@
 #include "isolab/io/record.h"
 #include "isolab/model/bounds.h"
 #include "isolab/model/build_structure.h"
+#include "isolab/model/opensees_export.h"
 #include "isolab/spectra/rotd_spectrum.h"
 #include "isolab/study/run_job.h"
 
@@ -429,6 +430,14 @@ model::BoundModels ReadBoundModels(const model::DesignFile& design, const fs::pa
     b.bound = bound.bound;
     b.model_file = (models / (stem + "_" + bound.bound + ".yaml")).string();
     b.model = model::LoadModelText(bound.text, b.model_file);
+    if (const auto refused = model::OpenSeesExportRefusal(b.model)) {
+      out.opensees_refused = *refused;
+    } else {
+      b.opensees_text = model::OpenSeesBearingsTcl(
+          b.model, fmt::format("{} bound of {} (isolab design {})", bound.bound, design.model_path,
+                               design.path));
+      b.opensees_file = (models / (stem + "_" + bound.bound + ".tcl")).string();
+    }
     out.bounds.push_back(std::move(b));
   }
   return bounds;
@@ -744,6 +753,9 @@ DesignOutcome RunDesign(const model::DesignFile& design, const std::string& outp
   for (std::size_t i = 0; i < bounds.models.size(); ++i) {
     io::WriteTextFileAtomically(out.bounds[i].model_file,
                                 [&](std::ostream& file) { file << bounds.models[i].text; });
+    if (out.bounds[i].opensees_file.empty()) continue;
+    io::WriteTextFileAtomically(out.bounds[i].opensees_file,
+                                [&](std::ostream& file) { file << out.bounds[i].opensees_text; });
   }
   out.study = DesignStudy(design, bounds, records, models, out);
   const model::StudyFile& study = out.study;

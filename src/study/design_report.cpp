@@ -393,7 +393,19 @@ void WriteBoundModels(const model::DesignFile& design, const DesignOutcome& o,
              eurocode ? "the design file's modification factors"
                       : "ASCE 7-16 17.2.8.4, the factors combined as 17.2.8.4 combines them");
   for (const DesignBound& b : o.bounds) {
-    fmt::print(md, "- {}: `{}`\n", b.bound, relative(b.model_file));
+    fmt::print(md, "- {}: `{}`", b.bound, relative(b.model_file));
+    if (!b.opensees_file.empty()) {
+      fmt::print(md, "; its bearings as OpenSees elements: `{}`", relative(b.opensees_file));
+    }
+    fmt::print(md, "\n");
+  }
+  if (!o.opensees_refused.empty()) {
+    fmt::print(md, "\nThe bearings are not exported to OpenSees: {}\n", o.opensees_refused);
+  } else {
+    fmt::print(md,
+               "\nThe OpenSees files define each bearing (`isolab_bearing NAME iNode jNode`) with "
+               "the elements docs/bearings.md maps its law to; `design_bearings.csv` gives the "
+               "linear properties another program's link takes.\n");
   }
   fmt::print(md,
              "\n| bearing | component | property | lambda_min | lambda_max | lower | nominal | "

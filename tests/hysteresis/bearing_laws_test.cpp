@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "hdr_bearing.h"
+#include "isolab/hysteresis/hdr_bearing.h"
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/law_parameters.h"
