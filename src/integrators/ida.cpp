@@ -69,7 +69,11 @@ class IdaRun {
  public:
   IdaRun(const structure::Structure& structure, const Excitation& excitation,
          const IdaOptions& options, RunSummary* summary)
-      : system_(structure, excitation), excitation_(excitation), summary_(*summary) {
+      : system_(structure, excitation),
+        excitation_(excitation),
+        summary_(*summary),
+        rtol_(options.relative_tolerance),
+        atol_(options.absolute_tolerance) {
     SUNContext raw_context = nullptr;
     if (SUNContext_Create(nullptr, &raw_context) != 0) {
       throw std::runtime_error("SUNContext_Create failed");
@@ -155,6 +159,7 @@ class IdaRun {
   bool Integrate(double t_out) {
     void* ida = ida_.get();
     while (t_ < t_out) {
+      if (!solved_since_restart_ && !RatesInScale()) return false;
       const double stop = excitation_.NextSample(t_, t_out);
       if (stop - t_ <= 1e-10 * std::max(stop, 1.0)) {  // an event landed on the stop time
         t_ = stop;
@@ -171,6 +176,33 @@ class IdaRun {
       if (flag == IDA_ROOT_RETURN && !Restart()) return false;
     }
     return true;
+  }
+
+  // IDA's first step after a (re)start is sized from the weighted norm of the rates dy/dt: one
+  // that overflows leaves it a step of zero, which it reports as a stop time "behind" the
+  // current one (IDA_ILL_INPUT). Said as what it is instead: rates out of scale, where and how
+  // large.
+  bool RatesInScale() {
+    const double* y = N_VGetArrayPointer(y_.get());
+    const double* yp = N_VGetArrayPointer(yp_.get());
+    const sunindextype n = N_VGetLength(yp_.get());
+    double sum = 0.0, largest = 0.0;
+    sunindextype at = 0;
+    for (sunindextype i = 0; i < n; ++i) {
+      const double weighted = yp[i] / (rtol_ * std::abs(y[i]) + atol_);
+      sum += weighted * weighted;
+      if (!(std::abs(yp[i]) <= largest)) {
+        largest = std::abs(yp[i]);
+        at = i;
+      }
+    }
+    if (std::isfinite(sum)) return true;
+    summary_.message = fmt::format(
+        "at t = {:.6g} the state's rates are out of IDA's scale (|dy/dt| = {:.3g} per unit time "
+        "on state variable {} of {}; its weighted norm with rtol {:g} and atol {:g} overflows): "
+        "a mass, stiffness or load out of proportion, or a unit slip in the model",
+        t_, largest, at + 1, n, rtol_, atol_);
+    return false;
   }
 
   // At an event: switch the phases whose roots fell, put the state on their surfaces, and
@@ -257,6 +289,7 @@ class IdaRun {
   IdaMemory ida_;
   std::vector<int> roots_found_;
   std::string last_message_;
+  double rtol_, atol_;
   double t_ = 0.0;
   double last_event_time_ = -1.0;
   bool solved_since_restart_ = false;

@@ -155,8 +155,13 @@ BoundModels MakeBoundModels(const ModelFile& model) {
     try {
       LoadModelText(text, written);
     } catch (const InputError& error) {
+      // The bound's text is not written: its rule is reported at the model given, without the
+      // line of a file the user cannot open.
+      const std::string where = error.location().Describe() + ": ";
+      std::string what = error.what();
+      if (what.starts_with(where)) what.erase(0, where.size());
       throw InputError({model.path},
-                       fmt::format("the {} bound model breaks a rule: {}", name, error.what()));
+                       fmt::format("the {} bound model breaks a rule: {}", name, what));
     }
     result.models.push_back({name, text});
   }

@@ -151,6 +151,20 @@ TEST(PropertyModification, BadFactorsAreLocated) {
                         "modification factors do not vary (it gives: w, mu, uy)"),
             std::string::npos)
       << period;
+  // A bound that breaks a law's rule is reported at the model given: the bound's own text is
+  // never written, so no message names a file or line of it.
+  std::string raised;
+  try {
+    MakeBoundModels(LoadModelFile(
+        Write(Model("qd: 50, kd: 1.0, ku: 1.1", "{lrb: {kd: {min: 0.9, max: 1.2}}}"), "bad.yaml")));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    raised = error.what();
+  }
+  EXPECT_NE(raised.find("bad.yaml: the upper bound model breaks a rule: "), std::string::npos)
+      << raised;
+  EXPECT_NE(raised.find("kd = 1.2"), std::string::npos) << raised;
+  EXPECT_EQ(raised.find("bad_upper"), std::string::npos) << raised;
   const std::string key = ErrorOf(Model(bearing, "{lrb: {mu: {min: 0.9, max: 1.2}}}"));
   EXPECT_NE(key.find("isolation.modification.lrb.mu: 'mu' is not a parameter lrb gives (it "
                      "gives: qd, kd, ku)"),

@@ -61,6 +61,26 @@ TEST(Ida, MatchesTheClosedFormOfALinearSdofToItsTolerance) {
   EXPECT_LT(summary.energy_balance_error, 1e-6);
 }
 
+// A step force of 1 on a mass of 1e-150 starts the velocity at a rate of 1e150: its weighted
+// norm overflows, and IDA, left a first step of zero, would call its stop time "behind" the
+// current one (IDA_ILL_INPUT). The run fails saying what is out of scale, at what time, and by how
+// much.
+TEST(Ida, RatesOutOfScaleAreNamedNotLeftToIdasStopTimeError) {
+  const auto sdof = structure::BuildSdof(1e-150, 0.0,
+                                         hysteresis::SingleLaw(LawType::kLinearSpring, {1.0}))
+                        .structure;
+  Excitation excitation;
+  excitation.forces.push_back({0, {0.1, {1.0, 1.0}}});
+  ResponseHistory response;
+  const RunSummary summary = RunIda(sdof, excitation, {0.01, 10}, Tolerance(1e-6), &response);
+  EXPECT_FALSE(summary.ok());
+  EXPECT_NE(summary.message.find("at t = 0 the state's rates are out of IDA's scale (|dy/dt| = "
+                                 "1e+150 per unit time on state variable"),
+            std::string::npos)
+      << summary.message;
+  EXPECT_EQ(summary.message.find("behind"), std::string::npos) << summary.message;
+}
+
 TEST(Ida, ElastoplasticPeakMatchesChoprasConvergedValue) {
   // Chopra reference README: the converged peak is 2.2338 in at t = 0.690 s.
   ResponseHistory response;
