@@ -15,7 +15,8 @@ Paths, 2 s a cycle, dt 0.002 s (one bearing at a time, the ground node fixed, th
 y imposed, its rotations held, the pendulums' weight W applied first as a vertical load):
   x      along x, the amplitude growing from 0 to 600 mm over four cycles (every regime of the
          triple pendulum up to IV), then down to 150 mm over the fifth and one cycle at 150 mm
-  orbit  a circle of radius 250 mm about the origin, reached over the first cycle, three cycles
+  orbit  a circle of radius 250 mm about (0, 250 mm), starting at the origin, its radius reached
+         over the first cycle, three cycles
 Both paths start at rest, so that OpenSees' Newmark velocity of the imposed motion (what its
 velocity-dependent friction reads; the Penalty handler makes the imposed dofs carry one) follows the
 path's. For each bearing and path: the peak force and the largest force difference over the

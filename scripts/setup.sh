@@ -19,7 +19,7 @@ packages=(
   libeigen3-dev libsundials-dev libsuitesparse-dev libyaml-cpp-dev libhdf5-dev
   libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libpagmo-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-h5py python3-pandas
-  python3-dev python3-numpy python3-pytest pybind11-dev
+  python3-dev python3-numpy python3-pytest pybind11-dev tcl
 )
 
 missing=()

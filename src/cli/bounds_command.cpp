@@ -48,10 +48,16 @@ void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
     paths.push_back(path);
     texts.push_back(bound.text);
     if (!o.opensees) continue;
-    paths.push_back((folder / (stem + "_" + bound.bound + ".tcl")).string());
-    texts.push_back(model::OpenSeesBearingsTcl(
+    const model::OpenSeesExport exported = model::ExportToOpenSees(
         model::LoadModelText(bound.text, path),
-        fmt::format("{} bound of {} (isolab bounds)", bound.bound, o.model)));
+        fmt::format("{} bound of {} (isolab bounds)", bound.bound, o.model));
+    if (!exported.refused.empty()) {
+      throw InputError({o.model}, fmt::format("--opensees: the {} bound's bearings cannot be "
+                                              "exported to OpenSees: {}",
+                                              bound.bound, exported.refused));
+    }
+    paths.push_back((folder / (stem + "_" + bound.bound + ".tcl")).string());
+    texts.push_back(exported.tcl);
   }
   // Made as `design` makes its folder, once the models are known to be right.
   std::error_code error;

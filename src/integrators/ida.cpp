@@ -191,12 +191,19 @@ class IdaRun {
     for (sunindextype i = 0; i < n; ++i) {
       const double weighted = yp[i] / (rtol_ * std::abs(y[i]) + atol_);
       sum += weighted * weighted;
-      if (!(std::abs(yp[i]) <= largest)) {
+      if (std::isfinite(largest) && !(std::abs(yp[i]) <= largest)) {  // NaN, once met, stays
         largest = std::abs(yp[i]);
         at = i;
       }
     }
     if (std::isfinite(sum)) return true;
+    if (!std::isfinite(largest)) {
+      summary_.message = fmt::format(
+          "at t = {:.6g} the state's rate on state variable {} of {} is not finite ({}): the "
+          "model's laws or loads give no defined motion there",
+          t_, at + 1, n, largest);
+      return false;
+    }
     summary_.message = fmt::format(
         "at t = {:.6g} the state's rates are out of IDA's scale (|dy/dt| = {:.3g} per unit time "
         "on state variable {} of {}; its weighted norm with rtol {:g} and atol {:g} overflows): "

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,9 @@ using hysteresis::ParameterForm;
 double Value(const LawParameters& law, std::string_view key, ParameterForm form) {
   const auto keys = hysteresis::ParameterKeys(law.type(), form);
   const auto at = std::find(keys.begin(), keys.end(), key);
+  if (at == keys.end()) {
+    throw std::logic_error(fmt::format("{} has no key {}", hysteresis::LawName(law.type()), key));
+  }
   return law.Values(form)[static_cast<std::size_t>(at - keys.begin())];
 }
 
@@ -226,7 +230,7 @@ double SiteWeight(const Site& site) {
 }
 
 // Bearing types: sites whose elements are the same share one procedure, named for its components
-// ("isolab_lrb"), with a number where two types' components share names.
+// ("isolab_type_lrb"), with a number where two types' components share names.
 struct BearingType {
   std::string procedure;
   std::string body;
@@ -268,6 +272,7 @@ Bearings Collect(const ModelFile& model) {
   Bearings b;
   b.sites = Sites(model);
   if (b.sites.empty()) throw std::invalid_argument("the model has no bearings");
+  std::set<std::string> procedures;
   for (const Site& site : b.sites) {
     std::string body;
     double stiffness = 0.0;
@@ -279,15 +284,28 @@ Bearings Collect(const ModelFile& model) {
       stiffness += c.initial_stiffness;
       names.push_back(name);
     }
+    // OpenSees' pendulums take their friction from their own axial force, which every element
+    // between the same nodes would share: a pendulum is exported only as a bearing of its own.
+    if (site.components.size() > 1) {
+      for (const auto& [name, law] : site.components) {
+        if (!hysteresis::PendulumWeight(law)) continue;
+        throw std::invalid_argument(fmt::format(
+            "{}, component '{}': a {} with other components in parallel (OpenSees' pendulum "
+            "elements take their friction from their own axial force, which the others would "
+            "share: give the pendulum an isolator of its own)",
+            site.where, name, hysteresis::LawName(law.type())));
+      }
+    }
     b.stiffest = std::max(b.stiffest, stiffness);
     auto same = std::find_if(b.types.begin(), b.types.end(),
                              [&](const BearingType& t) { return t.body == body; });
     if (same == b.types.end()) {
-      std::string procedure = fmt::format("isolab_{}", fmt::join(names, "_"));
-      const auto taken = std::count_if(b.types.begin(), b.types.end(), [&](const BearingType& t) {
-        return t.procedure.starts_with(procedure);
-      });
-      if (taken > 0) procedure += fmt::format("_{}", taken + 1);
+      // In a namespace of their own (isolab_type_...), apart from the file's own procedures.
+      const std::string stem = fmt::format("isolab_type_{}", fmt::join(names, "_"));
+      std::string procedure = stem;
+      for (int k = 2; procedures.contains(procedure); ++k)
+        procedure = fmt::format("{}_{}", stem, k);
+      procedures.insert(procedure);
       b.types.push_back({procedure, body, stiffness});
       same = b.types.end() - 1;
     }
@@ -298,21 +316,12 @@ Bearings Collect(const ModelFile& model) {
 
 }  // namespace
 
-std::optional<std::string> OpenSeesExportRefusal(const ModelFile& model) {
-  try {
-    Collect(model);
-    return std::nullopt;
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-}
-
-std::string OpenSeesBearingsTcl(const ModelFile& model, const std::string& title) {
+OpenSeesExport ExportToOpenSees(const ModelFile& model, const std::string& title) {
   Bearings bearings;
   try {
     bearings = Collect(model);
   } catch (const std::invalid_argument& e) {
-    throw InputError({model.path}, fmt::format("cannot export to OpenSees: {}", e.what()));
+    return {"", e.what()};
   }
   const auto& [sites, types, type_of, stiffest] = bearings;
   const double metre = 1.0 / model.units.SiFactor(dimension::kLength);
@@ -351,7 +360,7 @@ std::string OpenSeesBearingsTcl(const ModelFile& model, const std::string& title
          "  }\n"
          "  error \"isolab_bearing: no bearing '$name' in this file\"\n"
          "}\n";
-  return tcl.str();
+  return {tcl.str(), ""};
 }
 
 }  // namespace isolab::model

@@ -430,15 +430,22 @@ model::BoundModels ReadBoundModels(const model::DesignFile& design, const fs::pa
     b.bound = bound.bound;
     b.model_file = (models / (stem + "_" + bound.bound + ".yaml")).string();
     b.model = model::LoadModelText(bound.text, b.model_file);
-    if (const auto refused = model::OpenSeesExportRefusal(b.model)) {
-      out.opensees_refused = *refused;
-    } else {
-      b.opensees_text = model::OpenSeesBearingsTcl(
-          b.model, fmt::format("{} bound of {} (isolab design {})", bound.bound, design.model_path,
-                               design.path));
-      b.opensees_file = (models / (stem + "_" + bound.bound + ".tcl")).string();
+    const model::OpenSeesExport exported =
+        model::ExportToOpenSees(b.model, fmt::format("{} bound of {} (isolab design {})",
+                                                     bound.bound, design.model_path, design.path));
+    if (!exported.refused.empty() && out.opensees_refused.empty()) {
+      out.opensees_refused = fmt::format("the {} bound: {}", bound.bound, exported.refused);
     }
+    b.opensees_text = exported.tcl;
+    b.opensees_file = (models / (stem + "_" + bound.bound + ".tcl")).string();
     out.bounds.push_back(std::move(b));
+  }
+  // Every bound exported, or none: a design's bounds go to OpenSees together.
+  if (!out.opensees_refused.empty()) {
+    for (DesignBound& b : out.bounds) {
+      b.opensees_file.clear();
+      b.opensees_text.clear();
+    }
   }
   return bounds;
 }

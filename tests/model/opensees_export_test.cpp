@@ -8,14 +8,19 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli/run_isolab.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/bounds.h"
 #include "isolab/model/model_file.h"
+#include "own_test_file.h"
 
 namespace isolab::model {
 namespace {
@@ -26,7 +31,15 @@ std::string OneDirection(const std::string& components, const std::string& extra
 }
 
 std::string Export(const std::string& text) {
-  return OpenSeesBearingsTcl(LoadModelText(text, "m.yaml"), "test");
+  const OpenSeesExport exported = ExportToOpenSees(LoadModelText(text, "m.yaml"), "test");
+  EXPECT_EQ(exported.refused, "");
+  return exported.tcl;
+}
+
+std::string Refusal(const std::string& text) {
+  const OpenSeesExport exported = ExportToOpenSees(LoadModelText(text, "m.yaml"), "test");
+  EXPECT_EQ(exported.tcl, "");
+  return exported.refused;
 }
 
 // The words of the first line that starts with `start` (after indentation).
@@ -99,7 +112,7 @@ TEST(OpenSeesExport, BilinearLawsAndSpringsInParallelAreOneBearing) {
   EXPECT_DOUBLE_EQ(plastic.qd, 20.0);
   EXPECT_DOUBLE_EQ(plastic.alpha1, 0.0);
   // One procedure, four bearings of a one-direction layer, at the origin, carrying no weight.
-  for (const char* site : {"{b_1 0 0 0 isolab_k_s_e}", "{b_4 0 0 0 isolab_k_s_e}"}) {
+  for (const char* site : {"{b_1 0 0 0 isolab_type_k_s_e}", "{b_4 0 0 0 isolab_type_k_s_e}"}) {
     EXPECT_NE(tcl.find(site), std::string::npos) << tcl;
   }
   EXPECT_EQ(tcl.find("{b_5 "), std::string::npos);
@@ -125,10 +138,11 @@ TEST(OpenSeesExport, FrictionPendulumsTakeTheirRadiusFrictionAndWeight) {
   EXPECT_EQ(std::vector<std::string>(velocity.end() - 3, velocity.end()),
             (std::vector<std::string>{"0.03", "0.06", "0.02"}));
   const std::vector<std::string> fpv =
-      Words(tcl.substr(tcl.find("proc isolab_fpv")), "element singleFPBearing");
+      Words(tcl.substr(tcl.find("proc isolab_type_fpv")), "element singleFPBearing");
   EXPECT_NEAR(At(fpv, 7), 0.03 * 1000 / 0.5, 1e-12);  // at mu_slow
-  for (const char* site : {"{fp_1 0 20000 1471 isolab_fp}", "{fpv_1 20000 0 1000 isolab_fpv}",
-                           "{fpv_2 5000 7000 1000 isolab_fpv}"}) {
+  for (const char* site :
+       {"{fp_1 0 20000 1471 isolab_type_fp}", "{fpv_1 20000 0 1000 isolab_type_fpv}",
+        "{fpv_2 5000 7000 1000 isolab_type_fpv}"}) {
     EXPECT_NE(tcl.find(site), std::string::npos) << tcl;
   }
 }
@@ -148,16 +162,10 @@ TEST(OpenSeesExport, ATriplePendulumMapsAsDocsBearingsTabulates) {
 
   std::string unlike = tfp;
   unlike.replace(unlike.find("r3: 305"), 7, "r3: 300");
-  try {
-    Export(OneDirection(unlike));
-    ADD_FAILURE() << "no exception";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.location().file, "m.yaml");
-    EXPECT_NE(std::string(e.what()).find("component 'tfp': triple_friction_pendulum with r2 = 305 "
-                                         "and r3 = 300"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string refused = Refusal(OneDirection(unlike));
+  EXPECT_NE(refused.find("component 'tfp': triple_friction_pendulum with r2 = 305 and r3 = 300"),
+            std::string::npos)
+      << refused;
 }
 
 TEST(OpenSeesExport, ALawWithoutAnOpenSeesElementIsRefusedByName) {
@@ -173,17 +181,17 @@ TEST(OpenSeesExport, ALawWithoutAnOpenSeesElementIsRefusedByName) {
        "component 'd': double_friction_pendulum has no OpenSees element"},
   };
   for (const auto& [component, message] : refused) {
-    try {
-      Export(OneDirection("{name: k, type: linear_spring, k: 1}, " + component));
-      ADD_FAILURE() << component;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("cannot export to OpenSees: isolation: bearing "
-                                           "'isolation', " +
-                                           message),
-                std::string::npos)
-          << e.what();
-    }
+    const std::string why =
+        Refusal(OneDirection("{name: k, type: linear_spring, k: 1}, " + component));
+    EXPECT_NE(why.find("isolation: bearing 'isolation', " + message), std::string::npos) << why;
   }
+  // A pendulum shares its axial force with nothing in OpenSees: alone in its isolator or refused.
+  const std::string shared = Refusal(OneDirection(
+      "{name: k, type: linear_spring, k: 1}, {name: fp, type: friction_pendulum, w: 1471, r: "
+      "4338, uy: 0.5, mu: 0.05}"));
+  EXPECT_NE(shared.find("component 'fp': a friction_pendulum with other components in parallel"),
+            std::string::npos)
+      << shared;
 }
 
 TEST(OpenSeesExport, TheBoundsCarryTheirFactorsCombinedAsAsce7Does) {
@@ -203,8 +211,7 @@ TEST(OpenSeesExport, TheBoundsCarryTheirFactorsCombinedAsAsce7Does) {
   const double expected[3][2] = {
       {95, 0.6}, {95 * qd_max, 0.6 * kd_max}, {95 * qd_min, 0.6 * kd_min}};
   for (std::size_t i = 0; i < 3; ++i) {
-    const Bilinear b = ElastomericOf(OpenSeesBearingsTcl(
-        LoadModelText(bounds.models[i].text, "m_" + bounds.models[i].bound + ".yaml"), "bound"));
+    const Bilinear b = ElastomericOf(Export(bounds.models[i].text));
     EXPECT_NEAR(b.qd, expected[i][0], 1e-12 * expected[i][0]) << bounds.models[i].bound;
     EXPECT_NEAR(b.alpha1 * b.k_init, expected[i][1], 1e-12) << bounds.models[i].bound;
     EXPECT_DOUBLE_EQ(b.k_init, 6.0);
@@ -212,28 +219,84 @@ TEST(OpenSeesExport, TheBoundsCarryTheirFactorsCombinedAsAsce7Does) {
 }
 
 TEST(OpenSeesExport, TypesWithTheSameNamesButOtherValuesGetTheirOwnProcedure) {
+  // Components b_2, then b twice with other values: three procedures, none taken twice.
   const std::string tcl = Export(
       "units: {force: kN, length: mm, time: s}\n"
       "plan:\n  footprint: [[0, 0], [20000, 20000]]\n  base: {mass: 300 t}\n  isolators:\n"
+      "    - {name: d, position: [9, 0], components: [{name: b_2, type: bhm2, k0: 5, k1: 0.3, "
+      "uy: 20}]}\n"
       "    - {name: a, positions: [[0, 0], [1, 0]], components: [{name: b, type: bhm2, k0: 3, "
       "k1: 0.3, uy: 20}]}\n"
       "    - {name: c, position: [5, 0], components: [{name: b, type: bhm2, k0: 4, k1: 0.3, "
       "uy: 20}]}\n");
-  EXPECT_NE(tcl.find("{a_2 1 0 0 isolab_b}"), std::string::npos) << tcl;
-  EXPECT_NE(tcl.find("{c 5 0 0 isolab_b_2}"), std::string::npos) << tcl;
-  EXPECT_EQ(
-      At(Words(tcl.substr(tcl.find("proc isolab_b_2")), "element elastomericBearingPlasticity"), 5),
-      4.0);
+  for (const char* site :
+       {"{d 9 0 0 isolab_type_b_2}", "{a_2 1 0 0 isolab_type_b}", "{c 5 0 0 isolab_type_b_3}"}) {
+    EXPECT_NE(tcl.find(site), std::string::npos) << tcl;
+  }
+  const auto k_init = [&](const std::string& procedure) {
+    return At(Words(tcl.substr(tcl.find("proc " + procedure + " ")),
+                    "element elastomericBearingPlasticity"),
+              5);
+  };
+  EXPECT_EQ(k_init("isolab_type_b_2"), 5.0);
+  EXPECT_EQ(k_init("isolab_type_b"), 3.0);
+  EXPECT_EQ(k_init("isolab_type_b_3"), 4.0);
 }
 
-TEST(OpenSeesExport, AModelWithoutBearingsIsRefused) {
-  try {
-    Export(
-        "units: {force: kN, length: mm, time: s}\n"  // a fixed-base building
-        "structure: {type: shear_building, stories: {count: 2, mass: 100 t, stiffness: 800}}\n");
-    ADD_FAILURE() << "no exception";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no bearings"), std::string::npos) << e.what();
+// The file as Tcl runs it (/usr/bin/tclsh, OpenSees' own interpreter language), with OpenSees'
+// commands stubbed to print what they are given: every site's procedure runs, each element gets
+// a tag of its own, and the materials and friction models it names exist. Components named as
+// the file's own procedures (bearing, tag) do not clash with them.
+TEST(OpenSeesExport, TheFileRunsAsTclAndPlacesEverySite) {
+  const std::string tcl = Export(
+      "units: {force: kN, length: mm, time: s}\n"
+      "plan:\n  footprint: [[0, 0], [20000, 20000]]\n  base: {mass: 300 t}\n  isolators:\n"
+      "    - {name: a, positions: [[0, 0], [1, 0]], components: [{name: bearing, type: bhm2, "
+      "k0: 3, k1: 0.3, uy: 20}, {name: tag, type: linear_spring, k: 0.5}]}\n"
+      "    - {name: fp, position: [5, 0], components: [{name: fp, type: friction_pendulum, w: "
+      "1000, r: 2235, uy: 0.5, mu_slow: 0.03, mu_fast: 0.06, a: 0.02}]}\n"
+      "    - {name: tfp, position: [7, 0], components: [{name: tfp, type: "
+      "triple_friction_pendulum, w: 2092, uy: 0.5, r1: 2235, r2: 305, r3: 305, r4: 2235, mu1: "
+      "0.05, mu2: 0.02, mu3: 0.02, mu4: 0.09, d1: 380, d2: 60, d3: 60, d4: 380}]}\n");
+  const std::filesystem::path folder = testing::FreshTestDirectory();
+  std::ofstream(folder / "bearings.tcl") << tcl;
+  std::ofstream(folder / "driver.tcl")
+      << "set defined {}\n"
+         "proc uniaxialMaterial {type tag args} { global defined; lappend defined $tag }\n"
+         "proc frictionModel {type tag args} { global defined; lappend defined $tag }\n"
+         "proc element {type tag i j args} {\n"
+         "  global defined\n"
+         "  foreach word $args { if {[string is integer -strict $word] && $word >= 900001 &&\n"
+         "    [lsearch $defined $word] < 0} { error \"element $tag names $word, not defined\" } }\n"
+         "  puts \"element $type $tag $i $j\"\n"
+         "}\n"
+         "source bearings.tcl\n"
+         "set node 0\n"
+         "foreach site $isolab_sites {\n"
+         "  puts \"site [lindex $site 0] -> [isolab_bearing [lindex $site 0] [incr node] [incr "
+         "node]]\"\n"
+         "}\n";
+  const testing::Outcome run =
+      testing::RunShell("cd " + folder.string() + " && /usr/bin/tclsh driver.tcl", true);
+  ASSERT_EQ(run.exit_code, 0) << run.output << "\n(Debian package tcl)";
+  // a_1, a_2: two elements each; fp, tfp: one; every tag used once.
+  std::set<std::string> tags;
+  std::istringstream lines(run.output);
+  int elements = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("element ", 0) != 0) continue;
+    ++elements;
+    std::istringstream words(line);
+    std::string word, type, tag;
+    words >> word >> type >> tag;
+    EXPECT_TRUE(tags.insert(tag).second) << "tag " << tag << " twice\n" << run.output;
+  }
+  EXPECT_EQ(elements, 6) << run.output;
+  for (const char* placed :
+       {"element elastomericBearingPlasticity 900003 1 2", "element zeroLength 900005 1 2",
+        "element elastomericBearingPlasticity 900008 3 4", "element singleFPBearing",
+        "element TripleFrictionPendulum", "site tfp -> "}) {
+    EXPECT_NE(run.output.find(placed), std::string::npos) << placed << "\n" << run.output;
   }
 }
 

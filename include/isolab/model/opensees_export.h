@@ -18,26 +18,28 @@
 // Elastic materials, which the user may set before sourcing the file.
 //
 // The file defines `isolab_bearing NAME iNode jNode` (the bearing NAME's elements between the two
-// nodes, returning their tags), one procedure per bearing type, and `isolab_sites`: each
+// nodes, returning their tags), one procedure per bearing type (isolab_type_...), and
+// `isolab_sites`: each
 // bearing's name, position in plan (0 0 in one direction), the weight W its pendulums carry (0
 // for other laws: the axial load the model must apply for friction to act) and its procedure.
 // Tags are drawn from `isolab_next_tag` (900001 unless set before sourcing).
 #pragma once
 
-#include <optional>
 #include <string>
 
 #include "isolab/model/model_file.h"
 
 namespace isolab::model {
 
-// The Tcl text. `title` heads it (the bound and the model it came from). Throws InputError at the
-// model's file for a bearing with a law that has no OpenSees element, and for a model without
-// bearings.
-std::string OpenSeesBearingsTcl(const ModelFile& model, const std::string& title);
+struct OpenSeesExport {
+  std::string tcl;      // the file's text; empty when refused
+  std::string refused;  // why not: the bearing, its component and law (no file location)
+};
 
-// Why the model's bearings cannot be exported (the bearing, its component and law, and what is
-// exported), without the file's location; nullopt when they can.
-std::optional<std::string> OpenSeesExportRefusal(const ModelFile& model);
+// `title` heads the text (the bound and the model it came from). Refused for a bearing whose law
+// has no OpenSees element, a pendulum with other components in parallel (OpenSees' pendulums
+// take friction from their own axial force), a name that is not a Tcl word, and a model without
+// bearings.
+OpenSeesExport ExportToOpenSees(const ModelFile& model, const std::string& title);
 
 }  // namespace isolab::model

@@ -58,7 +58,7 @@ struct DesignBound {
   std::string bound;       // "nominal", "upper", "lower"
   std::string model_file;  // the bound's model, written in the output folder
   // Its bearings as OpenSees elements (model/opensees_export.h), written beside model_file; empty
-  // when a bearing's law has none (DesignOutcome::opensees_refused says which).
+  // for every bound when one bound's cannot be (DesignOutcome::opensees_refused says why).
   std::string opensees_file;
   std::string opensees_text;
   // Per eccentricity case (DesignOutcome::eccentricities), the model its runs ran, written in the
@@ -146,7 +146,8 @@ struct DesignOutcome {
   std::vector<DesignBound> bounds;                         // nominal, upper, lower
   std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
   std::vector<model::BoundProperty> modified;  // each modified property, its lambdas and values
-  std::string opensees_refused;  // why the bounds' bearings were not exported; empty if they were
+  // Why the bounds' bearings were not exported ("the upper bound: ..."); empty if they were.
+  std::string opensees_refused;
   std::vector<DesignRecord> records;
   // The angles (degrees from x to H1) each record runs at: model::DesignFile::orientations.
   std::vector<double> orientations = {0.0};
