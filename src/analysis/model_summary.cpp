@@ -340,6 +340,21 @@ void WarnAboutBearingWeights(const structure::Structure& s, const structure::Lay
 
 }  // namespace
 
+SecantIsolation IsolationAt(const structure::Structure& s, const structure::Layout& layout,
+                            double displacement) {
+  SecantIsolation at;
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    at.stiffness +=
+        isolator.member >= 0
+            ? SecantStiffness(s.members()[isolator.member].assembly, displacement)
+            : SecantStiffness(s.coupled_members()[isolator.coupled].assembly, displacement).x;
+  }
+  for (const Mode& mode : RigidModes(s, layout, displacement)) {
+    at.period = std::max(at.period, mode.period);
+  }
+  return at;
+}
+
 ModelSummary SummariseModel(const structure::Structure& s, const structure::Layout& layout,
                             const structure::LaidOutStructure* fixed_base, const UnitSystem& units,
                             double pga, double trial_displacement) {
@@ -359,19 +374,11 @@ ModelSummary SummariseModel(const structure::Structure& s, const structure::Layo
     summary.fixed_base_modes = Modes(s, layout, 0.0);
   }
   if (summary.isolated) {
-    for (const structure::IsolatorLayout& isolator : layout.isolators) {
-      summary.secant_stiffness +=
-          isolator.member >= 0
-              ? SecantStiffness(s.members()[isolator.member].assembly, trial_displacement)
-              : SecantStiffness(s.coupled_members()[isolator.coupled].assembly, trial_displacement)
-                    .x;
-    }
+    const SecantIsolation at_trial = IsolationAt(s, layout, trial_displacement);
+    summary.secant_stiffness = at_trial.stiffness;
+    summary.isolated_period = at_trial.period;
     summary.rigid_modes = RigidModes(s, layout, trial_displacement);
     summary.isolated_modes = Modes(s, layout, trial_displacement);
-    summary.isolated_period = summary.rigid_modes.front().period;
-    for (const Mode& mode : summary.rigid_modes) {
-      summary.isolated_period = std::max(summary.isolated_period, mode.period);
-    }
   }
 
   const std::string check = "check the units of the masses and stiffnesses";

@@ -307,28 +307,6 @@ void AppendEnergySeries(const Problem& problem, std::vector<Series>& series) {
 
 }  // namespace
 
-std::vector<NamedPeak> FilePeaks(const Problem& problem, const ResponsePeaks& peaks) {
-  const structure::Layout& layout = problem.layout;
-  std::vector<NamedPeak> named;
-  if (layout.isolated()) {
-    named.push_back({"isolator_displacement", &peaks.isolator_displacement, dimension::kLength});
-    named.push_back({"isolator_force", &peaks.isolator_force, dimension::kForce});
-  }
-  named.push_back({"base_shear", &peaks.base_shear, dimension::kForce});
-  named.push_back(
-      {"roof_absolute_acceleration", &peaks.roof_absolute_acceleration, dimension::kAcceleration});
-  if (!layout.stories.empty()) {
-    named.push_back({"first_story_shear", &peaks.first_story_shear, dimension::kForce});
-    named.push_back({"story_drift", &peaks.story_drift, dimension::kLength});
-  }
-  if (layout.rotations) {
-    named.push_back({"floor_rotation", &peaks.level_rotation, dimension::kNone});
-    named.push_back(
-        {"base_centre_displacement", &peaks.base_centre_displacement, dimension::kLength});
-  }
-  return named;
-}
-
 std::vector<int> SelectedLevels(const model::OutputSelection& selection,
                                 const structure::Layout& layout, const std::string& key) {
   const int levels = static_cast<int>(layout.levels.size());

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "isolab/analysis/solve.h"
+#include "isolab/analysis/summary_peaks.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/csv.h"
@@ -55,10 +56,9 @@ void WriteComments(std::ostream& out, const RunDescription& run) {
                fmt::join(RecordedLevels(selection, problem), ", "));
   }
   const ResponsePeaks& peaks = *run.peaks;
-  for (const NamedPeak& p : FilePeaks(problem, peaks)) {
+  for (const NamedPeak& p : SummaryPeaks(problem.layout, peaks)) {
     fmt::print(out, "# peak {}: {:.6g} {} at t = {:g} {}\n", p.name, p.peak->value,
-               p.dimension == dimension::kNone ? "rad" : DescribeUnits(units, p.dimension),
-               p.peak->time, units.time());
+               PeakUnit(units, p.dimension), p.peak->time, units.time());
   }
   const integrators::Energies& e = peaks.energies;
   fmt::print(out,

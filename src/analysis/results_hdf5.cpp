@@ -4,6 +4,7 @@
 #include <set>
 
 #include "isolab/analysis/solve.h"
+#include "isolab/analysis/summary_peaks.h"
 #include "isolab/io/hdf5_file.h"
 #include "isolab/io/record_attributes.h"
 #include "results_sink.h"
@@ -81,10 +82,10 @@ void WritePeaks(io::Hdf5File& file, const RunDescription& run) {
   const ResponsePeaks& peaks = *run.peaks;
   const UnitSystem& units = problem.units();
   file.CreateGroup("peaks");
-  for (const NamedPeak& p : FilePeaks(problem, peaks)) {
+  for (const NamedPeak& p : SummaryPeaks(problem.layout, peaks)) {
     const std::string path = fmt::format("peaks/{}", p.name);
     file.WriteDoubles(path, {}, std::span<const double>(&p.peak->value, 1),
-                      p.dimension == dimension::kNone ? "rad" : DescribeUnits(units, p.dimension));
+                      PeakUnit(units, p.dimension));
     file.WriteAttribute(path, "time", p.peak->time);
     if (p.peak->index >= 0) file.WriteIntegerAttribute(path, "index", p.peak->index);
   }

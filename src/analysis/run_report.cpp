@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "isolab/analysis/summary_peaks.h"
+
 namespace isolab::analysis {
 namespace {
 
@@ -73,25 +75,22 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
                            {"fixed_base_periods", m.FixedBasePeriods()},
                            {"fixed_base_modes", ModesJson(m.fixed_base_modes)}};
   json["warnings"] = summary.warnings;
-  json["peaks"] = {{"base_shear", PeakJson(peaks.base_shear)},
-                   {"first_story_shear", PeakJson(peaks.first_story_shear)},
-                   {"roof_absolute_acceleration", PeakJson(peaks.roof_absolute_acceleration)},
-                   {"floor_acceleration", PeakJson(peaks.floor_acceleration)},
-                   {"story_drift", PeakJson(peaks.story_drift)},
-                   {"story_drift_ratio", peaks.story_drift_ratio},
-                   {"largest_drift_ratio", peaks.largest_drift_ratio}};
-  if (layout.rotations) json["peaks"]["floor_rotation"] = PeakJson(peaks.level_rotation);
+  json["peaks"] = nlohmann::json::object();
+  for (const NamedPeak& p : SummaryPeaks(layout, peaks)) json["peaks"][p.name] = PeakJson(*p.peak);
+  if (!layout.stories.empty()) {
+    json["peaks"]["story_drift_ratio"] = peaks.story_drift_ratio;
+    json["peaks"]["largest_drift_ratio"] = peaks.largest_drift_ratio;
+  }
   if (layout.isolated()) {  // a fixed base has no isolators, and no isolated modes
     json["model_summary"].update({{"trial_displacement", m.trial_displacement},
                                   {"secant_stiffness", m.secant_stiffness},
                                   {"isolated_period", m.isolated_period},
                                   {"rigid_modes", ModesJson(m.rigid_modes)},
                                   {"isolated_modes", ModesJson(m.isolated_modes)}});
-    json["peaks"]["isolator_displacement"] = PeakJson(peaks.isolator_displacement);
-    json["peaks"]["isolator_force"] = PeakJson(peaks.isolator_force);
+    json["at_peak_displacement"] = {{"secant_stiffness", peaks.at_peak.stiffness},
+                                    {"period", peaks.at_peak.period}};
   }
   if (layout.rotations && layout.isolated()) {
-    json["peaks"]["base_centre_displacement"] = PeakJson(peaks.base_centre_displacement);
     json["torsional_amplification"] = peaks.torsional_amplification;
   }
   if (layout.isolated()) {

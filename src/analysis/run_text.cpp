@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "isolab/analysis/summary_peaks.h"
+
 namespace isolab::analysis {
 namespace {
 
@@ -116,16 +118,33 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
   const std::string length = u.length(), force = u.force(), time = u.time();
   const std::string acceleration = DescribeUnits(u, dimension::kAcceleration);
   const double g = u.Convert(1.0, "g", dimension::kAcceleration);
-  const auto line = [&](const char* what, const Peak& peak, const std::string& unit,
-                        const std::string& extra = "") {
-    fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {}{}\n", what, peak.value, unit,
-               peak.time, time, extra);
-  };
-  // The isolator a peak is at, where there are several.
-  const auto at_isolator = [&](const Peak& peak) {
-    return layout.isolators.size() > 1 && peak.index >= 0
-               ? fmt::format(" ({})", layout.isolators[peak.index].name)
-               : std::string();
+  // What a line adds after the peak's time.
+  const auto note = [&](const NamedPeak& p) -> std::string {
+    const int index = p.peak->index;
+    switch (p.note) {
+      case NamedPeak::Note::kNone:
+        return "";
+      case NamedPeak::Note::kIsolator:
+        return layout.isolators.size() > 1 && index >= 0
+                   ? fmt::format(" ({})", layout.isolators[index].name)
+                   : "";
+      case NamedPeak::Note::kStoryAndRatio:
+        if (index < 0) return "";
+        return fmt::format(
+            " (story {}{})", index + 1,
+            peaks.story_drift_ratio > 0.0
+                ? fmt::format(", {:.3g} % of its height", 100 * peaks.story_drift_ratio)
+                : "");
+      case NamedPeak::Note::kLevelAndG:
+        return fmt::format(" ({}{:.3g} g)",
+                           index >= 0 ? layout.levels[index].name + ", " : std::string(),
+                           p.peak->value / g);
+      case NamedPeak::Note::kG:
+        return fmt::format(" ({:.3g} g)", p.peak->value / g);
+      case NamedPeak::Note::kLevel:
+        return index >= 0 ? fmt::format(" ({})", layout.levels[index].name) : "";
+    }
+    return "";
   };
   if (layout.isolators.size() > 1) {
     fmt::print(out, "peak isolator displacement [{}] and force [{}]:\n", length, force);
@@ -136,38 +155,18 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
                  peaks.isolator_forces[i].time, time);
     }
   }
-  if (layout.isolated()) {
-    line("peak isolator displacement", peaks.isolator_displacement, length,
-         at_isolator(peaks.isolator_displacement));
-    line("peak isolator force", peaks.isolator_force, force, at_isolator(peaks.isolator_force));
-    for (std::size_t i = 0; i < peaks.regimes_at_peak.size(); ++i) {
-      if (!peaks.regimes_at_peak[i]) continue;
-      const std::string label = layout.isolators.size() > 1
-                                    ? "triple pendulum regime " + layout.isolators[i].name
-                                    : std::string("triple pendulum regime");
-      fmt::print(out, "{:<34} {:>12} {:<8} at its peak displacement, t = {:.4g} {}\n", label,
-                 hysteresis::PendulumRegimeName(*peaks.regimes_at_peak[i]), "",
-                 peaks.isolator_displacements[i].time, time);
-    }
+  for (const NamedPeak& p : SummaryPeaks(layout, peaks)) {
+    fmt::print(out, "{:<34} {:>12.5g} {:<8} at t = {:.4g} {}{}\n", p.label, p.peak->value,
+               PeakUnit(u, p.dimension), p.peak->time, time, note(p));
   }
-  line("peak base shear", peaks.base_shear, force);
-  if (!layout.stories.empty()) {
-    line("peak first-story shear", peaks.first_story_shear, force);
-    const int story = peaks.story_drift.index;
-    line("peak story drift", peaks.story_drift, length,
-         story < 0 ? std::string()
-                   : fmt::format(" (story {}{})", story + 1,
-                                 peaks.story_drift_ratio > 0.0
-                                     ? fmt::format(", {:.3g} % of its height",
-                                                   100 * peaks.story_drift_ratio)
-                                     : ""));
-  }
-  line("peak roof absolute acceleration", peaks.roof_absolute_acceleration, acceleration,
-       fmt::format(" ({:.3g} g)", peaks.roof_absolute_acceleration.value / g));
-  if (layout.rotations) {
-    const int level = peaks.level_rotation.index;
-    line("peak floor rotation", peaks.level_rotation, "rad",
-         level < 0 ? std::string() : fmt::format(" ({})", layout.levels[level].name));
+  for (std::size_t i = 0; i < peaks.regimes_at_peak.size(); ++i) {
+    if (!peaks.regimes_at_peak[i]) continue;
+    const std::string label = layout.isolators.size() > 1
+                                  ? "triple pendulum regime " + layout.isolators[i].name
+                                  : std::string("triple pendulum regime");
+    fmt::print(out, "{:<34} {:>12} {:<8} at its peak displacement, t = {:.4g} {}\n", label,
+               hysteresis::PendulumRegimeName(*peaks.regimes_at_peak[i]), "",
+               peaks.isolator_displacements[i].time, time);
   }
   if (layout.rotations && layout.isolated()) {
     fmt::print(out,
@@ -196,26 +195,10 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
     }
     fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
                peaks.isolator_displacement_at_excitation_end, length);
-    const ModelSummary& m = problem.summary;
-    if (m.isolated && peaks.isolator_displacement.value > 0.0) {
-      const double d = peaks.isolator_displacement.value;
-      double k = 0.0;
-      for (const structure::IsolatorLayout& isolator : layout.isolators) {
-        k +=
-            isolator.member >= 0
-                ? SecantStiffness(problem.structure.members()[isolator.member].assembly, d)
-                : SecantStiffness(problem.structure.coupled_members()[isolator.coupled].assembly, d)
-                      .x;
-      }
-      if (k > 0.0) {
-        double period = 0.0;
-        for (const Mode& mode : RigidModes(problem.structure, layout, d)) {
-          period = std::max(period, mode.period);
-        }
-        fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
-                   "period at the peak displacement", period, time, k,
-                   DescribeUnits(u, dimension::kStiffness));
-      }
+    if (peaks.at_peak.stiffness > 0.0) {
+      fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
+                 "period at the peak displacement", peaks.at_peak.period, time,
+                 peaks.at_peak.stiffness, DescribeUnits(u, dimension::kStiffness));
     }
   }
   if (peaks.rows > 0) {

@@ -78,6 +78,15 @@ ModelSummary SummariseModel(const structure::Structure& structure, const structu
                             const structure::LaidOutStructure* fixed_base, const UnitSystem& units,
                             double pga, double trial_displacement);
 
+// The isolators' secant stiffness at D, summed (along x in plan), and the longest rigid mode's
+// period there: the isolated period engineers quote at D (infinite for no stiffness at D).
+struct SecantIsolation {
+  double stiffness = 0.0;  // force/length
+  double period = 0.0;     // time
+};
+SecantIsolation IsolationAt(const structure::Structure& structure, const structure::Layout& layout,
+                            double displacement);
+
 // The rigid modes at displacement D (ModelSummary::rigid_modes), e.g. at a run's peak.
 std::vector<Mode> RigidModes(const structure::Structure& structure, const structure::Layout& layout,
                              double displacement);

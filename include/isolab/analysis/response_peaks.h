@@ -49,9 +49,9 @@ struct ResponsePeaks {
   // structure without stories); index: the level.
   Peak floor_acceleration;
   std::vector<Peak> floor_accelerations;  // each of those floors' (index: the level)
-  std::vector<Peak> story_drifts;  // per story: its drift at its centre of stiffness
-  Peak story_drift;                // the largest (index: the story)
-  double story_drift_ratio = 0.0;  // that drift / its story's height (0 without a height)
+  std::vector<Peak> story_drifts;         // per story: its drift at its centre of stiffness
+  Peak story_drift;                       // the largest (index: the story)
+  double story_drift_ratio = 0.0;         // that drift / its story's height (0 without a height)
   // The largest peak drift / height over the stories with a height (not necessarily the largest
   // drift's story); 0 when no story has a height.
   double largest_drift_ratio = 0.0;
@@ -85,6 +85,9 @@ struct ResponsePeaks {
   // peak was reached in), from the laws' states that Newmark's rows carry; empty for an isolator
   // without one, or where the rows carry no states (IDA).
   std::vector<std::optional<hysteresis::PendulumRegime>> regimes_at_peak;
+  // The isolation at the peak isolator displacement: its secant stiffness and the isolated
+  // period there (zero without isolators, or before they moved).
+  SecantIsolation at_peak;
   integrators::Energies energies;  // at the last row seen (zero before any)
   int rows = 0;                    // rows seen
 };

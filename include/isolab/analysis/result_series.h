@@ -25,16 +25,6 @@ struct Series {
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };
 
-// A peak as the files name it ("isolator_displacement": /peaks/<name> in HDF5, a '#' line in CSV).
-struct NamedPeak {
-  const char* name;
-  const Peak* peak;
-  Dimension dimension;  // kNone for a rotation (rad)
-};
-// The peaks that apply to the run's structure (isolator ones with isolators, story ones with
-// stories, rotations with rotating levels), in file order.
-std::vector<NamedPeak> FilePeaks(const Problem& problem, const ResponsePeaks& peaks);
-
 // The selection's levels as indices into the layout's levels (ascending, no repeats; every level
 // when none are selected): 0 is the base (an SDOF's mass) when the structure stands on one, else
 // floor 1; k is floor k; kRoofLevel the top. Throws InputError({key}, ...) for a level the
