@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "bounds_command.h"
+#include "command_table.h"
 #include "cyclic_command.h"
 #include "finite_options.h"
 #include "isolab/core/errors.h"
@@ -92,17 +93,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("isolab ") + ISOLAB_VERSION);
 
-  isolab::cli::CyclicOptions cyclic;
-  isolab::cli::RegisterCyclicCommand(app, cyclic);
-  isolab::cli::RunOptions run;
-  isolab::cli::RegisterRunCommand(app, run);
-  isolab::cli::SynthOptions synth;
-  isolab::cli::RegisterSynthCommand(app, synth);
+  namespace cli = isolab::cli;
+  cli::CommandTable commands;
+  commands.Add(app, cli::RegisterCyclicCommand, cli::RunCyclicCommand);
+  commands.Add(app, cli::RegisterRunCommand, cli::RunRunCommand);
+  commands.Add(app, cli::RegisterSynthCommand, cli::RunSynthCommand);
 #ifdef ISOLAB_SEARCH_COMMANDS
-  isolab::cli::FitOptions fit;
-  isolab::cli::RegisterFitCommand(app, fit);
-  isolab::cli::DiagnoseOptions diagnose;
-  isolab::cli::RegisterDiagnoseCommand(app, diagnose);
+  commands.Add(app, cli::RegisterFitCommand, cli::RunFitCommand);
+  commands.Add(app, cli::RegisterDiagnoseCommand, cli::RunDiagnoseCommand);
 #endif
 #ifdef ISOLAB_FRONT
   // Listed by --help; never parsed here (HandOverHeavyCommand took them).
@@ -110,18 +108,13 @@ int main(int argc, char** argv) {
     app.add_subcommand(std::string(command.name), std::string(command.help))->allow_extras();
   }
 #endif
-  isolab::cli::SpectrumOptions spectrum;
-  isolab::cli::RegisterSpectrumCommand(app, spectrum);
+  commands.Add(app, cli::RegisterSpectrumCommand, cli::RunSpectrumCommand);
 #ifdef ISOLAB_STUDY_COMMANDS
-  isolab::cli::CompareOptions compare;
-  isolab::cli::RegisterCompareCommand(app, compare);
-  isolab::cli::DesignOptions design;
-  isolab::cli::RegisterDesignCommand(app, design);
+  commands.Add(app, cli::RegisterCompareCommand, cli::RunCompareCommand);
+  commands.Add(app, cli::RegisterDesignCommand, cli::RunDesignCommand);
 #endif
-  isolab::cli::ShakeTableOptions shaketable;
-  isolab::cli::RegisterShakeTableCommand(app, shaketable);
-  isolab::cli::BoundsOptions bounds;
-  isolab::cli::RegisterBoundsCommand(app, bounds);
+  commands.Add(app, cli::RegisterShakeTableCommand, cli::RunShakeTableCommand);
+  commands.Add(app, cli::RegisterBoundsCommand, cli::RunBoundsCommand);
   isolab::cli::RequireFiniteNumbers(app);
 
   try {
@@ -132,22 +125,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (app.got_subcommand("cyclic")) isolab::cli::RunCyclicCommand(cyclic, std::cout);
-    if (app.got_subcommand("run")) return isolab::cli::RunRunCommand(run, std::cout);
-    if (app.got_subcommand("synth")) return isolab::cli::RunSynthCommand(synth, std::cout);
-#ifdef ISOLAB_SEARCH_COMMANDS
-    if (app.got_subcommand("fit")) isolab::cli::RunFitCommand(fit, std::cout);
-    if (app.got_subcommand("diagnose")) isolab::cli::RunDiagnoseCommand(diagnose, std::cout);
-#endif
-    if (app.got_subcommand("spectrum")) isolab::cli::RunSpectrumCommand(spectrum, std::cout);
-#ifdef ISOLAB_STUDY_COMMANDS
-    if (app.got_subcommand("compare")) return isolab::cli::RunCompareCommand(compare, std::cout);
-    if (app.got_subcommand("design")) return isolab::cli::RunDesignCommand(design, std::cout);
-#endif
-    if (app.got_subcommand("shaketable")) {
-      isolab::cli::RunShakeTableCommand(shaketable, std::cout);
-    }
-    if (app.got_subcommand("bounds")) isolab::cli::RunBoundsCommand(bounds, std::cout);
+    return commands.RunParsed(std::cout);
   } catch (const isolab::InputError& error) {
     std::cerr << "isolab: " << error.what() << "\n";
     return 2;
@@ -162,5 +140,4 @@ int main(int argc, char** argv) {
     std::cerr << "isolab: internal error: " << error.what() << "\n";
     return 1;
   }
-  return 0;
 }
