@@ -47,7 +47,10 @@ TEST(BuildingFit, RecoversHiddenParametersWithinTheirUncertaintyFromTwoNoisyChan
     SCOPED_TRACE(parameter.name);
     ASSERT_TRUE(parameter.log);
     EXPECT_GT(parameter.sigma, 0.0);
-    EXPECT_LT(parameter.sigma, 0.2);  // the data do determine it
+    // The data determine each to 2 % or better (measured: 0.7-0.8 % for k0 and uy, which the data
+    // fix mostly as their product, 0.007-0.6 % for the others); 2 % is a tenth of what an
+    // undetermined parameter's prior range would give.
+    EXPECT_LT(parameter.sigma, 0.02);
     EXPECT_LE(std::abs(std::log(parameter.value / hidden[p])), 3.0 * parameter.sigma);
   }
   // What is left is the noise: each channel's NRMSE near 0.02.

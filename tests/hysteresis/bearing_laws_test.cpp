@@ -241,7 +241,11 @@ TEST(LeadRubber, ACoreFarLighterThanLeadDissipatesWhatItsLoopEncloses) {
     const double cold = 4 * kQd * (protocol.amplitude - kDy);
     EXPECT_LT(area, 0.7 * cold);
     EXPECT_GT(area, 0.3 * cold);
-    EXPECT_NEAR(dissipated / area, 1.0, 0.02) << "cycle " << cycle + 1;
+    // The loop's area is the work done: what was dissipated plus the change of stored energy.
+    // The first cycle starts from a virgin core and ends with its elastic part loaded (about 1 %
+    // of the work here: 2 % allowed); the later ones start and end in nearly the same state (the
+    // core still warming: 5e-5 and 6e-4 measured), so within 1e-3.
+    EXPECT_NEAR(dissipated / area, 1.0, cycle == 0 ? 0.02 : 1e-3) << "cycle " << cycle + 1;
   }
   // The tangent of the implicit update against central differences, slipping and sticking.
   const LawKernel kernel = parameters.Kernel();
