@@ -5,7 +5,7 @@ Areas depend one way (docs/architecture.md):
 
   core <- hysteresis <- structure <- integrators <- spectra
        <- identification <- diagnosis
-       <- io (formats) <- model (schemas) <- analysis <- study <- cli, python
+       <- io (formats) <- model (schemas) <- analysis <- building, study <- cli, python
 
 An area may include its own headers and those of the areas listed for it in ALLOWED, nothing
 else: a lower area never sees a higher one (hysteresis knows no YAML, no files, no integrator).
@@ -34,6 +34,8 @@ ALLOWED = {
     "model": {"core", "hysteresis", "structure", "integrators", "spectra", "identification", "io"},
     "analysis": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
                  "diagnosis", "io", "model"},
+    "building": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
+                 "diagnosis", "io", "model", "analysis"},
     "study": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
               "diagnosis", "io", "model", "analysis"},
 }

@@ -12,13 +12,13 @@
 #include <optional>
 
 #include "bindings.h"
-#include "isolab/analysis/building_cross_validation.h"
-#include "isolab/analysis/building_diagnosis.h"
-#include "isolab/analysis/building_diagnosis_report.h"
-#include "isolab/analysis/building_fit.h"
-#include "isolab/analysis/building_fit_inputs.h"
-#include "isolab/analysis/building_fit_report.h"
-#include "isolab/analysis/building_fit_workflow.h"
+#include "isolab/building/building_cross_validation.h"
+#include "isolab/building/building_diagnosis.h"
+#include "isolab/building/building_diagnosis_report.h"
+#include "isolab/building/building_fit.h"
+#include "isolab/building/building_fit_inputs.h"
+#include "isolab/building/building_fit_report.h"
+#include "isolab/building/building_fit_workflow.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
@@ -31,11 +31,11 @@ namespace isolab::python {
 namespace {
 
 // The data options, refused (where they do not apply) under the names the Python user typed.
-analysis::BuildingData Data(const std::vector<std::string>& data, const std::string& function,
+building::BuildingData Data(const std::vector<std::string>& data, const std::string& function,
                             const std::string& specimen, const std::string& offsets,
                             const std::string& force_unit, const std::string& length_unit,
                             bool quiet) {
-  analysis::BuildingData read{data,
+  building::BuildingData read{data,
                               specimen,
                               offsets,
                               force_unit,
@@ -51,53 +51,53 @@ std::string FitBuilding(const std::vector<std::string>& data, const std::string&
                         const std::string& specimen, const std::string& offsets,
                         const std::string& force_unit, const std::string& length_unit, int threads,
                         bool cross_validate, bool model_form, bool quiet) {
-  const analysis::BuildingData read =
+  const building::BuildingData read =
       Data(data, "fit", specimen, offsets, force_unit, length_unit, quiet);
-  analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(spec_path, read);
+  building::BuildingFitInputs inputs = building::LoadBuildingFit(spec_path, read);
   // Where the command line writes it: beside the working directory, named after the spec.
   const std::string path =
       !output.empty() ? output : std::filesystem::path(spec_path).stem().string() + ".fitted.yaml";
   if (!cross_validate) io::CheckOutputs(inputs.files, {path});
-  const std::vector<analysis::BuildingMotion> motions =
-      analysis::ReadBuildingMotions(&inputs, read);
-  const analysis::BuildingFitSpec& spec = inputs.spec;
+  const std::vector<building::BuildingMotion> motions =
+      building::ReadBuildingMotions(&inputs, read);
+  const building::BuildingFitSpec& spec = inputs.spec;
   identification::FitOptions fit = SearchOptions("fit", seed, budget, threads, global_budget);
   if (!quiet) {
     fmt::print(stderr, "  {} parameters, {} motions ({}), budget {} simulations\n",
                spec.parameters.size(), motions.size(),
                spec.sequential ? "one specimen, in order" : "each from rest", budget);
     fit.progress = [](const identification::FitProgress& p) {
-      fmt::print(stderr, "{}", analysis::BuildingFitProgressLine(p));
+      fmt::print(stderr, "{}", building::BuildingFitProgressLine(p));
     };
   }
-  const analysis::BuildingFitMode mode = cross_validate ? analysis::BuildingFitMode::kCrossValidate
-                                         : model_form   ? analysis::BuildingFitMode::kModelForm
-                                                        : analysis::BuildingFitMode::kFit;
-  analysis::BuildingFitOutcome outcome;
+  const building::BuildingFitMode mode = cross_validate ? building::BuildingFitMode::kCrossValidate
+                                         : model_form   ? building::BuildingFitMode::kModelForm
+                                                        : building::BuildingFitMode::kFit;
+  building::BuildingFitOutcome outcome;
   {
     py::gil_scoped_release release;
-    outcome = analysis::RunBuildingFit(inputs.model, motions, spec, fit, mode);
+    outcome = building::RunBuildingFit(inputs.model, motions, spec, fit, mode);
   }
-  if (!outcome.fit) return analysis::BuildingFitOutcomeJson(outcome, spec.sequential, "");
+  if (!outcome.fit) return building::BuildingFitOutcomeJson(outcome, spec.sequential, "");
   const std::string text = model::FittedBuildingText(
       outcome.fit->fitted, fmt::format("identified by isolab.fit(building={}) from {}", spec_path,
                                        fmt::join(data, ", ")));
   io::WriteTextFileAtomically(path, [&](std::ostream& o) { o << text; });
-  return analysis::BuildingFitOutcomeJson(outcome, spec.sequential, path);
+  return building::BuildingFitOutcomeJson(outcome, spec.sequential, path);
 }
 
 std::string DiagnoseBuilding(const std::vector<std::string>& data, const std::string& spec_path,
                              unsigned seed, long budget, const std::string& specimen,
                              const std::string& offsets, int threads, bool quiet) {
-  const analysis::BuildingData read = Data(data, "diagnose", specimen, offsets, "", "", quiet);
-  analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(spec_path, read);
+  const building::BuildingData read = Data(data, "diagnose", specimen, offsets, "", "", quiet);
+  building::BuildingFitInputs inputs = building::LoadBuildingFit(spec_path, read);
   if (inputs.file.force_driven) {
     throw InputError({spec_path},
                      "input: force: diagnose a force-driven test's displacement and force as a "
                      "cyclic test (isolab.diagnose(data, base))");
   }
-  const std::vector<analysis::BuildingMotion> motions =
-      analysis::ReadBuildingMotions(&inputs, read);
+  const std::vector<building::BuildingMotion> motions =
+      building::ReadBuildingMotions(&inputs, read);
   const identification::FitOptions fit = SearchOptions("diagnose", seed, budget, threads);
   diagnosis::DiagnoseOptions settings;
   settings.seed = seed;
@@ -109,10 +109,10 @@ std::string DiagnoseBuilding(const std::vector<std::string>& data, const std::st
                inputs.spec.sequential ? "one specimen, in order" : "each from rest", budget);
     settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
-  std::optional<analysis::BuildingDiagnosis> result;
+  std::optional<building::BuildingDiagnosis> result;
   {
     py::gil_scoped_release release;
-    result = analysis::DiagnoseBuilding(inputs.model, motions, inputs.spec, fit, settings);
+    result = building::DiagnoseBuilding(inputs.model, motions, inputs.spec, fit, settings);
   }
   // As the cyclic diagnosis from Python: the report without its files (the command line's).
   diagnosis::ReportContext context;
@@ -121,7 +121,7 @@ std::string DiagnoseBuilding(const std::vector<std::string>& data, const std::st
   context.seed = seed;
   context.force_unit = inputs.model.units.force();
   context.length_unit = inputs.model.units.length();
-  return analysis::BuildingDiagnosisJson(*result, analysis::BuildBuildingReport(*result, context));
+  return building::BuildingDiagnosisJson(*result, building::BuildBuildingReport(*result, context));
 }
 
 }  // namespace

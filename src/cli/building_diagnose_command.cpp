@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "diagnosis_files.h"
-#include "isolab/analysis/building_diagnosis.h"
-#include "isolab/analysis/building_diagnosis_report.h"
-#include "isolab/analysis/building_fit_inputs.h"
+#include "isolab/building/building_diagnosis.h"
+#include "isolab/building/building_diagnosis_report.h"
+#include "isolab/building/building_fit_inputs.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
@@ -24,7 +24,7 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
   if (options.force) {
     throw InputError({"command line"}, "--force applies to cyclic tests, not to --building");
   }
-  const analysis::BuildingData data{options.data,
+  const building::BuildingData data{options.data,
                                     options.specimen,
                                     options.offsets,
                                     "",
@@ -32,7 +32,7 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
                                     options.quiet,
                                     "isolab diagnose --building",
                                     {}};
-  analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(options.building, data);
+  building::BuildingFitInputs inputs = building::LoadBuildingFit(options.building, data);
   if (inputs.file.force_driven) {
     throw InputError({options.building},
                      "input: force: diagnose a force-driven test's displacement and force as a "
@@ -47,8 +47,8 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
   const DiagnosisFiles files =
       DiagnosisFiles::Plan(options.out, options.data.front(), options.plot, &context);
   io::CheckOutputs(inputs.files, files.outputs);
-  const std::vector<analysis::BuildingMotion> motions =
-      analysis::ReadBuildingMotions(&inputs, data);
+  const std::vector<building::BuildingMotion> motions =
+      building::ReadBuildingMotions(&inputs, data);
 
   identification::FitOptions fit;
   fit.seed = options.seed;
@@ -65,8 +65,8 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
                options.budget);
     settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
-  const analysis::BuildingDiagnosis result =
-      analysis::DiagnoseBuilding(inputs.model, motions, inputs.spec, fit, settings);
+  const building::BuildingDiagnosis result =
+      building::DiagnoseBuilding(inputs.model, motions, inputs.spec, fit, settings);
 
   try {
     const std::string text = model::FittedBuildingText(
@@ -77,8 +77,8 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
     context.notes.push_back(fmt::format("the final model was not written: {}", error.what()));
     context.model_file.clear();
   }
-  const diagnosis::DiagnosisReport report = analysis::BuildBuildingReport(result, context);
-  const std::string text = analysis::BuildingDiagnosisJson(result, report) + "\n";
+  const diagnosis::DiagnosisReport report = building::BuildBuildingReport(result, context);
+  const std::string text = building::BuildingDiagnosisJson(result, report) + "\n";
   files.Write(report, text,
               fmt::format("{}: isolator loops from the fitted building",
                           std::filesystem::path(options.data.front()).filename().string()),

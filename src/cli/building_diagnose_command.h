@@ -1,5 +1,5 @@
 // `isolab diagnose DATA... --building SPEC`: the discrepancy workflow on a building's shake-table
-// motions (analysis/building_diagnosis.h): the building fitted by output error, the isolator's
+// motions (building/building_diagnosis.h): the building fitted by output error, the isolator's
 // loops reconstructed with the fitted masses and diagnosed, and an effect named only where the
 // building's own refit bears it out. Writes the diagnosis's report files and the final building.
 #pragma once

@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
-#include "isolab/analysis/building_fit.h"
-#include "isolab/analysis/building_fit_inputs.h"
-#include "isolab/analysis/building_fit_report.h"
-#include "isolab/analysis/building_fit_workflow.h"
+#include "isolab/building/building_fit.h"
+#include "isolab/building/building_fit_inputs.h"
+#include "isolab/building/building_fit_report.h"
+#include "isolab/building/building_fit_workflow.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/output_check.h"
@@ -32,10 +32,10 @@ void RefuseCyclicOptions(const FitOptions& options) {
 
 void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   RefuseCyclicOptions(options);
-  const analysis::BuildingData data{
+  const building::BuildingData data{
       options.data,        options.specimen, options.offsets,         options.force_unit,
       options.length_unit, options.quiet,    "isolab fit --building", {}};
-  analysis::BuildingFitInputs inputs = analysis::LoadBuildingFit(options.building, data);
+  building::BuildingFitInputs inputs = building::LoadBuildingFit(options.building, data);
   const model::ModelFile& model = inputs.model;
   if (options.cross_validate && options.model_form) {
     throw InputError({"command line"},
@@ -47,18 +47,18 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
                      "--cross-validate writes no model (each held-out fit is a step of the "
                      "check): -o does not apply; fit all the motions without it for the model");
   }
-  const analysis::BuildingFitMode mode =
-      options.cross_validate ? analysis::BuildingFitMode::kCrossValidate
-      : options.model_form   ? analysis::BuildingFitMode::kModelForm
-                             : analysis::BuildingFitMode::kFit;
+  const building::BuildingFitMode mode =
+      options.cross_validate ? building::BuildingFitMode::kCrossValidate
+      : options.model_form   ? building::BuildingFitMode::kModelForm
+                             : building::BuildingFitMode::kFit;
   const std::string output =
       !options.output.empty()
           ? options.output
           : std::filesystem::path(options.building).stem().string() + ".fitted.yaml";
   if (!options.cross_validate) io::CheckOutputs(inputs.files, {output});
-  const std::vector<analysis::BuildingMotion> motions =
-      analysis::ReadBuildingMotions(&inputs, data);
-  const analysis::BuildingFitSpec& spec = inputs.spec;
+  const std::vector<building::BuildingMotion> motions =
+      building::ReadBuildingMotions(&inputs, data);
+  const building::BuildingFitSpec& spec = inputs.spec;
 
   identification::FitOptions fit;
   fit.seed = options.seed;
@@ -70,12 +70,12 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
                spec.parameters.size(), motions.size(),
                spec.sequential ? "one specimen, in order" : "each from rest", options.budget);
     fit.progress = [](const identification::FitProgress& p) {
-      fmt::print(stderr, "{}", analysis::BuildingFitProgressLine(p));
+      fmt::print(stderr, "{}", building::BuildingFitProgressLine(p));
     };
   }
-  analysis::BuildingFitOutcome outcome;
+  building::BuildingFitOutcome outcome;
   try {
-    outcome = analysis::RunBuildingFit(model, motions, spec, fit, mode);
+    outcome = building::RunBuildingFit(model, motions, spec, fit, mode);
   } catch (const InvalidParameter& error) {
     // The search's settings are this command's options: said by their names.
     std::string text = error.violation().Describe();
@@ -84,26 +84,26 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     throw InputError({"command line"}, text);
   }
   if (!outcome.fit) {
-    out << (options.json ? analysis::BuildingFitOutcomeJson(outcome, spec.sequential, "") + "\n"
-                         : analysis::CrossValidationText(*outcome.folds));
+    out << (options.json ? building::BuildingFitOutcomeJson(outcome, spec.sequential, "") + "\n"
+                         : building::CrossValidationText(*outcome.folds));
     return;
   }
-  const analysis::BuildingFitResult& result = *outcome.fit;
+  const building::BuildingFitResult& result = *outcome.fit;
   const std::string text = model::FittedBuildingText(
       result.fitted, fmt::format("identified by isolab fit --building {} from {}", options.building,
                                  fmt::join(options.data, ", ")));
   io::WriteTextFileAtomically(output, [&](std::ostream& o) { o << text; });
 
   if (options.json) {
-    out << analysis::BuildingFitOutcomeJson(outcome, spec.sequential, output) << "\n";
+    out << building::BuildingFitOutcomeJson(outcome, spec.sequential, output) << "\n";
     return;
   }
   fmt::print(out, "mean NRMSE^2 over {} channels: {:.4g} -> {:.4g}\n{} ({:.1f} s)\n\n",
              result.channels.size(), result.objective_start, result.objective, result.stop_reason,
              result.seconds);
   fmt::print(out, "| parameter | start | fitted | 95 % interval |\n|---|---|---|---|\n");
-  for (const analysis::FittedParameter& p : result.parameters) {
-    const auto [low, high] = analysis::Interval95(p);
+  for (const building::FittedParameter& p : result.parameters) {
+    const auto [low, high] = building::Interval95(p);
     fmt::print(out, "| {} | {:.4g} | {:.4g} | {:.4g} to {:.4g}{} |\n", p.name, p.start, p.value,
                low, high, p.at_bound ? " (at the range's end)" : "");
   }
@@ -112,20 +112,20 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
                prior.value, prior.sigma, prior.source);
   }
   fmt::print(out, "\n| motion | channel | NRMSE start | NRMSE fitted |\n|---|---|---|---|\n");
-  for (const analysis::ChannelFit& c : result.channels) {
+  for (const building::ChannelFit& c : result.channels) {
     fmt::print(out, "| {} | {} | {:.3f} | {:.3f} |\n", c.motion, c.channel, c.nrmse_start, c.nrmse);
   }
   fmt::print(out,
              "\nThe residual is correlated over {:.3g} {}: its {:.0f} samples are worth {:.0f} "
              "independent ones, and the intervals count them so.\n",
              result.correlation_time, model.units.time(), result.samples, result.effective_samples);
-  for (const analysis::CorrelatedParameters& pair : result.not_separated) {
+  for (const building::CorrelatedParameters& pair : result.not_separated) {
     fmt::print(out,
                "not separately identified: {} and {} (correlation {:.3f}): the data fix a "
                "combination of the two\n",
                pair.a, pair.b, pair.correlation);
   }
-  if (outcome.folds) out << analysis::ModelFormText(result, *outcome.folds);
+  if (outcome.folds) out << building::ModelFormText(result, *outcome.folds);
   fmt::print(out, "fitted model: {}\n", output);
 }
 

@@ -1,5 +1,5 @@
 // `isolab fit --building SPEC data...`: identifies a building model (isolation and
-// superstructure) from shake-table motions by output error (analysis/building_fit.h) and writes
+// superstructure) from shake-table motions by output error (building/building_fit.h) and writes
 // the fitted model with its parameters' uncertainty.
 #pragma once
 

@@ -2,7 +2,7 @@
 // effects it lacks one by one (diagnosis/diagnose.h), judges what remains, and writes the report
 // (diagnosis/report.h) as Markdown and JSON, the residual as CSV with its plot, and the final
 // model file. With --building, the same on a building's shake-table motions
-// (analysis/building_diagnosis.h).
+// (building/building_diagnosis.h).
 #pragma once
 
 #include <ostream>

@@ -13,10 +13,10 @@
 #include <sstream>
 
 #include "common_options.h"
-#include "isolab/analysis/prediction_band.h"
 #include "isolab/analysis/results_file.h"
-#include "isolab/analysis/shake_table_measurements.h"
-#include "isolab/analysis/shake_table_prediction.h"
+#include "isolab/building/prediction_band.h"
+#include "isolab/building/shake_table_measurements.h"
+#include "isolab/building/shake_table_prediction.h"
 #include "isolab/core/errors.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/cyclic_test_file.h"
@@ -79,20 +79,20 @@ namespace {
 
 // What `isolab shaketable` measured and predicted, composed before anything is written.
 struct ShakeTableOutcome {
-  analysis::LevelMeasurements m;
+  building::LevelMeasurements m;
   identification::CyclicTestData isolator;  // the slab's displacement against the base shear
-  analysis::Signal shear;
+  building::Signal shear;
   double weight = 0.0;
-  std::optional<analysis::ShakeTablePrediction> prediction;
-  std::optional<analysis::PredictionBand> band;
+  std::optional<building::ShakeTablePrediction> prediction;
+  std::optional<building::PredictionBand> band;
   std::string results_path;
 };
 
 // Measured against predicted in time, with the band's 5 and 95 % where one was drawn.
 void WriteComparison(const std::string& path, const ShakeTableOutcome& o) {
-  const analysis::LevelMeasurements& m = o.m;
-  const analysis::ShakeTablePrediction& p = *o.prediction;
-  const std::optional<analysis::PredictionBand>& band = o.band;
+  const building::LevelMeasurements& m = o.m;
+  const building::ShakeTablePrediction& p = *o.prediction;
+  const std::optional<building::PredictionBand>& band = o.band;
   io::WriteTextFileAtomically(path, [&](std::ostream& file) {
     fmt::print(file,
                "time_s,isolator_displacement_measured,isolator_displacement_predicted,"
@@ -116,8 +116,8 @@ void WriteComparison(const std::string& path, const ShakeTableOutcome& o) {
 
 nlohmann::json ShakeTableJson(const ShakeTableOptions& options, const UnitSystem& units,
                               const ShakeTableOutcome& o) {
-  const analysis::LevelMeasurements& m = o.m;
-  const std::optional<analysis::PredictionBand>& band = o.band;
+  const building::LevelMeasurements& m = o.m;
+  const std::optional<building::PredictionBand>& band = o.band;
   nlohmann::json json;
   json["data"] = options.data;
   json["model"] = options.model;
@@ -128,7 +128,7 @@ nlohmann::json ShakeTableJson(const ShakeTableOptions& options, const UnitSystem
   json["weight"] = o.weight;
   json["units"] = {{"force", units.force()}, {"length", units.length()}, {"time", units.time()}};
   if (o.prediction) {
-    for (const analysis::ComparedPeak& row : o.prediction->peaks) {
+    for (const building::ComparedPeak& row : o.prediction->peaks) {
       json["comparison"].push_back({{"quantity", row.quantity},
                                     {"unit", row.unit},
                                     {"measured", row.measured},
@@ -166,8 +166,8 @@ nlohmann::json ShakeTableJson(const ShakeTableOptions& options, const UnitSystem
 
 void PrintShakeTable(const ShakeTableOptions& options, const UnitSystem& units,
                      const ShakeTableOutcome& o, std::ostream& out) {
-  const analysis::LevelMeasurements& m = o.m;
-  const std::optional<analysis::PredictionBand>& band = o.band;
+  const building::LevelMeasurements& m = o.m;
+  const std::optional<building::PredictionBand>& band = o.band;
   fmt::print(out,
              "{}: {} samples, {} half-cycles of the isolator; levels (slab to roof) = "
              "channels {}\n{}\n",
@@ -175,18 +175,18 @@ void PrintShakeTable(const ShakeTableOptions& options, const UnitSystem& units,
              m.reference_note);
   if (band) {
     fmt::print(out, "{}\n",
-               analysis::CoverageSentence(*band, units.length(),
+               building::CoverageSentence(*band, units.length(),
                                           DescribeUnits(units, dimension::kAcceleration)));
   }
   fmt::print(out, "peak isolator displacement {:.4g} {}, peak base shear {:.4g} {} ({:.3g} W)\n",
-             analysis::PeakAbs(m.displacement.front()), units.length(), analysis::PeakAbs(o.shear),
-             units.force(), analysis::PeakAbs(o.shear) / o.weight);
+             building::PeakAbs(m.displacement.front()), units.length(), building::PeakAbs(o.shear),
+             units.force(), building::PeakAbs(o.shear) / o.weight);
   if (!options.isolator.empty()) fmt::print(out, "isolator history: {}\n", options.isolator);
   if (!options.record.empty()) fmt::print(out, "table record: {}\n", options.record);
   if (options.predict) {
     fmt::print(out,
                "\n| quantity | measured | predicted | predicted / measured |\n|---|---|---|---|\n");
-    for (const analysis::ComparedPeak& row : o.prediction->peaks) {
+    for (const building::ComparedPeak& row : o.prediction->peaks) {
       fmt::print(out, "| {} [{}] | {:.4g} | {:.4g} | {:.3f} |\n", row.quantity, row.unit,
                  row.measured, row.predicted, row.predicted / row.measured);
     }
@@ -235,17 +235,17 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   inputs.push_back(options.data);
   io::CheckOutputs(inputs, outputs);
   if (!results_path.empty()) analysis::CheckResultsPath(results_path);
-  const std::vector<double> masses = analysis::LevelMasses(model);
+  const std::vector<double> masses = building::LevelMasses(model);
   const UnitSystem& units = model.units;
   ShakeTableOutcome o;
-  o.m = analysis::ReadShakeTableMeasurements(options.data, options.channels, units, masses.size());
-  const analysis::LevelMeasurements& m = o.m;
+  o.m = building::ReadShakeTableMeasurements(options.data, options.channels, units, masses.size());
+  const building::LevelMeasurements& m = o.m;
   if (!options.quiet) {
     fmt::print(stderr, "isolab shaketable: {} samples, levels (slab to roof) = channels {}; {}\n",
                m.time.size(), fmt::join(m.channels, ","), m.reference_note);
   }
   o.results_path = results_path;
-  o.shear = analysis::BaseShear(m.acceleration, masses);
+  o.shear = building::BaseShear(m.acceleration, masses);
   identification::CyclicTestData& isolator = o.isolator;
   isolator.name = std::filesystem::path(options.data).stem().string();
   isolator.time = m.time;
@@ -273,14 +273,14 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
     solve.results_path = results_path;
     solve.version = ISOLAB_VERSION;
     if (!options.quiet) fmt::print(stderr, "  predicting under the measured table motion\n");
-    o.prediction = analysis::PredictShakeTable(model, m, solve);
+    o.prediction = building::PredictShakeTable(model, m, solve);
   }
   if (options.samples > 0) {
     if (!options.quiet) {
       fmt::print(stderr, "  {} parameter sets drawn from the model's uncertainty\n",
                  options.samples);
     }
-    o.band = analysis::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
+    o.band = building::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
   }
   double total_mass = 0.0;
   for (const double mass : masses) total_mass += mass;

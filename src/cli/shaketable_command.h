@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/shake_table_measurements.h"
+#include "isolab/building/shake_table_measurements.h"
 
 namespace CLI {
 class App;
@@ -25,7 +25,7 @@ namespace isolab::cli {
 struct ShakeTableOptions {
   std::string data;   // shake-table CSV
   std::string model;  // building model (shear building with base mass; isolation for --predict)
-  analysis::ShakeTableChannels channels;  // --levels, --displacements, --offsets, prefixes
+  building::ShakeTableChannels channels;  // --levels, --displacements, --offsets, prefixes
   std::string isolator;                   // isolator history CSV (cyclic-test format)
   std::string record;                     // table acceleration record CSV
   bool predict = false;

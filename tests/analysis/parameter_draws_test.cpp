@@ -10,14 +10,14 @@
 #include <cmath>
 #include <string>
 
+#include "building/synthetic_building.h"
 #include "isolab/analysis/building_parameters.h"
 #include "isolab/core/errors.h"
-#include "synthetic_building.h"
 
 namespace isolab::analysis {
 namespace {
 
-using namespace synthetic;
+using namespace building::synthetic;
 
 const char* const kUncertainty =
     "uncertainty:\n"

@@ -3,7 +3,7 @@
 // population, twice as large, when an island stagnates), a convergence stop, then pagmo's compass
 // search from the best point. The objective is a black box, so the cyclic-test fit (fit.h: e^2
 // with the stiffnesses solved exactly at each point) and the building-level output-error fit
-// (analysis/building_fit.h: a simulation per point) share one search.
+// (building/building_fit.h: a simulation per point) share one search.
 //
 // The same answer on every machine: the number of islands is an option with a fixed default,
 // never the core count, because the budget is split across islands and so their number shapes
@@ -40,7 +40,7 @@ struct FitOptions {
   // ends with its last whole chunk of generations that fits the budget.
   double polish_share = 0.1;
   // Fits that end with a least-squares refinement instead of the polish (the building fit,
-  // analysis/building_fit.h) give the CMA-ES stage this many evaluations and the refinement the
+  // building/building_fit.h) give the CMA-ES stage this many evaluations and the refinement the
   // rest of the budget. -1: half the budget, or one chunk of generations where half is less
   // and the budget allows it; 0: no global stage; else >= 100. A global budget below
   // FirstChunkEvaluations runs no global stage either: CMA-ES would not move.

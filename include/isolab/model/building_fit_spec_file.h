@@ -1,4 +1,4 @@
-// What `isolab fit --building` identifies (analysis/building_fit.h): the building model it starts
+// What `isolab fit --building` identifies (building/building_fit.h): the building model it starts
 // from, the parameters it fits (analysis/building_parameters.h names them), the channels it
 // compares and the band it reads them in.
 //   model: bncs.yaml                 # relative to this file

@@ -1,4 +1,4 @@
-// Writes a building model identified by `isolab fit --building` (analysis/building_fit.h) as a
+// Writes a building model identified by `isolab fit --building` (building/building_fit.h) as a
 // model file: the model it started from, with the fitted values and their uncertainty.
 #pragma once
 

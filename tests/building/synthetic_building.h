@@ -1,0 +1,91 @@
+// Buildings isolab generates with known, hidden parameters, for the building-level fit and
+// diagnosis tests: a three-story building on an isolation layer given as YAML, a table motion over
+// its bands, its response at every level as measurements, and white noise on a channel.
+#pragma once
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "isolab/building/building_fit.h"
+#include "isolab/model/model_file.h"
+
+namespace isolab::building::synthetic {
+
+// A three-story building on a bilinear isolation layer, in kN, mm, s.
+inline std::string BuildingText(const std::string& isolation, double story_stiffness = 60.0,
+                                double damping = 0.04) {
+  return "units: {force: kN, length: mm, time: s}\n"
+         "isolation: {components: [" +
+         isolation +
+         "]}\n"
+         "structure:\n"
+         "  type: shear_building\n"
+         "  base_mass: 60 t\n"
+         "  stories: {count: 3, mass: 50 t, stiffness: " +
+         std::to_string(story_stiffness) +
+         "}\n"
+         "  damping: {type: modal, ratios: [" +
+         std::to_string(damping) + "]}\n";
+}
+
+inline const char* kBilinear = "{name: iso, type: bhm2, k0: 12.0, k1: 1.5, uy: 6.0}";
+
+inline model::ModelFile Model(const std::string& text) {
+  return model::LoadModelText(text, "building.yaml");
+}
+
+// A table motion: decaying sines over the isolated and the superstructure's bands (mm/s^2).
+inline BuildingMotion TableMotion(const std::string& name, double amplitude, double seconds,
+                                  double phase = 0.0) {
+  BuildingMotion motion;
+  motion.name = name;
+  const double dt = 0.01;
+  const std::size_t n = std::size_t(seconds / dt) + 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = double(k) * dt;
+    const double envelope = t < 2.0 ? t / 2.0 : std::exp(-(t - 2.0) / 6.0);
+    motion.measured.time.push_back(t);
+    motion.measured.table_acceleration.push_back(amplitude * envelope *
+                                                 (std::sin(2 * M_PI * 0.45 * t + phase) +
+                                                  0.6 * std::sin(2 * M_PI * 1.3 * t) +
+                                                  0.3 * std::sin(2 * M_PI * 3.1 * t + 2 * phase)));
+  }
+  return motion;
+}
+
+// The model's response at every level, as measurements (noise added by the caller).
+inline void Measure(const model::ModelFile& model, std::vector<BuildingMotion>* motions,
+                    bool sequential = false) {
+  std::vector<BuildingChannel> channels;
+  const int levels = 4;
+  for (int l = 1; l <= levels; ++l) channels.push_back({BuildingChannel::Kind::kDisplacement, l});
+  for (int l = 1; l <= levels; ++l) channels.push_back({BuildingChannel::Kind::kAcceleration, l});
+  const ChannelHistories h = SimulateChannels(model, *motions, channels, sequential, 0.0);
+  for (std::size_t m = 0; m < motions->size(); ++m) {
+    BuildingMeasurements& measured = (*motions)[m].measured;
+    measured.displacement.assign(h[m].begin(), h[m].begin() + levels);
+    measured.acceleration.assign(h[m].begin() + levels, h[m].end());
+  }
+}
+
+inline double RootMeanSquare(const Signal& x) {
+  double sum = 0.0;
+  for (const double v : x) sum += v * v;
+  return std::sqrt(sum / double(x.size()));
+}
+
+inline void AddNoise(Signal* x, double share, std::mt19937* random) {
+  std::normal_distribution<double> noise(0.0, share * RootMeanSquare(*x));
+  for (double& v : *x) v += noise(*random);
+}
+
+inline identification::FitOptions Options(long budget) {
+  identification::FitOptions options;
+  options.budget = budget;
+  options.threads = 2;
+  return options;
+}
+
+}  // namespace isolab::building::synthetic
