@@ -18,6 +18,7 @@
 #include <string>
 
 #include "cli/run_isolab.h"
+#include "cli/text_file.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/model/model_file.h"
 #include "own_test_file.h"
@@ -26,13 +27,6 @@ namespace isolab::analysis {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Read(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 double Hdf5Peak(const fs::path& file, const std::string& name) {
   const hid_t h5 = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -79,7 +73,7 @@ TEST_P(SummaryPeaksEverywhere, EachOutputListsTheTablesPeaksWithOneValue) {
   const testing::Outcome text =
       testing::RunIsolab("run " + model + " -o " + (folder / "r.csv").string());
   ASSERT_EQ(text.exit_code, 0) << text.output;
-  const std::string csv = Read(folder / "r.csv");
+  const std::string csv = testing::ReadText(folder / "r.csv");
 
   std::set<std::string> names;
   for (const NamedPeak& p : table) {
