@@ -10,11 +10,10 @@
 
 #include "bindings.h"
 #include "isolab/core/errors.h"
-#include "isolab/core/hardware_threads.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 #include "isolab/study/design_report.h"
-#include "isolab/study/scheduler.h"
+#include "isolab/study/design_workflow.h"
 
 namespace py = pybind11;
 
@@ -24,25 +23,20 @@ namespace {
 py::dict Design(const std::string& design_path, const std::string& output, int jobs, bool quiet) {
   const model::DesignFile design = model::LoadDesignFile(design_path);
   if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
-  const std::unique_ptr<study::DesignFolder> claimed =
-      study::ClaimDesignFolder(output, design, "output");
-  const std::string& folder = claimed->path();
-  const int threads = ThreadsOrHardware(jobs);
-  study::DesignOutcome outcome;
+  study::DesignRun run;
   {
     py::gil_scoped_release release;
-    const std::unique_ptr<study::Scheduler> scheduler = study::MakeLocalScheduler(threads);
-    outcome =
-        study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {
-          if (!quiet) fmt::print(stderr, "{}\n", line);
-        });
+    run = study::RunDesignIntoFolder(design, {output, "output", jobs, false, ISOLAB_VERSION},
+                                     [&](const std::string& line) {
+                                       if (!quiet) fmt::print(stderr, "{}\n", line);
+                                     },
+                                     {});
   }
-  if (outcome.failed > 0) {
+  const study::DesignOutcome& outcome = run.outcome;
+  if (!run.committed) {
     throw std::runtime_error(fmt::format("{} of {} design runs failed; no design values",
                                          outcome.failed, outcome.runs.size()));
   }
-  study::WriteDesignFiles(design, outcome, folder, false);
-  claimed->Commit();
 
   const double second = 1.0 / design.model.units.SiFactor(dimension::kTime);  // model time per s
   py::dict bounds;
@@ -125,7 +119,7 @@ py::dict Design(const std::string& design_path, const std::string& output, int j
   result["period_range"] = py::make_tuple(outcome.period_range[0], outcome.period_range[1]);
   result["statistic"] = outcome.mean_of_suite ? "mean" : "max";
   result["summary"] = study::DesignSummaryText(design, outcome);
-  result["output"] = folder;
+  result["output"] = run.folder;
   return result;
 }
 

@@ -12,12 +12,11 @@
 #include "common_options.h"
 #include "finite_options.h"
 #include "isolab/core/errors.h"
-#include "isolab/core/hardware_threads.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 #include "isolab/study/design_report.h"
+#include "isolab/study/design_workflow.h"
 #include "isolab/study/mpi_scheduler.h"
-#include "isolab/study/scheduler.h"
 #include "plot_script.h"
 
 namespace isolab::cli {
@@ -53,41 +52,48 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
   }
   const model::DesignFile design = model::LoadDesignFile(options.design);
   if (options.figures) CheckPlotScript(kDesignPlotScript);  // before the runs, not after
-  const std::unique_ptr<study::DesignFolder> claimed =
-      study::ClaimDesignFolder(options.output, design, "--output");
-  const std::string& folder = claimed->path();
-  const int threads = ThreadsOrHardware(options.jobs);
-  const std::unique_ptr<study::Scheduler> scheduler = study::MakeLocalScheduler(threads);
-  const study::DesignOutcome outcome =
-      study::RunDesign(design, folder, ISOLAB_VERSION, *scheduler, [&](const std::string& line) {
-        if (!options.quiet) fmt::print(stderr, "{}\n", line);
-      });
-  if (outcome.failed > 0) {
-    for (const study::JobResult& run : outcome.runs) {
-      if (!run.completed) fmt::print(stderr, "isolab design: run failed: {}\n", run.message);
+  const study::DesignFolderOptions folder_options{options.output, "--output", options.jobs,
+                                                  options.figures, ISOLAB_VERSION};
+  // A figure script that fails rolls the design back, said as the figures' failure.
+  struct FiguresFailed : std::runtime_error {
+    using std::runtime_error::runtime_error;
+  };
+  study::DesignRun run;
+  try {
+    run = study::RunDesignIntoFolder(
+        design, folder_options,
+        [&](const std::string& line) {
+          if (!options.quiet) fmt::print(stderr, "{}\n", line);
+        },
+        [&](const std::string& folder) {
+          if (!options.figures) return;
+          try {
+            RunPlotScript(kDesignPlotScript, {folder}, options.quiet);
+          } catch (const std::runtime_error& error) {
+            throw FiguresFailed(error.what());
+          }
+        });
+  } catch (const FiguresFailed& error) {
+    fmt::print(stderr, "isolab design: figures: {}\n", error.what());
+    return 1;
+  }
+  const study::DesignOutcome& outcome = run.outcome;
+  if (!run.committed) {
+    for (const study::JobResult& job : outcome.runs) {
+      if (!job.completed) fmt::print(stderr, "isolab design: run failed: {}\n", job.message);
     }
     fmt::print(stderr, "isolab design: {} of {} runs failed; no design values written\n",
                outcome.failed, outcome.runs.size());
     return 1;
   }
-  study::WriteDesignFiles(design, outcome, folder, options.figures);
-  if (options.figures) {
-    try {
-      RunPlotScript(kDesignPlotScript, {folder}, options.quiet);
-    } catch (const std::runtime_error& error) {
-      fmt::print(stderr, "isolab design: figures: {}\n", error.what());
-      return 1;
-    }
-  }
-  claimed->Commit();
   fmt::print(out, "{}", study::DesignSummaryText(design, outcome));
-  fmt::print(out, "report: {}\n", (std::filesystem::path(folder) / "design.md").string());
+  fmt::print(out, "report: {}\n", (std::filesystem::path(run.folder) / "design.md").string());
   if (!options.quiet) {
     fmt::print(stderr,
                "isolab design: the suite in {:.1f} s, {} runs in {:.1f} s on {}, {:.1f} s in all "
                "before the figures\n",
-               outcome.suite_seconds, outcome.runs.size(), outcome.runs_seconds,
-               scheduler->Describe(), outcome.wall_seconds);
+               outcome.suite_seconds, outcome.runs.size(), outcome.runs_seconds, run.scheduler,
+               outcome.wall_seconds);
   }
   return 0;
 }
