@@ -22,10 +22,9 @@ void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
       "Write a model's nominal, upper-bound and lower-bound models from its property "
       "modification factors (ASCE 7-16 17.2.8.4)");
   command->add_option("model", o.model, "Model file (YAML) with modification factors")->required();
-  command
-      ->add_option(
-          "-o,--output", o.output,
-          "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
+  AddOutputOption(
+      command, &o.output,
+      "Folder to write <model>_nominal.yaml, _upper.yaml and _lower.yaml to (made if missing)")
       ->required();
   command->add_flag("--opensees", o.opensees,
                     "Also write each bound's bearings as OpenSees elements, <model>_<bound>.tcl "

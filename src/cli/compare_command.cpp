@@ -94,8 +94,8 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
   command->add_option("study", options.study, "Study file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("-o,--output", options.output,
-                      "Output folder (default: the study's output.directory, else its name)");
+  AddOutputOption(command, &options.output,
+                  "Output folder (default: the study's output.directory, else its name)");
   AddJobsOption(command, &options.jobs, "Worker processes without mpirun");
   AddQuietFlag(command, &options.quiet);
   command->add_flag("--plot", options.plot,

@@ -391,7 +391,7 @@ void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
       ->add_option("--noise", options.noise,
                    "Gaussian force noise on --test-data, relative to each test's RMS force")
       ->check(Between(0.0, 1.0));
-  command->add_option("--seed", options.seed, "Seed of the --noise generator");
+  AddSeedOption(command, &options.seed, "Seed of the --noise generator");
   command->add_flag("--sequential", options.sequential,
                     "Run a model's tests one after another on one specimen, each from the state "
                     "the previous left (a campaign); --test-data then says '# specimen: one'");

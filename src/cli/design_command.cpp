@@ -35,8 +35,8 @@ void RegisterDesignCommand(CLI::App& app, DesignOptions& options) {
   command->add_option("design", options.design, "Design file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("-o,--output", options.output,
-                      "Output folder (default: the design's output.directory, else its name)");
+  AddOutputOption(command, &options.output,
+                  "Output folder (default: the design's output.directory, else its name)");
   AddJobsOption(command, &options.jobs);
   AddQuietFlag(command, &options.quiet);
   command->add_flag("!--no-figures", options.figures,

@@ -92,7 +92,7 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
   command->add_option("--out", options.out,
                       "Report stem: writes OUT.md, OUT.json, OUT.model.yaml, OUT.residual.csv "
                       "and OUT.residual.png (default: <first data file>.diagnosis)");
-  command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the diagnosis");
+  AddSeedOption(command, &options.seed, "Seed; a fixed seed reproduces the diagnosis");
   AddSpecimenOption(command, &options.specimen);
   command->add_option("--budget", options.budget, "Model evaluations per fit (default 12000)")
       ->check(Between(100, 1e8));

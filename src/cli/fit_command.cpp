@@ -45,7 +45,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                    "With --building: accelerometer offsets, pre-event (each channel less its mean "
                    "before the table moves; default) or none, as isolab shaketable takes them")
       ->check(CLI::IsMember({"pre-event", "none"}));
-  command->add_option("--seed", options.seed, "Seed; a fixed seed reproduces the fit exactly");
+  AddSeedOption(command, &options.seed, "Seed; a fixed seed reproduces the fit exactly");
   command->add_option("--budget", options.budget, "Model evaluations (default 60000)")
       ->check(Between(100, 1e9));
   command
@@ -66,7 +66,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                       "Whole cycles to fit, 1-based, e.g. --cycles 3 as the paper fits HDRB tests "
                       "(default: every test's whole history)");
   AddSpecimenOption(command, &options.specimen);
-  command->add_option("-o,--output", options.output, "Fitted model file (YAML)");
+  AddOutputOption(command, &options.output, "Fitted model file (YAML)");
   command->add_option("--force-unit", options.force_unit,
                       "Force unit of data files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,

@@ -154,8 +154,8 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                    "Isolator displacement (model length unit) for the isolated period printed "
                    "before the run (default 0.1 m)")
       ->check(Positive());
-  command->add_option("-o,--output", options.output,
-                      "Results file: .h5/.hdf5 (HDF5) or .csv (time histories)");
+  AddOutputOption(command, &options.output,
+                  "Results file: .h5/.hdf5 (HDF5) or .csv (time histories)");
   command
       ->add_option("--every", options.every,
                    "Write every N-th analysis step (replaces output.every; peaks and energies "
@@ -189,7 +189,7 @@ void RegisterRunCommand(CLI::App& app, RunOptions& options) {
                    "Parameter sets drawn from the fitted model's uncertainty (isolab fit "
                    "--building) for the 5-50-95 % spread of the peaks")
       ->check(CLI::Range(2, 100000));
-  command->add_option("--seed", options.seed, "Seed of the drawn parameter sets (--samples)");
+  AddSeedOption(command, &options.seed, "Seed of the drawn parameter sets (--samples)");
   AddJsonFlag(command, &options.json, "Print the summary as JSON");
   AddQuietFlag(command, &options.quiet,
                "No preamble (record, model summary, grid) before the peaks");

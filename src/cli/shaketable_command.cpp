@@ -67,7 +67,7 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
                    "With --predict: parameter sets drawn from the fitted model's uncertainty "
                    "(isolab fit --building) for a 5-95 % band on the prediction")
       ->check(CLI::Range(2, 100000));
-  command->add_option("--seed", options.seed, "Seed of the drawn parameter sets (--samples)");
+  AddSeedOption(command, &options.seed, "Seed of the drawn parameter sets (--samples)");
   command->add_option("--results", options.results, "HDF5 results of the prediction");
   command->add_option("--comparison", options.comparison,
                       "CSV of measured and predicted histories (for the overlay plot)");

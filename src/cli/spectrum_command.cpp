@@ -319,8 +319,8 @@ void RegisterSpectrumCommand(CLI::App& app, SpectrumOptions& options) {
                       "when it gives one");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of the spectra (m, cm, mm, in, ft; default m)");
-  command->add_option("-o,--output", options.outputs,
-                      "Write the spectra: OUT.csv and/or OUT.h5 (repeat -o for both)");
+  AddOutputOption(command, &options.outputs,
+                  "Write the spectra: OUT.csv and/or OUT.h5 (repeat -o for both)");
   command->add_flag("--plot{}", options.plot,
                     "After writing, plot with plot_spectrum.py; --plot=DIR puts the PNGs in DIR "
                     "(default: beside the first output)");

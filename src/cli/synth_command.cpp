@@ -178,9 +178,8 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   CLI::App* command = app.add_subcommand("synth", "Write a seeded synthetic ground motion (AT2)");
   command->add_option("kind", o.kind, "noise (filtered white noise) or pulse (near-fault)")
       ->check(CLI::IsMember({"noise", "pulse"}));
-  command->add_option("-o,--output", o.output, "AT2 file to write; with --pairs, the folder")
-      ->required();
-  command->add_option("--seed", o.noise.seed, "noise, pairs: random seed");
+  AddOutputOption(command, &o.output, "AT2 file to write; with --pairs, the folder")->required();
+  AddSeedOption(command, &o.noise.seed, "noise, pairs: random seed");
   command->add_option("--pga", o.pga, "noise: peak ground acceleration (g), (0, 10]");
   command->add_option("--duration", o.duration, "noise, pairs: duration (s), ten samples or more");
   command->add_option("--dt", o.dt, "noise, pairs: time step (s), [0.001, 0.05]");
