@@ -8,7 +8,9 @@ isolator (SDOF) displacement at the record's 0.02 s sample times, relative to it
 is the integrator's own (RunSummary.wall_seconds), the best of three runs. The table goes to
 stdout and to docs/convergence.md.
 
-Usage: benchmarks/convergence_study.py [--isolab build/isolab] [--out docs/convergence.md]
+Usage: benchmarks/convergence_study.py [--isolab build/isolab] [--out docs/convergence.md | -]
+(`--out -`: the tables to stdout only, as scripts/doc_tables/convergence.py prints them for the
+docs check)
 Reads the bundled ground_motions/elcentro_1940_ns.at2; needs Debian's python3-h5py.
 """
 import argparse
@@ -82,13 +84,21 @@ def matched_time(points, target):
     return None, False
 
 
-# Each table says where it comes from (scripts/check_docs.py requires it of a table of numbers).
-MARKER = ("<!-- table from: benchmarks/convergence_study.py | not checked: the script rewrites "
-          "these tables in place (about a minute, needs python3-h5py); wall (ms) is one "
-          "machine's -->")
+# Each table says where it comes from (scripts/check_docs.py requires it of a table of numbers):
+# the docs check compares the errors, orders and counts with what scripts/doc_tables/convergence.py
+# prints (opt-in), not the wall times, which are one machine's.
+def marker(number, columns):
+    return (f"<!-- table from: scripts/doc_tables/convergence.py isolab | table: {number} | "
+            f"columns: {columns} | opt-in: about a minute, needs python3-h5py; wall (ms) is one "
+            "machine's -->")
 
 
-def study(isolab, title, model, extra, unit):
+WALL_MARKER = ("<!-- table from: benchmarks/convergence_study.py | not checked: wall times of one "
+               "machine, interpolated -->")
+
+
+def study(isolab, title, model, extra, unit, first_table):
+    """The case's three tables, numbered from `first_table` among those the study prints."""
     lines = [f"### {title}", ""]
     reference, ref_summary = run(
         isolab, model, extra,
@@ -100,7 +110,8 @@ def study(isolab, title, model, extra, unit):
         f"{peak:.6g} {unit}, {ref_summary['ida']['steps']} steps, "
         f"{ref_summary['ida']['events']} phase-change events, energy balance error "
         f"{ref_summary['energy_balance_error']:.1e}.")
-    lines += ["", MARKER, "| Newmark dt (s) | max error / peak | observed order | RMS error | "
+    lines += ["", marker(first_table, "1-5"),
+              "| Newmark dt (s) | max error / peak | observed order | RMS error | "
               "Newton iterations | wall (ms) |", "|---|---|---|---|---|---|"]
     newmark_points, previous = [], None
     for dt in STEPS:
@@ -123,7 +134,8 @@ def study(isolab, title, model, extra, unit):
     lines += ["", f"Least-squares order over 0.02-0.0005 s: **{fitted:.2f}**. "
               + (f"Step pairs off 2 by more than 0.3: {', '.join(off)}." if off
                  else "Every step pair is within 0.3 of 2.")]
-    lines += ["", MARKER, "| IDA rtol | max error / peak | RMS error | IDA steps | events | "
+    lines += ["", marker(first_table + 1, "1-6"),
+              "| IDA rtol | max error / peak | RMS error | IDA steps | events | "
               "Jacobians | wall (ms) |", "|---|---|---|---|---|---|---|"]
     ida_points = []
     for rtol in TOLERANCES:
@@ -137,7 +149,7 @@ def study(isolab, title, model, extra, unit):
         lines.append(f"| {rtol:g} | {max_error:.2e} | {rms:.2e} | {ida['steps']} | "
                      f"{ida['events']} | {ida['jacobian_evaluations']} | {1e3 * wall:.2f} |")
     lines += ["", "Wall time for equal accuracy (interpolated between the runs above):", "",
-              MARKER, "| max error / peak | Newmark (ms) | IDA (ms) | IDA / Newmark |",
+              WALL_MARKER, "| max error / peak | Newmark (ms) | IDA (ms) | IDA / Newmark |",
               "|---|---|---|---|"]
     for target in [1e-2, 1e-3, 1e-4, 1e-5]:
         newmark, newmark_bound = matched_time(newmark_points, target)
@@ -159,10 +171,12 @@ def main():
     if not os.path.exists(EL_CENTRO):
         sys.exit(f"the study needs {EL_CENTRO}, which the repository bundles")
     lines = []
-    for title, model, extra, unit in CASES:
-        lines += study(os.path.abspath(args.isolab), title, model, extra, unit) + [""]
+    for case, (title, model, extra, unit) in enumerate(CASES):
+        lines += study(os.path.abspath(args.isolab), title, model, extra, unit, 3 * case + 1) + [""]
     table = "\n".join(lines)
     print(table)
+    if args.out == "-":
+        return
     with open(args.out) as existing:
         text = existing.read()
     begin, end = "<!-- convergence-study:begin -->", "<!-- convergence-study:end -->"
