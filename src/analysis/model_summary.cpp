@@ -340,19 +340,33 @@ void WarnAboutBearingWeights(const structure::Structure& s, const structure::Lay
 
 }  // namespace
 
-SecantIsolation IsolationAt(const structure::Structure& s, const structure::Layout& layout,
-                            double displacement) {
-  SecantIsolation at;
+namespace {
+
+// The isolators' secant stiffnesses at D, summed (along x in plan).
+double IsolatorsSecantStiffness(const structure::Structure& s, const structure::Layout& layout,
+                                double displacement) {
+  double stiffness = 0.0;
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    at.stiffness +=
+    stiffness +=
         isolator.member >= 0
             ? SecantStiffness(s.members()[isolator.member].assembly, displacement)
             : SecantStiffness(s.coupled_members()[isolator.coupled].assembly, displacement).x;
   }
-  for (const Mode& mode : RigidModes(s, layout, displacement)) {
-    at.period = std::max(at.period, mode.period);
-  }
-  return at;
+  return stiffness;
+}
+
+double Longest(const std::vector<Mode>& modes) {
+  double period = 0.0;
+  for (const Mode& mode : modes) period = std::max(period, mode.period);
+  return period;
+}
+
+}  // namespace
+
+SecantIsolation IsolationAt(const structure::Structure& s, const structure::Layout& layout,
+                            double displacement) {
+  return {IsolatorsSecantStiffness(s, layout, displacement),
+          Longest(RigidModes(s, layout, displacement))};
 }
 
 ModelSummary SummariseModel(const structure::Structure& s, const structure::Layout& layout,
@@ -374,10 +388,9 @@ ModelSummary SummariseModel(const structure::Structure& s, const structure::Layo
     summary.fixed_base_modes = Modes(s, layout, 0.0);
   }
   if (summary.isolated) {
-    const SecantIsolation at_trial = IsolationAt(s, layout, trial_displacement);
-    summary.secant_stiffness = at_trial.stiffness;
-    summary.isolated_period = at_trial.period;
+    summary.secant_stiffness = IsolatorsSecantStiffness(s, layout, trial_displacement);
     summary.rigid_modes = RigidModes(s, layout, trial_displacement);
+    summary.isolated_period = Longest(summary.rigid_modes);
     summary.isolated_modes = Modes(s, layout, trial_displacement);
   }
 

@@ -271,9 +271,6 @@ ResponsePeaks PeakTracker::Peaks() const {
                                            peaks.story_drifts[s].value / layout.stories[s].height);
     }
   }
-  if (layout.isolated() && peaks.isolator_displacement.value > 0.0) {
-    peaks.at_peak = IsolationAt(problem_.structure, layout, peaks.isolator_displacement.value);
-  }
   if (peaks.base_centre_displacement.value > 0.0) {
     peaks.torsional_amplification =
         peaks.isolator_displacement.value / peaks.base_centre_displacement.value;

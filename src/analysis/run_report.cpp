@@ -87,8 +87,9 @@ nlohmann::json RunReport(const Problem& problem, const model::AnalysisSection& a
                                   {"isolated_period", m.isolated_period},
                                   {"rigid_modes", ModesJson(m.rigid_modes)},
                                   {"isolated_modes", ModesJson(m.isolated_modes)}});
-    json["at_peak_displacement"] = {{"secant_stiffness", peaks.at_peak.stiffness},
-                                    {"period", peaks.at_peak.period}};
+    if (const std::optional<SecantIsolation> at = IsolationAtPeak(problem, peaks)) {
+      json["at_peak_displacement"] = {{"secant_stiffness", at->stiffness}, {"period", at->period}};
+    }
   }
   if (layout.rotations && layout.isolated()) {
     json["torsional_amplification"] = peaks.torsional_amplification;

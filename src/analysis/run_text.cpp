@@ -116,7 +116,6 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
   const structure::Layout& layout = problem.layout;
   const ResponsePeaks& peaks = summary.peaks;
   const std::string length = u.length(), force = u.force(), time = u.time();
-  const std::string acceleration = DescribeUnits(u, dimension::kAcceleration);
   const double g = u.Convert(1.0, "g", dimension::kAcceleration);
   // What a line adds after the peak's time.
   const auto note = [&](const NamedPeak& p) -> std::string {
@@ -195,10 +194,11 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
     }
     fmt::print(out, "\n{:<34} {:>12.5g} {}\n", "  at the end of the excitation",
                peaks.isolator_displacement_at_excitation_end, length);
-    if (peaks.at_peak.stiffness > 0.0) {
+    const std::optional<SecantIsolation> at = IsolationAtPeak(problem, peaks);
+    if (at && at->stiffness > 0.0) {
       fmt::print(out, "{:<34} {:>12.4g} {:<8} (secant stiffness {:.4g} {} at the peak)\n",
-                 "period at the peak displacement", peaks.at_peak.period, time,
-                 peaks.at_peak.stiffness, DescribeUnits(u, dimension::kStiffness));
+                 "period at the peak displacement", at->period, time, at->stiffness,
+                 DescribeUnits(u, dimension::kStiffness));
     }
   }
   if (peaks.rows > 0) {

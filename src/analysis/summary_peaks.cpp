@@ -31,7 +31,7 @@ constexpr Row kRows[] = {
      &ResponsePeaks::roof_absolute_acceleration, dimension::kAcceleration, Applies::kAlways,
      Note::kG},
     {"floor_acceleration", "peak floor acceleration", &ResponsePeaks::floor_acceleration,
-     dimension::kAcceleration, Applies::kAlways, Note::kLevelAndG},
+     dimension::kAcceleration, Applies::kStories, Note::kLevelAndG},
     {"floor_rotation", "peak floor rotation", &ResponsePeaks::level_rotation, dimension::kNone,
      Applies::kRotations, Note::kLevel},
     {"base_centre_displacement", "peak base centre displacement",
@@ -64,6 +64,11 @@ std::vector<NamedPeak> SummaryPeaks(const structure::Layout& layout, const Respo
     named.push_back({row.name, row.label, &(peaks.*row.peak), row.dimension, row.note});
   }
   return named;
+}
+
+std::optional<SecantIsolation> IsolationAtPeak(const Problem& problem, const ResponsePeaks& peaks) {
+  if (!problem.layout.isolated() || !(peaks.isolator_displacement.value > 0.0)) return std::nullopt;
+  return IsolationAt(problem.structure, problem.layout, peaks.isolator_displacement.value);
 }
 
 std::string PeakUnit(const UnitSystem& units, Dimension dimension) {

@@ -19,6 +19,8 @@ class CommandTable {
   void Add(CLI::App& app, void (*add)(CLI::App&, Options&), Run run) {
     auto options = std::make_shared<Options>();
     add(app, *options);
+    // Every subcommand in the order added (an empty filter; the plain overload lists only the
+    // parsed ones): the last is the one `add` just made.
     CLI::App* command = app.get_subcommands({}).back();
     commands_.push_back({command, [options, run](std::ostream& out) {
                            if constexpr (std::is_void_v<decltype(run(*options, out))>) {

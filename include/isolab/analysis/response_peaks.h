@@ -85,9 +85,6 @@ struct ResponsePeaks {
   // peak was reached in), from the laws' states that Newmark's rows carry; empty for an isolator
   // without one, or where the rows carry no states (IDA).
   std::vector<std::optional<hysteresis::PendulumRegime>> regimes_at_peak;
-  // The isolation at the peak isolator displacement: its secant stiffness and the isolated
-  // period there (zero without isolators, or before they moved).
-  SecantIsolation at_peak;
   integrators::Energies energies;  // at the last row seen (zero before any)
   int rows = 0;                    // rows seen
 };

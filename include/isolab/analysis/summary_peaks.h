@@ -3,6 +3,7 @@
 // peak is added to all of them by one row in summary_peaks.cpp.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,12 @@ struct NamedPeak {
 // The peaks that apply to the run's structure (isolator ones with isolators, story ones with
 // stories, rotations with rotating levels), in the outputs' order.
 std::vector<NamedPeak> SummaryPeaks(const structure::Layout& layout, const ResponsePeaks& peaks);
+
+// The isolation at the run's peak isolator displacement (model_summary.h's IsolationAt: the
+// secant stiffness and the isolated period there), for the text and the JSON alike; nullopt
+// without isolators or before they moved. Computed when an output asks, not by every Solve (fits
+// and studies run thousands).
+std::optional<SecantIsolation> IsolationAtPeak(const Problem& problem, const ResponsePeaks& peaks);
 
 // A peak's unit as the outputs write it: the model's ("mm/s^2"), or "rad".
 std::string PeakUnit(const UnitSystem& units, Dimension dimension);
