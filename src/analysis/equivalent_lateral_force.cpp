@@ -113,7 +113,7 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
   }
   // The weights the runs load the pendulums with: under axial_load, each at its static share N_0
   // (its response is N_0 / W times its law's, as Structure::Evaluate scales it at rest).
-  std::vector<double> scales(s.members().size() + s.coupled_members().size(), 1.0);
+  std::vector<double> scales(s.slots(), 1.0);
   for (const structure::AxialBearing& bearing : s.axial_loads().bearings) {
     scales[bearing.slot] = bearing.static_load / bearing.weight;
   }
@@ -122,30 +122,21 @@ IsolationSystem::IsolationSystem(const model::ModelFile& model) {
   std::vector<std::vector<std::uint64_t>> signatures;
   for (const structure::IsolatorLayout& isolator : laid_out.layout.isolators) {
     positions_.push_back(isolator.position);
-    const std::size_t slot = isolator.member >= 0
-                                 ? static_cast<std::size_t>(isolator.member)
-                                 : s.members().size() + static_cast<std::size_t>(isolator.coupled);
-    const std::optional<double> law =
-        isolator.member >= 0
-            ? hysteresis::PendulumWeight(s.members()[isolator.member].assembly)
-            : hysteresis::PendulumWeight(s.coupled_members()[isolator.coupled].assembly);
+    const auto slot = static_cast<std::size_t>(isolator.slot);
+    const std::optional<double> law = s.VisitSlotAssembly(
+        slot, [](const auto& assembly) { return hysteresis::PendulumWeight(assembly); });
     const double w = law.value_or(std::numeric_limits<double>::quiet_NaN());
     bearing_weights_.push_back({isolator.name, w, w * scales[slot]});
     const std::vector<std::uint64_t> signature =
-        isolator.member >= 0 ? Signature(s.members()[isolator.member].assembly)
-                             : Signature(s.coupled_members()[isolator.coupled].assembly);
+        s.VisitSlotAssembly(slot, [](const auto& assembly) { return Signature(assembly); });
     const auto same = std::find(signatures.begin(), signatures.end(), signature);
     bearings_.push_back({static_cast<std::size_t>(same - signatures.begin()), scales[slot]});
     if (same != signatures.end()) continue;
     signatures.push_back(signature);
-    if (isolator.member >= 0) {
-      laws_.push_back([assembly = s.members()[isolator.member].assembly](double d, double t) {
-        return LastCycle(assembly, d, t);
-      });
-    } else {
-      laws_.push_back([assembly = s.coupled_members()[isolator.coupled].assembly](
-                          double d, double t) { return LastCycle(assembly, d, t); });
-    }
+    laws_.push_back(s.VisitSlotAssembly(
+        slot, [](const auto& assembly) -> std::function<EffectiveProperties(double, double)> {
+          return [assembly](double d, double t) { return LastCycle(assembly, d, t); };
+        }));
   }
   gravity_ = model.units.Convert(1.0, "g", dimension::kAcceleration);
   double mass = 0.0;

@@ -41,23 +41,23 @@ const char* DirectionName(int direction) {
   return direction == structure::kX ? "x" : direction == structure::kY ? "y" : "torsion";
 }
 
-// The isolator that member `member` (or coupled member `coupled`) is, or nullptr.
-const structure::IsolatorLayout* IsolatorOf(const structure::Layout& layout, int member,
-                                            int coupled) {
-  for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    if ((member >= 0 && isolator.member == member) ||
-        (coupled >= 0 && isolator.coupled == coupled)) {
-      return &isolator;
-    }
-  }
-  return nullptr;
-}
-
 Vec2 InitialStiffness(const hysteresis::PlanAssembly& assembly) {
   std::vector<hysteresis::PlanLawState> rest(assembly.state_size()), trial(assembly.state_size());
   std::vector<hysteresis::PlanLawResponse> responses(assembly.size());
   const hysteresis::PlanResponse r = assembly.Update(rest, {}, trial, responses);
   return {r.stiffness.xx, r.stiffness.yy};
+}
+
+// A slot's stiffness along x and y (a one-direction member's along its own row, y zero): its
+// initial stiffness, or an isolator's secant stiffness at `displacement`.
+Vec2 SlotStiffness(const hysteresis::ParallelAssembly& assembly, bool isolator,
+                   double displacement) {
+  return {
+      isolator ? SecantStiffness(assembly, displacement) : structure::InitialStiffness(assembly),
+      0.0};
+}
+Vec2 SlotStiffness(const hysteresis::PlanAssembly& assembly, bool isolator, double displacement) {
+  return isolator ? SecantStiffness(assembly, displacement) : InitialStiffness(assembly);
 }
 
 // The stiffness matrix as triplets: every member at its initial stiffness, the isolators at their
@@ -67,32 +67,23 @@ enum class Members { kAll, kIsolatorsOnly };
 std::vector<Eigen::Triplet<double>> StiffnessEntries(const structure::Structure& s,
                                                      const structure::Layout& layout,
                                                      double displacement, Members which) {
-  std::vector<Eigen::Triplet<double>> entries;
-  for (std::size_t k = 0; k < s.members().size(); ++k) {
-    const structure::Member& member = s.members()[k];
-    const bool isolator = IsolatorOf(layout, static_cast<int>(k), -1) != nullptr;
-    if (which == Members::kIsolatorsOnly && !isolator) continue;
-    const double stiffness = isolator ? SecantStiffness(member.assembly, displacement)
-                                      : structure::InitialStiffness(member.assembly);
-    for (int a = 0; a < structure::kMaxTerms; ++a) {
-      for (int b = 0; b < structure::kMaxTerms; ++b) {
-        if (member.dofs[a] == kGround || member.dofs[b] == kGround) continue;
-        entries.emplace_back(member.dofs[a], member.dofs[b],
-                             member.coefficients[a] * stiffness * member.coefficients[b]);
-      }
-    }
+  std::vector<bool> isolators(s.slots(), false);
+  for (const structure::IsolatorLayout& isolator : layout.isolators) {
+    isolators[isolator.slot] = true;
   }
-  for (std::size_t i = 0; i < s.coupled_members().size(); ++i) {
-    const structure::CoupledMember& member = s.coupled_members()[i];
-    const bool isolator = IsolatorOf(layout, -1, static_cast<int>(i)) != nullptr;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t slot = 0; slot < s.slots(); ++slot) {
+    const bool isolator = isolators[slot];
     if (which == Members::kIsolatorsOnly && !isolator) continue;
-    const Vec2 k = isolator ? SecantStiffness(member.assembly, displacement)
-                            : InitialStiffness(member.assembly);
-    for (int a = 0; a < structure::kMaxTerms; ++a) {
-      for (int b = 0; b < structure::kMaxTerms; ++b) {
-        if (member.dofs[a] == kGround || member.dofs[b] == kGround) continue;
-        const Vec2 ta = member.columns[a], tb = member.columns[b];
-        entries.emplace_back(member.dofs[a], member.dofs[b], ta.x * k.x * tb.x + ta.y * k.y * tb.y);
+    const Vec2 k = s.VisitSlotAssembly(slot, [&](const auto& assembly) {
+      return SlotStiffness(assembly, isolator, displacement);
+    });
+    const structure::Structure::Influence influence = s.SlotInfluence(slot);
+    for (int a = 0; a < influence.count; ++a) {
+      for (int b = 0; b < influence.count; ++b) {
+        const Vec2 ta = influence.columns[a], tb = influence.columns[b];
+        entries.emplace_back(influence.dofs[a], influence.dofs[b],
+                             ta.x * k.x * tb.x + ta.y * k.y * tb.y);
       }
     }
   }
@@ -299,15 +290,12 @@ void WarnAboutDimensions(const structure::Structure& s, const structure::Layout&
     }
   }
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    if (isolator.member >= 0) {
-      for (const auto& component : s.members()[isolator.member].assembly.components()) {
-        WarnAboutPendulum(component.name, component.parameters, units, total_weight, warnings);
+    s.VisitSlotAssembly(isolator.slot, [&](const auto& assembly) {
+      for (const auto& component : assembly.components()) {
+        WarnAboutPendulum(component.name, hysteresis::LawAlongX(component), units, total_weight,
+                          warnings);
       }
-    } else {
-      for (const auto& component : s.coupled_members()[isolator.coupled].assembly.components()) {
-        WarnAboutPendulum(component.name, component.law, units, total_weight, warnings);
-      }
-    }
+    });
   }
 }
 
@@ -321,10 +309,8 @@ void WarnAboutBearingWeights(const structure::Structure& s, const structure::Lay
   if (!s.axial_loads().empty() || layout.isolators.empty() || !(total_weight > 0.0)) return;
   double carried = 0.0;
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    const std::optional<double> w =
-        isolator.member >= 0
-            ? hysteresis::PendulumWeight(s.members()[isolator.member].assembly)
-            : hysteresis::PendulumWeight(s.coupled_members()[isolator.coupled].assembly);
+    const std::optional<double> w = s.VisitSlotAssembly(
+        isolator.slot, [](const auto& assembly) { return hysteresis::PendulumWeight(assembly); });
     if (!w) return;
     carried += *w;
   }
@@ -347,10 +333,9 @@ double IsolatorsSecantStiffness(const structure::Structure& s, const structure::
                                 double displacement) {
   double stiffness = 0.0;
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    stiffness +=
-        isolator.member >= 0
-            ? SecantStiffness(s.members()[isolator.member].assembly, displacement)
-            : SecantStiffness(s.coupled_members()[isolator.coupled].assembly, displacement).x;
+    stiffness += s.VisitSlotAssembly(isolator.slot, [&](const auto& assembly) {
+                    return SlotStiffness(assembly, true, displacement);
+                  }).x;
   }
   return stiffness;
 }

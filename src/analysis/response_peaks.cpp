@@ -22,6 +22,16 @@ void Consider(Peak* peak, double value, double time, int index = -1) {
 double Magnitude(Vec2 v) { return v.y == 0.0 ? std::abs(v.x) : Norm(v); }
 
 // The largest of `peaks` (the first of equals), or an absent peak.
+// A component's kernel as a law of elements in series, or nullptr (a bidirectional one's x law:
+// its elements' states are read along x and y).
+const hysteresis::SeriesArrangement* SeriesLawOf(const hysteresis::LawKernel& kernel) {
+  return std::get_if<hysteresis::SeriesArrangement>(&kernel);
+}
+const hysteresis::SeriesArrangement* SeriesLawOf(const hysteresis::PlanLawKernel& kernel) {
+  const auto* law = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel);
+  return law ? &law->law : nullptr;
+}
+
 Peak Largest(const std::vector<Peak>& peaks) {
   Peak largest;
   for (const Peak& peak : peaks) {
@@ -75,43 +85,20 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   const structure::Structure& s = problem.structure;
   for (std::size_t i = 0; i < isolators; ++i) {
     const structure::IsolatorLayout& isolator = layout.isolators[i];
-    if (isolator.member >= 0) {
-      const hysteresis::ParallelAssembly& assembly = s.members()[isolator.member].assembly;
+    const auto slot = static_cast<std::size_t>(isolator.slot);
+    const std::size_t width = static_cast<std::size_t>(s.slot_width(slot));
+    s.VisitSlotAssembly(slot, [&](const auto& assembly) {
       for (std::size_t c = 0; c < assembly.size(); ++c) {
-        const auto* law = std::get_if<hysteresis::SeriesArrangement>(&assembly.kernels()[c]);
-        if (law && assembly.components()[c].parameters.type() ==
+        const hysteresis::SeriesArrangement* law = SeriesLawOf(assembly.kernels()[c]);
+        if (law && hysteresis::LawAlongX(assembly.components()[c]).type() ==
                        hysteresis::LawType::kTripleFrictionPendulum) {
-          triples_.push_back(
-              {i, law, s.law_offset(isolator.member) + assembly.ElementStatesOffset(c), false});
+          triples_.push_back({i, law,
+                              s.slot_law_offset(slot) + width * assembly.ElementStatesOffset(c),
+                              width == 2});
         }
       }
-    } else {
-      const hysteresis::PlanAssembly& assembly = s.coupled_members()[isolator.coupled].assembly;
-      for (std::size_t c = 0; c < assembly.size(); ++c) {
-        const auto* law = std::get_if<hysteresis::PlanSeriesArrangement>(&assembly.kernels()[c]);
-        if (law &&
-            assembly.components()[c].law.type() == hysteresis::LawType::kTripleFrictionPendulum) {
-          triples_.push_back(
-              {i, &law->law,
-               s.coupled_law_offset(isolator.coupled) + 2 * assembly.ElementStatesOffset(c), true});
-        }
-      }
-    }
+    });
   }
-}
-
-// The deformation is linear in the dofs: the same map takes the velocities to its rate.
-Vec2 PeakTracker::IsolatorDeformation(std::size_t isolator, std::span<const double> dofs) const {
-  const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
-  if (site.member >= 0) return {problem_.structure.MemberDeformation(site.member, dofs), 0.0};
-  return problem_.structure.CoupledDeformation(site.coupled, dofs);
-}
-
-Vec2 PeakTracker::IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const {
-  const structure::IsolatorLayout& site = problem_.layout.isolators[isolator];
-  if (site.member >= 0) return {row.connection_force[site.member], 0.0};
-  const std::size_t column = problem_.structure.coupled_force_column(site.coupled);
-  return {row.connection_force[column], row.connection_force[column + 1]};
 }
 
 Vec2 PeakTracker::StoryDrift(std::size_t story, const integrators::ResponseRow& row) const {
@@ -136,6 +123,7 @@ Vec2 PeakTracker::StoryShear(std::size_t story, const integrators::ResponseRow& 
 
 void PeakTracker::Observe(const integrators::ResponseRow& row) {
   const structure::Layout& layout = problem_.layout;
+  const structure::Structure& structure = problem_.structure;
   const double t = row.time;
   ResponsePeaks& peaks = peaks_;
 
@@ -150,13 +138,16 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   }
   const bool before_end = t <= problem_.excitation_end * (1 + 1e-12);
   for (std::size_t i = 0; i < layout.isolators.size(); ++i) {
-    const Vec2 u = IsolatorDeformation(i, row.displacement);
+    const auto slot = static_cast<std::size_t>(layout.isolators[i].slot);
+    const Vec2 u = structure.SlotDeformation(slot, row.displacement);
     const double largest = peaks.isolator_displacements[i].value;
     Consider(&peaks.isolator_displacements[i], Magnitude(u), t, static_cast<int>(i));
     at_peak_[i] = peaks.isolator_displacements[i].value > largest;
-    Consider(&peaks.isolator_forces[i], Magnitude(IsolatorForce(i, row)), t, static_cast<int>(i));
-    Consider(&peaks.isolator_velocities[i], Magnitude(IsolatorDeformation(i, row.velocity)), t,
-             static_cast<int>(i));
+    Consider(&peaks.isolator_forces[i], Magnitude(structure.SlotForce(slot, row.connection_force)),
+             t, static_cast<int>(i));
+    // The deformation is linear in the dofs: the same map takes the velocities to its rate.
+    Consider(&peaks.isolator_velocities[i],
+             Magnitude(structure.SlotDeformation(slot, row.velocity)), t, static_cast<int>(i));
     std::vector<Sample>& ring = window_[i];
     ring[(window_start_ + window_size_) % ring.size()] = {t, u.x, u.y};
     if (before_end) at_excitation_end_[i] = u;
@@ -165,13 +156,11 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
 
   Vec2 base_shear;
   for (const structure::GroundForce& term : layout.base_shear) {
-    if (term.member >= 0) {
-      const double f = row.connection_force[term.member];
-      (term.direction == structure::kX ? base_shear.x : base_shear.y) += f;
+    const Vec2 f = structure.SlotForce(term.slot, row.connection_force);
+    if (structure.slot_width(term.slot) == 1) {
+      (term.direction == structure::kX ? base_shear.x : base_shear.y) += f.x;
     } else {
-      const std::size_t column = problem_.structure.coupled_force_column(term.coupled);
-      base_shear =
-          base_shear + Vec2{row.connection_force[column], row.connection_force[column + 1]};
+      base_shear = base_shear + f;
     }
   }
   Consider(&peaks.base_shear, Magnitude(base_shear), t);
@@ -283,7 +272,7 @@ ResponsePeaks PeakTracker::Peaks() const {
       high = k == 0 ? Vec2{s.x, s.y} : Vec2{std::max(high.x, s.x), std::max(high.y, s.y)};
     }
     const Vec2 middle = 0.5 * (low + high), half = 0.5 * (high - low);
-    const bool one_direction = layout.isolators[i].member >= 0;
+    const bool one_direction = problem_.structure.slot_width(layout.isolators[i].slot) == 1;
     peaks.isolator_residuals.push_back(one_direction ? middle.x : Norm(middle));
     peaks.isolator_oscillations.push_back(one_direction ? half.x : Norm(half));
     if (i == 0 ||

@@ -47,22 +47,17 @@ std::vector<std::string> Named(std::vector<std::string> columns) {
   return columns;
 }
 
-// The level each member and each coupled member belongs to (the one above a story, an isolator's
-// own), for the level selection.
-struct MemberLevels {
-  std::vector<int> member, coupled;
-};
-MemberLevels LevelsOfMembers(const Problem& problem) {
-  MemberLevels levels{std::vector<int>(problem.structure.members().size(), -1),
-                      std::vector<int>(problem.structure.coupled_members().size(), -1)};
+// The level each slot (member or coupled member) belongs to: the one above a story, an
+// isolator's own; for the level selection.
+std::vector<int> LevelsOfSlots(const Problem& problem) {
+  std::vector<int> levels(problem.structure.slots(), -1);
   for (const structure::StoryLayout& story : problem.layout.stories) {
     for (const int member : story.members) {
-      if (member >= 0) levels.member[member] = story.level;
+      if (member >= 0) levels[member] = story.level;
     }
   }
   for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-    if (isolator.member >= 0) levels.member[isolator.member] = isolator.level;
-    if (isolator.coupled >= 0) levels.coupled[isolator.coupled] = isolator.level;
+    levels[isolator.slot] = isolator.level;
   }
   return levels;
 }
@@ -115,23 +110,18 @@ void AppendLevelSeries(const Problem& problem, const model::OutputSelection& sel
     }
   }
   // Torsion members' forces are torques: they are the stories' torque, not connection forces.
-  std::vector<bool> torque(s.members().size(), false);
+  std::vector<bool> torque(s.slots(), false);
   for (const structure::StoryLayout& story : layout.stories) {
     if (story.members[structure::kRotation] >= 0)
       torque[story.members[structure::kRotation]] = true;
   }
-  const MemberLevels member_levels = LevelsOfMembers(problem);
+  const std::vector<int> slot_levels = LevelsOfSlots(problem);
   std::vector<int> force_columns;
   std::vector<std::string> force_names;
-  for (std::size_t k = 0; k < s.members().size(); ++k) {
-    if (torque[k] || !IsSelected(levels, member_levels.member[k])) continue;
-    force_columns.push_back(static_cast<int>(k));
-    force_names.push_back(s.members()[k].name);
-  }
-  for (std::size_t i = 0; i < s.coupled_members().size(); ++i) {
-    if (!IsSelected(levels, member_levels.coupled[i])) continue;
-    int column = static_cast<int>(s.coupled_force_column(i));
-    for (const std::string& name : Directional(s.coupled_members()[i].name, true)) {
+  for (std::size_t slot = 0; slot < s.slots(); ++slot) {
+    if (torque[slot] || !IsSelected(levels, slot_levels[slot])) continue;
+    int column = static_cast<int>(s.slot_force_column(slot));
+    for (const std::string& name : Directional(s.slot_name(slot), s.slot_width(slot) == 2)) {
       force_names.push_back(name);
       force_columns.push_back(column++);
     }
@@ -169,56 +159,43 @@ void AppendIsolatorSeries(const Problem& problem, std::vector<Series>& series) {
   std::vector<std::size_t> component_laws;  // per component column: its law state
   const bool many = layout.isolators.size() > 1;
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    const bool coupled = isolator.coupled >= 0;
-    any_coupled = any_coupled || coupled;
-    for (const std::string& name : Directional(isolator.name, coupled)) names.push_back(name);
+    const auto slot = static_cast<std::size_t>(isolator.slot);
+    const int width = s.slot_width(slot);
+    any_coupled = any_coupled || width == 2;
+    for (const std::string& name : Directional(isolator.name, width == 2)) names.push_back(name);
     resultants.push_back(isolator.name);
     const std::string prefix = many ? isolator.name + "/" : "";
-    if (coupled) {
-      const std::size_t column = s.coupled_force_column(isolator.coupled);
-      force_of.push_back(static_cast<int>(column));
-      force_of.push_back(static_cast<int>(column + 1));
-      std::size_t law = s.coupled_law_offset(isolator.coupled);
-      for (const auto& component : s.coupled_members()[isolator.coupled].assembly.components()) {
-        for (const std::string& name : Directional(prefix + component.name, true)) {
+    for (int d = 0; d < width; ++d)
+      force_of.push_back(static_cast<int>(s.slot_force_column(slot)) + d);
+    std::size_t law = s.slot_law_offset(slot);
+    s.VisitSlotAssembly(slot, [&](const auto& assembly) {
+      for (const auto& component : assembly.components()) {
+        for (const std::string& name : Directional(prefix + component.name, width == 2)) {
           components.push_back(name);
           component_laws.push_back(law++);
         }
       }
-    } else {
-      force_of.push_back(isolator.member);
-      std::size_t law = s.law_offset(isolator.member);
-      for (const auto& component : s.members()[isolator.member].assembly.components()) {
-        components.push_back(prefix + component.name);
-        component_laws.push_back(law++);
-      }
-    }
+    });
   }
   const auto deformations = [&problem](const ResponseRow& row, double* out) {
     for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-      if (isolator.member >= 0) {
-        *out++ = problem.structure.MemberDeformation(isolator.member, row.displacement);
-      } else {
-        const Vec2 u = problem.structure.CoupledDeformation(isolator.coupled, row.displacement);
-        *out++ = u.x;
-        *out++ = u.y;
-      }
+      const Vec2 u = problem.structure.SlotDeformation(isolator.slot, row.displacement);
+      *out++ = u.x;
+      if (problem.structure.slot_width(isolator.slot) == 2) *out++ = u.y;
     }
   };
   series.push_back({"isolator/displacement", length, Named(names), deformations});
   series.push_back(
       Columns("isolator/force", force, Named(names), &ResponseRow::connection_force, force_of));
   if (any_coupled) {
-    series.push_back({"isolator/resultant", length, Named(resultants),
-                      [&problem](const ResponseRow& row, double* out) {
-                        for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-                          *out++ = isolator.member >= 0
-                                       ? std::abs(problem.structure.MemberDeformation(
-                                             isolator.member, row.displacement))
-                                       : Norm(problem.structure.CoupledDeformation(
-                                             isolator.coupled, row.displacement));
-                        }
-                      }});
+    series.push_back(
+        {"isolator/resultant", length, Named(resultants),
+         [&problem](const ResponseRow& row, double* out) {
+           for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+             const Vec2 u = problem.structure.SlotDeformation(isolator.slot, row.displacement);
+             *out++ = problem.structure.slot_width(isolator.slot) == 1 ? std::abs(u.x) : Norm(u);
+           }
+         }});
   }
   const structure::AxialLoads& axial = s.axial_loads();
   if (!axial.empty()) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -29,6 +30,11 @@ std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
   return "?";
 }
 
+bool HasRateFormOf(const hysteresis::LawKernel& kernel) { return hysteresis::HasRateForm(kernel); }
+bool HasRateFormOf(const hysteresis::PlanLawKernel& kernel) {
+  return hysteresis::HasPlanRateForm(kernel);
+}
+
 // IDA integrates the laws' rate forms: a law without one (a degrading BHM2, alone or in an
 // uncoupled pair) is refused before the run, naming where it is.
 void RequireRateForms(const structure::Structure& structure) {
@@ -39,14 +45,14 @@ void RequireRateForms(const structure::Structure& structure) {
                                  "--integrator newmark)",
                                  where));
   };
-  for (const structure::Member& member : structure.members()) {
-    for (const auto& kernel : member.assembly.kernels()) {
-      if (!hysteresis::HasRateForm(kernel)) refuse("member '" + member.name + "'");
-    }
-  }
-  for (const structure::CoupledMember& member : structure.coupled_members()) {
-    for (const auto& kernel : member.assembly.kernels()) {
-      if (!hysteresis::HasPlanRateForm(kernel)) refuse("isolator '" + member.name + "'");
+  for (std::size_t slot = 0; slot < structure.slots(); ++slot) {
+    const bool rate_forms = structure.VisitSlotAssembly(slot, [](const auto& assembly) {
+      return std::all_of(assembly.kernels().begin(), assembly.kernels().end(),
+                         [](const auto& kernel) { return HasRateFormOf(kernel); });
+    });
+    if (!rate_forms) {
+      refuse(fmt::format("{} '{}'", structure.slot_width(slot) == 2 ? "isolator" : "member",
+                         structure.slot_name(slot)));
     }
   }
 }

@@ -4,9 +4,34 @@
 
 namespace isolab::integrators {
 
-using hysteresis::Vec2;
-using structure::kGround;
 using structure::SlotOf;
+
+void RateFormSystem::AddLaw(LawBlock law, const hysteresis::LawKernel& kernel) {
+  law.plan = false;
+  law.kernel = static_cast<int>(member_kernels_.size());
+  member_kernels_.push_back(&kernel);
+  member_phases_.push_back(hysteresis::RestPhase(kernel));
+  AddBlock(law, hysteresis::InternalVariableCount(kernel), hysteresis::PhaseRootCount(kernel));
+}
+
+void RateFormSystem::AddLaw(LawBlock law, const hysteresis::PlanLawKernel& kernel) {
+  law.plan = true;
+  law.kernel = static_cast<int>(plan_kernels_.size());
+  plan_kernels_.push_back(&kernel);
+  plan_phases_.push_back(hysteresis::PlanRestPhase(kernel));
+  AddBlock(law, hysteresis::PlanInternalVariableCount(kernel),
+           hysteresis::PlanPhaseRootCount(kernel));
+}
+
+void RateFormSystem::AddBlock(LawBlock law, int q_count, int roots) {
+  law.q0 = internal_count_;
+  law.q_count = q_count;
+  law.root0 = root_count_;
+  law.roots = roots;
+  internal_count_ += q_count;
+  root_count_ += roots;
+  laws_.push_back(law);
+}
 
 RateFormSystem::RateFormSystem(const structure::Structure& structure, const Excitation& excitation)
     : structure_(structure),
@@ -14,57 +39,24 @@ RateFormSystem::RateFormSystem(const structure::Structure& structure, const Exci
       mass_influence_(excitation.MassInfluence(structure.mass())),
       dofs_(structure.dofs()),
       dof_rows_(dofs_, structure.viscous_damping()) {
-  const auto add_law = [&](LawBlock law, int q_count, int roots) {
-    law.q0 = internal_count_;
-    law.q_count = q_count;
-    law.root0 = root_count_;
-    law.roots = roots;
-    internal_count_ += q_count;
-    root_count_ += roots;
-    laws_.push_back(law);
-  };
-  const auto& members = structure.members();
-  for (std::size_t k = 0; k < members.size(); ++k) {
+  for (std::size_t slot = 0; slot < structure.slots(); ++slot) {
+    // The slot's map G (r x m) from its influence: the same operator Newmark's Evaluate applies.
+    const structure::Structure::Influence influence = structure.SlotInfluence(slot);
     LawBlock law;
-    law.rows = 1;
-    for (int a = 0; a < kMaxTerms; ++a) {
-      if (members[k].dofs[a] == kGround) continue;
-      law.dofs[law.terms] = members[k].dofs[a];
-      law.map[0][law.terms++] = members[k].coefficients[a];
+    law.rows = structure.slot_width(slot);
+    law.terms = influence.count;
+    for (int a = 0; a < influence.count; ++a) {
+      law.dofs[a] = influence.dofs[a];
+      law.map[0][a] = influence.columns[a].x;
+      law.map[1][a] = influence.columns[a].y;
     }
-    law.force_column = static_cast<int>(k);
-    const auto& kernels = members[k].assembly.kernels();
-    for (std::size_t l = 0; l < kernels.size(); ++l) {
-      law.plan = false;
-      law.kernel = static_cast<int>(member_kernels_.size());
-      law.law_column = static_cast<int>(structure.law_offset(k) + l);
-      member_kernels_.push_back(&kernels[l]);
-      member_phases_.push_back(hysteresis::RestPhase(kernels[l]));
-      add_law(law, hysteresis::InternalVariableCount(kernels[l]),
-              hysteresis::PhaseRootCount(kernels[l]));
-    }
-  }
-  const auto& coupled = structure.coupled_members();
-  for (std::size_t i = 0; i < coupled.size(); ++i) {
-    LawBlock law;
-    law.rows = 2;
-    for (int a = 0; a < kMaxTerms; ++a) {
-      if (coupled[i].dofs[a] == kGround) continue;
-      law.dofs[law.terms] = coupled[i].dofs[a];
-      law.map[0][law.terms] = coupled[i].columns[a].x;
-      law.map[1][law.terms++] = coupled[i].columns[a].y;
-    }
-    law.force_column = static_cast<int>(structure.coupled_force_column(i));
-    const auto& kernels = coupled[i].assembly.kernels();
-    for (std::size_t c = 0; c < kernels.size(); ++c) {
-      law.plan = true;
-      law.kernel = static_cast<int>(plan_kernels_.size());
-      law.law_column = static_cast<int>(structure.coupled_law_offset(i) + 2 * c);
-      plan_kernels_.push_back(&kernels[c]);
-      plan_phases_.push_back(hysteresis::PlanRestPhase(kernels[c]));
-      add_law(law, hysteresis::PlanInternalVariableCount(kernels[c]),
-              hysteresis::PlanPhaseRootCount(kernels[c]));
-    }
+    law.force_column = static_cast<int>(structure.slot_force_column(slot));
+    structure.VisitSlotAssembly(slot, [&](const auto& assembly) {
+      for (std::size_t c = 0; c < assembly.kernels().size(); ++c) {
+        law.law_column = static_cast<int>(structure.slot_law_offset(slot) + law.rows * c);
+        AddLaw(law, assembly.kernels()[c]);
+      }
+    });
   }
   responses_.resize(laws_.size());
   connection_forces_.resize(structure.force_columns());

@@ -84,6 +84,12 @@ class RateFormSystem {
     double hysteretic_power = 0.0, viscous_power = 0.0;
   };
 
+  // Appends a slot's component law: its kernel and rest phase, its block with q internal
+  // variables and its root functions.
+  void AddLaw(LawBlock law, const hysteresis::LawKernel& kernel);
+  void AddLaw(LawBlock law, const hysteresis::PlanLawKernel& kernel);
+  void AddBlock(LawBlock law, int q_count, int roots);
+
   // The law's deformation (r) and its rate from y.
   void Deformation(const LawBlock& law, const double* y, std::array<double, kMaxRows>* u,
                    std::array<double, kMaxRows>* v) const;

@@ -9,22 +9,39 @@
 namespace isolab::model {
 namespace {
 
+// An uncoupled pair's x and y laws are one bearing in two directions: it carries one weight, so
+// its laws must be the same pendulum.
+void RefuseUnlikePairs(const hysteresis::ParallelAssembly&, const std::string&,
+                       const AxialLoadSection&) {}
+void RefuseUnlikePairs(const hysteresis::PlanAssembly& assembly, const std::string& isolator,
+                       const AxialLoadSection& section) {
+  for (const hysteresis::PlanComponent& c : assembly.components()) {
+    if (c.law_y && hysteresis::PendulumWeight(*c.law_y) != hysteresis::PendulumWeight(c.law)) {
+      throw InputError(section.location,
+                       fmt::format("axial_load: isolator {}'s {} has other laws along x and "
+                                   "y; an axial load scales a pair whose x and y laws are "
+                                   "the same pendulum",
+                                   isolator, c.name));
+    }
+  }
+}
+
 // The W of an isolator's pendulum laws (their sum: they scale together), 0 for an isolator with
 // none; an isolator that mixes pendulums with other laws is refused (the other laws' forces do
 // not scale with the axial load, and splitting the load among them would be a guess).
-template <class Components, class Laws>
-double IsolatorWeight(const Components& components, Laws laws, const std::string& isolator,
+template <class Assembly>
+double IsolatorWeight(const Assembly& assembly, const std::string& isolator,
                       const AxialLoadSection& section) {
+  RefuseUnlikePairs(assembly, isolator, section);
   double weight = 0.0;
   std::size_t pendulums = 0, others = 0;
-  for (const auto& component : components) {
-    for (const hysteresis::LawParameters* law : laws(component)) {
-      if (const std::optional<double> w = hysteresis::PendulumWeight(*law)) {
-        weight += *w;
-        ++pendulums;
-      } else {
-        ++others;
-      }
+  for (const auto& component : assembly.components()) {
+    if (const std::optional<double> w =
+            hysteresis::PendulumWeight(hysteresis::LawAlongX(component))) {
+      weight += *w;
+      ++pendulums;
+    } else {
+      ++others;
     }
   }
   if (pendulums > 0 && others > 0) {
@@ -44,34 +61,9 @@ void AddAxialLoads(const ModelFile& model, structure::LaidOutStructure* built) {
   const structure::Layout& layout = built->layout;
   std::vector<double> weights;
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
-    if (isolator.member >= 0) {
-      const auto& assembly = built->structure.members()[isolator.member].assembly;
-      weights.push_back(IsolatorWeight(
-          assembly.components(),
-          [](const hysteresis::Component& c) {
-            return std::vector<const hysteresis::LawParameters*>{&c.parameters};
-          },
-          isolator.name, section));
-    } else {
-      const auto& assembly = built->structure.coupled_members()[isolator.coupled].assembly;
-      // An uncoupled pair's x and y laws are one bearing in two directions: it carries one
-      // weight, its x law's (both scale by N / W).
-      for (const hysteresis::PlanComponent& c : assembly.components()) {
-        if (c.law_y && hysteresis::PendulumWeight(*c.law_y) != hysteresis::PendulumWeight(c.law)) {
-          throw InputError(section.location,
-                           fmt::format("axial_load: isolator {}'s {} has other laws along x and "
-                                       "y; an axial load scales a pair whose x and y laws are "
-                                       "the same pendulum",
-                                       isolator.name, c.name));
-        }
-      }
-      weights.push_back(IsolatorWeight(
-          assembly.components(),
-          [](const hysteresis::PlanComponent& c) {
-            return std::vector<const hysteresis::LawParameters*>{&c.law};
-          },
-          isolator.name, section));
-    }
+    weights.push_back(built->structure.VisitSlotAssembly(isolator.slot, [&](const auto& assembly) {
+      return IsolatorWeight(assembly, isolator.name, section);
+    }));
   }
   if (std::none_of(weights.begin(), weights.end(), [](double w) { return w > 0.0; })) {
     throw InputError(section.location,

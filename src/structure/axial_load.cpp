@@ -79,9 +79,7 @@ AxialLoads RigidSlabAxialLoads(const Structure& structure, const Layout& layout,
     const IsolatorLayout& isolator = layout.isolators[j];
     AxialBearing bearing;
     bearing.name = isolator.name;
-    bearing.slot = isolator.member >= 0
-                       ? static_cast<std::size_t>(isolator.member)
-                       : structure.members().size() + static_cast<std::size_t>(isolator.coupled);
+    bearing.slot = static_cast<std::size_t>(isolator.slot);
     bearing.weight = weights[j];
     bearing.static_load = weight / static_cast<double>(n);
     if (plan) {

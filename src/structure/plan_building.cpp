@@ -155,12 +155,13 @@ LaidOutStructure BuildPlanBuilding(const PlanBuilding& building, bool fixed_base
   }
   std::vector<CoupledMember> isolators;
   if (fixed_base) {
-    layout.base_shear = {{0, -1, kX}, {1, -1, kY}};
+    layout.base_shear = {{0, kX}, {1, kY}};
   } else {
     for (const PlanIsolatorSite& site : building.isolators) {
-      const int index = static_cast<int>(isolators.size());
-      layout.isolators.push_back({site.name, -1, index, 0, site.position});
-      layout.base_shear.push_back({-1, index, kX});
+      // Coupled members' slots follow the members'.
+      const int slot = static_cast<int>(members.size() + isolators.size());
+      layout.isolators.push_back({site.name, slot, 0, site.position});
+      layout.base_shear.push_back({slot, kX});
       isolators.push_back(CoupledMember::UnderFloor(
           site.name, 0, site.position - building.base.centre_of_mass, site.assembly));
     }

@@ -147,8 +147,8 @@ LaidOutStructure BuildShearBuilding(const ShearBuilding& building) {
     for (const std::string& bearing : bearings) {
       const int member = static_cast<int>(members.size());
       members.push_back(Member::Between(bearing, kGround, 0, building.isolation));
-      layout.isolators.push_back({bearing, member, -1, 0, {}});
-      layout.base_shear.push_back({member, -1, kX});
+      layout.isolators.push_back({bearing, member, 0, {}});
+      layout.base_shear.push_back({member, kX});
     }
     layout.levels.push_back({"base", {0, kGround, kGround}, {}});
   }
@@ -163,7 +163,7 @@ LaidOutStructure BuildShearBuilding(const ShearBuilding& building) {
     layout.levels.push_back({"floor " + std::to_string(s + 1), {dof, kGround, kGround}, {}});
   }
   // The force into the ground: the isolators' (above), or the first story's on a fixed base.
-  if (!building.isolated) layout.base_shear.push_back({0, -1, kX});
+  if (!building.isolated) layout.base_shear.push_back({0, kX});
 
   // C = T^T C_s T, where T maps the DOFs to floor motion relative to the base,
   // x_s = u_s - u_base 1 (isolated), or x_s = u_s (fixed base).
@@ -195,8 +195,8 @@ LaidOutStructure BuildSdof(double mass, double damping_coefficient,
        bearings.empty() ? std::vector<std::string>{"restoring"} : bearings) {
     const int member = static_cast<int>(members.size());
     members.push_back(Member::Between(bearing, kGround, 0, restoring));
-    layout.isolators.push_back({bearing, member, -1, 0, {}});
-    layout.base_shear.push_back({member, -1, kX});
+    layout.isolators.push_back({bearing, member, 0, {}});
+    layout.base_shear.push_back({member, kX});
   }
   return {Structure(Eigen::VectorXd::Constant(1, mass), std::move(members), {}, c),
           std::move(layout)};

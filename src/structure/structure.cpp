@@ -1,5 +1,6 @@
 #include "isolab/structure/structure.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace isolab::structure {
@@ -101,6 +102,7 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
     : mass_(std::move(mass)),
       members_(std::move(members)),
       coupled_(std::move(coupled_members)),
+      member_count_(members_.size()),
       viscous_damping_(std::move(viscous_damping)) {
   const int n = dofs();
   for (int i = 0; i < n; ++i) {
@@ -286,6 +288,24 @@ Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> 
   return d;
 }
 
+Structure::Influence Structure::SlotInfluence(std::size_t slot) const {
+  Influence influence;
+  if (slot < members_.size()) {
+    const Terms& terms = member_terms_[slot];
+    influence.count = terms.count;
+    for (int a = 0; a < terms.count; ++a) {
+      influence.dofs[a] = terms.dofs[a];
+      influence.columns[a] = {terms.coefficients[a], 0.0};
+    }
+  } else {
+    const CoupledTerms& terms = coupled_terms_[slot - members_.size()];
+    influence.count = terms.count;
+    std::copy_n(terms.dofs.begin(), terms.count, influence.dofs.begin());
+    std::copy_n(terms.columns.begin(), terms.count, influence.columns.begin());
+  }
+  return influence;
+}
+
 namespace {
 
 // A slot's summed response and its laws' responses times s (a pendulum under its axial load).
@@ -363,7 +383,7 @@ void Structure::UpdateCoupledComponent(std::size_t coupled, std::size_t componen
                                        hysteresis::PlanLawResponse* response) const {
   const hysteresis::PlanAssembly& assembly = coupled_[coupled].assembly;
   const hysteresis::PlanLawKernel& kernel = assembly.kernels()[component];
-  const std::size_t first = coupled_law_offset(coupled), offset = first + 2 * component;
+  const std::size_t first = slot_law_offset(coupled_slot(coupled)), offset = first + 2 * component;
   if (const auto* series = std::get_if<hysteresis::PlanSeriesArrangement>(&kernel)) {
     // Its elements' states, as LawState pairs after every component's own.
     const std::size_t at = first + 2 * assembly.ElementStatesOffset(component);
@@ -394,7 +414,7 @@ template <bool kScaled>
       in.v = in.v + v[terms.dofs[a]] * terms.columns[a];
     }
     const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
-    std::size_t offset = coupled_law_offset(i);
+    std::size_t offset = slot_law_offset(coupled_slot(i));
     Vec2 f;
     Mat2 k_eff;
     const bool several = assembly.state_size() != assembly.size();
@@ -416,13 +436,13 @@ template <bool kScaled>
       const double s = scales[members_.size() + i];
       f = s * f;
       k_eff = s * k_eff;
-      for (std::size_t l = coupled_law_offset(i); l < offset; ++l) {
+      for (std::size_t l = slot_law_offset(coupled_slot(i)); l < offset; ++l) {
         responses[l].force *= s;
         responses[l].stiffness *= s;
         responses[l].damping *= s;
       }
     }
-    const std::size_t column = coupled_force_column(i);
+    const std::size_t column = slot_force_column(coupled_slot(i));
     member_forces[column] = f.x;
     member_forces[column + 1] = f.y;
     for (int a = 0; a < terms.count; ++a) (*force)[terms.dofs[a]] += Dot(terms.columns[a], f);
@@ -483,7 +503,7 @@ double Structure::SlotStoredEnergy(std::size_t slot, std::span<const LawState> s
   }
   const std::size_t i = slot - members_.size();
   const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
-  const std::size_t first = coupled_law_offset(i);
+  const std::size_t first = slot_law_offset(coupled_slot(i));
   double energy = 0.0;
   for (std::size_t c = 0; c < assembly.size(); ++c) {
     const hysteresis::PlanLawKernel& kernel = assembly.kernels()[c];
@@ -516,7 +536,7 @@ double Structure::StoredEnergy(std::span<const LawState> states) const {
   }
   for (std::size_t i = 0; i < coupled_.size(); ++i) {
     const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
-    const std::size_t first = coupled_law_offset(i);
+    const std::size_t first = slot_law_offset(coupled_slot(i));
     if (assembly.state_size() == assembly.size()) {  // one state a law
       std::size_t offset = first;
       for (const hysteresis::PlanLawKernel& kernel : assembly.kernels()) {

@@ -126,12 +126,12 @@ TEST(AxialLoad, RigidBlockFrictionIsMuNUnderVerticalShaking) {
     const double load = kMass * (kG + av * std::sin(wv * row.t)) / 4.0;
     for (std::size_t j = 0; j < 4; ++j) {
       ASSERT_NEAR(row.axial[j], load, 1e-9 * load) << "t = " << row.t;
-      const double u = s.CoupledDeformation(j, row.u).x;
+      const double u = s.SlotDeformation(s.coupled_slot(j), row.u).x;
       const double trial = elastic[j] + (u - previous[j]);
       const bool slides = std::abs(trial) >= kUy;
       elastic[j] = std::clamp(trial, -kUy, kUy);
       previous[j] = u;
-      const double friction = row.force[s.coupled_force_column(j)] - load * u / kR;
+      const double friction = row.force[s.slot_force_column(s.coupled_slot(j))] - load * u / kR;
       largest_error = std::max(largest_error,
                                std::abs(friction - kMu * load * elastic[j] / kUy) / (kMu * load));
       if (slides) {
@@ -318,8 +318,8 @@ TEST(AxialLoad, UpliftCarriesNoShearAndWarns) {
     for (std::size_t j = 0; j < 4; ++j) {
       if (row.axial[j] > 0.0) continue;
       ++uplifted;
-      EXPECT_EQ(row.force[s.coupled_force_column(j)], 0.0) << "t = " << row.t;
-      EXPECT_EQ(row.force[s.coupled_force_column(j) + 1], 0.0) << "t = " << row.t;
+      EXPECT_EQ(row.force[s.slot_force_column(s.coupled_slot(j))], 0.0) << "t = " << row.t;
+      EXPECT_EQ(row.force[s.slot_force_column(s.coupled_slot(j)) + 1], 0.0) << "t = " << row.t;
     }
   }
   EXPECT_GT(uplifted, 0);

@@ -174,8 +174,8 @@ TEST_P(StreamedAgainstInMemory, DatasetsAreBitwiseEqual) {
     ExpectBitwiseEqual(Read(file, "connection_force").values,
                        Expected(history.connection_force, rows, every), "connection_force");
     if (setup.layout.isolated()) {
-      const int isolation = setup.layout.isolators[0].member;
-      const int first = static_cast<int>(setup.structure.law_offset(isolation));
+      const int isolation = setup.layout.isolators[0].slot;
+      const int first = static_cast<int>(setup.structure.slot_law_offset(isolation));
       const int count =
           static_cast<int>(setup.structure.members()[isolation].assembly.components().size());
       std::vector<int> components;

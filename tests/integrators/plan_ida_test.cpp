@@ -140,10 +140,13 @@ Discrepancy Compare(const structure::Structure& building, const ResponseHistory&
   for (std::size_t i = 0; i < building.coupled_members().size(); ++i) {
     double peak_ida = 0.0, peak_newmark = 0.0;
     for (int row = 0; row < ida.rows_written; ++row) {
-      peak_ida = std::max(
-          peak_ida, Norm(building.CoupledDeformation(i, {ida.displacement.row(row).data(), dofs})));
-      peak_newmark = std::max(peak_newmark, Norm(building.CoupledDeformation(
-                                                i, {newmark.displacement.row(row).data(), dofs})));
+      peak_ida = std::max(peak_ida,
+                          Norm(building.SlotDeformation(building.coupled_slot(i),
+                                                        {ida.displacement.row(row).data(), dofs})));
+      peak_newmark =
+          std::max(peak_newmark,
+                   Norm(building.SlotDeformation(building.coupled_slot(i),
+                                                 {newmark.displacement.row(row).data(), dofs})));
     }
     EXPECT_GT(peak_ida, 100.0);  // every isolator far past its yield
     d.isolator_peak = std::max(d.isolator_peak, std::abs(peak_newmark / peak_ida - 1.0));

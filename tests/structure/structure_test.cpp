@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "isolab/hysteresis/law_parameters.h"
@@ -105,6 +107,72 @@ TEST(Structure, ConstantTangentPlusEvaluateIsTheDerivativeOfTheForce) {
           << "at u = " << u.transpose() << ", column " << j;
     }
   }
+}
+
+// Every member and coupled member through the one slot interface, against the deformations
+// written out from the members' definitions in ThreeDofs; the slots' forces, mapped back through
+// their influences, are the resisting force Evaluate returns less the viscous C v.
+TEST(Structure, SlotsAreTheMembersAndCoupledMembersThroughOneInterface) {
+  const Structure s = ThreeDofs();
+  ASSERT_EQ(s.slots(), 7u);
+  const Eigen::Vector3d u(1.5, -2.0, 0.25);
+  const double u0 = u[0], u1 = u[1], u2 = u[2];
+  const std::vector<Vec2> expected{{u0, 0.0},
+                                   {u1 - u0, 0.0},
+                                   {u2 - u1, 0.0},
+                                   {u2 - u0, 0.0},
+                                   {-0.7 * u0 + 1.3 * u1 + 0.4 * u2, 0.0},
+                                   {u0 - 0.5 * u2, u1 + 0.8 * u2},
+                                   {0.6 * u2 - 0.3 * u0, 0.2 * u2 + 1.0 * u0}};
+  const std::vector<std::string> names{
+      "isolator", "linear story", "straight trilinear story", "trilinear brace", "combined",
+      "coupled",  "skew"};
+  const std::vector<std::size_t> components{2, 1, 2, 1, 1, 2, 1};
+  const std::vector<std::size_t> force_columns{0, 1, 2, 3, 4, 5, 7};
+  const std::span<const double> dofs(u.data(), 3);
+  for (std::size_t slot = 0; slot < s.slots(); ++slot) {
+    SCOPED_TRACE(names[slot]);
+    const int width = slot < 5 ? 1 : 2;
+    EXPECT_EQ(s.slot_width(slot), width);
+    EXPECT_EQ(s.slot_name(slot), names[slot]);
+    EXPECT_EQ(s.slot_force_column(slot), force_columns[slot]);
+    const Vec2 d = s.SlotDeformation(slot, dofs);
+    EXPECT_NEAR(d.x, expected[slot].x, 1e-14);
+    EXPECT_NEAR(d.y, expected[slot].y, 1e-14);
+    const Structure::Influence influence = s.SlotInfluence(slot);
+    Vec2 mapped;
+    for (int a = 0; a < influence.count; ++a) {
+      mapped = mapped + u[influence.dofs[a]] * influence.columns[a];
+    }
+    EXPECT_NEAR(mapped.x, expected[slot].x, 1e-14);
+    EXPECT_NEAR(mapped.y, expected[slot].y, 1e-14);
+    const std::size_t count = s.VisitSlotAssembly(
+        slot, [](const auto& assembly) { return assembly.components().size(); });
+    EXPECT_EQ(count, components[slot]);
+    const std::size_t next = slot + 1 < s.slots() ? s.slot_law_offset(slot + 1) : s.law_count();
+    EXPECT_EQ(next - s.slot_law_offset(slot), width * components[slot]);
+  }
+
+  std::vector<hysteresis::LawState> committed(s.law_count()), trial(s.law_count());
+  std::vector<hysteresis::LawResponse> responses(s.law_count());
+  std::vector<double> forces(s.force_columns());
+  const Eigen::Vector3d v(20.0, -15.0, 10.0);
+  Eigen::VectorXd f(3), viscous(3);
+  s.Evaluate(committed, 0.0, u, v, trial, responses, &f, forces, {}, nullptr);
+  s.DampingForce(v, &viscous);
+  Eigen::Vector3d from_slots = viscous;
+  for (std::size_t slot = 0; slot < s.slots(); ++slot) {
+    const Vec2 force = s.SlotForce(slot, forces);
+    if (s.slot_width(slot) == 1) {
+      EXPECT_EQ(force.y, 0.0);
+    }
+    const Structure::Influence influence = s.SlotInfluence(slot);
+    for (int a = 0; a < influence.count; ++a) {
+      from_slots[influence.dofs[a]] +=
+          influence.columns[a].x * force.x + influence.columns[a].y * force.y;
+    }
+  }
+  EXPECT_LE((from_slots - f).cwiseAbs().maxCoeff(), 1e-12 * f.cwiseAbs().maxCoeff());
 }
 
 }  // namespace

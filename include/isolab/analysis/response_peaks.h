@@ -98,10 +98,7 @@ class PeakTracker final : public integrators::ResponseObserver {
   ResponsePeaks Peaks() const;
 
  private:
-  // An isolator's deformation (x, y; y = 0 in one direction) from the dofs' displacements (or
-  // its rate from their velocities), and its force at a row.
-  hysteresis::Vec2 IsolatorDeformation(std::size_t isolator, std::span<const double> dofs) const;
-  hysteresis::Vec2 IsolatorForce(std::size_t isolator, const integrators::ResponseRow& row) const;
+  // A story's drift and shear (x, y; y = 0 in one direction) at a row.
   hysteresis::Vec2 StoryDrift(std::size_t story, const integrators::ResponseRow& row) const;
   hysteresis::Vec2 StoryShear(std::size_t story, const integrators::ResponseRow& row) const;
 

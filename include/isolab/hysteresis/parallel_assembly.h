@@ -24,6 +24,8 @@ struct Component {
   std::string name;
   LawParameters parameters;
 };
+// A component's law (its x law, as for a bidirectional component: LawAlongX in plan_assembly.h).
+inline const LawParameters& LawAlongX(const Component& component) { return component.parameters; }
 
 // Sum over components of LawResponse.
 struct AssemblyResponse {

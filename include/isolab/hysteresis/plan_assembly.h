@@ -29,6 +29,8 @@ struct PlanComponent {
   LawParameters law;
   std::optional<LawParameters> law_y;
 };
+// A component's law along x (an uncoupled pair's x law; a coupled law's own).
+inline const LawParameters& LawAlongX(const PlanComponent& component) { return component.law; }
 
 // Sums over components of PlanLawResponse.
 struct PlanResponse {

@@ -33,20 +33,20 @@ struct StoryLayout {
   std::array<int, 3> members{-1, -1, -1};
 };
 
-// An isolator (a bearing position): a one-direction member acting along x, or a coupled member.
+// An isolator (a bearing position): a slot of the structure (a one-direction member acting along
+// x, or a coupled member).
 struct IsolatorLayout {
   std::string name;
-  int member = -1;   // index into Structure::members(), or -1
-  int coupled = -1;  // index into Structure::coupled_members(), or -1
-  int level = 0;     // the level it carries
-  Vec2 position;     // plan position (length); zero in one direction
+  int slot = -1;  // index into the structure's slots
+  int level = 0;  // the level it carries
+  Vec2 position;  // plan position (length); zero in one direction
 };
 
-// A force into the ground: a member's force along x or y, or a coupled member's force vector.
+// A force into the ground: a slot's force, along `direction` for a slot of width 1 (its vector
+// for one of width 2).
 struct GroundForce {
-  int member = -1;
-  int coupled = -1;
-  int direction = kX;  // of a member's force
+  int slot = -1;
+  int direction = kX;
 };
 
 struct Layout {

@@ -120,23 +120,52 @@ class Structure {
     damping_product_.Apply(viscous_damping_, v, force);
   }
 
-  // Law states: member k's component c at law_offset(k) + c; coupled member i's component c at
-  // coupled_law_offset(i) + 2 c (x) and + 2 c + 1 (y).
+  // Law states: a member's components one each, a coupled member's two each (x, y); force columns:
+  // one per member, then two per coupled member (x, y).
   std::size_t law_count() const { return law_offsets_.back(); }
-  std::size_t law_offset(std::size_t member) const { return law_offsets_[member]; }
-  std::size_t coupled_law_offset(std::size_t coupled) const {
-    return law_offsets_[members_.size() + coupled];
-  }
-
-  // Force columns Evaluate writes: one per member, then two per coupled member (x, y).
   std::size_t force_columns() const { return members_.size() + 2 * coupled_.size(); }
-  std::size_t coupled_force_column(std::size_t coupled) const {
-    return members_.size() + 2 * coupled;
-  }
 
-  // Slots: one per member, then one per coupled member (the order of law offsets). A slot's
-  // response may be scaled (Evaluate's `scales`: a pendulum bearing under its axial load).
-  std::size_t slots() const { return members_.size() + coupled_.size(); }
+  // Slots: every member and coupled member through one interface, members first (the order of
+  // law offsets). A slot has width 1 (a member: its deformation and force along its own row) or 2
+  // (a coupled member: x then y). Its component c's law state is at slot_law_offset + width c (+1
+  // for y); its force columns start at slot_force_column. A slot's response may be scaled
+  // (Evaluate's `scales`: a pendulum bearing under its axial load).
+  std::size_t slots() const { return member_count_ + coupled_.size(); }
+  std::size_t coupled_slot(std::size_t coupled) const { return member_count_ + coupled; }
+  int slot_width(std::size_t slot) const { return slot < member_count_ ? 1 : 2; }
+  const std::string& slot_name(std::size_t slot) const {
+    return slot < member_count_ ? members_[slot].name : coupled_[slot - member_count_].name;
+  }
+  std::size_t slot_law_offset(std::size_t slot) const { return law_offsets_[slot]; }
+  std::size_t slot_force_column(std::size_t slot) const {
+    return slot < member_count_ ? slot : 2 * slot - member_count_;
+  }
+  // The slot's deformation at dofs u, and its force in a row of force columns; (value, 0) for a
+  // slot of width 1.
+  Vec2 SlotDeformation(std::size_t slot, std::span<const double> u) const {
+    return slot < member_count_ ? Vec2{MemberDeformation(slot, u), 0.0}
+                                : CoupledDeformation(slot - member_count_, u);
+  }
+  Vec2 SlotForce(std::size_t slot, std::span<const double> force_columns) const {
+    const std::size_t column = slot_force_column(slot);
+    return slot < member_count_ ? Vec2{force_columns[column], 0.0}
+                                : Vec2{force_columns[column], force_columns[column + 1]};
+  }
+  // The dofs the slot acts on and, per dof, the column that maps the dof's motion to the slot's
+  // deformation ((coefficient, 0) for a slot of width 1).
+  struct Influence {
+    int count = 0;
+    std::array<int, kMaxTerms> dofs{};
+    std::array<Vec2, kMaxTerms> columns{};
+  };
+  Influence SlotInfluence(std::size_t slot) const;
+  // visit(assembly) with the slot's law assembly: a ParallelAssembly (width 1) or a PlanAssembly
+  // (width 2), for what both kinds answer (components, pendulum weight, secant stiffness).
+  template <class Visitor>
+  decltype(auto) VisitSlotAssembly(std::size_t slot, Visitor&& visit) const {
+    if (slot < member_count_) return visit(members_[slot].assembly);
+    return visit(coupled_[slot - member_count_].assembly);
+  }
   // The recoverable and the dissipated energy of one slot's laws (at their own W: unscaled).
   double SlotStoredEnergy(std::size_t slot, std::span<const hysteresis::LawState> states) const;
   double SlotDissipatedEnergy(std::size_t slot, std::span<const hysteresis::LawState> states) const;
@@ -171,15 +200,14 @@ class Structure {
                 std::span<double> member_forces, const TangentFactors& factors,
                 SparseMatrix* tangent, std::span<const double> scales = {}) const;
 
-  // A member's deformation, and a coupled member's deformation vector, at dofs u. (The first
-  // inline: the results' rows and the peaks take it for every story at every step.)
+  // A member's deformation at dofs u (inline: the results' rows and the peaks take it for every
+  // story at every step).
   double MemberDeformation(std::size_t member, std::span<const double> u) const {
     const Terms& terms = member_terms_[member];
     double d = 0.0;
     for (int a = 0; a < terms.count; ++a) d += terms.coefficients[a] * u[terms.dofs[a]];
     return d;
   }
-  Vec2 CoupledDeformation(std::size_t coupled, std::span<const double> u) const;
 
   // Recoverable energy of all laws, and dissipated energy split into viscous (dashpots) and
   // hysteretic (sliders).
@@ -188,6 +216,8 @@ class Structure {
   double HystereticEnergy(std::span<const hysteresis::LawState> states) const;
 
  private:
+  Vec2 CoupledDeformation(std::size_t coupled, std::span<const double> u) const;
+
   // A member's terms packed for the hot loop: the dofs that exist, with the tangent slots of
   // their pairs (row-major count x count). A spring between two dofs or to the ground (the
   // members of a one-direction building) takes a shorter path through `between`.
@@ -256,6 +286,7 @@ class Structure {
   Eigen::VectorXd mass_;
   std::vector<Member> members_;
   std::vector<CoupledMember> coupled_;
+  std::size_t member_count_ = 0;  // members_.size(), the first coupled member's slot
   SparseMatrix viscous_damping_;
   DampingProduct damping_product_;
   std::vector<std::size_t> law_offsets_;         // members, then coupled members, then the end
