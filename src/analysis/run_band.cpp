@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <string_view>
+
 #include "isolab/core/errors.h"
 
 namespace isolab::analysis {
@@ -25,11 +27,15 @@ RunBand PredictRunBand(const model::ModelFile& model, const RunOverrides& overri
   }
   ParameterDraws draws(model, seed, band.widening);
   band.contents = BandContents(model, band.widening);
-  std::vector<double> isolator, shear, roof, drift;
+  // Per summary peak, its value in each draw that ran to the end.
+  std::vector<std::vector<double>> values;
   for (int s = 0; s < samples; ++s) {
     Summary summary;
+    std::vector<NamedPeak> peaks;
     try {
-      summary = Solve(options, Prepare(draws.Next(), overrides));
+      const Problem problem = Prepare(draws.Next(), overrides);
+      summary = Solve(options, problem);
+      peaks = SummaryPeaks(problem.layout, summary.peaks);
     } catch (const std::exception&) {
       ++band.refused;  // a draw beyond a law's rules (k1 > k0, say) is no building
       continue;
@@ -38,21 +44,21 @@ RunBand PredictRunBand(const model::ModelFile& model, const RunOverrides& overri
       ++band.refused;
       continue;
     }
-    isolator.push_back(summary.peaks.isolator_displacement.value);
-    shear.push_back(summary.peaks.base_shear.value);
-    roof.push_back(summary.peaks.roof_absolute_acceleration.value);
-    drift.push_back(summary.peaks.story_drift.value);
+    if (band.peaks.empty()) {
+      for (const NamedPeak& peak : peaks) {
+        band.peaks.push_back({peak.name, peak.label, peak.dimension, {}});
+      }
+      values.resize(peaks.size());
+    }
+    for (std::size_t p = 0; p < peaks.size(); ++p) values[p].push_back(peaks[p].peak->value);
   }
-  band.samples = int(isolator.size());
+  band.samples = values.empty() ? 0 : static_cast<int>(values.front().size());
   if (band.samples < 2) {
     throw InputError({model.path},
                      "fewer than two of the drawn parameter sets make a building that runs to "
                      "the end: the uncertainty is too wide to draw a band");
   }
-  band.isolator_displacement = Spread(isolator);
-  band.base_shear = Spread(shear);
-  band.roof_absolute_acceleration = Spread(roof);
-  band.story_drift = Spread(drift);
+  for (std::size_t p = 0; p < values.size(); ++p) band.peaks[p].spread = Spread(values[p]);
   return band;
 }
 
@@ -60,15 +66,13 @@ nlohmann::json RunBandJson(const RunBand& band, unsigned seed) {
   const auto spread = [](const Percentiles& p) {
     return nlohmann::json{{"p5", p.p5}, {"p50", p.p50}, {"p95", p.p95}};
   };
-  return {{"samples", band.samples},
-          {"refused", band.refused},
-          {"contents", band.contents},
-          {"widening", band.widening},
-          {"seed", seed},
-          {"isolator_displacement", spread(band.isolator_displacement)},
-          {"base_shear", spread(band.base_shear)},
-          {"roof_absolute_acceleration", spread(band.roof_absolute_acceleration)},
-          {"story_drift", spread(band.story_drift)}};
+  nlohmann::json json{{"samples", band.samples},
+                      {"refused", band.refused},
+                      {"contents", band.contents},
+                      {"widening", band.widening},
+                      {"seed", seed}};
+  for (const BandPeak& peak : band.peaks) json[peak.name] = spread(peak.spread);
+  return json;
 }
 
 void PrintRunBand(const RunBand& band, unsigned seed, const UnitSystem& units, std::ostream& out) {
@@ -77,14 +81,13 @@ void PrintRunBand(const RunBand& band, unsigned seed, const UnitSystem& units, s
              "stopped):\n",
              band.contents, band.samples + band.refused, seed, band.refused);
   fmt::print(out, "{:<34} {:>12} {:>12} {:>12}\n", "peak", "5 %", "50 %", "95 %");
-  const auto row = [&](const char* what, const Percentiles& p, const std::string& unit) {
-    fmt::print(out, "{:<34} {:>12.5g} {:>12.5g} {:>12.5g} {}\n", what, p.p5, p.p50, p.p95, unit);
-  };
-  row("isolator displacement", band.isolator_displacement, units.length());
-  row("base shear", band.base_shear, units.force());
-  row("roof absolute acceleration", band.roof_absolute_acceleration,
-      DescribeUnits(units, dimension::kAcceleration));
-  row("story drift", band.story_drift, units.length());
+  for (const BandPeak& peak : band.peaks) {
+    // The table's column says "peak": the label without it.
+    std::string_view what = peak.label;
+    if (what.starts_with("peak ")) what.remove_prefix(5);
+    fmt::print(out, "{:<34} {:>12.5g} {:>12.5g} {:>12.5g} {}\n", what, peak.spread.p5,
+               peak.spread.p50, peak.spread.p95, PeakUnit(units, peak.dimension));
+  }
 }
 
 }  // namespace isolab::analysis

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
@@ -598,13 +599,20 @@ TEST(RunCommand, SamplesDrawTheSpreadOfThePeaksFromTheFittedUncertainty) {
   };
   const auto fixed = run(model("[[0, 0], [0, 0]]"));
   ASSERT_EQ(fixed["band"]["samples"].get<int>(), 12);
-  for (const char* peak :
-       {"isolator_displacement", "base_shear", "roof_absolute_acceleration", "story_drift"}) {
-    const double own = fixed["peaks"][peak]["value"].get<double>();
+  // Every peak of the run's summary has its band, and nothing else does.
+  std::size_t banded = 0;
+  for (const auto& [peak, value] : fixed["peaks"].items()) {
+    if (!value.is_object()) continue;  // the drift ratios: derived from story_drift, not peaks
+    SCOPED_TRACE(peak);
+    ASSERT_TRUE(fixed["band"].contains(peak));
+    ++banded;
+    const double own = value["value"].get<double>();
     for (const char* p : {"p5", "p50", "p95"}) {
-      EXPECT_NEAR(fixed["band"][peak][p].get<double>(), own, 1e-9 * own) << peak << " " << p;
+      EXPECT_NEAR(fixed["band"][peak][p].get<double>(), own, 1e-9 * own) << p;
     }
   }
+  EXPECT_EQ(banded, 7u);  // a shear building's: isolator, story and floor peaks
+  EXPECT_EQ(fixed["band"].size(), banded + 5);  // and samples, refused, contents, widening, seed
   const auto spread = run(model("[[0.01, 0], [0, 0.0025]]"));
   for (const char* peak : {"isolator_displacement", "base_shear", "roof_absolute_acceleration"}) {
     const auto& band = spread["band"][peak];
@@ -878,5 +886,51 @@ TEST(RunCommand, NonFiniteNumbersOnTheCommandLineExitTwo) {
     EXPECT_EQ(run.exit_code, 2) << option << ": " << run.output;
     EXPECT_NE(run.output.find(message), std::string::npos) << option << ": " << run.output;
     EXPECT_FALSE(std::filesystem::exists(output)) << option;
+  }
+}
+
+// IDA integrates rate forms: a law without one (degrading_bhm2) is refused before the run, on a
+// one-direction member and on an isolator in plan alike, naming where it is and what runs it.
+TEST(RunCommand, IdaRefusesALawWithoutARateFormOnEitherModelKind) {
+  const std::string record = Source("ground_motions/fwn_firm_seed1.at2");
+  const std::string worn =
+      "{name: worn, type: degrading_bhm2, k0: 2, k1: 0.25, uy: 20, loss: 0.1, slip_scale: 500}";
+  const std::string sdof =
+      "units: {force: kN, length: mm, time: s}\n"
+      "structure: {type: sdof, mass: 31.7 t, damping: {ratio: 0.0}}\n"
+      "isolation: {components: [" +
+      worn +
+      "]}\n"
+      "excitation: {ground_motion: {file: " +
+      record + ", scale: 0.5}}\n";
+  const std::string plan =
+      "units: {force: kN, length: mm, time: s}\n"
+      "plan:\n"
+      "  footprint: [[0, 0], [20000, 10000]]\n"
+      "  base: {mass: 100 t, centre_of_mass: [10000, 5000], radius_of_gyration: 6000}\n"
+      "  stories: [{name: s1, mass: 100 t, stiffness: {x: 300, y: 200, torsion: 3.0e10}}]\n"
+      "  isolators:\n"
+      "    - {name: a, position: [0, 0], components: [{type: bhm2, k0: 2, k1: 0.25, uy: 20}]}\n"
+      "    - {name: b, position: [20000, 10000], coupling: uncoupled, components: [" +
+      worn +
+      "]}\n"
+      "excitation: {ground_motion: {h1: {file: " +
+      record + ", scale: 0.5}}}\n";
+  for (const auto& [name, text, where] : {std::tuple{"sdof", sdof, std::string("member '")},
+                                          std::tuple{"plan", plan, std::string("isolator 'b'")}}) {
+    SCOPED_TRACE(name);
+    const auto model = TemporaryFile(std::string(name) + "_worn.yaml");
+    std::ofstream(model) << text;
+    const auto output = TemporaryFile(std::string(name) + "_worn.h5");
+    const auto ida =
+        RunIsolab("run " + model.string() + " --integrator ida -o " + output.string(), true);
+    EXPECT_EQ(ida.exit_code, 2) << ida.output;
+    EXPECT_NE(ida.output.find("cannot run " + where), std::string::npos) << ida.output;
+    EXPECT_NE(ida.output.find("degrading_bhm2"), std::string::npos) << ida.output;
+    EXPECT_NE(ida.output.find("--integrator newmark"), std::string::npos) << ida.output;
+    EXPECT_FALSE(std::filesystem::exists(output));
+    const auto newmark =
+        RunIsolab("run " + model.string() + " --integrator newmark -q -o " + output.string());
+    EXPECT_EQ(newmark.exit_code, 0) << newmark.output;
   }
 }

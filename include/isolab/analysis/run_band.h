@@ -9,15 +9,24 @@
 #include "isolab/analysis/parameter_draws.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
+#include "isolab/analysis/summary_peaks.h"
 
 namespace isolab::analysis {
+
+// One summary peak's spread over the draws.
+struct BandPeak {
+  const char* name;   // SummaryPeaks' (JSON's key)
+  const char* label;  // SummaryPeaks' text label
+  Dimension dimension;
+  Percentiles spread;
+};
 
 struct RunBand {
   int samples = 0;  // parameter sets run to the end
   int refused = 0;  // drawn sets that broke a law's rules or whose run stopped early, left out
-  double widening = 1.0;  // beyond the identified range (BandWidening); 1 within it
-  std::string contents;   // what the draws hold (BandContents)
-  Percentiles isolator_displacement, base_shear, roof_absolute_acceleration, story_drift;
+  double widening = 1.0;        // beyond the identified range (BandWidening); 1 within it
+  std::string contents;         // what the draws hold (BandContents)
+  std::vector<BandPeak> peaks;  // every peak of the run's summary (SummaryPeaks), in its order
 };
 
 // Checks that the model can be drawn from (ParameterDraws' InputError), before any run.
