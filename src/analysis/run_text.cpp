@@ -169,10 +169,9 @@ void PrintSummary(const Problem& problem, const model::AnalysisSection& analysis
   }
   if (layout.rotations && layout.isolated()) {
     fmt::print(out,
-               "{:<34} {:>12.4g} (the largest isolator displacement over the base's "
-               "centre of mass's, {:.5g} {})\n",
-               "torsional amplification", peaks.torsional_amplification,
-               peaks.base_centre_displacement.value, length);
+               "{:<34} {:>12.4g} (the largest isolator displacement over the peak base "
+               "centre displacement)\n",
+               "torsional amplification", peaks.torsional_amplification);
   }
   const structure::AxialLoads& axial = problem.structure.axial_loads();
   for (std::size_t j = 0; j < peaks.axial_load_minima.size(); ++j) {

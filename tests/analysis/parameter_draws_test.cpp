@@ -10,14 +10,16 @@
 #include <cmath>
 #include <string>
 
-#include "building/synthetic_building.h"
+#include "analysis/three_story_building.h"
 #include "isolab/analysis/building_parameters.h"
 #include "isolab/core/errors.h"
 
 namespace isolab::analysis {
 namespace {
 
-using namespace building::synthetic;
+using testing::BuildingText;
+using testing::kBilinear;
+using testing::Model;
 
 const char* const kUncertainty =
     "uncertainty:\n"

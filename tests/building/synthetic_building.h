@@ -1,6 +1,7 @@
 // Buildings isolab generates with known, hidden parameters, for the building-level fit and
-// diagnosis tests: a three-story building on an isolation layer given as YAML, a table motion over
-// its bands, its response at every level as measurements, and white noise on a channel.
+// diagnosis tests: a three-story building on an isolation layer given as YAML
+// (analysis/three_story_building.h), a table motion over its bands, its response at every level as
+// measurements, and white noise on a channel.
 #pragma once
 
 #include <cmath>
@@ -8,33 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "analysis/three_story_building.h"
 #include "isolab/building/building_fit.h"
 #include "isolab/model/model_file.h"
 
 namespace isolab::building::synthetic {
 
-// A three-story building on a bilinear isolation layer, in kN, mm, s.
-inline std::string BuildingText(const std::string& isolation, double story_stiffness = 60.0,
-                                double damping = 0.04) {
-  return "units: {force: kN, length: mm, time: s}\n"
-         "isolation: {components: [" +
-         isolation +
-         "]}\n"
-         "structure:\n"
-         "  type: shear_building\n"
-         "  base_mass: 60 t\n"
-         "  stories: {count: 3, mass: 50 t, stiffness: " +
-         std::to_string(story_stiffness) +
-         "}\n"
-         "  damping: {type: modal, ratios: [" +
-         std::to_string(damping) + "]}\n";
-}
-
-inline const char* kBilinear = "{name: iso, type: bhm2, k0: 12.0, k1: 1.5, uy: 6.0}";
-
-inline model::ModelFile Model(const std::string& text) {
-  return model::LoadModelText(text, "building.yaml");
-}
+using testing::BuildingText;
+using testing::kBilinear;
+using testing::Model;
 
 // A table motion: decaying sines over the isolated and the superstructure's bands (mm/s^2).
 inline BuildingMotion TableMotion(const std::string& name, double amplitude, double seconds,
