@@ -5,7 +5,7 @@ Areas depend one way (docs/architecture.md):
 
   core <- hysteresis <- structure <- integrators <- spectra
        <- identification <- diagnosis
-       <- io (formats) <- model (schemas) <- analysis <- building, study <- cli, python
+       <- io (formats) <- model (schemas) <- analysis <- building, design <- study <- cli, python
 
 An area may include its own headers and those of the areas listed for it in ALLOWED, nothing
 else: a lower area never sees a higher one (hysteresis knows no YAML, no files, no integrator).
@@ -36,8 +36,10 @@ ALLOWED = {
                  "diagnosis", "io", "model"},
     "building": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
                  "diagnosis", "io", "model", "analysis"},
+    "design": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
+               "diagnosis", "io", "model", "analysis"},
     "study": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
-              "diagnosis", "io", "model", "analysis"},
+              "diagnosis", "io", "model", "analysis", "design"},
 }
 ALLOWED["cli"] = set(ALLOWED) - {"cli"}
 ALLOWED["python"] = set(ALLOWED) - {"cli", "python"}

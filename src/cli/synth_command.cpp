@@ -12,8 +12,8 @@
 #include <variant>
 
 #include "common_options.h"
-#include "isolab/analysis/matched_pairs.h"
 #include "isolab/core/errors.h"
+#include "isolab/design/matched_pairs.h"
 #include "isolab/io/output_check.h"
 #include "isolab/io/target_spectrum_file.h"
 #include "isolab/spectra/design_spectrum.h"
@@ -108,7 +108,7 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
   Require(shape.duration <= kMaxPairDuration, "--duration", shape.duration,
           fmt::format("must be at most {:g} s with --pairs", kMaxPairDuration));
   if (o.target.empty()) throw InputError({"--pairs"}, "needs --target: the spectrum to match");
-  analysis::MatchedPairSpec spec;
+  design::MatchedPairSpec spec;
   spec.seed = o.noise.seed;
   spec.count = count;
   spec.motion = shape;
@@ -152,7 +152,7 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
                     spec.period_max, o.target, table.periods.front(), table.periods.back()));
   }
 
-  const std::vector<analysis::MatchedPair> pairs = analysis::MatchPairs(
+  const std::vector<design::MatchedPair> pairs = design::MatchPairs(
       spec, [&target](double period) { return spectra::SpectralAcceleration(target, period); });
   std::vector<std::string> failed;
   for (std::size_t k = 0; k < pairs.size(); ++k) {

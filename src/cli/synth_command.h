@@ -1,7 +1,7 @@
 // `isolab synth`: writes a seeded synthetic ground motion (filtered white noise or a near-fault
 // pulse) as a PEER AT2 file (include/isolab/analysis/synthetic_motion.h); or, with --pairs, a
 // suite of horizontal pairs whose RotD100 matches a target spectrum given as a table
-// (include/isolab/analysis/matched_pairs.h), written into a folder.
+// (include/isolab/design/matched_pairs.h), written into a folder.
 #pragma once
 
 #include <iosfwd>

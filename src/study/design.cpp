@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <limits>
 
-#include "isolab/analysis/matched_pairs.h"
 #include "isolab/analysis/synthetic_motion.h"
 #include "isolab/core/errors.h"
+#include "isolab/design/matched_pairs.h"
 #include "isolab/io/atomic_file.h"
 #include "isolab/io/record.h"
 #include "isolab/model/bounds.h"
@@ -141,7 +141,7 @@ std::vector<model::StudyRecord> SyntheticRecords(
     int directions, std::vector<double>* misfits,
     const std::function<void(const std::string&)>& progress) {
   const model::SyntheticSuite& s = *design.synthetic;
-  analysis::MatchedPairSpec spec;
+  design::MatchedPairSpec spec;
   spec.seed = s.seed;
   spec.count = s.count;
   spec.motion.duration = s.duration;
@@ -164,7 +164,7 @@ std::vector<model::StudyRecord> SyntheticRecords(
     progress(fmt::format("suite: matching {} synthetic pairs to the target over {:g} to {:g} s",
                          s.count, spec.period_min, spec.period_max));
   }
-  const std::vector<analysis::MatchedPair> pairs = analysis::MatchPairs(spec, [&design](double t) {
+  const std::vector<design::MatchedPair> pairs = design::MatchPairs(spec, [&design](double t) {
     return spectra::ContinuedSpectralAcceleration(design.target, t);
   });
   for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -251,7 +251,7 @@ DesignStatistic SuiteStatistic(std::vector<double> per_record, bool mean_of_suit
 std::string BearingWeightRule(const model::ModelFile& model, const DesignOutcome& out) {
   double law = 0.0, carried = 0.0, low = INFINITY, high = -INFINITY;
   std::size_t pendulums = 0;
-  for (const analysis::IsolationSystem::BearingWeight& w : out.bearing_weights) {
+  for (const design::IsolationSystem::BearingWeight& w : out.bearing_weights) {
     if (std::isnan(w.carried)) continue;
     ++pendulums;
     law += w.law;
@@ -451,9 +451,8 @@ model::BoundModels ReadBoundModels(const model::DesignFile& design, const fs::pa
 }
 
 // The nominal bound's building: its capacities and the weights its bearings carry.
-void DescribeNominalBuilding(const model::DesignFile& design,
-                             const analysis::IsolationSystem& system, const DesignBound& b,
-                             DesignOutcome& out, const Progress& progress) {
+void DescribeNominalBuilding(const model::DesignFile& design, const design::IsolationSystem& system,
+                             const DesignBound& b, DesignOutcome& out, const Progress& progress) {
   out.capacities = Capacities(b.model, design.shear_strain_limit);
   out.bearing_weights = system.bearing_weights();
   out.building_weight = system.weight();
@@ -473,11 +472,11 @@ void SolveBoundsByElf(const model::DesignFile& design, DesignOutcome& out,
   const UnitSystem& units = design.model.units;
   const double second = 1.0 / units.SiFactor(dimension::kTime);
   const double metre = units.Convert(1.0, "m", dimension::kLength);
-  const analysis::DisplacementDemand demand = analysis::CodeDemand(design.target, units);
+  const design::DisplacementDemand demand = design::CodeDemand(design.target, units);
   for (DesignBound& b : out.bounds) {
-    const analysis::IsolationSystem system(b.model);
+    const design::IsolationSystem system(b.model);
     try {
-      b.elf = analysis::SolveElf(system, demand, metre);
+      b.elf = design::SolveElf(system, demand, metre);
     } catch (const std::runtime_error& error) {
       if (dynamic_cast<const InputError*>(&error)) throw;
       // The fixed point does not exist for this target and isolation system: an input's fault
@@ -485,9 +484,8 @@ void SolveBoundsByElf(const model::DesignFile& design, DesignOutcome& out,
       throw InputError({design.target_key},
                        fmt::format("the ELF procedure on the {} bound: {}", b.bound, error.what()));
     }
-    b.damping_coefficient =
-        analysis::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
-    b.elf_total_displacement = analysis::TotalDisplacement(b.model, system, b.elf);
+    b.damping_coefficient = design::CodeDampingCoefficient(design.target, b.elf.at_design.damping);
+    b.elf_total_displacement = design::TotalDisplacement(b.model, system, b.elf);
     b.bearings = system.BearingProperties(b.elf.displacement, b.elf.period);
     Tell(progress, fmt::format("ELF {}: D_M {:.4g} {}, T_M {:.4g} s, beta_M {:.3g}, B_M {:.3g}",
                                b.bound, b.elf.displacement, units.length(), b.elf.period / second,
@@ -637,8 +635,8 @@ model::StudyFile DesignStudy(const model::DesignFile& design, const model::Bound
                              DesignOutcome& out) {
   out.eccentricities.push_back({"none", {}});
   if (design.eccentricity > 0.0) {
-    for (const analysis::EccentricityCase& c :
-         analysis::AccidentalEccentricities(design.model, design.eccentricity, "eccentricity")) {
+    for (const design::EccentricityCase& c :
+         design::AccidentalEccentricities(design.model, design.eccentricity, "eccentricity")) {
       out.eccentricities.push_back(c);
     }
   }
@@ -653,7 +651,7 @@ model::StudyFile DesignStudy(const model::DesignFile& design, const model::Bound
   const std::string stem = fs::path(design.model_path).stem().string();
   for (std::size_t i = 0; i < out.bounds.size(); ++i) {
     DesignBound& b = out.bounds[i];
-    for (const analysis::EccentricityCase& c : out.eccentricities) {
+    for (const design::EccentricityCase& c : out.eccentricities) {
       model::StudyVariant variant;
       variant.name = c.name == "none" ? b.bound : b.bound + "_" + c.name;
       if (c.name == "none") {

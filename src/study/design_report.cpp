@@ -267,7 +267,7 @@ void WriteBearings(const model::DesignFile& design, const DesignOutcome& o, std:
              u.length(), u.force());
   for (const DesignBound& b : o.bounds) {
     for (std::size_t i = 0; i < b.bearings.size(); ++i) {
-      const analysis::EffectiveProperties& p = b.bearings[i];
+      const design::EffectiveProperties& p = b.bearings[i];
       const double qd = p.dissipated / (4.0 * p.displacement);
       fmt::print(file, "{},{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", b.bound,
                  io::CsvField(o.bearing_weights[i].name), p.displacement, p.stiffness, p.damping,
@@ -282,7 +282,7 @@ void WriteBearingTable(const DesignOutcome& o, const UnitSystem& u, std::ostream
   std::vector<std::vector<std::size_t>> groups;
   const auto same = [&](std::size_t i, std::size_t j) {
     for (const DesignBound& b : o.bounds) {
-      const analysis::EffectiveProperties &p = b.bearings[i], &q = b.bearings[j];
+      const design::EffectiveProperties &p = b.bearings[i], &q = b.bearings[j];
       if (std::abs(p.stiffness - q.stiffness) > 1e-9 * std::abs(p.stiffness) ||
           std::abs(p.damping - q.damping) > 1e-9) {
         return false;
@@ -461,7 +461,7 @@ void WriteBearingWeights(const model::DesignFile& design, const DesignOutcome& o
     fmt::print(md, "The friction pendulums' forces are their weight times constants: {}.\n\n",
                rule.substr(rule.find(": ") + 2));
     fmt::print(md, "| bearing | laws' w ({0}) | carried ({0}) |\n|---|---|---|\n", u.force());
-    for (const analysis::IsolationSystem::BearingWeight& w : o.bearing_weights) {
+    for (const design::IsolationSystem::BearingWeight& w : o.bearing_weights) {
       if (!std::isnan(w.carried)) {
         fmt::print(md, "| {} | {:.5g} | {:.5g} |\n", w.name, w.law, w.carried);
       }

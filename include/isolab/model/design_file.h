@@ -13,7 +13,7 @@
 //     records: [...]                     # pairs (plan) or records (one direction), as a
 //                                        # study's records (study_file.h); or
 //     synthetic: {count: 11, seed: 1, duration: 30 s, dt: 0.01 s, tolerance: 0.1}
-//                                        # pairs matched to the target (analysis/matched_pairs.h)
+//                                        # pairs matched to the target (design/matched_pairs.h)
 //     period_range: [0.75, 1.25]         # x T_M of the upper bound, x T_M of the lower bound:
 //                                        # where the suite's mean spectrum must reach the target
 //                                        # (ASCE 7-16 17.3.3; [0.2, 2] for Eurocode 8: EN 1998-1

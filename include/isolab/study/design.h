@@ -3,13 +3,13 @@
 //
 //  1. the nominal, upper-bound and lower-bound models from the bearings' property modification
 //     factors (model/bounds.h), written as YAML beside the results;
-//  2. the equivalent lateral force procedure on each (analysis/equivalent_lateral_force.h): D_M,
+//  2. the equivalent lateral force procedure on each (design/equivalent_lateral_force.h): D_M,
 //     T_M, beta_M, k_M and V_b, and for a building in plan D_TM by Eq. 17.5-3;
 //  3. the suite: the design file's records or pairs, or synthetic pairs matched to the target
-//     (analysis/matched_pairs.h), each scaled by its own factor so that the suite's mean spectrum
+//     (design/matched_pairs.h), each scaled by its own factor so that the suite's mean spectrum
 //     (the pairs' RotD100, a single record's 5 % spectrum) is nowhere below the target from
 //     period_range[0] x T_M(upper) to period_range[1] x T_M(lower) (spectra/suite_scaling.h);
-//  4. every bound x accidental-eccentricity case (analysis/accidental_torsion.h: none, and the
+//  4. every bound x accidental-eccentricity case (design/accidental_torsion.h: none, and the
 //     four shifted cases of a building in plan) x record run through the study scheduler on
 //     local worker processes, each as `isolab run` runs it;
 //  5. the design values: per bound and record the envelope over the eccentricity cases and the
@@ -33,8 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/accidental_torsion.h"
-#include "isolab/analysis/equivalent_lateral_force.h"
+#include "isolab/design/accidental_torsion.h"
+#include "isolab/design/equivalent_lateral_force.h"
 #include "isolab/model/bounds.h"
 #include "isolab/model/design_file.h"
 #include "isolab/model/study_file.h"
@@ -65,14 +65,14 @@ struct DesignBound {
   // output folder: model_file for "none", the bound with its centres of mass shifted otherwise.
   std::vector<std::string> case_model_files;
   model::ModelFile model;
-  analysis::ElfResult elf;
+  design::ElfResult elf;
   double damping_coefficient = 0.0;  // B_M of the ELF result (1 / eta for Eurocode 8)
   // D_TM of ASCE 7-16 Eq. 17.5-3 (not below 1.15 D_M) in plan; 1.15 D_M in one direction, where
   // the model has no plan to twist in.
   double elf_total_displacement = 0.0;
   // Each isolator's effective properties at D_M (ELF), in layout order (bearing_weights names
   // them): what another program's linear link takes.
-  std::vector<analysis::EffectiveProperties> bearings;
+  std::vector<design::EffectiveProperties> bearings;
 };
 
 struct DesignRecord {
@@ -143,8 +143,8 @@ struct DesignWarning {
 };
 
 struct DesignOutcome {
-  std::vector<DesignBound> bounds;                         // nominal, upper, lower
-  std::vector<analysis::EccentricityCase> eccentricities;  // "none" first
+  std::vector<DesignBound> bounds;                       // nominal, upper, lower
+  std::vector<design::EccentricityCase> eccentricities;  // "none" first
   std::vector<model::BoundProperty> modified;  // each modified property, its lambdas and values
   // Why the bounds' bearings were not exported ("the upper bound: ..."); empty if they were.
   std::string opensees_refused;
@@ -178,7 +178,7 @@ struct DesignOutcome {
   }
   // The weights the pendulum bearings carry, in the ELF step and in the runs alike (the nominal
   // bound's; NaN for a bearing that is not a pendulum), and the building's weight (force).
-  std::vector<analysis::IsolationSystem::BearingWeight> bearing_weights;
+  std::vector<design::IsolationSystem::BearingWeight> bearing_weights;
   std::vector<IsolatorCapacity> capacities;  // per isolator, the nominal bound's
   double building_weight = 0.0;
   // W_s: the weight above the isolation, the base level's excluded (0 without stories).

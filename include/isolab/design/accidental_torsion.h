@@ -14,7 +14,7 @@
 #include "isolab/hysteresis/plan_vector.h"
 #include "isolab/model/model_file.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 
 struct EccentricityCase {
   std::string name;        // "ex+ey+", "ex+ey-", "ex-ey+", "ex-ey-"
@@ -30,4 +30,4 @@ std::vector<EccentricityCase> AccidentalEccentricities(const model::ModelFile& m
 // The model with the base's and every story's floor centre of mass moved by `shift`.
 model::ModelFile WithCentresOfMassShifted(model::ModelFile model, hysteresis::Vec2 shift);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::design

@@ -1,4 +1,4 @@
-#include "isolab/analysis/matched_pairs.h"
+#include "isolab/design/matched_pairs.h"
 
 #include <fmt/format.h>
 
@@ -13,7 +13,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/spectra/rotd_spectrum.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 namespace {
 
 // The margins around [period_min, period_max] over which the correction tapers off, and the
@@ -350,10 +350,10 @@ void MatchAttempt(const MatchedPairSpec& spec, const std::function<double(double
   const double dt = spec.motion.dt;
   std::vector<double> a[2];
   for (int c = 0; c < 2; ++c) {
-    FilteredNoiseSpec motion = spec.motion;
+    analysis::FilteredNoiseSpec motion = spec.motion;
     motion.seed = seeds[c] = MatchedPairComponentSeed(spec.seed, k, c, attempt);
     motion.pga = 1.0;  // the first correction scales it to the target
-    a[c] = FilteredNoiseRecord(motion).values;
+    a[c] = analysis::FilteredNoiseRecord(motion).values;
     baseline.Apply(&a[c]);
   }
   // The least misfit seen by the matching spectrum, for an attempt that does not converge.
@@ -504,4 +504,4 @@ std::vector<MatchedPair> MatchPairs(const MatchedPairSpec& spec,
   return pairs;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::design

@@ -2,7 +2,7 @@
 // lead-rubber bearings: k_eff = N (Kd + Qd / D), E = 4 N Qd (D - Dy) with Dy = Qd / (Ku - Kd),
 // and the fixed point D = g S_M1 T / (4 pi^2 B) solved here by bisection on those formulas
 // alone, with B from Table 17.5-1 as the code prints it.
-#include "isolab/analysis/equivalent_lateral_force.h"
+#include "isolab/design/equivalent_lateral_force.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "isolab/model/model_file.h"
 #include "isolab/spectra/design_spectrum.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -148,4 +148,4 @@ TEST(EquivalentLateralForce, TotalDisplacementIsEq17_5_3OfThePlan) {
 }
 
 }  // namespace
-}  // namespace isolab::analysis
+}  // namespace isolab::design

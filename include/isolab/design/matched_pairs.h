@@ -66,7 +66,7 @@
 #include "isolab/analysis/synthetic_motion.h"
 #include "isolab/io/record.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 
 struct MatchedPairSpec {
   // Pair k of a suite starts from seeds s(k, 0), s(k, 1) derived from this one (header), so pair
@@ -75,7 +75,7 @@ struct MatchedPairSpec {
   int count = 1;  // pairs, >= 1
   // The starting records' shape (duration, dt, envelope, site filter); its seed and pga are
   // ignored. duration >= 4 period_max, so that a record holds several cycles of every period.
-  FilteredNoiseSpec motion;
+  analysis::FilteredNoiseSpec motion;
   double period_min = 0.1;      // s, >= 5 motion.dt (the margin below it stays under Nyquist)
   double period_max = 5.0;      // s, > period_min: the range over which RotD100 must match
   double damping_ratio = 0.05;  // of the spectra, [0, 1)
@@ -111,4 +111,4 @@ std::vector<double> MatchedPairCheckPeriods(const MatchedPairSpec& spec);
 std::vector<MatchedPair> MatchPairs(const MatchedPairSpec& spec,
                                     const std::function<double(double)>& target);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::design

@@ -1,10 +1,10 @@
-#include "isolab/analysis/accidental_torsion.h"
+#include "isolab/design/accidental_torsion.h"
 
 #include <fmt/format.h>
 
 #include "isolab/core/errors.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 
 std::vector<EccentricityCase> AccidentalEccentricities(const model::ModelFile& model, double ratio,
                                                        const std::string& key) {
@@ -40,4 +40,4 @@ model::ModelFile WithCentresOfMassShifted(model::ModelFile model, hysteresis::Ve
   return model;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::design

@@ -4,7 +4,7 @@
 // F = m a acts at the shifted centre, so the slab translates F / (4 k) and turns
 // theta = F e_y / k_theta, k_theta = 4 k ((L_x/2)^2 + (L_y/2)^2), and a corner moves
 // (F / (4 k) + theta L_y / 2, theta L_x / 2).
-#include "isolab/analysis/accidental_torsion.h"
+#include "isolab/design/accidental_torsion.h"
 
 #include <gtest/gtest.h>
 
@@ -19,8 +19,13 @@
 #include "isolab/model/model_file.h"
 #include "own_test_file.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 namespace {
+
+using analysis::Prepare;
+using analysis::Problem;
+using analysis::Solve;
+using analysis::Summary;
 
 using testing::OwnTestDirectory;
 using testing::OwnTestFile;
@@ -109,4 +114,4 @@ TEST(AccidentalEccentricity, IsRefusedForABuildingInOneDirection) {
 }
 
 }  // namespace
-}  // namespace isolab::analysis
+}  // namespace isolab::design

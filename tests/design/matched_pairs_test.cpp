@@ -3,7 +3,7 @@
 // the matcher's and compared with an ASCE 7-16 design shape computed here; velocity and
 // displacement are integrated here; seeds, independence of the count and of H1 from H2 are
 // checked on the samples; bad specs and targets are refused naming the field.
-#include "isolab/analysis/matched_pairs.h"
+#include "isolab/design/matched_pairs.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "brute_force_spectrum.h"
 #include "isolab/core/errors.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 namespace {
 
 // ASCE 7-16 Sec. 11.4.6 (MCE_R, without the short-period ramp and T_L): S_MS = 1.5 g,
@@ -210,4 +210,4 @@ TEST(MatchedPairs, RefusesBadSpecsAndTargetsNamingThem) {
 }
 
 }  // namespace
-}  // namespace isolab::analysis
+}  // namespace isolab::design

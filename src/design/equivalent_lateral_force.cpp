@@ -1,4 +1,4 @@
-#include "isolab/analysis/equivalent_lateral_force.h"
+#include "isolab/design/equivalent_lateral_force.h"
 
 #include <fmt/format.h>
 
@@ -17,7 +17,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/model/build_structure.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 namespace {
 
 constexpr int kCycles = 3;
@@ -47,7 +47,7 @@ template <typename Assembly>
 EffectiveProperties LastCycle(const Assembly& assembly, double displacement, double period) {
   std::vector<std::size_t> starts;
   const io::DisplacementPath path = SinePath(displacement, period, &starts);
-  const ReplayResult replay = Replay(assembly, path, starts);
+  const analysis::ReplayResult replay = analysis::Replay(assembly, path, starts);
   const std::size_t first = starts[kCycles - 1];
   const double positive = replay.force[first + kStepsPerCycle / 4].x;
   const double negative = replay.force[first + 3 * kStepsPerCycle / 4].x;
@@ -289,4 +289,4 @@ double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& s
   return total;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::design

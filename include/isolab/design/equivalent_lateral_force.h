@@ -22,7 +22,7 @@
 #include "isolab/model/model_file.h"
 #include "isolab/spectra/design_spectrum.h"
 
-namespace isolab::analysis {
+namespace isolab::design {
 
 // ASCE 7-16 Table 17.5-1: B_M against the effective damping ratio beta (a fraction), linear
 // between the table's points (2 %: 0.8, 5 %: 1.0, 10 %: 1.2, 20 %: 1.5, 30 %: 1.7, 40 %: 1.9,
@@ -112,4 +112,4 @@ ElfResult SolveElf(const IsolationSystem& system, const DisplacementDemand& dema
 double TotalDisplacement(const model::ModelFile& model, const IsolationSystem& system,
                          const ElfResult& elf);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::design
