@@ -5,7 +5,8 @@ Areas depend one way (docs/architecture.md):
 
   core <- hysteresis <- structure <- integrators <- spectra
        <- identification <- diagnosis
-       <- io (formats) <- model (schemas) <- analysis <- building, design <- study <- cli, python
+       <- io (formats) <- model (schemas) <- analysis <- building         <- cli, python
+                                                   analysis <- design <- study <- cli, python
 
 An area may include its own headers and those of the areas listed for it in ALLOWED, nothing
 else: a lower area never sees a higher one (hysteresis knows no YAML, no files, no integrator).

@@ -21,7 +21,6 @@ void Consider(Peak* peak, double value, double time, int index = -1) {
 // A value with one or two horizontal components: |x| in one direction, the resultant in two.
 double Magnitude(Vec2 v) { return v.y == 0.0 ? std::abs(v.x) : Norm(v); }
 
-// The largest of `peaks` (the first of equals), or an absent peak.
 // A component's kernel as a law of elements in series, or nullptr (a bidirectional one's x law:
 // its elements' states are read along x and y).
 const hysteresis::SeriesArrangement* SeriesLawOf(const hysteresis::LawKernel& kernel) {
@@ -32,6 +31,7 @@ const hysteresis::SeriesArrangement* SeriesLawOf(const hysteresis::PlanLawKernel
   return law ? &law->law : nullptr;
 }
 
+// The largest of `peaks` (the first of equals), or an absent peak.
 Peak Largest(const std::vector<Peak>& peaks) {
   Peak largest;
   for (const Peak& peak : peaks) {

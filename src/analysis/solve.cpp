@@ -30,30 +30,21 @@ std::string NewtonName(integrators::NewmarkOptions::Newton newton) {
   return "?";
 }
 
-bool HasRateFormOf(const hysteresis::LawKernel& kernel) { return hysteresis::HasRateForm(kernel); }
-bool HasRateFormOf(const hysteresis::PlanLawKernel& kernel) {
-  return hysteresis::HasPlanRateForm(kernel);
-}
-
 // IDA integrates the laws' rate forms: a law without one (a degrading BHM2, alone or in an
 // uncoupled pair) is refused before the run, naming where it is.
 void RequireRateForms(const structure::Structure& structure) {
-  const auto refuse = [](const std::string& where) {
-    throw InputError({"integrator ida"},
-                     fmt::format("cannot run {} (a degrading_bhm2 component: the law has no rate "
-                                 "form yet); run it with Newmark (analysis.integrator: newmark, or "
-                                 "--integrator newmark)",
-                                 where));
-  };
   for (std::size_t slot = 0; slot < structure.slots(); ++slot) {
     const bool rate_forms = structure.VisitSlotAssembly(slot, [](const auto& assembly) {
       return std::all_of(assembly.kernels().begin(), assembly.kernels().end(),
-                         [](const auto& kernel) { return HasRateFormOf(kernel); });
+                         [](const auto& kernel) { return hysteresis::HasRateForm(kernel); });
     });
-    if (!rate_forms) {
-      refuse(fmt::format("{} '{}'", structure.slot_width(slot) == 2 ? "isolator" : "member",
-                         structure.slot_name(slot)));
-    }
+    if (rate_forms) continue;
+    throw InputError({"integrator ida"},
+                     fmt::format("cannot run {} '{}' (a degrading_bhm2 component: the law has no "
+                                 "rate form yet); run it with Newmark (analysis.integrator: "
+                                 "newmark, or --integrator newmark)",
+                                 structure.slot_width(slot) == 2 ? "isolator" : "member",
+                                 structure.slot_name(slot)));
   }
 }
 

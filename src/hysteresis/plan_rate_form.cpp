@@ -35,10 +35,9 @@ void SetRate(PlanRateResponse* r, int row, Vec2 rate) {
 namespace {
 
 // Sliders in series have their rate form in plan_series_rate_form.h, a variable pair per
-// element; HasPlanRateForm keeps them away from this contract, so these are never reached.
+// element; HasRateForm keeps them away from this contract, so these are never reached.
 [[noreturn]] void SeriesTakeTheirOwnRateForm() {
-  throw std::logic_error(
-      "sliders in series take plan_series_rate_form.h (HasPlanRateForm is false)");
+  throw std::logic_error("sliders in series take plan_series_rate_form.h (HasRateForm is false)");
 }
 PlanRateResponse Evaluate(const PlanSeriesArrangement&, const PlanLawPhase&, Vec2, Vec2,
                           const double*, double) {
@@ -126,7 +125,7 @@ void Switch(const UncoupledPair& pair, int root, Vec2 u, Vec2 v, PlanPhaseSwitch
 
 }  // namespace
 
-bool HasPlanRateForm(const PlanLawKernel& kernel) {
+bool HasRateForm(const PlanLawKernel& kernel) {
   if (std::holds_alternative<PlanSeriesArrangement>(kernel)) return false;
   const auto* pair = std::get_if<UncoupledPair>(&kernel);
   return pair == nullptr || (HasRateForm(pair->x) && HasRateForm(pair->y));

@@ -290,7 +290,7 @@ Vec2 Structure::CoupledDeformation(std::size_t coupled, std::span<const double> 
 
 Structure::Influence Structure::SlotInfluence(std::size_t slot) const {
   Influence influence;
-  if (slot < members_.size()) {
+  if (slot < member_count_) {
     const Terms& terms = member_terms_[slot];
     influence.count = terms.count;
     for (int a = 0; a < terms.count; ++a) {
@@ -298,7 +298,7 @@ Structure::Influence Structure::SlotInfluence(std::size_t slot) const {
       influence.columns[a] = {terms.coefficients[a], 0.0};
     }
   } else {
-    const CoupledTerms& terms = coupled_terms_[slot - members_.size()];
+    const CoupledTerms& terms = coupled_terms_[slot - member_count_];
     influence.count = terms.count;
     std::copy_n(terms.dofs.begin(), terms.count, influence.dofs.begin());
     std::copy_n(terms.columns.begin(), terms.count, influence.columns.begin());
@@ -433,7 +433,7 @@ template <bool kScaled>
       offset += 2;
     }
     if constexpr (kScaled) {
-      const double s = scales[members_.size() + i];
+      const double s = scales[coupled_slot(i)];
       f = s * f;
       k_eff = s * k_eff;
       for (std::size_t l = slot_law_offset(coupled_slot(i)); l < offset; ++l) {
@@ -497,11 +497,11 @@ void Structure::EvaluateAll(std::span<const LawState> committed, double t, const
 }
 
 double Structure::SlotStoredEnergy(std::size_t slot, std::span<const LawState> states) const {
-  if (slot < members_.size()) {
+  if (slot < member_count_) {
     return members_[slot].assembly.StoredEnergy(
         states.subspan(law_offsets_[slot], members_[slot].assembly.state_size()));
   }
-  const std::size_t i = slot - members_.size();
+  const std::size_t i = slot - member_count_;
   const hysteresis::PlanAssembly& assembly = coupled_[i].assembly;
   const std::size_t first = slot_law_offset(coupled_slot(i));
   double energy = 0.0;

@@ -25,7 +25,7 @@ inline std::string BuildingText(const std::string& isolation, double story_stiff
          std::to_string(damping) + "]}\n";
 }
 
-inline const char* kBilinear = "{name: iso, type: bhm2, k0: 12.0, k1: 1.5, uy: 6.0}";
+inline constexpr const char* kBilinear = "{name: iso, type: bhm2, k0: 12.0, k1: 1.5, uy: 6.0}";
 
 inline model::ModelFile Model(const std::string& text) {
   return model::LoadModelText(text, "building.yaml");

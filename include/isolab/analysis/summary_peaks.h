@@ -1,6 +1,7 @@
 // The run's headline peaks, one table that every output iterates: the text summary (run_text.h),
-// the JSON report (run_report.h), the HDF5 file's /peaks and the CSV file's '# peak' lines. A
-// peak is added to all of them by one row in summary_peaks.cpp.
+// the JSON report (run_report.h), the HDF5 file's /peaks, the CSV file's '# peak' lines and the
+// band of a fitted model's draws (run_band.h). A peak is added to all of them by one row in
+// summary_peaks.cpp.
 #pragma once
 
 #include <optional>

@@ -7,7 +7,7 @@
 //   k_M = sum (|F+| + |F-|) / (2 D_M),  beta_M = sum E_M / (2 pi k_M D_M^2)   (Eqs. 17.8-3, -4)
 //
 // with B_M from beta_M by ASCE 7-16 Table 17.5-1 (DampingCoefficient). The effective properties
-// are the bearings' own laws' (IsolationSystemAt): every isolator driven together along x through
+// are the bearings' own laws' (IsolationSystem::At): every isolator driven together along x through
 // three cycles u = D sin(2 pi t / T) at the current T_M (only rate-dependent laws see T), read on
 // the third cycle, where a bilinear loop is steady. Friction pendulums carry the weight the runs
 // give them: their laws' `w`, or under a model's axial_load (docs/axial_load.md) their static

@@ -71,8 +71,9 @@ struct PlanRateResponse {
 using PlanInternalVariables = std::array<double, kMaxPlanInternalVariables>;
 
 // Whether the law has a rate form in this contract (not for a pair with a degrading law,
-// rate_form.h; sliders in series have theirs in plan_series_rate_form.h).
-bool HasPlanRateForm(const PlanLawKernel& kernel);
+// rate_form.h; sliders in series have theirs in plan_series_rate_form.h): the one-direction
+// HasRateForm's overload, so that a slot's assembly of either kind is checked alike.
+bool HasRateForm(const PlanLawKernel& kernel);
 // How many internal variables q it carries (0..4) and how many root functions it has (0..4).
 int PlanInternalVariableCount(const PlanLawKernel& kernel);
 int PlanPhaseRootCount(const PlanLawKernel& kernel);

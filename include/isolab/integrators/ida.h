@@ -32,7 +32,7 @@ struct IdaOptions {
 // repeatedly, too much work) stops the run with the call, the SUNDIALS flag name and the time,
 // keeping the rows observed so far. RunSummary.steps counts grid steps completed (whole output
 // intervals). The observer sees the state at rest and at every output time. Every law needs a rate
-// form (hysteresis::HasRateForm, HasPlanRateForm): the caller checks.
+// form (hysteresis::HasRateForm): the caller checks.
 RunSummary RunIda(const structure::Structure& structure, const Excitation& excitation,
                   const TimeGrid& grid, const IdaOptions& options, ResponseObserver& observer);
 // The same, keeping every output row in memory.

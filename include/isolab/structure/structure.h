@@ -120,10 +120,9 @@ class Structure {
     damping_product_.Apply(viscous_damping_, v, force);
   }
 
-  // Law states: a member's components one each, a coupled member's two each (x, y); force columns:
-  // one per member, then two per coupled member (x, y).
+  // Law states and force columns, laid out as the header says.
   std::size_t law_count() const { return law_offsets_.back(); }
-  std::size_t force_columns() const { return members_.size() + 2 * coupled_.size(); }
+  std::size_t force_columns() const { return member_count_ + 2 * coupled_.size(); }
 
   // Slots: every member and coupled member through one interface, members first (the order of
   // law offsets). A slot has width 1 (a member: its deformation and force along its own row) or 2
@@ -286,7 +285,9 @@ class Structure {
   Eigen::VectorXd mass_;
   std::vector<Member> members_;
   std::vector<CoupledMember> coupled_;
-  std::size_t member_count_ = 0;  // members_.size(), the first coupled member's slot
+  // members_.size(), the first coupled member's slot, kept as a number: the slot accessors run
+  // per isolator at every step, and size() divides by sizeof(Member).
+  std::size_t member_count_ = 0;
   SparseMatrix viscous_damping_;
   DampingProduct damping_product_;
   std::vector<std::size_t> law_offsets_;         // members, then coupled members, then the end
