@@ -291,6 +291,7 @@ void Refine(const identification::Residual& stacked, const std::vector<double>& 
             const identification::FitOptions& options, double count, BuildingFitResult& result) {
   identification::RefinementOptions local;
   local.threads = options.threads;
+  local.spread = options.spread;
   long spent = result.search.evaluations;
   if (options.progress) {
     local.progress = [&](const identification::RefinementProgress& p) {
@@ -484,10 +485,11 @@ BuildingFitResult FitBuilding(const model::ModelFile& model,
   // where it was taken at the fitted point, else by the same central differences there.
   Eigen::MatrixXd jacobian = std::move(result.refinement.jacobian);
   if (!result.refinement.jacobian_current) {
-    jacobian = identification::DifferenceJacobian(
-                   stacked, best, stacked(best),
-                   identification::RefinementOptions{}.difference_step, options.threads)
-                   .jacobian;
+    jacobian =
+        identification::DifferenceJacobian(stacked, best, stacked(best),
+                                           identification::RefinementOptions{}.difference_step,
+                                           options.threads, options.spread)
+            .jacobian;
   }
   Uncertainty(std::move(jacobian), coordinates, count, result);
 

@@ -30,11 +30,16 @@ void RefuseCyclicOptions(const FitOptions& options) {
 
 }  // namespace
 
-void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
+void RunBuildingFitCommand(const FitOptions& options, const SearchRanks& ranks, std::ostream& out) {
   RefuseCyclicOptions(options);
-  const building::BuildingData data{
-      options.data,        options.specimen, options.offsets,         options.force_unit,
-      options.length_unit, options.quiet,    "isolab fit --building", {}};
+  const building::BuildingData data{options.data,
+                                    options.specimen,
+                                    options.offsets,
+                                    options.force_unit,
+                                    options.length_unit,
+                                    options.quiet || !ranks.reports(),
+                                    "isolab fit --building",
+                                    {}};
   building::BuildingFitInputs inputs = building::LoadBuildingFit(options.building, data);
   const model::ModelFile& model = inputs.model;
   if (options.cross_validate && options.model_form) {
@@ -63,9 +68,10 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
   identification::FitOptions fit;
   fit.seed = options.seed;
   fit.budget = options.budget;
-  fit.threads = options.threads;
+  fit.threads = ranks.Threads(options.threads);
+  fit.spread = ranks.spread();
   fit.global_budget = options.global_budget;
-  if (!options.quiet) {
+  if (!options.quiet && ranks.reports()) {
     fmt::print(stderr, "  {} parameters, {} motions ({}), budget {} simulations\n",
                spec.parameters.size(), motions.size(),
                spec.sequential ? "one specimen, in order" : "each from rest", options.budget);
@@ -83,6 +89,7 @@ void RunBuildingFitCommand(const FitOptions& options, std::ostream& out) {
     text.replace(0, 13, "--global-budget");
     throw InputError({"command line"}, text);
   }
+  if (!ranks.reports()) return;
   if (!outcome.fit) {
     out << (options.json ? building::BuildingFitOutcomeJson(outcome, spec.sequential, "") + "\n"
                          : building::CrossValidationText(*outcome.folds));

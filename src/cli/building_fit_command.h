@@ -6,10 +6,12 @@
 #include <ostream>
 
 #include "fit_command.h"
+#include "search_ranks.h"
 
 namespace isolab::cli {
 
-// Throws InputError for bad data, specification or options that do not apply.
-void RunBuildingFitCommand(const FitOptions& options, std::ostream& out);
+// Throws InputError for bad data, specification or options that do not apply. Runs the search
+// on `ranks`, where rank 0 alone prints and writes.
+void RunBuildingFitCommand(const FitOptions& options, const SearchRanks& ranks, std::ostream& out);
 
 }  // namespace isolab::cli

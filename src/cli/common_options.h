@@ -33,10 +33,11 @@ CLI::Option* AddSeedOption(CLI::App* command, Seed* seed, const std::string& wha
   return command->add_option("--seed", *seed, what);
 }
 
-inline void AddThreadsOption(CLI::App* command, int* threads) {
+inline void AddThreadsOption(CLI::App* command, int* threads,
+                             const std::string& default_count = "every hardware thread") {
   command
       ->add_option("--threads", *threads,
-                   "Threads (default: every hardware thread); the result does not depend on it")
+                   "Threads (default: " + default_count + "); the result does not depend on it")
       ->check(CLI::Range(0, 1024));
 }
 

@@ -20,6 +20,8 @@
 #include "isolab/io/output_check.h"
 #include "isolab/model/fit_spec_file.h"
 #include "isolab/model/fitted_model_file.h"
+#include "isolab/study/mpi_launch.h"
+#include "search_ranks.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
@@ -109,7 +111,9 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
   AddQuietFlag(command, &options.quiet);
 }
 
-void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
+namespace {
+
+void Diagnose(const DiagnoseOptions& options, std::ostream& out) {
   if (!options.building.empty()) return RunBuildingDiagnoseCommand(options, out);
   if (options.base.empty()) {
     throw InputError({"command line"},
@@ -173,6 +177,20 @@ void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
     return;
   }
   out << diagnosis::RenderSummary(report) << files.Where(context);
+}
+
+}  // namespace
+
+int RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
+  if (study::LaunchedByMpirun()) {
+    if (!SaysRefusals()) return 2;
+    throw InputError({"mpirun"},
+                     "isolab diagnose runs its fits one after another on local threads "
+                     "(--threads); under mpirun, fit each model with isolab fit, whose search "
+                     "spreads over the ranks");
+  }
+  Diagnose(options, out);
+  return 0;
 }
 
 }  // namespace isolab::cli

@@ -35,7 +35,8 @@ struct DiagnoseOptions {
 };
 
 void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options);
-// Throws InputError for bad data or base model.
-void RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out);
+// Throws InputError for bad data or base model, and under mpirun, which it refuses (its fits run
+// one after another on local threads): on rank 0, the others returning exit code 2 unsaid.
+int RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out);
 
 }  // namespace isolab::cli

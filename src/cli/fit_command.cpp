@@ -17,6 +17,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/io/output_check.h"
+#include "search_ranks.h"
 #include "specimen_option.h"
 
 namespace isolab::cli {
@@ -71,7 +72,9 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                       "Force unit of data files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of data files without a '# units:' line (with --force-unit)");
-  AddThreadsOption(command, &options.threads);
+  AddThreadsOption(command, &options.threads,
+                   "every hardware thread; one per rank under mpirun, over which the search "
+                   "spreads");
   command->add_flag("--force", options.force,
                     "Fit even when the work (evaluations x samples x laws) is beyond the limit");
   AddJsonFlag(command, &options.json, "Print the result as JSON");
@@ -124,10 +127,7 @@ void PrintCyclicFit(const analysis::CyclicFitProblem& problem,
   fmt::print(out, "{}\nfitted model: {}\n", outcome.notes.empty() ? "" : "\n", output);
 }
 
-}  // namespace
-
-void RunFitCommand(const FitOptions& options, std::ostream& out) {
-  if (!options.building.empty()) return RunBuildingFitCommand(options, out);
+void RunCyclicFit(const FitOptions& options, const SearchRanks& ranks, std::ostream& out) {
   if (options.spec.empty()) {
     throw InputError({"command line"},
                      "give --model (cyclic tests) or --building (shake-table "
@@ -163,10 +163,11 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
   request.length_unit = options.length_unit;
   request.search.seed = options.seed;
   request.search.budget = options.budget;
-  request.search.threads = options.threads;
+  request.search.threads = ranks.Threads(options.threads);
+  request.search.spread = ranks.spread();
   request.force = options.force;
   analysis::CyclicFitProblem problem = analysis::PrepareCyclicFit(std::move(request));
-  if (!options.quiet) {
+  if (!options.quiet && ranks.reports()) {
     fmt::print(stderr,
                "isolab fit: {} tests ({}), {} shape coordinates and {} stiffnesses, budget {}\n  "
                "{}\n",
@@ -177,6 +178,7 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     problem.request.search.progress = analysis::PrintCyclicFitProgress;
   }
   analysis::CyclicFitOutcome outcome = analysis::FitCyclicTests(problem);
+  if (!ranks.reports()) return;
   analysis::WriteCyclicFitModel(output, problem, outcome);
   if (options.json) {
     nlohmann::json json = analysis::CyclicFitJson(problem, outcome);
@@ -185,6 +187,23 @@ void RunFitCommand(const FitOptions& options, std::ostream& out) {
     return;
   }
   PrintCyclicFit(problem, outcome, output, out);
+}
+
+}  // namespace
+
+int RunFitCommand(const FitOptions& options, std::ostream& out) {
+  try {
+    const SearchRanks ranks;
+    if (options.building.empty()) {
+      RunCyclicFit(options, ranks, out);
+    } else {
+      RunBuildingFitCommand(options, ranks, out);
+    }
+    return 0;
+  } catch (const InputError&) {
+    if (!SaysRefusals()) return 2;
+    throw;
+  }
 }
 
 }  // namespace isolab::cli

@@ -37,7 +37,8 @@ struct FitOptions {
 };
 
 void RegisterFitCommand(CLI::App& app, FitOptions& options);
-// Throws InputError for bad data or specification.
-void RunFitCommand(const FitOptions& options, std::ostream& out);
+// Throws InputError for bad data or specification; under mpirun (search_ranks.h) only rank 0
+// does, and the others return exit code 2 without a word.
+int RunFitCommand(const FitOptions& options, std::ostream& out);
 
 }  // namespace isolab::cli

@@ -6,7 +6,8 @@
 // than the solver and its files (run, cyclic, synth, spectrum, shaketable, bounds) and starts
 // without MPI, pagmo and their dependencies. The others replace the front (execv: same process,
 // arguments and environment, so mpirun's ranks stay ranks) for their commands:
-// `isolab-search` (ISOLAB_SEARCH_COMMANDS) runs `fit` and `diagnose`, which need pagmo;
+// `isolab-search` (ISOLAB_SEARCH_COMMANDS) runs `fit` and `diagnose`, which need pagmo (and MPI, for
+// a fit on mpirun's ranks);
 // `isolab-studies` (ISOLAB_STUDY_COMMANDS) runs `compare` and `design`, which need MPI and not
 // pagmo, whose libraries take about 20 ms to load (static data copied in at start-up): a study's
 // start-up is time its worker processes wait (libexec/isolab/ beside bin/, or in the build

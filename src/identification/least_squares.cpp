@@ -10,7 +10,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
-#include "parallel_for.h"
+#include "spread_for.h"
 
 namespace isolab::identification {
 namespace {
@@ -68,35 +68,41 @@ Eigen::VectorXd Move(const std::vector<double>& from, const std::vector<double>&
 }  // namespace
 
 DifferenceJacobianResult DifferenceJacobian(const Residual& residual, const std::vector<double>& x,
-                                            const Eigen::VectorXd& r, double h, int threads) {
+                                            const Eigen::VectorXd& r, double h, int threads,
+                                            const TaskSpread* spread) {
   const std::size_t n = x.size();
-  DifferenceJacobianResult out;
-  out.jacobian.resize(r.size(), long(n));
-  std::vector<long> spent(n, 0);
-  ParallelFor(n, std::min(ThreadsOrHardware(threads), int(n)), [&](std::size_t p) {
-    std::vector<double> point = x;
-    const double up = std::min(1.0, x[p] + h), down = std::max(0.0, x[p] - h);
-    Eigen::VectorXd r_up = r, r_down = r;
-    double at_up = x[p], at_down = x[p];
-    if (up > x[p]) {
-      point[p] = up;
-      ++spent[p];
-      if (Evaluate(residual, point, &r_up)) at_up = up;
-    }
-    if (down < x[p]) {
-      point[p] = down;
-      ++spent[p];
-      if (Evaluate(residual, point, &r_down)) at_down = down;
-    }
-    auto column = out.jacobian.col(long(p));
-    if (at_up > at_down) {
-      column = ((at_up > x[p] ? r_up : r) - (at_down < x[p] ? r_down : r)) / (at_up - at_down);
-    } else {
-      column.setZero();
-    }
-  });
-  for (const long s : spent) out.evaluations += s;
-  return out;
+  // Each column's task gives its simulations, then the column.
+  const std::vector<std::vector<double>> columns =
+      SpreadFor(spread, n, std::min(ThreadsOrHardware(threads), int(n)), [&](std::size_t p) {
+        std::vector<double> point = x;
+        const double up = std::min(1.0, x[p] + h), down = std::max(0.0, x[p] - h);
+        Eigen::VectorXd r_up = r, r_down = r;
+        double at_up = x[p], at_down = x[p];
+        std::vector<double> out(std::size_t(r.size()) + 1, 0.0);
+        if (up > x[p]) {
+          point[p] = up;
+          ++out[0];
+          if (Evaluate(residual, point, &r_up)) at_up = up;
+        }
+        if (down < x[p]) {
+          point[p] = down;
+          ++out[0];
+          if (Evaluate(residual, point, &r_down)) at_down = down;
+        }
+        if (at_up > at_down) {
+          Eigen::Map<Eigen::VectorXd>(out.data() + 1, r.size()) =
+              ((at_up > x[p] ? r_up : r) - (at_down < x[p] ? r_down : r)) / (at_up - at_down);
+        }
+        return out;
+      });
+  DifferenceJacobianResult result;
+  result.jacobian.resize(r.size(), long(n));
+  for (std::size_t p = 0; p < n; ++p) {
+    result.evaluations += long(columns[p][0]);
+    result.jacobian.col(long(p)) =
+        Eigen::Map<const Eigen::VectorXd>(columns[p].data() + 1, r.size());
+  }
+  return result;
 }
 
 void RefinementOptions::Validate(int dimension) const {
@@ -135,8 +141,8 @@ RefinementOutcome RefineLeastSquares(const Residual& residual, const std::vector
   double lambda = 1e-3, growth = 2.0;
   for (;;) {
     if (out.evaluations + 2L * dimension > options.budget) break;
-    DifferenceJacobianResult differences =
-        DifferenceJacobian(residual, out.point, r, options.difference_step, options.threads);
+    DifferenceJacobianResult differences = DifferenceJacobian(
+        residual, out.point, r, options.difference_step, options.threads, options.spread);
     out.evaluations += differences.evaluations;
     out.jacobian = std::move(differences.jacobian);
     out.jacobian_current = true;

@@ -14,7 +14,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
-#include "parallel_for.h"
+#include "spread_for.h"
 
 namespace isolab::identification {
 namespace {
@@ -75,44 +75,76 @@ double Spread(const pagmo::population& population) {
 
 // Per island: its algorithm and population, IPOP restarts (a fresh random population, twice
 // as large, when the island has stagnated), and the best point it has found across restarts.
+// Under a spread (task_spread.h) only the process that owns an island holds its algorithm and
+// population; every process holds the rest, as the owner sends it after each chunk.
 struct Island {
   pagmo::algorithm algorithm;
   pagmo::population population;
+  long retired = 0;  // evaluations of the populations replaced at restarts (owner only)
+  int chunks_without_progress = 0;  // owner only
+  // What every process knows:
+  long evaluations = 0;  // of every population the island has had
   int restarts = 0;
   int population_size = 0;
-  int chunks_without_progress = 0;
   double best_f = INFINITY;
   pagmo::vector_double best_x;
   double best_step = 1.0;  // the population's spread when it found best_x
+  double champion_f = INFINITY;
+  pagmo::vector_double champion_x;  // the current population's best
 };
 
-// The islands, each with its own seeds; the first population holds the start.
-std::vector<Island> MakeArchipelago(const pagmo::problem& problem, const std::vector<double>& start,
-                                    const FitOptions& options, int population_size) {
-  std::vector<Island> archipelago;
-  for (int i = 0; i < options.islands; ++i) {
-    pagmo::population population{problem,
-                                 static_cast<pagmo::population::size_type>(population_size),
-                                 IslandSeed(options.seed, i, 1000)};
-    if (i == 0) population.set_x(0, start);
-    Island island{Cmaes(IslandSeed(options.seed, i, 0)),
-                  std::move(population),
-                  0,
-                  population_size,
-                  0,
-                  INFINITY,
-                  {},
-                  1.0};
-    archipelago.push_back(std::move(island));
-  }
-  return archipelago;
+// The owner's island as the numbers it sends: counts, values, then best_x and champion_x.
+std::vector<double> Encode(Island& island) {
+  island.evaluations = island.retired + long(island.population.get_problem().get_fevals());
+  island.champion_f = island.population.champion_f()[0];
+  island.champion_x = island.population.champion_x();
+  const pagmo::vector_double& best = island.best_x.empty() ? island.champion_x : island.best_x;
+  std::vector<double> numbers{double(island.evaluations),
+                              double(island.restarts),
+                              double(island.population_size),
+                              island.best_f,
+                              island.best_step,
+                              island.champion_f};
+  numbers.insert(numbers.end(), best.begin(), best.end());
+  numbers.insert(numbers.end(), island.champion_x.begin(), island.champion_x.end());
+  return numbers;
+}
+
+void Decode(const std::vector<double>& numbers, Island& island) {
+  constexpr std::size_t kHead = 6;
+  const std::size_t dimension = (numbers.size() - kHead) / 2;
+  island.evaluations = long(numbers[0]);
+  island.restarts = int(numbers[1]);
+  island.population_size = int(numbers[2]);
+  island.best_f = numbers[3];
+  island.best_step = numbers[4];
+  island.champion_f = numbers[5];
+  const auto best = numbers.begin() + long(kHead);
+  island.best_x.assign(best, best + long(dimension));
+  island.champion_x.assign(best + long(dimension), numbers.end());
+}
+
+// Every island's numbers, as their owners sent them, on every process.
+void Share(const std::vector<std::vector<double>>& numbers, std::vector<Island>& archipelago) {
+  for (std::size_t i = 0; i < archipelago.size(); ++i) Decode(numbers[i], archipelago[i]);
+}
+
+// Island i's first population, seeded for it; the first island's holds the start.
+void StartIsland(Island& island, int i, const pagmo::problem& problem,
+                 const std::vector<double>& start, const FitOptions& options, int population_size) {
+  island.algorithm = Cmaes(IslandSeed(options.seed, i, 0));
+  island.population =
+      pagmo::population{problem, static_cast<pagmo::population::size_type>(population_size),
+                        IslandSeed(options.seed, i, 1000)};
+  if (i == 0) island.population.set_x(0, start);
+  island.population_size = population_size;
 }
 
 // An island after a chunk of generations: its best kept where it improved; after 100 stagnant
 // generations, restarted from new random points with a larger population (IPOP-CMA-ES), which
-// explores more widely each time. `retired` counts the evaluations of the population replaced.
+// explores more widely each time.
 void AfterChunk(Island& island, int i, const pagmo::problem& problem, const FitOptions& options,
-                int population_size, long& retired) {
+                int population_size) {
   const double f = island.population.champion_f()[0];
   if (f < island.best_f * (1.0 - 1e-6)) {
     island.best_f = f;
@@ -123,7 +155,7 @@ void AfterChunk(Island& island, int i, const pagmo::problem& problem, const FitO
     ++island.restarts;
     island.population_size = std::min(2 * island.population_size, 16 * population_size);
     island.chunks_without_progress = 0;
-    retired += static_cast<long>(island.population.get_problem().get_fevals());
+    island.retired += static_cast<long>(island.population.get_problem().get_fevals());
     if (f < island.best_f) {
       island.best_f = f;
       island.best_x = island.population.champion_x();
@@ -169,9 +201,9 @@ bool Converged(const std::vector<std::pair<long, double>>& history, long evaluat
 void BestOverIslands(const std::vector<Island>& archipelago, pagmo::vector_double& best_x,
                      double& best_f) {
   for (const Island& island : archipelago) {
-    if (island.population.champion_f()[0] < best_f) {
-      best_f = island.population.champion_f()[0];
-      best_x = island.population.champion_x();
+    if (island.champion_f < best_f) {
+      best_f = island.champion_f;
+      best_x = island.champion_x;
     }
     if (island.best_f < best_f) {
       best_f = island.best_f;
@@ -228,13 +260,19 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
       SearchProblem{std::make_shared<const Objective>(objective), dimension}};
 
   const long cmaes_budget = static_cast<long>(options.budget * (1.0 - options.polish_share));
-  std::vector<Island> archipelago = MakeArchipelago(problem, start, options, population_size);
-  long retired = 0;  // evaluations of populations replaced at restarts
+  // Islands share nothing, so running them on any number of threads or processes gives the
+  // same result.
+  std::vector<Island> archipelago(static_cast<std::size_t>(islands));
+  const int island_threads = std::min(threads, islands);
+  Share(SpreadFor(options.spread, archipelago.size(), island_threads,
+                  [&](std::size_t i) {
+                    StartIsland(archipelago[i], int(i), problem, start, options, population_size);
+                    return Encode(archipelago[i]);
+                  }),
+        archipelago);
   const auto evaluations_so_far = [&] {
-    long sum = retired;
-    for (const Island& island : archipelago) {
-      sum += static_cast<long>(island.population.get_problem().get_fevals());
-    }
+    long sum = 0;
+    for (const Island& island : archipelago) sum += island.evaluations;
     return sum;
   };
   const auto chunk_cost = [&] {
@@ -247,15 +285,15 @@ SearchOutcome SearchUnitCube(const Objective& objective, int dimension,
   SearchOutcome result;
   int generation = 0;
   while (evaluations_so_far() + chunk_cost() <= cmaes_budget) {
-    // Islands share nothing, so running them on any number of threads gives the same result.
-    ParallelFor(archipelago.size(), std::min(threads, islands), [&](std::size_t i) {
-      archipelago[i].population = archipelago[i].algorithm.evolve(archipelago[i].population);
-    });
+    Share(SpreadFor(options.spread, archipelago.size(), island_threads,
+                    [&](std::size_t i) {
+                      Island& island = archipelago[i];
+                      island.population = island.algorithm.evolve(island.population);
+                      AfterChunk(island, int(i), problem, options, population_size);
+                      return Encode(island);
+                    }),
+          archipelago);
     generation += kGenerationsPerChunk;
-    for (int i = 0; i < islands; ++i) {
-      AfterChunk(archipelago[static_cast<std::size_t>(i)], i, problem, options, population_size,
-                 retired);
-    }
     const auto leader =
         std::min_element(archipelago.begin(), archipelago.end(),
                          [](const Island& a, const Island& b) { return a.best_f < b.best_f; });

@@ -5,13 +5,13 @@
 
 #include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
 #include "guarded_run.h"
+#include "mpi_session.h"
 
 namespace isolab::study {
 namespace {
@@ -24,28 +24,10 @@ constexpr int kTagJob = 2;     // 0 to rank > 0: the next job index, or -1 when 
 // (OpenMPI's blocking receive would spin on one).
 constexpr auto kPollInterval = std::chrono::microseconds(200);
 
-const char* FirstVariable(std::initializer_list<const char*> names) {
-  for (const char* name : names) {
-    if (const char* value = std::getenv(name)) return value;
-  }
-  return nullptr;
-}
-
 class MpiScheduler final : public Scheduler {
  public:
-  MpiScheduler() {
-    int provided = 0;
-    if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
-      throw std::runtime_error("MPI_Init_thread failed");
-    }
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
-    // Rank 0 runs jobs on a second thread that makes no MPI call; FUNNELED is what that needs.
-    rank0_works_ = provided >= MPI_THREAD_FUNNELED || size_ == 1;
-  }
-  ~MpiScheduler() override { MPI_Finalize(); }
-  MpiScheduler(const MpiScheduler&) = delete;
-  MpiScheduler& operator=(const MpiScheduler&) = delete;
+  MpiScheduler()
+      : rank_(session_.rank()), size_(session_.size()), rank0_works_(session_.funneled()) {}
 
   ScheduleOutcome Run(std::size_t count, const RunFunction& run,
                       const ProgressFunction& progress) override {
@@ -143,20 +125,13 @@ class MpiScheduler final : public Scheduler {
     return {};
   }
 
+  MpiSession session_;
   int rank_ = 0, size_ = 1;
+  // Rank 0 runs jobs on a second thread that makes no MPI call; FUNNELED is what that needs.
   bool rank0_works_ = true;
 };
 
 }  // namespace
-
-bool LaunchedByMpirun() {
-  return FirstVariable({"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"}) != nullptr;
-}
-
-int LaunchRank() {
-  const char* rank = FirstVariable({"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"});
-  return rank != nullptr ? std::atoi(rank) : 0;
-}
 
 std::unique_ptr<Scheduler> MakeMpiScheduler() { return std::make_unique<MpiScheduler>(); }
 

@@ -1,11 +1,13 @@
 // `isolab fit` end to end: data written by `isolab cyclic --test-data` from a known model are
 // fitted back, the fitted model file is accepted by `isolab cyclic`, a fixed seed reproduces the
-// fit, and bad data gives a located message with exit code 2.
+// fit, bad data gives a located message with exit code 2, and a fit on MPI ranks gives what one
+// process gives.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
@@ -44,6 +46,31 @@ nlohmann::json Fit(const std::string& data, const std::string& output, const std
                              " --budget 6000 --json -q -o " + output + " " + extra);
   EXPECT_EQ(run.exit_code, 0) << run.output;
   return nlohmann::json::parse(run.output);
+}
+
+// The first 1,500 samples of the Bouc-Wen benchmark's sine sweep (bundled) as a force-driven
+// cyclic-test file, and the benchmark's model beside it (boucwen.yaml) for a building fit's
+// specification to name.
+std::filesystem::path WriteSweepTest() {
+  std::ifstream sweep(std::string(ISOLAB_TEST_DATA_DIR) +
+                      "/data/boucwen/sinesweep_first_30000.csv");
+  const auto data = TemporaryFile("sweep.csv");
+  std::ofstream out(data);
+  out << "# units: force N, length m\ntest,time,displacement,force\n";
+  std::string line;
+  for (int k = 0; k < 1500 && std::getline(sweep, line);) {
+    if (line.empty() || line[0] == '#' || line.find("u_N") != std::string::npos) continue;
+    const auto comma = line.find(',');
+    out << "sweep," << k / 750.0 << "," << line.substr(comma + 1) << "," << line.substr(0, comma)
+        << "\n";
+    ++k;
+  }
+  std::ofstream(TemporaryFile("boucwen.yaml"))
+      << "units: {force: N, length: m, time: s}\nstructure: {type: sdof, mass: 2}\n"
+         "isolation:\n  components:\n    - {name: k, type: linear_spring, k: 5.0e4}\n"
+         "    - {name: z, type: bouc_wen, alpha: 5.0e4, beta: 1.0e3, gamma: 0.8, delta: -1.1, "
+         "nu: 1}\n    - {name: c, type: dashpot, c: 10}\n";
+  return data;
 }
 
 TEST(FitCommand, FitsBackAKnownModelAndWritesAModelFileIsolabAccepts) {
@@ -392,25 +419,7 @@ TEST(FitCommand, BadSpecificationsAreLocatedBeforeTheFit) {
 // sine sweep (bundled) as a cyclic-test file, its spring and dashpot started off, come back at
 // the benchmark's published values (k = 5e4 N/m, c = 10 N s/m); what does not apply is refused.
 TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
-  std::ifstream sweep(std::string(ISOLAB_TEST_DATA_DIR) +
-                      "/data/boucwen/sinesweep_first_30000.csv");
-  const auto data = TemporaryFile("sweep.csv");
-  std::ofstream out(data);
-  out << "# units: force N, length m\ntest,time,displacement,force\n";
-  std::string line;
-  for (int k = 0; k < 1500 && std::getline(sweep, line);) {
-    if (line.empty() || line[0] == '#' || line.find("u_N") != std::string::npos) continue;
-    const auto comma = line.find(',');
-    out << "sweep," << k / 750.0 << "," << line.substr(comma + 1) << "," << line.substr(0, comma)
-        << "\n";
-    ++k;
-  }
-  out.close();
-  std::ofstream(TemporaryFile("boucwen.yaml"))
-      << "units: {force: N, length: m, time: s}\nstructure: {type: sdof, mass: 2}\n"
-         "isolation:\n  components:\n    - {name: k, type: linear_spring, k: 5.0e4}\n"
-         "    - {name: z, type: bouc_wen, alpha: 5.0e4, beta: 1.0e3, gamma: 0.8, delta: -1.1, "
-         "nu: 1}\n    - {name: c, type: dashpot, c: 10}\n";
+  const auto data = WriteSweepTest();
   const auto spec = [](const std::string& extra, const std::string& substeps = "4") {
     const auto path = TemporaryFile("force_spec.yaml");
     std::ofstream(path) << "model: boucwen.yaml\ninput: force\nsubsteps: " << substeps
@@ -504,6 +513,77 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
   EXPECT_NE(word.output.find("shaker_spec.yaml:2:8: input: 'shaker': expected table"),
             std::string::npos)
       << word.output;
+}
+
+// A fit's output with what may differ between two runs of one fit taken out: where it was written
+// and how long it took.
+nlohmann::json WithoutPlaceAndTime(const std::string& output) {
+  nlohmann::json json = nlohmann::json::parse(output);  // one document: rank 0 alone prints
+  json.erase("output");
+  json.erase("seconds");
+  return json;
+}
+
+std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Under mpirun a fit's islands and Jacobian columns spread over the ranks
+// (identification/task_spread.h): each rank ends with the result one process finds, and rank 0
+// alone prints and writes it. Cyclic tests (CMA-ES islands and the polish) and a building fit
+// (islands, then the least-squares refinement's Jacobians) on 2 ranks and on 3 (more ranks than
+// islands: one owns none) give the same model file and the same numbers as one process on one
+// thread and on every thread.
+TEST(FitCommand, OnMpiRanksAFitGivesWhatOneProcessGives) {
+  ASSERT_EQ(isolab::testing::RunShell("command -v mpirun").exit_code, 0)
+      << "no mpirun: install openmpi-bin (scripts/setup.sh does)";
+  const std::string cyclic = GenerateTests(0.01) + " --model " + Data("three_laws_spec.yaml") +
+                             " --budget 3000 --seed 11 --json -q";
+  const auto sweep = WriteSweepTest();
+  const auto spec = TemporaryFile("ranks_spec.yaml");
+  std::ofstream(spec) << "model: boucwen.yaml\ninput: force\nsubsteps: 4\nparameters:\n"
+                         "  - {name: isolation.k.k, start: 3.5e4}\n"
+                         "  - {name: isolation.c.c, start: 15}\n"
+                         "  - {name: isolation.z.gamma, start: 0.5}\n";
+  // A budget with room for a global stage (two islands) before the refinement.
+  const std::string building =
+      sweep.string() + " --building " + spec.string() + " --budget 1500 --json -q";
+  for (const std::string& fit : {cyclic, building}) {
+    const auto one = TemporaryFile("one.fitted.yaml");
+    const auto alone = RunIsolab("fit " + fit + " --threads 1 -o " + one.string());
+    ASSERT_EQ(alone.exit_code, 0) << alone.output;
+    const nlohmann::json expected = WithoutPlaceAndTime(alone.output);
+    const std::string expected_model = ReadFile(one);
+    if (fit == building) {
+      EXPECT_NE(expected["stop_reason"].get<std::string>().find("global search: "),
+                std::string::npos)
+          << "the building fit is to run its islands too: " << expected["stop_reason"];
+    }
+    const auto threads = TemporaryFile("threads.fitted.yaml");
+    const auto threaded = RunIsolab("fit " + fit + " -o " + threads.string());
+    ASSERT_EQ(threaded.exit_code, 0) << threaded.output;
+    EXPECT_EQ(WithoutPlaceAndTime(threaded.output), expected);
+    for (const int ranks : {2, 3}) {
+      const auto spread = TemporaryFile("ranks" + std::to_string(ranks) + ".fitted.yaml");
+      const auto run = isolab::testing::RunShell("mpirun --allow-run-as-root --oversubscribe -np " +
+                                                 std::to_string(ranks) + " " + ISOLAB_BINARY +
+                                                 " fit " + fit + " -o " + spread.string());
+      ASSERT_EQ(run.exit_code, 0) << ranks << " ranks: " << run.output;
+      EXPECT_EQ(WithoutPlaceAndTime(run.output), expected) << ranks << " ranks";
+      EXPECT_EQ(ReadFile(spread), expected_model) << ranks << " ranks";
+    }
+  }
+  // diagnose runs its fits one after another on threads: refused under mpirun, said once.
+  const auto refused = isolab::testing::RunShell(
+      "mpirun --allow-run-as-root --oversubscribe -np 2 " + std::string(ISOLAB_BINARY) +
+          " diagnose " + sweep.string() + " --base " + Data("three_laws_spec.yaml") + " -q",
+      true);
+  EXPECT_NE(refused.exit_code, 0);
+  const std::string message = "isolab diagnose runs its fits one after another";
+  const auto first = refused.output.find(message);
+  ASSERT_NE(first, std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find(message, first + 1), std::string::npos) << refused.output;
 }
 
 }  // namespace

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/identification/task_spread.h"
+
 namespace isolab::identification {
 
 // The residual at a point of the unit cube; called from several threads at once, so it must only
@@ -44,6 +46,8 @@ struct RefinementOptions {
   // Threads that run the Jacobian's columns side by side (0: one per hardware thread, else 1 to
   // 1024); never changes the result.
   int threads = 0;
+  // Other processes that run Jacobian columns beside this one (FitOptions::spread); null: none.
+  const TaskSpread* spread = nullptr;
   double difference_step = 1e-3;  // of the unit cube, for the Jacobian's differences; (0, 0.1]
   // The convergence criteria. Output-error objectives of hysteretic models are smooth only down
   // to the kinks of their laws, which finite differences see as noise: tighter tolerances are
@@ -87,9 +91,11 @@ struct DifferenceJacobianResult {
 };
 // The Jacobian of `residual` at x (where it is r) by central differences of h in the unit cube,
 // one-sided at the faces or where one side does not run; a column neither side gives is zero.
-// Columns run on `threads` threads (0: every hardware thread), each written by its own task.
+// Columns run on `threads` threads (0: every hardware thread) and the processes of `spread`
+// (null: this one alone), each written by its own task.
 DifferenceJacobianResult DifferenceJacobian(const Residual& residual, const std::vector<double>& x,
-                                            const Eigen::VectorXd& r, double h, int threads);
+                                            const Eigen::VectorXd& r, double h, int threads,
+                                            const TaskSpread* spread = nullptr);
 
 // "converged", "stalled", "budget": the stop as the JSON outputs name it.
 const char* RefinementStopName(RefinementStop stop);

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "isolab/identification/task_spread.h"
+
 namespace isolab::identification {
 
 struct FitProgress {
@@ -36,6 +38,9 @@ struct FitOptions {
   // Threads that run the islands side by side and share each evaluation's work; 0: one per
   // hardware thread, else 1 to 1024. Changes how fast a fit runs, never its result.
   int threads = 0;
+  // Other processes that run islands and Jacobian columns beside this one (MPI ranks); null:
+  // this process alone. Like threads, changes how fast a fit runs, never its result.
+  const TaskSpread* spread = nullptr;
   // Share of the budget for the compass-search polish; [0, 1); 0: no polish, the CMA-ES stage
   // ends with its last whole chunk of generations that fits the budget.
   double polish_share = 0.1;

@@ -8,15 +8,10 @@
 
 #include <memory>
 
+#include "isolab/study/mpi_launch.h"
 #include "isolab/study/scheduler.h"
 
 namespace isolab::study {
-
-// True when this process was started by mpirun (OpenMPI's OMPI_COMM_WORLD_SIZE, or PMI/PMIx's
-// variables, in the environment).
-bool LaunchedByMpirun();
-// This process's rank from the same variables, before MPI is initialised; 0 without mpirun.
-int LaunchRank();
 
 // Throws std::runtime_error when MPI cannot be initialised.
 std::unique_ptr<Scheduler> MakeMpiScheduler();
