@@ -5,7 +5,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(isolab_libraries core hysteresis structure integrators spectra identification diagnosis io
-                     model analysis building design study)
+                     model analysis cyclic building design study)
 # KLU's and HDF5's include paths and libraries travel with io.
 set(isolab_library_targets isolab_klu isolab_hdf5)
 foreach(area ${isolab_libraries})

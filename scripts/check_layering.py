@@ -6,7 +6,8 @@ Areas depend one way (docs/architecture.md):
   core <- hysteresis <- structure <- integrators <- spectra
        <- identification <- diagnosis
        <- io (formats) <- model (schemas) <- analysis <- building         <- cli, python
-                                                   analysis <- design <- study <- cli, python
+                                       model <- cyclic <- building
+                                   analysis, cyclic <- design <- study <- cli, python
 
 An area may include its own headers and those of the areas listed for it in ALLOWED, nothing
 else: a lower area never sees a higher one (hysteresis knows no YAML, no files, no integrator).
@@ -34,13 +35,15 @@ ALLOWED = {
     "io": {"core", "hysteresis", "structure", "integrators", "spectra", "identification"},
     "model": {"core", "hysteresis", "structure", "integrators", "spectra", "identification", "io"},
     "analysis": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
-                 "diagnosis", "io", "model"},
+                 "io", "model"},
+    "cyclic": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
+               "diagnosis", "io", "model"},
     "building": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
-                 "diagnosis", "io", "model", "analysis"},
+                 "diagnosis", "io", "model", "analysis", "cyclic"},
     "design": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
-               "diagnosis", "io", "model", "analysis"},
+               "diagnosis", "io", "model", "analysis", "cyclic"},
     "study": {"core", "hysteresis", "structure", "integrators", "spectra", "identification",
-              "diagnosis", "io", "model", "analysis", "design"},
+              "diagnosis", "io", "model", "analysis", "cyclic", "design"},
 }
 ALLOWED["cli"] = set(ALLOWED) - {"cli"}
 ALLOWED["python"] = set(ALLOWED) - {"cli", "python"}

@@ -1,5 +1,5 @@
 // isolab.cyclic: `isolab cyclic` on one model, each loop as numpy views; with a path or an orbit,
-// the model driven along it (analysis/model_replay.h), each run as a dict of numpy arrays.
+// the model driven along it (cyclic/model_replay.h), each run as a dict of numpy arrays.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -7,9 +7,9 @@
 
 #include "arrays.h"
 #include "bindings.h"
-#include "isolab/analysis/cyclic_campaign.h"
-#include "isolab/analysis/model_replay.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/cyclic_campaign.h"
+#include "isolab/cyclic/model_replay.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/identification/synthetic_tests.h"
@@ -36,16 +36,16 @@ std::vector<std::shared_ptr<CyclicRun>> Cyclic(
     const std::string& test_data, double noise, unsigned seed) {
   const model::ModelFile& file = model.file();
   if (!(noise >= 0.0 && noise <= 1.0)) throw InputError({"noise"}, "must be in [0, 1]");
-  analysis::CyclicRequest request{amplitudes, periods,  cycles,      steps_per_cycle,
-                                  sequential, "cyclic", "amplitude="};
+  cyclic::CyclicRequest request{amplitudes, periods,  cycles,      steps_per_cycle,
+                                sequential, "cyclic", "amplitude="};
   std::vector<hysteresis::CyclicResult> loops;
   {
     py::gil_scoped_release release;
-    loops = analysis::RunCyclicCampaign(file, request);
+    loops = cyclic::RunCyclicCampaign(file, request);
   }
   if (!test_data.empty()) {
     std::vector<identification::CyclicTestData> tests =
-        analysis::TestsFromLoops(loops, periods.size() > 1);
+        cyclic::TestsFromLoops(loops, periods.size() > 1);
     identification::AddForceNoise(&tests, noise, seed);
     io::WriteCyclicTests(test_data, tests, file.units, sequential);
   }
@@ -72,7 +72,7 @@ py::array Vectors(const std::vector<hysteresis::Vec2>& values, bool plan) {
   return array;
 }
 
-py::dict ReplayDict(const std::string& model, const analysis::ReplayResult& r,
+py::dict ReplayDict(const std::string& model, const cyclic::ReplayResult& r,
                     const UnitSystem& units) {
   py::dict out;
   out["model"] = model;
@@ -118,16 +118,16 @@ py::dict ReplayDict(const std::string& model, const analysis::ReplayResult& r,
 
 // A model (or a plan model file's path) along paths from files, or round orbits; one dict per
 // run, as `isolab cyclic --path/--orbit --json` lists them, with the histories as arrays.
-py::list Replay(const py::object& model, const analysis::ReplayRequest& request) {
+py::list Replay(const py::object& model, const cyclic::ReplayRequest& request) {
   const model::ModelFile file = py::isinstance<Model>(model) ? model.cast<const Model&>().file()
                                                              : model::LoadModelFile(py::str(model));
-  std::vector<analysis::ReplayRun> runs;
+  std::vector<cyclic::ReplayRun> runs;
   {
     py::gil_scoped_release release;
-    runs = analysis::ReplayModel(file, request, analysis::OptionStyle::kPython);
+    runs = cyclic::ReplayModel(file, request, cyclic::OptionStyle::kPython);
   }
   py::list dicts;
-  for (const analysis::ReplayRun& run : runs) {
+  for (const cyclic::ReplayRun& run : runs) {
     dicts.append(ReplayDict(run.model, run.result, run.units));
   }
   return dicts;

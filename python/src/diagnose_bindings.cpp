@@ -6,8 +6,8 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "isolab/analysis/cyclic_diagnosis.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/cyclic_diagnosis.h"
 
 namespace py = pybind11;
 
@@ -18,7 +18,7 @@ std::string Diagnose(const std::vector<std::string>& data, const std::string& ba
                      unsigned seed, long budget, const std::string& specimen,
                      const std::string& force_unit, const std::string& length_unit, int threads,
                      bool force, bool quiet) {
-  analysis::CyclicDiagnosisRequest request;
+  cyclic::CyclicDiagnosisRequest request;
   request.data = data;
   request.base_path = base_path;
   request.specimen = specimen;
@@ -34,12 +34,12 @@ std::string Diagnose(const std::vector<std::string>& data, const std::string& ba
     request.settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
   try {
-    const analysis::CyclicDiagnosisProblem problem =
-        analysis::PrepareCyclicDiagnosis(std::move(request));
+    const cyclic::CyclicDiagnosisProblem problem =
+        cyclic::PrepareCyclicDiagnosis(std::move(request));
     diagnosis::ReportContext context;
-    analysis::NameCyclicDiagnosis(problem, &context);
+    cyclic::NameCyclicDiagnosis(problem, &context);
     py::gil_scoped_release release;
-    const diagnosis::Diagnosis result = analysis::DiagnoseCyclicTests(problem);
+    const diagnosis::Diagnosis result = cyclic::DiagnoseCyclicTests(problem);
     return diagnosis::RenderJson(diagnosis::BuildReport(result, problem.data, context));
   } catch (const InvalidParameter& error) {
     throw InputError({"diagnose"}, error.violation().Describe());

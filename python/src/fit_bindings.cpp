@@ -1,11 +1,11 @@
 // isolab.fit: `isolab fit` (an assembly's parameters identified from cyclic tests by CMA-ES,
-// analysis/cyclic_fit.h) with the command line's options as keyword arguments; the result as
+// cyclic/cyclic_fit.h) with the command line's options as keyword arguments; the result as
 // `isolab fit --json` has it. It writes no model file.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "isolab/analysis/cyclic_fit.h"
+#include "isolab/cyclic/cyclic_fit.h"
 #include "search_options.h"
 
 namespace py = pybind11;
@@ -17,7 +17,7 @@ py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path,
              long budget, const std::vector<int>& cycles, const std::string& specimen,
              const std::string& force_unit, const std::string& length_unit, int threads, bool force,
              bool quiet) {
-  analysis::CyclicFitRequest request;
+  cyclic::CyclicFitRequest request;
   request.data = data;
   request.spec_path = spec_path;
   request.cycles = cycles;
@@ -27,17 +27,16 @@ py::dict Fit(const std::vector<std::string>& data, const std::string& spec_path,
   request.search = SearchOptions("fit", seed, budget, threads);
   request.force = force;
   request.names = {"force_unit= and length_unit=", "cycles", "", "force="};
-  analysis::CyclicFitProblem problem = analysis::PrepareCyclicFit(std::move(request));
+  cyclic::CyclicFitProblem problem = cyclic::PrepareCyclicFit(std::move(request));
   if (!quiet) {
-    problem.request.search.progress = analysis::PrintCyclicFitProgress;
+    problem.request.search.progress = cyclic::PrintCyclicFitProgress;
   }
-  analysis::CyclicFitOutcome outcome;
+  cyclic::CyclicFitOutcome outcome;
   {
     py::gil_scoped_release release;
-    outcome = analysis::FitCyclicTests(problem);
+    outcome = cyclic::FitCyclicTests(problem);
   }
-  return py::module_::import("json").attr("loads")(
-      analysis::CyclicFitJson(problem, outcome).dump());
+  return py::module_::import("json").attr("loads")(cyclic::CyclicFitJson(problem, outcome).dump());
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ def test_fit_equals_the_command_line(repo, tmp_path, isolab_cli):
     for a, b in zip(mine["components"], cli["components"]):
         assert (a["name"], a["type"]) == (b["name"], b["type"])
         assert a["parameters"] == pytest.approx(b["parameters"], rel=1e-9, abs=1e-12)
-    # One workflow and one rendering (analysis/cyclic_fit.h): every key the command line prints
+    # One workflow and one rendering (cyclic/cyclic_fit.h): every key the command line prints
     # but the model file it wrote, with the same values.
     assert set(mine) == set(cli) - {"output"}
     for key in ("units", "identified_range", "identifiability", "one_specimen", "stop", "seed"):

@@ -7,10 +7,10 @@
 #include <filesystem>
 
 #include "isolab/analysis/problem.h"
-#include "isolab/analysis/test_data_checks.h"
 #include "isolab/building/shake_table_measurements.h"
 #include "isolab/building/shake_table_prediction.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/test_data_checks.h"
 #include "isolab/io/cyclic_test_file.h"
 
 namespace isolab::building {
@@ -25,8 +25,8 @@ void RefuseOption(const BuildingOptionNames& names, const std::string& option, c
 std::vector<BuildingMotion> ReadForceDriven(const BuildingData& data, const model::ModelFile& model,
                                             bool* one_specimen) {
   io::CyclicTestSet set =
-      analysis::ReadCheckedTests(data.data, data.force_unit, data.length_unit, model.units,
-                                 data.names.force_unit + " and " + data.names.length_unit);
+      cyclic::ReadCheckedTests(data.data, data.force_unit, data.length_unit, model.units,
+                               data.names.force_unit + " and " + data.names.length_unit);
   *one_specimen = io::OneSpecimen(data.specimen, set.one_specimen);
   const double seconds = model.units.SiFactor(dimension::kTime);
   std::vector<BuildingMotion> motions;

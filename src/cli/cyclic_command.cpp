@@ -10,9 +10,9 @@
 
 #include "common_options.h"
 #include "finite_options.h"
-#include "isolab/analysis/cyclic_campaign.h"
-#include "isolab/analysis/model_replay.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/cyclic_campaign.h"
+#include "isolab/cyclic/model_replay.h"
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/atomic_file.h"
@@ -166,8 +166,8 @@ std::string CsvPath(const std::string& csv, const Run& run, std::size_t index, b
   return (base.parent_path() / name).string();
 }
 
-// --path and --orbit: the model driven along given paths (analysis/path_replay.h).
-using Replayed = analysis::ReplayRun;
+// --path and --orbit: the model driven along given paths (cyclic/path_replay.h).
+using Replayed = cyclic::ReplayRun;
 
 std::string Vector(Vec2Alias v, bool plan) {
   return plan ? fmt::format("({:.6g}, {:.6g})", v.x, v.y) : fmt::format("{:.6g}", v.x);
@@ -314,7 +314,7 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
   if (!options.paths.empty() && !options.orbit.empty()) {
     throw InputError({"command line"}, "--path and --orbit: give one or the other");
   }
-  analysis::ReplayRequest request;
+  cyclic::ReplayRequest request;
   request.paths = options.paths;
   request.orbit = options.orbit;
   request.amplitudes = options.amplitudes;
@@ -331,8 +331,7 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
     const model::ModelFile model = model::LoadModelFile(file);
     inputs.push_back(file);
     inputs.insert(inputs.end(), model.included_files.begin(), model.included_files.end());
-    for (Replayed& run :
-         analysis::ReplayModel(model, request, analysis::OptionStyle::kCommandLine)) {
+    for (Replayed& run : cyclic::ReplayModel(model, request, cyclic::OptionStyle::kCommandLine)) {
       runs.push_back(std::move(run));
     }
   }
@@ -429,7 +428,7 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   models.reserve(options.models.size());
   for (const std::string& path : options.models) models.push_back(model::LoadModelFile(path));
 
-  analysis::CyclicRequest request;
+  cyclic::CyclicRequest request;
   request.amplitudes = options.amplitudes;
   request.periods = options.periods;
   request.cycles = options.cycles;
@@ -437,7 +436,7 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
   request.sequential = options.sequential;
   std::vector<Run> runs;
   for (const model::ModelFile& model : models) {
-    for (hysteresis::CyclicResult& result : analysis::RunCyclicCampaign(model, request)) {
+    for (hysteresis::CyclicResult& result : cyclic::RunCyclicCampaign(model, request)) {
       runs.push_back({&model, std::move(result)});
     }
   }
@@ -463,7 +462,7 @@ void RunCyclicCommand(const CyclicOptions& options, std::ostream& out) {
     std::vector<hysteresis::CyclicResult> loops;
     for (const Run& run : runs) loops.push_back(run.result);
     std::vector<identification::CyclicTestData> tests =
-        analysis::TestsFromLoops(loops, options.periods.size() > 1);
+        cyclic::TestsFromLoops(loops, options.periods.size() > 1);
     if (models.size() > 1) {
       for (std::size_t i = 0; i < runs.size(); ++i) {
         tests[i].name =

@@ -1,7 +1,7 @@
 // `isolab cyclic`: imposes u(t) = u_a sin(2 pi t / T) on the isolation assembly of one or more
 // model files and reports, per cycle, the dissipated energy, the peak force and each component's
 // slider displacement at +u_a; the loop goes to CSV on request. With --path or --orbit it drives
-// the model along a given path instead (analysis/path_replay.h): a measured test's displacement
+// the model along a given path instead (cyclic/path_replay.h): a measured test's displacement
 // history in one direction or two (against its measured force when the file has one), or a circle
 // or figure-eight in plan, through a one-direction model's laws in their coupled forms or a plan
 // model's isolators.

@@ -11,9 +11,9 @@
 #include "common_options.h"
 #include "diagnosis_files.h"
 #include "finite_options.h"
-#include "isolab/analysis/cyclic_diagnosis.h"
-#include "isolab/analysis/test_data_checks.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/cyclic_diagnosis.h"
+#include "isolab/cyclic/test_data_checks.h"
 #include "isolab/diagnosis/diagnose.h"
 #include "isolab/diagnosis/report.h"
 #include "isolab/io/cyclic_test_file.h"
@@ -130,7 +130,7 @@ void Diagnose(const DiagnoseOptions& options, std::ostream& out) {
   inputs.push_back(options.base);
   io::CheckOutputs(inputs, files.outputs);
 
-  analysis::CyclicDiagnosisRequest request;
+  cyclic::CyclicDiagnosisRequest request;
   request.data = options.data;
   request.base_path = options.base;
   request.specimen = options.specimen;
@@ -143,18 +143,17 @@ void Diagnose(const DiagnoseOptions& options, std::ostream& out) {
   if (!options.quiet) {
     request.settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
-  const analysis::CyclicDiagnosisProblem problem =
-      analysis::PrepareCyclicDiagnosis(std::move(request));
+  const cyclic::CyclicDiagnosisProblem problem = cyclic::PrepareCyclicDiagnosis(std::move(request));
   const model::FitSpec& base = problem.base;
   const identification::FitData& data = problem.data;
-  analysis::NameCyclicDiagnosis(problem, &context);
+  cyclic::NameCyclicDiagnosis(problem, &context);
   if (!options.quiet) {
     fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n  base fit's {}\n",
                data.tests.size(),
                data.one_specimen ? "one specimen, in order" : "independent specimens", options.base,
-               problem.work.Describe(analysis::kWorkLimit));
+               problem.work.Describe(cyclic::kWorkLimit));
   }
-  const diagnosis::Diagnosis result = analysis::DiagnoseCyclicTests(problem);
+  const diagnosis::Diagnosis result = cyclic::DiagnoseCyclicTests(problem);
 
   // The model first: a model isolab would refuse is a note in the report, not a lost diagnosis.
   try {

@@ -12,9 +12,9 @@
 #include "building_fit_command.h"
 #include "common_options.h"
 #include "finite_options.h"
-#include "isolab/analysis/cyclic_fit.h"
-#include "isolab/analysis/testing_factors_text.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/cyclic_fit.h"
+#include "isolab/cyclic/testing_factors_text.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/io/output_check.h"
 #include "search_ranks.h"
@@ -85,8 +85,8 @@ namespace {
 
 // The text `isolab fit` prints: e^2, the energy per fitted span, the parameters, the testing
 // factors, what the data do not identify, and the notes.
-void PrintCyclicFit(const analysis::CyclicFitProblem& problem,
-                    const analysis::CyclicFitOutcome& outcome, const std::string& output,
+void PrintCyclicFit(const cyclic::CyclicFitProblem& problem,
+                    const cyclic::CyclicFitOutcome& outcome, const std::string& output,
                     std::ostream& out) {
   const identification::FitResult& result = outcome.result;
   const identification::FitData& data = problem.data;
@@ -101,7 +101,7 @@ void PrintCyclicFit(const analysis::CyclicFitProblem& problem,
   fmt::print(out, "{:<14} {:>12} {:>16} {:>16} {:>9} {:>10}\n", "test", "amplitude", "W_d measured",
              "W_d fitted", "diff", "e^2");
   std::size_t test_index = 0;
-  for (const analysis::CyclicFitEnergy& row : outcome.energy) {
+  for (const cyclic::CyclicFitEnergy& row : outcome.energy) {
     while (data.tests[test_index].name != row.test) ++test_index;
     fmt::print(out, "{:<14} {:>9.4g} {:<2} {:>16.6g} {:>16.6g} {:>8.2f}% {:>9.4f}%  ({})\n",
                row.test, row.amplitude, spec.units.length(), row.measured, row.fitted,
@@ -118,7 +118,7 @@ void PrintCyclicFit(const analysis::CyclicFitProblem& problem,
     }
     fmt::print(out, "\n");
   }
-  fmt::print(out, "\n{}", analysis::TestingFactorsText(outcome.testing, spec.units));
+  fmt::print(out, "\n{}", cyclic::TestingFactorsText(outcome.testing, spec.units));
   if (!outcome.findings.empty()) {
     fmt::print(out, "\nidentifiability:\n");
     for (const std::string& finding : outcome.findings) fmt::print(out, "  {}\n", finding);
@@ -154,7 +154,7 @@ void RunCyclicFit(const FitOptions& options, const SearchRanks& ranks, std::ostr
   std::vector<std::string> inputs = options.data;
   inputs.push_back(options.spec);
   io::CheckOutputs(inputs, {output});
-  analysis::CyclicFitRequest request;
+  cyclic::CyclicFitRequest request;
   request.data = options.data;
   request.spec_path = options.spec;
   request.cycles = options.cycles;
@@ -166,7 +166,7 @@ void RunCyclicFit(const FitOptions& options, const SearchRanks& ranks, std::ostr
   request.search.threads = ranks.Threads(options.threads);
   request.search.spread = ranks.spread();
   request.force = options.force;
-  analysis::CyclicFitProblem problem = analysis::PrepareCyclicFit(std::move(request));
+  cyclic::CyclicFitProblem problem = cyclic::PrepareCyclicFit(std::move(request));
   if (!options.quiet && ranks.reports()) {
     fmt::print(stderr,
                "isolab fit: {} tests ({}), {} shape coordinates and {} stiffnesses, budget {}\n  "
@@ -174,14 +174,14 @@ void RunCyclicFit(const FitOptions& options, const SearchRanks& ranks, std::ostr
                problem.data.tests.size(),
                problem.one_specimen ? "one specimen, in order" : "independent specimens",
                problem.model->dimension(), problem.model->amplitude_count(), options.budget,
-               problem.work.Describe(analysis::kWorkLimit));
-    problem.request.search.progress = analysis::PrintCyclicFitProgress;
+               problem.work.Describe(cyclic::kWorkLimit));
+    problem.request.search.progress = cyclic::PrintCyclicFitProgress;
   }
-  analysis::CyclicFitOutcome outcome = analysis::FitCyclicTests(problem);
+  cyclic::CyclicFitOutcome outcome = cyclic::FitCyclicTests(problem);
   if (!ranks.reports()) return;
-  analysis::WriteCyclicFitModel(output, problem, outcome);
+  cyclic::WriteCyclicFitModel(output, problem, outcome);
   if (options.json) {
-    nlohmann::json json = analysis::CyclicFitJson(problem, outcome);
+    nlohmann::json json = cyclic::CyclicFitJson(problem, outcome);
     json["output"] = output;
     out << json.dump(2) << "\n";
     return;

@@ -31,7 +31,7 @@ struct FitOptions {
   // Of the data, unless a file's "# units:" line says; a file without one needs both.
   std::string force_unit, length_unit;
   int threads = 0;     // 0: every hardware thread (speed only: the result is the same)
-  bool force = false;  // fit beyond the work limit (analysis/test_data_checks.h)
+  bool force = false;  // fit beyond the work limit (cyclic/test_data_checks.h)
   bool json = false;
   bool quiet = false;
 };

@@ -13,8 +13,8 @@
 #include <utility>
 #include <variant>
 
-#include "isolab/analysis/path_replay.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/path_replay.h"
 #include "isolab/model/build_structure.h"
 
 namespace isolab::design {
@@ -47,7 +47,7 @@ template <typename Assembly>
 EffectiveProperties LastCycle(const Assembly& assembly, double displacement, double period) {
   std::vector<std::size_t> starts;
   const io::DisplacementPath path = SinePath(displacement, period, &starts);
-  const analysis::ReplayResult replay = analysis::Replay(assembly, path, starts);
+  const cyclic::ReplayResult replay = cyclic::Replay(assembly, path, starts);
   const std::size_t first = starts[kCycles - 1];
   const double positive = replay.force[first + kStepsPerCycle / 4].x;
   const double negative = replay.force[first + 3 * kStepsPerCycle / 4].x;

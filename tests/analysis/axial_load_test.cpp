@@ -15,13 +15,13 @@
 #include <vector>
 
 #include "../own_test_file.h"
-#include "isolab/analysis/cyclic_campaign.h"
-#include "isolab/analysis/model_replay.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/run_report.h"
 #include "isolab/analysis/run_text.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/cyclic_campaign.h"
+#include "isolab/cyclic/model_replay.h"
 #include "isolab/model/model_file.h"
 
 namespace isolab::analysis {
@@ -475,16 +475,16 @@ TEST(AxialLoad, RefusedWhereNothingCarriesTheLoad) {
     located(error, "axial_load: the run is on a fixed base");
   }
   try {
-    RunCyclicCampaign(model, {});
+    cyclic::RunCyclicCampaign(model, {});
     ADD_FAILURE() << "a cyclic test took axial_load";
   } catch (const InputError& error) {
     located(error, "axial_load: a cyclic test drives the bearings by their laws");
   }
-  ReplayRequest orbit;
+  cyclic::ReplayRequest orbit;
   orbit.orbit = "circle";
   orbit.amplitudes = {0.1};
   try {
-    ReplayModel(model, orbit, OptionStyle::kCommandLine);
+    cyclic::ReplayModel(model, orbit, cyclic::OptionStyle::kCommandLine);
     ADD_FAILURE() << "an orbit took axial_load";
   } catch (const InputError& error) {
     located(error, "axial_load: a path or an orbit drives the bearings by their laws");

@@ -1,4 +1,4 @@
-#include "isolab/analysis/model_replay.h"
+#include "isolab/cyclic/model_replay.h"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "isolab/io/displacement_path_file.h"
 #include "isolab/model/build_structure.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 namespace {
 
 std::string OptionName(std::string field, OptionStyle style) {
@@ -164,4 +164,4 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
   return runs;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -19,7 +19,7 @@
 #include "isolab/identification/parametrisation.h"
 #include "isolab/io/cyclic_test_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 // `units_given`: the caller named both the force and the length unit (--force-unit and
 // --length-unit). `how`: what to tell the user to give, e.g. "--force-unit and --length-unit".
@@ -68,4 +68,4 @@ FitWork EstimateFitWork(const identification::ModelParametrisation& model,
 // Throws InputError at `where` when the work exceeds `limit` and `force` is false.
 void RequireWorkWithin(const FitWork& work, double limit, bool force, const std::string& where);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

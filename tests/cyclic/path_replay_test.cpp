@@ -7,7 +7,7 @@
 //    direction of motion by asin(u_y / R), and the slider dissipates 2 pi fs rho a revolution
 //    (rho = sqrt(R^2 - u_y^2)), the discrete polygon's 2 N fs rho_N sin(pi / N) to round-off;
 //  * against a measured force 1.1 times the model's, e^2 = (0.1 / 1.1)^2.
-#include "isolab/analysis/path_replay.h"
+#include "isolab/cyclic/path_replay.h"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@
 #include "isolab/identification/cyclic_data.h"
 #include "isolab/model/model_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 namespace {
 
 using hysteresis::LawType;
@@ -182,4 +182,4 @@ TEST(PathReplay, OrbitOptionsNameTheFieldAtFault) {
 }
 
 }  // namespace
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

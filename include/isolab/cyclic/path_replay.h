@@ -24,7 +24,7 @@
 #include "isolab/hysteresis/plan_assembly.h"
 #include "isolab/io/displacement_path_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 using hysteresis::Vec2;
 
@@ -89,4 +89,4 @@ ReplayResult Replay(const hysteresis::PlanAssembly& model, const io::Displacemen
 hysteresis::PlanAssembly PlanFromIsolation(const hysteresis::ParallelAssembly& isolation,
                                            bool coupled);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -1,4 +1,4 @@
-#include "isolab/analysis/cyclic_campaign.h"
+#include "isolab/cyclic/cyclic_campaign.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/model/build_structure.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 using hysteresis::CyclicProtocol;
 
@@ -85,4 +85,4 @@ std::vector<identification::CyclicTestData> TestsFromLoops(
   return tests;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

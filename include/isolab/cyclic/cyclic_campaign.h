@@ -11,7 +11,7 @@
 #include "isolab/identification/cyclic_data.h"
 #include "isolab/model/model_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 struct CyclicRequest {
   std::vector<double> amplitudes;  // empty: the model's cyclic.amplitude
@@ -37,4 +37,4 @@ std::vector<hysteresis::CyclicResult> RunCyclicCampaign(const model::ModelFile& 
 std::vector<identification::CyclicTestData> TestsFromLoops(
     const std::vector<hysteresis::CyclicResult>& runs, bool name_period);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -1,4 +1,4 @@
-#include "isolab/analysis/cyclic_fit.h"
+#include "isolab/cyclic/cyclic_fit.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "isolab/analysis/testing_factors_text.h"
 #include "isolab/core/errors.h"
+#include "isolab/cyclic/testing_factors_text.h"
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/io/cyclic_test_file.h"
 #include "isolab/model/fitted_model_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 namespace {
 
 std::vector<CyclicFitEnergy> EnergyPerSpan(const hysteresis::ParallelAssembly& model,
@@ -190,4 +190,4 @@ nlohmann::json CyclicFitJson(const CyclicFitProblem& problem, const CyclicFitOut
   return json;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -1,5 +1,5 @@
 // `isolab diagnose --base`'s workflow, which the command line and Python's isolab.diagnose share:
-// the cyclic tests read and checked as the cyclic fit reads them (analysis/test_data_checks.h),
+// the cyclic tests read and checked as the cyclic fit reads them (cyclic/test_data_checks.h),
 // every cycle kept (diagnosis::AllCycles), the base fit's size and work checked, the diagnosis
 // run (diagnosis/diagnose.h) and the context its report names. The fronts parse their options
 // into a CyclicDiagnosisRequest and render the report; the command line also writes its files.
@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/cyclic_fit.h"
+#include "isolab/cyclic/cyclic_fit.h"
 #include "isolab/diagnosis/diagnose.h"
 #include "isolab/diagnosis/report.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 struct CyclicDiagnosisRequest {
   std::vector<std::string> data;  // CSV files of cyclic tests
@@ -44,4 +44,4 @@ diagnosis::Diagnosis DiagnoseCyclicTests(const CyclicDiagnosisProblem& problem);
 // units; the files and notes a front put there are left as they are.
 void NameCyclicDiagnosis(const CyclicDiagnosisProblem& problem, diagnosis::ReportContext* context);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -1,4 +1,4 @@
-#include "isolab/analysis/test_data_checks.h"
+#include "isolab/cyclic/test_data_checks.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 void RequireUnits(const io::CyclicTestSet& set, bool units_given, const std::string& how) {
   if (units_given || set.without_units.empty()) return;
@@ -103,4 +103,4 @@ void RequireWorkWithin(const FitWork& work, double limit, bool force, const std:
                                         work.Describe(limit)));
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

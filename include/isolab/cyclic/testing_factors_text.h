@@ -10,7 +10,7 @@
 #include "isolab/core/units.h"
 #include "isolab/identification/testing_factors.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 std::string TestingFactorsText(const identification::TestingFactors& factors,
                                const UnitSystem& units);
@@ -21,4 +21,4 @@ std::vector<std::string> TestingFactorsComment(const identification::TestingFact
 
 nlohmann::json TestingFactorsJson(const identification::TestingFactors& factors);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -1,4 +1,4 @@
-#include "isolab/analysis/path_replay.h"
+#include "isolab/cyclic/path_replay.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include "isolab/hysteresis/cyclic_test.h"
 #include "isolab/hysteresis/plan_law_kernel.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 namespace {
 
 using hysteresis::LawState;
@@ -181,4 +181,4 @@ hysteresis::PlanAssembly PlanFromIsolation(const hysteresis::ParallelAssembly& i
   return hysteresis::PlanAssembly(std::move(components));
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -1,4 +1,4 @@
-#include "isolab/analysis/cyclic_diagnosis.h"
+#include "isolab/cyclic/cyclic_diagnosis.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -8,7 +8,7 @@
 #include "isolab/core/errors.h"
 #include "isolab/io/cyclic_test_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 CyclicDiagnosisProblem PrepareCyclicDiagnosis(CyclicDiagnosisRequest request) {
   CyclicDiagnosisProblem problem;
@@ -53,4 +53,4 @@ void NameCyclicDiagnosis(const CyclicDiagnosisProblem& problem, diagnosis::Repor
   context->length_unit = problem.base.units.length();
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

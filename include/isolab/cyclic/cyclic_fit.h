@@ -1,5 +1,5 @@
 // `isolab fit --model`'s workflow, which the command line and Python's isolab.fit share: the
-// cyclic tests read and checked (analysis/test_data_checks.h), the assembly's parameters
+// cyclic tests read and checked (cyclic/test_data_checks.h), the assembly's parameters
 // identified (identification/fit.h), what the data do not identify, the energy per fitted span,
 // the components the fit gave no stiffness dropped, the testing factors, the fitted model file
 // and one JSON rendering. The fronts parse their options into a CyclicFitRequest and render the
@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/test_data_checks.h"
+#include "isolab/cyclic/test_data_checks.h"
 #include "isolab/identification/fit.h"
 #include "isolab/identification/identifiability.h"
 #include "isolab/identification/parametrisation.h"
 #include "isolab/identification/testing_factors.h"
 #include "isolab/model/fit_spec_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 // The names a front gives its options, for the messages that refuse them (the command line's by
 // default).
@@ -90,4 +90,4 @@ void WriteCyclicFitModel(const std::string& path, const CyclicFitProblem& proble
 // What `isolab fit --json` prints and isolab.fit returns.
 nlohmann::json CyclicFitJson(const CyclicFitProblem& problem, const CyclicFitOutcome& outcome);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "isolab/analysis/path_replay.h"
 #include "isolab/core/units.h"
+#include "isolab/cyclic/path_replay.h"
 #include "isolab/model/model_file.h"
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 
 struct ReplayRequest {
   std::vector<std::string> paths;  // CSV files of displacement paths; or
@@ -46,4 +46,4 @@ struct ReplayRun {
 std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRequest& request,
                                    OptionStyle style);
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic

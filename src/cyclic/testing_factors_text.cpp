@@ -1,8 +1,8 @@
-#include "isolab/analysis/testing_factors_text.h"
+#include "isolab/cyclic/testing_factors_text.h"
 
 #include <fmt/format.h>
 
-namespace isolab::analysis {
+namespace isolab::cyclic {
 namespace {
 
 std::string Pair(const identification::PropertyFactors& f) {
@@ -78,4 +78,4 @@ nlohmann::json TestingFactorsJson(const identification::TestingFactors& factors)
   return json;
 }
 
-}  // namespace isolab::analysis
+}  // namespace isolab::cyclic
