@@ -13,6 +13,7 @@
 
 #include "common_options.h"
 #include "finite_options.h"
+#include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
 #include "isolab/model/free_vibration_text.h"
@@ -87,10 +88,8 @@ std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, b
 }  // namespace
 
 void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "compare",
-      "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
-      "(worker processes, or MPI ranks under mpirun)");
+  CLI::App* command =
+      app.add_subcommand(std::string(kCompareCommand.name), std::string(kCompareCommand.help));
   command->add_option("study", options.study, "Study file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);

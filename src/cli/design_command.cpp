@@ -11,6 +11,7 @@
 
 #include "common_options.h"
 #include "finite_options.h"
+#include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
@@ -27,11 +28,8 @@ constexpr const char* kDesignPlotScript = "plot_design.py";
 }  // namespace
 
 void RegisterDesignCommand(CLI::App& app, DesignOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "design",
-      "Design an isolated building as ASCE 7-16 chapter 17 asks: bound models, the ELF "
-      "procedure, a suite scaled to the target spectrum, runs with accidental eccentricity, "
-      "design values and checks in a report");
+  CLI::App* command =
+      app.add_subcommand(std::string(kDesignCommand.name), std::string(kDesignCommand.help));
   command->add_option("design", options.design, "Design file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);

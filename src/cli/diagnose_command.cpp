@@ -11,6 +11,7 @@
 #include "common_options.h"
 #include "diagnosis_files.h"
 #include "finite_options.h"
+#include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/cyclic/cyclic_diagnosis.h"
 #include "isolab/cyclic/test_data_checks.h"
@@ -64,9 +65,8 @@ std::vector<std::string> WriteFinalModel(const std::string& path, const Diagnose
 }  // namespace
 
 void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "diagnose",
-      "Fit a base isolator model to cyclic tests, name the effects it lacks, add them and refit");
+  CLI::App* command =
+      app.add_subcommand(std::string(kDiagnoseCommand.name), std::string(kDiagnoseCommand.help));
   command
       ->add_option("data", options.data,
                    "CSV test data: test,time,displacement,force (with --building: shake-table "

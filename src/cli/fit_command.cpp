@@ -12,6 +12,7 @@
 #include "building_fit_command.h"
 #include "common_options.h"
 #include "finite_options.h"
+#include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/cyclic/cyclic_fit.h"
 #include "isolab/cyclic/testing_factors_text.h"
@@ -23,8 +24,8 @@
 namespace isolab::cli {
 
 void RegisterFitCommand(CLI::App& app, FitOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "fit", "Identify an isolator model's parameters from cyclic tests (CMA-ES)");
+  CLI::App* command =
+      app.add_subcommand(std::string(kFitCommand.name), std::string(kFitCommand.help));
   command
       ->add_option("data", options.data,
                    "CSV test data: test,time,displacement,force (with --building: shake-table "

@@ -6,12 +6,11 @@
 // than the solver and its files (run, cyclic, synth, spectrum, shaketable, bounds) and starts
 // without MPI, pagmo and their dependencies. The others replace the front (execv: same process,
 // arguments and environment, so mpirun's ranks stay ranks) for their commands:
-// `isolab-search` (ISOLAB_SEARCH_COMMANDS) runs `fit` and `diagnose`, which need pagmo (and MPI, for
-// a fit on mpirun's ranks);
-// `isolab-studies` (ISOLAB_STUDY_COMMANDS) runs `compare` and `design`, which need MPI and not
-// pagmo, whose libraries take about 20 ms to load (static data copied in at start-up): a study's
-// start-up is time its worker processes wait (libexec/isolab/ beside bin/, or in the build
-// tree).
+// `isolab-search` (ISOLAB_SEARCH_COMMANDS) runs `fit` and `diagnose`, which need pagmo (and MPI,
+// for a fit on mpirun's ranks); `isolab-studies` (ISOLAB_STUDY_COMMANDS) runs `compare` and
+// `design`, which need MPI and not pagmo, whose libraries take about 20 ms to load (static data
+// copied in at start-up): a study's start-up is time its worker processes wait (libexec/isolab/
+// beside bin/, or in the build tree).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -43,34 +42,17 @@
 #if !defined(ISOLAB_STUDY_COMMANDS) && !defined(ISOLAB_SEARCH_COMMANDS)
 #define ISOLAB_FRONT
 #include "beside_executable.h"
+#include "heavy_commands.h"
 #endif
 
 namespace {
 
 #ifdef ISOLAB_FRONT
-// The commands the front hands over, the executable that runs each, and what `isolab --help`
-// says of them (their own descriptions, which that executable prints with their options).
-struct HeavyCommand {
-  std::string_view name, executable, help;
-};
-constexpr HeavyCommand kHeavyCommands[] = {
-    {"fit", "isolab-search", "Identify an isolator model's parameters from cyclic tests (CMA-ES)"},
-    {"diagnose", "isolab-search",
-     "Fit a base isolator model to cyclic tests, name the effects it lacks, add them and refit"},
-    {"compare", "isolab-studies",
-     "Isolator variants under a suite of records and scale factors: per-run HDF5 and a summary "
-     "(worker processes, or MPI ranks under mpirun)"},
-    {"design", "isolab-studies",
-     "Design an isolated building as ASCE 7-16 chapter 17 asks: bound models, the ELF "
-     "procedure, a suite scaled to the target spectrum, runs with accidental eccentricity, "
-     "design values and checks in a report"},
-};
-
 // Runs the command's executable in place of this process when argv names a heavy command;
 // returns only when it does not, or when the executable cannot be started (exit code 1 then).
 void HandOverHeavyCommand(int argc, char** argv) {
   if (argc < 2) return;
-  for (const HeavyCommand& command : kHeavyCommands) {
+  for (const isolab::cli::HeavyCommand& command : isolab::cli::kHeavyCommands) {
     if (argv[1] != command.name) continue;
     const std::string relative = "libexec/isolab/" + std::string(command.executable);
     const std::string path = isolab::cli::BesideExecutable(relative, relative);
@@ -105,7 +87,7 @@ int main(int argc, char** argv) {
 #endif
 #ifdef ISOLAB_FRONT
   // Listed by --help; never parsed here (HandOverHeavyCommand took them).
-  for (const HeavyCommand& command : kHeavyCommands) {
+  for (const cli::HeavyCommand& command : cli::kHeavyCommands) {
     app.add_subcommand(std::string(command.name), std::string(command.help))->allow_extras();
   }
 #endif
