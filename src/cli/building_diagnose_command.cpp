@@ -15,7 +15,8 @@
 #include "isolab/model/fitted_building_file.h"
 
 namespace isolab::cli {
-void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
+void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, const SearchRanks& ranks,
+                                std::ostream& out) {
   if (!options.force_unit.empty() || !options.length_unit.empty()) {
     throw InputError({"command line"},
                      "--force-unit and --length-unit apply to cyclic tests, not to --building "
@@ -29,7 +30,7 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
                                     options.offsets,
                                     "",
                                     "",
-                                    options.quiet,
+                                    options.quiet || !ranks.reports(),
                                     "isolab diagnose --building",
                                     {}};
   building::BuildingFitInputs inputs = building::LoadBuildingFit(options.building, data);
@@ -53,12 +54,14 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
   identification::FitOptions fit;
   fit.seed = options.seed;
   fit.budget = options.budget;
-  fit.threads = options.threads;
+  fit.threads = ranks.Threads(options.threads);
+  fit.spread = ranks.spread();
   diagnosis::DiagnoseOptions settings;
   settings.seed = options.seed;
   settings.budget = options.budget;
-  settings.threads = options.threads;
-  if (!options.quiet) {
+  settings.threads = fit.threads;
+  settings.spread = fit.spread;
+  if (!options.quiet && ranks.reports()) {
     fmt::print(stderr, "  {} parameters, {} motions ({}), budget {} simulations a fit\n",
                inputs.spec.parameters.size(), motions.size(),
                inputs.spec.sequential ? "one specimen, in order" : "each from rest",
@@ -67,6 +70,7 @@ void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& ou
   }
   const building::BuildingDiagnosis result =
       building::DiagnoseBuilding(inputs.model, motions, inputs.spec, fit, settings);
+  if (!ranks.reports()) return;
 
   try {
     const std::string text = model::FittedBuildingText(

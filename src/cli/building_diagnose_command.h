@@ -7,10 +7,13 @@
 #include <ostream>
 
 #include "diagnose_command.h"
+#include "search_ranks.h"
 
 namespace isolab::cli {
 
-// Throws InputError for bad data, specification or options that do not apply.
-void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out);
+// Throws InputError for bad data, specification or options that do not apply. Runs its fits on
+// `ranks`, where rank 0 alone prints and writes.
+void RunBuildingDiagnoseCommand(const DiagnoseOptions& options, const SearchRanks& ranks,
+                                std::ostream& out);
 
 }  // namespace isolab::cli

@@ -21,7 +21,6 @@
 #include "isolab/io/output_check.h"
 #include "isolab/model/fit_spec_file.h"
 #include "isolab/model/fitted_model_file.h"
-#include "isolab/study/mpi_launch.h"
 #include "search_ranks.h"
 #include "specimen_option.h"
 
@@ -102,7 +101,7 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
                       "Force unit of data files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of data files without a '# units:' line (with --force-unit)");
-  AddThreadsOption(command, &options.threads);
+  AddThreadsOption(command, &options.threads, kSearchThreadsDefault);
   command->add_flag("!--no-plot", options.plot, "Do not plot the residual");
   command->add_flag("--force", options.force,
                     "Diagnose even when one fit's work (evaluations x samples x laws) is beyond "
@@ -113,8 +112,8 @@ void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options) {
 
 namespace {
 
-void Diagnose(const DiagnoseOptions& options, std::ostream& out) {
-  if (!options.building.empty()) return RunBuildingDiagnoseCommand(options, out);
+void Diagnose(const DiagnoseOptions& options, const SearchRanks& ranks, std::ostream& out) {
+  if (!options.building.empty()) return RunBuildingDiagnoseCommand(options, ranks, out);
   if (options.base.empty()) {
     throw InputError({"command line"},
                      "give --base (cyclic tests) or --building (a building's shake-table motions)");
@@ -138,22 +137,25 @@ void Diagnose(const DiagnoseOptions& options, std::ostream& out) {
   request.length_unit = options.length_unit;
   request.settings.seed = options.seed;
   request.settings.budget = options.budget;
-  request.settings.threads = options.threads;
+  request.settings.threads = ranks.Threads(options.threads);
+  request.settings.spread = ranks.spread();
   request.force = options.force;
-  if (!options.quiet) {
+  const bool quiet = options.quiet || !ranks.reports();
+  if (!quiet) {
     request.settings.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
   }
   const cyclic::CyclicDiagnosisProblem problem = cyclic::PrepareCyclicDiagnosis(std::move(request));
   const model::FitSpec& base = problem.base;
   const identification::FitData& data = problem.data;
   cyclic::NameCyclicDiagnosis(problem, &context);
-  if (!options.quiet) {
+  if (!quiet) {
     fmt::print(stderr, "isolab diagnose: {} tests ({}), base {}\n  base fit's {}\n",
                data.tests.size(),
                data.one_specimen ? "one specimen, in order" : "independent specimens", options.base,
                problem.work.Describe(cyclic::kWorkLimit));
   }
   const diagnosis::Diagnosis result = cyclic::DiagnoseCyclicTests(problem);
+  if (!ranks.reports()) return;
 
   // The model first: a model isolab would refuse is a note in the report, not a lost diagnosis.
   try {
@@ -181,15 +183,14 @@ void Diagnose(const DiagnoseOptions& options, std::ostream& out) {
 }  // namespace
 
 int RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
-  if (study::LaunchedByMpirun()) {
+  try {
+    const SearchRanks ranks;
+    Diagnose(options, ranks, out);
+    return 0;
+  } catch (const InputError&) {
     if (!SaysRefusals()) return 2;
-    throw InputError({"mpirun"},
-                     "isolab diagnose runs its fits one after another on local threads "
-                     "(--threads); under mpirun, fit each model with isolab fit, whose search "
-                     "spreads over the ranks");
+    throw;
   }
-  Diagnose(options, out);
-  return 0;
 }
 
 }  // namespace isolab::cli

@@ -35,8 +35,8 @@ struct DiagnoseOptions {
 };
 
 void RegisterDiagnoseCommand(CLI::App& app, DiagnoseOptions& options);
-// Throws InputError for bad data or base model, and under mpirun, which it refuses (its fits run
-// one after another on local threads): on rank 0, the others returning exit code 2 unsaid.
+// Throws InputError for bad data or base model; under mpirun (search_ranks.h) only rank 0 does,
+// and the others return exit code 2 without a word. Each fit spreads over the ranks.
 int RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out);
 
 }  // namespace isolab::cli

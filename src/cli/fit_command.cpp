@@ -73,9 +73,7 @@ void RegisterFitCommand(CLI::App& app, FitOptions& options) {
                       "Force unit of data files without a '# units:' line (with --length-unit)");
   command->add_option("--length-unit", options.length_unit,
                       "Length unit of data files without a '# units:' line (with --force-unit)");
-  AddThreadsOption(command, &options.threads,
-                   "every hardware thread; one per rank under mpirun, over which the search "
-                   "spreads");
+  AddThreadsOption(command, &options.threads, kSearchThreadsDefault);
   command->add_flag("--force", options.force,
                     "Fit even when the work (evaluations x samples x laws) is beyond the limit");
   AddJsonFlag(command, &options.json, "Print the result as JSON");

@@ -27,6 +27,10 @@ class SearchRanks {
   bool reports_ = true;
 };
 
+// --threads' default, as fit and diagnose describe it.
+inline constexpr const char* kSearchThreadsDefault =
+    "every hardware thread; one per rank under mpirun, over which each fit spreads";
+
 // Under mpirun every rank reads the same inputs and refuses them alike: true where the refusal
 // is to be said (rank 0, or no mpirun), so that it is said once.
 bool SaysRefusals();

@@ -31,6 +31,7 @@ Fitted FitModel(std::vector<ComponentSpec> components, const identification::Fit
   fit.seed = seed;
   fit.budget = options.budget;
   fit.threads = options.threads;
+  fit.spread = options.spread;
   model.fit = identification::Fit(parametrisation, data, fit);
   // A component the fit gave no stiffness carries no force: dropped, e^2 unchanged. The base's
   // last component stays, so a model is never empty.

@@ -100,9 +100,11 @@ struct Diagnosis {
 };
 
 struct DiagnoseOptions {
-  unsigned seed = 1;          // a fixed seed reproduces the diagnosis, on any machine
-  long budget = 12000;        // model evaluations per fit (CMA-ES and polish); >= 100
-  int threads = 0;            // as identification::FitOptions::threads: speed only
+  unsigned seed = 1;    // a fixed seed reproduces the diagnosis, on any machine
+  long budget = 12000;  // model evaluations per fit (CMA-ES and polish); >= 100
+  int threads = 0;      // as identification::FitOptions::threads: speed only
+  // As identification::FitOptions::spread: each fit's islands on other processes too.
+  const identification::TaskSpread* spread = nullptr;
   double bic_margin = 10.0;   // decrease of BIC an added effect must reach; > 0
   double noise_margin = 1.2;  // stop once e^2 <= noise_margin x the noise floor; >= 1
   // Candidates whose BIC gains differ by less than this are equal: the smaller model (fewer
