@@ -183,14 +183,7 @@ void Diagnose(const DiagnoseOptions& options, const SearchRanks& ranks, std::ost
 }  // namespace
 
 int RunDiagnoseCommand(const DiagnoseOptions& options, std::ostream& out) {
-  try {
-    const SearchRanks ranks;
-    Diagnose(options, ranks, out);
-    return 0;
-  } catch (const InputError&) {
-    if (!SaysRefusals()) return 2;
-    throw;
-  }
+  return RunOnSearchRanks([&](const SearchRanks& ranks) { Diagnose(options, ranks, out); });
 }
 
 }  // namespace isolab::cli

@@ -27,7 +27,7 @@ struct DiagnoseOptions {
   long budget = 12000;   // evaluations per fit
   // Of the data, unless a file's "# units:" line says; a file without one needs both.
   std::string force_unit, length_unit;
-  int threads = 0;     // 0: every hardware thread (speed only)
+  int threads = 0;     // 0: every hardware thread, one per rank under mpirun (speed only)
   bool plot = true;    // the residual plot (needs Python's matplotlib; skipped with a note)
   bool force = false;  // beyond the work limit
   bool json = false;

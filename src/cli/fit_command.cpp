@@ -191,18 +191,13 @@ void RunCyclicFit(const FitOptions& options, const SearchRanks& ranks, std::ostr
 }  // namespace
 
 int RunFitCommand(const FitOptions& options, std::ostream& out) {
-  try {
-    const SearchRanks ranks;
+  return RunOnSearchRanks([&](const SearchRanks& ranks) {
     if (options.building.empty()) {
       RunCyclicFit(options, ranks, out);
     } else {
       RunBuildingFitCommand(options, ranks, out);
     }
-    return 0;
-  } catch (const InputError&) {
-    if (!SaysRefusals()) return 2;
-    throw;
-  }
+  });
 }
 
 }  // namespace isolab::cli

@@ -30,7 +30,7 @@ struct FitOptions {
   std::string output;           // fitted model file; default: <spec stem>.fitted.yaml
   // Of the data, unless a file's "# units:" line says; a file without one needs both.
   std::string force_unit, length_unit;
-  int threads = 0;     // 0: every hardware thread (speed only: the result is the same)
+  int threads = 0;     // 0: every hardware thread, one per rank under mpirun (speed only)
   bool force = false;  // fit beyond the work limit (cyclic/test_data_checks.h)
   bool json = false;
   bool quiet = false;

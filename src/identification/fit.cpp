@@ -218,10 +218,14 @@ FitResult Fit(const ModelParametrisation& model, const FitData& data, const FitO
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   const int threads = ThreadsOrHardware(options.threads);
-  // Threads beyond one per island share each evaluation; below some work per evaluation the
-  // threads would cost more to start than they save.
+  // Threads beyond one per island this process runs share each evaluation; below some work per
+  // evaluation the threads would cost more to start than they save.
   const bool large = FittedSamples(data) * std::max(1L, LawRuns(model)) >= 200000;
-  const int evaluation_threads = large ? std::max(1, threads / options.islands) : 1;
+  const std::size_t islands_here = options.spread
+                                       ? OwnedTasks(std::size_t(options.islands),
+                                                    options.spread->Rank(), options.spread->Ranks())
+                                       : std::size_t(options.islands);
+  const int evaluation_threads = large ? std::max(1, threads / std::max(1, int(islands_here))) : 1;
   FitResult result;
   int generations = 0;
   std::vector<double> best = model.StartPoint();

@@ -224,10 +224,5 @@ DenseLu::DenseLu(const structure::SparseMatrix& pattern)
   solve_ = kernels.second;
 }
 
-bool DenseLu::Factorize(const structure::SparseMatrix& matrix) {
-  return factorize_(arrays_, matrix.valuePtr());
-}
-
-void DenseLu::Solve(Eigen::VectorXd* rhs) const { solve_(arrays_, rhs->data()); }
 
 }  // namespace isolab::integrators

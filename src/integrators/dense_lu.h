@@ -25,10 +25,13 @@ class DenseLu {
   DenseLu& operator=(const DenseLu&) = delete;
 
   // False when the matrix is singular to working precision (row_scaling.h); `matrix` has the
-  // pattern given to the constructor.
-  bool Factorize(const structure::SparseMatrix& matrix);
+  // pattern given to the constructor. Both calls are defined here so that the step inlines them
+  // whatever else its translation unit holds.
+  bool Factorize(const structure::SparseMatrix& matrix) {
+    return factorize_(arrays_, matrix.valuePtr());
+  }
   // Overwrites `rhs` with the solution.
-  void Solve(Eigen::VectorXd* rhs) const;
+  void Solve(Eigen::VectorXd* rhs) const { solve_(arrays_, rhs->data()); }
 
   // One size's kernels work on these (DenseLu's own arrays).
   struct Arrays {

@@ -17,18 +17,6 @@ double NextSampleOf(const SampledHistory& history, double t, double next) {
 
 }  // namespace
 
-double SampledHistory::At(double t) const {
-  if (values.empty() || t < 0.0) return 0.0;
-  const double position = t / dt;
-  const auto k = static_cast<std::size_t>(position);
-  if (k + 1 >= values.size()) {
-    // The last sample holds only at its own time (to round-off); after it the history is zero.
-    return k + 1 == values.size() && position - k < 1e-9 ? values.back() : 0.0;
-  }
-  const double fraction = position - k;
-  return values[k] + fraction * (values[k + 1] - values[k]);
-}
-
 Excitation Excitation::Uniform(SampledHistory acceleration) {
   Excitation excitation;
   excitation.ground.push_back({std::move(acceleration), {}});

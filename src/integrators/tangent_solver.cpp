@@ -34,12 +34,4 @@ TangentSolver::Solver TangentSolver::Make(const structure::SparseMatrix& pattern
   return Solver(std::in_place_type<KluSolver>, pattern);
 }
 
-bool TangentSolver::Factorize(structure::SparseMatrix& matrix) {
-  return std::visit([&](auto& solver) { return solver.Factorize(matrix); }, solver_);
-}
-
-void TangentSolver::Solve(Eigen::VectorXd* rhs) {
-  std::visit([&](auto& solver) { solver.Solve(rhs); }, solver_);
-}
-
 }  // namespace isolab::integrators

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <exception>
 #include <initializer_list>
 #include <stdexcept>
 
@@ -29,7 +30,7 @@ int LaunchRank() {
   return rank != nullptr ? std::atoi(rank) : 0;
 }
 
-MpiSession::MpiSession() {
+MpiSession::MpiSession() : exceptions_at_start_(std::uncaught_exceptions()) {
   int initialised = 0;
   MPI_Initialized(&initialised);
   int provided = MPI_THREAD_SINGLE;
@@ -47,7 +48,8 @@ MpiSession::MpiSession() {
 }
 
 MpiSession::~MpiSession() {
-  if (initialised_here_) MPI_Finalize();
+  const bool unwinding = std::uncaught_exceptions() > exceptions_at_start_;
+  if (initialised_here_ && (!unwinding || size_ == 1)) MPI_Finalize();
 }
 
 }  // namespace isolab::study

@@ -1,6 +1,9 @@
 // MPI for as long as a session lives: initialised by the first session in the process (threads
 // FUNNELED: only the main thread calls MPI; rank 0 of a study runs jobs on a second thread that
-// makes no MPI call) and finalised by that session when it is destroyed.
+// makes no MPI call) and finalised by that session when it is destroyed, unless an exception is
+// unwinding it on a job of several ranks: the error may be this rank's alone, and MPI_Finalize
+// waits for ranks that wait in a collective for this one. Exiting unfinalised with the error's
+// exit code, the rank has mpirun end the job.
 #pragma once
 
 namespace isolab::study {
@@ -20,6 +23,7 @@ class MpiSession {
 
  private:
   bool initialised_here_ = false;
+  int exceptions_at_start_ = 0;  // std::uncaught_exceptions() when the session began
   int rank_ = 0, size_ = 1;
   bool funneled_ = true;
 };

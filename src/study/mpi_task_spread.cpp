@@ -2,32 +2,37 @@
 
 #include <mpi.h>
 
+#include <optional>
+
 #include "mpi_session.h"
 
 namespace isolab::study {
 namespace {
 
+// MPI starts at the first task, not before: the inputs are read and checked by then, and a rank
+// that refuses them exits before MPI exists, which has mpirun end the job at once.
 class MpiTaskSpread final : public identification::TaskSpread {
  public:
-  int Ranks() const override { return session_.size(); }
-  int Rank() const override { return session_.rank(); }
+  int Ranks() const override { return Session().size(); }
+  int Rank() const override { return Session().rank(); }
 
-  // Three collective steps: whether any rank failed, every task's length, every task's numbers.
-  // Rank r's share is tasks r, r + R, r + 2R, ..., so each rank knows every other's count.
-  std::optional<std::vector<std::vector<double>>> Gather(std::size_t count,
-                                                         std::vector<std::vector<double>> owned,
-                                                         bool failed) const override {
-    int any_failed = failed ? 1 : 0;
-    MPI_Allreduce(MPI_IN_PLACE, &any_failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    if (any_failed) return std::nullopt;
+  // Whether any rank failed first (the lowest that did then tells the others what), else every
+  // task's length and then every task's numbers. Rank r's share is tasks r, r + R, r + 2R, ...,
+  // so each rank knows every other's count.
+  Gathered Gather(std::size_t count, std::vector<std::vector<double>> owned,
+                  const std::optional<identification::TaskFailure>& failure) const override {
+    int first_failed = failure ? Rank() : Ranks();
+    MPI_Allreduce(MPI_IN_PLACE, &first_failed, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first_failed < Ranks()) return {{}, Broadcast(failure, first_failed)};
 
     const int ranks = Ranks();
     std::vector<int> tasks_of(std::size_t(ranks), 0), task_offsets(std::size_t(ranks), 0);
     for (int r = 0; r < ranks; ++r) {
       tasks_of[std::size_t(r)] = int(identification::OwnedTasks(count, r, ranks));
-      if (r > 0)
+      if (r > 0) {
         task_offsets[std::size_t(r)] =
             task_offsets[std::size_t(r - 1)] + tasks_of[std::size_t(r - 1)];
+      }
     }
     std::vector<int> my_lengths;
     std::vector<double> my_numbers;
@@ -63,11 +68,29 @@ class MpiTaskSpread final : public identification::TaskSpread {
         at += std::size_t(lengths[slot]);
       }
     }
-    return all;
+    return {std::move(all), std::nullopt};
   }
 
  private:
-  MpiSession session_;
+  // `failure` as rank `root` holds it, on every rank.
+  static identification::TaskFailure Broadcast(
+      const std::optional<identification::TaskFailure>& failure, int root) {
+    identification::TaskFailure shared = failure.value_or(identification::TaskFailure{});
+    int head[2] = {static_cast<int>(shared.kind), static_cast<int>(shared.message.size())};
+    MPI_Bcast(head, 2, MPI_INT, root, MPI_COMM_WORLD);
+    shared.rank = root;
+    shared.kind = static_cast<identification::TaskFailure::Kind>(head[0]);
+    shared.message.resize(static_cast<std::size_t>(head[1]));
+    MPI_Bcast(shared.message.data(), head[1], MPI_CHAR, root, MPI_COMM_WORLD);
+    return shared;
+  }
+
+  const MpiSession& Session() const {
+    if (!session_) session_.emplace();
+    return *session_;
+  }
+
+  mutable std::optional<MpiSession> session_;
 };
 
 }  // namespace

@@ -574,6 +574,15 @@ TEST(FitCommand, OnMpiRanksAFitGivesWhatOneProcessGives) {
       EXPECT_EQ(ReadFile(spread), expected_model) << ranks << " ranks";
     }
   }
+  // Without -q, rank 0 alone says the fit's progress (its first line, once).
+  const auto said = isolab::testing::RunCommandLine(
+      "mpirun --allow-run-as-root --oversubscribe -np 2 " + std::string(ISOLAB_BINARY) + " fit " +
+      GenerateTests(0.01) + " --model " + Data("three_laws_spec.yaml") + " --budget 1000 -o " +
+      TemporaryFile("said.fitted.yaml").string() + " 2>&1 >/dev/null");
+  ASSERT_EQ(said.exit_code, 0) << said.output;
+  const auto head = said.output.find("isolab fit: ");
+  ASSERT_NE(head, std::string::npos) << said.output;
+  EXPECT_EQ(said.output.find("isolab fit: ", head + 1), std::string::npos) << said.output;
   // diagnose runs its fits one after another, each spread alike: the report, its files and the
   // final model are those of one process (the paths and the time aside).
   const auto diagnose = [](const std::string& launcher, const std::string& folder) {

@@ -8,9 +8,20 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace isolab::identification {
+
+// A task that threw, as every process learns of it: the lowest process where one did, what it
+// said, and what kind of error it was, so that the process that reports can say it as that
+// process would have.
+struct TaskFailure {
+  enum class Kind { kInput, kResource, kOther };
+  int rank = 0;
+  Kind kind = Kind::kOther;
+  std::string message;
+};
 
 class TaskSpread {
  public:
@@ -18,10 +29,15 @@ class TaskSpread {
   virtual int Ranks() const = 0;
   virtual int Rank() const = 0;
   // Called by every process at the same point with the outputs of the `count` tasks' share it
-  // owns, in task order, and whether one of its tasks failed. Returns every task's output in task
-  // order, or nothing on every process when a task failed on any.
-  virtual std::optional<std::vector<std::vector<double>>> Gather(
-      std::size_t count, std::vector<std::vector<double>> owned, bool failed) const = 0;
+  // owns, in task order, and this process's failure, if one of its tasks threw. Every process
+  // gets every task's output in task order in `all`, or, where a task failed on any process, the
+  // failure of the lowest such process.
+  struct Gathered {
+    std::vector<std::vector<double>> all;
+    std::optional<TaskFailure> failure;
+  };
+  virtual Gathered Gather(std::size_t count, std::vector<std::vector<double>> owned,
+                          const std::optional<TaskFailure>& failure) const = 0;
 };
 
 // How many of `count` tasks the process `rank` of `ranks` owns.

@@ -20,7 +20,19 @@ struct SampledHistory {
   double dt = 0.0;             // sampling step (time), > 0
   std::vector<double> values;  // value at k dt, k = 0, 1, ...
 
-  double At(double t) const;
+  // Linear between samples; zero before 0 and after the last sample. Inline: every step reads
+  // it once per ground component, and out of line it costs a call the step need not pay.
+  double At(double t) const {
+    if (values.empty() || t < 0.0) return 0.0;
+    const double position = t / dt;
+    const auto k = static_cast<std::size_t>(position);
+    if (k + 1 >= values.size()) {
+      // The last sample holds only at its own time (to round-off); after it the history is zero.
+      return k + 1 == values.size() && position - k < 1e-9 ? values.back() : 0.0;
+    }
+    const double fraction = position - k;
+    return values[k] + fraction * (values[k + 1] - values[k]);
+  }
   double duration() const { return values.empty() ? 0.0 : dt * (values.size() - 1); }
 };
 

@@ -1,5 +1,6 @@
 // Whether mpirun started this process, read from the environment before MPI is initialised:
-// the commands that run on ranks (compare, fit) decide with it whether to start MPI at all.
+// the commands that run on ranks (compare, fit, diagnose) decide with it whether to start MPI at
+// all.
 #pragma once
 
 namespace isolab::study {

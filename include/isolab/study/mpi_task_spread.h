@@ -1,7 +1,7 @@
 // A fit's tasks (identification/task_spread.h) over the ranks of mpirun: each rank runs the
 // islands and Jacobian columns it owns and all ranks exchange their outputs, so every rank ends
-// with the result of one process. MPI is initialised by MakeMpiTaskSpread and finalised when the
-// spread is destroyed.
+// with the result of one process. MPI is initialised at the spread's first task (after a fit's
+// inputs are read and checked) and finalised when the spread is destroyed.
 #pragma once
 
 #include <memory>
