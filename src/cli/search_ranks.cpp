@@ -8,7 +8,7 @@ namespace isolab::cli {
 SearchRanks::SearchRanks() {
   if (!study::LaunchedByMpirun()) return;
   spread_ = study::MakeMpiTaskSpread();
-  reports_ = study::LaunchRank() == 0;  // MPI itself starts with the fit's first task
+  reports_ = SaysRefusals();  // MPI itself starts with the fit's first task
 }
 
 bool SaysRefusals() { return study::LaunchRank() == 0; }

@@ -26,17 +26,14 @@ constexpr auto kPollInterval = std::chrono::microseconds(200);
 
 class MpiScheduler final : public Scheduler {
  public:
-  MpiScheduler()
-      : rank_(session_.rank()), size_(session_.size()), rank0_works_(session_.funneled()) {}
-
   ScheduleOutcome Run(std::size_t count, const RunFunction& run,
                       const ProgressFunction& progress) override {
-    return rank_ == 0 ? Coordinate(count, run, progress) : Work(run);
+    return session_.rank() == 0 ? Coordinate(count, run, progress) : Work(run);
   }
 
-  bool IsCoordinator() const override { return rank_ == 0; }
+  bool IsCoordinator() const override { return session_.rank() == 0; }
   std::string Describe() const override {
-    return fmt::format("{} MPI rank{}", size_, size_ == 1 ? "" : "s");
+    return fmt::format("{} MPI rank{}", session_.size(), session_.size() == 1 ? "" : "s");
   }
 
  private:
@@ -57,15 +54,17 @@ class MpiScheduler final : public Scheduler {
       if (progress) progress(outcome.results[job], done, count);
     };
     std::jthread local;
-    if (rank0_works_) {
+    // Rank 0 runs jobs on a second thread that makes no MPI call; FUNNELED is what that needs.
+    if (session_.funneled()) {
       local = std::jthread([&] {
         for (std::size_t job = next++; job < count; job = next++) record(GuardedRun(run, job));
       });
     }
     // Each rank holds up to two jobs: the one it runs and the next, so it never waits for rank
     // 0's reply between runs. A rank is done once told to stop with no result outstanding.
-    std::vector<int> outstanding(static_cast<std::size_t>(size_), 0);
-    std::vector<bool> stopped(static_cast<std::size_t>(size_), false);
+    const int ranks = session_.size();
+    std::vector<int> outstanding(static_cast<std::size_t>(ranks), 0);
+    std::vector<bool> stopped(static_cast<std::size_t>(ranks), false);
     const auto hand_out = [&](int rank) {
       const std::size_t job = next++;
       long long reply = job < count ? static_cast<long long>(job) : -1;
@@ -76,7 +75,7 @@ class MpiScheduler final : public Scheduler {
         ++outstanding[rank];
       }
     };
-    int working = size_ - 1;
+    int working = ranks - 1;
     std::vector<char> bytes;
     while (working > 0) {
       int arrived = 0;
@@ -126,9 +125,6 @@ class MpiScheduler final : public Scheduler {
   }
 
   MpiSession session_;
-  int rank_ = 0, size_ = 1;
-  // Rank 0 runs jobs on a second thread that makes no MPI call; FUNNELED is what that needs.
-  bool rank0_works_ = true;
 };
 
 }  // namespace
