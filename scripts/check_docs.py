@@ -23,8 +23,8 @@ command prints (the first Markdown table of its stdout):
     | variant | isolator [mm] | ...
     |---|---|...
 
-The command is `isolab ...` or a script under `scripts/` (run with /usr/bin/python3 or bash), every
-word `isolab` replaced by the binary. The two tables must have the same rows and columns; each
+The command is `isolab ...` or a script under `scripts/` or `benchmarks/` (run with /usr/bin/python3
+or bash), every word `isolab` replaced by the binary. The two tables must have the same rows and columns; each
 cell the same text and each number within half a unit of the page's last digit. `columns:`
 (1-based, `2-6` or `1,3`) limits the check to those columns, for a column the command cannot
 reproduce (wall times); `table: 2` compares with the second table the command prints, for a
@@ -225,6 +225,10 @@ def table_markers(page):
         marked.add(start)
         found.append((i + 1, parts[0], options, start, tables[start]))
     for start, rows in tables.items():
+        for index, row in rows[1:]:  # a `|` inside a code span splits a cell unless escaped
+            if len(row) != len(rows[0][1]):
+                errors.append(f"{page}:{index + 1}: {len(row)} cells in a table of "
+                              f"{len(rows[0][1])} columns (a bar inside a cell is written \\|)")
         if start not in marked and has_number(rows):
             errors.append(f"{page}:{start + 1}: a table of numbers without a `table from:` "
                           f"marker (scripts/check_docs.py says how): | {' | '.join(rows[0][1])} |")
@@ -235,11 +239,12 @@ def run_source(source, binary, root, cache):
     """stdout, stderr and exit status of a table's command, run once per checker run."""
     if source not in cache:
         words = [str(binary) if w == "isolab" else w for w in shlex.split(source)]
-        if words[0].startswith("scripts/"):
+        if words[0].startswith(("scripts/", "benchmarks/")):
             interpreter = "/usr/bin/python3" if words[0].endswith(".py") else "bash"
             words = [interpreter, str(root / words[0]), *words[1:]]
         elif words[0] != str(binary):
-            raise SystemExit(f"`{source}`: a table's command starts with isolab or scripts/")
+            raise SystemExit(f"`{source}`: a table's command starts with isolab, scripts/ or "
+                             f"benchmarks/")
         with tempfile.TemporaryDirectory(prefix="isolab_docs_") as folder:
             link_repository(root, pathlib.Path(folder))
             done = subprocess.run(words, cwd=folder, capture_output=True, text=True)

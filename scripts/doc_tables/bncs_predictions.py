@@ -3,21 +3,19 @@
 identified isolation models (standard library only): `isolab shaketable DATA --model M --predict
 --json` for the BHM2 fit (models/bncs/bncs.yaml), the THM1 assembly and the diagnosed model, with
 each peak's difference from the measured and the NRMSE of the two histories. The measurements are
-not in the repository: they live in ../shared/measured/bncs (docs/bncs.md says where they come
-from), so scripts/check_docs.py runs this with --opt-in only.
+not in the repository (bncs_data.py), so scripts/check_docs.py runs this with --opt-in only.
 
     bncs_predictions.py ISOLAB {lac100,ica50} [DATA_DIR]
 (DATA_DIR: else $ISOLAB_BNCS_DATA, else ../shared/measured/bncs beside the repository)
 """
-import gzip
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from bncs_data import ROOT, unpack_motion
+
 MODELS = ("models/bncs/bncs.yaml", "models/bncs/bncs_thm1.yaml", "models/bncs/bncs_isolation_diagnosed.yaml")
 # the page's first and last headers per motion (LAC100 predicted, ICA50 refitted in-sample)
 HEADERS = {"lac100": ("LAC100", "diagnosed (below)"), "ica50": ("ICA50 (in-sample)", "diagnosed")}
@@ -34,17 +32,10 @@ def main():
     if len(sys.argv) not in (3, 4) or sys.argv[2] not in HEADERS:
         sys.exit(__doc__)
     isolab, motion = os.path.abspath(sys.argv[1]), sys.argv[2]
-    data = (sys.argv[3] if len(sys.argv) == 4 else os.environ.get("ISOLAB_BNCS_DATA")
-            or os.path.join(ROOT, "..", "shared", "measured", "bncs"))
-    packed = os.path.join(data, f"bncs_{motion}.csv.gz")
-    if not os.path.exists(packed):
-        sys.exit(f"{packed}: not there; the BNCS measurements are not in the repository "
-                 f"(docs/bncs.md says where to get them)")
+    data = sys.argv[3] if len(sys.argv) == 4 else None
     reports = []
     with tempfile.TemporaryDirectory(prefix="isolab_bncs_") as folder:
-        csv = os.path.join(folder, f"bncs_{motion}.csv")
-        with gzip.open(packed, "rb") as source, open(csv, "wb") as target:
-            shutil.copyfileobj(source, target)
+        csv = unpack_motion(motion, folder, data)
         for model in MODELS:
             printed = subprocess.run(
                 [isolab, "shaketable", csv, "--model", os.path.join(ROOT, model), "--predict",
