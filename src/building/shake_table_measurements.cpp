@@ -69,6 +69,13 @@ std::vector<int> ParseLevels(const std::string& text) {
   return channels;
 }
 
+// The model's levels as the messages name them.
+std::string ModelLevels(std::size_t levels) {
+  return levels == 1
+             ? "1 level (an SDOF's mass)"
+             : fmt::format("{} levels (the isolation slab and {} floors)", levels, levels - 1);
+}
+
 }  // namespace
 
 LevelMeasurements ReadShakeTableMeasurements(const std::string& path,
@@ -99,14 +106,27 @@ LevelMeasurements ReadShakeTableMeasurements(const std::string& path,
   m.table_acceleration = acceleration(options.table_acceleration);
   std::vector<int> channels;
   if (options.levels == "auto") {
+    // Every level channel of the file, which the model's levels must match: the first of a
+    // larger building's channels would be its upper floors, read as the slab and the floors above.
+    std::size_t in_file = 0;
+    while (data.Has(fmt::format("{}{}", options.acceleration_prefix, in_file + 1))) ++in_file;
+    if (in_file != levels) {
+      const std::string& a = options.acceleration_prefix;
+      const std::string found =
+          in_file == 0   ? fmt::format("no level channel ({}1)", a)
+          : in_file == 1 ? fmt::format("1 level channel ({}1)", a)
+                         : fmt::format("{} level channels ({}1 to {}{})", in_file, a, a, in_file);
+      throw InputError({path}, fmt::format("--levels auto: the file has {} and the model {}; give "
+                                           "--levels with the {} channels to use, slab first, or "
+                                           "a model of the file's levels",
+                                           found, ModelLevels(levels), levels));
+    }
     for (std::size_t k = 1; k <= levels; ++k) channels.push_back(static_cast<int>(k));
   } else {
     channels = ParseLevels(options.levels);
     if (channels.size() != levels) {
-      throw InputError({"command line"},
-                       fmt::format("--levels names {} channels; the model has {} levels (the "
-                                   "isolation slab and {} floors)",
-                                   channels.size(), levels, levels - 1));
+      throw InputError({"command line"}, fmt::format("--levels names {} channels; the model has {}",
+                                                     channels.size(), ModelLevels(levels)));
     }
   }
   std::vector<Signal> a, u;

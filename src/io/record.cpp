@@ -212,6 +212,23 @@ std::string HeaderUnits(const std::string& path, const std::vector<std::string>&
   return units;
 }
 
+// A CSV record's times are read in seconds: a time column in another unit (ms, min) would
+// stretch or shrink the record silently, so it is refused at the header.
+void CheckCsvTimeUnit(const std::string& path, int line, std::string_view header) {
+  const std::optional<UnitsStatement> time = FindCsvUnits(header.substr(0, header.find(',')));
+  if (!time || time->unit.empty()) return;
+  bool seconds = false;
+  try {
+    seconds = UnitSystem("kN", "m", "s").Convert(1.0, time->unit, dimension::kTime) == 1.0;
+  } catch (const std::invalid_argument&) {
+  }
+  if (!seconds) {
+    throw InputError({path, line}, fmt::format("the time column is in '{}': a record's times must "
+                                               "be in seconds (convert them)",
+                                               time->unit));
+  }
+}
+
 // The units the values are in: the header's, or the ones given where the header names none. A
 // header and a given unit that disagree are refused (a gal record read as m/s^2 is 100 times too
 // strong).
@@ -290,6 +307,7 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
       layout->first_data_line = first + 1;
       layout->two_columns = std::count(header.begin(), header.end(), ',') >= 1;
       header_units = HeaderUnits(path, lines, first, first + 1, true);
+      if (layout->two_columns) CheckCsvTimeUnit(path, static_cast<int>(first + 1), header);
     } else {
       std::vector<double> numbers;
       ParseNumbers(path, static_cast<int>(first + 1), lines[first], &numbers);

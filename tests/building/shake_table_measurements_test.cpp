@@ -1,6 +1,7 @@
 // A building's shake-table measurements: the levels ordered slab to roof by how much they move
 // (auto) or as named, the accelerometers' offsets read from the quiet start and removed (or kept
-// with offsets none), and a level list that names a channel twice or the wrong count refused.
+// with offsets none), and a level list that names a channel twice or the wrong count refused, as
+// is a model whose level count is not the file's under auto.
 #include "isolab/building/shake_table_measurements.h"
 
 #include <gtest/gtest.h>
@@ -61,6 +62,29 @@ TEST(ShakeTableMeasurements, RefusesALevelListThatDoesNotFitTheModel) {
       ADD_FAILURE() << levels;
     } catch (const InputError& error) {
       EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+    }
+  }
+}
+
+// With --levels auto the model's levels must be the file's: an SDOF or a one-floor model read
+// only channel 1, the roof here, as its slab, and dropped the rest without a word.
+TEST(ShakeTableMeasurements, AutoLevelsRefuseAModelWithOtherThanTheFilesLevelCount) {
+  const ShakeTableChannels channels;  // levels auto
+  for (const auto& [levels, message] :
+       {std::pair{std::size_t{1},
+                  "the file has 2 level channels (a1 to a2) and the model 1 level "
+                  "(an SDOF's mass)"},
+        std::pair{std::size_t{3},
+                  "the file has 2 level channels (a1 to a2) and the model 3 "
+                  "levels (the isolation slab and 2 floors)"}}) {
+    try {
+      ReadShakeTableMeasurements(WriteTwoLevels(), channels, kSi, levels);
+      ADD_FAILURE() << levels;
+    } catch (const InputError& error) {
+      EXPECT_NE(
+          std::string(error.what()).find("two_levels.csv: --levels auto: " + std::string(message)),
+          std::string::npos)
+          << error.what();
     }
   }
 }

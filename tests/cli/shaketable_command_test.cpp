@@ -471,8 +471,9 @@ TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
   const std::string nan_rows = header + "0,0,0,0,0,0,0,0,0,0,0\n0.01,0,0,nan,0,0,0,0,0,0,0\n";
   const Case cases[] = {
       {"missing.csv",
-       "time_s,table_acceleration_m_s2,table_displacement_m,a1_m_s2\n0,0,0,0\n1,0,0,0\n",
-       "no channel 'd1' (the file has: table_acceleration, table_displacement, a1)"},
+       "time_s,table_acceleration_m_s2,table_displacement_m,a1_m_s2,a2_m_s2,a3_m_s2,a4_m_s2\n"
+       "0,0,0,0,0,0,0\n1,0,0,0,0,0,0\n",
+       "no channel 'd1' (the file has: table_acceleration, table_displacement, a1, a2, a3, a4)"},
       {"no_unit.csv", "time_s,table_acceleration,table_displacement_m\n0,0,0\n",
        "no_unit.csv:1:2: column 'table_acceleration' has no unit"},
       {"twice.csv", "time_s,a1_m_s2,a1 [g]\n0,0,0\n", "twice.csv:1:3: channel 'a1' appears twice"},

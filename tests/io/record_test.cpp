@@ -212,6 +212,23 @@ TEST(ReadRecord, UnitsComeFromTheUnitsStatementOnly) {
   EXPECT_EQ(ReadRecord(DataFile("record_csv_time_and_units.csv")).units, "cm/s^2");
 }
 
+// A CSV record's time column in another unit than seconds is refused at its header: read as
+// seconds, 10 ms samples made a 40 ms record 40 s long.
+TEST(ReadRecord, CsvTimesInAnotherUnitThanSecondsAreRefused) {
+  for (const char* unit : {"ms", "min", "mm"}) {
+    const std::filesystem::path path = testing::OwnTestFile(std::string("times_") + unit + ".csv");
+    std::ofstream(path) << "time (" << unit << "),acc (g)\n0,0\n10,0.1\n20,-0.1\n";
+    const std::string error = ErrorOf(path.string());
+    EXPECT_NE(error.find(path.filename().string() + ":1: the time column is in '" + unit +
+                         "': a record's times must be in seconds"),
+              std::string::npos)
+        << error;
+  }
+  const std::filesystem::path seconds = testing::OwnTestFile("times_s.csv");
+  std::ofstream(seconds) << "time (s),acc (g)\n0,0\n0.01,0.1\n0.02,-0.1\n";
+  EXPECT_DOUBLE_EQ(ReadRecord(seconds.string()).dt, 0.01);
+}
+
 TEST(ReadRecord, DeclaredCountBeyond64BitsIsALocatedError) {
   // It used to be read as -9223372036854775808 points.
   const std::string error = ErrorOf(DataFile("bad_record_npts_overflow.at2"));
