@@ -34,8 +34,15 @@ bool ReadUnitsLine(const std::string& text, int line_number, UnitsLine* units) {
     std::stringstream words(part);
     std::string what, unit;
     words >> what >> unit;
-    if (Lower(what) == "force") units->force = unit;
-    if (Lower(what) == "length") units->length = unit;
+    if (Lower(what) == "force") {
+      units->force = unit;
+    } else if (Lower(what) == "length") {
+      units->length = unit;
+    } else if (Lower(what) == "time") {
+      units->time = unit;
+    } else if (!what.empty()) {
+      units->others.push_back(Trim(part));
+    }
   }
   units->line = line_number;
   return true;
@@ -44,6 +51,26 @@ bool ReadUnitsLine(const std::string& text, int line_number, UnitsLine* units) {
 ResolvedUnits ResolveUnits(const std::string& path, const UnitsLine& line,
                            const std::string& given_force, const std::string& given_length,
                            const std::string& fallback_force, const std::string& fallback_length) {
+  if (!line.others.empty()) {
+    throw InputError({path, line.line},
+                     fmt::format("units: '{}' is not a part the line names (expected force and "
+                                 "length, e.g. '# units: force kN, length mm')",
+                                 line.others.front()));
+  }
+  if (!line.time.empty() && !SameUnit(line.time, "s", dimension::kTime)) {
+    throw InputError({path, line.line},
+                     fmt::format("units: time {}: the file's times are read in seconds (convert "
+                                 "them, and say 'time s' or nothing)",
+                                 line.time));
+  }
+  for (const auto& [declared, dimension] :
+       {std::pair{line.force, dimension::kForce}, std::pair{line.length, dimension::kLength}}) {
+    try {
+      if (!declared.empty()) UnitSystem("kN", "mm").Convert(1.0, declared, dimension);
+    } catch (const std::invalid_argument& error) {
+      throw InputError({path, line.line}, fmt::format("units: {}", error.what()));
+    }
+  }
   for (const auto& [declared, given, what, dimension] :
        {std::tuple{line.force, given_force, "force", dimension::kForce},
         std::tuple{line.length, given_length, "length", dimension::kLength}}) {

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace isolab::io {
 
 struct UnitsLine {
-  std::string force, length;  // the parts the line names; empty where it names none
-  int line = 0;               // where it is; 0: the file has none
+  std::string force, length, time;  // the parts the line names; empty where it names none
+  std::vector<std::string> others;  // parts that are none of these, which ResolveUnits refuses
+  int line = 0;                     // where it is; 0: the file has none
 };
 
 // Reads `text` (a comment line, '#' included) as a units line: true when it is one (the word
@@ -22,8 +24,9 @@ struct ResolvedUnits {
   std::string force, length;
 };
 
-// The units of `path`'s values. Throws InputError at the line when a given unit (non-empty) is
-// not the one the line names for the same part.
+// The units of `path`'s values. Throws InputError at the line when it names a unit isolab does
+// not know, a time unit other than seconds (the files' times are read in s), a part other than
+// force, length and time, or, for a given unit (non-empty), another unit than the given one.
 ResolvedUnits ResolveUnits(const std::string& path, const UnitsLine& line,
                            const std::string& given_force, const std::string& given_length,
                            const std::string& fallback_force, const std::string& fallback_length);

@@ -315,6 +315,41 @@ TEST(FitCommand, DataWithoutUnitsAreRefusedUnlessTheCommandLineGivesThem) {
   EXPECT_EQ(RunIsolab(with_line + " --force-unit kN --length-unit mm").exit_code, 0);
 }
 
+// The units line names force and length only, the times being seconds: a time unit other than
+// seconds (its velocities would be off), a part it does not know and a unit isolab does not know
+// are refused at the line itself, and nothing is written.
+TEST(FitCommand, AUnitsLineNamingAnotherTimeUnitOrAnUnknownPartIsRefusedAtItsLine) {
+  std::ifstream in(Data("linear_spring.csv"));
+  std::string first, rest;
+  std::getline(in, first);
+  rest.assign(std::istreambuf_iterator<char>(in), {});
+  const auto output = TemporaryFile("units_line.yaml");
+  for (const auto& [line, message] :
+       {std::pair{"# units: force kN, length mm, time fortnight",
+                  "units: time fortnight: the file's times are read in seconds"},
+        std::pair{"# units: force kN, length mm, time ms",
+                  "units: time ms: the file's times are read in seconds"},
+        std::pair{"# units: force kN, length mm, mass t",
+                  "units: 'mass t' is not a part the line names"},
+        std::pair{"# units: force kN, length furlong", "units: unknown unit 'furlong'"}}) {
+    const auto data = TemporaryFile("units_line.csv");
+    std::ofstream(data) << line << "\n" << rest;
+    const auto run = RunIsolab("fit " + data.string() + " --model " + Data("three_laws_spec.yaml") +
+                                   " --budget 300 -q -o " + output.string(),
+                               true);
+    EXPECT_EQ(run.exit_code, 2) << line << ": " << run.output;
+    EXPECT_NE(run.output.find("units_line.csv:1: " + std::string(message)), std::string::npos)
+        << line << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(output)) << line;
+  }
+  const auto seconds = TemporaryFile("units_line_seconds.csv");
+  std::ofstream(seconds) << "# units: force kN, length mm, time s\n" << rest;
+  EXPECT_EQ(RunIsolab("fit " + seconds.string() + " --model " + Data("three_laws_spec.yaml") +
+                      " --budget 300 -q -o " + output.string())
+                .exit_code,
+            0);
+}
+
 TEST(FitCommand, BuildingOptionsAreRefusedToCyclicTests) {
   // --offsets reads shake-table accelerometers and --global-budget splits a building fit's
   // search: a cyclic fit has neither, and would ignore them.
