@@ -413,6 +413,11 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
                      "axial_load: the run is on a fixed base (--fixed-base, fixed_base): no "
                      "bearing carries the weight; leave one of the two out");
   }
+  if (overrides.fixed_base && overrides.trial_displacement) {
+    throw InputError({"--trial-displacement (trial_displacement)"},
+                     "sets where the isolated periods are read, and the run is on a fixed base "
+                     "(--fixed-base, fixed_base), which has none: leave one of the two out");
+  }
   structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
   // The superstructure on a fixed base, for its periods: the run's own structure, or built once
   // more (an SDOF and a slab on isolators have none).

@@ -309,6 +309,23 @@ std::vector<int> SelectedLevels(const model::OutputSelection& selection,
   return selected;
 }
 
+void CheckQuantitiesExist(const model::OutputSelection& selection, const structure::Layout& layout,
+                          const std::string& key) {
+  if (selection.summary_only) return;
+  for (const std::string& name : selection.quantities) {
+    if (name == "isolator" && !layout.isolated()) {
+      throw InputError({key},
+                       "isolator: the structure has no isolation layer in this run (a "
+                       "fixed base): there is no isolator history to write");
+    }
+    if (name == "story" && layout.stories.empty()) {
+      throw InputError({key},
+                       "story: the structure has no stories (an SDOF): there is no story "
+                       "history to write");
+    }
+  }
+}
+
 std::vector<std::string> RecordedQuantities(const model::OutputSelection& selection) {
   std::vector<std::string> quantities;
   for (const std::string_view name : model::kQuantityNames) {

@@ -78,6 +78,7 @@ void SolveOptions::Validate() const {
 Summary Solve(const SolveOptions& options, const Problem& problem,
               std::span<integrators::ResponseObserver* const> observers) {
   options.Validate();
+  CheckQuantitiesExist(options.output, problem.layout, "output.quantities");
   if (options.analysis.integrator == model::AnalysisSection::Integrator::kIda) {
     if (!problem.structure.axial_loads().empty() || !problem.excitation.vertical.values.empty()) {
       throw InputError({"integrator ida"},

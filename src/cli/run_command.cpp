@@ -31,6 +31,17 @@ namespace {
 model::OutputSelection ChooseOutput(const model::ModelFile& model, const RunOptions& options,
                                     const analysis::Problem& problem) {
   model::OutputSelection selection = model.output;
+  if (options.summary_only) {
+    for (const auto& [given, option] : {std::pair{options.every.has_value(), "--every"},
+                                        std::pair{!options.quantities.empty(), "--quantities"},
+                                        std::pair{!options.levels.empty(), "--levels"}}) {
+      if (given) {
+        throw InputError({option},
+                         "chooses histories, and --summary-only writes none: give "
+                         "one or the other");
+      }
+    }
+  }
   if (options.every) selection.every = *options.every;
   if (options.summary_only) selection.summary_only = true;
   if (!options.quantities.empty()) {
@@ -57,6 +68,29 @@ model::OutputSelection ChooseOutput(const model::ModelFile& model, const RunOpti
   }
   // --fixed-base takes the base away: a level may exist in the model and not in this run.
   analysis::SelectedLevels(selection, problem.layout, levels_key);
+  analysis::CheckQuantitiesExist(selection, problem.layout,
+                                 options.quantities.empty() ? "output.quantities" : "--quantities");
+  if (options.plot) {
+    // plot_result.py draws every level's motion, the isolator's loop and the energies: a run that
+    // leaves one out would be written, then fail to plot.
+    const bool every_level = selection.levels.empty();
+    if (selection.summary_only || !every_level) {
+      throw InputError({"--plot"}, fmt::format("the plots need every level's histories: leave "
+                                               "out {}",
+                                               selection.summary_only ? "--summary-only (or "
+                                                                        "output.summary_only)"
+                                                                      : levels_key));
+    }
+    for (const char* needed :
+         {"displacement", "acceleration", "absolute_acceleration", "energy", "isolator"}) {
+      const bool applies = problem.layout.isolated() || std::string_view(needed) != "isolator";
+      if (applies && !selection.Records(needed)) {
+        throw InputError({"--plot"}, fmt::format("the plots need the '{}' histories: add them to "
+                                                 "the quantities, or leave the quantities out",
+                                                 needed));
+      }
+    }
+  }
   return selection;
 }
 
@@ -226,6 +260,10 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     CheckPlotScript("plot_result.py");
   }
   if (options.samples > 0) analysis::CheckRunBand(model);
+  if (options.seed && options.samples == 0) {
+    throw InputError({"--seed"}, "seeds the parameter sets --samples draws: give --samples");
+  }
+  const unsigned seed = options.seed.value_or(1);
   const analysis::RunOverrides overrides = ChooseOverrides(model, options);
   const analysis::Problem problem = analysis::Prepare(model, overrides);
   analysis::SolveOptions solve;
@@ -245,16 +283,15 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
       fmt::print(stderr, "isolab run: {} parameter sets drawn from the model's uncertainty\n",
                  options.samples);
     }
-    band =
-        analysis::PredictRunBand(model, overrides, solve.analysis, options.samples, options.seed);
+    band = analysis::PredictRunBand(model, overrides, solve.analysis, options.samples, seed);
   }
   if (options.json) {
     nlohmann::json json = analysis::RunReport(problem, solve.analysis, summary);
-    if (band) json["band"] = analysis::RunBandJson(*band, options.seed);
+    if (band) json["band"] = analysis::RunBandJson(*band, seed);
     out << json.dump(2) << "\n";
   } else {
     analysis::PrintSummary(problem, solve.analysis, summary, out);
-    if (band) analysis::PrintRunBand(*band, options.seed, model.units, out);
+    if (band) analysis::PrintRunBand(*band, seed, model.units, out);
   }
   // After the run: what the response itself shows (the model's warnings were printed before).
   PrintWarnings({summary.warnings.begin() + static_cast<long>(problem.summary.warnings.size()),

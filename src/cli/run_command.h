@@ -45,7 +45,7 @@ struct RunOptions {
   std::optional<double> rtol;  // IDA relative tolerance, overriding analysis.ida.rtol
   std::optional<double> atol;  // IDA absolute tolerance, overriding analysis.ida.atol
   int samples = 0;             // parameter sets drawn from a fitted model's uncertainty; 0: no band
-  unsigned seed = 1;           // of the drawn sets
+  std::optional<unsigned> seed;  // of the drawn sets (default 1); only with samples
   bool json = false;
   bool quiet = false;               // -q: no preamble (record, model, grid) before the peaks
   std::optional<std::string> plot;  // --plot[=DIR]: PNGs by plot_result.py (default DIR: beside

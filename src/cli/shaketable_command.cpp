@@ -68,9 +68,12 @@ void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
                    "(isolab fit --building) for a 5-95 % band on the prediction")
       ->check(CLI::Range(2, 100000));
   AddSeedOption(command, &options.seed, "Seed of the drawn parameter sets (--samples)");
-  command->add_option("--results", options.results, "HDF5 results of the prediction");
+  command->add_option("--results", options.results,
+                      "With --predict: HDF5 results of the prediction (default: <data file "
+                      "stem>.predicted.h5 in the working folder)");
   command->add_option("--comparison", options.comparison,
-                      "CSV of measured and predicted histories (for the overlay plot)");
+                      "With --predict: CSV of measured and predicted histories (for the overlay "
+                      "plot)");
   AddJsonFlag(command, &options.json, "Print the summary as JSON");
   AddQuietFlag(command, &options.quiet);
 }
@@ -143,7 +146,7 @@ nlohmann::json ShakeTableJson(const ShakeTableOptions& options, const UnitSystem
                     {"refused", band->refused},
                     {"contents", band->contents},
                     {"widening", band->widening},
-                    {"seed", options.seed},
+                    {"seed", options.seed.value_or(1)},
                     {"peak_isolator_displacement", spread(band->peak_isolator_displacement)},
                     {"peak_roof_acceleration", spread(band->peak_roof_acceleration)},
                     {"nrmse_isolator_displacement", spread(band->nrmse_isolator_displacement)},
@@ -202,7 +205,7 @@ void PrintShakeTable(const ShakeTableOptions& options, const UnitSystem& units,
           out,
           "\n{} parameter sets drawn from the model's uncertainty ({} left out: beyond a "
           "law's rules), seed {}:\n\n| quantity | 5 % | median | 95 % |\n|---|---|---|---|\n",
-          band->samples, band->refused, options.seed);
+          band->samples, band->refused, options.seed.value_or(1));
       row("peak isolator displacement", band->peak_isolator_displacement);
       row("peak roof absolute acceleration", band->peak_roof_acceleration);
       row("NRMSE isolator displacement", band->nrmse_isolator_displacement);
@@ -216,8 +219,16 @@ void PrintShakeTable(const ShakeTableOptions& options, const UnitSystem& units,
 
 void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
   const model::ModelFile model = model::LoadModelFile(options.model);
-  if (options.samples > 0 && !options.predict) {
-    throw InputError({"command line"}, "--samples draws a band on the prediction: give --predict");
+  // Each option of the prediction is refused without it, as it would be ignored.
+  for (const auto& [given, option] : {std::pair{options.samples > 0, "--samples"},
+                                      std::pair{!options.results.empty(), "--results"},
+                                      std::pair{!options.comparison.empty(), "--comparison"}}) {
+    if (given && !options.predict) {
+      throw InputError({option}, "belongs to the prediction: give --predict");
+    }
+  }
+  if (options.seed && options.samples == 0) {
+    throw InputError({"--seed"}, "seeds the parameter sets --samples draws: give --samples");
   }
   const std::string results_path =
       !options.predict ? std::string()
@@ -280,7 +291,8 @@ void RunShakeTableCommand(const ShakeTableOptions& options, std::ostream& out) {
       fmt::print(stderr, "  {} parameter sets drawn from the model's uncertainty\n",
                  options.samples);
     }
-    o.band = building::PredictBand(model, {isolator.name, m}, options.samples, options.seed);
+    o.band =
+        building::PredictBand(model, {isolator.name, m}, options.samples, options.seed.value_or(1));
   }
   double total_mass = 0.0;
   for (const double mass : masses) total_mass += mass;

@@ -29,8 +29,8 @@ struct ShakeTableOptions {
   std::string isolator;                   // isolator history CSV (cyclic-test format)
   std::string record;                     // table acceleration record CSV
   bool predict = false;
-  int samples = 0;  // parameter sets drawn for a band on the prediction; 0: none
-  unsigned seed = 1;
+  int samples = 0;               // parameter sets drawn for a band on the prediction; 0: none
+  std::optional<unsigned> seed;  // of the drawn sets (default 1); only with samples
   std::string results;     // HDF5 results of the prediction (default <data stem>.predicted.h5)
   std::string comparison;  // CSV of measured and predicted histories
   bool json = false;

@@ -147,6 +147,10 @@ TEST_P(RunOptions, EachAnalysisOptionIsAppliedOrRefused) {
   EXPECT_LT(fixed["peaks"]["base_shear"]["value"].get<double>(),
             10 * base["peaks"]["base_shear"]["value"].get<double>());
   ASSERT_TRUE(base.contains("isolators"));
+  // A fixed base has no isolated period to read at a trial displacement.
+  ExpectRefused(run + "--fixed-base --trial-displacement 50", "--trial-displacement");
+  // The seed of the parameter sets --samples draws, without them.
+  ExpectRefused(run + "--seed 3", "--seed");
 
   EXPECT_EQ(base["integrator"].get<std::string>().rfind("newmark", 0), 0u);
   const nlohmann::json ida = Applied(run + "--integrator ida --rtol 1e-5 --atol 1e-4");
@@ -177,6 +181,16 @@ TEST_P(RunOptions, EachOutputOptionIsAppliedOrRefused) {
   EXPECT_NE(chosen.find("displacement"), std::string::npos) << chosen;
   ExpectRefused(run + "-o " + csv.string() + " --quantities bogus", "--quantities");
   ExpectRefused(run + "-o " + csv.string() + " --levels 7", "--levels");
+  // Histories the run has not: an isolator's on a fixed base, stories' on an SDOF.
+  ExpectRefused(run + "-o " + csv.string() + " --fixed-base --quantities isolator", "--quantities");
+  ExpectRefused("run " + kRoot + "/models/sdof/table7_thm1_hard.yaml -q -o " + csv.string() +
+                    " --quantities story",
+                "--quantities");
+  // Options that choose histories, beside --summary-only, which writes none.
+  for (const std::string option : {"--every 7", "--quantities energy", "--levels roof"}) {
+    ExpectRefused(run + "-o " + csv.string() + " --summary-only " + option,
+                  option.substr(0, option.find(' ')));
+  }
 
   const fs::path full = folder / "full.h5", summary = folder / "summary.h5";
   Applied(run + "-o " + full.string());
@@ -189,7 +203,8 @@ TEST_P(RunOptions, EachOutputOptionIsAppliedOrRefused) {
   EXPECT_EQ(RunIsolab(text + " -q").output.find("fixed-base periods"), std::string::npos);
 }
 
-// --plot draws the run; what each figure shows is tests/cli/plot_script_test.cpp's.
+// --plot draws the run (what each figure shows is tests/cli/plot_script_test.cpp's), and is
+// refused with a selection that leaves out histories the plots read.
 TEST_P(RunOptions, PlotIsApplied) {
   const Kind& kind = GetParam();
   const fs::path folder = Folder(std::string("run_plot_") + kind.name);
@@ -198,6 +213,13 @@ TEST_P(RunOptions, PlotIsApplied) {
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
   EXPECT_TRUE(fs::exists(folder / "plots" / "r_histories.png"));
   EXPECT_EQ(fs::exists(folder / "plots" / "r_overview.png"), true);
+  // Without the histories the plots read, refused before the run writes anything.
+  for (const std::string option : {"--summary-only", "--quantities energy", "--levels roof"}) {
+    const fs::path results = folder / "left_out.h5";
+    ExpectRefused("run " + kind.model + " -q -o " + results.string() + " --plot " + option,
+                  "--plot");
+    EXPECT_FALSE(fs::exists(results)) << option;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, RunOptions, ::testing::ValuesIn(kKinds),

@@ -418,6 +418,27 @@ TEST(ShakeTableCommand, TheIdentifiedBncsBuildingPredictsTheRoofBetterThanItsSta
   EXPECT_EQ(identified["band"]["samples"].get<int>() + identified["band"]["refused"].get<int>(), 6);
 }
 
+// The prediction's options without --predict, and --seed without --samples, would do nothing:
+// each is refused by name, and nothing is written.
+TEST(ShakeTableCommand, OptionsOfThePredictionAreRefusedWithoutIt) {
+  const std::string data =
+      std::string(ISOLAB_TEST_DATA_DIR) + "/cli/data/bncs/bncs_ica50_excerpt.csv";
+  const std::string command =
+      "shaketable " + data + " --model " + kSource + "/models/bncs/bncs_diagnosed.yaml -q ";
+  const auto written = Scratch("written");
+  for (const auto& [options, option] :
+       {std::pair{" --comparison " + written.string(), "--comparison"},
+        std::pair{" --results " + written.string(), "--results"},
+        std::pair{std::string(" --samples 4"), "--samples"},
+        std::pair{" --predict --results " + written.string() + " --seed 5", "--seed"}}) {
+    const auto run = RunIsolab(command + options, true);
+    EXPECT_EQ(run.exit_code, 2) << options << ": " << run.output;
+    EXPECT_NE(run.output.find(std::string("isolab: ") + option + ": "), std::string::npos)
+        << options << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(written)) << options;
+  }
+}
+
 // The rows from `row` on shifted in time by `shift` seconds.
 std::string Retimed(const std::string& rows, int row, double shift) {
   std::istringstream in(rows);

@@ -32,6 +32,12 @@ struct Series {
 std::vector<int> SelectedLevels(const model::OutputSelection& selection,
                                 const structure::Layout& layout, const std::string& key);
 
+// Throws InputError({key}, ...) for a quantity the selection names that the structure cannot
+// record: `isolator` without an isolation layer (a fixed base), `story` without stories (an SDOF).
+// Asked for, they would leave the file without the histories its attributes name.
+void CheckQuantitiesExist(const model::OutputSelection& selection, const structure::Layout& layout,
+                          const std::string& key);
+
 // What a selection writes, for the files' description of it: the quantities' names and the
 // selected levels' names (both empty when it is summary-only).
 std::vector<std::string> RecordedQuantities(const model::OutputSelection& selection);
