@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -118,6 +119,17 @@ FitSpec LoadFitSpec(const std::string& path) {
       component.start[name] = ReadCoordinate(reader, node, p, name, spec.units);
       RequireInDomain(reader, node, p, name, component.start[name]);
     });
+    // A fixed coordinate is not searched: bounds or a start beside it would be dropped silently.
+    for (const auto& [name, value] : component.fixed) {
+      for (const char* other : {"bounds", "start"}) {
+        if (entry[other] && entry[other][name]) {
+          reader.Fail(entry["fixed"][name], at + ".fixed." + name,
+                      fmt::format("{:g} fixes it, and {}.{} is given too, which a fixed "
+                                  "coordinate does not use: give one or the other",
+                                  value, other, name));
+        }
+      }
+    }
     // A start must lie within its bounds (the fit would clamp it silently).
     for (const auto& [name, start] : component.start) {
       const auto range = component.ranges.find(name);
@@ -132,6 +144,17 @@ FitSpec LoadFitSpec(const std::string& path) {
     for (int k = 0; k < count; ++k) {
       component.name = !base.empty() ? (count > 1 ? fmt::format("{}{}", base, k + 1) : base)
                                      : fmt::format("c{}", spec.components.size() + 1);
+      // The fitted model names its components by these: two alike would be refused only there,
+      // after the whole fit.
+      const auto same =
+          std::find_if(spec.components.begin(), spec.components.end(),
+                       [&](const ComponentSpec& c) { return c.name == component.name; });
+      if (same != spec.components.end()) {
+        reader.Fail(entry["name"] ? entry["name"] : entry, at + ".name",
+                    fmt::format("'{}' names component {} already (names are each component's "
+                                "own; with count: N, NAME1 to NAMEN)",
+                                component.name, same - spec.components.begin() + 1));
+      }
       spec.components.push_back(component);
     }
   }

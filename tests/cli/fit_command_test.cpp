@@ -435,6 +435,16 @@ TEST(FitCommand, BadSpecificationsAreLocatedBeforeTheFit) {
        "spec.yaml:3:42: components[0].fixed.loss: loss = 1 (must be in [0, 1))"},
       {"{type: elastoplastic, count: 999999999}",
        "spec.yaml:3:34: components[0].count: 999999999 (must be 1 to 100"},
+      // A fixed coordinate's bounds or start would be dropped; a name used twice was refused
+      // only after the whole fit, as if the data had asked for it.
+      {"{type: elastoplastic, fixed: {uy: 8}, bounds: {uy: [1, 3]}}",
+       "spec.yaml:3:39: components[0].fixed.uy: 8 fixes it, and bounds.uy is given too"},
+      {"{type: elastoplastic, fixed: {uy: 8}, start: {uy: 3}}",
+       "spec.yaml:3:39: components[0].fixed.uy: 8 fixes it, and start.uy is given too"},
+      {"{type: bhm2, name: a}\n  - {type: elastoplastic, name: a}",
+       "spec.yaml:4:33: components[1].name: 'a' names component 1 already"},
+      {"{type: bhm2, count: 2, name: a}\n  - {type: elastoplastic, name: a1}",
+       "spec.yaml:4:33: components[1].name: 'a1' names component 1 already"},
   };
   const auto output = isolab::testing::OwnTestFile("bad_spec.fitted.yaml");
   for (const Case& c : cases) {
