@@ -60,6 +60,20 @@ std::vector<BuildingMotion> ReadForceDriven(const BuildingData& data, const mode
   return motions;
 }
 
+// The model's value of a parameter the specification names: the name is the model's to check,
+// and a name it does not have is said at the specification's line.
+double ModelValueAt(const model::ModelFile& model, const std::string& name,
+                    const SourceLocation& where, const std::string& at) {
+  try {
+    return analysis::ParameterValue(model, name);
+  } catch (const InputError& error) {
+    std::string reason = error.what();
+    const std::string prefix = error.location().Describe() + ": ";
+    if (reason.rfind(prefix, 0) == 0) reason.erase(0, prefix.size());
+    throw InputError(where, fmt::format("{}.name: {}", at, reason));
+  }
+}
+
 }  // namespace
 
 BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingData& data) {
@@ -91,23 +105,15 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
     inputs.files.push_back(included);
   }
   BuildingFitSpec& spec = inputs.spec;
-  for (const model::BuildingFitParameterEntry& entry : file.parameters) {
+  for (std::size_t i = 0; i < file.parameters.size(); ++i) {
+    const model::BuildingFitParameterEntry& entry = file.parameters[i];
+    ModelValueAt(inputs.model, entry.name, entry.where, fmt::format("parameters[{}]", i));
     spec.parameters.push_back({entry.name, entry.low, entry.high, entry.start});
   }
   for (std::size_t i = 0; i < file.priors.size(); ++i) {
     const model::BuildingFitPriorEntry& entry = file.priors[i];
-    // The name and, where no value is given, the model's value are the model's to check; said at
-    // the specification's line.
     const std::string at = fmt::format("priors[{}]", i);
-    double value = 0.0;
-    try {
-      value = analysis::ParameterValue(inputs.model, entry.name);
-    } catch (const InputError& error) {
-      std::string reason = error.what();
-      const std::string prefix = error.location().Describe() + ": ";
-      if (reason.rfind(prefix, 0) == 0) reason.erase(0, prefix.size());
-      throw InputError(entry.where, fmt::format("{}.name: {}", at, reason));
-    }
+    const double value = ModelValueAt(inputs.model, entry.name, entry.where, at);
     if (!entry.value && !(value > 0.0)) {
       throw InputError(entry.where,
                        fmt::format("{}: the model's {} is {:g}; a prior is drawn in ln p, so "
@@ -116,8 +122,14 @@ BuildingFitInputs LoadBuildingFit(const std::string& spec_path, const BuildingDa
     }
     spec.priors.push_back({entry.name, entry.value, entry.sigma, entry.source});
   }
-  for (const std::string& channel : file.channels) {
-    spec.channels.push_back(ParseChannel(channel, file.path));
+  const std::size_t levels = LevelMasses(inputs.model).size();
+  for (std::size_t i = 0; i < file.channels.size(); ++i) {
+    spec.channels.push_back(ParseChannel(file.channels[i], file.channel_where[i]));
+    if (std::size_t(spec.channels.back().level) > levels) {
+      throw InputError(file.channel_where[i],
+                       fmt::format("channels[{}]: {}: the model ({}) has {} levels", i,
+                                   file.channels[i], file.model, levels));
+    }
   }
   // What a force-driven test measures: the displacement where the force acts.
   if (file.force_driven && spec.channels.empty()) {
@@ -189,6 +201,25 @@ void CheckAgainstMotions(const BuildingFitInputs& inputs,
 
 std::vector<BuildingMotion> ReadBuildingMotions(BuildingFitInputs* inputs,
                                                 const BuildingData& data) {
+  // A motion given twice counts its data twice, and a held-out motion would be the one fitted;
+  // two files of one name would be two motions the reports cannot tell apart.
+  for (std::size_t j = 0; j < data.data.size(); ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      const std::filesystem::path a(data.data[i]), b(data.data[j]);
+      std::error_code error;
+      if (std::filesystem::equivalent(a, b, error)) {
+        throw InputError({data.data[j]}, fmt::format("given twice (also as {}): each motion is "
+                                                     "fitted once",
+                                                     data.data[i]));
+      }
+      if (a.stem() == b.stem()) {
+        throw InputError({data.data[j]}, fmt::format("two motions named '{}' ({} and this one): "
+                                                     "the reports name each motion by its file's "
+                                                     "name; rename one",
+                                                     a.stem().string(), data.data[i]));
+      }
+    }
+  }
   const model::ModelFile& model = inputs->model;
   std::vector<BuildingMotion> motions;
   if (inputs->file.force_driven) {

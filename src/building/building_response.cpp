@@ -91,7 +91,7 @@ std::string BuildingChannel::Name() const {
   return fmt::format("{}{}", kind == Kind::kDisplacement ? 'd' : 'a', level);
 }
 
-BuildingChannel ParseChannel(const std::string& text, const std::string& given_by) {
+BuildingChannel ParseChannel(const std::string& text, const SourceLocation& where) {
   BuildingChannel channel;
   int level = 0;
   std::size_t used = 0;
@@ -103,10 +103,10 @@ BuildingChannel ParseChannel(const std::string& text, const std::string& given_b
     }
   }
   if (used == 0 || used != text.size() - 1 || level < 1) {
-    throw InputError({given_by}, fmt::format("channel '{}': expected d<level> (displacement "
-                                             "relative to the table) or a<level> (absolute "
-                                             "acceleration), level 1 the isolation slab",
-                                             text));
+    throw InputError(where, fmt::format("channel '{}': expected d<level> (displacement relative "
+                                        "to the table) or a<level> (absolute acceleration), "
+                                        "level 1 the isolation slab",
+                                        text));
   }
   channel.kind =
       text[0] == 'd' ? BuildingChannel::Kind::kDisplacement : BuildingChannel::Kind::kAcceleration;

@@ -36,6 +36,7 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
     const std::string at = IndexPath("parameters", i);
     const YAML::Node entry = parameters[i];
     BuildingFitParameterEntry parameter;
+    parameter.where = reader.Locate(entry);
     if (entry.IsScalar()) {
       parameter.name = reader.ReadString(entry, at);
     } else {
@@ -77,6 +78,7 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
     reader.RequireSequence(channels, "channels");
     for (std::size_t i = 0; i < channels.size(); ++i) {
       spec.channels.push_back(reader.ReadString(channels[i], IndexPath("channels", i)));
+      spec.channel_where.push_back(reader.Locate(channels[i]));
     }
   }
   if (const YAML::Node band = root["band"]) {

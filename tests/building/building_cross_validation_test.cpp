@@ -34,7 +34,7 @@ std::vector<BuildingMotion> TwoMotions(const model::ModelFile& truth, double noi
 BuildingFitSpec Spec(const std::vector<const char*>& names) {
   BuildingFitSpec spec;
   for (const char* name : names) spec.parameters.push_back({name});
-  spec.channels = {ParseChannel("d1", "test"), ParseChannel("a4", "test")};
+  spec.channels = {ParseChannel("d1", {"test"}), ParseChannel("a4", {"test"})};
   return spec;
 }
 

@@ -96,7 +96,7 @@ TEST(BuildingDiagnosis, RefusesMotionsWithoutEveryLevelsAcceleration) {
   std::vector<BuildingMotion> motions = Measured(Model(BuildingText(kBilinear)));
   motions[0].measured.acceleration[2].clear();
   BuildingFitSpec spec = Spec();
-  spec.channels = {ParseChannel("d1", "test"), ParseChannel("a4", "test")};
+  spec.channels = {ParseChannel("d1", {"test"}), ParseChannel("a4", {"test"})};
   EXPECT_THROW(
       DiagnoseBuilding(Model(BuildingText(kBilinear)), motions, spec, Options(100), Settings()),
       InputError);

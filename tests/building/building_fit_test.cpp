@@ -36,7 +36,7 @@ TEST(BuildingFit, RecoversHiddenParametersWithinTheirUncertaintyFromTwoNoisyChan
                            "stories.stiffness", "damping.ratio"}) {
     spec.parameters.push_back({name});
   }
-  spec.channels = {ParseChannel("d1", "test"), ParseChannel("a4", "test")};
+  spec.channels = {ParseChannel("d1", {"test"}), ParseChannel("a4", {"test"})};
   // Budget enough for the convergence stop: the estimates are compared with their uncertainty,
   // so the search must have found the optimum, not come near it.
   const BuildingFitResult fit = FitBuilding(start, motions, spec, Options(12000));
@@ -84,7 +84,7 @@ TEST(BuildingFit, ReportsTwoSpringsInParallelAsNotSeparatelyIdentified) {
   for (const char* name : {"isolation.a.k", "isolation.b.k", "stories.stiffness"}) {
     spec.parameters.push_back({name});
   }
-  spec.channels = {ParseChannel("d1", "test")};
+  spec.channels = {ParseChannel("d1", {"test"})};
   const BuildingFitResult fit =
       FitBuilding(Model(BuildingText(layer)), motions, spec, Options(800));
   ASSERT_EQ(fit.not_separated.size(), 1u);
@@ -109,7 +109,7 @@ TEST(BuildingFit, ABandLeavesOutADisturbanceAboveIt) {
   }
   BuildingFitSpec spec;
   spec.parameters = {{"isolation.s.k"}, {"stories.stiffness"}};
-  spec.channels = {ParseChannel("a4", "test")};
+  spec.channels = {ParseChannel("a4", {"test"})};
   const model::ModelFile start = Model(BuildingText(
       "{name: s, type: linear_spring, k: 3.0}, {name: c, type: dashpot, c: 0.5}", 40.0));
   spec.band_high = 6.0;
@@ -165,8 +165,8 @@ TEST(BuildingFit, MassParametersKeepTheTotalAndNamesAreChecked) {
   EXPECT_THROW(analysis::ParameterValue(model, "mass"), InputError);
   EXPECT_THROW(analysis::ParameterValue(model, "damping"), InputError);
   EXPECT_THROW(analysis::ParameterValue(model, "damping.ratio.9"), InputError);
-  EXPECT_THROW(ParseChannel("x1", "test"), InputError);
-  EXPECT_THROW(ParseChannel("d0", "test"), InputError);
+  EXPECT_THROW(ParseChannel("x1", {"test"}), InputError);
+  EXPECT_THROW(ParseChannel("d0", {"test"}), InputError);
 }
 
 TEST(BuildingFit, TheFittedModelFileReadsBackWithItsValuesAndUncertainty) {

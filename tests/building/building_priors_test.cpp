@@ -45,7 +45,7 @@ TEST(BuildingPriors, ThePriorCarriesTheStiffeningTheDataNeverReached) {
               PeakAbs(motions[1].measured.displacement[0]));
   BuildingFitSpec spec;
   spec.parameters = {{"isolation.iso.k1"}, {"isolation.iso.k0"}};
-  spec.channels = {ParseChannel("d1", "test"), ParseChannel("a4", "test")};
+  spec.channels = {ParseChannel("d1", {"test"}), ParseChannel("a4", {"test"})};
   spec.priors = {{"isolation.stop.k2", std::nullopt, 0.2, "design data: the stop's stiffness"},
                  {"isolation.stop.uyh", 100.0, 0.1, "design data: the stop's gap"}};
   const model::ModelFile start =

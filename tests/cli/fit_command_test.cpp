@@ -519,6 +519,13 @@ TEST(FitCommand, AForceDrivenTestIsFittedAsTheBenchmarkStatesIt) {
        "priors[0]: missing key 'source'"},
       {"priors:\n  - {name: isolation.z.no_such, sigma: 0.1, source: x}\n", "",
        "force_spec.yaml:8:12: priors[0].name: parameter 'isolation.z.no_such'"},
+      // What only the model can check is said at the specification's line, not the model's.
+      {"  - isolation.no_such.k\n", "",
+       "force_spec.yaml:7:5: parameters[2].name: parameter 'isolation.no_such.k'"},
+      {"channels: [d9]\n", "", "force_spec.yaml:7:12: channels[0]: d9: the model"},
+      {"channels: [x9]\n", "", "force_spec.yaml:7:12: channel 'x9': expected d<level>"},
+      // One motion twice: its data counted twice, or held out and fitted at once.
+      {"", data.string(), "given twice (also as " + data.string() + ")"},
   };
   for (const Case& c : cases) {
     const auto refused = TemporaryFile("refused.yaml");

@@ -23,8 +23,8 @@ struct BuildingChannel {
   // "d1" (the slab's displacement relative to the table), "a6" (level 6's absolute acceleration).
   std::string Name() const;
 };
-// Parses "d1", "a6"; throws InputError (naming `given_by`) otherwise.
-BuildingChannel ParseChannel(const std::string& text, const std::string& given_by);
+// Parses "d1", "a6"; throws InputError at `where` (the channel's place in its file) otherwise.
+BuildingChannel ParseChannel(const std::string& text, const SourceLocation& where);
 
 // A model's responses to the motions at the measured channels: per motion, per channel, at the
 // measured samples (the model integrated with the measured step).

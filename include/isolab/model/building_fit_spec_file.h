@@ -26,6 +26,7 @@ namespace isolab::model {
 struct BuildingFitParameterEntry {
   std::string name;
   std::optional<double> low{}, high{}, start{};
+  SourceLocation where;  // the entry's line, for what only the model can check (its name)
 };
 
 // A parameter the data cannot fix, held at a value from outside them (model_file.h's
@@ -44,6 +45,7 @@ struct BuildingFitSpecFile {
   std::vector<BuildingFitParameterEntry> parameters;
   std::vector<BuildingFitPriorEntry> priors;
   std::vector<std::string> channels;
+  std::vector<SourceLocation> channel_where;  // each channel's place in the file
   std::optional<double> band_low{}, band_high{};
   bool force_driven = false;  // input: force
   double pause = 0.0;         // 0: not given
