@@ -362,6 +362,25 @@ void ReadOrientations(const YamlReader& reader, const YAML::Node& suite, DesignF
 }
 
 // The accidental eccentricity and the limits the checks compare with.
+
+// Whether any isolator's laws include an HDR bearing, in one direction or in plan.
+bool HasHdrBearing(const ModelFile& model) {
+  const auto hdr = [](const hysteresis::LawParameters& law) {
+    return law.type() == hysteresis::LawType::kHdrBearing;
+  };
+  for (const hysteresis::Component& c : model.isolation.components()) {
+    if (hdr(c.parameters)) return true;
+  }
+  if (const auto* isolators = PlanIsolators(model)) {
+    for (const structure::PlanIsolatorSite& site : *isolators) {
+      for (const hysteresis::PlanComponent& c : site.assembly.components()) {
+        if (hdr(c.law)) return true;
+      }
+    }
+  }
+  return false;
+}
+
 void ReadEccentricityAndLimits(const YamlReader& reader, const YAML::Node& root,
                                DesignFile& design) {
   const int directions = Directions(design.model);
@@ -395,6 +414,13 @@ void ReadEccentricityAndLimits(const YamlReader& reader, const YAML::Node& root,
                   fmt::format("{:g} (a ratio of rubber shear strain, 0 < limit <= 10: 2.5 for "
                               "250 %)",
                               design.shear_strain_limit));
+    }
+    // It sets an HDR bearing's displacement capacity, and no other law's.
+    if (!HasHdrBearing(design.model)) {
+      reader.Fail(root["shear_strain_limit"], "shear_strain_limit",
+                  fmt::format("sets the displacement capacity of HDR bearings (hdr_bearing), and "
+                              "'{}' has none: leave it out",
+                              design.model_path));
     }
   }
 }

@@ -464,6 +464,23 @@ TEST(DesignCommand, DisplacementCapacitiesAreCheckedAgainstTheDesignDtm) {
       << unknown.output;
   EXPECT_NE(unknown.output.find("ASCE 7-16 17.2.4): not checked"), std::string::npos)
       << unknown.output;
+  // A shear strain limit on a layer without HDR bearings would set no capacity: refused.
+  const testing::Outcome pendulums = design_of(
+      "tfp_limit",
+      "{name: b, type: triple_friction_pendulum, w: 1250, r1: 2100, r2: 280, r3: 280, r4: 2100, "
+      "mu1: 0.06, mu2: 0.02, mu3: 0.02, mu4: 0.10, d1: 100, d2: 50, d3: 50, d4: 100, uy: 0.5}",
+      "mu1", "shear_strain_limit: 2.5\n");
+  EXPECT_EQ(pendulums.exit_code, 2);
+  const std::string said =
+      testing::RunIsolab("design " + (folder / "tfp_limit_design.yaml").string() +
+                             " -q --no-figures -o " + (folder / "tfp_limit").string(),
+                         true)
+          .output;
+  EXPECT_NE(said.find("tfp_limit_design.yaml:5:21: shear_strain_limit: sets the displacement "
+                      "capacity of HDR bearings (hdr_bearing), and"),
+            std::string::npos)
+      << said;
+  EXPECT_FALSE(fs::exists(folder / "tfp_limit"));
 }
 
 TEST(DesignCommand, RefusesBadInputWithItsPlace) {
