@@ -57,6 +57,12 @@ Component FromModel(const model::ModelFile& model, const model::GroundMotionSect
 // `vertical`).
 std::vector<Component> ChooseComponents(const model::ModelFile& model,
                                         const RunOverrides& overrides, bool* vertical) {
+  // A step of 0 reads as none given, and a file's own step would then stand in silently.
+  if (overrides.record_dt && !(*overrides.record_dt > 0.0 && std::isfinite(*overrides.record_dt))) {
+    throw InputError(
+        {overrides.dt_given_by},
+        fmt::format("{:g}: a sampling step must be finite and > 0", *overrides.record_dt));
+  }
   std::vector<Component> components;
   *vertical = false;
   if (!overrides.records.empty()) {

@@ -103,6 +103,17 @@ struct Layout {
   bool two_columns = false;
 };
 
+// The header's sampling step, which must be > 0: a step of 0 would read as none declared, and a
+// step given beside the file would then stand in for the header's silently.
+double HeaderStep(const std::string& path, std::size_t line, const std::string& text) {
+  const double dt = HeaderNumber(path, line, text);
+  if (!(dt > 0.0)) {
+    throw InputError({path, static_cast<int>(line + 1)},
+                     fmt::format("the header's sampling step DT = {} must be > 0", text));
+  }
+  return dt;
+}
+
 std::optional<Layout> PeerLayout(const std::string& path, const std::vector<std::string>& lines) {
   Layout layout;
   bool found = false;
@@ -112,13 +123,13 @@ std::optional<Layout> PeerLayout(const std::string& path, const std::vector<std:
     if (!sampling) sampling = FindOldestSampling(line);
     if (sampling) {
       layout.points = HeaderCount(path, i, sampling->points);
-      layout.dt = HeaderNumber(path, i, std::string(sampling->step));
+      layout.dt = HeaderStep(path, i, std::string(sampling->step));
       layout.first_data_line = i + 1;
       if (layout.format.empty()) layout.format = "PEER AT2";
       found = true;
     } else if ((sampling = FindPeknoldSampling(line))) {
       layout.points = HeaderCount(path, i, sampling->points);
-      layout.dt = HeaderNumber(path, i, std::string(sampling->step));
+      layout.dt = HeaderStep(path, i, std::string(sampling->step));
       layout.format = "Peknold AT2";
       found = true;
     } else if (ContainsIgnoringCase(line, "begin data")) {

@@ -63,10 +63,13 @@ ShakeTableData ShakeTableData::Read(const std::string& path) {
         const int column = static_cast<int>(k) + 1;
         auto [name, unit] = NameAndUnit(fields[k]);
         if (unit.empty()) {
+          // The example in the column's own kind: the time in seconds, a channel in m/s^2.
+          const bool time = Lower(fields[k]) == "time";
           throw InputError({path, line_number, column},
                            fmt::format("column '{}' has no unit (write it as a suffix, "
-                                       "'{}_m_s2', or in brackets, '{} [m/s^2]')",
-                                       fields[k], fields[k], fields[k]));
+                                       "'{}_{}', or in brackets, '{} [{}]')",
+                                       fields[k], fields[k], time ? "s" : "m_s2", fields[k],
+                                       time ? "s" : "m/s^2"));
         }
         for (std::size_t j = 0; j < data.columns_.size(); ++j) {
           if (data.columns_[j].name == name) {

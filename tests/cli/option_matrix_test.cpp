@@ -119,6 +119,7 @@ TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
   ExpectRefused(run + "--record " + kH1 + " --units m/s^2", "--units");
   EXPECT_EQ(Applied(run + "--record " + kH1 + " --record-dt 0.01")["record_dt"], 0.01);
   ExpectRefused(run + "--record " + kH1 + " --record-dt 0.02", "--record-dt");
+  ExpectRefused(run + "--record " + kH1 + " --record-dt 0", "--record-dt");  // not "no step"
 
   const nlohmann::json half = Applied(run + "--scale 0.5");
   EXPECT_NEAR(half["pga"].get<double>(),

@@ -497,6 +497,9 @@ TEST(ShakeTableCommand, BadDataIsLocatedWithExitCodeTwoAndNothingWritten) {
        "no channel 'd1' (the file has: table_acceleration, table_displacement, a1, a2, a3, a4)"},
       {"no_unit.csv", "time_s,table_acceleration,table_displacement_m\n0,0,0\n",
        "no_unit.csv:1:2: column 'table_acceleration' has no unit"},
+      {"no_time_unit.csv", "time,table_acceleration_m_s2\n0,0\n",
+       "no_time_unit.csv:1:1: column 'time' has no unit (write it as a suffix, 'time_s', or in "
+       "brackets, 'time [s]')"},
       {"twice.csv", "time_s,a1_m_s2,a1 [g]\n0,0,0\n", "twice.csv:1:3: channel 'a1' appears twice"},
       {"wrong_dimension.csv",
        "time_s,table_acceleration_m,table_displacement_m,a1_m_s2\n0,0,0,0\n1,0,0,0\n",

@@ -229,6 +229,24 @@ TEST(ReadRecord, CsvTimesInAnotherUnitThanSecondsAreRefused) {
   EXPECT_DOUBLE_EQ(ReadRecord(seconds.string()).dt, 0.01);
 }
 
+// A header's step of 0 or less is refused at its line: read as no step declared, a step given
+// beside the file stood in for it silently.
+TEST(ReadRecord, AHeaderStepThatIsNotPositiveIsALocatedError) {
+  for (const char* step : {".0000", "-0.01"}) {
+    const std::filesystem::path path = testing::OwnTestFile("step.at2");
+    std::ofstream(path) << "PEER NGA STRONG MOTION DATABASE RECORD\nX\n"
+                        << "ACCELERATION TIME SERIES IN UNITS OF G\n"
+                        << "NPTS=      3, DT=   " << step << " SEC,\n  1.0  -2.0  3.0\n";
+    for (const double given : {0.0, 0.01}) {
+      const std::string error = ErrorOf(path.string(), {"", given, "", "--record-dt"});
+      EXPECT_NE(error.find("step.at2:4: the header's sampling step DT = " + std::string(step) +
+                           " must be > 0"),
+                std::string::npos)
+          << error;
+    }
+  }
+}
+
 TEST(ReadRecord, DeclaredCountBeyond64BitsIsALocatedError) {
   // It used to be read as -9223372036854775808 points.
   const std::string error = ErrorOf(DataFile("bad_record_npts_overflow.at2"));
