@@ -248,11 +248,14 @@ std::vector<Component> ChooseHorizontalComponents(const model::ModelFile& model,
   std::vector<Component> components = ChooseComponents(model, overrides, &has_vertical);
   const bool vertical_asked = model.axial_load && model.axial_load->vertical;
   if (has_vertical && !vertical_asked) {
-    throw InputError(components.back().motion.location,
-                     fmt::format("{}: a vertical component acts only through the axial loads of "
+    // The model's entry is named after its line; an option is the location itself.
+    const model::GroundMotionSection& motion = components.back().motion;
+    const bool option = motion.location.Describe() == motion.key;
+    throw InputError(motion.location,
+                     fmt::format("{}a vertical component acts only through the axial loads of "
                                  "friction pendulum bearings: the model needs axial_load: "
                                  "{{vertical: true}}",
-                                 components.back().motion.key));
+                                 option ? "" : motion.key + ": "));
   }
   if (vertical_asked && !has_vertical) {
     throw InputError(model.axial_load->location,

@@ -21,6 +21,15 @@ void WriteText(const std::string& path, const std::string& text) {
 
 DiagnosisFiles DiagnosisFiles::Plan(const std::string& out, const std::string& first_data,
                                     bool plot, diagnosis::ReportContext* context) {
+  // The stem names files: a folder would leave them hidden in it (DIR/.md, DIR/.json, ...).
+  if (!out.empty() &&
+      (std::filesystem::path(out).filename().empty() || std::filesystem::is_directory(out))) {
+    std::string folder = out;
+    while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+    throw InputError({"--out"}, fmt::format("'{}' is a folder; the report's stem names its files, "
+                                            "e.g. {}/report for report.md, report.json, ...",
+                                            out, folder));
+  }
   DiagnosisFiles files;
   files.stem = !out.empty()
                    ? out

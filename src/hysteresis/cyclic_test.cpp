@@ -17,7 +17,8 @@ void CyclicProtocol::Validate() const {
   }
   if (cycles < 1) throw InvalidParameter({"cycles", double(cycles), "must be >= 1"});
   if (steps_per_cycle < 4 || steps_per_cycle % 4 != 0) {
-    throw InvalidParameter({"steps_per_cycle", double(steps_per_cycle), "must be a multiple of 4"});
+    throw InvalidParameter(
+        {"steps_per_cycle", double(steps_per_cycle), "must be a multiple of 4, at least 4"});
   }
   if (double(cycles) * steps_per_cycle > 1e8) {
     throw InvalidParameter(

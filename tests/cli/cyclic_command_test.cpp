@@ -106,6 +106,12 @@ TEST(CyclicCommand, BadOptionsExitWithCodeTwo) {
   EXPECT_EQ(RunIsolab("cyclic " + Model("table7_thm1_hard.yaml") + " --steps-per-cycle 7", true)
                 .exit_code,
             2);
+  // 0 is a multiple of 4: the message says what is allowed.
+  const auto zero =
+      RunIsolab("cyclic " + Model("table7_thm1_hard.yaml") + " --steps-per-cycle 0", true);
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.output.find("must be a multiple of 4, at least 4"), std::string::npos)
+      << zero.output;
   EXPECT_EQ(RunIsolab("cyclic " + BadFile("good_mechanical.yaml"), true).exit_code,
             2);  // no amplitude
   EXPECT_EQ(RunIsolab("cyclic /nonexistent.yaml", true).exit_code, 2);

@@ -158,6 +158,23 @@ TEST(DiagnoseCommand, BadInputIsLocatedWithExitCodeTwoAndNoReport) {
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("the force is 0 throughout"), std::string::npos) << run.output;
   EXPECT_FALSE(std::filesystem::exists(stem.string() + ".md"));
+
+  // A folder as the stem would hide the report in it as .md, .json, ...
+  const auto folder = Scratch("reports");
+  std::filesystem::create_directories(folder);
+  for (const std::string& out : {folder.string(), folder.string() + "/"}) {
+    run = RunIsolab("diagnose " + data + " --base " + kSource +
+                        "/models/diagnosis/base_bhm2.yaml -q --budget 300 --out " + out,
+                    true);
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find("--out: '" + out +
+                              "' is a folder; the report's stem names its "
+                              "files, e.g. " +
+                              folder.string() + "/report"),
+              std::string::npos)
+        << run.output;
+    EXPECT_TRUE(std::filesystem::is_empty(folder)) << out;
+  }
 }
 
 TEST(DiagnoseCommand, DataTooFewForTheBaseModelAreRefused) {

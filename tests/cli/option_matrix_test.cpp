@@ -104,6 +104,9 @@ TEST_P(RunOptions, EachRecordOptionIsAppliedOrRefused) {
   // --record; applied on the plan building on friction pendulums (docs/axial_load.md).
   const std::string kV = kRoot + "/ground_motions/v_fwn_firm_seed4.at2";
   ExpectRefused(run + "--record " + kH1 + " --record-v " + kV, "--record-v");
+  EXPECT_EQ(RunIsolab(run + "--record " + kH1 + " --record-v " + kV, true)
+                .output.find("--record-v: --record-v"),
+            std::string::npos);  // the option said once
   ExpectRefused(run + "--record-v " + kV, "--record-v");
   if (kind.plan) {
     const std::string fp = kRoot + "/models/plan/five_story_fp_plan.yaml --json -q -o " +

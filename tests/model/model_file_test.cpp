@@ -55,7 +55,7 @@ TEST(ModelFile, MalformedStructureIsLocated) {
   ExpectError("bad_unit.yaml", ":1:16:", "units.force: 'kilonewton' is not a force unit");
   ExpectError("bad_duplicate_name.yaml", ":5:7:", "name 'a' is already used by component 0");
   ExpectError("bad_cyclic_steps.yaml",
-              ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4)");
+              ":5:42:", "cyclic.steps_per_cycle = 30 (must be a multiple of 4, at least 4)");
   ExpectError("bad_empty.yaml", ":1:1:", "the file is empty");
   ExpectError("bad_nan_value.yaml",
               ":4:69:", "isolation.components[0].uyh: '.nan' is not a finite number");
