@@ -38,20 +38,59 @@ class IsolabWarning(UserWarning):
     The run goes on; warnings.simplefilter("error", isolab.IsolabWarning) makes them errors."""
 
 
-def _positive_finite(name, value):
-    """value as a float, or InputError naming the argument as the command line names its option."""
+def _number(name, value):
+    """A real number (not a bool, a string or bytes) as float, else InputError naming it."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise InputError(f"{name}: {value!r} is not a number")
-    if not (math.isfinite(value) and value > 0):
-        raise InputError(f"{name}: {value} (must be a finite number > 0)")
     return float(value)
 
 
-def _as_list(value):
-    """None, a number or a sequence of numbers, as a list of floats."""
+def _finite(name, value):
+    """value as a finite float, or InputError naming the argument."""
+    value = _number(name, value)
+    if not math.isfinite(value):
+        raise InputError(f"{name}: {value} (must be a finite number)")
+    return value
+
+
+def _positive_finite(name, value):
+    """value as a finite float > 0, or InputError naming the argument."""
+    value = _number(name, value)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"{name}: {value:g} (must be a finite number > 0)")
+    return value
+
+
+def _as_list(value, name):
+    """None, a number or a non-empty sequence of numbers, as a list of floats. A string, bytes or
+    a dict is refused naming the argument: read as a sequence, "125" would be 1, 2 and 5."""
     if value is None:
         return []
-    return [float(v) for v in (value if hasattr(value, "__len__") else [value])]
+    if isinstance(value, (str, bytes, dict)):
+        raise InputError(f"{name}: {value!r} is not a number or a list of numbers")
+    if not hasattr(value, "__len__"):
+        return [_number(name, value)]
+    values = [_number(f"{name}[{i}]", v) for i, v in enumerate(value)]
+    if not values:
+        raise InputError(f"{name}: an empty list (give a value, or leave {name} out)")
+    return values
+
+
+def _whole_number(name, value):
+    """An integer (not a bool, a float or a string) as int, else InputError naming it."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InputError(f"{name}: {value!r} is not a whole number")
+    return int(value)
+
+
+def _whole_numbers(name, value):
+    """None, a whole number or a non-empty sequence of them, as a list of ints (cycles)."""
+    if value is None:
+        return []
+    items = [value] if not hasattr(value, "__len__") or isinstance(value, (str, bytes)) else value
+    if isinstance(value, dict) or not items:
+        raise InputError(f"{name}: {value!r} is not a whole number or a non-empty list of them")
+    return [_whole_number(name, item) for item in items]
 
 
 def _model(model):
@@ -61,7 +100,7 @@ def _model(model):
 
 def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, scale=None,
         dt=None, free_vibration=None, fixed_base=False, trial_displacement=None, integrator=None,
-        rtol=None, atol=None, samples=None, seed=1, check=True):
+        rtol=None, atol=None, samples=None, seed=None, check=True):
     """Time-history analysis: `isolab run` with its options as keyword arguments.
 
     model: a Model or a model file's path. record: a record file replacing the model's, or a
@@ -73,7 +112,7 @@ def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, 
     rtol and atol are the command line's --scale, --dt, --free-vibration, --fixed-base,
     --trial-displacement, --integrator, --rtol and --atol. samples and seed are --samples and
     --seed: for a model carrying a fit's uncertainty, the 5/50/95 % spread of the peaks over that
-    many drawn parameter sets, in result.summary["band"].
+    many drawn parameter sets, in result.summary["band"] (seed, default 1, only with samples).
 
     Returns a Result. A run that stops early raises RunError (its .result holds the rows up to
     the failure) unless check=False. Each plausibility warning of the run (result.warnings) is
@@ -81,10 +120,16 @@ def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, 
     """
     if scale is not None:
         scale = _positive_finite("scale", scale)
+    if angle is not None:
+        angle = _finite("angle", angle)
+    samples = 0 if samples is None else _whole_number("samples", samples)
+    if seed is not None and not samples:
+        raise InputError("seed: seeds the parameter sets samples= draws: give samples")
+    seed = 1 if seed is None else _whole_number("seed", seed)
     result = _run(_model(model), record, h2, angle=angle, units=units, record_dt=record_dt,
                   scale=scale, dt=dt, free_vibration=free_vibration, fixed_base=fixed_base,
                   trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
-                  atol=atol, samples=int(samples or 0), seed=int(seed))
+                  atol=atol, samples=samples, seed=seed)
     for message in result.warnings:
         warnings.warn(message, IsolabWarning, stacklevel=2)
     if check and not result.ok:
@@ -145,10 +190,12 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     if path is not None or orbit is not None:
         target = model if isinstance(model, Model) else _path("model", model)
         paths = [] if path is None else _paths("path", path)
-        return _replay(target, paths, orbit or "", _as_list(amplitude), _as_list(period), cycles,
+        return _replay(target, paths, orbit or "", _as_list(amplitude, "amplitude"),
+                       _as_list(period, "period"), cycles,
                        steps_per_cycle, isolator or "", uncoupled, force_unit or "",
                        length_unit or "")
-    runs = _cyclic(_model(model), _as_list(amplitude), _as_list(period), cycles, steps_per_cycle,
+    runs = _cyclic(_model(model), _as_list(amplitude, "amplitude"), _as_list(period, "period"),
+                   cycles, steps_per_cycle,
                    sequential, _optional_path("test_data", test_data), noise,
                    1 if seed is None else seed)
     several = hasattr(amplitude, "__len__") or hasattr(period, "__len__")
@@ -159,7 +206,7 @@ def _spectrum_list(value, name, parse=_parse_list):
     """A number, a sequence of numbers, or the command line's text ("0.05:5:0.05", "0.02,0.05")."""
     if isinstance(value, str):
         return parse(value, name)
-    return _as_list(value)
+    return _as_list(value, name)
 
 
 def _default_periods():
@@ -192,6 +239,8 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
     also "angle", degrees from H1 towards H2) replace "elastic", with "record_h2"; ductility is
     refused for a pair.
     """
+    if damping is None:
+        raise InputError("damping: None (give a ratio, e.g. 0.05, or a list of them)")
     return _spectrum(record, h2, _spectrum_list(periods, "periods", _parse_periods) or
                      _default_periods(), _spectrum_list(damping, "damping"),
                      _spectrum_list(ductility, "ductility"), alpha, points_per_period, scale, units, record_dt,
@@ -286,8 +335,7 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
     _refuse([("output", output is not None)],
             "applies to building=: the cyclic fit writes no file (its components are in the "
             "result)")
-    cycles = [] if cycles is None else [int(c) for c in (cycles if hasattr(cycles, "__len__")
-                                                         else [cycles])]
+    cycles = _whole_numbers("cycles", cycles)
     return _fit(data, _path("model", model), seed, budget, cycles, specimen or "",
                 force_unit or "", length_unit or "", threads, force, quiet)
 
@@ -417,9 +465,12 @@ def _optional_path(name, value):
 
 
 def _paths(name, data):
-    """One path or a list of them, as a list of str."""
+    """One path or a list of them, as a list of str (a dict is refused: read as a list, its keys
+    would be taken for the paths and its values dropped)."""
     if isinstance(data, (str, bytes, os.PathLike)):
         return [_path(name, data)]
+    if isinstance(data, dict):
+        raise TypeError(f"{name}: expected a path or a list of paths, not dict")
     try:
         items = list(data)
     except TypeError:

@@ -13,6 +13,7 @@
 #include "bindings.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
+#include "isolab/core/worker_count.h"
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/study_file.h"
 #include "isolab/study/jobs.h"
@@ -107,10 +108,9 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
     study.free_vibration =
         model::ParseFreeVibration(*free_vibration, study.units, "free_vibration");
   }
-  if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
+  const int threads = CheckedWorkers(jobs, "jobs");
   const std::string folder = study::PrepareOutputFolder(output, study_path, study);
   const std::vector<study::Job> expanded = study::ExpandJobs(study);
-  const int threads = ThreadsOrHardware(jobs);
   study::ScheduleOutcome outcome;
   {
     // The runs touch no Python object; progress goes to stderr as the command line's does.

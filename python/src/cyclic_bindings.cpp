@@ -14,6 +14,7 @@
 #include "isolab/hysteresis/law_parameters.h"
 #include "isolab/identification/synthetic_tests.h"
 #include "isolab/io/cyclic_test_file.h"
+#include "isolab/io/output_check.h"
 #include "isolab/model/model_file.h"
 #include "model.h"
 
@@ -38,6 +39,11 @@ std::vector<std::shared_ptr<CyclicRun>> Cyclic(
   if (!(noise >= 0.0 && noise <= 1.0)) throw InputError({"noise"}, "must be in [0, 1]");
   cyclic::CyclicRequest request{amplitudes, periods,  cycles,      steps_per_cycle,
                                 sequential, "cyclic", "amplitude="};
+  if (!test_data.empty()) {  // as `isolab cyclic --test-data`: never over the model's own files
+    std::vector<std::string> inputs = file.included_files;
+    if (!file.path.empty()) inputs.push_back(file.path);
+    io::CheckOutputs(inputs, {test_data});
+  }
   std::vector<hysteresis::CyclicResult> loops;
   {
     py::gil_scoped_release release;

@@ -10,6 +10,7 @@
 
 #include "bindings.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/worker_count.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 #include "isolab/study/design_report.h"
@@ -22,7 +23,7 @@ namespace {
 
 py::dict Design(const std::string& design_path, const std::string& output, int jobs, bool quiet) {
   const model::DesignFile design = model::LoadDesignFile(design_path);
-  if (jobs < 0) throw InputError({"jobs"}, "must be >= 0 (0: every hardware thread)");
+  CheckedWorkers(jobs, "jobs");
   study::DesignRun run;
   {
     py::gil_scoped_release release;

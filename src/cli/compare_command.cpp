@@ -16,6 +16,7 @@
 #include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
+#include "isolab/core/worker_count.h"
 #include "isolab/model/free_vibration_text.h"
 #include "isolab/model/study_file.h"
 #include "isolab/study/jobs.h"
@@ -69,8 +70,6 @@ void WriteSummary(const CompareOptions& options, const model::StudyFile& study_f
   }
 }
 
-constexpr int kWorkersPerHardwareThread = 8;
-
 int LocalWorkers(const CompareOptions& options) { return ThreadsOrHardware(options.jobs); }
 
 std::unique_ptr<study::Scheduler> MakeScheduler(const CompareOptions& options, bool mpi) {
@@ -111,15 +110,7 @@ void RegisterCompareCommand(CLI::App& app, CompareOptions& options) {
 
 int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   const bool mpi = study::LaunchedByMpirun();
-  // More workers than this only share the same cores, each with its own run buffers.
-  const int hardware = HardwareThreads();
-  if (!mpi && options.jobs > kWorkersPerHardwareThread * hardware) {
-    throw InputError({"--jobs"},
-                     fmt::format("{} workers on {} hardware threads: at most {} "
-                                 "({} per hardware thread)",
-                                 options.jobs, hardware, kWorkersPerHardwareThread * hardware,
-                                 kWorkersPerHardwareThread));
-  }
+  if (!mpi) CheckedWorkers(options.jobs, "--jobs");
   model::StudyFile study_file;
   std::string directory;
   try {

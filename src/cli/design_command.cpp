@@ -13,6 +13,7 @@
 #include "finite_options.h"
 #include "heavy_commands.h"
 #include "isolab/core/errors.h"
+#include "isolab/core/worker_count.h"
 #include "isolab/model/design_file.h"
 #include "isolab/study/design.h"
 #include "isolab/study/design_report.h"
@@ -48,6 +49,7 @@ int RunDesignCommand(const DesignOptions& options, std::ostream& out) {
         "isolab design runs on local worker processes (-j); under mpirun run the suite with "
         "isolab compare");
   }
+  CheckedWorkers(options.jobs, "--jobs");
   const model::DesignFile design = model::LoadDesignFile(options.design);
   if (options.figures) CheckPlotScript(kDesignPlotScript);  // before the runs, not after
   const study::DesignFolderOptions folder_options{options.output, "--output", options.jobs,

@@ -495,6 +495,14 @@ TEST(DesignCommand, RefusesBadInputWithItsPlace) {
       << outcome.output;
   EXPECT_FALSE(fs::exists(folder / "out" / "models")) << "a refused design wrote its models";
 
+  // Workers beyond 8 per hardware thread only share the cores: refused as compare refuses them.
+  const std::string good = WriteDesign(folder, "suite: {synthetic: {count: 3}}\n");
+  const testing::Outcome crowd =
+      testing::RunIsolab("design " + good + " -j 1000000 -o " + (folder / "crowd").string(), true);
+  EXPECT_EQ(crowd.exit_code, 2) << crowd.output;
+  EXPECT_NE(crowd.output.find("--jobs: 1000000 workers on"), std::string::npos) << crowd.output;
+  EXPECT_FALSE(fs::exists(folder / "crowd"));
+
   const std::string bad_limit = WriteDesign(folder, "suite: {synthetic: {count: 3}}\n",
                                             "eccentricity: 0.05\ndrift_limit: 2\n");
   const testing::Outcome bad = testing::RunIsolab("design " + bad_limit, true);

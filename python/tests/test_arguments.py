@@ -1,0 +1,85 @@
+"""Keyword arguments the module refuses as the command line refuses its options: a value of the
+wrong kind is never read as something else (a string of digits as a list of digits, a dict as
+its keys, 1.7 cycles as 1), an empty list is not a request for the default, an option of another
+option is not ignored, and no output is written over the command's own input."""
+
+import shutil
+
+import numpy as np
+import pytest
+
+import isolab
+
+SDOF = "models/paper/table7_thm1_hard.yaml"
+PLAN = "models/plan/five_story_table9_plan.yaml"
+BASE = "models/diagnosis/base_bhm2.yaml"
+H1, H2 = "ground_motions/fwn_firm_seed1.at2", "ground_motions/h2_fwn_firm_seed3.at2"
+
+
+def test_cyclic_never_writes_its_test_data_over_its_model(repo, tmp_path):
+    model = tmp_path / "model.yaml"
+    shutil.copy(repo / SDOF, model)
+    text = model.read_text()
+    for given in (model, isolab.load_model(model)):
+        with pytest.raises(isolab.InputError, match="is an input of this command"):
+            isolab.cyclic(given, 100, test_data=model)
+        assert model.read_text() == text
+
+
+@pytest.mark.parametrize("amplitude, message", [
+    ("125", "amplitude: '125' is not a number or a list of numbers"),
+    ([], "amplitude: an empty list"),
+    ({"a": 1}, "is not a number or a list of numbers"),
+    ([50, "100"], r"amplitude\[1\]: '100' is not a number"),
+])
+def test_cyclic_amplitudes_are_numbers(repo, amplitude, message):
+    with pytest.raises(isolab.InputError, match=message):
+        isolab.cyclic(repo / SDOF, amplitude)
+    # A numpy array of numbers is a list of them.
+    assert len(isolab.cyclic(repo / SDOF, np.array([50.0, 100.0]), cycles=1)) == 2
+
+
+@pytest.fixture
+def tests_csv(repo, tmp_path):
+    data = tmp_path / "tests.csv"
+    isolab.cyclic(repo / "models/diagnosis/null.yaml", [10, 20], period=2, cycles=2,
+                  test_data=data)
+    return data
+
+
+@pytest.mark.parametrize("cycles", ["12", 1.7, [], True])
+def test_fit_cycles_are_whole_numbers(repo, tests_csv, cycles):
+    with pytest.raises(isolab.InputError, match="cycles: "):
+        isolab.fit(tests_csv, repo / BASE, cycles=cycles, budget=300, quiet=True)
+
+
+def test_a_dict_is_not_a_list_of_data_files(repo, tests_csv):
+    with pytest.raises(TypeError, match="data: expected a path or a list of paths, not dict"):
+        isolab.fit({str(tests_csv): "notes"}, repo / BASE, budget=300, quiet=True)
+
+
+def test_run_seed_samples_and_angle_as_the_command_line_takes_them(repo):
+    model = isolab.load_model(repo / SDOF)
+    with pytest.raises(isolab.InputError, match="seed: seeds the parameter sets samples="):
+        isolab.run(model, seed=5)
+    with pytest.raises(isolab.InputError, match="samples: 2.5 is not a whole number"):
+        isolab.run(model, samples=2.5)
+    plan = isolab.load_model(repo / PLAN)
+    for angle in (float("nan"), float("inf")):  # bad input, not a run that failed
+        with pytest.raises(isolab.InputError, match="angle: "):
+            isolab.run(plan, repo / H1, repo / H2, angle=angle)
+
+
+def test_spectrum_needs_its_periods_and_damping_when_given(repo):
+    record = repo / "ground_motions/elcentro_1940_ns.at2"
+    with pytest.raises(isolab.InputError, match="periods: an empty list"):
+        isolab.spectrum(record, periods=[])
+    with pytest.raises(isolab.InputError, match="damping: None"):
+        isolab.spectrum(record, damping=None)
+
+
+def test_worker_counts_are_bounded_as_on_the_command_line(repo, tmp_path):
+    with pytest.raises(isolab.InputError, match=r"jobs: 1000000 workers on \d+ hardware threads"):
+        isolab.compare(repo / "models/studies/five_story_bearings.yaml", output=tmp_path / "c",
+                       jobs=10**6)
+    assert not (tmp_path / "c").exists()
