@@ -110,6 +110,7 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
   }
   const int threads = CheckedWorkers(jobs, "jobs");
   const std::string folder = study::PrepareOutputFolder(output, study_path, study);
+  study::WriteCompareManifest(folder, study);
   const std::vector<study::Job> expanded = study::ExpandJobs(study);
   study::ScheduleOutcome outcome;
   {

@@ -83,3 +83,13 @@ def test_worker_counts_are_bounded_as_on_the_command_line(repo, tmp_path):
         isolab.compare(repo / "models/studies/five_story_bearings.yaml", output=tmp_path / "c",
                        jobs=10**6)
     assert not (tmp_path / "c").exists()
+
+
+def test_compare_never_writes_over_files_an_earlier_compare_did_not_write(repo, tmp_path):
+    folder = tmp_path / "study"
+    folder.mkdir()
+    (folder / "summary.csv").write_text("my notes\n")
+    with pytest.raises(isolab.InputError, match="holds 'summary.csv', which an earlier compare"):
+        isolab.compare(repo / "tests/study/data/small_study.yaml", output=folder, jobs=1,
+                       quiet=True)
+    assert (folder / "summary.csv").read_text() == "my notes\n"

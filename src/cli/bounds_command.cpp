@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "common_options.h"
@@ -65,7 +66,21 @@ void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
     throw InputError({"--output"},
                      fmt::format("cannot make the folder '{}': {}", o.output, error.message()));
   }
-  for (const std::string& path : paths) io::CheckOutputPath(path);
+  for (const std::string& path : paths) {
+    io::CheckOutputPath(path);
+    // Only a file an earlier `isolab bounds` wrote is replaced (its models' first line, or an
+    // OpenSees export's, says so).
+    std::ifstream existing(path);
+    std::string first;
+    if (!existing || !std::getline(existing, first)) continue;  // not there (or empty)
+    const bool ours = first.starts_with(model::kBoundModelHeader) ||
+                      (first.starts_with("# ") && first.ends_with("(isolab bounds)"));
+    if (!ours) {
+      throw InputError({path},
+                       "exists, and isolab bounds did not write it: choose another "
+                       "folder (-o), or move the file away");
+    }
+  }
   for (std::size_t i = 0; i < paths.size(); ++i) {
     const std::string& text = texts[i];
     io::WriteTextFileAtomically(paths[i], [&text](std::ostream& file) { file << text; });

@@ -134,6 +134,7 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
     // MPI lives as long as the scheduler: the plot script below runs after MPI_Finalize.
     const std::unique_ptr<study::Scheduler> scheduler = MakeScheduler(options, mpi);
     const bool coordinator = scheduler->IsCoordinator();
+    if (coordinator) study::WriteCompareManifest(directory, study_file);
     if (coordinator && !options.quiet) {
       fmt::print(stderr, "isolab compare: {} ({} x {} x {}) on {}\n", Count(jobs.size(), "run"),
                  Count(study_file.variants.size(), "variant"),
@@ -196,8 +197,10 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
                     options.quiet);
     } catch (const std::runtime_error& error) {
       fmt::print(stderr, "isolab compare: --plot: {}\n", error.what());
+      study::WriteCompareManifest(directory, study_file);
       return 1;
     }
+    study::WriteCompareManifest(directory, study_file);  // with the plots
   }
   return failed > 0 ? 1 : 0;
 }

@@ -150,7 +150,9 @@ BoundModels MakeBoundModels(const ModelFile& model) {
                                          : "(lower bound: the properties times lambda_min)");
     YAML::Emitter out;
     out << root;
-    const std::string text = std::string(out.c_str()) + "\n";
+    const std::string text =
+        fmt::format("{}the {} bound of {}\n", kBoundModelHeader, name, model.path) + out.c_str() +
+        "\n";
     const std::string written = (folder / (path.stem().string() + "_" + name + ".yaml")).string();
     try {
       LoadModelText(text, written);

@@ -200,6 +200,20 @@ TEST(BoundsCommand, WritesThreeModelsThatRunAlone) {
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.output.find("no property modification factors"), std::string::npos)
       << refused.output;
+
+  // Its own files it writes again; a file of someone else's at one of its names it refuses, and
+  // leaves as it was.
+  EXPECT_EQ(testing::RunIsolab("bounds " + model + " -q -o " + (folder / "out").string()).exit_code,
+            0);
+  const std::filesystem::path notes = folder / "out" / "lrb_lower.yaml";
+  std::ofstream(notes) << "my notes\n";
+  const testing::Outcome theirs =
+      testing::RunIsolab("bounds " + model + " -q -o " + (folder / "out").string(), true);
+  EXPECT_EQ(theirs.exit_code, 2) << theirs.output;
+  EXPECT_NE(theirs.output.find("lrb_lower.yaml: exists, and isolab bounds did not write it"),
+            std::string::npos)
+      << theirs.output;
+  EXPECT_EQ(Read(notes.string()), "my notes\n");
 }
 
 // The bundled plan model shares one pendulum among its four isolators through a YAML anchor

@@ -224,6 +224,29 @@ TEST(CompareCommand, ARunFileThatCannotBeWrittenFailsItsRunOnEveryWorkerCount) {
   }
 }
 
+// A compare replaces only what an earlier compare wrote (its manifest lists it): a summary or a
+// run file of someone else's, or a file where it needs the runs' folder, is refused before any
+// run, the folder left as it was; its own folder it writes again.
+TEST(CompareCommand, AnOutputFolderHoldingOtherFilesIsRefusedBeforeTheRuns) {
+  const std::string compare = "compare " + StudyData("small_study.yaml") + " -q -j 1 -o ";
+  for (const std::string theirs : {"summary.csv", "runs/thm1/pulse_tp2_x1.h5", "runs"}) {
+    const fs::path folder = OutputFolder("theirs");
+    fs::create_directories((folder / theirs).parent_path());
+    std::ofstream(folder / theirs) << "my notes\n";
+    const Outcome refused = RunIsolab(compare + folder.string(), true);
+    EXPECT_EQ(refused.exit_code, 2) << theirs << ": " << refused.output;
+    EXPECT_NE(refused.output.find(folder.string() + ": holds '" + theirs + "'"), std::string::npos)
+        << refused.output;
+    EXPECT_EQ(ReadText(folder / theirs), "my notes\n") << theirs;
+    EXPECT_FALSE(fs::exists(folder / "compare_manifest.txt")) << theirs;
+  }
+  const fs::path own = OutputFolder("own");
+  ASSERT_EQ(RunIsolab(compare + own.string()).exit_code, 0);
+  std::ofstream(own / "notes.txt") << "beside the study's files: never the study's to write\n";
+  ASSERT_EQ(RunIsolab(compare + own.string()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(own / "notes.txt"));
+}
+
 TEST(CompareCommand, RunsMatchIsolabRunOnTheSameModelRecordAndScale) {
   const fs::path folder = OutputFolder("match");
   ASSERT_EQ(

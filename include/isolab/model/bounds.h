@@ -12,9 +12,13 @@
 
 namespace isolab::model {
 
+// The first line of every bound model's text: `isolab bounds` replaces a file only when it starts
+// so (one it wrote), never a file of someone else's.
+inline constexpr const char* kBoundModelHeader = "# isolab bounds: ";
+
 struct BoundModel {
   std::string bound;  // "nominal", "upper", "lower"
-  std::string text;   // the model file's YAML
+  std::string text;   // the model file's YAML, its first line kBoundModelHeader's
 };
 
 // One modified property and the values its bound models take (in the text's own unit).
