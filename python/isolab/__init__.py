@@ -190,10 +190,10 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     if path is not None or orbit is not None:
         target = model if isinstance(model, Model) else _path("model", model)
         paths = [] if path is None else _paths("path", path)
-        return _replay(target, paths, orbit or "", _as_list(amplitude, "amplitude"),
-                       _as_list(period, "period"), cycles,
-                       steps_per_cycle, isolator or "", uncoupled, force_unit or "",
-                       length_unit or "")
+        return _replay(target, paths, _word("orbit", orbit), _as_list(amplitude, "amplitude"),
+                       _as_list(period, "period"), cycles, steps_per_cycle,
+                       _word("isolator", isolator), uncoupled, _word("force_unit", force_unit),
+                       _word("length_unit", length_unit))
     runs = _cyclic(_model(model), _as_list(amplitude, "amplitude"), _as_list(period, "period"),
                    cycles, steps_per_cycle,
                    sequential, _optional_path("test_data", test_data), noise,
@@ -326,8 +326,10 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
         return json.loads(_fit_building(data, _path("building", building),
                                         _optional_path("output", output), seed, budget,
                                         -1 if global_budget is None else global_budget,
-                                        specimen or "", offsets or "", force_unit or "",
-                                        length_unit or "", threads, bool(cross_validate),
+                                        _word("specimen", specimen), _word("offsets", offsets),
+                                        _word("force_unit", force_unit),
+                                        _word("length_unit", length_unit), threads,
+                                        bool(cross_validate),
                                         bool(model_form), quiet))
     _refuse([("offsets", offsets is not None), ("global_budget", global_budget is not None),
              ("cross_validate", cross_validate), ("model_form", model_form)],
@@ -336,8 +338,9 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
             "applies to building=: the cyclic fit writes no file (its components are in the "
             "result)")
     cycles = _whole_numbers("cycles", cycles)
-    return _fit(data, _path("model", model), seed, budget, cycles, specimen or "",
-                force_unit or "", length_unit or "", threads, force, quiet)
+    return _fit(data, _path("model", model), seed, budget, cycles, _word("specimen", specimen),
+                _word("force_unit", force_unit), _word("length_unit", length_unit), threads,
+                force, quiet)
 
 
 def diagnose(data, base=None, *, building=None, offsets=None, seed=1, budget=12000,
@@ -378,10 +381,12 @@ def diagnose(data, base=None, *, building=None, offsets=None, seed=1, budget=120
                              "(shake-table motions carry their units in the column names)")
         _refuse([("force", force)], "applies to cyclic tests, not to building=")
         return json.loads(_diagnose_building(data, _path("building", building), seed, budget,
-                                             specimen or "", offsets or "", threads, quiet))
+                                             _word("specimen", specimen),
+                                             _word("offsets", offsets), threads, quiet))
     _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
-    return json.loads(_diagnose(data, _path("base", base), seed, budget, specimen or "",
-                                force_unit or "", length_unit or "", threads, force, quiet))
+    return json.loads(_diagnose(data, _path("base", base), seed, budget,
+                                _word("specimen", specimen), _word("force_unit", force_unit),
+                                _word("length_unit", length_unit), threads, force, quiet))
 
 
 def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, runs=None):
@@ -453,10 +458,24 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
 
 def _path(name, value):
     """A file or folder argument as str: a str, bytes or os.PathLike. Anything else (a number,
-    a dict, an array) is refused naming the argument, never turned into a file name."""
+    a dict, an array) is refused naming the argument, never turned into a file name; so is an
+    empty path, which would otherwise read as the argument left out."""
     if isinstance(value, (str, bytes, os.PathLike)):
-        return os.fsdecode(os.fspath(value))
+        path = os.fsdecode(os.fspath(value))
+        if not path:
+            raise InputError(f"{name}: an empty path (give one, or leave {name} out)")
+        return path
     raise TypeError(f"{name}: expected a path (str or os.PathLike), not {type(value).__name__}")
+
+
+def _word(name, value):
+    """A text argument (a unit, a mode) as str, "" when left out (None); an empty one is refused,
+    as the command line refuses an empty value, not read as the default."""
+    if value is None:
+        return ""
+    if not isinstance(value, str) or not value:
+        raise InputError(f"{name}: {value!r} (give a word, or leave {name} out)")
+    return value
 
 
 def _optional_path(name, value):

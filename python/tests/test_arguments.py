@@ -93,3 +93,14 @@ def test_compare_never_writes_over_files_an_earlier_compare_did_not_write(repo, 
         isolab.compare(repo / "tests/study/data/small_study.yaml", output=folder, jobs=1,
                        quiet=True)
     assert (folder / "summary.csv").read_text() == "my notes\n"
+
+
+def test_an_empty_path_or_word_is_refused_not_read_as_left_out(repo, tests_csv, tmp_path):
+    with pytest.raises(isolab.InputError, match="test_data: an empty path"):
+        isolab.cyclic(repo / SDOF, 100, test_data="")
+    with pytest.raises(isolab.InputError, match="output: an empty path"):
+        isolab.compare(repo / "tests/study/data/small_study.yaml", output="", jobs=1, quiet=True)
+    with pytest.raises(isolab.InputError, match="specimen: '' "):
+        isolab.fit(tests_csv, repo / BASE, specimen="", budget=300, quiet=True)
+    with pytest.raises(isolab.InputError, match="orbit: '' "):
+        isolab.cyclic(repo / SDOF, 50, orbit="")

@@ -194,6 +194,7 @@ void PrintTables(const io::SpectrumDescription& s, std::ostream& out) {
   const spectra::ElasticSpectrum& e = *s.elastic;
   const spectra::ConstantDuctilitySpectrum* c = s.constant_ductility;
   const std::string& L = s.length_unit;
+  bool unreached = false;  // a target ductility no strength ratio scanned demands: "-"
   for (std::size_t d = 0; d < e.damping_ratios.size(); ++d) {
     fmt::print(out, "\nzeta = {:g}{}\n", e.damping_ratios[d],
                c != nullptr ? fmt::format(", constant ductility with alpha = {:g}", c->alpha) : "");
@@ -213,8 +214,13 @@ void PrintTables(const io::SpectrumDescription& s, std::ostream& out) {
       if (c != nullptr) {
         for (std::size_t m = 0; m < c->ductilities.size(); ++m) {
           const spectra::ConstantDuctilityPoint& x = c->at(d, m, p);
-          fmt::print(out, " {:>9.4g} {:>8.4g}", x.strength_ratio,
-                     x.yield_pseudo_acceleration / s.gravity);
+          if (std::isnan(x.strength_ratio)) {
+            unreached = true;
+            fmt::print(out, " {:>9} {:>8}", "-", "-");
+          } else {
+            fmt::print(out, " {:>9.4g} {:>8.4g}", x.strength_ratio,
+                       x.yield_pseudo_acceleration / s.gravity);
+          }
         }
       }
       fmt::print(out, "\n");
@@ -225,6 +231,12 @@ void PrintTables(const io::SpectrumDescription& s, std::ostream& out) {
                "\nfy/fo = f_y / (k u_o); Ay [g] = w^2 u_y / g; u_m in the files; Newmark: {} "
                "runs\n",
                c->newmark_runs);
+    if (unreached) {
+      fmt::print(out,
+                 "-: no strength ratio fy/fo of {:g} or more demands that ductility at that "
+                 "period (NaN in the files)\n",
+                 spectra::ConstantDuctilityOptions{}.min_strength_ratio);
+    }
   }
 }
 

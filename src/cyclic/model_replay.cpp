@@ -150,6 +150,13 @@ std::vector<ReplayRun> ReplayModel(const model::ModelFile& model, const ReplayRe
   }
   for (std::size_t p = 0; p < along.paths.size(); ++p) {
     const io::DisplacementPath& path = along.paths[p];
+    if (request.uncoupled && !path.plan) {
+      throw InputError({OptionName("uncoupled", style)},
+                       fmt::format("{} moves along one direction: its laws run as they are; "
+                                   "uncoupled pairs are for paths in plan (displacement_x and "
+                                   "displacement_y) and orbits",
+                                   path.name));
+    }
     try {
       runs.push_back(
           {model.path, model.units,

@@ -46,12 +46,12 @@ void RequirePositive(const char* key, double value) {
 void ValidateOne(const Asce7Spectrum& spectrum) {
   RequirePositive("sms", spectrum.sms);
   RequirePositive("sm1", spectrum.sm1);
-  RequirePositive("long_period", spectrum.long_period);
+  RequirePositive("tl", spectrum.long_period);  // the design file's key, ASCE 7's T_L
   // Below T_s the branches overlap and Sa would jump down at T_s.
   const double ts = spectrum.sm1 / spectrum.sms;
   if (spectrum.long_period < ts) {
-    throw InvalidParameter({"long_period", spectrum.long_period,
-                            fmt::format("must be >= T_s = S_M1/S_MS = {:g} s", ts)});
+    throw InvalidParameter(
+        {"tl", spectrum.long_period, fmt::format("must be >= T_s = S_M1/S_MS = {:g} s", ts)});
   }
 }
 

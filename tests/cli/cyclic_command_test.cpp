@@ -331,6 +331,13 @@ TEST(CyclicCommand, PathsAreCheckedAndErrorsLocated) {
   run = RunIsolab("cyclic " + table7 + " --path " + broken.string(), true);
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("broken_path.csv:4: column 2"), std::string::npos) << run.output;
+  // An uncoupled pair is for paths in plan: along one direction it would change nothing.
+  run = RunIsolab("cyclic " + table7 + " --path " + bare.string() +
+                      " --force-unit kN --length-unit mm --uncoupled",
+                  true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("--uncoupled: bare_path moves along one direction"), std::string::npos)
+      << run.output;
   run = RunIsolab("cyclic " + table7 + " --orbit circle", true);  // the file's amplitude is used
   EXPECT_EQ(run.exit_code, 0) << run.output;
   // A length unit given beside a file's line that names another is refused at the line.

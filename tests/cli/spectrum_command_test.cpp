@@ -54,6 +54,25 @@ TEST(SpectrumCommand, ChopraCaseCThroughTheCommandLine) {
   EXPECT_NEAR(elastic["A_g"][1].get<double>() / 0.610, 1.0, 0.005);
 }
 
+// A ductility no strength ratio of 0.01 or more demands at a period (100 at 3 s on El Centro,
+// where the demand stays near 1 / (f_y/f_o)) is shown as "-" and said, not printed as nan.
+TEST(SpectrumCommand, AnUnreachedDuctilityIsSaidNotPrintedAsNan) {
+  const auto run = RunIsolab("spectrum " + isolab::testing::ElCentroPath().string() +
+                             " --periods 0.5,3 --ductility 100 -q");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find("nan"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("-: no strength ratio fy/fo of 0.01 or more demands that ductility"),
+            std::string::npos)
+      << run.output;
+  const auto json =
+      nlohmann::json::parse(RunIsolab("spectrum " + isolab::testing::ElCentroPath().string() +
+                                      " --periods 0.5,3 --ductility 100 --json")
+                                .output);
+  const auto& ratio = json["constant_ductility"][0]["strength_ratio"];
+  EXPECT_GT(ratio[0].get<double>(), 0.01);   // reached at 0.5 s
+  EXPECT_TRUE(ratio[1].is_null()) << ratio;  // JSON's NaN: not reached at 3 s
+}
+
 TEST(SpectrumCommand, WritesCsvAndHdf5) {
   const auto csv = TemporaryFile("spectrum.csv");
   const auto h5 = TemporaryFile("spectrum.h5");

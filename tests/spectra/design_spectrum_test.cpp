@@ -152,10 +152,10 @@ TEST(DesignSpectrum, DescribesEachInOneLine) {
 TEST(DesignSpectrum, RefusesEachBadFieldByName) {
   EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{0.0, 0.9, 8.0}); }), "sms");
   EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, -0.9, 8.0}); }), "sm1");
-  EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, 0.9, 0.0}); }), "long_period");
+  EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, 0.9, 0.0}); }), "tl");
   EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, NAN, 8.0}); }), "sm1");
   // T_L below T_s = 0.6 s would make Sa jump at T_s.
-  EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, 0.9, 0.5}); }), "long_period");
+  EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, 0.9, 0.5}); }), "tl");
   EXPECT_EQ(RefusedKey([] { Validate(Asce7Spectrum{1.5, 0.9, 0.6}); }), "");
 
   EXPECT_EQ(RefusedKey([] {
