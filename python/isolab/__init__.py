@@ -326,7 +326,7 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
         return json.loads(_fit_building(data, _path("building", building),
                                         _optional_path("output", output), seed, budget,
                                         -1 if global_budget is None else global_budget,
-                                        _word("specimen", specimen), _word("offsets", offsets),
+                                        _specimen(specimen), _word("offsets", offsets),
                                         _word("force_unit", force_unit),
                                         _word("length_unit", length_unit), threads,
                                         bool(cross_validate),
@@ -338,7 +338,7 @@ def fit(data, model=None, *, building=None, offsets=None, output=None, seed=1, b
             "applies to building=: the cyclic fit writes no file (its components are in the "
             "result)")
     cycles = _whole_numbers("cycles", cycles)
-    return _fit(data, _path("model", model), seed, budget, cycles, _word("specimen", specimen),
+    return _fit(data, _path("model", model), seed, budget, cycles, _specimen(specimen),
                 _word("force_unit", force_unit), _word("length_unit", length_unit), threads,
                 force, quiet)
 
@@ -381,11 +381,11 @@ def diagnose(data, base=None, *, building=None, offsets=None, seed=1, budget=120
                              "(shake-table motions carry their units in the column names)")
         _refuse([("force", force)], "applies to cyclic tests, not to building=")
         return json.loads(_diagnose_building(data, _path("building", building), seed, budget,
-                                             _word("specimen", specimen),
+                                             _specimen(specimen),
                                              _word("offsets", offsets), threads, quiet))
     _refuse([("offsets", offsets is not None)], "applies to building=, not to cyclic tests")
     return json.loads(_diagnose(data, _path("base", base), seed, budget,
-                                _word("specimen", specimen), _word("force_unit", force_unit),
+                                _specimen(specimen), _word("force_unit", force_unit),
                                 _word("length_unit", length_unit), threads, force, quiet))
 
 
@@ -466,6 +466,13 @@ def _path(name, value):
             raise InputError(f"{name}: an empty path (give one, or leave {name} out)")
         return path
     raise TypeError(f"{name}: expected a path (str or os.PathLike), not {type(value).__name__}")
+
+
+def _specimen(value):
+    """specimen=: "sequential", "independent", or "" (the data's header) when left out."""
+    if value is not None and value not in ("sequential", "independent"):
+        raise InputError(f"specimen: {value!r} (expected sequential or independent)")
+    return value or ""
 
 
 def _word(name, value):

@@ -10,7 +10,8 @@ import pytest
 
 import isolab
 
-SDOF = "models/paper/table7_thm1_hard.yaml"
+SDOF = "models/paper/table7_thm1_hard.yaml"  # a bearing, for cyclic
+SDOF_RUN = "models/sdof/table7_thm1_hard.yaml"  # the SDOF under its record, for run
 PLAN = "models/plan/five_story_table9_plan.yaml"
 BASE = "models/diagnosis/base_bhm2.yaml"
 H1, H2 = "ground_motions/fwn_firm_seed1.at2", "ground_motions/h2_fwn_firm_seed3.at2"
@@ -59,7 +60,7 @@ def test_a_dict_is_not_a_list_of_data_files(repo, tests_csv):
 
 
 def test_run_seed_samples_and_angle_as_the_command_line_takes_them(repo):
-    model = isolab.load_model(repo / SDOF)
+    model = isolab.load_model(repo / SDOF_RUN)
     with pytest.raises(isolab.InputError, match="seed: seeds the parameter sets samples="):
         isolab.run(model, seed=5)
     with pytest.raises(isolab.InputError, match="samples: 2.5 is not a whole number"):
@@ -100,7 +101,18 @@ def test_an_empty_path_or_word_is_refused_not_read_as_left_out(repo, tests_csv, 
         isolab.cyclic(repo / SDOF, 100, test_data="")
     with pytest.raises(isolab.InputError, match="output: an empty path"):
         isolab.compare(repo / "tests/study/data/small_study.yaml", output="", jobs=1, quiet=True)
-    with pytest.raises(isolab.InputError, match="specimen: '' "):
+    with pytest.raises(isolab.InputError, match="specimen: '' \\(expected sequential or"):
         isolab.fit(tests_csv, repo / BASE, specimen="", budget=300, quiet=True)
     with pytest.raises(isolab.InputError, match="orbit: '' "):
         isolab.cyclic(repo / SDOF, 50, orbit="")
+
+
+def test_messages_name_the_keywords_not_the_command_lines_options(repo):
+    # The run's checks are shared with the command line; here they name the module's keywords.
+    for keywords, message in [({"dt": 0}, "^dt: 0 must be > 0"),
+                              ({"trial_displacement": 0}, "^trial_displacement: 0 must be > 0"),
+                              ({"fixed_base": True}, "^fixed_base: applies to a building")]:
+        with pytest.raises(isolab.InputError, match=message):
+            isolab.run(repo / SDOF_RUN, **keywords)
+    with pytest.raises(isolab.InputError, match="choose a larger dt or a shorter duration$"):
+        isolab.run(repo / SDOF_RUN, dt=1e-9)  # no --max-steps to advise: the module has none

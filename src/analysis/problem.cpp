@@ -214,17 +214,20 @@ io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
 }
 
 integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,
-                               const std::string& where) {
+                               const std::string& where, const std::string& raise_with) {
   const double steps = std::round(duration / dt);
   // int is the integrators' step counter: no limit may pass it.
   const std::int64_t limit = std::min<std::int64_t>(max_steps, std::numeric_limits<int>::max());
   if (!(steps <= static_cast<double>(limit))) {
+    const std::string raise = raise_with.empty()
+                                  ? std::string()
+                                  : fmt::format(", or raise the limit with {} (at most {})",
+                                                raise_with, std::numeric_limits<int>::max());
     throw InputError(
         {where}, fmt::format("the run would take {:.3g} steps of dt = {:g} over {:g} (time unit "
                              "of the model), more than the limit of {} steps: choose a larger dt "
-                             "or a shorter duration, or raise the limit with isolab run "
-                             "--max-steps N (at most {})",
-                             steps, dt, duration, limit, std::numeric_limits<int>::max()));
+                             "or a shorter duration{}",
+                             steps, dt, duration, limit, raise));
   }
   return {dt, static_cast<int>(steps)};
 }
@@ -248,14 +251,11 @@ std::vector<Component> ChooseHorizontalComponents(const model::ModelFile& model,
   std::vector<Component> components = ChooseComponents(model, overrides, &has_vertical);
   const bool vertical_asked = model.axial_load && model.axial_load->vertical;
   if (has_vertical && !vertical_asked) {
-    // The model's entry is named after its line; an option is the location itself.
-    const model::GroundMotionSection& motion = components.back().motion;
-    const bool option = motion.location.Describe() == motion.key;
-    throw InputError(motion.location,
+    throw InputError(components.back().motion.location,
                      fmt::format("{}a vertical component acts only through the axial loads of "
                                  "friction pendulum bearings: the model needs axial_load: "
                                  "{{vertical: true}}",
-                                 option ? "" : motion.key + ": "));
+                                 KeyOf(components.back())));
   }
   if (vertical_asked && !has_vertical) {
     throw InputError(model.axial_load->location,
@@ -287,10 +287,10 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
                                  KeyOf(components[1])));
   }
   if (layout.directions == 1 && angle != 0.0) {
-    throw InputError(
-        overrides.records.empty() ? SourceLocation{model.path} : SourceLocation{"--angle"},
-        "the structure moves along x only: an angle of the record to the x axis "
-        "needs a building in plan");
+    throw InputError(overrides.records.empty() ? SourceLocation{model.path}
+                                               : SourceLocation{overrides.names.angle},
+                     "the structure moves along x only: an angle of the record to the x axis "
+                     "needs a building in plan");
   }
   std::vector<integrators::SampledHistory> histories(components.size());
   // A target scales the whole record by the one factor computed from h1 (model_file.h).
@@ -379,9 +379,10 @@ double ApplyForces(const model::ModelFile& model, const RunOverrides& overrides,
 void SetTimeGrid(const model::ModelFile& model, const RunOverrides& overrides, double record_dt,
                  const structure::LaidOutStructure* fixed_base, Problem& problem) {
   const double dt = overrides.dt.value_or(model.analysis.dt > 0.0 ? model.analysis.dt : record_dt);
-  if (!(dt > 0.0)) throw InputError({"command line"}, fmt::format("--dt {:g} must be > 0", dt));
+  const OverrideNames& names = overrides.names;
+  if (!(dt > 0.0)) throw InputError({names.dt}, fmt::format("{:g} must be > 0", dt));
   if (!problem.records.empty() && dt > record_dt * (1.0 + 1e-9)) {
-    throw InputError({overrides.dt ? "command line" : model.path},
+    throw InputError({overrides.dt ? names.dt : model.path},
                      fmt::format("dt = {:g} is coarser than the record's {:g}; the analysis step "
                                  "may only refine it",
                                  dt, record_dt));
@@ -389,7 +390,7 @@ void SetTimeGrid(const model::ModelFile& model, const RunOverrides& overrides, d
   const double trial = overrides.trial_displacement.value_or(
       model.units.Convert(kDefaultTrialDisplacement, "m", dimension::kLength));
   if (!(trial > 0.0)) {
-    throw InputError({"command line"}, fmt::format("--trial-displacement {:g} must be > 0", trial));
+    throw InputError({names.trial_displacement}, fmt::format("{:g} must be > 0", trial));
   }
   double pga = 0.0;
   for (const io::AppliedRecord& record : problem.records) pga = std::max(pga, record.pga);
@@ -399,9 +400,9 @@ void SetTimeGrid(const model::ModelFile& model, const RunOverrides& overrides, d
   problem.excitation_end = problem.excitation.duration();
   double duration = model.analysis.duration;
   if (duration > 0.0 && overrides.free_vibration) {
-    throw InputError({"command line"},
+    throw InputError({names.free_vibration},
                      fmt::format("the model fixes the run's duration (analysis.duration in {}); "
-                                 "--free-vibration cannot lengthen it",
+                                 "free vibration cannot lengthen it",
                                  model.path));
   }
   if (duration <= 0.0) {
@@ -411,7 +412,8 @@ void SetTimeGrid(const model::ModelFile& model, const RunOverrides& overrides, d
     problem.free_vibration = std::max(0.0, duration - problem.excitation_end);
   }
   problem.residual_window = std::min(problem.summary.LongestPeriod(), problem.free_vibration);
-  problem.grid = StepGrid(dt, duration, overrides.max_steps, overrides.dt ? "--dt" : model.path);
+  problem.grid = StepGrid(dt, duration, overrides.max_steps, overrides.dt ? names.dt : model.path,
+                          names.max_steps);
 }
 
 }  // namespace
@@ -423,9 +425,15 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
                      "bearing carries the weight; leave one of the two out");
   }
   if (overrides.fixed_base && overrides.trial_displacement) {
-    throw InputError({"--trial-displacement (trial_displacement)"},
-                     "sets where the isolated periods are read, and the run is on a fixed base "
-                     "(--fixed-base, fixed_base), which has none: leave one of the two out");
+    throw InputError({overrides.names.trial_displacement},
+                     fmt::format("sets where the isolated periods are read, and the run is on a "
+                                 "fixed base ({}), which has none: leave one of the two out",
+                                 overrides.names.fixed_base));
+  }
+  if (overrides.fixed_base && model.structure &&
+      model.structure->kind == model::StructureSection::Kind::kSdof) {
+    throw InputError({overrides.names.fixed_base},
+                     "applies to a building on isolators; an SDOF has no base to hold");
   }
   structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
   // The superstructure on a fixed base, for its periods: the run's own structure, or built once

@@ -37,9 +37,11 @@ inline constexpr std::int64_t kDefaultMaxSteps = 10'000'000;
 inline constexpr double kAutomaticFreeVibrationPeriods = 5.0;
 
 // The grid of `duration` in steps of `dt`, the count taken in 64 bits. Throws InputError at
-// `where` (the file or option that set dt or the duration) when it exceeds `max_steps`.
+// `where` (the file or option that set dt or the duration) when it exceeds `max_steps`, naming
+// `raise_with` (how the caller raises the limit; empty: it cannot).
 integrators::TimeGrid StepGrid(double dt, double duration, std::int64_t max_steps,
-                               const std::string& where);
+                               const std::string& where,
+                               const std::string& raise_with = "isolab run --max-steps N");
 
 // A record component replacing the model's ground motion.
 struct RecordOverride {
@@ -54,6 +56,14 @@ struct RecordOverride {
   std::optional<model::ScaleTarget> target{};
   std::string units_given_by = "--units";  // who gives `units` and `dt`, for messages
   std::string dt_given_by = "--record-dt";
+};
+
+// How the caller names the overrides in its messages: the command line's options (the default),
+// or the Python module's keywords. An empty max_steps: the caller has no way to raise the limit.
+struct OverrideNames {
+  std::string dt = "--dt", trial_displacement = "--trial-displacement",
+              free_vibration = "--free-vibration", angle = "--angle", fixed_base = "--fixed-base",
+              max_steps = "isolab run --max-steps N";
 };
 
 struct RunOverrides {
@@ -74,6 +84,7 @@ struct RunOverrides {
   std::optional<double> trial_displacement;  // model length; default 0.1 m
   std::optional<model::FreeVibration> free_vibration;  // replaces analysis.free_vibration
   std::int64_t max_steps = kDefaultMaxSteps;           // the most analysis steps (StepGrid)
+  OverrideNames names;
 };
 
 struct Problem {
