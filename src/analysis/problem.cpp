@@ -430,12 +430,8 @@ Problem Prepare(const model::ModelFile& model, const RunOverrides& overrides) {
                                  "fixed base ({}), which has none: leave one of the two out",
                                  overrides.names.fixed_base));
   }
-  if (overrides.fixed_base && model.structure &&
-      model.structure->kind == model::StructureSection::Kind::kSdof) {
-    throw InputError({overrides.names.fixed_base},
-                     "applies to a building on isolators; an SDOF has no base to hold");
-  }
-  structure::LaidOutStructure built = model::BuildStructure(model, overrides.fixed_base);
+  structure::LaidOutStructure built =
+      model::BuildStructure(model, overrides.fixed_base, overrides.names.fixed_base);
   // The superstructure on a fixed base, for its periods: the run's own structure, or built once
   // more (an SDOF and a slab on isolators have none).
   std::optional<structure::LaidOutStructure> fixed_base;

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
+#include <string_view>
 #include <vector>
 
 #include "common_options.h"
@@ -33,6 +34,14 @@ void RegisterBoundsCommand(CLI::App& app, BoundsOptions& o) {
   AddQuietFlag(command, &o.quiet, "Print nothing");
 }
 
+namespace {
+
+// How an OpenSees export's heading (its first line, after "# ") ends: the mark of a file `isolab
+// bounds` wrote, as kBoundModelHeader is the bound models'.
+constexpr std::string_view kExportMark = "(isolab bounds)";
+
+}  // namespace
+
 void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
   const model::ModelFile model = model::LoadModelFile(o.model);
   const std::filesystem::path folder(o.output);
@@ -50,7 +59,7 @@ void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
     if (!o.opensees) continue;
     const model::OpenSeesExport exported = model::ExportToOpenSees(
         model::LoadModelText(bound.text, path),
-        fmt::format("{} bound of {} (isolab bounds)", bound.bound, o.model));
+        fmt::format("{} bound of {} {}", bound.bound, o.model, kExportMark));
     if (!exported.refused.empty()) {
       throw InputError({o.model}, fmt::format("--opensees: the {} bound's bearings cannot be "
                                               "exported to OpenSees: {}",
@@ -74,7 +83,7 @@ void RunBoundsCommand(const BoundsOptions& o, std::ostream& out) {
     std::string first;
     if (!existing || !std::getline(existing, first)) continue;  // not there (or empty)
     const bool ours = first.starts_with(model::kBoundModelHeader) ||
-                      (first.starts_with("# ") && first.ends_with("(isolab bounds)"));
+                      (first.starts_with("# ") && first.ends_with(kExportMark));
     if (!ours) {
       throw InputError({path},
                        "exists, and isolab bounds did not write it: choose another "

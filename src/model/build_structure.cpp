@@ -81,7 +81,8 @@ void AddAxialLoads(const ModelFile& model, structure::LaidOutStructure* built) {
   }
 }
 
-structure::LaidOutStructure BuildLaidOut(const ModelFile& model, bool fixed_base) {
+structure::LaidOutStructure BuildLaidOut(const ModelFile& model, bool fixed_base,
+                                         const std::string& fixed_base_key) {
   if (!model.structure) {
     throw InputError({model.path},
                      "no structure section: nothing to analyse in time (give structure or plan)");
@@ -91,7 +92,7 @@ structure::LaidOutStructure BuildLaidOut(const ModelFile& model, bool fixed_base
     switch (section.kind) {
       case StructureSection::Kind::kSdof: {
         if (fixed_base) {
-          throw InputError({"--fixed-base"},
+          throw InputError({fixed_base_key},
                            "applies to a building on isolators; an SDOF has no base to hold");
         }
         double c = section.damping_coefficient;
@@ -123,8 +124,9 @@ structure::LaidOutStructure BuildLaidOut(const ModelFile& model, bool fixed_base
 
 }  // namespace
 
-structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base) {
-  structure::LaidOutStructure built = BuildLaidOut(model, fixed_base);
+structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base,
+                                           const std::string& fixed_base_key) {
+  structure::LaidOutStructure built = BuildLaidOut(model, fixed_base, fixed_base_key);
   if (model.axial_load && built.layout.isolated()) AddAxialLoads(model, &built);
   return built;
 }

@@ -361,8 +361,6 @@ void ReadOrientations(const YamlReader& reader, const YAML::Node& suite, DesignF
   }
 }
 
-// The accidental eccentricity and the limits the checks compare with.
-
 // Whether any isolator's laws include an HDR bearing, in one direction or in plan.
 bool HasHdrBearing(const ModelFile& model) {
   const auto hdr = [](const hysteresis::LawParameters& law) {
@@ -381,6 +379,7 @@ bool HasHdrBearing(const ModelFile& model) {
   return false;
 }
 
+// The accidental eccentricity and the limits the checks compare with.
 void ReadEccentricityAndLimits(const YamlReader& reader, const YAML::Node& root,
                                DesignFile& design) {
   const int directions = Directions(design.model);

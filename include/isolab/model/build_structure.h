@@ -13,9 +13,10 @@ namespace isolab::model {
 
 // `fixed_base`: the superstructure without its isolation, the base held. With axial_load, the
 // friction pendulum bearings take their axial loads (structure/axial_load.h). Throws InputError
-// (naming the model) for a model without a structure section, for `fixed_base` on an SDOF, and
-// for a description the builder refuses.
-structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base = false);
+// (naming the model) for a model without a structure section, for `fixed_base` on an SDOF (named
+// `fixed_base_key`, as the caller names that option), and for a description the builder refuses.
+structure::LaidOutStructure BuildStructure(const ModelFile& model, bool fixed_base = false,
+                                           const std::string& fixed_base_key = "--fixed-base");
 
 // The horizontal directions the model's structure moves in, as BuildStructure lays it out: 1, or
 // 2 for a building in plan (whose levels also rotate); 1 without a structure section.
