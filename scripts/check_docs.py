@@ -35,7 +35,8 @@ marker: one the checker does not run says why, and the checker prints it:
     <!-- table from: callgrind of ... | not checked: instruction counts of one machine -->
 
 `opt-in:` tables run only with `--opt-in` (slow runs, or data a clone lacks); `not checked:` ones
-never (measurements of one machine, reference values, outputs of tests). `--update` rewrites the
+never (measurements of one machine, reference values). A table a test measures is printed by the
+test itself and read back by scripts/doc_tables/test_printout.py. `--update` rewrites the
 checked cells of each page from what the commands print (then read the diff, and the prose).
 
 Usage: check_docs.py --isolab BUILD/isolab [--root REPO] [--opt-in] [--update] [PAGE.md ...]

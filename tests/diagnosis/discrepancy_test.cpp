@@ -17,6 +17,7 @@
 #include <random>
 
 #include "diagnosis/friction_damper_case.h"
+#include "doc_table_row.h"
 #include "isolab/identification/fit.h"
 #include "isolab/identification/synthetic_tests.h"
 
@@ -110,12 +111,19 @@ TEST(NoiseFloor, TheSameDataAt1024And128HzHaveTheSameFloor) {
   const double force_1024 = Floor(at_1024, Read::kForce), force_128 = Floor(at_128, Read::kForce);
   const double second_1024 = Floor(at_1024, Read::kSecondDifferences);
   const double second_128 = Floor(at_128, Read::kSecondDifferences);
-  std::printf(
-      "noise floor, %%, at 1024 and 128 Hz: the truth leaves %.4g and %.4g; read above the "
-      "response from the truth's residual %.4g and %.4g, from the force %.4g and %.4g; "
-      "from second differences %.3g and %.3g\n",
-      100 * noise_1024, 100 * noise_128, 100 * residual_1024, 100 * residual_128, 100 * force_1024,
-      100 * force_128, 100 * second_1024, 100 * second_128);
+  // docs/diagnosis.md quotes this table (scripts/doc_tables/test_printout.py).
+  const auto percent = [](double e2, int digits) {
+    return isolab::testing::Significant(100 * e2, digits) + " %";
+  };
+  isolab::testing::PrintTableHeader({"", "1024 Hz", "128 Hz"});
+  isolab::testing::PrintTableRow(
+      {"e^2 the truth leaves (the noise's)", percent(noise_1024, 4), percent(noise_128, 4)});
+  isolab::testing::PrintTableRow({"floor read above the response, from the truth's residual",
+                                  percent(residual_1024, 4), percent(residual_128, 4)});
+  isolab::testing::PrintTableRow({"the same from the force (harmonic lines in the band)",
+                                  percent(force_1024, 4), percent(force_128, 4)});
+  isolab::testing::PrintTableRow({"from the force's second differences (the estimator before)",
+                                  percent(second_1024, 3), percent(second_128, 2)});
   // The same at both rates, and the noise's, read from the residual a diagnosis ends with.
   EXPECT_LT(std::max(residual_1024, residual_128) / std::min(residual_1024, residual_128), 1.2);
   EXPECT_NEAR(residual_1024 / noise_1024, 1.0, 0.15);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "doc_table_row.h"
 #include "integrators/jacobian_check.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
@@ -25,6 +26,7 @@ using hysteresis::ParameterForm;
 
 struct Device {
   std::string name;
+  std::string description;  // as docs/bearings.md's table names it
   LawType type;
   std::vector<double> mechanical;
 };
@@ -35,18 +37,30 @@ void PrintTo(const Device& d, std::ostream* out) { *out << d.name; }
 std::vector<Device> Devices() {
   const double no = NAN;
   return {
-      {"friction_pendulum", LawType::kFrictionPendulum, {735, 2236, 0.5, 0.06, no, no, no}},
+      {"friction_pendulum",
+       "friction pendulum, `mu` = 0.06",
+       LawType::kFrictionPendulum,
+       {735, 2236, 0.5, 0.06, no, no, no}},
       {"friction_pendulum_mu_of_v",
+       "friction pendulum, `mu(v)` 0.03-0.07",
        LawType::kFrictionPendulum,
        {735, 2236, 0.5, no, 0.03, 0.07, 0.02}},
-      {"lead_rubber", LawType::kLeadRubber, {40, 0.3, 3, no, no, no, no, no, no, no}},
+      {"lead_rubber",
+       "lead-rubber, no heating",
+       LawType::kLeadRubber,
+       {40, 0.3, 3, no, no, no, no, no, no, no}},
       {"lead_rubber_adiabatic",
+       "lead-rubber, adiabatic",
        LawType::kLeadRubber,
        {40, 0.3, 3, 75, 150, 1.456e-3, no, no, no, no}},
       {"lead_rubber_conduction",
+       "lead-rubber, conduction",
        LawType::kLeadRubber,
        {40, 0.3, 3, 75, 150, 1.456e-3, 0.05, 14.1, 27, no}},
-      {"hdr_bearing", LawType::kHdrBearing, {4e-4, 115000, 100, 0.15, 1.5, no}},
+      {"hdr_bearing",
+       "HDR from design data",
+       LawType::kHdrBearing,
+       {4e-4, 115000, 100, 0.15, 1.5, no}},
   };
 }
 
@@ -78,7 +92,15 @@ Excitation Shaking() {
   return excitation;
 }
 
-class BearingBuilding : public ::testing::TestWithParam<Device> {};
+class BearingBuilding : public ::testing::TestWithParam<Device> {
+ public:
+  // docs/bearings.md quotes IdaAgreesWithNewmark's rows (scripts/doc_tables/test_printout.py).
+  static void SetUpTestSuite() {
+    isolab::testing::PrintTableHeader({"device", "peak isolator [mm]",
+                                       "max \\|IDA - Newmark\\| [mm]", "max force difference [kN]",
+                                       "events", "energy balance IDA / Newmark"});
+  }
+};
 
 TEST_P(BearingBuilding, JacobianIsTheDerivativeOfTheResidual) {
   const structure::Structure building = Building(GetParam());
@@ -106,11 +128,12 @@ TEST_P(BearingBuilding, IdaAgreesWithNewmark) {
   const double force_peak = ida.connection_force.col(0).cwiseAbs().maxCoeff();
   const double force_difference =
       (ida.connection_force.col(0) - newmark.connection_force.col(0)).cwiseAbs().maxCoeff();
-  std::printf(
-      "%s: peak isolator displacement %.3f mm, max |IDA - Newmark(0.0001 s)| %.2e mm; peak "
-      "force %.2f kN, difference %.2e kN; %ld events; energy balance IDA %.1e, Newmark %.1e\n",
-      device.name.c_str(), peak, difference, force_peak, force_difference, ida_summary.events,
-      ida_summary.energy_balance_error, newmark_summary.energy_balance_error);
+  isolab::testing::PrintTableRow(
+      {device.description, isolab::testing::Fixed(peak, 2),
+       isolab::testing::Scientific(difference, 1), isolab::testing::Scientific(force_difference, 1),
+       std::to_string(ida_summary.events),
+       isolab::testing::Scientific(ida_summary.energy_balance_error, 1) + " / " +
+           isolab::testing::Scientific(newmark_summary.energy_balance_error, 1)});
   EXPECT_GT(peak, 30.0);  // the bearing is well past yield
   EXPECT_GT(ida_summary.events, 4);
   // Measured: displacements within 1e-6 and forces within 2e-5 of their peaks.
@@ -134,6 +157,7 @@ INSTANTIATE_TEST_SUITE_P(Devices, BearingBuilding, ::testing::ValuesIn(Devices()
 // Newmark converges to IDA.
 TEST(BearingBuildingLightCore, NewmarkClosesItsEnergyBalanceAndConvergesToIda) {
   const Device device{"lead_rubber_light_core",
+                      "lead-rubber, a core a million times lighter",
                       LawType::kLeadRubber,
                       {40, 0.3, 3, 75, 150, 1.456e-9, 0.05, 14.1, 27, NAN}};
   const structure::Structure building = Building(device);

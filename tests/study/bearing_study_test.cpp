@@ -7,7 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <utility>
 
+#include "doc_table_row.h"
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/hysteresis/cyclic_test.h"
@@ -53,6 +56,7 @@ TEST(BearingStudy, EveryVariantClosesItsEnergyBalanceUnderEveryRecord) {
   }
 }
 
+// docs/bearings.md quotes this test's rows (scripts/doc_tables/test_printout.py).
 TEST(BearingStudy, IdaAgreesWithNewmarkOnTheHeatedLeadRubberAndTheFrictionPendulum) {
   const model::StudyFile study = BearingStudy();
   const model::StudyRecord* pulse = nullptr;
@@ -60,23 +64,29 @@ TEST(BearingStudy, IdaAgreesWithNewmarkOnTheHeatedLeadRubberAndTheFrictionPendul
     if (record.name == "pulse_tp2") pulse = &record;
   }
   ASSERT_NE(pulse, nullptr);
-  for (const model::StudyVariant& variant : study.variants) {
-    if (variant.name != "lead_rubber" && variant.name != "friction_pendulum") continue;
-    model::AnalysisSection ida = variant.model.analysis;
+  const std::pair<std::string, std::string> compared[] = {
+      {"lead_rubber", "heated lead-rubber"}, {"friction_pendulum", "friction pendulum"}};
+  isolab::testing::PrintTableHeader({"variant", "Newmark peak [mm]", "IDA peak [mm]", "difference",
+                                     "energy balance Newmark / IDA"});
+  for (const auto& [name, description] : compared) {
+    const auto variant = std::find_if(study.variants.begin(), study.variants.end(),
+                                      [&](const auto& v) { return v.name == name; });
+    ASSERT_NE(variant, study.variants.end()) << name;
+    model::AnalysisSection ida = variant->model.analysis;
     ida.integrator = model::AnalysisSection::Integrator::kIda;
     ida.ida.relative_tolerance = 1e-8;
     ida.ida.absolute_tolerance = 1e-8;
     integrators::RunSummary newmark_summary, ida_summary;
-    const auto a = RunVariant(variant, *pulse, variant.model.analysis, &newmark_summary);
-    const auto b = RunVariant(variant, *pulse, ida, &ida_summary);
+    const auto a = RunVariant(*variant, *pulse, variant->model.analysis, &newmark_summary);
+    const auto b = RunVariant(*variant, *pulse, ida, &ida_summary);
     ASSERT_TRUE(ida_summary.ok()) << ida_summary.message;
     const double peak_newmark = a.displacement.col(0).cwiseAbs().maxCoeff();
     const double peak_ida = b.displacement.col(0).cwiseAbs().maxCoeff();
-    std::printf(
-        "%s under pulse_tp2 x0.75: peak isolator displacement Newmark (dt 0.005 s) %.3f "
-        "mm, IDA %.3f mm (%.3f %%); energy balance Newmark %.1e, IDA %.1e\n",
-        variant.name.c_str(), peak_newmark, peak_ida, 100 * (peak_newmark / peak_ida - 1),
-        newmark_summary.energy_balance_error, ida_summary.energy_balance_error);
+    isolab::testing::PrintTableRow(
+        {description, isolab::testing::Fixed(peak_newmark, 3), isolab::testing::Fixed(peak_ida, 3),
+         isolab::testing::Scientific(std::abs(peak_newmark / peak_ida - 1), 0),
+         isolab::testing::Scientific(newmark_summary.energy_balance_error, 1) + " / " +
+             isolab::testing::Scientific(ida_summary.energy_balance_error, 1)});
     EXPECT_NEAR(peak_newmark / peak_ida, 1.0, 1e-3);  // measured: 1e-5 and 5e-5
     EXPECT_LT(ida_summary.energy_balance_error, 1e-5);
   }
