@@ -1,6 +1,7 @@
 // isolab.spectrum: `isolab spectrum` (elastic and constant-ductility response spectra of a
 // record, or a pair's RotD50/RotD100) with the command line's options as keyword arguments; the
 // spectra as numpy arrays named as in the HDF5 spectrum file (io/spectrum_file.h).
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -120,6 +121,12 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
                   double scale, const std::optional<std::string>& units,
                   std::optional<double> record_dt, const std::string& length_unit,
                   double max_steps) {
+  for (std::size_t k = 0; k < periods.size(); ++k) {
+    if (!(periods[k] > 0.0) || !std::isfinite(periods[k])) {
+      throw InputError({"periods"},
+                       fmt::format("periods[{}] = {:g} must be finite and > 0 (s)", k, periods[k]));
+    }
+  }
   for (const double zeta : damping) {
     if (!(zeta >= 0.0 && zeta < 1.0)) {
       throw InputError({"damping"}, "damping ratios must be in [0, 1) (e.g. 0.05 for 5 %)");
@@ -135,6 +142,9 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
                      "ductility");
   }
   if (points_per_period < 1) throw InputError({"points_per_period"}, "must be >= 1");
+  if (!(max_steps >= 1.0) || !std::isfinite(max_steps)) {
+    throw InputError({"max_steps"}, fmt::format("{:g} must be finite and >= 1", max_steps));
+  }
   if (!(scale > 0.0) || !std::isfinite(scale)) {
     throw InputError({"scale"}, "must be finite and > 0");
   }

@@ -79,6 +79,22 @@ def test_spectrum_needs_its_periods_and_damping_when_given(repo):
         isolab.spectrum(record, damping=None)
 
 
+@pytest.mark.parametrize("period", [-1.0, 0.0, float("nan"), float("inf")])
+def test_a_spectrums_periods_are_refused_by_name_not_blamed_on_the_record(repo, period):
+    record = repo / "ground_motions/elcentro_1940_ns.at2"
+    with pytest.raises(isolab.InputError) as refused:
+        isolab.spectrum(record, periods=[0.5, period])
+    assert str(refused.value).startswith("periods: periods[1] = ")
+    assert "elcentro" not in str(refused.value)
+
+
+@pytest.mark.parametrize("max_steps", [float("nan"), float("inf"), 0, -1])
+def test_a_spectrums_step_limit_is_a_finite_count(repo, max_steps):
+    with pytest.raises(isolab.InputError, match="max_steps: .* must be finite and >= 1"):
+        isolab.spectrum(repo / "ground_motions/elcentro_1940_ns.at2", periods=[1.0],
+                        max_steps=max_steps)
+
+
 def test_worker_counts_are_bounded_as_on_the_command_line(repo, tmp_path):
     with pytest.raises(isolab.InputError, match=r"jobs: 1000000 workers on \d+ hardware threads"):
         isolab.compare(repo / "models/studies/five_story_bearings.yaml", output=tmp_path / "c",

@@ -176,6 +176,15 @@ double TargetScale(const model::ScaleTarget& target, const model::GroundMotionSe
   return target.value / measured;
 }
 
+// A record file that is not there is named where the model (or the option) gives it.
+void RequireRecordFile(const model::GroundMotionSection& motion) {
+  std::error_code error;
+  if (std::filesystem::is_regular_file(motion.file, error)) return;
+  const std::string key = motion.location.file == motion.key ? "" : motion.key + ".file: ";
+  throw InputError(motion.location, fmt::format("{}'{}' is not a file{}", key, motion.file,
+                                                error ? " (" + error.message() + ")" : ""));
+}
+
 }  // namespace
 
 io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
@@ -184,6 +193,7 @@ io::AppliedRecord ApplyRecord(const model::GroundMotionSection& motion,
                               const io::Record* data) {
   // Records keep their step in seconds; the model gives a single column's dt in its own unit.
   const double dt_seconds = motion.dt * units.SiFactor(dimension::kTime);
+  if (!data) RequireRecordFile(motion);
   const io::Record record =
       data ? *data
            : io::ReadRecord(motion.file, {motion.units, dt_seconds, units_given_by, dt_given_by});

@@ -17,8 +17,8 @@ BuildingFitSpecFile LoadBuildingFitSpec(const std::string& path) {
                     "substeps", "priors"});
   BuildingFitSpecFile spec;
   spec.path = path;
-  const std::string model = reader.ReadString(reader.Require(root, "", "model"), "model");
-  spec.model = (std::filesystem::path(path).parent_path() / model).string();
+  spec.model = reader.ReadFilePath(reader.Require(root, "", "model"), "model",
+                                   std::filesystem::path(path).parent_path());
   if (const YAML::Node input = root["input"]) {
     const std::string word = reader.ReadString(input, "input");
     if (word != "table" && word != "force") {

@@ -80,8 +80,8 @@ spectra::TargetSpectrum ReadTarget(const YamlReader& reader, const YAML::Node& n
       s.importance = ReadPositive(reader, e, path, "importance", dimension::kNone, units);
     target = s;
   } else {
-    const std::string file = reader.ReadString(node["file"], "target.file");
-    target = io::ReadTargetSpectrumCsv((directory / file).lexically_normal().string());
+    const std::string file = reader.ReadFilePath(node["file"], "target.file", directory);
+    target = io::ReadTargetSpectrumCsv(fs::path(file).lexically_normal().string());
   }
   try {
     spectra::Validate(target);
@@ -161,7 +161,7 @@ void ReadDesignModel(const YamlReader& reader, const YAML::Node& root, const fs:
                      DesignFile& design) {
   const YAML::Node model_node = reader.Require(root, "", "model");
   design.model_path =
-      (directory / reader.ReadString(model_node, "model")).lexically_normal().string();
+      fs::path(reader.ReadFilePath(model_node, "model", directory)).lexically_normal().string();
   design.model = LoadModelFile(design.model_path);
   if (!design.model.structure) {
     reader.Fail(model_node, "model",

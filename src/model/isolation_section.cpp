@@ -137,8 +137,7 @@ hysteresis::ParallelAssembly ReadIsolation(const YamlReader& reader, const YAML:
   // the file that names it; in the same units, since its numbers are read in its own.
   if (isolation["components"]) reader.Fail(isolation, path, "give components or file, not both");
   const std::string file_path = ChildPath(path, "file");
-  const std::string relative = reader.ReadString(isolation["file"], file_path);
-  const std::string other = (directory / relative).string();
+  const std::string other = reader.ReadFilePath(isolation["file"], file_path, directory);
   const IncludeGuard guard(reader.file());
   if (const std::string cycle = CycleTo(other); !cycle.empty()) {
     reader.Fail(isolation["file"], file_path,

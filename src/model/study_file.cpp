@@ -48,7 +48,7 @@ void CheckName(const YamlReader& reader, const YAML::Node& node, const std::stri
 // A model file named at `node`, relative to the study's folder.
 std::string ModelPath(const YamlReader& reader, const YAML::Node& node, const std::string& path,
                       const fs::path& directory) {
-  return (directory / reader.ReadString(node, path)).lexically_normal().string();
+  return fs::path(reader.ReadFilePath(node, path, directory)).lexically_normal().string();
 }
 
 // What a model moves in, for messages.

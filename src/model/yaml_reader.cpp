@@ -104,6 +104,18 @@ std::string_view NearestWord(std::string_view word, std::span<const std::string_
   return best;
 }
 
+std::string YamlReader::ReadFilePath(const YAML::Node& node, const std::string& path,
+                                     const std::filesystem::path& directory) const {
+  const std::string file = (directory / ReadString(node, path)).string();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) {
+    Fail(node, path,
+         fmt::format("'{}' is not a file{}", file,
+                     error ? fmt::format(" ({})", error.message()) : std::string()));
+  }
+  return file;
+}
+
 YAML::Node YamlReader::LoadFile(std::string* text) const {
   const std::string content = ReadText();
   if (text != nullptr) *text = content;

@@ -4,6 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <initializer_list>
 #include <span>
 #include <string>
@@ -52,6 +53,10 @@ class YamlReader {
                       const UnitSystem& units) const;
   int ReadInteger(const YAML::Node& node, const std::string& path) const;
   std::string ReadString(const YAML::Node& node, const std::string& path) const;
+  // A file this one names at `node`, resolved against `directory` (this file's folder); one that
+  // is not a regular file is refused here, so that the message names this file's line and key.
+  std::string ReadFilePath(const YAML::Node& node, const std::string& path,
+                           const std::filesystem::path& directory) const;
 
  private:
   std::string file_;

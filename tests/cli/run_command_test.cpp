@@ -243,7 +243,10 @@ TEST(RunCommand, BadInputExitsWithCodeTwoAndWritesNothing) {
       {"bad_wrong_unit.yaml", "structure.mass: 'kN' is a force unit, expected mass"},
       {"bad_negative_mass.yaml", "structure.mass: -0.0317 (must be > 0)"},
       {"bad_zero_dt.yaml", "analysis.dt: 0 (must be > 0)"},
-      {"bad_unreadable_record.yaml", "missing_record.at2: cannot open"},
+      // A record that is not there is named at the model's key, with its path.
+      {"bad_unreadable_record.yaml",
+       "bad_unreadable_record.yaml:7:18: excitation.ground_motion.file: '"},
+      {"bad_unreadable_record.yaml", "missing_record.at2' is not a file"},
       {"bad_nan_record.yaml", "bad_record_nan.at2:6: 'nan' is not a finite number"},
       {"bad_empty_record.yaml", "bad_record_empty.txt: the record is empty"},
       {"bad_unknown_integrator.yaml",

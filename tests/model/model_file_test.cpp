@@ -207,6 +207,14 @@ TEST(ModelFile, LeadCoreMaterialDataOutsideWhatMetalsHaveAreRefused) {
 // A model whose isolation `file` names itself, or A -> B -> A, would recurse until
 // the stack overflowed. The file that closes the cycle is refused at its `file` key, naming the
 // chain; the same file spelled another way ("./a.yaml") is still the same file.
+// A file that is not there is refused at the key that names it: the model's line, not only the
+// missing path.
+TEST(ModelFile, AnIsolationFileThatIsNotThereIsRefusedAtItsKey) {
+  ExpectError("bad_include_missing.yaml", ":3:19:",
+              "isolation.file: '" + DataFile("no_such_isolation.yaml") +
+                  "' is not a file (No such file or directory)");
+}
+
 TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {
   ExpectError("bad_include_self.yaml", ":3:19:", "isolation.file: the files include each other: ");
   const std::string message = ErrorOf("bad_include_cycle_a.yaml");
@@ -220,9 +228,8 @@ TEST(ModelFile, IsolationFilesThatIncludeEachOtherAreRefused) {
 TEST(ModelFile, ADirectoryIsAnInputErrorNotACrash) {
   // The fuzz target for study files found it: a directory opened as a stream and its first read
   // threw ios_base::failure, reported as "internal error" with exit code 1.
-  EXPECT_NE(ErrorOf("bad_include_directory.yaml").find(": is a directory, not a file"),
-            std::string::npos)
-      << ErrorOf("bad_include_directory.yaml");
+  ExpectError("bad_include_directory.yaml",
+              ":3:9:", "isolation.file: '" + DataFile(".") + "' is not a file");
   EXPECT_THROW(LoadModelFile(std::string(ISOLAB_TEST_DATA_DIR) + "/io/data"), InputError);
 }
 

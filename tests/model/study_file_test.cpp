@@ -264,5 +264,20 @@ TEST_F(StudyFileTest, VariantIsolationErrorsPointIntoTheStudy) {
   EXPECT_EQ(ErrorOf(study).rfind(path + ":1:1: missing key 'isolation'", 0), 0u) << ErrorOf(study);
 }
 
+// A building or an isolation file that is not there is refused at the study's key that names it.
+TEST_F(StudyFileTest, AFileThatIsNotThereIsRefusedAtTheStudysKey) {
+  const std::string study = Write("missing_building.yaml",
+                                  "building: no_such_building.yaml\n" + kRecords + "scales: [1]\n");
+  EXPECT_EQ(ErrorOf(study).rfind(study + ":1:11: building: '", 0), 0u) << ErrorOf(study);
+  EXPECT_NE(ErrorOf(study).find("no_such_building.yaml' is not a file"), std::string::npos);
+  ExpectError("variants: [{name: a, isolation: {file: no_such_isolation.yaml}}]\n" + kRecords +
+                  "scales: [1]\n",
+              ":2:40:", "variants[0].isolation.file: '");
+  EXPECT_NE(ErrorOf(Study("variants: [{name: a, isolation: {file: no_such_isolation.yaml}}]\n" +
+                          kRecords + "scales: [1]\n"))
+                .find("no_such_isolation.yaml' is not a file"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace isolab::model
