@@ -83,6 +83,20 @@ def _whole_number(name, value):
     return int(value)
 
 
+def _count(name, value, low, high):
+    """A whole number in [low, high] (a seed, a number of cycles or workers), else InputError
+    naming it, as the command line refuses it rather than wrapping or truncating it."""
+    value = _whole_number(name, value)
+    if not low <= value <= high:
+        raise InputError(f"{name}: {value} (must be a whole number in [{low}, {high}])")
+    return value
+
+
+def _optional(check, name, value, *bounds):
+    """check(name, value, *bounds) for a given value; None (left out) stays None."""
+    return None if value is None else check(name, value, *bounds)
+
+
 def _whole_numbers(name, value):
     """None, a whole number or a non-empty sequence of them, as a list of ints (cycles)."""
     if value is None:
@@ -118,14 +132,25 @@ def run(model, record=None, h2=None, *, angle=None, units=None, record_dt=None, 
     the failure) unless check=False. Each plausibility warning of the run (result.warnings) is
     issued as an IsolabWarning.
     """
-    if scale is not None:
-        scale = _positive_finite("scale", scale)
-    if angle is not None:
-        angle = _finite("angle", angle)
-    samples = 0 if samples is None else _whole_number("samples", samples)
-    if seed is not None and not samples:
+    scale = _optional(_positive_finite, "scale", scale)
+    angle = _optional(_finite, "angle", angle)
+    # The run's own checks say what a step or a displacement must be; here, only that each is a
+    # finite number (True is not a step of 1, nor "0.5" one of 0.5).
+    dt = _optional(_finite, "dt", dt)
+    record_dt = _optional(_positive_finite, "record_dt", record_dt)
+    trial_displacement = _optional(_finite, "trial_displacement", trial_displacement)
+    atol = _optional(_positive_finite, "atol", atol)
+    if rtol is not None and not 1e-14 <= _finite("rtol", rtol) <= 0.09:
+        raise InputError(f"rtol: {rtol:g} (must be in [1e-14, 0.09])")
+    units = _optional(_word, "units", units)
+    samples = _optional(_whole_number, "samples", samples)
+    if samples is not None and not 2 <= samples <= 100000:
+        raise InputError(f"samples: {samples} (draws a band: 2 or more parameter sets, at most "
+                         "100000)")
+    if seed is not None and samples is None:
         raise InputError("seed: seeds the parameter sets samples= draws: give samples")
-    seed = 1 if seed is None else _whole_number("seed", seed)
+    seed = 1 if seed is None else _count("seed", seed, 0, 2**32 - 1)
+    samples = samples or 0
     result = _run(_model(model), record, h2, angle=angle, units=units, record_dt=record_dt,
                   scale=scale, dt=dt, free_vibration=free_vibration, fixed_base=fixed_base,
                   trial_displacement=trial_displacement, integrator=integrator, rtol=rtol,
@@ -170,6 +195,10 @@ def cyclic(model, amplitude=None, *, period=None, cycles=None, steps_per_cycle=N
     error_over_range: over its peak-to-peak range, peak_measured, peak_modelled) when the
     path has a force, "dissipated", "peak_force", "peak_displacement", "cycles" (an orbit's).
     """
+    cycles = _optional(_count, "cycles", cycles, 1, 2**31 - 1)
+    steps_per_cycle = _optional(_count, "steps_per_cycle", steps_per_cycle, 1, 2**31 - 1)
+    noise = _finite("noise", noise)
+    seed = _optional(_count, "seed", seed, 0, 2**32 - 1)
     given = {"sequential": sequential, "test_data": test_data is not None, "noise": noise != 0.0,
              "seed": seed is not None, "isolator": isolator is not None, "uncoupled": uncoupled,
              "force_unit": force_unit is not None, "length_unit": length_unit is not None,
@@ -243,8 +272,11 @@ def spectrum(record, h2=None, *, periods=None, damping=0.05, ductility=None, alp
         raise InputError("damping: None (give a ratio, e.g. 0.05, or a list of them)")
     return _spectrum(record, h2, _spectrum_list(periods, "periods", _parse_periods) or
                      _default_periods(), _spectrum_list(damping, "damping"),
-                     _spectrum_list(ductility, "ductility"), alpha, points_per_period, scale, units, record_dt,
-                     length_unit, max_steps)
+                     _spectrum_list(ductility, "ductility"), _finite("alpha", alpha),
+                     _count("points_per_period", points_per_period, 1, 2**31 - 1),
+                     _positive_finite("scale", scale), _optional(_word, "units", units),
+                     _optional(_positive_finite, "record_dt", record_dt),
+                     _word("length_unit", length_unit), _number("max_steps", max_steps))
 
 
 def _one_of(first, first_name, building, what):
@@ -410,7 +442,8 @@ def compare(study, *, output=None, jobs=0, quiet=False, free_vibration=None, run
     its four (resultant isolator displacement and base shear, floor rotation, torsional
     amplification), a one-direction study's its five; "units" lists them.
     """
-    return _compare(_path("study", study), _optional_path("output", output), jobs, quiet,
+    return _compare(_path("study", study), _optional_path("output", output),
+                    _count("jobs", jobs, 0, 2**31 - 1), quiet,
                     None if free_vibration is None else str(free_vibration),
                     None if runs is None else str(runs))
 
@@ -448,7 +481,8 @@ def design(design_file, *, output=None, jobs=0, quiet=False):
     The folder must be new, empty, or an earlier design's (design_manifest.txt lists what it
     wrote); an earlier design is kept untouched until this one completes.
     """
-    result = _design(_path("design_file", design_file), _optional_path("output", output), jobs,
+    result = _design(_path("design_file", design_file), _optional_path("output", output),
+                     _count("jobs", jobs, 0, 2**31 - 1),
                      quiet)
     for warning in result["warnings"]:
         warnings.warn(f"{warning['bound']}: {warning['text']} (in {warning['runs']} runs)",

@@ -16,6 +16,7 @@
 #include "isolab/analysis/run_report.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
+#include "isolab/io/output_check.h"
 #include "isolab/model/free_vibration_text.h"
 #include "model.h"
 #include "record_argument.h"
@@ -34,6 +35,9 @@ struct RunResult {
   std::vector<analysis::Series> series;
   std::optional<analysis::RunBand> band;  // samples=: the peaks' spread over drawn parameters
   unsigned seed = 1;
+  // The files the run read (the model, its isolation files, its records): save() never writes
+  // over one, as `isolab run -o` never does.
+  std::vector<std::string> inputs;
 
   analysis::RunDescription Description() const {
     return {&problem, &analysis, &summary.run, &summary.peaks, ISOLAB_VERSION, {}};
@@ -61,8 +65,8 @@ std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
   std::shared_ptr<RunResult> result;
   {
     py::gil_scoped_release release;  // a thread pool of runs scales
-    result = std::make_shared<RunResult>(
-        RunResult{analysis::Prepare(model.file(), options.overrides), analysis, {}, {}, {}, {}, 1});
+    result = std::make_shared<RunResult>(RunResult{
+        analysis::Prepare(model.file(), options.overrides), analysis, {}, {}, {}, {}, 1, {}});
     integrators::HistoryRecorder recorder = integrators::RecordHistory(
         result->problem.structure, result->problem.grid, &result->response);
     integrators::ResponseObserver* const also[] = {&recorder};
@@ -76,6 +80,15 @@ std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
     }
   }
   result->series = analysis::ResultSeries(result->problem, model::OutputSelection{});
+  result->inputs = model.file().included_files;
+  result->inputs.push_back(model.file().path);
+  for (const analysis::RecordOverride& record : options.overrides.records) {
+    if (!record.file.empty()) result->inputs.push_back(record.file);
+  }
+  if (options.overrides.records.empty()) {
+    const std::vector<std::string> records = model::RecordFiles(model.file());
+    result->inputs.insert(result->inputs.end(), records.begin(), records.end());
+  }
   return result;
 }
 
@@ -177,6 +190,7 @@ void BindRun(py::module_& module) {
       .def(
           "save",
           [](const RunResult& r, const std::filesystem::path& path) {
+            io::CheckOutputs(r.inputs, {path.string()});
             analysis::WriteResultsFile(path.string(), r.Description(), r.response);
           },
           py::arg("path"),

@@ -122,9 +122,9 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
                   std::optional<double> record_dt, const std::string& length_unit,
                   double max_steps) {
   for (std::size_t k = 0; k < periods.size(); ++k) {
-    if (!(periods[k] > 0.0) || !std::isfinite(periods[k])) {
-      throw InputError({"periods"},
-                       fmt::format("periods[{}] = {:g} must be finite and > 0 (s)", k, periods[k]));
+    if (!(periods[k] > 0.0 && periods[k] <= spectra::kMaxSpectrumPeriod)) {
+      throw InputError({"periods"}, fmt::format("periods[{}] = {:g} must be > 0 and at most {:g} s",
+                                                k, periods[k], spectra::kMaxSpectrumPeriod));
     }
   }
   for (const double zeta : damping) {
@@ -133,7 +133,9 @@ py::dict Spectrum(const py::object& record_argument, const py::object& h2_argume
     }
   }
   for (const double mu : ductility) {
-    if (!(mu >= 1.0)) throw InputError({"ductility"}, "ductilities must be >= 1");
+    if (!(mu >= 1.0) || !std::isfinite(mu)) {
+      throw InputError({"ductility"}, "ductilities must be finite and >= 1");
+    }
   }
   if (!(alpha >= 0.0 && alpha < 1.0)) throw InputError({"alpha"}, "must be in [0, 1)");
   if (alpha != 0.0 && ductility.empty()) {

@@ -79,7 +79,7 @@ def test_spectrum_needs_its_periods_and_damping_when_given(repo):
         isolab.spectrum(record, damping=None)
 
 
-@pytest.mark.parametrize("period", [-1.0, 0.0, float("nan"), float("inf")])
+@pytest.mark.parametrize("period", [-1.0, 0.0, float("nan"), float("inf"), 1e10])
 def test_a_spectrums_periods_are_refused_by_name_not_blamed_on_the_record(repo, period):
     record = repo / "ground_motions/elcentro_1940_ns.at2"
     with pytest.raises(isolab.InputError) as refused:
@@ -132,3 +132,52 @@ def test_messages_name_the_keywords_not_the_command_lines_options(repo):
             isolab.run(repo / SDOF_RUN, **keywords)
     with pytest.raises(isolab.InputError, match="choose a larger dt or a shorter duration$"):
         isolab.run(repo / SDOF_RUN, dt=1e-9)  # no --max-steps to advise: the module has none
+
+
+@pytest.mark.parametrize("keyword, value", [
+    ("dt", "0.5"), ("dt", True), ("dt", float("nan")), ("record_dt", float("nan")),
+    ("trial_displacement", float("inf")), ("trial_displacement", True), ("rtol", float("nan")),
+    ("rtol", 1e-308), ("atol", 0.0), ("units", ""), ("samples", 0), ("samples", 1.5)])
+def test_run_refuses_what_the_command_line_refuses_naming_the_keyword(repo, keyword, value):
+    # Each was passed through: True as a step of 1, nan or 1e-308 as tolerances, "" as the
+    # default units, samples=0 as no band, a string as the binding's TypeError.
+    with pytest.raises(isolab.InputError, match=f"^{keyword}: "):
+        isolab.run(repo / SDOF_RUN, **{keyword: value})
+
+
+@pytest.mark.parametrize("keyword, value", [
+    ("record_dt", float("nan")), ("record_dt", 0.0), ("units", ""), ("ductility", float("inf")),
+    ("points_per_period", 1.5), ("points_per_period", True), ("scale", True)])
+def test_spectrum_refuses_what_the_command_line_refuses_naming_the_keyword(repo, keyword, value):
+    with pytest.raises(isolab.InputError, match=f"^{keyword}: "):
+        isolab.spectrum(repo / H1, periods=[1.0], **{keyword: value})
+
+
+@pytest.mark.parametrize("keyword, value", [
+    ("cycles", 1.5), ("cycles", True), ("steps_per_cycle", float("nan")), ("noise", True),
+    ("seed", -1), ("seed", 2**32)])
+def test_cyclic_counts_and_seeds_are_whole_numbers_in_range(repo, tmp_path, keyword, value):
+    extra = {"test_data": tmp_path / "t.csv"} if keyword in ("noise", "seed") else {}
+    with pytest.raises(isolab.InputError, match=f"^{keyword}: "):
+        isolab.cyclic(repo / SDOF, 10.0, period=2.0, **extra, **{keyword: value})
+
+
+@pytest.mark.parametrize("jobs", [1.5, "2", float("nan"), -1])
+def test_a_studys_worker_count_is_a_whole_number(repo, tmp_path, jobs):
+    with pytest.raises(isolab.InputError, match="^jobs: "):
+        isolab.compare(repo / "models/studies/five_story_bearings.yaml", output=tmp_path / "s",
+                       jobs=jobs)
+    assert not (tmp_path / "s").exists()
+
+
+def test_a_results_file_is_never_saved_over_the_runs_record(repo, tmp_path):
+    record = tmp_path / "rec.at2"
+    shutil.copy(repo / H1, record)
+    before = record.read_bytes()
+    result = isolab.run(repo / SDOF_RUN, record=record)
+    renamed = tmp_path / "rec.csv"
+    record.rename(renamed)
+    result = isolab.run(repo / SDOF_RUN, record=renamed)
+    with pytest.raises(isolab.InputError, match="is an input of this command"):
+        result.save(renamed)
+    assert renamed.read_bytes() == before

@@ -296,6 +296,11 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
                                  "(a second component needs a building in plan)",
                                  KeyOf(components[1])));
   }
+  if (!overrides.records.empty() && !(std::abs(angle) <= model::kMaxRecordAngle)) {
+    throw InputError({overrides.names.angle},
+                     fmt::format("{:g} degrees (must be in [-{:g}, {:g}])", angle,
+                                 model::kMaxRecordAngle, model::kMaxRecordAngle));
+  }
   if (layout.directions == 1 && angle != 0.0) {
     throw InputError(overrides.records.empty() ? SourceLocation{model.path}
                                                : SourceLocation{overrides.names.angle},

@@ -245,10 +245,8 @@ int RunRunCommand(const RunOptions& options, std::ostream& out) {
     if (!options.record_h2.empty()) inputs.push_back(options.record_h2);
     if (!options.record_v.empty()) inputs.push_back(options.record_v);
   } else {
-    for (const model::GroundMotionSection& motion : model.excitation.ground_motion) {
-      inputs.push_back(
-          (std::filesystem::path(model.path).parent_path() / motion.file).lexically_normal());
-    }
+    const std::vector<std::string> records = model::RecordFiles(model);
+    inputs.insert(inputs.end(), records.begin(), records.end());
   }
   io::CheckOutputs(inputs, {output});
   if (options.plot) {

@@ -179,7 +179,7 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
   command->add_option("kind", o.kind, "noise (filtered white noise) or pulse (near-fault)")
       ->check(CLI::IsMember({"noise", "pulse"}));
   AddOutputOption(command, &o.output, "AT2 file to write; with --pairs, the folder")->required();
-  AddSeedOption(command, &o.noise.seed, "noise, pairs: random seed");
+  o.noise_only.push_back(AddSeedOption(command, &o.noise.seed, "noise, pairs: random seed"));
   command->add_option("--pga", o.pga, "noise: peak ground acceleration (g), (0, 10]");
   command->add_option("--duration", o.duration, "noise, pairs: duration (s), ten samples or more");
   command->add_option("--dt", o.dt, "noise, pairs: time step (s), [0.001, 0.05]");
@@ -192,21 +192,36 @@ void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
       ->delimiter(',');
   command->add_option("--tolerance", o.tolerance,
                       "pairs: largest |RotD100/target - 1| accepted over --periods; 0.1");
-  command->add_option("--site-frequency", o.noise.site_frequency,
-                      "noise: Kanai-Tajimi fg (Hz), up to a quarter of the sampling rate");
-  command->add_option("--site-damping", o.noise.site_damping, "noise: Kanai-Tajimi zg, (0, 1]");
-  command->add_option("--strong-end", o.noise.strong_end,
-                      "noise: end of the strong phase t2 (s), >= the 2 s rise");
-  command->add_option("--pulse-period", o.pulse.period,
-                      "pulse: Tp (s), ten samples or more, at most 60 s");
-  command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s), (0, 30]");
-  command->add_option("--oscillations", o.pulse.oscillations, "pulse: gamma, (1, 100]");
-  command->add_option("--phase", o.pulse.phase, "pulse: nu (rad)");
+  o.noise_only = {
+      o.noise_only[0],
+      command->add_option("--site-frequency", o.noise.site_frequency,
+                          "noise: Kanai-Tajimi fg (Hz), up to a quarter of the sampling rate"),
+      command->add_option("--site-damping", o.noise.site_damping, "noise: Kanai-Tajimi zg, (0, 1]"),
+      command->add_option("--strong-end", o.noise.strong_end,
+                          "noise: end of the strong phase t2 (s), >= the 2 s rise")};
+  o.pulse_only = {
+      command->add_option("--pulse-period", o.pulse.period,
+                          "pulse: Tp (s), ten samples or more, at most 60 s"),
+      command->add_option("--pgv", o.pulse.pgv, "pulse: peak ground velocity (m/s), (0, 30]"),
+      command->add_option("--oscillations", o.pulse.oscillations, "pulse: gamma, (1, 100]"),
+      command->add_option("--phase", o.pulse.phase, "pulse: nu (rad)")};
   AddQuietFlag(command, &o.quiet,
                "Accepted by every command (synth prints nothing but the pairs' misfits)");
 }
 
 int RunSynthCommand(const SynthOptions& o, std::ostream& out) {
+  // Options of the other kind are refused, not ignored.
+  const bool pulse = o.kind == "pulse" && !o.pairs;
+  for (const CLI::Option* option : pulse ? o.noise_only : o.pulse_only) {
+    if (option->count() > 0) {
+      throw InputError({option->get_name()},
+                       pulse ? "shapes noise (and pairs): not a pulse"
+                             : "shapes a pulse: give kind pulse (not with --pairs)");
+    }
+  }
+  if (pulse && o.pga) {
+    throw InputError({"--pga"}, "scales noise: a pulse is given by its --pgv");
+  }
   if (o.pairs) return RunPairs(o, out);
   const char* pairs_only = "matches pairs to a target spectrum: give --pairs";
   if (!o.target.empty()) throw InputError({"--target"}, pairs_only);

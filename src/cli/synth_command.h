@@ -13,7 +13,8 @@
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace isolab::cli {
 
@@ -31,6 +32,9 @@ struct SynthOptions {
   std::optional<double> tolerance;  // largest |RotD100/target - 1|; default 0.1
   bool quiet = false;  // -q: accepted as by every command; synth prints nothing but errors and
                        // the pairs' misfits
+  // The options that shape only noise (and pairs) and only a pulse, to refuse those of the other
+  // kind: their values have defaults, so whether one was given is asked of the parser.
+  std::vector<const CLI::Option*> noise_only, pulse_only;
 };
 
 void RegisterSynthCommand(CLI::App& app, SynthOptions& options);

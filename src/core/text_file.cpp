@@ -11,8 +11,29 @@
 
 namespace isolab {
 
+namespace {
+
+// A directory opens as a stream on Linux and throws from its first read; opening a pipe waits for
+// a writer, and a device may never end: every reader takes regular files only (errors.md).
+void RequireRegularFile(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (status.type() == std::filesystem::file_type::directory) {
+    throw InputError({path}, "is a directory, not a file");
+  }
+  if (!error && status.type() != std::filesystem::file_type::regular) {
+    throw InputError({path},
+                     "is not a regular file (a device or a pipe): isolab reads its "
+                     "inputs only from files");
+  }
+}
+
+}  // namespace
+
 TextLines::TextLines(const std::string& path, std::size_t max_length)
-    : path_(path), in_(path, std::ios::binary), buffer_(max_length + 2) {}
+    : path_((RequireRegularFile(path), path)),
+      in_(path, std::ios::binary),
+      buffer_(max_length + 2) {}
 
 bool TextLines::Next(std::string* line) {
   if (done_) return false;
@@ -50,13 +71,10 @@ void StripByteOrderMark(std::string* text) {
 }
 
 std::string ReadBoundedText(const std::string& path, std::size_t max_bytes) {
-  // A directory opens as a stream on Linux and throws from its first read.
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError({path}, "is a directory, not a file");
-  }
+  RequireRegularFile(path);
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
+  std::error_code error;
   const auto size = std::filesystem::file_size(path, error);
   if (!error && size > max_bytes) {
     throw InputError({path}, fmt::format("{} bytes: more than the {} MiB a model, study or "

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,6 +13,7 @@
 #include "csv_fields.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/core/text_file.h"
 #include "units_line.h"
 
 namespace isolab::io {
@@ -26,8 +29,11 @@ int Column(const std::map<std::string, int>& columns, std::initializer_list<cons
 
 void ReadFile(const std::string& path, const std::string& given_force,
               const std::string& given_length, const UnitSystem& into, DisplacementPathSet* set) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path}, "cannot open the displacement path");
+  TextLines in(path);
+  if (!in.is_open()) {
+    throw InputError({path},
+                     fmt::format("cannot open the displacement path ({})", std::strerror(errno)));
+  }
   std::map<std::string, int> columns;
   int time = -1, test = -1, ux = -1, uy = -1, fx = -1, fy = -1;
   double force_factor = 1.0, length_factor = 1.0;
@@ -35,9 +41,8 @@ void ReadFile(const std::string& path, const std::string& given_force,
   UnitsLine declared;
   std::map<std::string, std::size_t> index;
   const std::size_t first = set->paths.size();
-  int line_number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
+  for (std::string line; in.Next(&line);) {
+    const int line_number = in.line_number();
     line = Trim(line);
     if (line.empty()) continue;
     if (line[0] == '#') {

@@ -72,6 +72,16 @@ ScaleTarget ReadScaleTarget(const YamlReader& reader, const YAML::Node& node,
 
 }  // namespace
 
+double ReadRecordAngle(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
+  const double angle = reader.ReadNumber(node, path);
+  if (!(std::abs(angle) <= kMaxRecordAngle)) {
+    reader.Fail(node, path,
+                fmt::format("{:g} degrees (must be in [-{:g}, {:g}])", angle, kMaxRecordAngle,
+                            kMaxRecordAngle));
+  }
+  return angle;
+}
+
 GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& motion,
                                      const std::string& motion_path, const UnitSystem& units) {
   reader.RequireMap(motion, motion_path);
@@ -155,7 +165,7 @@ ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& nod
         }
       }
       if (motion["angle"]) {
-        section.angle = reader.ReadNumber(motion["angle"], ChildPath(motion_path, "angle"));
+        section.angle = ReadRecordAngle(reader, motion["angle"], ChildPath(motion_path, "angle"));
       }
     } else {
       section.ground_motion.push_back(ReadGroundMotion(reader, motion, motion_path, units));

@@ -458,7 +458,7 @@ DesignFile LoadDesignFile(const std::string& path) {
     reader.RequireMap(output, "output");
     reader.CheckKeys(output, "output", {"directory"});
     if (output["directory"]) {
-      design.output_directory = reader.ReadString(output["directory"], "output.directory");
+      design.output_directory = reader.ReadName(output["directory"], "output.directory");
     }
   }
   return design;

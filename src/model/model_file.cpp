@@ -364,7 +364,7 @@ void ReadOutput(const YamlReader& reader, const YAML::Node& output, ModelFile* m
   reader.RequireMap(output, "output");
   reader.CheckKeys(output, "output", {"file", "every", "quantities", "levels", "summary_only"});
   OutputSelection& selection = model->output;
-  if (output["file"]) model->output_file = reader.ReadString(output["file"], "output.file");
+  if (output["file"]) model->output_file = reader.ReadName(output["file"], "output.file");
   if (output["every"]) {
     selection.every = reader.ReadInteger(output["every"], "output.every");
     if (selection.every < 1) {
@@ -405,6 +405,17 @@ void ReadOutput(const YamlReader& reader, const YAML::Node& output, ModelFile* m
 }
 
 }  // namespace
+
+std::vector<std::string> RecordFiles(const ModelFile& model) {
+  std::vector<std::string> files;
+  const auto add = [&](const GroundMotionSection& motion) {
+    files.push_back(
+        (std::filesystem::path(model.path).parent_path() / motion.file).lexically_normal());
+  };
+  for (const GroundMotionSection& motion : model.excitation.ground_motion) add(motion);
+  if (model.excitation.vertical) add(*model.excitation.vertical);
+  return files;
+}
 
 ModelFile LoadModelFile(const std::string& path) {
   return LoadModelText(YamlReader(path).ReadText(), path);

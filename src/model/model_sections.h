@@ -70,6 +70,8 @@ StructureSection ReadPlan(const YamlReader& reader, const YAML::Node& node, cons
 // `{file, units, scale, dt}` at key path `path`.
 GroundMotionSection ReadGroundMotion(const YamlReader& reader, const YAML::Node& node,
                                      const std::string& path, const UnitSystem& units);
+// The angle of a pair's H1 from the x axis (degrees) at `node`, within a turn either way.
+double ReadRecordAngle(const YamlReader& reader, const YAML::Node& node, const std::string& path);
 ExcitationSection ReadExcitation(const YamlReader& reader, const YAML::Node& node,
                                  const UnitSystem& units);
 // `auto` or a time >= 0 (analysis.free_vibration, a study's free_vibration).

@@ -177,17 +177,14 @@ bool IsGlob(std::string_view pattern) {
   return pattern.find_first_of("*?[") != std::string_view::npos;
 }
 
-// Regular files matching `pattern`, in byte order of their paths (glob(3) would sort by the
+// The paths matching `pattern`, in byte order (glob(3) would sort by the
 // locale's collation, which differs between machines).
 std::vector<std::string> ExpandGlob(const std::string& pattern) {
   glob_t matches{};
   const int status = glob(pattern.c_str(), GLOB_NOSORT, nullptr, &matches);
   std::vector<std::string> files;
   if (status == 0) {
-    for (std::size_t i = 0; i < matches.gl_pathc; ++i) {
-      std::error_code error;
-      if (fs::is_regular_file(matches.gl_pathv[i], error)) files.emplace_back(matches.gl_pathv[i]);
-    }
+    for (std::size_t i = 0; i < matches.gl_pathc; ++i) files.emplace_back(matches.gl_pathv[i]);
   }
   globfree(&matches);
   std::sort(files.begin(), files.end());
@@ -269,7 +266,8 @@ StudyRecord ReadPairEntry(const YamlReader& reader, const YAML::Node& node, cons
     reader.Fail(node["h2"]["scale"], ChildPath(path, "h2.scale"),
                 "a pair takes its target on h1, whose factor scales h2 too");
   }
-  if (node["angle"]) record.angle = reader.ReadNumber(node["angle"], ChildPath(path, "angle"));
+  if (node["angle"])
+    record.angle = ReadRecordAngle(reader, node["angle"], ChildPath(path, "angle"));
   CheckPairMatches(reader, node, path, record, units);
   if (node["name"]) {
     record.name = reader.ReadString(node["name"], ChildPath(path, "name"));
@@ -338,11 +336,21 @@ std::vector<StudyRecord> ReadRecords(const YamlReader& reader, const YAML::Node&
     const std::string& entry = given.components[0].file;
     const std::string pattern = (directory / entry).lexically_normal().string();
     std::vector<std::string> files;
-    if (IsGlob(entry)) {
+    std::error_code error;
+    // A file that is there is that file, whatever characters its name has ("rec[1].at2").
+    if (IsGlob(entry) && !fs::exists(pattern, error)) {
       files = ExpandGlob(pattern);
+      // A folder the pattern matches is not a record; anything else that is not a file (a broken
+      // link, a pipe) would be a record silently missing from the suite.
+      std::erase_if(files, [&](const std::string& file) { return fs::is_directory(file, error); });
+      for (const std::string& file : files) {
+        if (!fs::is_regular_file(file, error)) {
+          reader.Fail(list[i], path,
+                      fmt::format("'{}' (matched by '{}') is not a file", file, pattern));
+        }
+      }
       if (files.empty()) reader.Fail(list[i], path, fmt::format("'{}' matches no file", pattern));
     } else {
-      std::error_code error;
       if (!fs::is_regular_file(pattern, error)) {
         reader.Fail(list[i], path, fmt::format("'{}' is not a file", pattern));
       }
@@ -418,7 +426,7 @@ StudyFile LoadStudyFile(const std::string& path) {
     reader.RequireMap(output, "output");
     reader.CheckKeys(output, "output", {"directory", "runs"});
     if (output["directory"]) {
-      study.output_directory = reader.ReadString(output["directory"], "output.directory");
+      study.output_directory = reader.ReadName(output["directory"], "output.directory");
     }
     if (output["runs"]) {
       const std::string runs = reader.ReadString(output["runs"], "output.runs");

@@ -222,4 +222,10 @@ std::string YamlReader::ReadString(const YAML::Node& node, const std::string& pa
   return node.Scalar();
 }
 
+std::string YamlReader::ReadName(const YAML::Node& node, const std::string& path) const {
+  std::string name = ReadString(node, path);
+  if (name.empty()) Fail(node, path, "an empty name (give one, or leave the key out)");
+  return name;
+}
+
 }  // namespace isolab::model

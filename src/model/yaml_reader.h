@@ -53,6 +53,9 @@ class YamlReader {
                       const UnitSystem& units) const;
   int ReadInteger(const YAML::Node& node, const std::string& path) const;
   std::string ReadString(const YAML::Node& node, const std::string& path) const;
+  // A text value that names a file or a folder: an empty one is refused, never read as "the
+  // default" (as `-o ''` is refused on the command line).
+  std::string ReadName(const YAML::Node& node, const std::string& path) const;
   // A file this one names at `node`, resolved against `directory` (this file's folder); one that
   // is not a regular file is refused here, so that the message names this file's line and key.
   std::string ReadFilePath(const YAML::Node& node, const std::string& path,

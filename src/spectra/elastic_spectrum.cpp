@@ -34,8 +34,9 @@ void ValidateSpectrumInput(const integrators::SampledHistory& ground,
   }
   if (periods.empty()) throw InvalidParameter({"periods", 0.0, "at least one is needed"});
   for (std::size_t k = 0; k < periods.size(); ++k) {
-    if (!(periods[k] > 0.0) || !std::isfinite(periods[k])) {
-      throw InvalidParameter({fmt::format("periods[{}]", k), periods[k], "must be finite and > 0"});
+    if (!(periods[k] > 0.0 && periods[k] <= kMaxSpectrumPeriod)) {
+      throw InvalidParameter({fmt::format("periods[{}]", k), periods[k],
+                              fmt::format("must be > 0 and at most {:g} s", kMaxSpectrumPeriod)});
     }
   }
   if (damping_ratios.empty()) {

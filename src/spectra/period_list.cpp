@@ -8,6 +8,7 @@
 
 #include "isolab/core/errors.h"
 #include "isolab/core/number.h"
+#include "isolab/spectra/elastic_spectrum.h"
 
 namespace isolab::spectra {
 namespace {
@@ -70,9 +71,10 @@ std::vector<double> ParsePeriods(const std::string& text, const std::string& opt
     periods = ParseNumberList(text, option);
   }
   for (const double period : periods) {
-    if (!(period > 0.0)) {
+    if (!(period > 0.0 && period <= kMaxSpectrumPeriod)) {
       throw InputError({option},
-                       fmt::format("'{}': period {:g} s must be > 0 {}", text, period, form));
+                       fmt::format("'{}': period {:g} s must be > 0 and at most {:g} s {}", text,
+                                   period, kMaxSpectrumPeriod, form));
     }
   }
   return periods;

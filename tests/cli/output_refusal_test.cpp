@@ -2,6 +2,7 @@
 // inputs (by identity: the same name, another spelling, a hard link, an included file) or that
 // it cannot write; the input is left byte for byte as it was, and nothing new appears.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -94,6 +95,50 @@ TEST(OutputRefusal, InputsThatAreNotRegularFilesAreRefusedBeforeReading) {
   ExpectRefused(folder, "run m.yaml --record /dev/zero -o m.h5",
                 "/dev/zero: is not a regular file");
   ExpectRefused(folder, "spectrum /dev/zero -o s.csv", "/dev/zero: is not a regular file");
+}
+
+// A plan model's vertical record is an input as much as its horizontal pair: `-o` naming it once
+// replaced the record with the results and exited 0.
+TEST(OutputRefusal, RunRefusesTheModelsVerticalRecord) {
+  const fs::path folder = FreshFolder();
+  fs::copy_file(kSource + "/ground_motions/v_fwn_firm_seed4.at2", folder / "v.csv");
+  std::string plan = Read(kSource + "/models/plan/five_story_fp_plan.yaml");
+  const std::string vertical = "../../ground_motions/v_fwn_firm_seed4.at2";
+  ASSERT_NE(plan.find(vertical), std::string::npos);
+  plan.replace(plan.find(vertical), vertical.size(), "v.csv");
+  for (std::size_t at; (at = plan.find("../../ground_motions/")) != std::string::npos;) {
+    plan.replace(at, 6, kSource + "/");
+  }
+  std::ofstream(folder / "plan.yaml") << plan;
+  ExpectRefused(folder, "run plan.yaml -q --summary-only -o v.csv", "is an input of this command");
+}
+
+// A named pipe as a model, study, design or displacement path: opening it waited for a writer
+// for ever. Each is refused before it is opened (a timeout bounds the test if one is not).
+TEST(OutputRefusal, PipesAreRefusedNotWaitedOn) {
+  const fs::path folder = FreshFolder();
+  for (const char* name : {"pipe.yaml", "pipe.csv"}) {
+    ASSERT_EQ(mkfifo((folder / name).c_str(), 0600), 0) << name;
+  }
+  for (const char* arguments :
+       {"compare pipe.yaml -o out", "design pipe.yaml -o out", "bounds pipe.yaml -o out",
+        "cyclic pipe.yaml -a 10 -T 1", "cyclic iso.yaml --path pipe.csv"}) {
+    const auto run = RunCommandLine("cd " + folder.string() + " && timeout 20 " + ISOLAB_BINARY +
+                                    " " + std::string(arguments) + " 2>&1 >/dev/null");
+    EXPECT_EQ(run.exit_code, 2) << arguments << "\n" << run.output;
+    EXPECT_NE(run.output.find("is not a regular file"), std::string::npos) << arguments << "\n"
+                                                                           << run.output;
+    EXPECT_FALSE(fs::exists(folder / "out")) << arguments;
+  }
+}
+
+// A displacement path is read a line at a time up to the limit every text input has: a file of
+// one endless line once grew to gigabytes before anything was said.
+TEST(OutputRefusal, ADisplacementPathsOverlongLineIsRefusedAtItsLine) {
+  const fs::path folder = FreshFolder();
+  std::ofstream(folder / "long.csv") << "time,displacement\n" << std::string(100000, '1') << "\n";
+  ExpectRefused(folder, "cyclic iso.yaml --path long.csv",
+                "long.csv:2: a line of more than 65536 characters");
 }
 
 TEST(OutputRefusal, SpectrumRefusesItsRecordAndTwoNamesOfOneOutput) {

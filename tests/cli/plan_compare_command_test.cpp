@@ -184,6 +184,8 @@ TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
       "uy: 20, loss: 0.1, slip_scale: 500}]}}\n";
   const std::string nan_angle =
       Pair("fwn_firm_seed1.at2", "h2_fwn_firm_seed3.at2", ", angle: .nan");
+  const std::string huge_angle =
+      Pair("fwn_firm_seed1.at2", "h2_fwn_firm_seed3.at2", ", angle: 1e308");
   struct Case {
     std::string variants, records, expected;
   };
@@ -207,6 +209,9 @@ TEST(PlanCompareCommand, BadPairsAndMixedStudiesExitTwoWithTheirLocation) {
       {eccentric, nan_angle,
        ":5:" + std::to_string(nan_angle.find(".nan") + 1) +
            ": records[0].angle: '.nan' is not a finite number"},
+      {eccentric, huge_angle,
+       ":5:" + std::to_string(huge_angle.find("1e308") + 1) +
+           ": records[0].angle: 1e+308 degrees (must be in [-360, 360])"},
   };
   for (const Case& c : cases) {
     const fs::path study = WriteStudy(folder, c.variants, c.records);

@@ -877,12 +877,16 @@ TEST(RunCommand, BlowUpsExitOneUnderBothIntegratorsAndValidRunsStayPassive) {
 // through): every floating-point option refuses them, exit 2, naming the option.
 TEST(RunCommand, NonFiniteNumbersOnTheCommandLineExitTwo) {
   const auto output = TemporaryFile("non_finite.h5");
-  const std::pair<const char*, const char*> cases[] = {
+  const std::pair<std::string, std::string> cases[] = {
       {"--scale nan", "--scale: 'nan' is not a finite number"},
       {"--scale inf", "--scale: 'inf' is not a finite number"},
       {"--scale 1e999", "--scale: '1e999' is out of range"},
       {"--rtol nan", "--rtol: 'nan' is not a finite number"},
       {"--trial-displacement NaN", "--trial-displacement: 'NaN' is not a finite number"},
+      // An angle is a direction: at 1e308 degrees its cosine was NaN and the run reported a
+      // failed Newton iteration (exit 1).
+      {"--record " + Source("ground_motions/fwn_firm_seed1.at2") + " --angle 1e308",
+       "--angle: 1e+308 degrees (must be in [-360, 360])"},
   };
   for (const auto& [option, message] : cases) {
     const auto run =

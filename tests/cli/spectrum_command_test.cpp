@@ -201,6 +201,9 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
        "--periods: '0.5:0.1:0.1': STOP = 0.1 must be >= START"},
       {kBundled + " --periods 0.1:5:0", "--periods: '0.1:5:0': STEP = 0 must be > 0"},
       {kBundled + " --periods 0,1", "--periods: '0,1': period 0 s must be > 0"},
+      // Far beyond structures' periods the exact SDOF step cancels: D was 0 at 1e10 s.
+      {kBundled + " --periods 1,1e10",
+       "--periods: '1,1e10': period 1e+10 s must be > 0 and at most 1000 s"},
       {kBundled + " --periods 0.5,abc", "--periods: 'abc' is not a number (in '0.5,abc')"},
       {kBundled + " --periods 1:2", "--periods: '1:2' is not (START:STOP:STEP"},
       {kBundled + " --periods 0.5,nan", "--periods: 'nan' is not a finite number (in '0.5,nan')"},

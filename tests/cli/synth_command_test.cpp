@@ -98,6 +98,18 @@ TEST(SynthCommand, OptionsOutOfRangeExitTwoAndWriteNothing) {
       {"pulse --pgv 1e308", "--pgv: 1e+308 (must be > 0 and at most 30 m/s)"},
       {"pulse --oscillations 1", "--oscillations: 1 (must be > 1 and at most 100)"},
       {"pulse --oscillations 1e300", "--oscillations: 1e+300 (must be > 1 and at most 100)"},
+      // An option of the other kind was ignored: the record was the default one, exit 0.
+      {"noise --phase 1.3", "--phase: shapes a pulse: give kind pulse"},
+      {"noise --pulse-period 2", "--pulse-period: shapes a pulse"},
+      {"pulse --pga 0.3", "--pga: scales noise: a pulse is given by its --pgv"},
+      {"pulse --seed 5", "--seed: shapes noise (and pairs): not a pulse"},
+      {"pulse --site-frequency 3", "--site-frequency: shapes noise"},
+      // Seeds are read in decimal: "010" was octal 8, "-1" wrapped to 2^64 - 1 and a seed past
+      // 64 bits was saturated to it, so three different seeds gave one record.
+      {"noise --seed 010", "--seed: '010' is not a whole number in decimal digits"},
+      {"noise --seed 0x10", "--seed: '0x10' is not a whole number in decimal digits"},
+      {"noise --seed -1", "--seed: -1 (must be a whole number >= 0)"},
+      {"noise --seed 18446744073709551616", "--seed: 18446744073709551616 (too large"},
   };
   const auto output = isolab::testing::OwnTestFile("bad.at2");
   for (const auto& c : cases) {

@@ -88,6 +88,8 @@ TEST(ModelFile, BadOutputSelectionIsLocated) {
   ExpectError("bad_output_level_name.yaml", ":9:19:",
               "output.levels[0]: expected a level: 0 for the base, k for floor k, or roof");
   ExpectError("bad_output_key.yaml", ":9:10:", "output.evry: unknown key (did you mean 'every'?)");
+  ExpectError("bad_output_file_empty.yaml",
+              ":10:16:", "output.file: an empty name (give one, or leave the key out)");
   ExpectError("bad_output_summary_only.yaml",
               ":9:24:", "output.summary_only: expected true or false");
 }
@@ -207,6 +209,12 @@ TEST(ModelFile, LeadCoreMaterialDataOutsideWhatMetalsHaveAreRefused) {
 // A model whose isolation `file` names itself, or A -> B -> A, would recurse until
 // the stack overflowed. The file that closes the cycle is refused at its `file` key, naming the
 // chain; the same file spelled another way ("./a.yaml") is still the same file.
+// An angle of H1 beyond a turn either way is a typo (at 1e308 degrees its cosine is NaN).
+TEST(ModelFile, ARecordAngleBeyondATurnIsRefusedAtItsKey) {
+  ExpectError("bad_angle.yaml",
+              ":5:57:", "excitation.ground_motion.angle: 400 degrees (must be in [-360, 360])");
+}
+
 // A file that is not there is refused at the key that names it: the model's line, not only the
 // missing path.
 TEST(ModelFile, AnIsolationFileThatIsNotThereIsRefusedAtItsKey) {

@@ -227,6 +227,8 @@ TEST_F(StudyFileTest, MalformedStudiesAreLocated) {
               ":2:19:", "variants[0].name: 'a b' (a name takes letters, digits, '_', '-' and '.')");
   ExpectError("variants: [{name: thm1}]\nreference: thm2\n" + kRecords + "scales: [1]\n",
               ":3:12:", "reference: 'thm2' is not a variant (did you mean 'thm1'?)");
+  ExpectError("variants: [{name: a}]\n" + kRecords + "scales: [1]\noutput: {directory: ''}\n",
+              ":5:21:", "output.directory: an empty name (give one, or leave the key out)");
   ExpectError("variants: [{name: a}]\nrecords: ['nowhere/*.at2']\nscales: [1]\n", ":3:11:",
               "records[0]: '" + (directory_ / "nowhere/*.at2").string() + "' matches no file");
   ExpectError("variants: [{name: a}]\nrecords: [missing.at2]\nscales: [1]\n", ":3:11:",
@@ -262,6 +264,26 @@ TEST_F(StudyFileTest, VariantIsolationErrorsPointIntoTheStudy) {
                                   "variants: [{name: a}]\n" +
                                       kRecords + "scales: [1]\n");
   EXPECT_EQ(ErrorOf(study).rfind(path + ":1:1: missing key 'isolation'", 0), 0u) << ErrorOf(study);
+}
+
+// A record whose name has a glob's characters is that file when it is there (a look-alike that
+// the pattern matches was run instead), and a pattern that matches something that is not a file
+// (a broken link) is refused, not left out of the suite without a word.
+TEST_F(StudyFileTest, ARecordNamedLikeAGlobIsItselfAndAGlobMatchesOnlyFiles) {
+  fs::create_directories(directory_ / "recs");
+  fs::copy_file(Source("ground_motions/pulse_tp2.at2"), directory_ / "recs" / "rec[1].at2");
+  fs::copy_file(Source("ground_motions/elcentro_1940_ns.at2"), directory_ / "recs" / "rec1.at2");
+  const StudyFile study =
+      LoadStudyFile(Study("variants: [{name: a}]\nrecords: ['recs/rec[1].at2']\n"
+                          "scales: [1]\n"));
+  ASSERT_EQ(study.records.size(), 1u);
+  EXPECT_EQ(study.records[0].name, "rec[1]");
+  fs::create_directories(directory_ / "g");
+  fs::copy_file(Source("ground_motions/pulse_tp2.at2"), directory_ / "g" / "a.at2");
+  fs::create_symlink("/nonexistent/b.at2", directory_ / "g" / "b.at2");
+  ExpectError("variants: [{name: a}]\nrecords: ['g/*.at2']\nscales: [1]\n", ":3:11:",
+              "records[0]: '" + (directory_ / "g/b.at2").string() + "' (matched by '" +
+                  (directory_ / "g/*.at2").string() + "') is not a file");
 }
 
 // A building or an isolation file that is not there is refused at the study's key that names it.

@@ -118,6 +118,10 @@ struct ForceSection {
   std::vector<double> values;
 };
 
+// An angle of a record's H1 from the x axis is a direction: beyond a turn either way it is a typo
+// (and at 1e308 degrees its cosine is not a number).
+inline constexpr double kMaxRecordAngle = 360.0;
+
 struct ExcitationSection {
   // The record's horizontal components: H1, and H2 at angle + 90 degrees when there is a pair.
   std::vector<GroundMotionSection> ground_motion;
@@ -226,6 +230,10 @@ struct ModelFile {
 // The names of a one-direction layer's bearings: "<name>_1" ... "<name>_<count>"; empty without a
 // count (the layer is then one isolator).
 std::vector<std::string> IsolationBearings(const ModelFile& model);
+
+// The record files the model's excitation names (its horizontal components and its vertical one),
+// resolved against the model's folder: inputs no command may write its results over.
+std::vector<std::string> RecordFiles(const ModelFile& model);
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types or
 // units, and parameters that break a law's or a section's rules.

@@ -41,8 +41,14 @@ struct ElasticSpectrum {
   }
 };
 
+// The longest period a spectrum takes (s). Structures' periods are seconds; far beyond them the
+// exact SDOF step loses its accuracy to cancellation (D fell to 0 at 1e10 s, where it should tend
+// to the peak ground displacement), so such a period is refused, not answered wrong.
+inline constexpr double kMaxSpectrumPeriod = 1000.0;
+
 // Throws InvalidParameter naming the first bad entry ("periods[3]", "damping_ratios[0]") of
-// periods (finite, > 0), damping ratios ([0, 1)) or the record (>= 2 finite samples, dt > 0).
+// periods (finite, > 0, at most kMaxSpectrumPeriod), damping ratios ([0, 1)) or the record (>= 2
+// finite samples, dt > 0).
 void ValidateSpectrumInput(const integrators::SampledHistory& ground_acceleration,
                            std::span<const double> periods, std::span<const double> damping_ratios);
 
