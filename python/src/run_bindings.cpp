@@ -238,7 +238,8 @@ void BindRun(py::module_& module) {
         }
         o.units_given_by = "units";
         o.dt_given_by = "record_dt";
-        o.names = {"dt", "trial_displacement", "free_vibration", "angle", "fixed_base", ""};
+        o.names = {"dt",   "trial_displacement", "free_vibration", "angle", "fixed_base", "",
+                   "scale"};
         o.scale = scale;
         o.dt = dt;
         o.fixed_base = fixed_base;

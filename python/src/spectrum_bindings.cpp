@@ -75,7 +75,14 @@ Ground ReadGround(const py::object& record_argument, double scale,
   } catch (const std::invalid_argument& error) {
     throw InputError({record.path}, "units '" + record.units + "': " + error.what());
   }
-  for (const double a : record.values) ground.acceleration.values.push_back(a * factor);
+  for (const double a : record.values) {
+    ground.acceleration.values.push_back(a * factor);
+    if (!std::isfinite(ground.acceleration.values.back())) {
+      throw InputError({"scale"}, fmt::format("{:g}: the record {} scaled by it is not a finite "
+                                              "number (a scale this large overflows)",
+                                              scale, record.path));
+    }
+  }
   ground.description =
       py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
                py::arg("units") = record.units, py::arg("dt") = record.dt, py::arg("scale") = scale,

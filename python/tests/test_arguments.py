@@ -137,7 +137,8 @@ def test_messages_name_the_keywords_not_the_command_lines_options(repo):
 @pytest.mark.parametrize("keyword, value", [
     ("dt", "0.5"), ("dt", True), ("dt", float("nan")), ("record_dt", float("nan")),
     ("trial_displacement", float("inf")), ("trial_displacement", True), ("rtol", float("nan")),
-    ("rtol", 1e-308), ("atol", 0.0), ("units", ""), ("samples", 0), ("samples", 1.5)])
+    ("rtol", 1e-308), ("atol", 0.0), ("units", ""), ("samples", 0), ("samples", 1.5),
+    ("scale", 1e308)])
 def test_run_refuses_what_the_command_line_refuses_naming_the_keyword(repo, keyword, value):
     # Each was passed through: True as a step of 1, nan or 1e-308 as tolerances, "" as the
     # default units, samples=0 as no band, a string as the binding's TypeError.
@@ -147,7 +148,7 @@ def test_run_refuses_what_the_command_line_refuses_naming_the_keyword(repo, keyw
 
 @pytest.mark.parametrize("keyword, value", [
     ("record_dt", float("nan")), ("record_dt", 0.0), ("units", ""), ("ductility", float("inf")),
-    ("points_per_period", 1.5), ("points_per_period", True), ("scale", True)])
+    ("points_per_period", 1.5), ("points_per_period", True), ("scale", True), ("scale", 1e308)])
 def test_spectrum_refuses_what_the_command_line_refuses_naming_the_keyword(repo, keyword, value):
     with pytest.raises(isolab.InputError, match=f"^{keyword}: "):
         isolab.spectrum(repo / H1, periods=[1.0], **{keyword: value})

@@ -20,6 +20,7 @@ namespace {
 struct Component {
   model::GroundMotionSection motion;
   std::string units_given_by, dt_given_by;
+  std::string scale_given_by;  // the option that replaced the scale; empty: the model's own
   const io::Record* data = nullptr;
 };
 
@@ -112,6 +113,7 @@ std::vector<Component> ChooseComponents(const model::ModelFile& model,
     if (overrides.scale) {
       c.motion.scale = *overrides.scale;
       c.motion.target.reset();
+      c.scale_given_by = overrides.names.scale;
     }
   }
   return components;
@@ -249,6 +251,22 @@ std::string KeyOf(const Component& c) {
   return c.motion.location.file == c.motion.key ? std::string() : c.motion.key + ": ";
 }
 
+// A scale so large that the record overflows (1e308 g) would run into a blow-up reported as a
+// failed run: bad input, named where the scale was given.
+void RequireFiniteScaledRecord(const Component& c, const io::AppliedRecord& applied,
+                               const integrators::SampledHistory& history) {
+  if (std::all_of(history.values.begin(), history.values.end(),
+                  [](double a) { return std::isfinite(a); })) {
+    return;
+  }
+  const std::string what = fmt::format(
+      "scale {:g}: the record {} scaled by it is not a finite number (a scale this large "
+      "overflows)",
+      applied.scale, c.motion.file);
+  if (!c.scale_given_by.empty()) throw InputError({c.scale_given_by}, what);
+  throw InputError(c.motion.location, KeyOf(c) + what);
+}
+
 // The run's horizontal components, and its vertical one into `vertical` where the record has one
 // and the model asks for it (a vertical component acts only through the axial loads).
 std::vector<Component> ChooseHorizontalComponents(const model::ModelFile& model,
@@ -321,6 +339,7 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
     if (i > 0) take_h1_scale(&c);
     problem.records.push_back(
         ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units, &histories[i], c.data));
+    RequireFiniteScaledRecord(c, problem.records.back(), histories[i]);
     if (i == 0) continue;
     report_h1_scale(&problem.records.back());
     const integrators::SampledHistory& h1 = histories[0];
@@ -343,6 +362,7 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
     take_h1_scale(&c);
     problem.vertical_record = ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
                                           &problem.excitation.vertical, c.data);
+    RequireFiniteScaledRecord(c, *problem.vertical_record, problem.excitation.vertical);
     report_h1_scale(&*problem.vertical_record);
     if (histories.empty()) {
       throw InputError(

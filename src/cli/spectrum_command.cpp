@@ -280,7 +280,14 @@ Ground ReadGround(const SpectrumOptions& options, const std::string& path,
   } catch (const std::invalid_argument& error) {
     throw InputError({path}, fmt::format("units '{}': {}", record.units, error.what()));
   }
-  for (const double a : record.values) ground.acceleration.values.push_back(a * factor);
+  for (const double a : record.values) {
+    ground.acceleration.values.push_back(a * factor);
+    if (!std::isfinite(ground.acceleration.values.back())) {
+      throw InputError({"--scale"}, fmt::format("{:g}: the record {} scaled by it is not a finite "
+                                                "number (a scale this large overflows)",
+                                                options.scale, path));
+    }
+  }
   ground.applied = {path,
                     record.format,
                     record.units,

@@ -63,7 +63,7 @@ struct RecordOverride {
 struct OverrideNames {
   std::string dt = "--dt", trial_displacement = "--trial-displacement",
               free_vibration = "--free-vibration", angle = "--angle", fixed_base = "--fixed-base",
-              max_steps = "isolab run --max-steps N";
+              max_steps = "isolab run --max-steps N", scale = "--scale";
 };
 
 struct RunOverrides {
