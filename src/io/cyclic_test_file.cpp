@@ -129,6 +129,17 @@ double RangeOf(const std::vector<double>& values) {
 
 CyclicTestSet ReadCyclicTests(const std::vector<std::string>& paths,
                               const CyclicTestUnits& file_units, const UnitSystem& into) {
+  // A file given twice (another spelling, a link) would count its tests twice: in the fit's
+  // weights and in the range the fitted model is said to hold over.
+  for (std::size_t j = 1; j < paths.size(); ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      std::error_code error;
+      if (std::filesystem::equivalent(paths[i], paths[j], error)) {
+        throw InputError({paths[j]},
+                         fmt::format("is '{}' given again: each data file is read once", paths[i]));
+      }
+    }
+  }
   CyclicTestSet set;
   std::vector<CyclicTestData>& tests = set.tests;
   for (const std::string& path : paths) {

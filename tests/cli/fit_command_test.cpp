@@ -255,6 +255,16 @@ TEST(FitCommand, BadDataExitsWithCodeTwoNamingFileLineAndTest) {
     EXPECT_NE(run.output.find(c.message), std::string::npos) << c.file << ": " << run.output;
     EXPECT_FALSE(std::filesystem::exists(output)) << c.file;
   }
+  // One file given twice, spelled two ways: its tests were fitted twice and the fitted model's
+  // range said twice as many cycles.
+  const std::string once = Data("bad_header_only.csv");
+  const std::string again =
+      (std::filesystem::path(once).parent_path() / "." / "bad_header_only.csv").string();
+  const auto twice = RunIsolab(
+      "fit " + once + " " + again + " --model " + Data("three_laws_spec.yaml") + " -q", true);
+  EXPECT_EQ(twice.exit_code, 2) << twice.output;
+  EXPECT_NE(twice.output.find(again + ": is '" + once + "' given again"), std::string::npos)
+      << twice.output;
 }
 
 TEST(FitCommand, AComponentFittedToZeroIsDroppedWithANoteAndTheModelWritten) {
