@@ -4,7 +4,7 @@
 #
 #   scripts/sanitize.sh [CTEST ARGUMENTS]       every test, in build-sanitize/: -O2 -g, so reports
 #                                               name files and lines
-#   scripts/sanitize.sh --ci [CTEST ARGUMENTS]  CI's stage (.ci/run), in build-sanitize-ci/: -O1
+#   scripts/sanitize.sh --ci [CTEST ARGUMENTS]  CI's stage (.ci/run), in build-sanitize-ci/: -Og
 #                                               without -g, isolab and the test executables of
 #                                               kCiTests only (a whole sanitized build is too long)
 #
@@ -30,14 +30,21 @@ kCiTests=(reader_fuzz_test atomic_file_test hdf5_write_failure_test results_writ
           plan_run_command_test cyclic_command_test compare_command_test spectrum_command_test
           synth_command_test output_refusal_test shaketable_command_test design_command_test
           out_of_memory_test path_replay_test)
+# Left out of those executables: the building diagnosis end to end (a building fit repeated per
+# candidate effect, 106-122 s sanitized: a quarter of the stage's test time), whose fit the
+# shake-table fit test puts through the same code.
+kCiLongRuns="ShakeTableCommand.DiagnoseBuildingNamesTheViscousPartTheModelLacks"
 
 if $ci; then
   build="build-sanitize-ci"
-  flags=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG"
-         "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG")
+  # -Og, not -O1: a third less compile time (978 against 1,326 CPU s for this stage's build) and
+  # the same test time (262 against 264 s wall: the sanitizers' checks dominate it), as
+  # docs/development.md has it.
+  flags=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-Og -DNDEBUG"
+         "-DCMAKE_C_FLAGS_RELEASE=-Og -DNDEBUG")
   targets=(--target isolab isolab_search isolab_studies "${kCiTests[@]}")
   # Labels are the executables' names (tests/CMakeLists.txt); "install" is the package test.
-  selection=(-L "^($(IFS='|'; echo "${kCiTests[*]}")|install)\$")
+  selection=(-L "^($(IFS='|'; echo "${kCiTests[*]}")|install)\$" -E "^(${kCiLongRuns})\$")
 else
   build="build-sanitize"
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
