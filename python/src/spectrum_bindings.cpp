@@ -67,26 +67,13 @@ Ground ReadGround(const py::object& record_argument, double scale,
           ? io::ReadRecord(py::str(record_argument).cast<std::string>(),
                            {units.value_or(""), record_dt.value_or(0.0), "units", "record_dt"})
           : ArrayRecord(record_argument, record_dt, units);
+  io::ScaledRecord scaled = io::ScaleRecord(record, scale, system, "scale");
   Ground ground;
-  ground.acceleration.dt = record.dt;
-  double factor = 0.0;
-  try {
-    factor = system.Convert(scale, record.units, dimension::kAcceleration);
-  } catch (const std::invalid_argument& error) {
-    throw InputError({record.path}, "units '" + record.units + "': " + error.what());
-  }
-  for (const double a : record.values) {
-    ground.acceleration.values.push_back(a * factor);
-    if (!std::isfinite(ground.acceleration.values.back())) {
-      throw InputError({"scale"}, fmt::format("{:g}: the record {} scaled by it is not a finite "
-                                              "number (a scale this large overflows)",
-                                              scale, record.path));
-    }
-  }
+  ground.acceleration = {record.dt, std::move(scaled.values)};
   ground.description =
       py::dict(py::arg("path") = record.path, py::arg("format") = record.format,
                py::arg("units") = record.units, py::arg("dt") = record.dt, py::arg("scale") = scale,
-               py::arg("pga") = record.Peak() * std::abs(factor));
+               py::arg("pga") = scaled.pga);
   return ground;
 }
 

@@ -273,28 +273,10 @@ Ground ReadGround(const SpectrumOptions& options, const std::string& path,
   Ground ground;
   ground.record = io::ReadRecord(path, {options.units, options.dt.value_or(0), "--units", "--dt"});
   const io::Record& record = ground.record;
-  ground.acceleration.dt = record.dt;
-  double factor = 0.0;
-  try {
-    factor = units.Convert(options.scale, record.units, dimension::kAcceleration);
-  } catch (const std::invalid_argument& error) {
-    throw InputError({path}, fmt::format("units '{}': {}", record.units, error.what()));
-  }
-  for (const double a : record.values) {
-    ground.acceleration.values.push_back(a * factor);
-    if (!std::isfinite(ground.acceleration.values.back())) {
-      throw InputError({"--scale"}, fmt::format("{:g}: the record {} scaled by it is not a finite "
-                                                "number (a scale this large overflows)",
-                                                options.scale, path));
-    }
-  }
-  ground.applied = {path,
-                    record.format,
-                    record.units,
-                    record.units_source,
-                    record.dt,
-                    options.scale,
-                    record.Peak() * std::abs(factor)};
+  io::ScaledRecord scaled = io::ScaleRecord(record, options.scale, units, "--scale");
+  ground.acceleration = {record.dt, std::move(scaled.values)};
+  ground.applied = {path,      record.format, record.units, record.units_source,
+                    record.dt, options.scale, scaled.pga};
   return ground;
 }
 

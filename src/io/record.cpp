@@ -392,6 +392,29 @@ std::string DescribeScale(const AppliedRecord& record) {
              : fmt::format("scale {:.6g} to {}", record.scale, record.scaled_to);
 }
 
+ScaledRecord ScaleRecord(const Record& record, double scale, const UnitSystem& units,
+                         const std::string& scale_given_by) {
+  double factor = 0.0;
+  try {
+    factor = units.Convert(scale, record.units, dimension::kAcceleration);
+  } catch (const std::invalid_argument& error) {
+    throw InputError({record.path}, fmt::format("units '{}': {}", record.units, error.what()));
+  }
+  ScaledRecord scaled;
+  scaled.values.reserve(record.values.size());
+  for (const double a : record.values) {
+    scaled.values.push_back(a * factor);
+    if (!std::isfinite(scaled.values.back())) {
+      throw InputError({scale_given_by},
+                       fmt::format("{:g}: the record {} scaled by it is not a finite number (a "
+                                   "scale this large overflows)",
+                                   scale, record.path));
+    }
+  }
+  scaled.pga = record.Peak() * std::abs(factor);
+  return scaled;
+}
+
 double Record::Peak() const {
   double peak = 0.0;
   for (const double value : values) peak = std::max(peak, std::abs(value));

@@ -256,5 +256,39 @@ TEST(ReadRecord, DeclaredCountBeyond64BitsIsALocatedError) {
       << error;
 }
 
+// A record in g, scaled by 2 into m/s^2 (g = 9.80665 m/s^2 by definition), its peak beside it; a
+// scale that overflows a value is refused at the option that gave it, a unit the system cannot
+// convert at the record's file.
+TEST(ScaleRecord, ConvertsScalesAndRefusesWhatCannotBeScaled) {
+  Record record;
+  record.path = "r.at2";
+  record.units = "g";
+  record.dt = 0.01;
+  record.values = {0.1, -0.3, 0.2};
+  const UnitSystem si("N", "m");
+  const ScaledRecord scaled = ScaleRecord(record, 2.0, si, "--scale");
+  ASSERT_EQ(scaled.values.size(), 3u);
+  EXPECT_DOUBLE_EQ(scaled.values[1], -0.3 * 2.0 * 9.80665);
+  EXPECT_DOUBLE_EQ(scaled.pga, 0.3 * 2.0 * 9.80665);
+
+  const auto error_of = [&](const Record& r, double scale) {
+    try {
+      ScaleRecord(r, scale, si, "scale");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of(record, 1e308).rfind("scale: 1e+308: the record r.at2 scaled by it is not a "
+                                          "finite number",
+                                          0),
+            0u)
+      << error_of(record, 1e308);
+  Record furlongs = record;
+  furlongs.units = "furlong/s^2";
+  EXPECT_EQ(error_of(furlongs, 1.0).rfind("r.at2: units 'furlong/s^2': ", 0), 0u)
+      << error_of(furlongs, 1.0);
+}
+
 }  // namespace
 }  // namespace isolab::io

@@ -15,6 +15,10 @@
 #include <string>
 #include <vector>
 
+namespace isolab {
+class UnitSystem;
+}
+
 namespace isolab::io {
 
 struct RecordOptions {
@@ -55,6 +59,19 @@ struct AppliedRecord {
 
 // "scale 1.5", or with the target it was computed for: "scale 1.734 to PGA 0.4 g".
 std::string DescribeScale(const AppliedRecord& record);
+
+// A record's values times `scale`, converted to the acceleration unit of `units`, and the peak
+// |a| of the scaled record in that unit.
+struct ScaledRecord {
+  std::vector<double> values;
+  double pga = 0.0;
+};
+
+// Throws InputError for record units `units` cannot convert (at the record's file), and for a
+// scale so large that the record overflows (1e308 g), at `scale_given_by` (the option or key that
+// gave it): bad input, not a run or a spectrum of infinities.
+ScaledRecord ScaleRecord(const Record& record, double scale, const UnitSystem& units,
+                         const std::string& scale_given_by);
 
 // Throws InputError (file:line: what) for unreadable, malformed, empty or non-finite records,
 // unknown units, and units or a step that disagree with the file's own.
