@@ -88,3 +88,23 @@ def test_a_path_argument_is_a_path(repo, tmp_path, monkeypatch, output):
     with pytest.raises(TypeError, match="output: expected a path"):
         isolab.design(design, output=output, jobs=1, quiet=True)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["design.yaml"]
+
+
+def test_a_suite_inside_the_output_folder_is_refused_and_the_folder_kept(repo, tmp_path,
+                                                                          monkeypatch):
+    """The records a design names inside the folder it writes would be moved aside with that
+    folder's earlier design before the runs read them: refused at the entry, naming the folder
+    and the argument, as `isolab design -o` is."""
+    monkeypatch.chdir(tmp_path)
+    kept = tmp_path / "out" / "records"
+    kept.mkdir(parents=True)
+    for name in ("fwn_firm_seed1.at2", "fwn_soft_seed2.at2", "elcentro_1940_ns.at2"):
+        (kept / name).write_bytes((repo / "ground_motions" / name).read_bytes())
+    design = write_design(repo, tmp_path)
+    design.write_text(design.read_text().replace(str(repo / "ground_motions"), "out/records"))
+    with pytest.raises(isolab.InputError, match=r"suite.records\[0\]: '\S*/out/records/"
+                       r"fwn_firm_seed1.at2' is inside 'out', the folder this design writes "
+                       r"\(output\)"):
+        isolab.design(design, output="out", jobs=1, quiet=True)
+    assert sorted(p.name for p in kept.iterdir()) == ["elcentro_1940_ns.at2", "fwn_firm_seed1.at2",
+                                                      "fwn_soft_seed2.at2"]

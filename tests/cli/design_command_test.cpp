@@ -213,6 +213,57 @@ TEST(DesignCommand, ARefusedDesignLeavesTheEarlierOneUntouched) {
   }
 }
 
+// A synthetic design writes its pairs into its folder; a second design that takes them as its
+// suite and writes into the same folder would move them aside with the earlier design before
+// reading them, and said "cannot open" of files that are there. Refused first at the entry,
+// naming the folder and the option or key that chose it, the earlier design untouched.
+TEST(DesignCommand, ASuiteInsideTheFolderTheDesignReplacesIsRefusedAtItsEntry) {
+  const fs::path folder = testing::FreshTestDirectory();
+  const fs::path out = folder / "out";
+  const std::string model =
+      "model: " + std::string(ISOLAB_TEST_DATA_DIR) + "/study/data/two_story_lrb.yaml\n";
+  const std::string target = "target: {asce7: {sms: 1.2 g, sm1: 0.6 g}}\n";
+  std::ofstream(folder / "synthetic.yaml") << model << target << "suite: {synthetic: {count: 3}}\n";
+  ASSERT_EQ(testing::RunIsolab("design " + (folder / "synthetic.yaml").string() +
+                               " -q --no-figures -o " + out.string())
+                .exit_code,
+            0);
+  const auto contents = [&] {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(out)) {
+      if (e.is_regular_file())
+        files[e.path().lexically_relative(out).string()] = ReadFile(e.path());
+    }
+    return files;
+  };
+  const auto before = contents();
+  ASSERT_EQ(before.count("records/pair1_h1.at2"), 1u);
+  // A record named through ".." (the reader normalises it), the folder by -o or by the design's
+  // output.directory.
+  const std::string records =
+      "suite:\n  records: [out/../out/records/pair1_h1.at2, "
+      "out/records/pair2_h1.at2, out/records/pair3_h1.at2]\n";
+  struct Case {
+    std::string extra, option, expected_option;
+  };
+  for (const Case& c : {Case{"", " -o out/", "--output"},
+                        Case{"output: {directory: out}\n", "", "output.directory"}}) {
+    std::ofstream(folder / "again.yaml") << model << target << records << c.extra;
+    const testing::Outcome refused = testing::RunCommandLine(
+        "cd " + folder.string() + " && " + ISOLAB_BINARY + " design again.yaml -q --no-figures" +
+        c.option + " 2>&1 >/dev/null");
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("again.yaml:4:13: suite.records[0]: "
+                                  "'out/records/pair1_h1.at2' is inside 'out"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_NE(refused.output.find("the folder this design writes (" + c.expected_option + ")"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_EQ(contents(), before) << c.expected_option;
+  }
+}
+
 // A disk that fills while the design writes its histories (megabytes, where everything before
 // them is tens of kilobytes): the design fails by name with exit 3 and the earlier design comes
 // back untouched. The full disk is a file size limit on the design's process (ulimit -f, 200 KiB)
