@@ -90,21 +90,23 @@ def test_a_path_argument_is_a_path(repo, tmp_path, monkeypatch, output):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["design.yaml"]
 
 
-def test_a_suite_inside_the_output_folder_is_refused_and_the_folder_kept(repo, tmp_path,
-                                                                          monkeypatch):
-    """The records a design names inside the folder it writes would be moved aside with that
-    folder's earlier design before the runs read them: refused at the entry, naming the folder
-    and the argument, as `isolab design -o` is."""
+def test_a_suite_inside_the_earlier_design_it_replaces_is_refused_and_that_design_kept(
+        repo, tmp_path, monkeypatch):
+    """A synthetic design's pairs taken as the suite of a design into the same folder would be
+    moved aside with that earlier design before the runs read them: refused at the entry, naming
+    the folder and the argument, as `isolab design -o` is."""
     monkeypatch.chdir(tmp_path)
-    kept = tmp_path / "out" / "records"
-    kept.mkdir(parents=True)
-    for name in ("fwn_firm_seed1.at2", "fwn_soft_seed2.at2", "elcentro_1940_ns.at2"):
-        (kept / name).write_bytes((repo / "ground_motions" / name).read_bytes())
-    design = write_design(repo, tmp_path)
-    design.write_text(design.read_text().replace(str(repo / "ground_motions"), "out/records"))
+    building = repo / "tests" / "study" / "data" / "two_story_lrb.yaml"
+    head = f"model: {building}\ntarget: {{asce7: {{sms: 1.2 g, sm1: 0.6 g}}}}\n"
+    synthetic = tmp_path / "synthetic.yaml"
+    synthetic.write_text(head + "suite: {synthetic: {count: 3}}\n")
+    isolab.design(synthetic, output="out", jobs=1, quiet=True)
+    before = {p: p.read_bytes() for p in (tmp_path / "out").rglob("*") if p.is_file()}
+    again = tmp_path / "again.yaml"
+    again.write_text(head + "suite:\n  records: [out/records/pair1_h1.at2, "
+                     "out/records/pair2_h1.at2, out/records/pair3_h1.at2]\n")
     with pytest.raises(isolab.InputError, match=r"suite.records\[0\]: '\S*/out/records/"
-                       r"fwn_firm_seed1.at2' is inside 'out', the folder this design writes "
+                       r"pair1_h1.at2' is inside 'out', the earlier design this design replaces "
                        r"\(output\)"):
-        isolab.design(design, output="out", jobs=1, quiet=True)
-    assert sorted(p.name for p in kept.iterdir()) == ["elcentro_1940_ns.at2", "fwn_firm_seed1.at2",
-                                                      "fwn_soft_seed2.at2"]
+        isolab.design(again, output="out", jobs=1, quiet=True)
+    assert {p: p.read_bytes() for p in (tmp_path / "out").rglob("*") if p.is_file()} == before

@@ -400,42 +400,6 @@ std::vector<DesignWarning> CollectWarnings(const DesignOutcome& out) {
 
 std::span<const DesignQuantityInfo> DesignQuantities() { return kDesignQuantities; }
 
-namespace {
-
-// Whether `file` is `folder` or lies inside it, links and ".." resolved.
-bool IsInside(const fs::path& file, const fs::path& folder) {
-  std::error_code error;
-  const fs::path f = fs::weakly_canonical(fs::absolute(file), error);
-  const fs::path d = fs::weakly_canonical(fs::absolute(folder), error);
-  auto part = f.begin();
-  for (const fs::path& name : d) {
-    if (name.empty()) continue;  // "out/" ends in an empty name
-    if (part == f.end() || *part != name) return false;
-    ++part;
-  }
-  return true;
-}
-
-// A suite record inside the folder the design replaces would be moved aside with the earlier
-// design before the runs read it, and reported as a file that cannot be opened: refused first,
-// at its entry.
-void RefuseRecordsInside(const model::DesignFile& design, const std::string& folder,
-                         const std::string& option) {
-  for (const model::StudyRecord& record : design.records) {
-    for (const model::GroundMotionSection& c : record.components) {
-      if (IsInside(c.file, folder)) {
-        throw InputError({record.entry},
-                         fmt::format("'{}' is inside '{}', the folder this design writes ({}), "
-                                     "whose earlier design it replaces: keep the suite's records "
-                                     "outside it, or write the design to another folder",
-                                     c.file, folder, option));
-      }
-    }
-  }
-}
-
-}  // namespace
-
 std::unique_ptr<DesignFolder> ClaimDesignFolder(const std::string& requested,
                                                 const model::DesignFile& design,
                                                 const std::string& option) {
@@ -443,9 +407,14 @@ std::unique_ptr<DesignFolder> ClaimDesignFolder(const std::string& requested,
                              : !design.output_directory.empty()
                                  ? design.output_directory
                                  : fs::path(design.path).stem().string();
-  const std::string named_by = requested.empty() ? "output.directory" : option;
-  RefuseRecordsInside(design, folder, named_by);
-  return std::make_unique<DesignFolder>(folder, named_by);
+  std::vector<DesignInput> records;
+  for (const model::StudyRecord& record : design.records) {
+    for (const model::GroundMotionSection& c : record.components) {
+      records.push_back({c.file, record.entry});
+    }
+  }
+  return std::make_unique<DesignFolder>(folder, requested.empty() ? "output.directory" : option,
+                                        records);
 }
 
 namespace {

@@ -112,9 +112,26 @@ void TakeLock(const std::string& lock, const std::string& option, const std::str
   throw InputError({option}, fmt::format("cannot take the lock file '{}'", lock));
 }
 
+// Whether `file` lies inside `folder` (an absolute, normalised path), links and ".." resolved; a
+// path that cannot be resolved is taken as outside (the reader names its own problem).
+bool IsInside(const fs::path& file, const fs::path& folder) {
+  std::error_code file_error, folder_error;
+  const fs::path f = fs::weakly_canonical(fs::absolute(file), file_error);
+  const fs::path d = fs::weakly_canonical(folder, folder_error);
+  if (file_error || folder_error || d.empty()) return false;
+  auto part = f.begin();
+  for (const fs::path& name : d) {
+    if (name.empty()) continue;  // a trailing separator
+    if (part == f.end() || *part != name) return false;
+    ++part;
+  }
+  return true;
+}
+
 }  // namespace
 
-DesignFolder::DesignFolder(std::string folder, std::string option)
+DesignFolder::DesignFolder(std::string folder, std::string option,
+                           const std::vector<DesignInput>& inputs)
     : folder_(std::move(folder)), option_(std::move(option)) {
   fs::path target = fs::absolute(folder_).lexically_normal();
   if (!target.has_filename()) target = target.parent_path();  // "out/" is "out"
@@ -189,6 +206,16 @@ DesignFolder::DesignFolder(std::string folder, std::string option)
                                      "finish moved aside: put it back or remove it, then run "
                                      "again",
                                      previous_));
+      }
+      for (const DesignInput& input : inputs) {
+        if (IsInside(input.file, target)) {
+          throw InputError({input.key},
+                           fmt::format("'{}' is inside '{}', the earlier design this design "
+                                       "replaces ({}): it would be moved aside with it before "
+                                       "it is read; copy it out, or write the design to another "
+                                       "folder",
+                                       input.file, folder_, option_));
+        }
       }
       fs::rename(target, previous_, error);
       if (error) {

@@ -213,10 +213,10 @@ TEST(DesignCommand, ARefusedDesignLeavesTheEarlierOneUntouched) {
   }
 }
 
-// A synthetic design writes its pairs into its folder; a second design that takes them as its
+// A synthetic design writes its pairs into its folder. A second design that takes them as its
 // suite and writes into the same folder would move them aside with the earlier design before
-// reading them, and said "cannot open" of files that are there. Refused first at the entry,
-// naming the folder and the option or key that chose it, the earlier design untouched.
+// reading them: refused first at the entry, naming the folder and the option or key that chose
+// it, the earlier design untouched.
 TEST(DesignCommand, ASuiteInsideTheFolderTheDesignReplacesIsRefusedAtItsEntry) {
   const fs::path folder = testing::FreshTestDirectory();
   const fs::path out = folder / "out";
@@ -257,8 +257,9 @@ TEST(DesignCommand, ASuiteInsideTheFolderTheDesignReplacesIsRefusedAtItsEntry) {
                                   "'out/records/pair1_h1.at2' is inside 'out"),
               std::string::npos)
         << refused.output;
-    EXPECT_NE(refused.output.find("the folder this design writes (" + c.expected_option + ")"),
-              std::string::npos)
+    EXPECT_NE(
+        refused.output.find("the earlier design this design replaces (" + c.expected_option + ")"),
+        std::string::npos)
         << refused.output;
     EXPECT_EQ(contents(), before) << c.expected_option;
   }

@@ -204,7 +204,8 @@ std::string BearingWeightRule(const model::ModelFile& model, const DesignOutcome
 
 // The folder a design writes into (design_folder.h), claimed: `requested` when given, else the
 // design's output.directory, else the design file's stem. Throws InputError naming `option` (or
-// output.directory), or a suite record's entry when the record lies inside that folder.
+// output.directory), or a suite record's entry when the record lies inside an earlier design
+// there, which the claim moves aside.
 std::unique_ptr<DesignFolder> ClaimDesignFolder(const std::string& requested,
                                                 const model::DesignFile& design,
                                                 const std::string& option);

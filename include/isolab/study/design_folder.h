@@ -9,7 +9,8 @@
 //    whose process is gone is taken over;
 //  * an earlier design is moved aside (".<name>.design-previous") while the new one is written,
 //    and comes back untouched when the new one fails or is refused; it is removed only once the
-//    new one has committed.
+//    new one has committed. A file the new design has yet to read (a suite record) inside it
+//    would be gone before it is read: refused at the key that names it.
 // The design is written at the folder's own name (not in a temporary folder renamed at the end),
 // so that every path the design writes into its files (synthetic records, models, histories) is
 // the path the user finds them at.
@@ -20,14 +21,22 @@
 
 namespace isolab::study {
 
+// A file the design reads after claiming its folder, and the key that names it for messages
+// ("design.yaml:4:13: suite.records[0]").
+struct DesignInput {
+  std::string file, key;
+};
+
 class DesignFolder {
  public:
   static constexpr const char* kManifest = "design_manifest.txt";
 
   // Takes the lock and checks the folder; throws InputError naming `option` (a command-line
   // option or the design file's output.directory) when the folder cannot be made, holds files
-  // that are not an earlier design's, or another design is writing into it. Changes nothing then.
-  DesignFolder(std::string folder, std::string option);
+  // that are not an earlier design's, or another design is writing into it, and naming an
+  // input's key when the input lies inside an earlier design that would be moved aside. Changes
+  // nothing then.
+  DesignFolder(std::string folder, std::string option, const std::vector<DesignInput>& inputs);
   // Without Commit(): removes what this design wrote and puts the earlier design back.
   ~DesignFolder();
   DesignFolder(const DesignFolder&) = delete;
