@@ -207,7 +207,9 @@ TEST_P(RunOptions, EachOutputOptionIsAppliedOrRefused) {
   EXPECT_EQ(RunIsolab(text + " -q").output.find("fixed-base periods"), std::string::npos);
 }
 
-// --plot draws the run (what each figure shows is tests/cli/plot_script_test.cpp's), and is
+// --plot draws, byte for byte, the figures scripts/plot_result.py draws from the same results
+// (what those show against the run's peaks is tests/cli/plot_script_test.cpp's), titled with the
+// kind's model and every panel with a unit (the script's --metadata sidecars); and it is
 // refused with a selection that leaves out histories the plots read.
 TEST_P(RunOptions, PlotIsApplied) {
   const Kind& kind = GetParam();
@@ -215,8 +217,29 @@ TEST_P(RunOptions, PlotIsApplied) {
   const Outcome outcome = RunIsolab("run " + kind.model + " -q -o " + (folder / "r.h5").string() +
                                     " --plot=" + (folder / "plots").string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
-  EXPECT_TRUE(fs::exists(folder / "plots" / "r_histories.png"));
-  EXPECT_EQ(fs::exists(folder / "plots" / "r_overview.png"), true);
+  const Outcome script = isolab::testing::RunCommandLine(
+      "/usr/bin/python3 " + kRoot + "/scripts/plot_result.py " + (folder / "r.h5").string() +
+      " --metadata -q -o " + (folder / "script").string() + " 2>&1");
+  ASSERT_EQ(script.exit_code, 0) << script.output;
+  for (const char* name : {"overview", "hysteresis", "histories", "envelopes", "energy"}) {
+    const std::string png = std::string("r_") + name + ".png";
+    const std::string drawn = ReadText(folder / "plots" / png);
+    ASSERT_EQ(drawn.rfind("\x89PNG", 0), 0u) << png << " is not a PNG";
+    EXPECT_TRUE(drawn == ReadText(folder / "script" / png)) << png << " differs from the script's";
+    const nlohmann::json sidecar =
+        nlohmann::json::parse(ReadText(folder / "script" / (std::string("r_") + name + ".json")));
+    std::string titles = sidecar["title"];  // the figure's, or its one panel's
+    for (const nlohmann::json& axes : sidecar["axes"])
+      titles += "|" + axes["title"].get<std::string>();
+    EXPECT_NE(titles.find(fs::path(kind.model).filename().string()), std::string::npos)
+        << png << ": " << titles;
+    ASSERT_FALSE(sidecar["axes"].empty()) << png;
+    for (const nlohmann::json& axes : sidecar["axes"]) {  // a level or a shared time axis aside
+      EXPECT_FALSE(axes["x_unit"].get<std::string>().empty() &&
+                   axes["y_unit"].get<std::string>().empty())
+          << png << ": " << axes["xlabel"] << ", " << axes["ylabel"];
+    }
+  }
   // Without the histories the plots read, refused before the run writes anything.
   for (const std::string option : {"--summary-only", "--quantities energy", "--levels roof"}) {
     const fs::path results = folder / "left_out.h5";
