@@ -575,13 +575,23 @@ TEST(ShakeTableCommand, DiagnoseBuildingNamesTheViscousPartTheModelLacks) {
   EXPECT_NE(model.find("dashpot"), std::string::npos) << model;
   EXPECT_NE(isolab::testing::ReadText(stem + ".md").find("Building: the building confirms it"),
             std::string::npos);
+}
 
+// A building diagnosis takes its units from the shake-table file: units given beside it are
+// refused, naming the option, before any work (kept apart from the diagnosis above, which CI's
+// sanitized stage leaves out for its length).
+TEST(ShakeTableCommand, DiagnoseBuildingRefusesUnitsBesideTheDataFile) {
+  const auto data = WriteShakeTable(WriteBuilding(""), "units_building");
+  WriteStart();
+  const auto spec = Scratch("units_spec.yaml");
+  std::ofstream(spec) << "model: start.yaml\nparameters:\n  - isolation.iso.k0\n";
+  const auto stem = Scratch("units").string();
   const auto units = RunIsolab("diagnose " + data.string() + " --building " + spec.string() +
-                                   " --force-unit kN --length-unit mm -q --out " + stem + "_no",
+                                   " --force-unit kN --length-unit mm -q --out " + stem,
                                true);
   EXPECT_EQ(units.exit_code, 2);
   EXPECT_NE(units.output.find("--force-unit"), std::string::npos) << units.output;
-  EXPECT_FALSE(std::filesystem::exists(stem + "_no.md"));
+  EXPECT_FALSE(std::filesystem::exists(stem + ".md"));
 }
 
 }  // namespace
