@@ -110,6 +110,16 @@ std::string ReadFile(const fs::path& path) {
   return text.str();
 }
 
+// Every file under `folder`, by its path relative to it, with its contents.
+std::map<std::string, std::string> FilesUnder(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(folder)) {
+    if (e.is_regular_file())
+      files[e.path().lexically_relative(folder).string()] = ReadFile(e.path());
+  }
+  return files;
+}
+
 // A design of the two-story building on the three bundled records, no figures: a few seconds.
 std::string QuickDesign(const fs::path& folder, const std::string& extra = "") {
   const std::string motions = std::string(ISOLAB_SOURCE_DIR) + "/ground_motions/";
@@ -191,10 +201,7 @@ TEST(DesignCommand, ARefusedDesignLeavesTheEarlierOneUntouched) {
       testing::RunIsolab("design " + QuickDesign(folder) + " -q --no-figures -o " + out.string())
           .exit_code,
       0);
-  std::map<std::string, std::string> before;
-  for (const auto& e : fs::recursive_directory_iterator(out)) {
-    if (e.is_regular_file()) before[e.path().lexically_relative(out).string()] = ReadFile(e.path());
-  }
+  const std::map<std::string, std::string> before = FilesUnder(out);
   // A period range far past the target's: refused once the bounds' T_M are known.
   const fs::path bad = folder / "bad";
   fs::create_directories(bad);
@@ -202,11 +209,7 @@ TEST(DesignCommand, ARefusedDesignLeavesTheEarlierOneUntouched) {
   const testing::Outcome refused =
       testing::RunIsolab("design " + refused_design + " -q --no-figures -o " + out.string(), true);
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
-  std::map<std::string, std::string> after;
-  for (const auto& e : fs::recursive_directory_iterator(out)) {
-    if (e.is_regular_file()) after[e.path().lexically_relative(out).string()] = ReadFile(e.path());
-  }
-  EXPECT_EQ(after, before);
+  EXPECT_EQ(FilesUnder(out), before);
   for (const auto& e : fs::directory_iterator(folder)) {
     const std::string name = e.path().filename().string();
     EXPECT_TRUE(name == "out" || name == "bad" || name == "design.yaml") << name;
@@ -228,15 +231,7 @@ TEST(DesignCommand, ASuiteInsideTheFolderTheDesignReplacesIsRefusedAtItsEntry) {
                                " -q --no-figures -o " + out.string())
                 .exit_code,
             0);
-  const auto contents = [&] {
-    std::map<std::string, std::string> files;
-    for (const auto& e : fs::recursive_directory_iterator(out)) {
-      if (e.is_regular_file())
-        files[e.path().lexically_relative(out).string()] = ReadFile(e.path());
-    }
-    return files;
-  };
-  const auto before = contents();
+  const auto before = FilesUnder(out);
   ASSERT_EQ(before.count("records/pair1_h1.at2"), 1u);
   // A record named through ".." (the reader normalises it), the folder by -o or by the design's
   // output.directory.
@@ -261,7 +256,7 @@ TEST(DesignCommand, ASuiteInsideTheFolderTheDesignReplacesIsRefusedAtItsEntry) {
         refused.output.find("the earlier design this design replaces (" + c.expected_option + ")"),
         std::string::npos)
         << refused.output;
-    EXPECT_EQ(contents(), before) << c.expected_option;
+    EXPECT_EQ(FilesUnder(out), before) << c.expected_option;
   }
 }
 
@@ -276,15 +271,7 @@ TEST(DesignCommand, ADiskThatFillsFailsTheDesignAndKeepsTheEarlierOne) {
   const std::string command =
       "design " + QuickDesign(folder) + " -q --no-figures -o " + out.string();
   ASSERT_EQ(testing::RunIsolab(command).exit_code, 0);
-  const auto contents = [&] {
-    std::map<std::string, std::string> files;
-    for (const auto& e : fs::recursive_directory_iterator(out)) {
-      if (e.is_regular_file())
-        files[e.path().lexically_relative(out).string()] = ReadFile(e.path());
-    }
-    return files;
-  };
-  const std::map<std::string, std::string> before = contents();
+  const std::map<std::string, std::string> before = FilesUnder(out);
   const testing::Outcome full =
       testing::RunCommandLine("bash -c \"trap '' XFSZ; ulimit -f 200; exec " +
                               std::string(ISOLAB_BINARY) + " " + command + "\" 2>&1 >/dev/null");
@@ -293,7 +280,7 @@ TEST(DesignCommand, ADiskThatFillsFailsTheDesignAndKeepsTheEarlierOne) {
             std::string::npos)
       << full.output;
   EXPECT_NE(full.output.find("File too large"), std::string::npos) << full.output;
-  EXPECT_EQ(contents(), before);
+  EXPECT_EQ(FilesUnder(out), before);
   for (const auto& e : fs::directory_iterator(folder)) {
     const std::string name = e.path().filename().string();
     EXPECT_TRUE(name == "out" || name == "design.yaml") << name;
