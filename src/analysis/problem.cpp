@@ -251,20 +251,13 @@ std::string KeyOf(const Component& c) {
   return c.motion.location.file == c.motion.key ? std::string() : c.motion.key + ": ";
 }
 
-// A scale so large that the record overflows (1e308 g) would run into a blow-up reported as a
-// failed run: bad input, named where the scale was given.
+// A scale that overflows the record is named where it was given: the option, or the model's key.
 void RequireFiniteScaledRecord(const Component& c, const io::AppliedRecord& applied,
                                const integrators::SampledHistory& history) {
-  if (std::all_of(history.values.begin(), history.values.end(),
-                  [](double a) { return std::isfinite(a); })) {
-    return;
-  }
-  const std::string what = fmt::format(
-      "scale {:g}: the record {} scaled by it is not a finite number (a scale this large "
-      "overflows)",
-      applied.scale, c.motion.file);
-  if (!c.scale_given_by.empty()) throw InputError({c.scale_given_by}, what);
-  throw InputError(c.motion.location, KeyOf(c) + what);
+  const bool by_option = !c.scale_given_by.empty();
+  io::RequireFiniteScaledRecord(history.values, applied.scale, c.motion.file,
+                                by_option ? SourceLocation{c.scale_given_by} : c.motion.location,
+                                by_option ? std::string() : KeyOf(c));
 }
 
 // The run's horizontal components, and its vertical one into `vertical` where the record has one
@@ -314,10 +307,9 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
                                  "(a second component needs a building in plan)",
                                  KeyOf(components[1])));
   }
-  if (!overrides.records.empty() && !(std::abs(angle) <= model::kMaxRecordAngle)) {
-    throw InputError({overrides.names.angle},
-                     fmt::format("{:g} degrees (must be in [-{:g}, {:g}])", angle,
-                                 model::kMaxRecordAngle, model::kMaxRecordAngle));
+  if (const std::string problem = model::RecordAngleProblem(angle);
+      !overrides.records.empty() && !problem.empty()) {
+    throw InputError({overrides.names.angle}, problem);
   }
   if (layout.directions == 1 && angle != 0.0) {
     throw InputError(overrides.records.empty() ? SourceLocation{model.path}

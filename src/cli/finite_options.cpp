@@ -35,10 +35,9 @@ std::string WholeNumberProblem(const std::string& text, bool is_unsigned) {
   if (negative && is_unsigned) return fmt::format("{} (must be a whole number >= 0)", text);
   std::int64_t signed_value = 0;
   std::uint64_t unsigned_value = 0;
-  const auto [end, error] =
-      is_unsigned ? std::from_chars(digits.data(), digits.data() + digits.size(), unsigned_value)
-                  : std::from_chars(text.data(), text.data() + text.size(), signed_value);
-  (void)end;
+  const std::errc error =
+      is_unsigned ? std::from_chars(digits.data(), digits.data() + digits.size(), unsigned_value).ec
+                  : std::from_chars(text.data(), text.data() + text.size(), signed_value).ec;
   if (error != std::errc()) return fmt::format("{} (too large a whole number)", text);
   return {};
 }

@@ -402,17 +402,21 @@ ScaledRecord ScaleRecord(const Record& record, double scale, const UnitSystem& u
   }
   ScaledRecord scaled;
   scaled.values.reserve(record.values.size());
-  for (const double a : record.values) {
-    scaled.values.push_back(a * factor);
-    if (!std::isfinite(scaled.values.back())) {
-      throw InputError({scale_given_by},
-                       fmt::format("{:g}: the record {} scaled by it is not a finite number (a "
-                                   "scale this large overflows)",
-                                   scale, record.path));
-    }
-  }
+  for (const double a : record.values) scaled.values.push_back(a * factor);
+  RequireFiniteScaledRecord(scaled.values, scale, record.path, {scale_given_by});
   scaled.pga = record.Peak() * std::abs(factor);
   return scaled;
+}
+
+void RequireFiniteScaledRecord(std::span<const double> scaled, double scale,
+                               const std::string& path, const SourceLocation& scale_at,
+                               const std::string& key) {
+  if (std::all_of(scaled.begin(), scaled.end(), [](double a) { return std::isfinite(a); })) {
+    return;
+  }
+  throw InputError(scale_at, fmt::format("{}scale {:g}: the record {} scaled by it is not a "
+                                         "finite number (a scale this large overflows)",
+                                         key, scale, path));
 }
 
 double Record::Peak() const {

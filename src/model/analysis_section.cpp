@@ -72,12 +72,16 @@ ScaleTarget ReadScaleTarget(const YamlReader& reader, const YAML::Node& node,
 
 }  // namespace
 
+std::string RecordAngleProblem(double angle) {
+  if (std::abs(angle) <= kMaxRecordAngle) return {};
+  return fmt::format("{:g} degrees (must be in [-{:g}, {:g}])", angle, kMaxRecordAngle,
+                     kMaxRecordAngle);
+}
+
 double ReadRecordAngle(const YamlReader& reader, const YAML::Node& node, const std::string& path) {
   const double angle = reader.ReadNumber(node, path);
-  if (!(std::abs(angle) <= kMaxRecordAngle)) {
-    reader.Fail(node, path,
-                fmt::format("{:g} degrees (must be in [-{:g}, {:g}])", angle, kMaxRecordAngle,
-                            kMaxRecordAngle));
+  if (const std::string problem = RecordAngleProblem(angle); !problem.empty()) {
+    reader.Fail(node, path, problem);
   }
   return angle;
 }

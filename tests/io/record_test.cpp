@@ -279,9 +279,10 @@ TEST(ScaleRecord, ConvertsScalesAndRefusesWhatCannotBeScaled) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(error_of(record, 1e308).rfind("scale: 1e+308: the record r.at2 scaled by it is not a "
-                                          "finite number",
-                                          0),
+  EXPECT_EQ(error_of(record, 1e308)
+                .rfind("scale: scale 1e+308: the record r.at2 scaled by it is "
+                       "not a finite number",
+                       0),
             0u)
       << error_of(record, 1e308);
   Record furlongs = record;

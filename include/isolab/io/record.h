@@ -12,12 +12,14 @@
 // column without a step).
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
 namespace isolab {
 class UnitSystem;
-}
+struct SourceLocation;
+}  // namespace isolab
 
 namespace isolab::io {
 
@@ -68,10 +70,18 @@ struct ScaledRecord {
 };
 
 // Throws InputError for record units `units` cannot convert (at the record's file), and for a
-// scale so large that the record overflows (1e308 g), at `scale_given_by` (the option or key that
-// gave it): bad input, not a run or a spectrum of infinities.
+// scale so large that the record overflows, at `scale_given_by` (the option that gave it), as
+// RequireFiniteScaledRecord does.
 ScaledRecord ScaleRecord(const Record& record, double scale, const UnitSystem& units,
                          const std::string& scale_given_by);
+
+// Throws InputError at `scale_at` where a value of the record at `path` scaled by `scale`
+// (`scaled`) is not finite: a scale so large that the record overflows (1e308 g) is bad input,
+// not a run or a spectrum of infinities. `key` starts the message where `scale_at` is a model's
+// line ("excitation.ground_motion: "), and is empty where it is the option that gave the scale.
+void RequireFiniteScaledRecord(std::span<const double> scaled, double scale,
+                               const std::string& path, const SourceLocation& scale_at,
+                               const std::string& key = {});
 
 // Throws InputError (file:line: what) for unreadable, malformed, empty or non-finite records,
 // unknown units, and units or a step that disagree with the file's own.

@@ -121,6 +121,9 @@ struct ForceSection {
 // An angle of a record's H1 from the x axis is a direction: beyond a turn either way it is a typo
 // (and at 1e308 degrees its cosine is not a number).
 inline constexpr double kMaxRecordAngle = 360.0;
+// What is wrong with `angle` as a record's angle ("400 degrees (must be in [-360, 360])"), or
+// empty where it is within kMaxRecordAngle: the model's key and --angle say the same.
+std::string RecordAngleProblem(double angle);
 
 struct ExcitationSection {
   // The record's horizontal components: H1, and H2 at angle + 90 degrees when there is a pair.
