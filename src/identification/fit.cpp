@@ -114,7 +114,10 @@ AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<c
   Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
   double constant = 0.0;
-  std::vector<Eigen::MatrixXd> bases;
+  // The search calls this tens of thousands of times, from its threads, for bases of the same
+  // size: fresh ones each time cost more than the rest of an evaluation (the kernel's zeroed
+  // pages, then cold stores), so each thread keeps its own (Basis resizes it in place).
+  thread_local std::vector<Eigen::MatrixXd> bases;
   model.Basis(x, data.tests, data.one_specimen, &bases, threads);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
     const CyclicTestData& test = data.tests[i];

@@ -338,5 +338,26 @@ TEST(Fit, ALawLeftWithoutItsSliderIsWrittenAsTheLawThatRemains) {
   EXPECT_NE(notes[0].find("linear_spring"), std::string::npos) << notes[0];
 }
 
+// Each thread keeps the bases of its last evaluation (fit.cpp): an evaluation after one of another
+// model on other data gives, to the last digit, what it gave first, and that e^2 is the one a
+// simulation of its assembly gives.
+TEST(SolveAmplitudes, BasesKeptFromAnotherModelAndDataGiveWhatFreshOnesGive) {
+  const FitData hdrb =
+      SelectCycles(SyntheticTests(Table9(), {kHdrbAmplitudes, {2.0}, 3, 200, 0.0, 1}), {3});
+  const ModelParametrisation thm2(Specs({{LawType::kThm2, 2}}), ScalesOf(hdrb));
+  const std::vector<double> x(thm2.dimension(), 0.4);
+  const AmplitudeSolution first = SolveAmplitudes(thm2, x, hdrb);
+
+  const FitData bhm2 = NoisyBhm2Data(48);
+  const ModelParametrisation other(kBhm2AndElastoplastic, ScalesOf(bhm2));
+  SolveAmplitudes(other, other.StartPoint(), bhm2);
+
+  const AmplitudeSolution again = SolveAmplitudes(thm2, x, hdrb);
+  EXPECT_EQ(again.error, first.error);
+  EXPECT_EQ(again.amplitudes, first.amplitudes);
+  const double simulated = ComputeFitError(thm2.Assembly(x, again.amplitudes), hdrb).total;
+  EXPECT_NEAR(again.error, simulated, 1e-9 * simulated);
+}
+
 }  // namespace
 }  // namespace isolab::identification
