@@ -252,7 +252,7 @@ std::string KeyOf(const Component& c) {
 }
 
 // A scale that overflows the record is named where it was given: the option, or the model's key.
-void RequireFiniteScaledRecord(const Component& c, const io::AppliedRecord& applied,
+void RequireFiniteScaledMotion(const Component& c, const io::AppliedRecord& applied,
                                const integrators::SampledHistory& history) {
   const bool by_option = !c.scale_given_by.empty();
   io::RequireFiniteScaledRecord(history.values, applied.scale, c.motion.file,
@@ -331,7 +331,7 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
     if (i > 0) take_h1_scale(&c);
     problem.records.push_back(
         ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units, &histories[i], c.data));
-    RequireFiniteScaledRecord(c, problem.records.back(), histories[i]);
+    RequireFiniteScaledMotion(c, problem.records.back(), histories[i]);
     if (i == 0) continue;
     report_h1_scale(&problem.records.back());
     const integrators::SampledHistory& h1 = histories[0];
@@ -354,7 +354,7 @@ double ApplyGroundMotions(const model::ModelFile& model, const RunOverrides& ove
     take_h1_scale(&c);
     problem.vertical_record = ApplyRecord(c.motion, c.units_given_by, c.dt_given_by, model.units,
                                           &problem.excitation.vertical, c.data);
-    RequireFiniteScaledRecord(c, *problem.vertical_record, problem.excitation.vertical);
+    RequireFiniteScaledMotion(c, *problem.vertical_record, problem.excitation.vertical);
     report_h1_scale(&*problem.vertical_record);
     if (histories.empty()) {
       throw InputError(

@@ -89,6 +89,9 @@ FitWork EstimateFitWork(const identification::ModelParametrisation& model,
   work.laws = std::max(work.laws, 1L);
   const int hardware = ThreadsOrHardware(options.threads);
   work.threads = std::max(1, std::min(hardware, options.islands));
+  // The first evaluation on a thread allocates the basis that the fit's later ones reuse: the
+  // second is the one a fit repeats.
+  identification::SolveAmplitudes(model, model.StartPoint(), data);
   const auto start = std::chrono::steady_clock::now();
   identification::SolveAmplitudes(model, model.StartPoint(), data);
   work.probe_seconds =

@@ -116,7 +116,9 @@ AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<c
   double constant = 0.0;
   // The search calls this tens of thousands of times, from its threads, for bases of the same
   // size: fresh ones each time cost more than the rest of an evaluation (the kernel's zeroed
-  // pages, then cold stores), so each thread keeps its own (Basis resizes it in place).
+  // pages, then cold stores), so each thread keeps its own (Basis resizes it in place), up to
+  // kKeptBasisBytes: beyond that a thread would hold too much memory once its fit is over.
+  constexpr std::size_t kKeptBasisBytes = std::size_t{32} << 20;
   thread_local std::vector<Eigen::MatrixXd> bases;
   model.Basis(x, data.tests, data.one_specimen, &bases, threads);
   for (std::size_t i = 0; i < data.tests.size(); ++i) {
@@ -183,6 +185,9 @@ AmplitudeSolution SolveAmplitudes(const ModelParametrisation& model, std::span<c
     passive[best] = true;
   }
   const double error = constant - 2.0 * a.dot(rhs) + a.dot(normal * a);
+  std::size_t basis_bytes = 0;
+  for (const Eigen::MatrixXd& basis : bases) basis_bytes += sizeof(double) * basis.size();
+  if (basis_bytes > kKeptBasisBytes) bases.clear();
   return {a, std::max(error, 0.0)};
 }
 

@@ -414,9 +414,12 @@ void RequireFiniteScaledRecord(std::span<const double> scaled, double scale,
   if (std::all_of(scaled.begin(), scaled.end(), [](double a) { return std::isfinite(a); })) {
     return;
   }
-  throw InputError(scale_at, fmt::format("{}scale {:g}: the record {} scaled by it is not a "
-                                         "finite number (a scale this large overflows)",
-                                         key, scale, path));
+  // An option names the scale already ("--scale: 1e+308: ..."); a model's line names its key.
+  const std::string scale_is =
+      key.empty() ? fmt::format("{:g}", scale) : fmt::format("{}scale {:g}", key, scale);
+  throw InputError(scale_at, fmt::format("{}: the record {} scaled by it is not a finite number "
+                                         "(a scale this large overflows)",
+                                         scale_is, path));
 }
 
 double Record::Peak() const {

@@ -888,7 +888,7 @@ TEST(RunCommand, NonFiniteNumbersOnTheCommandLineExitTwo) {
       {"--record " + Source("ground_motions/fwn_firm_seed1.at2") + " --angle 1e308",
        "--angle: 1e+308 degrees (must be in [-360, 360])"},
       // The record overflowed to inf: a blow-up reported as a failed run (exit 1).
-      {"--scale 1e308", "--scale: scale 1e+308: the record "},
+      {"--scale 1e308", "--scale: 1e+308: the record "},
   };
   for (const auto& [option, message] : cases) {
     const auto run =

@@ -202,7 +202,7 @@ TEST(SpectrumCommand, BadInputExitsTwoNamingTheCauseAndWritesNothing) {
       {kBundled + " --periods 0.1:5:0", "--periods: '0.1:5:0': STEP = 0 must be > 0"},
       {kBundled + " --periods 0,1", "--periods: '0,1': period 0 s must be > 0"},
       // Far beyond structures' periods the exact SDOF step cancels: D was 0 at 1e10 s.
-      {kBundled + " --scale 1e308", "--scale: scale 1e+308: the record "},
+      {kBundled + " --scale 1e308", "--scale: 1e+308: the record "},
       {kBundled + " --periods 1,1e10",
        "--periods: '1,1e10': period 1e+10 s must be > 0 and at most 1000 s"},
       {kBundled + " --periods 0.5,abc", "--periods: 'abc' is not a number (in '0.5,abc')"},

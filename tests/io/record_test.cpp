@@ -280,11 +280,24 @@ TEST(ScaleRecord, ConvertsScalesAndRefusesWhatCannotBeScaled) {
     return std::string("no error");
   };
   EXPECT_EQ(error_of(record, 1e308)
-                .rfind("scale: scale 1e+308: the record r.at2 scaled by it is "
-                       "not a finite number",
+                .rfind("scale: 1e+308: the record r.at2 scaled by it is not a "
+                       "finite number",
                        0),
             0u)
       << error_of(record, 1e308);
+  // A model's scale is named at its line, by its key.
+  try {
+    RequireFiniteScaledRecord(std::vector<double>{1.0, HUGE_VAL}, 1e308, "r.at2", {"m.yaml", 7, 5},
+                              "excitation.ground_motion: ");
+    ADD_FAILURE() << "an infinite value passed";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what())
+                  .rfind("m.yaml:7:5: excitation.ground_motion: scale 1e+308: "
+                         "the record r.at2 scaled by it is not a finite number",
+                         0),
+              0u)
+        << error.what();
+  }
   Record furlongs = record;
   furlongs.units = "furlong/s^2";
   EXPECT_EQ(error_of(furlongs, 1.0).rfind("r.at2: units 'furlong/s^2': ", 0), 0u)

@@ -84,7 +84,8 @@ class ModelParametrisation {
   // test with one column per amplitude and one row per sample: the laws driven through the tests,
   // each from rest, or, for one specimen, in order with their state carried from test to test.
   // `threads` (>= 1) share the laws' runs, each into its own column: the result is the same for
-  // any count.
+  // any count. Every element is written: `bases` may hold an earlier call's matrices (a fit keeps
+  // them from evaluation to evaluation), and no value of theirs may survive.
   void Basis(std::span<const double> x, std::span<const CyclicTestData> tests, bool one_specimen,
              std::vector<Eigen::MatrixXd>* bases, int threads = 1) const;
 
