@@ -105,8 +105,9 @@ py::dict Compare(const std::string& study_path, const std::string& output, int j
   model::StudyFile study = model::LoadStudyFile(study_path);
   if (runs) study.runs = model::ParseRunFiles(*runs, "runs");
   if (free_vibration) {
-    study.free_vibration =
-        model::ParseFreeVibration(*free_vibration, study.units, "free_vibration");
+    model::SetStudyFreeVibration(
+        study, model::ParseFreeVibration(*free_vibration, study.units, "free_vibration"),
+        "free_vibration");
   }
   const int threads = CheckedWorkers(jobs, "jobs");
   const std::string folder = study::PrepareOutputFolder(output, study_path, study);

@@ -86,6 +86,12 @@ def test_bad_input_raises_input_error_with_its_location(repo, tmp_path):
         isolab.compare(repo / "tests/study/data/bad_study_key.yaml", output=tmp_path)
     with pytest.raises(isolab.InputError, match="free_vibration"):
         isolab.compare(repo / SMALL, output=tmp_path, free_vibration="soon")
+    # The small study's building fixes its runs' duration: refused before any run.
+    folder = tmp_path / "fixed_duration"
+    with pytest.raises(isolab.InputError,
+                       match=r"^free_vibration: variant 'thm1' fixes the run's duration"):
+        isolab.compare(repo / SMALL, output=folder, free_vibration=3)
+    assert not folder.exists()
 
 
 def test_a_plan_study_has_the_plan_quantities_of_the_command_line(repo, tmp_path, isolab_cli,

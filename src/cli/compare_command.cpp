@@ -116,8 +116,10 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
   try {
     study_file = model::LoadStudyFile(options.study);
     if (!options.free_vibration.empty()) {
-      study_file.free_vibration =
-          model::ParseFreeVibration(options.free_vibration, study_file.units, "--free-vibration");
+      model::SetStudyFreeVibration(
+          study_file,
+          model::ParseFreeVibration(options.free_vibration, study_file.units, "--free-vibration"),
+          "--free-vibration");
     }
     if (!options.runs.empty()) study_file.runs = model::ParseRunFiles(options.runs, "--runs");
     if (options.plot) CheckPlotScript("plot_study.py");  // before the runs, not after

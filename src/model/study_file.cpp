@@ -417,9 +417,9 @@ StudyFile LoadStudyFile(const std::string& path) {
   study.records = ReadRecords(reader, reader.Require(root, "", "records"), "records", directory,
                               study.units, study.directions, study.building_path);
   study.scales = ReadScales(reader, reader.Require(root, "", "scales"));
-  if (root["free_vibration"]) {
-    study.free_vibration =
-        ReadFreeVibration(reader, root["free_vibration"], "free_vibration", study.units);
+  if (const YAML::Node free = root["free_vibration"]) {
+    SetStudyFreeVibration(study, ReadFreeVibration(reader, free, "free_vibration", study.units),
+                          reader.Locate(free).Describe() + ": free_vibration");
   }
   if (root["output"]) {
     const YAML::Node output = root["output"];
@@ -458,6 +458,20 @@ const char* RunFilesName(RunFiles runs) {
       return "full";
   }
   return "?";
+}
+
+void SetStudyFreeVibration(StudyFile& study, const FreeVibration& free,
+                           const std::string& given_by) {
+  for (const StudyVariant& variant : study.variants) {
+    if (variant.model.analysis.duration > 0.0) {
+      throw InputError({given_by},
+                       fmt::format("variant '{}' fixes the run's duration (analysis.duration in "
+                                   "{}); free vibration cannot lengthen it",
+                                   variant.name, variant.model.path));
+    }
+  }
+  study.free_vibration = free;
+  study.free_vibration_given_by = given_by;
 }
 
 }  // namespace isolab::model

@@ -74,6 +74,8 @@ JobResult RunJob(const model::StudyFile& study, const Job& job, const std::strin
     overrides.angle = record.angle;
     overrides.fixed_base = variant.fixed_base;
     overrides.free_vibration = StudyFreeVibration(study, model.units);
+    overrides.names.free_vibration = study.free_vibration_given_by;
+    overrides.names.max_steps.clear();  // a study has no option that raises the limit
     const analysis::Problem problem = analysis::Prepare(model, overrides);
     const double g = model.units.Convert(1.0, "g", dimension::kAcceleration);
     double pga = 0.0;

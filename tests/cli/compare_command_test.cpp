@@ -448,6 +448,35 @@ TEST(CompareCommand, BadStudyExitsTwoWithItsLocation) {
   EXPECT_EQ(mpi.output.find(expected, first + 1), std::string::npos) << mpi.output;
 }
 
+// small_study's building fixes the run's duration: a free vibration cannot follow its records.
+// Refused before any run, the output folder not made; a study whose runs fail says so per run.
+TEST(CompareCommand, AFreeVibrationARunOfFixedDurationCannotTakeIsRefused) {
+  const fs::path folder = OutputFolder("fixed_duration");
+  const Outcome run = RunIsolab(
+      "compare " + StudyData("small_study.yaml") + " --free-vibration 3 -o " + folder.string(),
+      true);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("--free-vibration: variant 'thm1' fixes the run's duration "
+                            "(analysis.duration in "),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(fs::exists(folder));
+
+  // A free vibration too long for the step limit fails each run, naming the option; a study
+  // has no --max-steps to raise the limit with, so none is offered.
+  const fs::path study = OutputFolder("long_free_vibration.yaml");
+  std::ofstream(study) << "building: " << StudyData("two_story_lrb.yaml")
+                       << "\nvariants: [{name: lrb}]\nrecords: ["
+                       << Source("ground_motions/pulse_tp2.at2") << "]\nscales: [1]\n";
+  const fs::path long_folder = OutputFolder("long_free_vibration");
+  const Outcome long_run = RunIsolab("compare " + study.string() +
+                                     " -q --free-vibration 1e308 -o " + long_folder.string());
+  EXPECT_EQ(long_run.exit_code, 1) << long_run.output;
+  const std::string csv = ReadText(long_folder / "summary.csv");
+  EXPECT_NE(csv.find("choose a larger dt or a shorter duration"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("--max-steps"), std::string::npos) << csv;
+}
+
 // -j 1000000 would start a million workers; refused before the study is read.
 TEST(CompareCommand, FarMoreWorkersThanTheHardwareAreRefused) {
   const fs::path folder = OutputFolder("too_many_workers");

@@ -132,6 +132,35 @@ TEST_F(StudyFileTest, GlobsExpandInByteOrderAndKeepTheListOrder) {
   EXPECT_EQ(study.output_directory, "out");
 }
 
+// A study's free vibration follows every record, unless a variant's model fixes the run's length:
+// that is refused once, at the study's key, not in every run.
+TEST_F(StudyFileTest, AFreeVibrationIsRefusedWhereAVariantFixesTheRunsDuration) {
+  const std::string records =
+      "records: [" + Source("ground_motions/pulse_tp2.at2") + "]\nscales: [1]\n";
+  const std::string free =
+      Write("free.yaml", "building: " + TestData("study/data/two_story_lrb.yaml") +
+                             "\nvariants: [{name: lrb}]\n" + records + "free_vibration: 20\n");
+  const StudyFile study = LoadStudyFile(free);
+  ASSERT_TRUE(study.free_vibration.has_value());
+  EXPECT_FALSE(study.free_vibration->automatic);
+  EXPECT_EQ(study.free_vibration->duration, 20.0);
+  EXPECT_EQ(study.free_vibration_given_by, free + ":5:17: free_vibration");
+
+  // small_building.yaml fixes analysis.duration.
+  ExpectError("variants: [{name: thm1}]\n" + records + "free_vibration: 20\n",
+              ":5:17: free_vibration",
+              "variant 'thm1' fixes the run's duration (analysis.duration in ");
+  StudyFile fixed = LoadStudyFile(Study("variants: [{name: thm1}]\n" + records));
+  try {
+    SetStudyFreeVibration(fixed, {false, 3.0}, "--free-vibration");
+    ADD_FAILURE() << "a free vibration was given to a run of fixed duration";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("--free-vibration: variant 'thm1'", 0), 0u)
+        << error.what();
+  }
+  EXPECT_FALSE(fixed.free_vibration.has_value());
+}
+
 TEST_F(StudyFileTest, RecordEntriesGiveUnitsStepAndScale) {
   const std::string pulse = Source("ground_motions/pulse_tp2.at2");
   const std::string path = Study(
@@ -143,7 +172,7 @@ TEST_F(StudyFileTest, RecordEntriesGiveUnitsStepAndScale) {
       "  - " +
       TestData("io/data/record_ngaw2.at2") +
       "\n"
-      "scales: [1]\nfree_vibration: 20\n");
+      "scales: [1]\n");
   const StudyFile study = LoadStudyFile(path);
   ASSERT_EQ(study.records.size(), 2u);
   EXPECT_EQ(study.records[0].components[0].units, "gal");
@@ -153,9 +182,6 @@ TEST_F(StudyFileTest, RecordEntriesGiveUnitsStepAndScale) {
       << study.records[0].entry;
   EXPECT_EQ(study.records[1].components[0].units, "");
   EXPECT_EQ(study.records[1].components[0].scale, 1.0);
-  ASSERT_TRUE(study.free_vibration.has_value());
-  EXPECT_FALSE(study.free_vibration->automatic);
-  EXPECT_EQ(study.free_vibration->duration, 20.0);
 
   ExpectError("variants: [{name: a}]\nrecords: [{file: " + pulse + ", unit: g}]\nscales: [1]\n",
               ":3:", "records[0].unit: unknown key (did you mean 'units'?)");

@@ -91,7 +91,16 @@ struct StudyFile {
   std::string output_directory;                 // empty: not given
   RunFiles runs = RunFiles::kFull;              // output.runs
   std::optional<FreeVibration> free_vibration;  // (the building's time unit); empty: the models'
+  // Where free_vibration was given, for messages: "study.yaml:9:17: free_vibration", an option.
+  std::string free_vibration_given_by = "free_vibration";
 };
+
+// Gives every run of `study` the free vibration `free` after its record; `given_by` names where
+// it was given (the study's key at its line, an option, an argument). A variant whose model fixes
+// the run's duration (analysis.duration) cannot take one: InputError({given_by}, ...) before any
+// run, rather than the same failure in each.
+void SetStudyFreeVibration(StudyFile& study, const FreeVibration& free,
+                           const std::string& given_by);
 
 // Throws InputError for an unreadable file, bad YAML, unknown or missing keys, wrong types, a
 // variant or building model that does not load, a glob that matches nothing, a missing record
