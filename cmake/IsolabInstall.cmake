@@ -17,7 +17,7 @@ set_target_properties(isolab_klu PROPERTIES EXPORT_NAME klu)
 set_target_properties(isolab_hdf5 PROPERTIES EXPORT_NAME hdf5)
 
 install(TARGETS isolab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# The front (bin/isolab) starts it for fit, diagnose and compare (src/cli/main.cpp).
+# The front (bin/isolab) starts them for its other commands (src/cli/heavy_commands.h).
 install(TARGETS isolab_search isolab_studies RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/isolab)
 install(TARGETS ${isolab_library_targets} EXPORT isolabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

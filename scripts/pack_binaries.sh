@@ -9,6 +9,10 @@
 set -euo pipefail
 output=$(realpath "${1:-isolab-bin.tar.gz}")
 build=$(realpath "${2:-build}")
+if [ ! -x "$build/libexec/isolab/isolab-studies" ] || [ ! -x "$build/libexec/isolab/isolab-search" ]; then
+  echo "pack_binaries.sh: $build has the front alone: build every command first (scripts/setup.sh --all)" >&2
+  exit 1
+fi
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 root=$stage/isolab-bin

@@ -10,6 +10,7 @@
 
 #include "common_options.h"
 #include "finite_options.h"
+#include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/cyclic/cyclic_campaign.h"
 #include "isolab/cyclic/model_replay.h"
@@ -364,11 +365,8 @@ void RunReplay(const CyclicOptions& options, std::ostream& out) {
 }  // namespace
 
 void RegisterCyclicCommand(CLI::App& app, CyclicOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "cyclic",
-      "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report energy "
-      "per cycle, peak force and slider displacements; or drive a model's isolation, or a plan "
-      "model's isolators, along a path (--path) or an orbit (--orbit)");
+  CLI::App* command =
+      app.add_subcommand(std::string(kCyclicCommand.name), std::string(kCyclicCommand.help));
   command->add_option("models", options.models, "Model files (YAML) with an isolation section")
       ->required()
       ->check(CLI::ExistingFile);

@@ -1,6 +1,7 @@
 // The commands the front hands over to another executable (main.cpp), each named once: the
 // executable that runs it, and the description both `isolab --help` and the command's own
-// registration print.
+// registration print. The front keeps `run`, `spectrum` and `bounds`, so that it builds from the
+// solver's libraries alone: the others need the cyclic, building, design or study libraries.
 #pragma once
 
 #include <string_view>
@@ -27,7 +28,20 @@ inline constexpr HeavyCommand kDesignCommand{
     "Design an isolated building as ASCE 7-16 chapter 17 asks: bound models, the ELF "
     "procedure, a suite scaled to the target spectrum, runs with accidental eccentricity, "
     "design values and checks in a report"};
-inline constexpr HeavyCommand kHeavyCommands[] = {kFitCommand, kDiagnoseCommand, kCompareCommand,
-                                                  kDesignCommand};
+inline constexpr HeavyCommand kCyclicCommand{
+    "cyclic", "isolab-search",
+    "Impose u(t) = u_a sin(2 pi t / T) on a model's isolation assembly and report energy per "
+    "cycle, peak force and slider displacements; or drive a model's isolation, or a plan model's "
+    "isolators, along a path (--path) or an orbit (--orbit)"};
+inline constexpr HeavyCommand kShakeTableCommand{
+    "shaketable", "isolab-search",
+    "Shake-table measurements of an isolated building: the isolator's measured history, the "
+    "table record, and the model's prediction against the measurements"};
+inline constexpr HeavyCommand kSynthCommand{"synth", "isolab-studies",
+                                            "Write a seeded synthetic ground motion (AT2)"};
+// In `isolab --help`'s order.
+inline constexpr HeavyCommand kHeavyCommands[] = {
+    kCyclicCommand,  kFitCommand,    kDiagnoseCommand,  kSynthCommand,
+    kCompareCommand, kDesignCommand, kShakeTableCommand};
 
 }  // namespace isolab::cli

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "common_options.h"
+#include "heavy_commands.h"
 #include "isolab/analysis/results_file.h"
 #include "isolab/building/prediction_band.h"
 #include "isolab/building/shake_table_measurements.h"
@@ -26,10 +27,8 @@
 namespace isolab::cli {
 
 void RegisterShakeTableCommand(CLI::App& app, ShakeTableOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "shaketable",
-      "Shake-table measurements of an isolated building: the isolator's measured history, the "
-      "table record, and the model's prediction against the measurements");
+  CLI::App* command = app.add_subcommand(std::string(kShakeTableCommand.name),
+                                         std::string(kShakeTableCommand.help));
   command->add_option("data", options.data, "Shake-table CSV (named columns with units)")
       ->required()
       ->check(CLI::ExistingFile);

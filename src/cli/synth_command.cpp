@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "common_options.h"
+#include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/design/matched_pairs.h"
 #include "isolab/io/output_check.h"
@@ -175,7 +176,8 @@ int RunPairs(const SynthOptions& o, std::ostream& out) {
 }  // namespace
 
 void RegisterSynthCommand(CLI::App& app, SynthOptions& o) {
-  CLI::App* command = app.add_subcommand("synth", "Write a seeded synthetic ground motion (AT2)");
+  CLI::App* command =
+      app.add_subcommand(std::string(kSynthCommand.name), std::string(kSynthCommand.help));
   command->add_option("kind", o.kind, "noise (filtered white noise) or pulse (near-fault)")
       ->check(CLI::IsMember({"noise", "pulse"}));
   AddOutputOption(command, &o.output, "AT2 file to write; with --pairs, the folder")->required();

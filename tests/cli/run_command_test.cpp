@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "cli/run_isolab.h"
 #include "leftover_temporaries.h"
@@ -806,8 +807,9 @@ TEST(RunCommand, TheFrontLinksNeitherMpiNorPagmo) {
 }
 
 // A study's start-up is time its workers wait, and pagmo's libraries take about 20 ms to load:
-// compare and design run in an executable without them. fit and diagnose run in one with pagmo
-// and MPI (a fit spreads over mpirun's ranks), whose start-up is nothing beside a search.
+// compare, design and synth run in an executable without them. fit and diagnose run in one with
+// pagmo and MPI (a fit spreads over mpirun's ranks), whose start-up is nothing beside a search,
+// and so do cyclic and shaketable, on the same libraries.
 TEST(RunCommand, StudiesLoadNoPagmoAndSearchesBoth) {
   const auto studies = isolab::testing::RunShell(std::string("ldd ") + ISOLAB_STUDIES_BINARY);
   ASSERT_EQ(studies.exit_code, 0);
@@ -817,12 +819,53 @@ TEST(RunCommand, StudiesLoadNoPagmoAndSearchesBoth) {
   ASSERT_EQ(search.exit_code, 0);
   EXPECT_NE(search.output.find("libpagmo"), std::string::npos) << search.output;
   EXPECT_NE(search.output.find("libmpi"), std::string::npos) << search.output;
-  for (const char* command : {"compare", "design", "diagnose"}) {
+  for (const char* command :
+       {"compare", "design", "synth", "fit", "diagnose", "cyclic", "shaketable", "bounds"}) {
     const auto help = RunIsolab(std::string(command) + " --help");
     EXPECT_EQ(help.exit_code, 0) << command << ": " << help.output;
     EXPECT_NE(help.output.find(std::string("isolab ") + command + " [OPTIONS]"), std::string::npos)
         << help.output;
   }
+}
+
+// scripts/setup.sh alone builds the front: a command it hands over whose executable is not built
+// says how to build it, in a build tree; elsewhere (an install missing a file) it says to
+// reinstall.
+TEST(RunCommand, AHandedOverCommandWhoseExecutableIsMissingSaysHowToBuildIt) {
+  const std::filesystem::path made = TemporaryFile("front_alone");
+  std::filesystem::create_directories(made);
+  // As the front reads its own path (/proc/self/exe): without symbolic links.
+  const std::filesystem::path folder = std::filesystem::canonical(made);
+  const std::filesystem::path front = folder / "isolab";
+  std::filesystem::copy_file(ISOLAB_BINARY, front);
+  const std::string fit = front.string() + " fit --help";
+  const auto installed = isolab::testing::RunShell(fit, true);
+  EXPECT_EQ(installed.exit_code, 1) << installed.output;
+  // An install looks in ../libexec beside bin/.
+  EXPECT_NE(installed.output.find("cannot start " +
+                                  (folder.parent_path() / "libexec/isolab/isolab-search").string() +
+                                  " for 'fit'"),
+            std::string::npos)
+      << installed.output;
+  EXPECT_NE(installed.output.find("reinstall isolab"), std::string::npos) << installed.output;
+
+  std::ofstream(folder / "CMakeCache.txt") << "# a build tree\n";
+  for (const auto& [command, target] :
+       {std::pair{"fit", "isolab_search"}, std::pair{"cyclic", "isolab_search"},
+        std::pair{"compare", "isolab_studies"}, std::pair{"synth", "isolab_studies"}}) {
+    const auto built = isolab::testing::RunShell(front.string() + " " + command + " --help", true);
+    EXPECT_EQ(built.exit_code, 1) << built.output;
+    EXPECT_NE(built.output.find(std::string("isolab: '") + command + "' is not built yet (" +
+                                (folder / "libexec/isolab/").string()),
+              std::string::npos)
+        << built.output;
+    EXPECT_NE(built.output.find("`cmake --build " + folder.string() + " --target " + target +
+                                "`, or every command with `scripts/setup.sh --all`"),
+              std::string::npos)
+        << built.output;
+  }
+  // The front's own commands need nothing beside it.
+  EXPECT_EQ(isolab::testing::RunShell(front.string() + " run --help").exit_code, 0);
 }
 
 namespace {

@@ -29,8 +29,8 @@ run(${WORK_DIR}/consumer/isolab_consumer ${SOURCE_DIR}/models/paper/table7_thm1_
 # The installed executable: its version, and --plot with the scripts from share/isolab/scripts
 # (the build tree's copies are not beside it).
 run(${prefix}/bin/isolab --version)
-# fit and diagnose run in libexec/isolab/isolab-search, compare and design in
-# libexec/isolab/isolab-studies, which the front starts.
+# fit, diagnose, cyclic and shaketable run in libexec/isolab/isolab-search, compare, design and
+# synth in libexec/isolab/isolab-studies, which the front starts.
 run(${prefix}/bin/isolab fit --help)
 run(${prefix}/bin/isolab compare --help)
 file(MAKE_DIRECTORY ${WORK_DIR}/run)
