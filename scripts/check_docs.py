@@ -109,6 +109,11 @@ def tracked_top_level(root):
     return {path.split("/", 1)[0] for path in listed.decode().split("\0") if path}
 
 
+# What isolab writes (results, tables, figures): outside a git checkout, such a file at the top
+# level is taken for a command's output rather than a source.
+RESULT_SUFFIXES = {".h5", ".csv", ".png", ".pdf", ".json"}
+
+
 def link_repository(root, folder):
     """Links in `folder` to the repository's top-level files and folders: the sources only, not
     the results a command left in the checkout (the README's first command writes
@@ -117,8 +122,12 @@ def link_repository(root, folder):
     for entry in root.iterdir():
         if entry.name.startswith(".") or entry.name.startswith("build"):
             continue
-        if tracked is None or entry.name in tracked:
-            (folder / entry.name).symlink_to(entry)
+        if tracked is None:
+            if entry.is_file() and entry.suffix in RESULT_SUFFIXES:
+                continue
+        elif entry.name not in tracked:
+            continue
+        (folder / entry.name).symlink_to(entry)
 
 
 def check(page, binary, root):
