@@ -50,7 +50,10 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2 ? v[(NR + 1) / 2] :
 isolab_run() {  # MODEL histories|summary: the command line
   local output=(-o "$fast/run.h5")
   [ "$2" = summary ] && output+=(--summary-only)
-  echo "$isolab" run "$work/models/$1" --free-vibration 0 -q "${output[@]}"
+  # The record's length with no free vibration; a 1-step twin fixes its duration, which already
+  # leaves free vibration out (and isolab refuses --free-vibration with it).
+  grep -Eq '^analysis:.*[{ ,]duration:' "$work/models/$1" || output+=(--free-vibration 0)
+  echo "$isolab" run "$work/models/$1" -q "${output[@]}"
 }
 opensees_run() {  # SCRIPT STEPS ARGS...: the command line
   local script=$1 steps=$2
@@ -63,10 +66,12 @@ opensees_run() {  # SCRIPT STEPS ARGS...: the command line
 measure() {  # NAME LONG_MODEL SHORT_MODEL SCRIPT ARGS...
   local name=$1 long=$2 short=$3 script=$4
   shift 4
-  # Each command once, checked: a run that fails would otherwise be timed as if it were one.
+  # Each command once, checked: a run that fails or is refused would otherwise be timed as if it
+  # were one (a refused 1-step run makes every per-step figure too large).
   # shellcheck disable=SC2046  # the command lines split into words, as they should
   for command in "$(isolab_run "$long" histories)" "$(isolab_run "$long" summary)" \
-    "$(opensees_run "$script" 10000 "$@")"; do
+    "$(isolab_run "$short" histories)" "$(isolab_run "$short" summary)" \
+    "$(opensees_run "$script" 10000 "$@")" "$(opensees_run "$script" 1 "$@")"; do
     if ! $command >"$work/check.txt" 2>&1 || grep -q "analyze failed" "$work/check.txt"; then
       echo "$name: failed: $command" >&2
       cat "$work/check.txt" >&2

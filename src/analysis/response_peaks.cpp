@@ -101,7 +101,10 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   }
 }
 
-Vec2 PeakTracker::StoryDrift(std::size_t story, const integrators::ResponseRow& row) const {
+// Inlined into Observe's loop over the stories, where a call per story cost as much as the
+// arithmetic (a tall building's rows).
+[[gnu::always_inline]] inline Vec2 PeakTracker::StoryDrift(
+    std::size_t story, const integrators::ResponseRow& row) const {
   const structure::StoryLayout& s = problem_.layout.stories[story];
   Vec2 drift;
   if (s.members[structure::kX] >= 0) {
@@ -113,7 +116,8 @@ Vec2 PeakTracker::StoryDrift(std::size_t story, const integrators::ResponseRow& 
   return drift;
 }
 
-Vec2 PeakTracker::StoryShear(std::size_t story, const integrators::ResponseRow& row) const {
+[[gnu::always_inline]] inline Vec2 PeakTracker::StoryShear(
+    std::size_t story, const integrators::ResponseRow& row) const {
   const structure::StoryLayout& s = problem_.layout.stories[story];
   Vec2 shear;
   if (s.members[structure::kX] >= 0) shear.x = row.connection_force[s.members[structure::kX]];

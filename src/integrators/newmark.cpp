@@ -156,6 +156,7 @@ class NewmarkRun {
   }
 
   const Energies& energies() const { return energies_; }
+  long factorisations() const { return solver_.factorisations(); }
 
  private:
   bool TryStep(double t0, double h) {
@@ -199,7 +200,6 @@ class NewmarkRun {
           structure_.Evaluate(rest_, 0.0, zero_, zero_, trial_, responses_, &force_, member_forces_,
                               factors, &tangent_);
         }
-        ++summary_.factorisations;
         factored_step_ = h;
         if (!solver_.Factorize(tangent_)) break;
       }
@@ -411,6 +411,7 @@ RunSummary Run(const Structure& structure, const Excitation& excitation, const T
       break;
     }
   }
+  summary.factorisations = run.factorisations();
   // Undefined (NaN) when the input energy overflowed: a run the caller must not call completed.
   summary.energy_balance_error = !std::isfinite(max_input)
                                      ? std::numeric_limits<double>::quiet_NaN()

@@ -17,7 +17,9 @@ NewmarkOptions::LinearSolver ChooseLinearSolver(const structure::SparseMatrix& p
 
 TangentSolver::TangentSolver(const structure::SparseMatrix& pattern,
                              NewmarkOptions::LinearSolver requested)
-    : kind_(ChooseLinearSolver(pattern, requested)), solver_(Make(pattern, kind_)) {}
+    : kind_(ChooseLinearSolver(pattern, requested)),
+      solver_(Make(pattern, kind_)),
+      factored_values_(static_cast<std::size_t>(pattern.nonZeros())) {}
 
 TangentSolver::Solver TangentSolver::Make(const structure::SparseMatrix& pattern,
                                           NewmarkOptions::LinearSolver kind) {

@@ -180,9 +180,11 @@ std::vector<structure::PlanStory> ReadStories(const YamlReader& reader, const YA
   if (one["name"])
     reader.Fail(node["name"], ChildPath(path, "name"),
                 "equal stories are named story1, story2, ...");
-  for (int i = 0; i < count; ++i) {
-    stories.push_back(ReadStory(reader, one, path, static_cast<std::size_t>(i), footprint, units));
-  }
+  // Read once and copied: reading depends on the index only through the default name (a name of
+  // its own is refused above).
+  const structure::PlanStory first = ReadStory(reader, one, path, 0, footprint, units);
+  stories.assign(static_cast<std::size_t>(count), first);
+  for (int i = 1; i < count; ++i) stories[i].name = fmt::format("story{}", i + 1);
   return stories;
 }
 

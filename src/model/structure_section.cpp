@@ -73,7 +73,11 @@ std::vector<structure::Story> ReadStories(const YamlReader& reader, const YAML::
   // located at 1:1. Removing count changes only the tree of this reading.
   YAML::Node one = node;
   one.remove("count");
-  for (int i = 0; i < count; ++i) stories.push_back(ReadStory(reader, one, path, units, i));
+  // Read once and copied: reading depends on the index only through the default name (a name
+  // of its own is refused above), and a tall building would read the same YAML a thousand times.
+  const structure::Story first = ReadStory(reader, one, path, units, 0);
+  stories.assign(static_cast<std::size_t>(count), first);
+  for (int i = 1; i < count; ++i) stories[i].name = fmt::format("story{}", i + 1);
   return stories;
 }
 

@@ -1,6 +1,7 @@
 // The linear solvers of Newmark's effective tangent (src/integrators/tangent_solver.h):
 //  * dense and banded LU against Eigen's dense LU on unsymmetric matrices whose small diagonals
-//    need row exchanges, factorised twice (the storage is reused);
+//    need row exchanges, factorised twice (the storage is reused); the factors kept for a
+//    matrix repeated bit for bit, and only for it;
 //  * a matrix singular or singular to working precision refused by every solver, KLU included,
 //    and a well-conditioned one with rows of very different scales accepted;
 //  * symmetric matrices (the dense solver's LDL^T): positive definite, scaled by dofs of very
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -95,6 +97,52 @@ TEST(TangentSolver, EverySolverSolvesLikeEigensDenseLu) {
         EXPECT_LT((x - expected).cwiseAbs().maxCoeff(), 1e-11 * expected.cwiseAbs().maxCoeff())
             << pattern.name << ", solver " << static_cast<int>(kind) << ", seed " << seed;
       }
+    }
+  }
+}
+
+// The factors are kept for a matrix whose values are those factorised last, and only for it:
+// solving again after refactorising the same values gives the same solution without a
+// factorisation, one changed entry (the last of the values: the end of the comparison) is
+// factorised, a refused matrix is refused again rather than solved with stale factors, and the
+// matrix factorised before a refusal is factorised again.
+TEST(TangentSolver, KeepsTheFactorsOfARepeatedMatrixOnly) {
+  for (const PatternCase& pattern : Patterns()) {
+    for (const LinearSolver kind :
+         {LinearSolver::kDense, LinearSolver::kBanded, LinearSolver::kKlu}) {
+      const std::string name = pattern.name + ", solver " + std::to_string(static_cast<int>(kind));
+      SparseMatrix matrix = RandomMatrix(pattern.n, pattern.in_pattern, 5.0, 4);
+      TangentSolver solver(matrix, kind);
+      const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(pattern.n, -1.0, 2.0);
+      const auto solve = [&] {
+        Eigen::VectorXd x = b;
+        solver.Solve(&x);
+        return x;
+      };
+      ASSERT_TRUE(solver.Factorize(matrix)) << name;
+      const Eigen::VectorXd first = solve();
+      ASSERT_TRUE(solver.Factorize(matrix)) << name;
+      EXPECT_EQ(solver.factorisations(), 1) << name;
+      EXPECT_EQ(solve(), first) << name;
+
+      matrix.valuePtr()[matrix.nonZeros() - 1] *= 1.5;
+      const Eigen::VectorXd expected = Eigen::MatrixXd(matrix).partialPivLu().solve(b);
+      ASSERT_TRUE(solver.Factorize(matrix)) << name;
+      EXPECT_EQ(solver.factorisations(), 2) << name;
+      EXPECT_LT((solve() - expected).cwiseAbs().maxCoeff(), 1e-11 * expected.cwiseAbs().maxCoeff())
+          << name;
+
+      const SparseMatrix last = matrix;
+      std::fill_n(matrix.valuePtr(), matrix.nonZeros(), 0.0);  // the pattern kept: singular
+      EXPECT_FALSE(solver.Factorize(matrix)) << name;
+      EXPECT_FALSE(solver.Factorize(matrix)) << name;
+      EXPECT_EQ(solver.factorisations(), 4) << name;
+      // The matrix factorised before the refusals: the refused one's work overwrote its factors.
+      matrix = last;
+      ASSERT_TRUE(solver.Factorize(matrix)) << name;
+      EXPECT_EQ(solver.factorisations(), 5) << name;
+      EXPECT_LT((solve() - expected).cwiseAbs().maxCoeff(), 1e-11 * expected.cwiseAbs().maxCoeff())
+          << name;
     }
   }
 }

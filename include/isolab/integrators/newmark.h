@@ -21,7 +21,7 @@ namespace isolab::integrators {
 
 struct NewmarkOptions {
   enum class Newton {
-    kFull,             // tangent refactorised every iteration
+    kFull,             // tangent at every iteration (factorised again where its values changed)
     kModifiedInitial,  // tangent of the initial state, factorised once per run (again for each
                        // new step size after a step cut)
     kModifiedStep,     // tangent at each step's predictor, factorised once per step

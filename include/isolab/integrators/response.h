@@ -121,8 +121,8 @@ struct RunSummary {
   int steps = 0;               // analysis steps completed
   long newton_iterations = 0;  // over all steps and sub-steps; one linear solve each
   int max_iterations_in_a_step = 0;
-  int step_cuts = 0;  // halvings performed
-  long factorisations = 0;
+  int step_cuts = 0;        // halvings performed
+  long factorisations = 0;  // tangents factorised; one repeated bit for bit reuses its factors
   double energy_balance_error = 0.0;  // max |balance| / max Supplied() over the run
   // IDA only (zero for Newmark): internal steps, phase-change events located, Jacobian
   // evaluations and local error-test failures.
