@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <tuple>
 
 #include "isolab/hysteresis/friction_pendulum.h"
@@ -90,32 +91,34 @@ std::vector<Eigen::Triplet<double>> StiffnessEntries(const structure::Structure&
   return entries;
 }
 
-// Every mode of K x = w^2 M x, longest first: from the tridiagonal M^-1/2 K M^-1/2 of a chain in
-// one direction (any size, periods only), else densely up to kMaxDenseModalDofs.
-std::vector<Mode> Modes(const structure::Structure& s, const structure::Layout& layout,
-                        double displacement) {
-  const int n = s.dofs();
-  const Eigen::VectorXd& m = s.mass();
-  const std::vector<Eigen::Triplet<double>> entries =
-      StiffnessEntries(s, layout, displacement, Members::kAll);
+// M^-1/2 K M^-1/2 of a chain in one direction (a shear building): tridiagonal. Nullopt for any
+// other structure.
+std::optional<SymmetricTridiagonal> ChainMatrix(
+    const structure::Structure& s, const structure::Layout& layout,
+    const std::vector<Eigen::Triplet<double>>& entries) {
   const bool chain = std::all_of(entries.begin(), entries.end(),
                                  [](const auto& e) { return std::abs(e.row() - e.col()) <= 1; });
-  std::vector<Mode> modes;
-  if (chain && layout.directions == 1 && !layout.rotations) {
-    std::vector<double> diagonal(static_cast<std::size_t>(n), 0.0);
-    std::vector<double> off_diagonal(static_cast<std::size_t>(std::max(n - 1, 0)), 0.0);
-    for (const auto& e : entries) {
-      if (e.row() == e.col()) {
-        diagonal[e.row()] += e.value() / m[e.row()];
-      } else if (e.row() > e.col()) {
-        off_diagonal[e.col()] += e.value() / std::sqrt(m[e.row()] * m[e.col()]);
-      }
+  if (!chain || layout.directions != 1 || layout.rotations) return std::nullopt;
+  const std::size_t n = static_cast<std::size_t>(s.dofs());
+  const Eigen::VectorXd& m = s.mass();
+  SymmetricTridiagonal t{std::vector<double>(n, 0.0), std::vector<double>(n > 0 ? n - 1 : 0, 0.0)};
+  for (const auto& e : entries) {
+    if (e.row() == e.col()) {
+      t.diagonal[e.row()] += e.value() / m[e.row()];
+    } else if (e.row() > e.col()) {
+      t.off_diagonal[e.col()] += e.value() / std::sqrt(m[e.row()] * m[e.col()]);
     }
-    for (const double eigenvalue : TridiagonalEigenvalues(std::move(diagonal), off_diagonal)) {
-      modes.push_back({PeriodOf(eigenvalue), "x"});
-    }
-    return modes;
   }
+  return t;
+}
+
+// Every mode of K x = w^2 M x with its direction, longest first, by a dense solve: none beyond
+// kMaxDenseModalDofs, or where the solve fails.
+std::vector<Mode> DenseModes(const structure::Structure& s, const structure::Layout& layout,
+                             const std::vector<Eigen::Triplet<double>>& entries) {
+  const int n = s.dofs();
+  const Eigen::VectorXd& m = s.mass();
+  std::vector<Mode> modes;
   if (n > kMaxDenseModalDofs) return modes;
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
   for (const auto& e : entries) k(e.row(), e.col()) += e.value();
@@ -130,6 +133,40 @@ std::vector<Mode> Modes(const structure::Structure& s, const structure::Layout& 
     }
     const int direction = static_cast<int>(std::max_element(share, share + 3) - share);
     modes.push_back({PeriodOf(solver.eigenvalues()[j]), DirectionName(direction)});
+  }
+  return modes;
+}
+
+// K x = w^2 M x of a structure, its isolators at their secant stiffness at `displacement`.
+struct ModalProblem {
+  const structure::Structure* structure;
+  const structure::Layout* layout;
+  double displacement;
+};
+
+// Every mode of each problem, longest first: a chain's periods from its tridiagonal matrix (any
+// size; the chains solved together), any other structure's modes densely.
+std::vector<std::vector<Mode>> Modes(const std::vector<ModalProblem>& problems) {
+  std::vector<std::vector<Mode>> modes(problems.size());
+  std::vector<SymmetricTridiagonal> chains;
+  std::vector<std::size_t> chain_problems;
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    const ModalProblem& problem = problems[k];
+    const std::vector<Eigen::Triplet<double>> entries =
+        StiffnessEntries(*problem.structure, *problem.layout, problem.displacement, Members::kAll);
+    if (std::optional<SymmetricTridiagonal> chain =
+            ChainMatrix(*problem.structure, *problem.layout, entries)) {
+      chains.push_back(std::move(*chain));
+      chain_problems.push_back(k);
+    } else {
+      modes[k] = DenseModes(*problem.structure, *problem.layout, entries);
+    }
+  }
+  const std::vector<std::vector<double>> eigenvalues = TridiagonalEigenvalues(std::move(chains));
+  for (std::size_t c = 0; c < eigenvalues.size(); ++c) {
+    for (const double eigenvalue : eigenvalues[c]) {
+      modes[chain_problems[c]].push_back({PeriodOf(eigenvalue), "x"});
+    }
   }
   return modes;
 }
@@ -371,16 +408,22 @@ ModelSummary SummariseModel(const structure::Structure& s, const structure::Layo
   summary.pga = pga;
   summary.trial_displacement = trial_displacement;
   summary.isolated = layout.isolated();
+  // The fixed-base modes first, then the isolated ones: solved together.
+  std::vector<ModalProblem> problems;
   if (fixed_base) {
-    summary.fixed_base_modes = Modes(fixed_base->structure, fixed_base->layout, 0.0);
+    problems.push_back({&fixed_base->structure, &fixed_base->layout, 0.0});
   } else if (!summary.isolated) {
-    summary.fixed_base_modes = Modes(s, layout, 0.0);
+    problems.push_back({&s, &layout, 0.0});
   }
+  const bool has_fixed_base = !problems.empty();
+  if (summary.isolated) problems.push_back({&s, &layout, trial_displacement});
+  std::vector<std::vector<Mode>> modes = Modes(problems);
+  if (has_fixed_base) summary.fixed_base_modes = std::move(modes.front());
   if (summary.isolated) {
     summary.secant_stiffness = IsolatorsSecantStiffness(s, layout, trial_displacement);
     summary.rigid_modes = RigidModes(s, layout, trial_displacement);
     summary.isolated_period = Longest(summary.rigid_modes);
-    summary.isolated_modes = Modes(s, layout, trial_displacement);
+    summary.isolated_modes = std::move(modes.back());
   }
 
   const std::string check = "check the units of the masses and stiffnesses";

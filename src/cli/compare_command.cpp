@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
-#include <malloc.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -13,6 +12,7 @@
 
 #include "common_options.h"
 #include "finite_options.h"
+#include "heap_thresholds.h"
 #include "heavy_commands.h"
 #include "isolab/core/errors.h"
 #include "isolab/core/hardware_threads.h"
@@ -31,15 +31,6 @@
 
 namespace isolab::cli {
 namespace {
-
-// Each run allocates and frees its response arrays (megabytes). glibc would map and unmap each
-// from the kernel, paying its page faults again every run (and, with threads sharing one address
-// space, TLB shootdowns: 15 % of the 2-thread throughput on the bundled study). Served and reused
-// from the heap instead (glibc's ceiling for the threshold is 32 MB on 64-bit).
-void KeepRunBuffersInTheHeap() {
-  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
-  mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
-}
 
 std::string Count(std::size_t n, const char* noun) {
   return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
@@ -130,7 +121,7 @@ int RunCompareCommand(const CompareOptions& options, std::ostream& out) {
     throw;
   }
   const std::vector<study::Job> jobs = study::ExpandJobs(study_file);
-  KeepRunBuffersInTheHeap();
+  KeepLargeBuffersInTheHeap();
   std::size_t failed = 0;
   {
     // MPI lives as long as the scheduler: the plot script below runs after MPI_Finalize.

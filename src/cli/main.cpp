@@ -43,6 +43,7 @@
 #define ISOLAB_FRONT
 #include "beside_executable.h"
 #include "bounds_command.h"
+#include "heap_thresholds.h"
 #include "heavy_commands.h"
 #include "run_command.h"
 #include "spectrum_command.h"
@@ -85,6 +86,7 @@ void HandOverHeavyCommand(int argc, char** argv) {
 int main(int argc, char** argv) {
 #ifdef ISOLAB_FRONT
   HandOverHeavyCommand(argc, argv);
+  isolab::cli::KeepLargeBuffersInTheHeap();
 #endif
   CLI::App app{"isolab: time-history solver for base-isolated structures"};
   app.require_subcommand(1);
