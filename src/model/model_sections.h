@@ -29,6 +29,18 @@ std::vector<BuildingFitPriorEntry> ReadPriorEntries(const YamlReader& reader,
 // The required `units` section of a model (or fit specification) file.
 UnitSystem ReadUnits(const YamlReader& reader, const YAML::Node& root);
 
+// A story's name where the model gives none: story1, story2, ... (`index` from 0).
+std::string DefaultStoryName(std::size_t index);
+
+// The stories of a uniform shorthand (`stories: {count: N, ...}`): `count` copies of the one story
+// read (reading depends on the index only through the default name), named story1, story2, ...
+template <typename Story>
+std::vector<Story> EqualStories(const Story& first, int count) {
+  std::vector<Story> stories(static_cast<std::size_t>(count), first);
+  for (std::size_t i = 1; i < stories.size(); ++i) stories[i].name = DefaultStoryName(i);
+  return stories;
+}
+
 // A list of law components (an isolation layer, a hysteretic story).
 hysteresis::ParallelAssembly ReadAssembly(const YamlReader& reader, const YAML::Node& list,
                                           const std::string& path, const UnitSystem& units);

@@ -124,7 +124,7 @@ structure::PlanStory ReadStory(const YamlReader& reader, const YAML::Node& node,
                     "height", "centre_of_stiffness", "stiffness", "x", "y", "torsion"});
   structure::PlanStory story;
   story.name = node["name"] ? reader.ReadString(node["name"], ChildPath(path, "name"))
-                            : fmt::format("story{}", index + 1);
+                            : DefaultStoryName(index);
   story.floor = ReadFloor(reader, node, path, footprint, units);
   if (node["height"]) {
     story.height =
@@ -180,12 +180,7 @@ std::vector<structure::PlanStory> ReadStories(const YamlReader& reader, const YA
   if (one["name"])
     reader.Fail(node["name"], ChildPath(path, "name"),
                 "equal stories are named story1, story2, ...");
-  // Read once and copied: reading depends on the index only through the default name (a name of
-  // its own is refused above).
-  const structure::PlanStory first = ReadStory(reader, one, path, 0, footprint, units);
-  stories.assign(static_cast<std::size_t>(count), first);
-  for (int i = 1; i < count; ++i) stories[i].name = fmt::format("story{}", i + 1);
-  return stories;
+  return EqualStories(ReadStory(reader, one, path, 0, footprint, units), count);
 }
 
 // An isolator's laws: coupled bidirectional forms, or each law along x and along y alone.

@@ -24,6 +24,8 @@ double ReadRatio(const YamlReader& reader, const YAML::Node& node, const std::st
   return ratio;
 }
 
+std::string DefaultStoryName(std::size_t index) { return fmt::format("story{}", index + 1); }
+
 namespace {
 
 structure::Story ReadStory(const YamlReader& reader, const YAML::Node& node,
@@ -32,7 +34,7 @@ structure::Story ReadStory(const YamlReader& reader, const YAML::Node& node,
   reader.CheckKeys(node, path, {"name", "mass", "stiffness", "components", "height"});
   structure::Story story;
   story.name = node["name"] ? reader.ReadString(node["name"], ChildPath(path, "name"))
-                            : fmt::format("story{}", index + 1);
+                            : DefaultStoryName(index);
   story.floor_mass = ReadPositive(reader, node, path, "mass", dimension::kMass, units);
   if (node["height"]) {
     story.height =
@@ -73,12 +75,8 @@ std::vector<structure::Story> ReadStories(const YamlReader& reader, const YAML::
   // located at 1:1. Removing count changes only the tree of this reading.
   YAML::Node one = node;
   one.remove("count");
-  // Read once and copied: reading depends on the index only through the default name (a name
-  // of its own is refused above), and a tall building would read the same YAML a thousand times.
-  const structure::Story first = ReadStory(reader, one, path, units, 0);
-  stories.assign(static_cast<std::size_t>(count), first);
-  for (int i = 1; i < count; ++i) stories[i].name = fmt::format("story{}", i + 1);
-  return stories;
+  // Read once, not count times (CheckKeys above refuses a name of its own).
+  return EqualStories(ReadStory(reader, one, path, units, 0), count);
 }
 
 structure::SuperstructureDamping ReadBuildingDamping(const YamlReader& reader,
