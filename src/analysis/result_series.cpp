@@ -14,25 +14,50 @@ namespace {
 using hysteresis::Norm;
 using hysteresis::Vec2;
 using integrators::ResponseRow;
-using RowValues = std::span<const double> ResponseRow::*;
 using structure::kGround;
 
-// The chosen entries of one of the row's per-dof or per-force-column arrays, times a factor each.
-Series Columns(std::string name, std::string units, std::vector<std::string> columns,
-               RowValues values, std::vector<int> chosen) {
-  return {std::move(name), std::move(units), std::move(columns),
-          [values, chosen = std::move(chosen)](const ResponseRow& row, double* out) {
-            const std::span<const double> all = row.*values;
-            for (std::size_t c = 0; c < chosen.size(); ++c) out[c] = all[chosen[c]];
-          }};
+// A series computed from the row by `fill` alone.
+Series Computed(std::string name, std::string units, std::vector<std::string> columns,
+                std::function<void(const ResponseRow&, double*)> fill) {
+  return {std::move(name), std::move(units), std::move(columns), std::move(fill), {}};
 }
 
-// One value per row.
-template <typename Value>
-Series Vector(std::string name, std::string units, Value value) {
-  return {std::move(name), std::move(units), {}, [value](const ResponseRow& row, double* out) {
-            *out = value(row);
-          }};
+// A series whose columns are all read off the row: `fill` reads them as a writer's staged
+// gathering does.
+Series ReadOff(std::string name, std::string units, std::vector<std::string> columns,
+               std::vector<ColumnSource> sources) {
+  Series series{std::move(name), std::move(units), std::move(columns), nullptr, std::move(sources)};
+  series.fill = [sources = series.sources](const ResponseRow& row, double* out) {
+    const RowArrays arrays(row);
+    for (const ColumnSource& source : sources) *out++ = source.Value(arrays[source.array]);
+  };
+  return series;
+}
+
+// The chosen entries of one of the row's arrays.
+Series Columns(std::string name, std::string units, std::vector<std::string> columns,
+               RowArray array, const std::vector<int>& chosen) {
+  std::vector<ColumnSource> sources;
+  for (const int index : chosen) sources.push_back({array, index, false, {}, 1.0});
+  return ReadOff(std::move(name), std::move(units), std::move(columns), std::move(sources));
+}
+
+// One of the row's scalars.
+Series Scalar(std::string name, std::string units, RowScalar scalar) {
+  return ReadOff(std::move(name), std::move(units), {},
+                 {{RowArray::kScalars, static_cast<int>(scalar), false, {}, 1.0}});
+}
+
+// Direction `d` (0: x, 1: y) of a slot's deformation, times `factor`.
+ColumnSource Deformation(const structure::Structure& structure, std::size_t slot, int d,
+                         double factor = 1.0) {
+  const structure::Structure::Influence influence = structure.SlotInfluence(slot);
+  ColumnSource source{RowArray::kDisplacement, 0, true, {}, factor};
+  for (int a = 0; a < influence.count; ++a) {
+    source.terms.push_back(
+        {influence.dofs[a], d == 0 ? influence.columns[a].x : influence.columns[a].y});
+  }
+  return source;
 }
 
 // "name" in one direction, "name.x" and "name.y" in two.
@@ -70,21 +95,23 @@ bool IsSelected(const std::vector<int>& sorted_levels, int level) {
 void AppendGroundSeries(const Problem& problem, std::vector<Series>& series) {
   const UnitSystem& units = problem.units();
   const std::string acceleration = DescribeUnits(units, dimension::kAcceleration);
-  series.push_back(Vector("time", units.time(), [](const ResponseRow& row) { return row.time; }));
+  series.push_back(Scalar("time", units.time(), RowScalar::kTime));
   if (!problem.records.empty()) {
     std::vector<std::string> columns;
     if (problem.layout.directions == 2) columns = {"x", "y"};
-    series.push_back({"ground_acceleration", acceleration, columns,
-                      [&problem](const ResponseRow& row, double* out) {
-                        for (const integrators::GroundMotion& motion : problem.excitation.ground) {
-                          *out++ = motion.acceleration.At(row.time);
-                        }
-                      }});
+    series.push_back(Computed("ground_acceleration", acceleration, columns,
+                              [&problem](const ResponseRow& row, double* out) {
+                                for (const integrators::GroundMotion& motion :
+                                     problem.excitation.ground) {
+                                  *out++ = motion.acceleration.At(row.time);
+                                }
+                              }));
   }
   if (!problem.excitation.vertical.values.empty()) {
-    series.push_back(Vector(
-        "vertical_ground_acceleration", acceleration,
-        [&problem](const ResponseRow& row) { return problem.excitation.vertical.At(row.time); }));
+    series.push_back(Computed("vertical_ground_acceleration", acceleration, {},
+                              [&problem](const ResponseRow& row, double* out) {
+                                *out = problem.excitation.vertical.At(row.time);
+                              }));
   }
 }
 
@@ -126,23 +153,23 @@ void AppendLevelSeries(const Problem& problem, const model::OutputSelection& sel
       force_columns.push_back(column++);
     }
   }
-  const auto per_dof = [&](const char* name, Dimension dimension, RowValues values) {
+  const auto per_dof = [&](const char* name, Dimension dimension, RowArray array) {
     if (selection.Records(name)) {
       series.push_back(
-          Columns(name, DescribeUnits(units, dimension), translation_names, values, translations));
+          Columns(name, DescribeUnits(units, dimension), translation_names, array, translations));
     }
   };
-  per_dof("displacement", dimension::kLength, &ResponseRow::displacement);
+  per_dof("displacement", dimension::kLength, RowArray::kDisplacement);
   if (selection.Records("displacement") && !rotations.empty()) {
     series.push_back(
-        Columns("rotation", "rad", rotation_names, &ResponseRow::displacement, rotations));
+        Columns("rotation", "rad", rotation_names, RowArray::kDisplacement, rotations));
   }
-  per_dof("velocity", dimension::kVelocity, &ResponseRow::velocity);
-  per_dof("acceleration", dimension::kAcceleration, &ResponseRow::acceleration);
-  per_dof("absolute_acceleration", dimension::kAcceleration, &ResponseRow::absolute_acceleration);
+  per_dof("velocity", dimension::kVelocity, RowArray::kVelocity);
+  per_dof("acceleration", dimension::kAcceleration, RowArray::kAcceleration);
+  per_dof("absolute_acceleration", dimension::kAcceleration, RowArray::kAbsoluteAcceleration);
   if (selection.Records("connection_force") && !force_columns.empty()) {
     series.push_back(Columns("connection_force", DescribeUnits(units, dimension::kForce),
-                             force_names, &ResponseRow::connection_force, force_columns));
+                             force_names, RowArray::kConnectionForce, force_columns));
   }
 }
 
@@ -154,9 +181,10 @@ void AppendIsolatorSeries(const Problem& problem, std::vector<Series>& series) {
   const std::string length = DescribeUnits(problem.units(), dimension::kLength);
   const std::string force = DescribeUnits(problem.units(), dimension::kForce);
   std::vector<std::string> names, resultants, components;
-  std::vector<int> force_of;  // per column: its force column
+  std::vector<int> force_of;               // per column: its force column
+  std::vector<ColumnSource> deformations;  // per column
   bool any_coupled = false;
-  std::vector<std::size_t> component_laws;  // per component column: its law state
+  std::vector<int> component_laws;  // per component column: its law
   const bool many = layout.isolators.size() > 1;
   for (const structure::IsolatorLayout& isolator : layout.isolators) {
     const auto slot = static_cast<std::size_t>(isolator.slot);
@@ -165,9 +193,11 @@ void AppendIsolatorSeries(const Problem& problem, std::vector<Series>& series) {
     for (const std::string& name : Directional(isolator.name, width == 2)) names.push_back(name);
     resultants.push_back(isolator.name);
     const std::string prefix = many ? isolator.name + "/" : "";
-    for (int d = 0; d < width; ++d)
+    for (int d = 0; d < width; ++d) {
       force_of.push_back(static_cast<int>(s.slot_force_column(slot)) + d);
-    std::size_t law = s.slot_law_offset(slot);
+      deformations.push_back(Deformation(s, slot, d));
+    }
+    int law = static_cast<int>(s.slot_law_offset(slot));
     s.VisitSlotAssembly(slot, [&](const auto& assembly) {
       for (const auto& component : assembly.components()) {
         for (const std::string& name : Directional(prefix + component.name, width == 2)) {
@@ -177,43 +207,34 @@ void AppendIsolatorSeries(const Problem& problem, std::vector<Series>& series) {
       }
     });
   }
-  const auto deformations = [&problem](const ResponseRow& row, double* out) {
-    for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-      const Vec2 u = problem.structure.SlotDeformation(isolator.slot, row.displacement);
-      *out++ = u.x;
-      if (problem.structure.slot_width(isolator.slot) == 2) *out++ = u.y;
-    }
-  };
-  series.push_back({"isolator/displacement", length, Named(names), deformations});
+  series.push_back(ReadOff("isolator/displacement", length, Named(names), std::move(deformations)));
   series.push_back(
-      Columns("isolator/force", force, Named(names), &ResponseRow::connection_force, force_of));
+      Columns("isolator/force", force, Named(names), RowArray::kConnectionForce, force_of));
   if (any_coupled) {
-    series.push_back(
-        {"isolator/resultant", length, Named(resultants),
-         [&problem](const ResponseRow& row, double* out) {
-           for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
-             const Vec2 u = problem.structure.SlotDeformation(isolator.slot, row.displacement);
-             *out++ = problem.structure.slot_width(isolator.slot) == 1 ? std::abs(u.x) : Norm(u);
-           }
-         }});
+    series.push_back(Computed(
+        "isolator/resultant", length, Named(resultants),
+        [&problem](const ResponseRow& row, double* out) {
+          for (const structure::IsolatorLayout& isolator : problem.layout.isolators) {
+            const Vec2 u = problem.structure.SlotDeformation(isolator.slot, row.displacement);
+            *out++ = problem.structure.slot_width(isolator.slot) == 1 ? std::abs(u.x) : Norm(u);
+          }
+        }));
   }
   const structure::AxialLoads& axial = s.axial_loads();
   if (!axial.empty()) {
     std::vector<std::string> bearings;
     for (const structure::AxialBearing& bearing : axial.bearings) bearings.push_back(bearing.name);
-    series.push_back({"isolator/axial_load", force, Named(bearings),
-                      [count = axial.bearings.size()](const ResponseRow& row, double* out) {
-                        for (std::size_t j = 0; j < count; ++j) {
-                          out[j] = j < row.axial_load.size()
-                                       ? row.axial_load[j]
-                                       : std::numeric_limits<double>::quiet_NaN();
-                        }
-                      }});
+    series.push_back(Computed("isolator/axial_load", force, Named(bearings),
+                              [count = axial.bearings.size()](const ResponseRow& row, double* out) {
+                                for (std::size_t j = 0; j < count; ++j) {
+                                  out[j] = j < row.axial_load.size()
+                                               ? row.axial_load[j]
+                                               : std::numeric_limits<double>::quiet_NaN();
+                                }
+                              }));
   }
-  series.push_back({"isolator/component_force", force, components,
-                    [laws = std::move(component_laws)](const ResponseRow& row, double* out) {
-                      for (const std::size_t law : laws) *out++ = row.law_force[law];
-                    }});
+  series.push_back(
+      Columns("isolator/component_force", force, components, RowArray::kLawForce, component_laws));
 }
 
 // Per selected story and direction: its drift (and drift ratio, where stories have heights) and
@@ -246,43 +267,57 @@ void AppendStorySeries(const Problem& problem, const std::vector<std::size_t>& s
       twist_names.push_back(story.name);
     }
   }
-  const auto drifts = [&](std::string name, std::string units, std::vector<int> chosen_members,
-                          std::vector<std::string> columns, std::vector<double> factors) {
-    return Series{std::move(name), std::move(units), std::move(columns),
-                  [&problem, chosen_members, factors](const ResponseRow& row, double* out) {
-                    for (std::size_t c = 0; c < chosen_members.size(); ++c) {
-                      out[c] = factors[c] * problem.structure.MemberDeformation(chosen_members[c],
-                                                                                row.displacement);
-                    }
-                  }};
+  const auto drifts = [&](std::string name, std::string units,
+                          const std::vector<int>& chosen_members, std::vector<std::string> columns,
+                          const std::vector<double>& factors) {
+    std::vector<ColumnSource> sources;
+    for (std::size_t c = 0; c < chosen_members.size(); ++c) {
+      sources.push_back(Deformation(problem.structure, static_cast<std::size_t>(chosen_members[c]),
+                                    0, factors[c]));
+    }
+    return ReadOff(std::move(name), std::move(units), std::move(columns), std::move(sources));
   };
   series.push_back(
       drifts("story/drift", length, members, names, std::vector<double>(members.size(), 1.0)));
   if (heights) series.push_back(drifts("story/drift_ratio", "%", members, names, per_height));
-  series.push_back(Columns("story/shear", force, names, &ResponseRow::connection_force, members));
+  series.push_back(Columns("story/shear", force, names, RowArray::kConnectionForce, members));
   if (!twists.empty()) {
     series.push_back(
         drifts("story/twist", "rad", twists, twist_names, std::vector<double>(twists.size(), 1.0)));
     series.push_back(
-        Columns("story/torque", energy, twist_names, &ResponseRow::connection_force, twists));
+        Columns("story/torque", energy, twist_names, RowArray::kConnectionForce, twists));
   }
 }
 
 void AppendEnergySeries(const Problem& problem, std::vector<Series>& series) {
   const std::string energy =
       fmt::format("{}*{}", problem.units().force(), problem.units().length());
-  const auto energy_term = [&](const char* name, double integrators::Energies::*term) {
-    series.push_back(Vector(fmt::format("energy/{}", name), energy,
-                            [term](const ResponseRow& row) { return row.energies.*term; }));
+  const auto energy_term = [&](const char* name, RowScalar term) {
+    series.push_back(Scalar(fmt::format("energy/{}", name), energy, term));
   };
-  energy_term("input", &integrators::Energies::input);
-  energy_term("kinetic", &integrators::Energies::kinetic);
-  energy_term("damping", &integrators::Energies::damping);
-  energy_term("elastic", &integrators::Energies::elastic);
-  energy_term("hysteretic", &integrators::Energies::hysteretic);
+  energy_term("input", RowScalar::kInputEnergy);
+  energy_term("kinetic", RowScalar::kKineticEnergy);
+  energy_term("damping", RowScalar::kDampingEnergy);
+  energy_term("elastic", RowScalar::kElasticEnergy);
+  energy_term("hysteretic", RowScalar::kHystereticEnergy);
 }
 
 }  // namespace
+
+RowArrays::RowArrays(const integrators::ResponseRow& row)
+    : scalars_{row.time,
+               row.energies.input,
+               row.energies.kinetic,
+               row.energies.damping,
+               row.energies.elastic,
+               row.energies.hysteretic},
+      arrays_{row.displacement.data(),
+              row.velocity.data(),
+              row.acceleration.data(),
+              row.absolute_acceleration.data(),
+              row.connection_force.data(),
+              row.law_force.data(),
+              scalars_.data()} {}
 
 std::vector<int> SelectedLevels(const model::OutputSelection& selection,
                                 const structure::Layout& layout, const std::string& key) {

@@ -86,7 +86,7 @@ class CsvSink final : public ResultsWriter::Sink {
     }
   }
 
-  void Write(std::span<const ResultsWriter::Block> blocks, std::size_t rows) override {
+  void Write(std::span<const std::span<const double>> blocks, std::size_t rows) override {
     for (std::size_t r = 0; r < rows; ++r) {
       fields_.clear();
       for (std::size_t s = 0; s < series_.size(); ++s) {

@@ -171,19 +171,21 @@ void WriteSelectionAttributes(io::Hdf5File& file, const RunDescription& run) {
 
 class Hdf5Sink final : public ResultsWriter::Sink {
  public:
-  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t chunk_rows)
+  Hdf5Sink(const std::string& path, const std::vector<Series>& series, std::size_t chunk_rows,
+           std::size_t expected_rows)
       : file_(path), chunk_rows_(chunk_rows) {
     groups_ = CreateSeriesGroups(file_, series);
     for (const Series& s : series) {
       widths_.push_back(s.width());
-      rows_.push_back(file_.CreateRows(s.name, s.columns.size(), s.units, chunk_rows));
+      rows_.push_back(
+          file_.CreateRows(s.name, s.columns.size(), s.units, chunk_rows, expected_rows));
       if (!s.columns.empty()) file_.WriteStringsAttribute(s.name, "columns", s.columns);
     }
   }
 
-  void Write(std::span<const ResultsWriter::Block> blocks, std::size_t rows) override {
+  void Write(std::span<const std::span<const double>> blocks, std::size_t rows) override {
     for (std::size_t s = 0; s < rows_.size(); ++s) {
-      const std::span<const double> block(blocks[s]);
+      const std::span<const double> block = blocks[s];
       if (rows < chunk_rows_) {
         rows_[s].AppendLastChunk(block.first(chunk_rows_ * widths_[s]), rows);
       } else {
@@ -193,7 +195,8 @@ class Hdf5Sink final : public ResultsWriter::Sink {
   }
 
   void Finish(const RunDescription& run) override {
-    rows_.clear();  // every dataset closed before the commit
+    for (io::Hdf5File::Rows& rows : rows_) rows.Close();  // trimmed and closed before the commit
+    rows_.clear();
     const Problem& problem = *run.problem;
     if (!problem.layout.stories.empty()) {
       if (!groups_.contains("story")) file_.CreateGroup("story");
@@ -224,8 +227,9 @@ class Hdf5Sink final : public ResultsWriter::Sink {
 
 std::unique_ptr<ResultsWriter::Sink> OpenHdf5Sink(const std::string& path,
                                                   const std::vector<Series>& series,
-                                                  std::size_t chunk_rows) {
-  return std::make_unique<Hdf5Sink>(path, series, chunk_rows);
+                                                  std::size_t chunk_rows,
+                                                  std::size_t expected_rows) {
+  return std::make_unique<Hdf5Sink>(path, series, chunk_rows, expected_rows);
 }
 
 }  // namespace isolab::analysis

@@ -1,6 +1,7 @@
 // A results file written while the run advances: a ResponseObserver that keeps every N-th row of
-// the selected series (output_selection.h) in a bounded buffer and writes it out whenever the
-// buffer fills (HDF5: appended to chunked, extendable datasets whose chunks are the buffer's
+// the selected series (output_selection.h) in a bounded buffer (row_stage.h: the row's arrays
+// staged as they come, the series gathered from them a block at a time) and writes it out
+// whenever the buffer fills (HDF5: appended to chunked datasets whose chunks are the buffer's
 // rows, so that each write is one call per series of whole new chunks, neither filled first nor
 // read back; CSV: to an anonymous temporary file, since its header comes before the rows). Memory
 // stays the buffer's whatever the record's length or the building's size. Finish writes the summary
@@ -9,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -19,14 +21,15 @@
 namespace isolab::analysis {
 
 struct Series;  // one history of the file (private to the writers)
+class RowStage;
 
 class ResultsWriter final : public integrators::ResponseObserver {
  public:
-  // Rows buffered when none are asked for: as many as fit in kBufferBytes, at least
-  // kMinBufferRows. Each block costs a call into HDF5 per series (about 10,000 instructions);
-  // each page of the buffer costs a page fault once per run (2.4 us each on a 2-core VM: a
-  // 4 MiB buffer was 0.15 us of a five-story step of 1 us), and a buffer that stays in the
-  // processor's L2 cache is copied to the file from there.
+  // Rows buffered when none are asked for: as many rows of the series as fit in kBufferBytes, at
+  // least kMinBufferRows. Each block costs a call into HDF5 and a write per series (some 4,000
+  // instructions and a system call); each page of the buffer costs a page fault once per run
+  // (2.4 us each on a 2-core VM: a 4 MiB buffer was 0.15 us of a five-story step of 1 us), and a
+  // buffer that stays in the processor's L2 cache is copied to the file from there.
   static constexpr std::size_t kBufferBytes = std::size_t{512} << 10;
   static constexpr std::size_t kMinBufferRows = 64;
 
@@ -88,11 +91,12 @@ class ResultsWriter final : public integrators::ResponseObserver {
   std::string path_;
   Mode mode_ = Mode::kStreaming;
   std::vector<Series> series_;
-  std::vector<std::size_t> widths_;  // per series: its values a row
-  int every_ = 1;                    // run.selection.every, at least 1
+  std::unique_ptr<RowStage> stage_;              // reads series_
+  std::vector<std::span<const double>> blocks_;  // per series, for the sink: its rows
+  int every_ = 1;                                // run.selection.every, at least 1
   std::unique_ptr<Sink> sink_;
+  std::size_t expected_rows_ = 0;  // the grid's output rows
   std::size_t buffer_rows_ = 0;
-  std::vector<Block> buffers_;  // per series: buffer_rows_ x width, row-major
   std::size_t buffered_ = 0;
   int rows_ = 0;
 };

@@ -286,11 +286,12 @@ void Hdf5File::WriteDoublesAttribute(const std::string& object, const std::strin
 }
 
 Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns,
-                                    const std::string& units, std::size_t chunk_rows) {
+                                    const std::string& units, std::size_t chunk_rows,
+                                    std::size_t expected_rows) {
   const Impl& s = *impl_;
   chunk_rows = std::max<std::size_t>(chunk_rows, 1);
   const int rank = columns == 0 ? 1 : 2;
-  const hsize_t initial[2] = {0, columns};
+  const hsize_t initial[2] = {expected_rows, columns};
   const hsize_t maximum[2] = {H5S_UNLIMITED, columns};
   const hsize_t chunk[2] = {chunk_rows, columns};
   Handle space(H5Screate_simple(rank, initial, maximum), H5Sclose);
@@ -301,7 +302,7 @@ Hdf5File::Rows Hdf5File::CreateRows(const std::string& name, std::size_t columns
   const hid_t dataset = H5Dcreate2(s.file, name.c_str(), H5T_NATIVE_DOUBLE, space.get(),
                                    H5P_DEFAULT, create.get(), H5P_DEFAULT);
   s.Check(dataset, "dataset " + name);
-  Rows rows(impl_.get(), dataset, name, columns, chunk_rows);
+  Rows rows(impl_.get(), dataset, name, columns, chunk_rows, expected_rows);
   if (!units.empty()) s.WriteStringAttribute(dataset, "units", units);
   return rows;
 }
@@ -325,12 +326,13 @@ void Hdf5File::Commit() {
 }
 
 Hdf5File::Rows::Rows(const Hdf5File::Impl* file, std::int64_t dataset, std::string name,
-                     std::size_t columns, std::size_t chunk_rows)
+                     std::size_t columns, std::size_t chunk_rows, std::size_t extent)
     : file_(file),
       dataset_(dataset),
       name_(std::move(name)),
       columns_(columns),
-      chunk_rows_(chunk_rows) {}
+      chunk_rows_(chunk_rows),
+      extent_(extent) {}
 
 Hdf5File::Rows::Rows(Rows&& other) noexcept
     : file_(other.file_),
@@ -338,7 +340,8 @@ Hdf5File::Rows::Rows(Rows&& other) noexcept
       name_(std::move(other.name_)),
       columns_(other.columns_),
       chunk_rows_(other.chunk_rows_),
-      rows_(other.rows_) {
+      rows_(other.rows_),
+      extent_(other.extent_) {
   other.dataset_ = -1;
 }
 
@@ -392,9 +395,22 @@ void Hdf5File::Rows::AppendLastChunk(std::span<const double> chunk, std::size_t 
 }
 
 void Hdf5File::Rows::Extend(std::size_t added) {
-  const hsize_t extent[2] = {rows_ + added, columns_};
+  if (rows_ + added > extent_) SetExtent(rows_ + added);
+}
+
+void Hdf5File::Rows::SetExtent(std::size_t rows) {
+  const hsize_t extent[2] = {rows, columns_};
   // The message is built only on failure: these calls come once a block per series.
-  if (H5Dset_extent(dataset_, extent) < 0) file_->Fail("extending " + name_);
+  if (H5Dset_extent(dataset_, extent) < 0) file_->Fail("setting the extent of " + name_);
+  extent_ = rows;
+}
+
+void Hdf5File::Rows::Close() {
+  if (dataset_ < 0) return;
+  if (extent_ != rows_) SetExtent(rows_);
+  const herr_t status = H5Dclose(dataset_);
+  dataset_ = -1;
+  file_->Check(status, "closing " + name_);
 }
 
 // Native doubles without filters: the chunk's bytes are the file's.

@@ -10,14 +10,17 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "isolab/analysis/problem.h"
 #include "isolab/analysis/result_series.h"
+#include "isolab/analysis/results_file.h"
 #include "isolab/analysis/solve.h"
 #include "isolab/core/errors.h"
 #include "isolab/model/model_file.h"
@@ -207,6 +210,188 @@ INSTANTIATE_TEST_SUITE_P(BundledModels, StreamedAgainstInMemory,
                            return name + (info.param.ida ? "_ida" : "_newmark");
                          });
 
+struct SelectionCase {
+  const char* model;
+  int every;
+  std::vector<int> levels;  // empty: every level
+  bool ida = false;
+};
+
+void PrintTo(const SelectionCase& c, std::ostream* out) {
+  *out << c.model << ", every " << c.every << ", " << c.levels.size() << " levels"
+       << (c.ida ? ", IDA" : "");
+}
+
+// The rows of a results CSV, as numbers.
+std::vector<std::vector<double>> CsvRows(const std::filesystem::path& path, std::string* header) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  header->clear();
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header->empty()) {
+      *header = line;
+      continue;
+    }
+    std::vector<double> row;
+    std::size_t start = 0;
+    while (start <= line.size()) {
+      const std::size_t comma = std::min(line.find(',', start), line.size());
+      row.push_back(std::stod(line.substr(start, comma - start)));
+      start = comma + 1;
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Bitwise, NaN (an axial load not given) equal to NaN.
+bool SameBits(double a, double b) {
+  return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+class EveryHistory : public ::testing::TestWithParam<SelectionCase> {};
+
+// Every history of a file is its series' fill of the in-memory run's rows, bit for bit: streamed
+// through buffers of 7 rows to HDF5 and to CSV, and held (a study's files, every row). For
+// structures of every kind (an SDOF, a fixed-base frame, a one-direction building, buildings in
+// plan with coupled bearings, torsion and axial loads), both integrators, and selections whose
+// arrays the writer stages whole, gathers columns from, or fills from the row (a roof level
+// alone). The deformations, drift ratios and twists are also checked against the structure's own
+// (Structure::SlotDeformation, MemberDeformation), computed apart from the series' description.
+TEST_P(EveryHistory, IsItsSeriesFillOfTheRows) {
+  const SelectionCase& param = GetParam();
+  const model::ModelFile model = model::LoadModelFile(Model(param.model));
+  Problem setup = Prepare(model, {});
+  setup.grid.steps = std::min(setup.grid.steps, 400);
+  model::AnalysisSection analysis = model.analysis;
+  if (param.ida) analysis.integrator = model::AnalysisSection::Integrator::kIda;
+  ResponseHistory history;
+  integrators::HistoryRecorder recorder =
+      integrators::RecordHistory(setup.structure, setup.grid, &history);
+  integrators::ResponseObserver* const also[] = {&recorder};
+  SolveOptions in_memory_options;
+  in_memory_options.analysis = analysis;
+  in_memory_options.output.summary_only = true;
+  const Summary in_memory = Solve(in_memory_options, setup, also);
+  const int rows = history.rows_written;
+  ASSERT_GT(rows, 100);
+
+  model::OutputSelection selection;
+  selection.every = param.every;
+  selection.levels = param.levels;
+  const std::vector<Series> series = ResultSeries(setup, selection);
+  ASSERT_FALSE(series.empty());
+  // Each series' fill of every `every`-th row.
+  const auto filled = [&](const Series& s, int every) {
+    std::vector<double> values, row_values(s.width());
+    for (int r = 0; r < rows; r += every) {
+      std::fill(row_values.begin(), row_values.end(), -1.0);
+      s.fill(history.Row(r), row_values.data());
+      values.insert(values.end(), row_values.begin(), row_values.end());
+    }
+    return values;
+  };
+
+  const auto streamed = TemporaryFile("streamed.h5");
+  const auto csv = TemporaryFile("streamed.csv");
+  const auto held = TemporaryFile("held.h5");
+  RunAndRecord(analysis, setup, selection, streamed.string(), /*buffer_rows=*/7);
+  RunAndRecord(analysis, setup, selection, csv.string(), /*buffer_rows=*/7);
+  WriteResultsFile(held.string(),
+                   {&setup, &analysis, &in_memory.run, &in_memory.peaks, "test", selection},
+                   history);
+  const hid_t file = H5Fopen(streamed.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t held_file = H5Fopen(held.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(held_file, 0);
+  std::vector<std::vector<double>> expected;  // per series
+  for (const Series& s : series) {
+    expected.push_back(filled(s, param.every));
+    ExpectBitwiseEqual(Read(file, s.name).values, expected.back(), s.name);
+    ExpectBitwiseEqual(Read(held_file, s.name).values, filled(s, 1), s.name + " (held)");
+  }
+  std::string header;
+  const std::vector<std::vector<double>> csv_rows = CsvRows(csv, &header);
+  ASSERT_EQ(csv_rows.size(), std::size_t((rows - 1) / param.every + 1));
+  for (std::size_t r = 0; r < csv_rows.size(); ++r) {
+    std::size_t column = 0;
+    for (std::size_t k = 0; k < series.size(); ++k) {
+      for (std::size_t c = 0; c < series[k].width(); ++c, ++column) {
+        ASSERT_LT(column, csv_rows[r].size());
+        EXPECT_TRUE(SameBits(csv_rows[r][column], expected[k][r * series[k].width() + c]))
+            << series[k].name << " row " << r << " column " << c;
+      }
+    }
+    EXPECT_EQ(column, csv_rows[r].size());
+  }
+
+  const structure::Structure& structure = setup.structure;
+  const structure::Layout& layout = setup.layout;
+  if (layout.isolated()) {
+    std::vector<double> deformations;
+    for (int r = 0; r < rows; r += param.every) {
+      for (const structure::IsolatorLayout& isolator : layout.isolators) {
+        const hysteresis::Vec2 u =
+            structure.SlotDeformation(isolator.slot, history.Row(r).displacement);
+        deformations.push_back(u.x);
+        if (structure.slot_width(isolator.slot) == 2) deformations.push_back(u.y);
+      }
+    }
+    ExpectBitwiseEqual(Read(file, "isolator/displacement").values, deformations,
+                       "isolator/displacement against SlotDeformation");
+  }
+  if (param.levels.empty() && !layout.stories.empty()) {
+    std::vector<double> drifts, ratios, twists;
+    for (int r = 0; r < rows; r += param.every) {
+      const std::span<const double> u = history.Row(r).displacement;
+      for (const structure::StoryLayout& story : layout.stories) {
+        for (int d = 0; d < layout.directions; ++d) {
+          if (story.members[d] < 0) continue;
+          const double drift = structure.MemberDeformation(story.members[d], u);
+          drifts.push_back(drift);
+          ratios.push_back(100.0 / story.height * drift);
+        }
+        if (story.members[structure::kRotation] >= 0) {
+          twists.push_back(structure.MemberDeformation(story.members[structure::kRotation], u));
+        }
+      }
+    }
+    ExpectBitwiseEqual(Read(file, "story/drift").values, drifts,
+                       "story/drift against MemberDeformation");
+    if (layout.stories[0].height > 0.0) {
+      ExpectBitwiseEqual(Read(file, "story/drift_ratio").values, ratios,
+                         "story/drift_ratio against MemberDeformation");
+    }
+    if (!twists.empty()) {
+      ExpectBitwiseEqual(Read(file, "story/twist").values, twists,
+                         "story/twist against MemberDeformation");
+    }
+  }
+  H5Fclose(held_file);
+  H5Fclose(file);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Structures, EveryHistory,
+    ::testing::Values(SelectionCase{"sdof/table7_thm1_hard.yaml", 1, {}},
+                      SelectionCase{"sdof/table7_thm1_hard.yaml", 2, {}, /*ida=*/true},
+                      SelectionCase{"chopra/case_e_five_story_frame.yaml", 1, {}},
+                      SelectionCase{
+                          "chopra/case_e_five_story_frame.yaml", 1, {1, model::kRoofLevel}},
+                      SelectionCase{"buildings/five_story_table9.yaml", 1, {}},
+                      SelectionCase{"buildings/five_story_table9.yaml", 3, {model::kRoofLevel}},
+                      SelectionCase{"plan/five_story_fp_plan.yaml", 1, {}},
+                      SelectionCase{"design/four_story_tfp_plan.yaml", 2, {}}),
+    [](const ::testing::TestParamInfo<SelectionCase>& info) {
+      std::string name = std::filesystem::path(info.param.model).stem().string() + "_every" +
+                         std::to_string(info.param.every);
+      if (!info.param.levels.empty()) name += "_levels";
+      if (info.param.ida) name += "_ida";
+      return name;
+    });
+
 // A streamed run longer than its buffer is written in chunks of equal size that tile its rows:
 // the file's last chunk, stored whole by HDF5, holds fewer padding rows than there are chunks
 // (chunks of the buffer's size would leave up to a whole chunk of them), and its padding is zeros
@@ -382,24 +567,8 @@ TEST(ResultsWriter, CsvFollowsTheSelection) {
   selection.quantities = {"energy"};
   const auto path = TemporaryFile("energy.csv");
   RunAndRecord(model.analysis, setup, selection, path.string(), 7);
-  std::ifstream in(path);
-  std::string line, header;
-  std::vector<std::vector<double>> values;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header.empty()) {
-      header = line;
-      continue;
-    }
-    std::vector<double> row;
-    std::size_t start = 0;
-    while (start <= line.size()) {
-      const std::size_t comma = std::min(line.find(',', start), line.size());
-      row.push_back(std::stod(line.substr(start, comma - start)));
-      start = comma + 1;
-    }
-    values.push_back(row);
-  }
+  std::string header;
+  const std::vector<std::vector<double>> values = CsvRows(path, &header);
   EXPECT_EQ(header,
             "time [s],ground_acceleration [mm/s^2],energy/input [kN*mm],energy/kinetic [kN*mm],"
             "energy/damping [kN*mm],energy/elastic [kN*mm],energy/hysteretic [kN*mm]");
@@ -431,6 +600,35 @@ TEST(ResultsWriter, AWriterAbandonedBeforeFinishLeavesNothing) {
     EXPECT_FALSE(std::filesystem::exists(path)) << name;
     EXPECT_TRUE(testing::LeftoverTemporaries(path).empty()) << name;
   }
+}
+
+// A run that stops early (a blow-up) is written with the rows it reached: the datasets, whose
+// extent is the grid's rows from the start, end at the last row written, padding and rows never
+// reached left out, and equal the in-memory run's rows bit for bit.
+TEST(ResultsWriter, ARunThatStopsEarlyEndsAtItsLastRow) {
+  const model::ModelFile model = model::LoadModelFile(
+      std::string(ISOLAB_SOURCE_DIR) + "/tests/cli/data/blow_up_negative_stiffness.yaml");
+  const Problem setup = Prepare(model, {});
+  ResponseHistory history;
+  ASSERT_FALSE(RunInMemory(model.analysis, setup, &history).ok());
+  const int rows = history.rows_written;
+  const int grid_rows = setup.grid.steps + 1;
+  ASSERT_GT(rows, 20);
+  ASSERT_LT(rows, grid_rows - 10);
+
+  const auto path = TemporaryFile("stopped.h5");
+  const Summary run = RunAndRecord(model.analysis, setup, {}, path.string(), /*buffer_rows=*/7);
+  EXPECT_FALSE(run.run.ok());
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(Read(file, "time").dims, std::vector<hsize_t>{hsize_t(rows)});
+  ExpectBitwiseEqual(Read(file, "time").values,
+                     ExpectedVector(rows, 1, [&](int r) { return history.time[r]; }), "time");
+  const Dataset displacement = Read(file, "displacement");
+  ASSERT_EQ(displacement.dims.size(), 2u);
+  EXPECT_EQ(displacement.dims[0], hsize_t(rows));
+  ExpectBitwiseEqual(displacement.values, Expected(history.displacement, rows, 1), "displacement");
+  H5Fclose(file);
 }
 
 }  // namespace

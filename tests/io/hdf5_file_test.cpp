@@ -73,6 +73,53 @@ TEST(Hdf5File, RowsGrowAsTheyAreAppended) {
   H5Fclose(file);
 }
 
+// Rows expected from the start are the dataset's extent while it is written; Close trims it to the
+// rows appended (fewer: a run that stopped early), and appending past it extends it.
+TEST(Hdf5File, CloseTrimsTheExpectedRowsToTheRowsAppended) {
+  const auto path = FreshFile("expected_rows.h5");
+  const std::vector<double> values{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};  // 7 rows of 2
+  {
+    Hdf5File file(path.string());
+    {
+      Hdf5File::Rows fewer = file.CreateRows("fewer", 2, "mm", 3, /*expected_rows=*/12);
+      fewer.Append(std::span<const double>(values).first(6));
+      const std::vector<double> last{7, 8, 0, 0, 0, 0};  // 1 row and 2 of padding
+      fewer.AppendLastChunk(last, 1);
+      fewer.Close();
+      fewer.Close();  // once closed, nothing more to do
+      Hdf5File::Rows more = file.CreateRows("more", 2, "mm", 2, /*expected_rows=*/4);
+      more.Append(std::span<const double>(values).first(8));
+      more.Append(std::span<const double>(values).subspan(8, 4));
+      more.Append(std::span<const double>(values).subspan(12, 2));
+      more.Close();
+      Hdf5File::Rows none = file.CreateRows("none", 0, "s", 5, /*expected_rows=*/10);
+      none.Close();
+    }
+    file.Commit();
+  }
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  // The dimensions, and the values as many as they hold.
+  const auto read = [&](const char* name) {
+    const hid_t dataset = H5Dopen2(file, name, H5P_DEFAULT);
+    const std::vector<hsize_t> dims = Dimensions(dataset);
+    std::vector<double> data(dims.empty() ? 0 : dims[0] * (dims.size() > 1 ? dims[1] : 1));
+    if (!data.empty()) {
+      H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+    }
+    H5Dclose(dataset);
+    return std::make_pair(dims, data);
+  };
+  const auto [fewer_dims, fewer] = read("fewer");
+  EXPECT_EQ(fewer_dims, (std::vector<hsize_t>{4, 2}));
+  EXPECT_EQ(fewer, (std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8}));
+  const auto [more_dims, more] = read("more");
+  EXPECT_EQ(more_dims, (std::vector<hsize_t>{7, 2}));
+  EXPECT_EQ(more, values);
+  EXPECT_EQ(read("none").first, (std::vector<hsize_t>{0}));
+  H5Fclose(file);
+}
+
 // A stream's last, part-filled chunk handed over whole with its padding: the dataset ends at
 // the rows given, and reads the same as the rows appended one by one through HDF5's own path.
 TEST(Hdf5File, TheLastChunkGoesWholeAndTheDatasetEndsAtItsRows) {
