@@ -114,7 +114,6 @@ RowStage::RowStage(std::span<const Series> series, const structure::Structure& s
 }
 
 void RowStage::Resize(std::size_t rows) {
-  rows_ = rows;
   for (Staged& staged : staged_) staged.rows.resize(rows * staged.width);
   for (std::size_t s = 0; s < series_.size(); ++s) {
     if (whole_[s] < 0) blocks_[s].resize(rows * series_[s].width());

@@ -57,7 +57,6 @@ class RowStage {
   std::size_t StagedIndex(RowArray array, const structure::Structure& structure);
 
   std::span<const Series> series_;
-  std::size_t rows_ = 0;  // room for
   std::vector<Staged> staged_;
   std::vector<int> whole_;                    // per series: the staged array it is whole, or -1
   std::vector<ResultsWriter::Block> blocks_;  // per series not whole: its rows

@@ -97,16 +97,16 @@ std::vector<double> ExpectedVector(int rows, int stride, Value value) {
   return values;
 }
 
-// A run kept whole in memory.
-integrators::RunSummary RunInMemory(const model::AnalysisSection& analysis, const Problem& problem,
-                                    ResponseHistory* history) {
+// A run kept whole in memory: its summary and peaks.
+Summary RunInMemory(const model::AnalysisSection& analysis, const Problem& problem,
+                    ResponseHistory* history) {
   integrators::HistoryRecorder recorder =
       integrators::RecordHistory(problem.structure, problem.grid, history);
   integrators::ResponseObserver* const also[] = {&recorder};
   SolveOptions options;
   options.analysis = analysis;
   options.output.summary_only = true;
-  return Solve(options, problem, also).run;
+  return Solve(options, problem, also);
 }
 
 // A run streamed to `path` (none when empty) as `selection` asks.
@@ -144,7 +144,7 @@ TEST_P(StreamedAgainstInMemory, DatasetsAreBitwiseEqual) {
   model::AnalysisSection analysis = model.analysis;
   if (GetParam().ida) analysis.integrator = model::AnalysisSection::Integrator::kIda;
   ResponseHistory history;
-  const integrators::RunSummary in_memory = RunInMemory(analysis, setup, &history);
+  const integrators::RunSummary in_memory = RunInMemory(analysis, setup, &history).run;
   ASSERT_TRUE(in_memory.ok());
   const int rows = history.rows_written;
   ASSERT_GT(rows, 100);
@@ -268,13 +268,7 @@ TEST_P(EveryHistory, IsItsSeriesFillOfTheRows) {
   model::AnalysisSection analysis = model.analysis;
   if (param.ida) analysis.integrator = model::AnalysisSection::Integrator::kIda;
   ResponseHistory history;
-  integrators::HistoryRecorder recorder =
-      integrators::RecordHistory(setup.structure, setup.grid, &history);
-  integrators::ResponseObserver* const also[] = {&recorder};
-  SolveOptions in_memory_options;
-  in_memory_options.analysis = analysis;
-  in_memory_options.output.summary_only = true;
-  const Summary in_memory = Solve(in_memory_options, setup, also);
+  const Summary in_memory = RunInMemory(analysis, setup, &history);
   const int rows = history.rows_written;
   ASSERT_GT(rows, 100);
 
@@ -610,7 +604,7 @@ TEST(ResultsWriter, ARunThatStopsEarlyEndsAtItsLastRow) {
       std::string(ISOLAB_SOURCE_DIR) + "/tests/cli/data/blow_up_negative_stiffness.yaml");
   const Problem setup = Prepare(model, {});
   ResponseHistory history;
-  ASSERT_FALSE(RunInMemory(model.analysis, setup, &history).ok());
+  ASSERT_FALSE(RunInMemory(model.analysis, setup, &history).run.ok());
   const int rows = history.rows_written;
   const int grid_rows = setup.grid.steps + 1;
   ASSERT_GT(rows, 20);
