@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # The extra CPU a job costs when studies run on several worker processes (issue 48 item 6's
 # 2-core proxy for the 16-worker excess): the process tree's CPU (perf stat task-clock, which
-# counts the workers) of one compare study at -j 1 and at -j 2, runs alternating, per job,
-# medians of REPEAT pairs (default 9). Run by hand on a quiet machine; never in CI.
+# counts the workers) of one compare study at -j 1 and at -j 2, per job. Beside them, the
+# machine's own share: two -j 1 studies run at once, as two separate processes (-j 1 runs its
+# jobs in its own process, forking none), so that both cores are busy with no workers. What
+# -j 2 costs beyond that pair is the workers' own. Each round runs the three in turn; medians of
+# REPEAT rounds (default 9). Run by hand on a quiet machine; never in CI.
 #   benchmarks/worker_cpu.sh [ISOLAB] [REPEAT] [STUDY]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,20 +18,29 @@ trap 'rm -rf "$work"' EXIT
 "$isolab" compare "$study" -q -j 1 -o "$work/count" >/dev/null 2>&1
 jobs=$(($(wc -l <"$work/count/summary.csv") - 1))
 rm -rf "$work/count"
-cpu_ms() {  # task-clock of the whole process tree, ms
-  perf stat -x, -e task-clock -o "$work/stat" "$isolab" compare "$study" -q -j "$1" \
-    -o "$work/out_$1_$2" >/dev/null 2>&1
-  rm -rf "$work/out_$1_$2"
-  awk -F, '/task-clock/ { print $1 }' "$work/stat"
+cpu_ms() {  # task-clock of the whole process tree, ms: cpu_ms JOBS NAME; fails with the study
+  perf stat -x, -e task-clock -o "$work/stat_$2" "$isolab" compare "$study" -q -j "$1" \
+    -o "$work/out_$2" >/dev/null 2>&1 || return 1
+  rm -rf "$work/out_$2"
+  awk -F, '/task-clock/ { print $1 }' "$work/stat_$2"
 }
-for i in $(seq "$repeat"); do
-  echo "$(cpu_ms 1 "$i") $(cpu_ms 2 "$i")" >>"$work/pairs"
+for _ in $(seq "$repeat"); do
+  one=$(cpu_ms 1 one)
+  cpu_ms 1 first >"$work/first" &
+  first=$!
+  cpu_ms 1 second >"$work/second" &
+  second=$!
+  wait "$first"  # a study that failed ends the script (set -e), as below
+  wait "$second"
+  pair=$(awk '{ s += $1 } END { print s / 2 }' "$work/first" "$work/second")
+  echo "$one $pair $(cpu_ms 2 two)" >>"$work/rounds"
 done
-median() { sort -n | awk '{ t[NR] = $1 } END { print t[int((NR + 1) / 2)] }'; }
-one=$(awk '{ print $1 }' "$work/pairs" | median)
-two=$(awk '{ print $2 }' "$work/pairs" | median)
-ratio=$(awk '{ print $2 / $1 }' "$work/pairs" | median)
-echo "study $study, $jobs jobs, $repeat pairs on $(nproc) cores"
-echo "CPU per job: -j 1 $(awk -v c="$one" -v n="$jobs" 'BEGIN { printf "%.2f", c / n }') ms," \
-  "-j 2 $(awk -v c="$two" -v n="$jobs" 'BEGIN { printf "%.2f", c / n }') ms;" \
-  "-j 2 / -j 1 per pair: median $ratio"
+median() { sort -g | awk '{ t[NR] = $1 } END { print t[int((NR + 1) / 2)] }'; }
+column() { awk -v c="$1" '{ print $c }' "$work/rounds" | median; }
+ratio() { awk -v a="$1" -v b="$2" '{ print $a / $b }' "$work/rounds" | median; }
+per_job() { awk -v c="$1" -v n="$jobs" 'BEGIN { printf "%.2f", c / n }'; }
+echo "study $study, $jobs jobs, $repeat rounds on $(nproc) cores"
+echo "CPU per job (medians): -j 1 $(per_job "$(column 1)") ms; two -j 1 studies at once" \
+  "$(per_job "$(column 2)") ms each; -j 2 $(per_job "$(column 3)") ms"
+echo "per round, medians: -j 2 / -j 1 $(ratio 3 1); the pair / -j 1 $(ratio 2 1);" \
+  "-j 2 / the pair $(ratio 3 2)"

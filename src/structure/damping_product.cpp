@@ -30,9 +30,19 @@ constexpr std::array<DampingProduct::Kernel, sizeof...(kSizes)> DenseKernels(
 constexpr auto kDenseKernels =
     DenseKernels(std::make_integer_sequence<int, kDenseDampingDofs + 1>());
 
+bool AllZero(const Eigen::SparseMatrix<double>& matrix) {
+  for (int j = 0; j < matrix.outerSize(); ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, j); it; ++it) {
+      if (it.value() != 0.0) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 DampingProduct::DampingProduct(const Eigen::SparseMatrix<double>& damping) {
+  zero_ = AllZero(damping);
   const int n = static_cast<int>(damping.rows());
   if (n < 1 || n > kDenseDampingDofs || damping.cols() != n) return;
   dense_.assign(static_cast<std::size_t>(n) * n, 0.0);

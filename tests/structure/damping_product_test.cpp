@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -44,6 +45,30 @@ TEST(DampingProduct, AnEmptyMatrixGivesZeroForces) {
   Eigen::VectorXd out;
   product.Apply(none, Eigen::VectorXd::Ones(4), &out);
   EXPECT_EQ(out, Eigen::VectorXd::Zero(4));
+}
+
+// Stored zeros (a damping of zero coefficients, its pattern kept, -0.0 among them) give the
+// product's forces at finite velocities, +0.0 to the bit, at the dense sizes and the sparse ones.
+TEST(DampingProduct, StoredZerosGiveTheProductsZeros) {
+  for (const int n : {1, 6, kDenseDampingDofs + 2}) {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i) entries.emplace_back(i, i, 0.0);
+    for (int i = 1; i < n; ++i) entries.emplace_back(i, i - 1, -0.0);
+    Eigen::SparseMatrix<double> zeros(n, n);
+    zeros.setFromTriplets(entries.begin(), entries.end());
+    zeros.makeCompressed();
+    ASSERT_EQ(zeros.nonZeros(), 2 * n - 1);
+    const DampingProduct product(zeros);
+    const Eigen::VectorXd v = -Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+    Eigen::VectorXd out = Eigen::VectorXd::Constant(n + 1, 7.0);  // resized by Apply
+    product.Apply(zeros, v, &out);
+    const Eigen::VectorXd expected = zeros * v;
+    ASSERT_EQ(out.size(), n);
+    for (int i = 0; i < n; ++i) {
+      EXPECT_EQ(out[i], expected[i]) << n << ", " << i;
+      EXPECT_EQ(std::signbit(out[i]), std::signbit(expected[i])) << n << ", " << i;
+    }
+  }
 }
 
 }  // namespace
