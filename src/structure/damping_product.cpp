@@ -44,7 +44,7 @@ bool AllZero(const Eigen::SparseMatrix<double>& matrix) {
 DampingProduct::DampingProduct(const Eigen::SparseMatrix<double>& damping) {
   zero_ = AllZero(damping);
   const int n = static_cast<int>(damping.rows());
-  if (n < 1 || n > kDenseDampingDofs || damping.cols() != n) return;
+  if (zero_ || n < 1 || n > kDenseDampingDofs || damping.cols() != n) return;
   dense_.assign(static_cast<std::size_t>(n) * n, 0.0);
   for (int j = 0; j < n; ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(damping, j); it; ++it) {

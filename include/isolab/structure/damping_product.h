@@ -39,7 +39,7 @@ class DampingProduct {
   using Kernel = void (*)(const double* dense, const double* v, double* out);
 
  private:
-  std::vector<double> dense_;  // column-major; empty when the sparse product serves
+  std::vector<double> dense_;  // column-major; empty when the sparse product serves, or none
   Kernel kernel_ = nullptr;
   bool zero_ = false;  // every stored value of C is 0.0
 };
