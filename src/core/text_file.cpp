@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -28,41 +29,64 @@ void RequireRegularFile(const std::string& path) {
   }
 }
 
+// Lines are found in blocks this large (or the limit, if larger): a read per block, not per line.
+constexpr std::size_t kBlockBytes = 64 * 1024;
+
 }  // namespace
 
 TextLines::TextLines(const std::string& path, std::size_t max_length)
     : path_((RequireRegularFile(path), path)),
+      max_length_(max_length),
       in_(path, std::ios::binary),
-      buffer_(max_length + 2) {}
+      // A '\r' after the limit's characters, and one more to tell an overlong line from one that
+      // fills the limit exactly.
+      buffer_(std::max(max_length + 2, kBlockBytes)) {}
 
-bool TextLines::Next(std::string* line) {
+void TextLines::Refill() {
+  std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
+  end_ -= begin_;
+  begin_ = 0;
+  in_.read(buffer_.data() + end_, static_cast<std::streamsize>(buffer_.size() - end_));
+  const auto read = static_cast<std::size_t>(in_.gcount());
+  end_ += read;
+  // A short read is the end (or a read error, which ends the file the same way).
+  if (!in_ || read == 0) end_of_file_ = true;
+}
+
+bool TextLines::Next(std::string_view* line) {
   if (done_) return false;
-  // getline stores at most size - 1 characters: the limit, a '\r' before the '\n', and one more
-  // to tell an overlong line from one that fills the limit exactly.
-  in_.getline(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-  const std::streamsize read = in_.gcount();
-  if (in_.eof()) {
+  const char* newline = nullptr;
+  // Until a '\n', the end, or more unread bytes than a line may have (with its '\r').
+  while (true) {
+    newline = static_cast<const char*>(std::memchr(buffer_.data() + begin_, '\n', end_ - begin_));
+    if (newline != nullptr || end_of_file_ || end_ - begin_ > max_length_ + 1) break;
+    Refill();
+  }
+  const char* start = buffer_.data() + begin_;
+  std::size_t length =
+      newline != nullptr ? static_cast<std::size_t>(newline - start) : end_ - begin_;
+  if (newline == nullptr && end_of_file_) {
     done_ = true;
-    if (read == 0) return false;  // the end, after a final '\n' or in an empty file
-  } else if (in_.fail()) {
-    // size - 1 characters and no '\n' yet.
-    throw InputError({path_, line_number_ + 1},
-                     fmt::format("a line of more than {} characters: is this a text file of the "
-                                 "expected kind? (the rest is not read)",
-                                 buffer_.size() - 2));
+    if (length == 0) return false;  // the end, after a final '\n' or in an empty file
   }
   ++line_number_;
-  // gcount counts the '\n' extracted, which is not stored.
-  std::size_t length = static_cast<std::size_t>(read) - (done_ ? 0 : 1);
-  if (length > 0 && buffer_[length - 1] == '\r') --length;
-  if (length > buffer_.size() - 2) {
+  begin_ += length + (newline != nullptr ? 1 : 0);
+  if (length > 0 && start[length - 1] == '\r') --length;
+  if (length > max_length_) {
     throw InputError({path_, line_number_},
                      fmt::format("a line of more than {} characters: is this a text file of the "
                                  "expected kind? (the rest is not read)",
-                                 buffer_.size() - 2));
+                                 max_length_));
   }
-  line->assign(buffer_.data(), length);
-  if (line_number_ == 1) StripByteOrderMark(line);
+  *line = std::string_view(start, length);
+  if (line_number_ == 1 && line->starts_with("\xEF\xBB\xBF")) line->remove_prefix(3);
+  return true;
+}
+
+bool TextLines::Next(std::string* line) {
+  std::string_view view;
+  if (!Next(&view)) return false;
+  line->assign(view);
   return true;
 }
 

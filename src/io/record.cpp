@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 
@@ -24,7 +25,17 @@
 namespace isolab::io {
 namespace {
 
-std::vector<std::string> Lines(const std::string& path) {
+// A record's lines: one buffer holding them all, and a view of each into it (a vector's storage,
+// unlike a short string's, stays where it is when the struct is moved).
+struct RecordLines {
+  RecordLines() = default;
+  RecordLines(const RecordLines&) = delete;  // a copy's views would be the original's
+  RecordLines(RecordLines&&) = default;
+  std::vector<char> text;
+  std::vector<std::string_view> lines;
+};
+
+RecordLines ReadLines(const std::string& path) {
   // A directory opens as a stream on Linux and reads as an empty file.
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
@@ -33,9 +44,19 @@ std::vector<std::string> Lines(const std::string& path) {
   TextLines in(path);
   if (!in.is_open())
     throw InputError({path}, fmt::format("cannot open ({})", std::strerror(errno)));
-  std::vector<std::string> lines;
-  for (std::string line; in.Next(&line);) lines.push_back(std::move(line));
-  return lines;
+  RecordLines read;
+  std::vector<std::size_t> ends;  // of each line in the text: views are taken once it stops growing
+  for (std::string_view line; in.Next(&line);) {
+    read.text.insert(read.text.end(), line.begin(), line.end());
+    ends.push_back(read.text.size());
+  }
+  read.lines.reserve(ends.size());
+  std::size_t start = 0;
+  for (const std::size_t end : ends) {
+    read.lines.emplace_back(read.text.data() + start, end - start);
+    start = end;
+  }
+  return read;
 }
 
 // White space as the C locale's isspace has it, without a call per character.
@@ -44,17 +65,30 @@ bool IsBlank(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 // Numbers of one line, split on white space and commas; an error names file, line and token.
 void ParseNumbers(const std::string& path, int line_number, std::string_view line,
                   std::vector<double>* out) {
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (IsBlank(line[i]) || line[i] == ',')) ++i;
-    if (i >= line.size()) break;
-    std::size_t end = i;
-    while (end < line.size() && !IsBlank(line[end]) && line[end] != ',') ++end;
+  const char* at = line.data();
+  const char* const end = at + line.size();
+  const auto separator = [](char c) { return IsBlank(c) || c == ','; };
+  while (true) {
+    while (at != end && separator(*at)) ++at;
+    if (at == end) return;
+    // A plain finite number ends where its token does (no separator is part of a number), so it
+    // is read without finding the token's end first; anything else is ParseFiniteNumber's.
+    std::size_t length = 0;
+    const std::optional<double> plain =
+        ReadPlainFiniteNumber(std::string_view(at, static_cast<std::size_t>(end - at)), &length);
+    if (plain && (at + length == end || separator(at[length]))) {
+      out->push_back(*plain);
+      at += length;
+      continue;
+    }
+    const char* token_end = at;
+    while (token_end != end && !separator(*token_end)) ++token_end;
     std::string problem;
-    const std::optional<double> value = ParseFiniteNumber(line.substr(i, end - i), &problem);
-    if (!value) throw InputError({path, line_number}, problem);
-    out->push_back(*value);
-    i = end;
+    const std::optional<double> checked =
+        ParseFiniteNumber(std::string_view(at, static_cast<std::size_t>(token_end - at)), &problem);
+    if (!checked) throw InputError({path, line_number}, problem);
+    out->push_back(*checked);
+    at = token_end;
   }
 }
 
@@ -84,7 +118,7 @@ constexpr std::size_t kMaxHeaderLine = 4096;
 // The lines where a header is sought.
 constexpr std::size_t kHeaderLines = 12;
 
-void CheckHeaderLineLengths(const std::string& path, const std::vector<std::string>& lines) {
+void CheckHeaderLineLengths(const std::string& path, std::span<const std::string_view> lines) {
   for (std::size_t i = 0; i < std::min(lines.size(), kHeaderLines); ++i) {
     if (lines[i].size() > kMaxHeaderLine) {
       throw InputError({path, static_cast<int>(i + 1)},
@@ -114,7 +148,7 @@ double HeaderStep(const std::string& path, std::size_t line, const std::string& 
   return dt;
 }
 
-std::optional<Layout> PeerLayout(const std::string& path, const std::vector<std::string>& lines) {
+std::optional<Layout> PeerLayout(const std::string& path, std::span<const std::string_view> lines) {
   Layout layout;
   bool found = false;
   for (std::size_t i = 0; i < std::min(lines.size(), kHeaderLines); ++i) {
@@ -195,7 +229,7 @@ std::string AccelerationUnit(std::string_view written) {
 // The units the header states, in isolab's notation, or empty when it states none. Only a units
 // statement counts (a "g" in a description does not); a statement naming no unit isolab knows,
 // and two statements that disagree, are refused at their lines.
-std::string HeaderUnits(const std::string& path, const std::vector<std::string>& lines,
+std::string HeaderUnits(const std::string& path, std::span<const std::string_view> lines,
                         std::size_t first, std::size_t end, bool csv) {
   std::string units;
   std::size_t units_line = 0;
@@ -292,7 +326,8 @@ double StepOf(const std::string& path, double file_dt, const std::string& file_s
 }  // namespace
 
 Record ReadRecord(const std::string& path, const RecordOptions& options) {
-  const std::vector<std::string> lines = Lines(path);
+  const RecordLines read = ReadLines(path);
+  const std::vector<std::string_view>& lines = read.lines;
   Record record;
   record.path = path;
 
@@ -300,7 +335,7 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   std::optional<Layout> layout = PeerLayout(path, lines);
   std::string header, header_units;
   if (layout) {
-    for (std::size_t i = 0; i < layout->first_data_line; ++i) header += lines[i] + "\n";
+    for (std::size_t i = 0; i < layout->first_data_line; ++i) header.append(lines[i]).append("\n");
     header_units = HeaderUnits(path, lines, 0, layout->first_data_line, false);
   } else {
     // Columns: a header line with letters makes it CSV, else count the numbers of the first line.
@@ -313,7 +348,7 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
         std::any_of(lines[first].begin(), lines[first].end(),
                     [](unsigned char c) { return std::isalpha(c) && c != 'e' && c != 'E'; });
     if (has_letters) {
-      header = lines[first];
+      header = std::string(lines[first]);
       layout->format = "CSV";
       layout->first_data_line = first + 1;
       layout->two_columns = std::count(header.begin(), header.end(), ',') >= 1;
@@ -337,6 +372,7 @@ Record ReadRecord(const std::string& path, const RecordOptions& options) {
   record.description = header;
 
   std::vector<double> numbers;
+  numbers.reserve(lines.size());  // a value a line at least in most records
   int last_data_line = 0;
   for (std::size_t i = layout->first_data_line; i < lines.size(); ++i) {
     // Numbers hold no n: only a line with one can be the END DATA line.

@@ -36,5 +36,22 @@ TEST(ParseFiniteNumber, RefusesOverflowAndNonNumbers) {
   }
 }
 
+// The plain prefix reader takes what ParseFiniteNumber takes, without a '+', and says how much.
+TEST(ReadPlainFiniteNumber, ReadsWhatParseFiniteNumberReadsAndSaysWhereItStopped) {
+  for (const char* text : {"2", "-1.5e-3", "0.1", "1.7976931348623157e308", "-0", ".5", "1."}) {
+    std::size_t length = 0;
+    EXPECT_EQ(ReadPlainFiniteNumber(text, &length), ParseFiniteNumber(text)) << text;
+    EXPECT_EQ(length, std::string(text).size()) << text;
+  }
+  std::size_t length = 0;
+  EXPECT_EQ(ReadPlainFiniteNumber("1.5,2", &length), 1.5);
+  EXPECT_EQ(length, 3u);
+  EXPECT_EQ(ReadPlainFiniteNumber("1e", &length), 1.0);  // the caller sees the 'e' left over
+  EXPECT_EQ(length, 1u);
+  for (const char* text : {"+4", "nan", "-inf", "infinity", ".nan", "1e999", "", " 1", "x"}) {
+    EXPECT_FALSE(ReadPlainFiniteNumber(text, &length)) << text;
+  }
+}
+
 }  // namespace
 }  // namespace isolab

@@ -1,7 +1,7 @@
 // Bounded lines: a line up to the limit is read whole (with NUL bytes, CRLF endings and no final
-// newline), one past it is refused at its line number having read no further, and a UTF-8
-// byte-order mark is dropped from the first line only; a whole file is refused over its limit
-// before it is read.
+// newline), also where the reader's blocks split it; one past it is refused at its line number,
+// and a UTF-8 byte-order mark is dropped from the first line only; a whole file is refused over
+// its limit before it is read.
 #include "isolab/core/text_file.h"
 
 #include <gtest/gtest.h>
@@ -63,6 +63,53 @@ TEST(TextLines, ALineOverTheLimitIsRefusedAtItsNumber) {
           << error.what();
     }
   }
+}
+
+// The reader finds lines a block at a time: lines across its blocks, and one of the default
+// limit's length, come whole, as a plain split of the same bytes has them.
+TEST(TextLines, LinesAcrossItsBlocksAreReadAsASplitOfTheBytes) {
+  std::string bytes;
+  unsigned seed = 12345;
+  for (int line = 0; line < 400; ++line) {
+    seed = seed * 1103515245u + 12345u;
+    const std::size_t length = line == 150 ? kMaxLineLength : (seed >> 8) % 3000;
+    for (std::size_t k = 0; k < length; ++k) bytes += static_cast<char>('a' + (k + line) % 26);
+    bytes += line == 150 || (seed >> 4) % 3 == 0 ? "\r\n" : "\n";
+  }
+  std::vector<std::string> expected;
+  for (std::size_t start = 0; start < bytes.size();) {
+    const std::size_t end = bytes.find('\n', start);
+    std::string line = bytes.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    expected.push_back(line);
+    start = end + 1;
+  }
+  const std::string path = Write("blocks.txt", bytes);
+  EXPECT_EQ(AllLines(path, kMaxLineLength), expected);
+  TextLines views(path);
+  std::size_t count = 0;
+  for (std::string_view line; views.Next(&line); ++count) {
+    ASSERT_LT(count, expected.size());
+    EXPECT_EQ(line, expected[count]) << "line " << count + 1;
+  }
+  EXPECT_EQ(count, expected.size());
+  EXPECT_EQ(views.line_number(), 400);
+}
+
+// A line of the limit's length whose '\r' is the last byte of the reader's first block and whose
+// '\n' is the first of the next: it is read whole, not refused as one character too long.
+TEST(TextLines, ALineAtTheLimitSplitBetweenBlocksBeforeItsNewlineIsRead) {
+  constexpr std::size_t kFirstBlock = 64 * 1024;
+  std::string bytes;
+  while (bytes.size() + 4 <= kFirstBlock - 9) bytes += "abc\n";
+  bytes += std::string(kFirstBlock - 9 - bytes.size() - 1, 'y') + "\n";
+  bytes += std::string(8, 'x') + "\r";
+  ASSERT_EQ(bytes.size(), kFirstBlock);
+  bytes += "\nnext\n";
+  const std::vector<std::string> lines = AllLines(Write("split.txt", bytes), 8);
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_EQ(lines[lines.size() - 2], std::string(8, 'x'));
+  EXPECT_EQ(lines.back(), "next");
 }
 
 TEST(ReadBoundedText, RefusesAFileOverItsLimitBeforeReadingIt) {

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -91,6 +93,39 @@ TEST(ReadRecord, ColumnsWithAndWithoutHeader) {
   EXPECT_EQ(single.format, "single-column");
   EXPECT_DOUBLE_EQ(single.dt, 0.005);
   EXPECT_EQ(single.values.size(), 3u);
+}
+
+// Each value is the double strtod reads from its token, however it is spelled and separated.
+TEST(ReadRecord, EveryValueIsTheDoubleStrtodReads) {
+  const std::vector<std::string> tokens = {"1.",
+                                           ".5",
+                                           "-0",
+                                           "+2.5",
+                                           "1e-3",
+                                           "1E+03",
+                                           "-7.0000000000000007e-01",
+                                           "0.1",
+                                           "1.5e300",
+                                           "-2.2e-300",
+                                           "3",
+                                           "0.30000000000000004",
+                                           "123456789012345678901234"};
+  const std::vector<std::string> separators = {"  ", ",", "\t", " , "};
+  std::string text =
+      "ACCELERATION TIME SERIES IN UNITS OF G\nNPTS=" + std::to_string(tokens.size()) +
+      ", DT= .01 SEC\n";
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    text += separators[k % separators.size()] + tokens[k] + (k % 3 == 2 ? "\r\n" : "");
+  }
+  const std::filesystem::path path = testing::OwnTestFile("spellings.at2");
+  std::ofstream(path, std::ios::binary) << text << "\n";
+  const Record record = ReadRecord(path.string());
+  ASSERT_EQ(record.values.size(), tokens.size());
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    const double expected = std::strtod(tokens[k].c_str(), nullptr);
+    EXPECT_EQ(std::memcmp(&record.values[k], &expected, sizeof expected), 0)
+        << tokens[k] << ": " << record.values[k] << " against " << expected;
+  }
 }
 
 TEST(ReadRecord, HeaderUnitsAreWholeWordsAndFortranExponentsCount) {

@@ -1,7 +1,8 @@
 // Bounded text input for every reader of isolab's text formats (records, cyclic-test and
 // shake-table CSV, YAML files). A line is read only up to a limit: a file that is not text (a
 // header followed by a gigabyte of NUL bytes) is refused at its first overlong line, located,
-// having read no more than that, instead of being buffered whole (which cost `run --record` 2 GB
+// having read at most one block of it (64 KiB, or the limit if larger), instead of being buffered
+// whole (which cost `run --record` 2 GB
 // of memory and `shaketable` 8 GB). A UTF-8 byte-order mark, which editors on Windows put before
 // the first line, is removed: kept, it turned a CSV's comment line into its header.
 #pragma once
@@ -30,15 +31,23 @@ class TextLines {
 
   // The next line without its '\n' (nor a '\r' before it), without a UTF-8 byte-order mark on
   // the first line; false at the end of the file. Throws InputError at the line's number for a
-  // line longer than the limit, reading nothing past the limit.
+  // line longer than the limit, having read at most one buffer of it (the limit, or 64 KiB).
   bool Next(std::string* line);
+  // The same line as a view into the reader's buffer, valid until the next call (no copy).
+  bool Next(std::string_view* line);
 
   int line_number() const { return line_number_; }
 
  private:
+  // Moves the unread bytes to the buffer's start and reads after them.
+  void Refill();
+
   std::string path_;
+  std::size_t max_length_;
   std::ifstream in_;
   std::vector<char> buffer_;
+  std::size_t begin_ = 0, end_ = 0;  // the bytes read and not yet returned
+  bool end_of_file_ = false;         // nothing more to read after end_
   int line_number_ = 0;
   bool done_ = false;
 };
