@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iterator>
+#include <string_view>
 
 #include "isolab/core/errors.h"
 
@@ -31,6 +32,9 @@ void RequireRegularFile(const std::string& path) {
 
 // Lines are found in blocks this large (or the limit, if larger): a read per block, not per line.
 constexpr std::size_t kBlockBytes = 64 * 1024;
+
+// The UTF-8 byte-order mark (EF BB BF) that editors on Windows put before a file's first line.
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 
 }  // namespace
 
@@ -79,7 +83,9 @@ bool TextLines::Next(std::string_view* line) {
                                  max_length_));
   }
   *line = std::string_view(start, length);
-  if (line_number_ == 1 && line->starts_with("\xEF\xBB\xBF")) line->remove_prefix(3);
+  if (line_number_ == 1 && line->starts_with(kByteOrderMark)) {
+    line->remove_prefix(kByteOrderMark.size());
+  }
   return true;
 }
 
@@ -91,7 +97,7 @@ bool TextLines::Next(std::string* line) {
 }
 
 void StripByteOrderMark(std::string* text) {
-  if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
+  if (text->starts_with(kByteOrderMark)) text->erase(0, kByteOrderMark.size());
 }
 
 std::string ReadBoundedText(const std::string& path, std::size_t max_bytes) {
