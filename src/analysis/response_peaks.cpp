@@ -40,6 +40,19 @@ Peak Largest(const std::vector<Peak>& peaks) {
   return largest;
 }
 
+// The largest of `peaks`, the earliest of equals, then the first of those; an absent peak where
+// every one is zero. Rows come in time order, so this is the peak that considering each of their
+// values at every row in turn would keep: the first to reach the largest.
+Peak EarliestLargest(const std::vector<Peak>& peaks) {
+  Peak largest;
+  for (const Peak& peak : peaks) {
+    if (peak.value > largest.value || (peak.value == largest.value && peak.time < largest.time)) {
+      largest = peak;
+    }
+  }
+  return largest;
+}
+
 }  // namespace
 
 PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
@@ -177,14 +190,11 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   Consider(&peaks.roof_absolute_acceleration, Magnitude(acceleration(layout.roof())), t, roof);
   for (std::size_t f = 0; f < floors_.size(); ++f) {
     const int level = floors_[f];
-    const double a = Magnitude(acceleration(layout.levels[level]));
-    Consider(&peaks.floor_acceleration, a, t, level);
-    Consider(&peaks.floor_accelerations[f], a, t, level);
+    Consider(&peaks.floor_accelerations[f], Magnitude(acceleration(layout.levels[level])), t,
+             level);
   }
   for (std::size_t s = 0; s < layout.stories.size(); ++s) {
-    const double shear = Magnitude(StoryShear(s, row));
-    if (s == 0) Consider(&peaks.first_story_shear, shear, t);
-    Consider(&peaks.story_shears[s], shear, t, static_cast<int>(s));
+    Consider(&peaks.story_shears[s], Magnitude(StoryShear(s, row)), t, static_cast<int>(s));
     Consider(&peaks.story_drifts[s], Magnitude(StoryDrift(s, row)), t, static_cast<int>(s));
   }
   if (layout.rotations) {
@@ -254,6 +264,10 @@ ResponsePeaks PeakTracker::Peaks() const {
   peaks.isolator_velocity = Largest(peaks.isolator_velocities);
   peaks.story_drift = Largest(peaks.story_drifts);
   peaks.level_rotation = Largest(peaks.level_rotations);
+  peaks.floor_acceleration = EarliestLargest(peaks.floor_accelerations);
+  if (!peaks.story_shears.empty()) {
+    peaks.first_story_shear = {peaks.story_shears[0].value, peaks.story_shears[0].time, -1};
+  }
   if (peaks.story_drift.index >= 0) {
     const double height = layout.stories[peaks.story_drift.index].height;
     if (height > 0.0) peaks.story_drift_ratio = peaks.story_drift.value / height;

@@ -108,7 +108,7 @@ class NewmarkRun {
     const int n = structure.dofs();
     for (VectorXd* x :
          {&u_, &v_, &a_, &u_trial_, &v_trial_, &a_trial_, &load_, &load_trial_, &force_, &residual_,
-          &correction_, &viscous_, &viscous_trial_, &zero_, &roundoff_, &absolute_acceleration_}) {
+          &increment_, &viscous_, &viscous_trial_, &zero_, &roundoff_, &absolute_acceleration_}) {
       x->setZero(n);
     }
     excitation_.EffectiveLoad(0.0, mass_influence_, &load_);
@@ -174,23 +174,22 @@ class NewmarkRun {
     // with speed starts on a slope of the wrong sign. Measured (integrators_benchmark): the
     // coupled plan Table 9 model 2.03 to 1.52 solves a step, friction pendulums 3.17 to 2.17, the
     // one-direction Table 9 building 1.05 to 1.00.
-    u_trial_ = u_ + h * v_ + (0.5 * h * h) * a_;
+    Predict(h);
     bool displacement_converged = false;
     for (int iteration = 0; iteration <= options_.max_iterations; ++iteration) {
-      v_trial_ = c1 * (u_trial_ - u_) + (1.0 - gamma / beta) * v_ +
-                 (h * (1.0 - gamma / (2.0 * beta))) * a_;
-      a_trial_ = c0 * (u_trial_ - u_) - (1.0 / (beta * h)) * v_ - (1.0 / (2.0 * beta) - 1.0) * a_;
+      TrialRates(h, c0, c1);
       const bool refactor = NeedsFactorisation(iteration, h);
       // Modified-initial Newton assembles its tangent at rest below, not at the trial state.
       const bool tangent_here =
           refactor && options_.newton != NewmarkOptions::Newton::kModifiedInitial;
       if (tangent_here) StartTangent(factors);
       structure_.Evaluate(committed_, t0 + h, u_trial_, v_trial_, trial_, responses_, &force_,
-                          member_forces_, factors, tangent_here ? &tangent_ : nullptr, scales_);
+                          member_forces_, factors, tangent_here ? &tangent_ : nullptr, scales_,
+                          linear_mode_);
       Residual();
       if (last_residual_ <= options_.force_tolerance * last_scale_ || displacement_converged ||
           (iteration > 0 && last_residual_ <= kRoundoffFloorFactor * RoundoffResidual())) {
-        Commit(iteration);
+        Commit(t0 + h, iteration);
         return true;
       }
       if (iteration == options_.max_iterations) break;
@@ -203,16 +202,40 @@ class NewmarkRun {
         factored_step_ = h;
         if (!solver_.Factorize(tangent_)) break;
       }
-      correction_ = residual_;
-      solver_.Solve(&correction_);
+      solver_.Solve(&residual_);  // the correction, in place: the next Residual() writes anew
       ++summary_.newton_iterations;
-      displacement_converged = Correct();
+      displacement_converged = Correct(residual_);
       if (options_.newton == NewmarkOptions::Newton::kModifiedInitial && refactor) {
         // The rest-state evaluation above overwrote trial states: evaluate again next iteration.
         displacement_converged = false;
       }
     }
     return false;
+  }
+
+  // The vectors below are a building's dofs, often a few: plain loops, as an expression's set-up
+  // costs more than its arithmetic there. Each term is evaluated as written, in its order.
+
+  // u_trial = u + h v + (h^2 / 2) a.
+  void Predict(double h) {
+    const double half_h2 = 0.5 * h * h;
+    const double *u = u_.data(), *v = v_.data(), *a = a_.data();
+    double* u_trial = u_trial_.data();
+    for (Eigen::Index i = 0; i < u_.size(); ++i) u_trial[i] = u[i] + h * v[i] + half_h2 * a[i];
+  }
+
+  // v_trial and a_trial at u_trial by Newmark's relations.
+  void TrialRates(double h, double c0, double c1) {
+    const double beta = options_.beta, gamma = options_.gamma;
+    const double v_of_v = 1.0 - gamma / beta, v_of_a = h * (1.0 - gamma / (2.0 * beta));
+    const double a_of_v = 1.0 / (beta * h), a_of_a = 1.0 / (2.0 * beta) - 1.0;
+    const double *u = u_.data(), *v = v_.data(), *a = a_.data(), *u_trial = u_trial_.data();
+    double *v_trial = v_trial_.data(), *a_trial = a_trial_.data();
+    for (Eigen::Index i = 0; i < u_.size(); ++i) {
+      const double du = u_trial[i] - u[i];
+      v_trial[i] = c1 * du + v_of_v * v[i] + v_of_a * a[i];
+      a_trial[i] = c0 * du - a_of_v * v[i] - a_of_a * a[i];
+    }
   }
 
   // residual_ = load - M a - force at the trial state, with its largest magnitude and the step's
@@ -233,12 +256,12 @@ class NewmarkRun {
 
   // Adds the Newton correction to the trial displacement; true when it is below the
   // displacement tolerance relative to that displacement.
-  bool Correct() {
+  bool Correct(const VectorXd& du) {
     MaxMagnitude correction;
     double displacement = 0.0;  // a NaN in the correction reaches the displacement
     for (Eigen::Index i = 0; i < u_trial_.size(); ++i) {
-      correction.Add(correction_[i]);
-      displacement = std::max(displacement, std::abs(u_trial_[i] += correction_[i]));
+      correction.Add(du[i]);
+      displacement = std::max(displacement, std::abs(u_trial_[i] += du[i]));
     }
     return correction.value() <= options_.displacement_tolerance * std::max(displacement, 1e-300);
   }
@@ -282,10 +305,13 @@ class NewmarkRun {
     return true;
   }
 
-  void Commit(int iterations) {
+  void Commit(double t, int iterations) {
     summary_.max_iterations_in_a_step = std::max(summary_.max_iterations_in_a_step, iterations);
+    if (linear_mode_ == Structure::LinearLaws::kForceOnly) {
+      structure_.UpdateLinearLaws(committed_, t, u_trial_, v_trial_, trial_, responses_);
+    }
     structure_.DampingForce(v_trial_, &viscous_trial_);
-    const VectorXd& du = correction_ = u_trial_ - u_;
+    const VectorXd& du = increment_ = u_trial_ - u_;
     energies_.input += 0.5 * (load_ + load_trial_).dot(du);
     viscous_energy_ += 0.5 * (viscous_ + viscous_trial_).dot(du);
     std::swap(committed_, trial_);
@@ -296,8 +322,9 @@ class NewmarkRun {
     viscous_.swap(viscous_trial_);
     energies_.kinetic = 0.5 * v_.dot(structure_.mass().cwiseProduct(v_));
     energies_.elastic = structure_.StoredEnergy(committed_);
-    energies_.hysteretic = structure_.HystereticEnergy(committed_);
-    energies_.damping = viscous_energy_ + structure_.DashpotEnergy(committed_);
+    const double dashpots = structure_.DashpotEnergy(committed_);
+    energies_.hysteretic = structure_.DissipatedEnergy(committed_) - dashpots;
+    energies_.damping = viscous_energy_ + dashpots;
     if (!axial_.empty()) CommitAxialLoads();
   }
 
@@ -365,6 +392,8 @@ class NewmarkRun {
   structure::SparseMatrix constant_tangent_;  // StartTangent's terms, for constant_factors_
   std::optional<structure::TangentFactors> constant_factors_;
   TangentSolver solver_;
+  // Between Evaluates with LinearLaws::kForceOnly and Commit, the linear members' entries of
+  // trial_ and responses_ are stale: Commit writes them (UpdateLinearLaws).
   std::vector<LawState> committed_, trial_, rest_;
   std::vector<LawResponse> responses_;
   std::vector<double> member_forces_, law_forces_;
@@ -374,12 +403,17 @@ class NewmarkRun {
   // unscaled stored and dissipated energies and the scaled dissipated energy.
   const structure::AxialLoads& axial_ = structure_.axial_loads();
   std::vector<double> scales_;
+  // The iterations take the linear members' force alone, and Commit their laws' states (their
+  // force is the trial (u, v)'s, their tangent constant); with axial loads, Evaluate's scales
+  // ask for every law's update.
+  const Structure::LinearLaws linear_mode_ =
+      axial_.empty() ? Structure::LinearLaws::kForceOnly : Structure::LinearLaws::kUpdate;
   std::vector<double> axial_load_, axial_load_trial_, axial_scale_, axial_scale_trial_,
       axial_stored_, axial_dissipated_, axial_scaled_dissipated_;
   VectorXd committed_absolute_;
   double axial_work_ = 0.0;
   VectorXd u_, v_, a_, u_trial_, v_trial_, a_trial_, load_, load_trial_, force_, residual_,
-      correction_, viscous_, viscous_trial_, zero_, roundoff_, absolute_acceleration_;
+      increment_, viscous_, viscous_trial_, zero_, roundoff_, absolute_acceleration_;
   Energies energies_;
   double viscous_energy_ = 0.0;
   double factored_step_ = 0.0;  // step size of the current modified-Newton factorisation

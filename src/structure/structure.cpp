@@ -31,6 +31,24 @@ bool IsBetween(const Member& member, int* dof_i, int* dof_j) {
 
 }  // namespace
 
+// The laws of an assembly whose every law is a spring of constant stiffness or a dashpot (so its
+// tangent is constant: ConstantTangent holds it); nullopt for any other.
+std::optional<std::vector<Structure::LinearLaw>> Structure::LinearLawsOf(
+    const hysteresis::ParallelAssembly& assembly) {
+  std::vector<LinearLaw> laws;
+  for (const hysteresis::LawKernel& kernel : assembly.kernels()) {
+    if (!hysteresis::HasConstantTangent(kernel)) return std::nullopt;
+    if (const auto* spring = std::get_if<hysteresis::ElasticSpring>(&kernel)) {
+      laws.emplace_back(*spring);
+    } else if (const auto* damper = std::get_if<hysteresis::Dashpot>(&kernel)) {
+      laws.emplace_back(*damper);
+    } else {
+      return std::nullopt;
+    }
+  }
+  return laws;
+}
+
 int SlotOf(const SparseMatrix& matrix, int row, int col) {
   for (int k = matrix.outerIndexPtr()[col]; k < matrix.outerIndexPtr()[col + 1]; ++k) {
     if (matrix.innerIndexPtr()[k] == row) return k;
@@ -187,13 +205,19 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
     }
     member_terms_.push_back(packed);
     member_constants_.push_back(member.assembly.ConstantTangent());
-    Between spring{k};
+    Between spring;
+    spring.member = k;
     if (IsBetween(member, &spring.dof_i, &spring.dof_j)) {
       spring.jj = SlotOf(pattern_, spring.dof_j, spring.dof_j);
       if (spring.dof_i != kGround) {
         spring.ii = SlotOf(pattern_, spring.dof_i, spring.dof_i);
         spring.ij = SlotOf(pattern_, spring.dof_i, spring.dof_j);
         spring.ji = SlotOf(pattern_, spring.dof_j, spring.dof_i);
+      }
+      if (const auto laws = LinearLawsOf(member.assembly)) {
+        spring.linear.begin = static_cast<std::uint32_t>(linear_laws_.size());
+        linear_laws_.insert(linear_laws_.end(), laws->begin(), laws->end());
+        spring.linear.end = static_cast<std::uint32_t>(linear_laws_.size());
       }
       between_.push_back(spring);
     } else {
@@ -347,19 +371,26 @@ template <bool kScaled>
 
 // Flattened: the laws' dispatch (std::visit) and their inline updates belong in this loop.
 template <bool kScaled>
-[[gnu::flatten]] void Structure::EvaluateSprings(std::span<const LawState> committed, double t,
-                                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                                                 std::span<LawState> trial,
-                                                 std::span<hysteresis::LawResponse> responses,
-                                                 Eigen::VectorXd* force,
-                                                 std::span<double> member_forces,
-                                                 double damping_factor, double* values,
-                                                 const double* scales) const {
+[[gnu::flatten]] void Structure::EvaluateSprings(
+    std::span<const LawState> committed, double t, const Eigen::VectorXd& u,
+    const Eigen::VectorXd& v, std::span<LawState> trial,
+    std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
+    std::span<double> member_forces, double damping_factor, double* values, const double* scales,
+    bool linear_force_only) const {
   for (const Between& spring : between_) {
     const std::size_t k = spring.member;
     const bool grounded = spring.dof_i == kGround;
-    const hysteresis::LawInput in{u[spring.dof_j] - (grounded ? 0.0 : u[spring.dof_i]),
-                                  v[spring.dof_j] - (grounded ? 0.0 : v[spring.dof_i]), t};
+    const hysteresis::LawInput in = BetweenInput(spring, t, u, v);
+    if (linear_force_only && spring.linear.begin != spring.linear.end) {
+      double f = 0.0;  // summed as ParallelAssembly::Update sums its laws' forces
+      for (std::uint32_t l = spring.linear.begin; l < spring.linear.end; ++l) {
+        f += std::visit([&in](const auto& law) { return law.Force(in); }, linear_laws_[l]);
+      }
+      member_forces[k] = f;
+      (*force)[spring.dof_j] += f;
+      if (!grounded) (*force)[spring.dof_i] -= f;
+      continue;
+    }
     const std::size_t offset = law_offsets_[k], count = members_[k].assembly.state_size();
     hysteresis::AssemblyResponse total =
         members_[k].assembly.Update(committed.subspan(offset, count), in,
@@ -454,17 +485,41 @@ void Structure::Evaluate(std::span<const LawState> committed, double t, const Ei
                          const Eigen::VectorXd& v, std::span<LawState> trial,
                          std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                          std::span<double> member_forces, const TangentFactors& factors,
-                         SparseMatrix* tangent, std::span<const double> scales) const {
+                         SparseMatrix* tangent, std::span<const double> scales,
+                         LinearLaws linear) const {
   double* values = tangent ? tangent->valuePtr() : nullptr;
+  const bool linear_force_only = linear == LinearLaws::kForceOnly;
   if (scales.empty()) {
     EvaluateAll<false>(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
-                       values, nullptr);
+                       values, nullptr, linear_force_only);
   } else {
     if (scales.size() != slots()) {
       throw std::invalid_argument("Structure::Evaluate: one scale per slot, or none");
     }
+    if (linear_force_only) {
+      throw std::invalid_argument("Structure::Evaluate: scales with the linear laws' force only");
+    }
     EvaluateAll<true>(committed, t, u, v, trial, responses, force, member_forces, factors.damping,
-                      values, scales.data());
+                      values, scales.data(), false);
+  }
+}
+
+void Structure::UpdateLinearLaws(std::span<const LawState> committed, double t,
+                                 const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                 std::span<LawState> trial,
+                                 std::span<hysteresis::LawResponse> responses) const {
+  if (linear_laws_.empty()) return;  // none (an SDOF on its isolator): nothing to walk
+  for (const Between& spring : between_) {
+    if (spring.linear.begin == spring.linear.end) continue;
+    const hysteresis::LawInput in = BetweenInput(spring, t, u, v);
+    std::size_t offset = law_offsets_[spring.member];
+    for (std::uint32_t l = spring.linear.begin; l < spring.linear.end; ++l, ++offset) {
+      std::visit(
+          [&](const auto& law) {
+            law.Update(committed[offset], in, &trial[offset], &responses[offset]);
+          },
+          linear_laws_[l]);
+    }
   }
 }
 
@@ -473,10 +528,10 @@ void Structure::EvaluateAll(std::span<const LawState> committed, double t, const
                             const Eigen::VectorXd& v, std::span<LawState> trial,
                             std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                             std::span<double> member_forces, double damping_factor, double* values,
-                            const double* scales) const {
+                            const double* scales, bool linear_force_only) const {
   DampingForce(v, force);
   EvaluateSprings<kScaled>(committed, t, u, v, trial, responses, force, member_forces,
-                           damping_factor, values, scales);
+                           damping_factor, values, scales, linear_force_only);
   for (const std::size_t k : general_) {
     const Terms& terms = member_terms_[k];
     double d = 0.0, d_rate = 0.0;
@@ -567,10 +622,10 @@ double Structure::DashpotEnergy(std::span<const LawState> states) const {
   return energy;
 }
 
-double Structure::HystereticEnergy(std::span<const LawState> states) const {
+double Structure::DissipatedEnergy(std::span<const LawState> states) const {
   double dissipated = 0.0;
   for (const LawState& state : states) dissipated += state.dissipated;
-  return dissipated - DashpotEnergy(states);
+  return dissipated;
 }
 
 }  // namespace isolab::structure

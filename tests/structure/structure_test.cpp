@@ -9,7 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <random>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -175,5 +180,114 @@ TEST(Structure, SlotsAreTheMembersAndCoupledMembersThroughOneInterface) {
   EXPECT_LE((from_slots - f).cwiseAbs().maxCoeff(), 1e-12 * f.cwiseAbs().maxCoeff());
 }
 
+// Three dofs with linear members (a grounded spring and dashpot, as a linear isolator; a story of
+// three laws, one a trilinear spring with kh1 = kh2, so that their order of summation shows)
+// beside ones that are not (a yielding story, a trilinear brace), with viscous damping.
+Structure LinearAndNot() {
+  std::vector<Member> members;
+  members.push_back(Member::Between("linear isolator", kGround, 0,
+                                    ParallelAssembly({{"k", Law(LawType::kLinearSpring, {50.0})},
+                                                      {"c", Law(LawType::kDashpot, {0.4})}})));
+  members.push_back(Member::Between(
+      "three-law story", 0, 1,
+      ParallelAssembly({{"k", Law(LawType::kLinearSpring, {123.456789})},
+                        {"c", Law(LawType::kDashpot, {0.3183098861837907})},
+                        {"straight", Law(LawType::kTrilinearElastic, {0.0911, 0.0911, 5.0})}})));
+  members.push_back(
+      Member::Between("yielding story", 1, 2,
+                      ParallelAssembly({{"slider", Law(LawType::kBhm1, {8.0, 1.0, 20.0})},
+                                        {"c", Law(LawType::kDashpot, {0.1})}})));
+  members.push_back(Member::Between(
+      "trilinear brace", 0, 2,
+      ParallelAssembly({{"k", Law(LawType::kTrilinearElastic, {40.0, 4.0, 5.0})}})));
+  const std::vector<Eigen::Triplet<double>> c{{0, 0, 0.5}, {1, 1, 0.7}, {2, 2, 0.4}};
+  SparseMatrix damping(3, 3);
+  damping.setFromTriplets(c.begin(), c.end());
+  return Structure(Eigen::Vector3d(0.1, 0.2, 0.3), std::move(members), {}, damping);
+}
+
+bool SameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+bool SameState(const hysteresis::LawState& a, const hysteresis::LawState& b) {
+  return SameBits(a.u, b.u) && SameBits(a.v, b.v) && SameBits(a.force, b.force) &&
+         SameBits(a.slider, b.slider) && SameBits(a.accumulated_slip, b.accumulated_slip) &&
+         SameBits(a.t, b.t) && SameBits(a.temperature, b.temperature) && a.slip == b.slip &&
+         SameBits(a.dissipated, b.dissipated);
+}
+bool SameResponse(const hysteresis::LawResponse& a, const hysteresis::LawResponse& b) {
+  return SameBits(a.force, b.force) && SameBits(a.stiffness, b.stiffness) &&
+         SameBits(a.damping, b.damping);
+}
+bool SameValues(std::span<const double> a, std::span<const double> b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                            [](double x, double y) { return SameBits(x, y); });
+}
+
+// Evaluate with LinearLaws::kForceOnly gives the force, force columns and tangent that kUpdate
+// gives, to the bit, writes every other law's trial state and response, and leaves the linear
+// members' as they were; UpdateLinearLaws then writes those as kUpdate does, to the bit. From a
+// committed state that is not at rest.
+TEST(Structure, LinearLawsTakenForceOnlyAndUpdatedAtTheEndAreWhatEvaluateWrites) {
+  const Structure s = LinearAndNot();
+  const std::size_t laws = s.law_count();
+  ASSERT_EQ(laws, 8u);
+  const std::vector<bool> linear{true, true, true, true, true, false, false, false};
+  const TangentFactors factors{40.0, 0.7};
+  std::vector<hysteresis::LawState> committed(laws), scratch(laws);
+  std::vector<hysteresis::LawResponse> responses(laws);
+  std::vector<double> columns(s.force_columns());
+  Eigen::VectorXd f(3);
+  s.Evaluate(committed, 0.01, Eigen::Vector3d(12.0, 15.0, 36.0), Eigen::Vector3d(3.0, -1.0, 2.0),
+             scratch, responses, &f, columns, factors, nullptr);
+  committed = scratch;  // yielded and moving
+
+  hysteresis::LawState untouched;
+  untouched.u = untouched.v = untouched.force = untouched.dissipated = -7.25;
+  const hysteresis::LawResponse unanswered{-7.25, -7.25, -7.25};
+  // Trial states about the committed one: inside and beyond the straight trilinear's corner (5),
+  // many, so that a sum of the three-law story's forces in another order would show in one.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> spread(-10.0, 10.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::VectorXd u =
+        Eigen::Vector3d(12.0 + spread(random), 15.0 + spread(random), 36.0 + spread(random));
+    const Eigen::VectorXd v = Eigen::Vector3d(spread(random), spread(random), spread(random));
+    SCOPED_TRACE(::testing::Message() << "u = " << u.transpose() << ", v = " << v.transpose());
+    std::vector<hysteresis::LawState> full(laws), deferred(laws, untouched);
+    std::vector<hysteresis::LawResponse> full_responses(laws), deferred_responses(laws, unanswered);
+    std::vector<double> full_columns(s.force_columns()), deferred_columns(s.force_columns());
+    Eigen::VectorXd full_force(3), deferred_force(3);
+    SparseMatrix full_tangent = s.tangent_pattern(), deferred_tangent = s.tangent_pattern();
+    s.ConstantTangent(factors, &full_tangent);
+    s.ConstantTangent(factors, &deferred_tangent);
+    s.Evaluate(committed, 0.02, u, v, full, full_responses, &full_force, full_columns, factors,
+               &full_tangent);
+    s.Evaluate(committed, 0.02, u, v, deferred, deferred_responses, &deferred_force,
+               deferred_columns, factors, &deferred_tangent, {}, Structure::LinearLaws::kForceOnly);
+    EXPECT_TRUE(SameValues({full_force.data(), 3}, {deferred_force.data(), 3}));
+    EXPECT_TRUE(SameValues(full_columns, deferred_columns));
+    const auto nonzeros = static_cast<std::size_t>(full_tangent.nonZeros());
+    EXPECT_TRUE(
+        SameValues({full_tangent.valuePtr(), nonzeros}, {deferred_tangent.valuePtr(), nonzeros}));
+    for (std::size_t l = 0; l < laws; ++l) {
+      SCOPED_TRACE(::testing::Message() << "law " << l);
+      EXPECT_TRUE(SameState(deferred[l], linear[l] ? untouched : full[l]));
+      EXPECT_TRUE(SameResponse(deferred_responses[l], linear[l] ? unanswered : full_responses[l]));
+    }
+    s.UpdateLinearLaws(committed, 0.02, u, v, deferred, deferred_responses);
+    for (std::size_t l = 0; l < laws; ++l) {
+      SCOPED_TRACE(::testing::Message() << "law " << l << ", updated");
+      EXPECT_TRUE(SameState(deferred[l], full[l]));
+      EXPECT_TRUE(SameResponse(deferred_responses[l], full_responses[l]));
+    }
+  }
+  // Scales (a pendulum's axial load) apply to every law's response: refused with force only.
+  const std::vector<double> scales(s.slots(), 1.0);
+  EXPECT_THROW(s.Evaluate(committed, 0.02, Eigen::Vector3d(1.0, 2.0, 3.0), Eigen::Vector3d::Zero(),
+                          scratch, responses, &f, columns, factors, nullptr, scales,
+                          Structure::LinearLaws::kForceOnly),
+               std::invalid_argument);
+}
 }  // namespace
 }  // namespace isolab::structure

@@ -11,12 +11,15 @@ namespace isolab::hysteresis {
 struct Dashpot {
   double c = 0.0;  // damping coefficient (force*time/length), >= 0
 
+  // The force at `in` alone: it depends on the rate only, never on the state.
+  double Force(const LawInput& in) const { return c * in.v; }
+
   void Update(const LawState& committed, const LawInput& in, LawState* trial,
               LawResponse* response) const {
     trial->u = in.u;
     trial->v = in.v;
     trial->slider = 0.0;
-    trial->force = response->force = c * in.v;
+    trial->force = response->force = Force(in);
     trial->dissipated =
         committed.dissipated + 0.5 * (committed.force + trial->force) * (in.u - committed.u);
     response->stiffness = 0.0;

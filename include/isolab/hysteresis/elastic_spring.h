@@ -10,12 +10,15 @@ namespace isolab::hysteresis {
 struct ElasticSpring {
   TrilinearSpring spring;
 
+  // The force at `in` alone: it depends on the deformation only, never on the state.
+  double Force(const LawInput& in) const { return spring.Force(in.u); }
+
   void Update(const LawState& committed, const LawInput& in, LawState* trial,
               LawResponse* response) const {
     *trial = committed;
     trial->u = in.u;
     trial->v = in.v;
-    trial->force = response->force = spring.Force(in.u);
+    trial->force = response->force = Force(in);
     response->stiffness = spring.Stiffness(in.u);
     response->damping = 0.0;
   }

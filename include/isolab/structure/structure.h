@@ -17,7 +17,8 @@
 //
 // The integrator sees only Evaluate(): resisting force and its tangent at a trial state (MFEM's
 // seam between problem and integrator), with ConstantTangent() for the tangent's terms that never
-// change within a step size; the structure never sees the integrator.
+// change within a step size, and UpdateLinearLaws() for the laws an iteration's Evaluate may leave
+// to the end of the step; the structure never sees the integrator.
 //
 // Law states live in one LawState array: a member's components one each, a coupled member's two
 // each (x then y: PlanLawState's halves), members first. Force columns (a response row's
@@ -27,11 +28,15 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "isolab/hysteresis/dashpot.h"
+#include "isolab/hysteresis/elastic_spring.h"
 #include "isolab/hysteresis/parallel_assembly.h"
 #include "isolab/hysteresis/plan_assembly.h"
 #include "isolab/structure/axial_load.h"
@@ -185,6 +190,14 @@ class Structure {
   // from a copy.
   void ConstantTangent(const TangentFactors& factors, SparseMatrix* tangent) const;
 
+  // What Evaluate does with the linear members between two dofs (their laws linear springs and
+  // dashpots alone: a building's elastic stories). kUpdate: their laws' trial states and
+  // responses are written as every other law's. kForceOnly: only their force is, their states and
+  // responses are left as they were, for UpdateLinearLaws once the trial is final. Their force
+  // depends on the trial (u, v) alone and their tangent is constant, so an integrator's Newton
+  // iterations need nothing else of them.
+  enum class LinearLaws { kUpdate, kForceOnly };
+
   // Updates every law at trial (u, v) at time t from `committed`, writes `trial` states and
   // `responses` (law_count() each; a coupled component's x and y force with the diagonal of its
   // tangent and damping), the resisting force (members plus C v) into `force`, each force column
@@ -192,12 +205,19 @@ class Structure {
   // effective tangent with `factors` that depend on the state to its values, which must hold
   // ConstantTangent(factors). `scales`, when not empty, has one factor per slot (slots()): each
   // slot's force, tangent and law responses are its laws' times that factor (the laws' states stay
-  // those at their own W). Allocates nothing.
+  // those at their own W); kForceOnly takes no scales. Allocates nothing.
   void Evaluate(std::span<const hysteresis::LawState> committed, double t, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& v, std::span<hysteresis::LawState> trial,
                 std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                 std::span<double> member_forces, const TangentFactors& factors,
-                SparseMatrix* tangent, std::span<const double> scales = {}) const;
+                SparseMatrix* tangent, std::span<const double> scales = {},
+                LinearLaws linear = LinearLaws::kUpdate) const;
+  // The trial states and responses at (u, v) at time t from `committed` of the laws that Evaluate
+  // leaves with kForceOnly: what it writes for them with kUpdate, to the bit.
+  void UpdateLinearLaws(std::span<const hysteresis::LawState> committed, double t,
+                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                        std::span<hysteresis::LawState> trial,
+                        std::span<hysteresis::LawResponse> responses) const;
 
   // A member's deformation at dofs u (inline: the results' rows and the peaks take it for every
   // story at every step).
@@ -208,11 +228,11 @@ class Structure {
     return d;
   }
 
-  // Recoverable energy of all laws, and dissipated energy split into viscous (dashpots) and
-  // hysteretic (sliders).
+  // Recoverable energy of all laws; the energy all laws dissipated, and the dashpots' part of it
+  // (the rest is hysteretic: the sliders').
   double StoredEnergy(std::span<const hysteresis::LawState> states) const;
+  double DissipatedEnergy(std::span<const hysteresis::LawState> states) const;
   double DashpotEnergy(std::span<const hysteresis::LawState> states) const;
-  double HystereticEnergy(std::span<const hysteresis::LawState> states) const;
 
  private:
   Vec2 CoupledDeformation(std::size_t coupled, std::span<const double> u) const;
@@ -226,11 +246,26 @@ class Structure {
     std::array<double, kMaxTerms> coefficients{};
     std::array<int, kMaxTerms * kMaxTerms> slots{};
   };
+  // A linear member's laws, linear_laws_[begin, end); empty for any other.
+  struct LinearRange {
+    std::uint32_t begin = 0, end = 0;
+  };
   struct Between {
     std::size_t member = 0;
     int dof_i = kGround, dof_j = 0;
     int ii = -1, jj = -1, ij = -1, ji = -1;
+    LinearRange linear;  // empty unless the member is linear
   };
+  // A law of a linear member: a spring of constant stiffness, or a dashpot.
+  using LinearLaw = std::variant<hysteresis::ElasticSpring, hysteresis::Dashpot>;
+  static std::optional<std::vector<LinearLaw>> LinearLawsOf(
+      const hysteresis::ParallelAssembly& assembly);
+  hysteresis::LawInput BetweenInput(const Between& spring, double t, const Eigen::VectorXd& u,
+                                    const Eigen::VectorXd& v) const {
+    const bool grounded = spring.dof_i == kGround;
+    return {u[spring.dof_j] - (grounded ? 0.0 : u[spring.dof_i]),
+            v[spring.dof_j] - (grounded ? 0.0 : v[spring.dof_i]), t};
+  }
   // A coupled member's terms, packed as a member's are. One under a rigid floor (its columns
   // (1, 0), (0, 1) and (-arm.y, arm.x): UnderFloor) keeps its arm, for a tangent block written in
   // closed form (the multiplications by the map's zeros and ones left out).
@@ -254,14 +289,14 @@ class Structure {
                    std::span<hysteresis::LawState> trial,
                    std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                    std::span<double> member_forces, double damping_factor, double* values,
-                   const double* scales) const;
+                   const double* scales, bool linear_force_only) const;
   template <bool kScaled>
   void EvaluateSprings(std::span<const hysteresis::LawState> committed, double t,
                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                        std::span<hysteresis::LawState> trial,
                        std::span<hysteresis::LawResponse> responses, Eigen::VectorXd* force,
                        std::span<double> member_forces, double damping_factor, double* values,
-                       const double* scales) const;
+                       const double* scales, bool linear_force_only) const;
   template <bool kScaled>
   void EvaluateCoupled(std::span<const hysteresis::LawState> committed, double t,
                        const Eigen::VectorXd& u, const Eigen::VectorXd& v,
@@ -295,8 +330,9 @@ class Structure {
   SparseMatrix pattern_;
   ConstantTerms constant_terms_;
   std::vector<Terms> member_terms_;
-  std::vector<Between> between_;      // the members that are springs between two dofs
-  std::vector<std::size_t> general_;  // the others
+  std::vector<Between> between_;        // the members that are springs between two dofs
+  std::vector<LinearLaw> linear_laws_;  // the linear members' laws, in the order of between_
+  std::vector<std::size_t> general_;    // the others
   std::vector<CoupledTerms> coupled_terms_;
   // Per member and coupled member: its laws' stiffness and damping if they do not depend on the
   // state.

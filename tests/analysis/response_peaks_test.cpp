@@ -1,0 +1,138 @@
+// The peak tracker's building-wide floor acceleration and first-story shear, which it takes from
+// the floors' and stories' own peaks once the rows are seen, against their definition written out
+// here: every floor (every story) of every row considered in turn, the first to exceed the largest
+// kept. Rows of values from a few levels, so that equal peaks at several floors, in one row and
+// in later rows, are common; and rows made to tie.
+#include "isolab/analysis/response_peaks.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "isolab/analysis/problem.h"
+#include "isolab/model/model_file.h"
+
+namespace isolab::analysis {
+namespace {
+
+Problem FiveStories() {
+  const model::ModelFile model = model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
+                                                      "/models/buildings/five_story_table9.yaml");
+  return Prepare(model, {});
+}
+
+// Rows of a problem's structure at rest but for the absolute accelerations and connection forces
+// given (the spans must outlive the row).
+class Rows {
+ public:
+  explicit Rows(const structure::Structure& structure)
+      : structure_(structure),
+        zeros_(std::max<std::size_t>(structure.dofs(),
+                                     std::max(structure.law_count(), structure.force_columns())),
+               0.0) {}
+
+  integrators::ResponseRow Row(int step, double t, std::span<const double> acceleration,
+                               std::span<const double> forces = {}) const {
+    integrators::ResponseRow row;
+    row.step = step;
+    row.time = t;
+    row.displacement = row.velocity = row.acceleration = Zeros(structure_.dofs());
+    row.absolute_acceleration = acceleration;
+    row.connection_force = forces.empty() ? Zeros(structure_.force_columns()) : forces;
+    row.law_force = Zeros(structure_.law_count());
+    return row;
+  }
+
+ private:
+  std::span<const double> Zeros(std::size_t count) const { return {zeros_.data(), count}; }
+
+  const structure::Structure& structure_;
+  std::vector<double> zeros_;
+};
+
+// The definition: the first (row, floor) in order whose |value| exceeds the largest before it.
+void ConsiderInTurn(Peak* peak, double value, double time, int index) {
+  if (std::abs(value) > peak->value) *peak = {std::abs(value), time, index};
+}
+
+TEST(PeakTracker, FloorAccelerationAndFirstStoryShearAreTheFirstLargestOfEveryRowInTurn) {
+  const Problem problem = FiveStories();
+  const structure::Layout& layout = problem.layout;
+  const structure::Structure& structure = problem.structure;
+  ASSERT_EQ(layout.stories.size(), 5u);
+  const Rows rows(structure);
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    std::mt19937 random(seed);
+    std::uniform_int_distribution<int> level(-3, 3);
+    PeakTracker tracker(problem);
+    Peak floor, first_story;
+    std::vector<double> acceleration(structure.dofs()), forces(structure.force_columns());
+    for (int step = 0; step <= 200; ++step) {
+      const double t = 0.01 * step;
+      for (double& a : acceleration) a = level(random);
+      for (double& f : forces) f = 10.0 * level(random);
+      tracker.Observe(rows.Row(step, t, acceleration, forces));
+      for (std::size_t l = 1; l < layout.levels.size(); ++l) {  // the floors: the base is not one
+        ConsiderInTurn(&floor, acceleration[layout.levels[l].dofs[structure::kX]], t,
+                       static_cast<int>(l));
+      }
+      ConsiderInTurn(&first_story, forces[layout.stories[0].members[structure::kX]], t, -1);
+    }
+    const ResponsePeaks peaks = tracker.Peaks();
+    EXPECT_EQ(peaks.floor_acceleration.value, floor.value);
+    EXPECT_EQ(peaks.floor_acceleration.time, floor.time);
+    EXPECT_EQ(peaks.floor_acceleration.index, floor.index);
+    EXPECT_EQ(peaks.first_story_shear.value, first_story.value);
+    EXPECT_EQ(peaks.first_story_shear.time, first_story.time);
+    EXPECT_EQ(peaks.first_story_shear.index, -1);
+  }
+}
+
+// The floor acceleration of rows, 0.01 s apart from 0.01 s, whose absolute accelerations are zero
+// but at the floors given: (level, value) pairs.
+Peak FloorAccelerationOf(const Problem& problem,
+                         const std::vector<std::vector<std::pair<int, double>>>& values) {
+  const Rows rows(problem.structure);
+  PeakTracker tracker(problem);
+  for (std::size_t r = 0; r < values.size(); ++r) {
+    std::vector<double> acceleration(problem.structure.dofs(), 0.0);
+    for (const auto& [level, value] : values[r]) {
+      acceleration[problem.layout.levels[level].dofs[structure::kX]] = value;
+    }
+    tracker.Observe(rows.Row(static_cast<int>(r) + 1, 0.01 * (r + 1.0), acceleration));
+  }
+  return tracker.Peaks().floor_acceleration;
+}
+
+// Equal peaks: at two floors in one row the lower floor's; at a floor in a later row, the earlier
+// row's, whether the later one is a lower floor or a higher one.
+TEST(PeakTracker, OfEqualFloorAccelerationsTheEarliestRowsLowestFloorIsThePeak) {
+  const Problem problem = FiveStories();
+  const Peak same_row = FloorAccelerationOf(problem, {{{2, 3.0}, {4, -3.0}}, {{1, 3.0}}});
+  EXPECT_EQ(same_row.value, 3.0);
+  EXPECT_EQ(same_row.time, 0.01);
+  EXPECT_EQ(same_row.index, 2);
+  const Peak lower_later = FloorAccelerationOf(problem, {{{5, 5.0}}, {{3, -5.0}}, {{4, 5.0}}});
+  EXPECT_EQ(lower_later.value, 5.0);
+  EXPECT_EQ(lower_later.time, 0.01);
+  EXPECT_EQ(lower_later.index, 5);
+}
+
+// At rest throughout, neither has a peak: zero, at time 0, at no floor.
+TEST(PeakTracker, AtRestTheFloorAccelerationIsAtNoFloor) {
+  const Problem problem = FiveStories();
+  const Peak at_rest = FloorAccelerationOf(problem, {{}, {}, {}});
+  EXPECT_EQ(at_rest.value, 0.0);
+  EXPECT_EQ(at_rest.time, 0.0);
+  EXPECT_EQ(at_rest.index, -1);
+}
+
+}  // namespace
+}  // namespace isolab::analysis
