@@ -1,6 +1,7 @@
 #include "isolab/analysis/response_peaks.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <variant>
@@ -74,7 +75,8 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   }
   const bool base = layout.isolated() && !layout.stories.empty();
   for (std::size_t l = base ? 1 : 0; l < layout.levels.size(); ++l) {
-    floors_.push_back(static_cast<int>(l));
+    const std::array<int, 3>& dofs = layout.levels[l].dofs;
+    floors_.push_back({static_cast<int>(l), dofs[structure::kX], dofs[structure::kY]});
     peaks_.floor_accelerations.push_back({0.0, 0.0, static_cast<int>(l)});
   }
   // Every step may be a row (Newmark): the window holds at most this many.
@@ -96,6 +98,9 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
   peaks_.regimes_at_peak.assign(isolators, std::nullopt);
   at_peak_.assign(isolators, 0);
   const structure::Structure& s = problem.structure;
+  for (const structure::StoryLayout& story : layout.stories) {
+    story_terms_.push_back(DirectStoryTerms(s, story));
+  }
   for (std::size_t i = 0; i < isolators; ++i) {
     const structure::IsolatorLayout& isolator = layout.isolators[i];
     const auto slot = static_cast<std::size_t>(isolator.slot);
@@ -112,6 +117,34 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
       }
     });
   }
+}
+
+// A story's terms read directly where its member is a spring along x between two dofs or from
+// the ground: then |u[plus] - u[minus]| is |MemberDeformation|, to the bit (its terms are +1 and
+// -1 times the two displacements, added in either order), and its shear the member's force.
+PeakTracker::StoryTerms PeakTracker::DirectStoryTerms(const structure::Structure& s,
+                                                      const structure::StoryLayout& story) {
+  StoryTerms terms;
+  const int member = story.members[structure::kX];
+  if (member < 0 || story.members[structure::kY] >= 0) return terms;
+  const structure::Structure::Influence influence =
+      s.SlotInfluence(static_cast<std::size_t>(member));
+  int plus = -1, minus = -1;
+  for (int a = 0; a < influence.count; ++a) {
+    const Vec2 column = influence.columns[a];
+    if (column.x == 1.0 && plus < 0) {
+      plus = influence.dofs[a];
+    } else if (column.x == -1.0 && minus < 0) {
+      minus = influence.dofs[a];
+    } else {
+      return terms;
+    }
+  }
+  if (plus < 0) return terms;
+  terms.column = static_cast<int>(s.slot_force_column(static_cast<std::size_t>(member)));
+  terms.plus = plus;
+  terms.minus = minus;
+  return terms;
 }
 
 // Inlined into Observe's loop over the stories, where a call per story cost as much as the
@@ -189,11 +222,19 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   const int roof = static_cast<int>(layout.levels.size()) - 1;
   Consider(&peaks.roof_absolute_acceleration, Magnitude(acceleration(layout.roof())), t, roof);
   for (std::size_t f = 0; f < floors_.size(); ++f) {
-    const int level = floors_[f];
-    Consider(&peaks.floor_accelerations[f], Magnitude(acceleration(layout.levels[level])), t,
-             level);
+    const Floor& floor = floors_[f];
+    const double y = floor.y == kGround ? 0.0 : row.absolute_acceleration[floor.y];
+    Consider(&peaks.floor_accelerations[f], Magnitude({row.absolute_acceleration[floor.x], y}), t,
+             floor.level);
   }
-  for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+  for (std::size_t s = 0; s < story_terms_.size(); ++s) {
+    if (const StoryTerms& story = story_terms_[s]; story.column >= 0) {
+      const double* u = row.displacement.data();
+      Consider(&peaks.story_shears[s], row.connection_force[story.column], t, static_cast<int>(s));
+      Consider(&peaks.story_drifts[s], u[story.plus] - (story.minus < 0 ? 0.0 : u[story.minus]), t,
+               static_cast<int>(s));
+      continue;
+    }
     Consider(&peaks.story_shears[s], Magnitude(StoryShear(s, row)), t, static_cast<int>(s));
     Consider(&peaks.story_drifts[s], Magnitude(StoryDrift(s, row)), t, static_cast<int>(s));
   }

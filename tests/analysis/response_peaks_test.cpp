@@ -1,8 +1,10 @@
 // The peak tracker's building-wide floor acceleration and first-story shear, which it takes from
-// the floors' and stories' own peaks once the rows are seen, against their definition written out
-// here: every floor (every story) of every row considered in turn, the first to exceed the largest
-// kept. Rows of values from a few levels, so that equal peaks at several floors, in one row and
-// in later rows, are common; and rows made to tie.
+// the floors' and stories' own peaks once the rows are seen, and its stories' drifts and shears,
+// which it reads off the displacements and force columns directly, against their definition
+// written out here: each value of every row considered in turn, the first to exceed the largest
+// kept, the drifts from the structure's MemberDeformation. Rows of values from a few levels, so
+// that equal peaks at several floors, in one row and in later rows, are common; and rows made to
+// tie.
 #include "isolab/analysis/response_peaks.h"
 
 #include <gtest/gtest.h>
@@ -38,11 +40,13 @@ class Rows {
                0.0) {}
 
   integrators::ResponseRow Row(int step, double t, std::span<const double> acceleration,
-                               std::span<const double> forces = {}) const {
+                               std::span<const double> forces = {},
+                               std::span<const double> displacement = {}) const {
     integrators::ResponseRow row;
     row.step = step;
     row.time = t;
-    row.displacement = row.velocity = row.acceleration = Zeros(structure_.dofs());
+    row.velocity = row.acceleration = Zeros(structure_.dofs());
+    row.displacement = displacement.empty() ? Zeros(structure_.dofs()) : displacement;
     row.absolute_acceleration = acceleration;
     row.connection_force = forces.empty() ? Zeros(structure_.force_columns()) : forces;
     row.law_force = Zeros(structure_.law_count());
@@ -61,7 +65,7 @@ void ConsiderInTurn(Peak* peak, double value, double time, int index) {
   if (std::abs(value) > peak->value) *peak = {std::abs(value), time, index};
 }
 
-TEST(PeakTracker, FloorAccelerationAndFirstStoryShearAreTheFirstLargestOfEveryRowInTurn) {
+TEST(PeakTracker, FloorStoryAndFirstStoryPeaksAreTheFirstLargestOfEveryRowInTurn) {
   const Problem problem = FiveStories();
   const structure::Layout& layout = problem.layout;
   const structure::Structure& structure = problem.structure;
@@ -73,12 +77,21 @@ TEST(PeakTracker, FloorAccelerationAndFirstStoryShearAreTheFirstLargestOfEveryRo
     std::uniform_int_distribution<int> level(-3, 3);
     PeakTracker tracker(problem);
     Peak floor, first_story;
-    std::vector<double> acceleration(structure.dofs()), forces(structure.force_columns());
+    std::vector<Peak> drifts(layout.stories.size()), shears(layout.stories.size());
+    std::vector<double> acceleration(structure.dofs()), forces(structure.force_columns()),
+        displacement(structure.dofs());
     for (int step = 0; step <= 200; ++step) {
       const double t = 0.01 * step;
       for (double& a : acceleration) a = level(random);
       for (double& f : forces) f = 10.0 * level(random);
-      tracker.Observe(rows.Row(step, t, acceleration, forces));
+      for (double& u : displacement) u = 0.1 * level(random);
+      tracker.Observe(rows.Row(step, t, acceleration, forces, displacement));
+      for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+        const int member = layout.stories[s].members[structure::kX];
+        ConsiderInTurn(&drifts[s], structure.MemberDeformation(member, displacement), t,
+                       static_cast<int>(s));
+        ConsiderInTurn(&shears[s], forces[member], t, static_cast<int>(s));
+      }
       for (std::size_t l = 1; l < layout.levels.size(); ++l) {  // the floors: the base is not one
         ConsiderInTurn(&floor, acceleration[layout.levels[l].dofs[structure::kX]], t,
                        static_cast<int>(l));
@@ -92,6 +105,13 @@ TEST(PeakTracker, FloorAccelerationAndFirstStoryShearAreTheFirstLargestOfEveryRo
     EXPECT_EQ(peaks.first_story_shear.value, first_story.value);
     EXPECT_EQ(peaks.first_story_shear.time, first_story.time);
     EXPECT_EQ(peaks.first_story_shear.index, -1);
+    for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+      SCOPED_TRACE(::testing::Message() << "story " << s);
+      EXPECT_EQ(peaks.story_drifts[s].value, drifts[s].value);
+      EXPECT_EQ(peaks.story_drifts[s].time, drifts[s].time);
+      EXPECT_EQ(peaks.story_shears[s].value, shears[s].value);
+      EXPECT_EQ(peaks.story_shears[s].time, shears[s].time);
+    }
   }
 }
 

@@ -104,7 +104,20 @@ class PeakTracker final : public integrators::ResponseObserver {
 
   const Problem& problem_;
   ResponsePeaks peaks_;
-  std::vector<int> floors_;  // the levels whose acceleration is a floor's
+  // The levels whose acceleration is a floor's, with their dofs along x and y.
+  struct Floor {
+    int level = 0, x = 0, y = 0;
+  };
+  std::vector<Floor> floors_;
+  // Per story: where its member is a spring along x between two dofs (or from the ground), its
+  // force column and the dofs its drift u[plus] - u[minus] takes (minus < 0: the ground), read
+  // directly; column < 0 for any other story, which StoryDrift and StoryShear take.
+  struct StoryTerms {
+    int column = -1, plus = -1, minus = -1;
+  };
+  std::vector<StoryTerms> story_terms_;
+  static StoryTerms DirectStoryTerms(const structure::Structure& structure,
+                                     const structure::StoryLayout& story);
   // Per isolator, a ring of (time, u_x, u_y) over the last residual window.
   struct Sample {
     double t, x, y;
