@@ -122,28 +122,14 @@ PeakTracker::PeakTracker(const Problem& problem) : problem_(problem) {
 // A story's terms read directly where its member is a spring along x between two dofs or from
 // the ground: then |u[plus] - u[minus]| is |MemberDeformation|, to the bit (its terms are +1 and
 // -1 times the two displacements, added in either order), and its shear the member's force.
-PeakTracker::StoryTerms PeakTracker::DirectStoryTerms(const structure::Structure& s,
+PeakTracker::StoryTerms PeakTracker::DirectStoryTerms(const structure::Structure& structure,
                                                       const structure::StoryLayout& story) {
   StoryTerms terms;
   const int member = story.members[structure::kX];
   if (member < 0 || story.members[structure::kY] >= 0) return terms;
-  const structure::Structure::Influence influence =
-      s.SlotInfluence(static_cast<std::size_t>(member));
-  int plus = -1, minus = -1;
-  for (int a = 0; a < influence.count; ++a) {
-    const Vec2 column = influence.columns[a];
-    if (column.x == 1.0 && plus < 0) {
-      plus = influence.dofs[a];
-    } else if (column.x == -1.0 && minus < 0) {
-      minus = influence.dofs[a];
-    } else {
-      return terms;
-    }
-  }
-  if (plus < 0) return terms;
-  terms.column = static_cast<int>(s.slot_force_column(static_cast<std::size_t>(member)));
-  terms.plus = plus;
-  terms.minus = minus;
+  const auto m = static_cast<std::size_t>(member);
+  if (!structure.members()[m].IsBetween(&terms.minus, &terms.plus)) return terms;
+  terms.column = static_cast<int>(structure.slot_force_column(m));
   return terms;
 }
 
@@ -215,24 +201,24 @@ void PeakTracker::Observe(const integrators::ResponseRow& row) {
   }
   Consider(&peaks.base_shear, Magnitude(base_shear), t);
 
-  const auto acceleration = [&](const structure::Level& level) {
-    const int x = level.dofs[structure::kX], y = level.dofs[structure::kY];
-    return Vec2{row.absolute_acceleration[x], y == kGround ? 0.0 : row.absolute_acceleration[y]};
+  const auto acceleration = [&](int x, int y) {
+    return Magnitude(
+        {row.absolute_acceleration[x], y == kGround ? 0.0 : row.absolute_acceleration[y]});
   };
   const int roof = static_cast<int>(layout.levels.size()) - 1;
-  Consider(&peaks.roof_absolute_acceleration, Magnitude(acceleration(layout.roof())), t, roof);
+  const std::array<int, 3>& roof_dofs = layout.roof().dofs;
+  Consider(&peaks.roof_absolute_acceleration,
+           acceleration(roof_dofs[structure::kX], roof_dofs[structure::kY]), t, roof);
   for (std::size_t f = 0; f < floors_.size(); ++f) {
     const Floor& floor = floors_[f];
-    const double y = floor.y == kGround ? 0.0 : row.absolute_acceleration[floor.y];
-    Consider(&peaks.floor_accelerations[f], Magnitude({row.absolute_acceleration[floor.x], y}), t,
-             floor.level);
+    Consider(&peaks.floor_accelerations[f], acceleration(floor.x, floor.y), t, floor.level);
   }
   for (std::size_t s = 0; s < story_terms_.size(); ++s) {
-    if (const StoryTerms& story = story_terms_[s]; story.column >= 0) {
+    if (const StoryTerms& terms = story_terms_[s]; terms.column >= 0) {
       const double* u = row.displacement.data();
-      Consider(&peaks.story_shears[s], row.connection_force[story.column], t, static_cast<int>(s));
-      Consider(&peaks.story_drifts[s], u[story.plus] - (story.minus < 0 ? 0.0 : u[story.minus]), t,
-               static_cast<int>(s));
+      const double drift = u[terms.plus] - (terms.minus == kGround ? 0.0 : u[terms.minus]);
+      Consider(&peaks.story_shears[s], row.connection_force[terms.column], t, static_cast<int>(s));
+      Consider(&peaks.story_drifts[s], drift, t, static_cast<int>(s));
       continue;
     }
     Consider(&peaks.story_shears[s], Magnitude(StoryShear(s, row)), t, static_cast<int>(s));

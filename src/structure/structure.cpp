@@ -9,26 +9,6 @@ namespace {
 using hysteresis::LawState;
 using hysteresis::Mat2;
 
-// Whether a member is a spring between two dofs (d = u_j - u_i) or from the ground (d = u_j).
-bool IsBetween(const Member& member, int* dof_i, int* dof_j) {
-  int plus = kGround, minus = kGround, count = 0;
-  for (int a = 0; a < kMaxTerms; ++a) {
-    if (member.dofs[a] == kGround) continue;
-    ++count;
-    if (member.coefficients[a] == 1.0 && plus == kGround) {
-      plus = member.dofs[a];
-    } else if (member.coefficients[a] == -1.0 && minus == kGround) {
-      minus = member.dofs[a];
-    } else {
-      return false;
-    }
-  }
-  if (plus == kGround || count != (minus == kGround ? 1 : 2)) return false;
-  *dof_i = minus;
-  *dof_j = plus;
-  return true;
-}
-
 }  // namespace
 
 // The laws of an assembly whose every law is a spring of constant stiffness or a dashpot (so its
@@ -54,6 +34,25 @@ int SlotOf(const SparseMatrix& matrix, int row, int col) {
     if (matrix.innerIndexPtr()[k] == row) return k;
   }
   throw std::logic_error("sparse pattern lacks an entry it was built with");
+}
+
+bool Member::IsBetween(int* dof_i, int* dof_j) const {
+  int plus = kGround, minus = kGround, count = 0;
+  for (int a = 0; a < kMaxTerms; ++a) {
+    if (dofs[a] == kGround) continue;
+    ++count;
+    if (coefficients[a] == 1.0 && plus == kGround) {
+      plus = dofs[a];
+    } else if (coefficients[a] == -1.0 && minus == kGround) {
+      minus = dofs[a];
+    } else {
+      return false;
+    }
+  }
+  if (plus == kGround || count != (minus == kGround ? 1 : 2)) return false;
+  *dof_i = minus;
+  *dof_j = plus;
+  return true;
 }
 
 Member Member::Between(std::string name, int dof_i, int dof_j,
@@ -207,7 +206,7 @@ Structure::Structure(Eigen::VectorXd mass, std::vector<Member> members,
     member_constants_.push_back(member.assembly.ConstantTangent());
     Between spring;
     spring.member = k;
-    if (IsBetween(member, &spring.dof_i, &spring.dof_j)) {
+    if (member.IsBetween(&spring.dof_i, &spring.dof_j)) {
       spring.jj = SlotOf(pattern_, spring.dof_j, spring.dof_j);
       if (spring.dof_i != kGround) {
         spring.ii = SlotOf(pattern_, spring.dof_i, spring.dof_i);

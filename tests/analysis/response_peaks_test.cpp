@@ -23,10 +23,14 @@
 namespace isolab::analysis {
 namespace {
 
-Problem FiveStories() {
+// The bundled five-story building, on its isolators or (its first story then a spring from the
+// ground) fixed at its base.
+Problem FiveStories(bool fixed_base = false) {
   const model::ModelFile model = model::LoadModelFile(std::string(ISOLAB_SOURCE_DIR) +
                                                       "/models/buildings/five_story_table9.yaml");
-  return Prepare(model, {});
+  RunOverrides overrides;
+  overrides.fixed_base = fixed_base;
+  return Prepare(model, overrides);
 }
 
 // Rows of a problem's structure at rest but for the absolute accelerations and connection forces
@@ -66,51 +70,57 @@ void ConsiderInTurn(Peak* peak, double value, double time, int index) {
 }
 
 TEST(PeakTracker, FloorStoryAndFirstStoryPeaksAreTheFirstLargestOfEveryRowInTurn) {
-  const Problem problem = FiveStories();
-  const structure::Layout& layout = problem.layout;
-  const structure::Structure& structure = problem.structure;
-  ASSERT_EQ(layout.stories.size(), 5u);
-  const Rows rows(structure);
-  for (const unsigned seed : {1u, 2u, 3u}) {
-    SCOPED_TRACE(::testing::Message() << "seed " << seed);
-    std::mt19937 random(seed);
-    std::uniform_int_distribution<int> level(-3, 3);
-    PeakTracker tracker(problem);
-    Peak floor, first_story;
-    std::vector<Peak> drifts(layout.stories.size()), shears(layout.stories.size());
-    std::vector<double> acceleration(structure.dofs()), forces(structure.force_columns()),
-        displacement(structure.dofs());
-    for (int step = 0; step <= 200; ++step) {
-      const double t = 0.01 * step;
-      for (double& a : acceleration) a = level(random);
-      for (double& f : forces) f = 10.0 * level(random);
-      for (double& u : displacement) u = 0.1 * level(random);
-      tracker.Observe(rows.Row(step, t, acceleration, forces, displacement));
+  for (const bool fixed_base : {false, true}) {
+    const Problem problem = FiveStories(fixed_base);
+    const structure::Layout& layout = problem.layout;
+    const structure::Structure& structure = problem.structure;
+    ASSERT_EQ(layout.stories.size(), 5u);
+    // The floors: every level but an isolated building's base.
+    const std::size_t first_floor = layout.isolated() ? 1 : 0;
+    ASSERT_EQ(layout.levels.size() - first_floor, 5u);
+    const Rows rows(structure);
+    for (const unsigned seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE(::testing::Message()
+                   << (fixed_base ? "fixed base" : "isolated") << ", seed " << seed);
+      std::mt19937 random(seed);
+      std::uniform_int_distribution<int> level(-3, 3);
+      PeakTracker tracker(problem);
+      Peak floor, first_story;
+      std::vector<Peak> drifts(layout.stories.size()), shears(layout.stories.size());
+      std::vector<double> acceleration(structure.dofs()), forces(structure.force_columns()),
+          displacement(structure.dofs());
+      for (int step = 0; step <= 200; ++step) {
+        const double t = 0.01 * step;
+        for (double& a : acceleration) a = level(random);
+        for (double& f : forces) f = 10.0 * level(random);
+        for (double& u : displacement) u = 0.1 * level(random);
+        tracker.Observe(rows.Row(step, t, acceleration, forces, displacement));
+        for (std::size_t s = 0; s < layout.stories.size(); ++s) {
+          const int member = layout.stories[s].members[structure::kX];
+          ConsiderInTurn(&drifts[s], structure.MemberDeformation(member, displacement), t,
+                         static_cast<int>(s));
+          ConsiderInTurn(&shears[s], forces[member], t, static_cast<int>(s));
+        }
+        for (std::size_t l = first_floor; l < layout.levels.size(); ++l) {
+          ConsiderInTurn(&floor, acceleration[layout.levels[l].dofs[structure::kX]], t,
+                         static_cast<int>(l));
+        }
+        ConsiderInTurn(&first_story, forces[layout.stories[0].members[structure::kX]], t, -1);
+      }
+      const ResponsePeaks peaks = tracker.Peaks();
+      EXPECT_EQ(peaks.floor_acceleration.value, floor.value);
+      EXPECT_EQ(peaks.floor_acceleration.time, floor.time);
+      EXPECT_EQ(peaks.floor_acceleration.index, floor.index);
+      EXPECT_EQ(peaks.first_story_shear.value, first_story.value);
+      EXPECT_EQ(peaks.first_story_shear.time, first_story.time);
+      EXPECT_EQ(peaks.first_story_shear.index, -1);
       for (std::size_t s = 0; s < layout.stories.size(); ++s) {
-        const int member = layout.stories[s].members[structure::kX];
-        ConsiderInTurn(&drifts[s], structure.MemberDeformation(member, displacement), t,
-                       static_cast<int>(s));
-        ConsiderInTurn(&shears[s], forces[member], t, static_cast<int>(s));
+        SCOPED_TRACE(::testing::Message() << "story " << s);
+        EXPECT_EQ(peaks.story_drifts[s].value, drifts[s].value);
+        EXPECT_EQ(peaks.story_drifts[s].time, drifts[s].time);
+        EXPECT_EQ(peaks.story_shears[s].value, shears[s].value);
+        EXPECT_EQ(peaks.story_shears[s].time, shears[s].time);
       }
-      for (std::size_t l = 1; l < layout.levels.size(); ++l) {  // the floors: the base is not one
-        ConsiderInTurn(&floor, acceleration[layout.levels[l].dofs[structure::kX]], t,
-                       static_cast<int>(l));
-      }
-      ConsiderInTurn(&first_story, forces[layout.stories[0].members[structure::kX]], t, -1);
-    }
-    const ResponsePeaks peaks = tracker.Peaks();
-    EXPECT_EQ(peaks.floor_acceleration.value, floor.value);
-    EXPECT_EQ(peaks.floor_acceleration.time, floor.time);
-    EXPECT_EQ(peaks.floor_acceleration.index, floor.index);
-    EXPECT_EQ(peaks.first_story_shear.value, first_story.value);
-    EXPECT_EQ(peaks.first_story_shear.time, first_story.time);
-    EXPECT_EQ(peaks.first_story_shear.index, -1);
-    for (std::size_t s = 0; s < layout.stories.size(); ++s) {
-      SCOPED_TRACE(::testing::Message() << "story " << s);
-      EXPECT_EQ(peaks.story_drifts[s].value, drifts[s].value);
-      EXPECT_EQ(peaks.story_drifts[s].time, drifts[s].time);
-      EXPECT_EQ(peaks.story_shears[s].value, shears[s].value);
-      EXPECT_EQ(peaks.story_shears[s].time, shears[s].time);
     }
   }
 }

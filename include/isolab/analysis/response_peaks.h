@@ -106,14 +106,14 @@ class PeakTracker final : public integrators::ResponseObserver {
   ResponsePeaks peaks_;
   // The levels whose acceleration is a floor's, with their dofs along x and y.
   struct Floor {
-    int level = 0, x = 0, y = 0;
+    int level = 0, x = structure::kGround, y = structure::kGround;
   };
   std::vector<Floor> floors_;
   // Per story: where its member is a spring along x between two dofs (or from the ground), its
-  // force column and the dofs its drift u[plus] - u[minus] takes (minus < 0: the ground), read
+  // force column and the dofs its drift u[plus] - u[minus] takes (minus kGround: the ground), read
   // directly; column < 0 for any other story, which StoryDrift and StoryShear take.
   struct StoryTerms {
-    int column = -1, plus = -1, minus = -1;
+    int column = -1, plus = structure::kGround, minus = structure::kGround;
   };
   std::vector<StoryTerms> story_terms_;
   static StoryTerms DirectStoryTerms(const structure::Structure& structure,

@@ -65,6 +65,8 @@ struct Member {
   // d = u[dof_j] - u[dof_i] (dof_i may be kGround): a spring between two dofs, or to the ground.
   static Member Between(std::string name, int dof_i, int dof_j,
                         hysteresis::ParallelAssembly assembly);
+  // Whether the member is such a spring, whatever the order of its terms, and its dof_i, dof_j.
+  bool IsBetween(int* dof_i, int* dof_j) const;
 };
 
 // A bidirectional law on u = sum_k columns[k] q[dofs[k]]; terms on kGround are absent.
