@@ -8,8 +8,11 @@ Models: the five-story Table 9 building (models/buildings/five_story_table9.yaml
 isolab's seeded noise; every history streamed to a file in FOLDER (default: /dev/shm, tmpfs, so
 that the disk does not count) or only the summary (--summary-only) written there. The configurations run REPEAT times (default
 11), interleaved, so that a slow spell of a shared machine hits all of them; prints the minimum
-and the median per step. Also prints what the kernel alone takes to write as many bytes to the
-same folder (dd, less its own start), the floor of any file.
+and the median per step. Also prints what the kernel alone takes to write as many bytes to a
+new file in the same folder (dd, less its own start), the floor of any file. Then issue #48's
+measure: the five-story run at 60,000 steps, every history less summary-only, against dd of the
+file's bytes. Every file, isolab's and dd's, is new: one that replaced the last would be charged
+with freeing the old one's pages.
 
 Run by hand on a quiet machine; never in CI:
     benchmarks/output_cost.py [ISOLAB] [REPEAT] [FOLDER]
@@ -59,6 +62,51 @@ def cpu_seconds(command):
     return usage.ru_utime + usage.ru_stime
 
 
+def new_file_cpu(command, target):
+    """cpu_seconds of a command that writes `target`, made new: a run that replaced the last
+    one's file would also be charged with freeing its pages (at 30 MB on tmpfs, some 4 ms)."""
+    if os.path.exists(target):
+        os.remove(target)
+    return cpu_seconds(command)
+
+
+def new_file_dd(folder, size):
+    """dd of `size` bytes to a new file in `folder` in blocks of 64 KiB, and an empty dd (its own
+    start): (full, empty) CPU seconds. The kernel's write is the difference of their minima (or
+    medians), as the recording is the difference of the runs'."""
+    target = os.path.join(folder, "dd")
+    blocks = (size + 65535) // 65536
+    full = new_file_cpu(["dd", "if=/dev/zero", f"of={target}", "bs=64K", f"count={blocks}"],
+                        target)
+    return full, new_file_cpu(["dd", "if=/dev/zero", f"of={target}", "bs=64K", "count=0"], target)
+
+
+def recording_against_dd(five, out):
+    """Issue #48's measure: the five-story run at 60,000 steps (--dt 0.000715), the CPU of the run
+    with every history less the run summary-only, against dd of the file's bytes; every file new,
+    minima and medians of REPEAT interleaved rounds."""
+    run = [ISOLAB, "run", five, "--dt", "0.000715", "-q", "-o"]
+    every, summary, full, empty = [], [], [], []
+    for _ in range(REPEAT):
+        every.append(new_file_cpu(run + [os.path.join(out, "every.h5")],
+                                  os.path.join(out, "every.h5")))
+        summary.append(new_file_cpu(run + [os.path.join(out, "summary.h5"), "--summary-only"],
+                                    os.path.join(out, "summary.h5")))
+        dd = new_file_dd(out, os.path.getsize(os.path.join(out, "every.h5")))
+        full.append(dd[0])
+        empty.append(dd[1])
+    size = os.path.getsize(os.path.join(out, "every.h5"))
+    least = min(every) - min(summary)
+    middle = statistics.median(every) - statistics.median(summary)
+    kernel_least = min(full) - min(empty)
+    kernel_middle = statistics.median(full) - statistics.median(empty)
+    print(f"5 stories at 60,000 steps, {size / 1e6:.1f} MB: recording (every history less "
+          f"summary-only) min {least * 1e3:.1f} ms, median {middle * 1e3:.1f} ms; dd of the "
+          f"bytes to a new file min {kernel_least * 1e3:.1f} ms, median "
+          f"{kernel_middle * 1e3:.1f} ms; {least / kernel_least:.2f} times dd at the minima, "
+          f"{middle / kernel_middle:.2f} at the medians")
+
+
 def main():
     work = tempfile.mkdtemp(prefix="isolab_output_cost.")
     out = tempfile.mkdtemp(prefix="isolab_output_cost.", dir=FOLDER)
@@ -89,14 +137,11 @@ def main():
             for case, runs in cases.items():
                 for output, flags in outputs.items():
                     for length, model in runs.items():
-                        # A file of its own, gone before the run: replacing a file would charge
-                        # the run with freeing the old one.
                         target = os.path.join(out, f"{length}.h5")
-                        if os.path.exists(target):
-                            os.remove(target)
                         command = [ISOLAB, "run", *model, "--free-vibration", "0", "-q", "-o",
                                    target, *flags]
-                        times.setdefault((case, output, length), []).append(cpu_seconds(command))
+                        times.setdefault((case, output, length), []).append(
+                            new_file_cpu(command, target))
         print(f"isolab: {ISOLAB}; files in {out}; {REPEAT} repeats; per step, us "
               "(10,000-step run - 1-step run) / 9,999, user + system")
         for case, runs in cases.items():
@@ -106,11 +151,8 @@ def main():
                            stderr=subprocess.DEVNULL)
             size = os.path.getsize(os.path.join(out, "size.h5"))
 
-            def dd(megabytes):
-                return min(cpu_seconds(["dd", "if=/dev/zero", f"of={os.path.join(out, 'dd')}",
-                                        "bs=1M", f"count={megabytes}"]) for _ in range(REPEAT))
-
-            dd = dd(max(1, round(size / 2**20))) - dd(0)  # less dd's own start
+            full, empty = zip(*(new_file_dd(out, size) for _ in range(REPEAT)))
+            dd = min(full) - min(empty)
             line = f"{case}:"
             per_step = {}
             for output in outputs:
@@ -121,6 +163,7 @@ def main():
             extra = per_step["every history"] / per_step["summary only"] - 1
             print(f"{line}  (+{100 * extra:.0f} % at the minima); file {size / 2**20:.1f} MiB, "
                   f"dd of as many bytes {dd * 1e6 / (STEPS - 1):.3f} us a step")
+        recording_against_dd(five, out)
     finally:
         shutil.rmtree(work, ignore_errors=True)
         shutil.rmtree(out, ignore_errors=True)

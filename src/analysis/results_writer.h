@@ -28,9 +28,12 @@ class ResultsWriter final : public integrators::ResponseObserver {
   // Rows buffered when none are asked for: as many rows of the series as fit in kBufferBytes, at
   // least kMinBufferRows. Each block costs a call into HDF5 and a write per series (some 4,000
   // instructions and a system call); each page of the buffer costs a page fault once per run
-  // (2.4 us each on a 2-core VM: a 4 MiB buffer was 0.15 us of a five-story step of 1 us), and a
-  // buffer that stays in the processor's L2 cache is copied to the file from there.
-  static constexpr std::size_t kBufferBytes = std::size_t{512} << 10;
+  // (2.4 us each on a 2-core VM: a 4 MiB buffer was 0.15 us of a five-story step of 1 us). On
+  // that VM (1 MiB of L2 cache a core) recording every history of the five-story building cost
+  // 1.45-1.58 times the kernel's write of the file's bytes with 512 KiB, 1.36-1.53 with 1 MiB
+  // (docs/benchmarks.md). A block is its series' chunks: at 1 MiB, a chunk of a series of up to
+  // 2,048 columns fits the 1 MiB chunk cache HDF5 gives a reader by default.
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
   static constexpr std::size_t kMinBufferRows = 64;
 
   // kStreaming: the file is created at once and written block by block as the run goes.

@@ -77,6 +77,7 @@ bool TextLines::Next(std::string_view* line) {
   begin_ += length + (newline != nullptr ? 1 : 0);
   if (length > 0 && start[length - 1] == '\r') --length;
   if (length > max_length_) {
+    done_ = true;  // as the message says: a caller that goes on reads no part of this line
     throw InputError({path_, line_number_},
                      fmt::format("a line of more than {} characters: is this a text file of the "
                                  "expected kind? (the rest is not read)",

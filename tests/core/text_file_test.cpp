@@ -1,7 +1,7 @@
 // Bounded lines: a line up to the limit is read whole (with NUL bytes, CRLF endings and no final
 // newline), also where the reader's blocks split it; one past it is refused at its line number,
-// and a UTF-8 byte-order mark is dropped from the first line only; a whole file is refused over
-// its limit before it is read.
+// and nothing is read after it; a UTF-8 byte-order mark is dropped from the first line only; a
+// whole file is refused over its limit before it is read.
 #include "isolab/core/text_file.h"
 
 #include <gtest/gtest.h>
@@ -62,6 +62,8 @@ TEST(TextLines, ALineOverTheLimitIsRefusedAtItsNumber) {
                 std::string::npos)
           << error.what();
     }
+    // "The rest is not read": not the line's remainder, nor the lines after it.
+    EXPECT_FALSE(lines.Next(&line)) << "read after the refusal: " << line.substr(0, 20);
   }
 }
 

@@ -31,7 +31,8 @@ class TextLines {
 
   // The next line without its '\n' (nor a '\r' before it), without a UTF-8 byte-order mark on
   // the first line; false at the end of the file. Throws InputError at the line's number for a
-  // line longer than the limit, having read at most one buffer of it (the limit, or 64 KiB).
+  // line longer than the limit, having read at most one buffer of it (the limit, or 64 KiB);
+  // after that, false.
   bool Next(std::string* line);
   // The same line as a view into the reader's buffer, valid until the next call (no copy).
   bool Next(std::string_view* line);
