@@ -92,19 +92,39 @@ std::shared_ptr<RunResult> Run(const Model& model, const RunOptions& options) {
   return result;
 }
 
-// The history's own row-major storage of a series that is one of its matrices (or its time)
-// whole, so the array can view it; nullptr for a series computed from the rows.
-const double* StoredRows(const integrators::ResponseHistory& h, const analysis::Series& series) {
+// The history's own row-major storage of a series that is one of its matrices whole (what the
+// series' sources say: analysis::WholeArray), its time or its axial loads, so the array can view
+// it; nullptr for a series computed from the rows.
+const double* StoredRows(const RunResult& r, const analysis::Series& series) {
+  const integrators::ResponseHistory& h = r.response;
   const auto whole = [&](const integrators::RowMatrix& m) {
     return m.cols() == static_cast<Eigen::Index>(series.width()) ? m.data() : nullptr;
   };
-  if (series.name == "time") return h.time.data();
-  if (series.name == "displacement") return whole(h.displacement);
-  if (series.name == "velocity") return whole(h.velocity);
-  if (series.name == "acceleration") return whole(h.acceleration);
-  if (series.name == "absolute_acceleration") return whole(h.absolute_acceleration);
-  if (series.name == "connection_force") return whole(h.connection_force);
+  const std::vector<analysis::ColumnSource>& sources = series.sources;
+  if (sources.size() == 1 && !sources[0].sum && sources[0].array == analysis::RowArray::kScalars &&
+      sources[0].index == static_cast<int>(analysis::RowScalar::kTime)) {
+    return h.time.data();
+  }
+  // Computed, not read off (a row may come without axial loads), yet every bearing's in order.
   if (series.name == "isolator/axial_load") return whole(h.axial_load);
+  const std::optional<analysis::RowArray> array = analysis::WholeArray(series, r.problem.structure);
+  if (!array) return nullptr;
+  switch (*array) {
+    case analysis::RowArray::kDisplacement:
+      return whole(h.displacement);
+    case analysis::RowArray::kVelocity:
+      return whole(h.velocity);
+    case analysis::RowArray::kAcceleration:
+      return whole(h.acceleration);
+    case analysis::RowArray::kAbsoluteAcceleration:
+      return whole(h.absolute_acceleration);
+    case analysis::RowArray::kConnectionForce:
+      return whole(h.connection_force);
+    case analysis::RowArray::kLawForce:
+      return whole(h.law_force);
+    case analysis::RowArray::kScalars:
+      return nullptr;  // the energies are stored as structs
+  }
   return nullptr;
 }
 
@@ -114,7 +134,7 @@ py::array SeriesArray(const std::shared_ptr<RunResult>& result, const analysis::
   const integrators::ResponseHistory& history = result->response;
   const py::ssize_t rows = history.rows_written;
   const py::ssize_t width = series.columns.empty() ? 0 : py::ssize_t(series.width());
-  if (const double* stored = StoredRows(history, series)) {
+  if (const double* stored = StoredRows(*result, series)) {
     return View(py::cast(result), stored, rows, width);
   }
   std::vector<py::ssize_t> shape = {rows};

@@ -319,6 +319,37 @@ RowArrays::RowArrays(const integrators::ResponseRow& row)
               row.law_force.data(),
               scalars_.data()} {}
 
+std::size_t RowArrayWidth(RowArray array, const structure::Structure& structure) {
+  switch (array) {
+    case RowArray::kDisplacement:
+    case RowArray::kVelocity:
+    case RowArray::kAcceleration:
+    case RowArray::kAbsoluteAcceleration:
+      return static_cast<std::size_t>(structure.dofs());
+    case RowArray::kConnectionForce:
+      return structure.force_columns();
+    case RowArray::kLawForce:
+      return structure.law_count();
+    case RowArray::kScalars:
+      return kRowScalars;
+  }
+  return 0;
+}
+
+std::optional<RowArray> WholeArray(const Series& series, const structure::Structure& structure) {
+  const std::vector<ColumnSource>& sources = series.sources;
+  if (sources.empty() || sources.size() != RowArrayWidth(sources[0].array, structure)) {
+    return std::nullopt;
+  }
+  for (std::size_t c = 0; c < sources.size(); ++c) {
+    if (sources[c].sum || sources[c].array != sources[0].array ||
+        sources[c].index != static_cast<int>(c)) {
+      return std::nullopt;
+    }
+  }
+  return sources[0].array;
+}
+
 std::vector<int> SelectedLevels(const model::OutputSelection& selection,
                                 const structure::Layout& layout, const std::string& key) {
   const int levels = static_cast<int>(layout.levels.size());

@@ -7,23 +7,6 @@
 namespace isolab::analysis {
 namespace {
 
-std::size_t ArrayWidth(RowArray array, const structure::Structure& structure) {
-  switch (array) {
-    case RowArray::kDisplacement:
-    case RowArray::kVelocity:
-    case RowArray::kAcceleration:
-    case RowArray::kAbsoluteAcceleration:
-      return static_cast<std::size_t>(structure.dofs());
-    case RowArray::kConnectionForce:
-      return structure.force_columns();
-    case RowArray::kLawForce:
-      return structure.law_count();
-    case RowArray::kScalars:
-      return kRowScalars;
-  }
-  return 0;
-}
-
 // `count` values from `in` to `out`, two at a time: GCC makes a plain copy loop a call to memmove,
 // which costs more than the copy for the few values of most arrays' rows and runs.
 [[gnu::always_inline]] inline void CopyFew(const double* __restrict in, std::size_t count,
@@ -37,25 +20,13 @@ std::size_t ArrayWidth(RowArray array, const structure::Structure& structure) {
   if (k < count) out[k] = in[k];
 }
 
-// The series is the array whole, in order.
-bool IsWhole(const std::vector<ColumnSource>& sources, std::size_t width) {
-  if (sources.size() != width) return false;
-  for (std::size_t c = 0; c < sources.size(); ++c) {
-    if (sources[c].sum || sources[c].array != sources[0].array ||
-        sources[c].index != static_cast<int>(c)) {
-      return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 std::size_t RowStage::StagedIndex(RowArray array, const structure::Structure& structure) {
   for (std::size_t k = 0; k < staged_.size(); ++k) {
     if (staged_[k].array == array) return k;
   }
-  staged_.push_back({array, ArrayWidth(array, structure), {}});
+  staged_.push_back({array, RowArrayWidth(array, structure), {}});
   return staged_.size() - 1;
 }
 
@@ -72,7 +43,7 @@ RowStage::RowStage(std::span<const Series> series, const structure::Structure& s
     }
   }
   const auto staged = [&](RowArray array) {
-    return 2 * reads[static_cast<std::size_t>(array)] >= ArrayWidth(array, structure);
+    return 2 * reads[static_cast<std::size_t>(array)] >= RowArrayWidth(array, structure);
   };
   for (std::uint32_t s = 0; s < series.size(); ++s) {
     const std::vector<ColumnSource>& sources = series[s].sources;
@@ -84,8 +55,8 @@ RowStage::RowStage(std::span<const Series> series, const structure::Structure& s
       computed_.push_back(s);
       continue;
     }
-    if (IsWhole(sources, ArrayWidth(sources[0].array, structure))) {
-      whole_[s] = static_cast<int>(StagedIndex(sources[0].array, structure));
+    if (const std::optional<RowArray> whole = WholeArray(series[s], structure)) {
+      whole_[s] = static_cast<int>(StagedIndex(*whole, structure));
       continue;
     }
     for (std::uint32_t c = 0; c < sources.size(); ++c) {

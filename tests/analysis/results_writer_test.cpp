@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -277,6 +278,28 @@ TEST_P(EveryHistory, IsItsSeriesFillOfTheRows) {
   selection.levels = param.levels;
   const std::vector<Series> series = ResultSeries(setup, selection);
   ASSERT_FALSE(series.empty());
+  // A series that is an array of the row whole (WholeArray: the writer stores it as that array's
+  // rows, the Python module views the history's matrix) is that array, row by row. Every level
+  // of a structure without rotations gives the displacements whole; a choice of levels, or a
+  // plan's rotations (a series of their own), leave them not whole.
+  for (const Series& s : series) {
+    const std::optional<RowArray> whole = WholeArray(s, setup.structure);
+    if (!whole) continue;
+    EXPECT_NE(*whole, RowArray::kScalars) << s.name;
+    std::vector<double> filled_row(s.width());
+    for (int r = 0; r < rows; ++r) {
+      const integrators::ResponseRow row = history.Row(r);
+      s.fill(row, filled_row.data());
+      const RowArrays arrays(row);
+      ExpectBitwiseEqual(filled_row, {arrays[*whole], arrays[*whole] + s.width()},
+                         s.name + " as its whole array, row " + std::to_string(r));
+    }
+  }
+  const auto displacement = std::find_if(series.begin(), series.end(),
+                                         [](const Series& s) { return s.name == "displacement"; });
+  ASSERT_NE(displacement, series.end());
+  EXPECT_EQ(WholeArray(*displacement, setup.structure).has_value(),
+            param.levels.empty() && !setup.layout.rotations);
   // Each series' fill of every `every`-th row.
   const auto filled = [&](const Series& s, int every) {
     std::vector<double> values, row_values(s.width());

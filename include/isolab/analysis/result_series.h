@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -93,6 +94,13 @@ struct Series {
 
   std::size_t width() const { return columns.empty() ? 1 : columns.size(); }
 };
+
+// The entries a row of a run of `structure` has in `array`.
+std::size_t RowArrayWidth(RowArray array, const structure::Structure& structure);
+
+// The array of the row that `series` is, whole and in order (every entry, one a column, none
+// summed), if it is one: its rows may then be stored, or viewed, as that array's.
+std::optional<RowArray> WholeArray(const Series& series, const structure::Structure& structure);
 
 // The selection's levels as indices into the layout's levels (ascending, no repeats; every level
 // when none are selected): 0 is the base (an SDOF's mass) when the structure stands on one, else
