@@ -2,7 +2,8 @@
 //  * an SDOF on one THM1 isolator, 10,000 steps (target <= 0.2 us per step);
 //  * the five-story building on the nine-component Table 9 isolator (target <= 1 us per step),
 //    and the same arithmetic written by hand for that one model (newmark_floor.h), the floor
-//    the general code is measured against;
+//    the general code is measured against; the same pair for the five-story building of the
+//    side-by-side comparison with OpenSees (a BHM2 isolator, stories of a spring and a dashpot);
 //  * an isolated shear building of 5 to 1000 stories (Rayleigh damping keeps the tangent sparse),
 //    on the Table 9 isolator and on a linear isolator that never yields, for the growth of the
 //    cost with size;
@@ -30,6 +31,7 @@
 
 #include "isolab/analysis/synthetic_motion.h"
 #include "isolab/hysteresis/law_parameters.h"
+#include "isolab/hysteresis/parallel_slider.h"
 #include "isolab/integrators/ida.h"
 #include "isolab/integrators/newmark.h"
 #include "isolab/model/model_file.h"
@@ -44,16 +46,15 @@ namespace {
 using hysteresis::LawType;
 using hysteresis::ParallelAssembly;
 
-// 100 s of filtered noise at 0.01 s, PGA 0.35 g, in mm/s^2.
-Excitation Noise() {
+// 100 s of filtered noise at 0.01 s, PGA 0.35 g, in mm/s^2 (or, with g = 9.80665, in m/s^2).
+Excitation Noise(double g = 9806.65) {
   analysis::FilteredNoiseSpec spec;
   spec.duration = 100.0;
   spec.pga = 0.35;
   const io::Record record = analysis::FilteredNoiseRecord(spec);
   Excitation excitation = Excitation::Uniform({});
   excitation.ground[0].acceleration.dt = record.dt;
-  for (const double a : record.values)
-    excitation.ground[0].acceleration.values.push_back(a * 9806.65);
+  for (const double a : record.values) excitation.ground[0].acceleration.values.push_back(a * g);
   return excitation;
 }
 
@@ -122,6 +123,39 @@ void BM_FiveStoryTable9(benchmark::State& state) {
   RunSteps(state, IsolatedBuilding(5, Table9()), 6000);
 }
 
+// Times a hand-written floor (newmark_floor.h) over `steps` steps of `excitation`, once its
+// response has been checked against RunNewmark's on `building`: the same numbers of solves and
+// factorisations, and displacements within 1e-9 of the peak.
+template <class Floor>
+void TimeFloor(benchmark::State& state, Floor& floor, const structure::Structure& building,
+               const Excitation& excitation, int steps) {
+  typename Floor::Output output;
+  long solves = floor.Run(excitation.ground[0].acceleration, 0.01, steps, &output);
+  ResponseHistory response;
+  const RunSummary summary = RunNewmark(building, excitation, {0.01, steps}, {}, &response);
+  const double peak = response.displacement.cwiseAbs().maxCoeff();
+  for (int row = 0; row <= steps; ++row) {
+    for (int i = 0; i < Floor::kDofs; ++i) {
+      if (std::abs(output.displacement[row * Floor::kDofs + i] - response.displacement(row, i)) >
+          1e-9 * peak) {
+        state.SkipWithError("the floor's response differs from RunNewmark's");
+        return;
+      }
+    }
+  }
+  if (solves != summary.newton_iterations) {
+    state.SkipWithError("the floor makes a different number of solves than RunNewmark");
+    return;
+  }
+  if (floor.factorisations() != summary.factorisations) {
+    state.SkipWithError("the floor factorises a different number of times than RunNewmark");
+    return;
+  }
+  solves = 0;
+  for (auto _ : state) solves += floor.Run(excitation.ground[0].acceleration, 0.01, steps, &output);
+  CountSteps(state, steps, solves);
+}
+
 // The hand-written floor on the same model, record and step, factorising with `Solver`
 // (newmark_floor.h); its response must be RunNewmark's.
 template <template <int> class Solver>
@@ -146,30 +180,7 @@ void FiveStoryTable9Floor(benchmark::State& state) {
     for (int j = 0; j < Floor::kDofs; ++j) damping[i][j] = c(i, j);
   }
   Floor floor(mass, damping, isolator, stories);
-  const Excitation excitation = Noise();
-  typename Floor::Output output;
-  long solves = floor.Run(excitation.ground[0].acceleration, 0.01, kSteps, &output);
-
-  ResponseHistory response;
-  const RunSummary summary = RunNewmark(building, excitation, {0.01, kSteps}, {}, &response);
-  const double peak = response.displacement.cwiseAbs().maxCoeff();
-  for (int row = 0; row <= kSteps; ++row) {
-    for (int i = 0; i < Floor::kDofs; ++i) {
-      if (std::abs(output.displacement[row * Floor::kDofs + i] - response.displacement(row, i)) >
-          1e-9 * peak) {
-        state.SkipWithError("the floor's response differs from RunNewmark's");
-        return;
-      }
-    }
-  }
-  if (solves != summary.newton_iterations) {
-    state.SkipWithError("the floor makes a different number of solves than RunNewmark");
-    return;
-  }
-  solves = 0;
-  for (auto _ : state)
-    solves += floor.Run(excitation.ground[0].acceleration, 0.01, kSteps, &output);
-  CountSteps(state, kSteps, solves);
+  TimeFloor(state, floor, building, Noise(), kSteps);
 }
 
 // The floor as written by hand: a dense LDL^T of the 6 x 6 tangent.
@@ -180,6 +191,65 @@ void BM_FiveStoryTable9Floor(benchmark::State& state) {
 // The floor with RunNewmark's KLU: what is left between the two is the cost of generality.
 void BM_FiveStoryTable9FloorKlu(benchmark::State& state) {
   FiveStoryTable9Floor<benchmarks::KluDense>(state);
+}
+
+// The five-story building of the side-by-side comparison with OpenSees
+// (benchmarks/opensees_side_by_side.sh; the peers' shear_building.tcl): 100 t a level, stories of
+// a linear spring and a dashpot (stiffness-proportional damping on the story drifts), one BHM2
+// isolator; kN, m, s. Run for 10,000 steps of Noise() in m/s^2.
+constexpr double kTwinStoryStiffness = 100000.0, kTwinStoryDashpot = 1111.0147397616761;
+constexpr int kTwinSteps = 10000;
+
+Excitation TwinNoise() { return Noise(9.80665); }
+
+structure::Structure OpenSeesTwin() {
+  structure::ShearBuilding building;
+  using hysteresis::LawParameters, hysteresis::ParameterForm;
+  const auto law = [](LawType type, std::vector<double> values) {
+    return LawParameters::Make(type, ParameterForm::kMathematical, std::move(values));
+  };
+  for (int i = 0; i < 5; ++i) {
+    building.stories.push_back(
+        {"story", 100.0, 3.0,
+         ParallelAssembly({{"k", law(LawType::kLinearSpring, {kTwinStoryStiffness})},
+                           {"c", law(LawType::kDashpot, {kTwinStoryDashpot})}})});
+  }
+  building.isolated = true;
+  building.base_mass = 100.0;
+  building.isolation =
+      Single(LawType::kBhm2, {37899.280900183134, 3789.9280900183135, 0.0077653188400885441});
+  return structure::BuildShearBuilding(building).structure;
+}
+
+// The hand-written floor of the OpenSees twin's step: its story dashpots as the dense damping
+// matrix (the same forces on the dofs, but its recorded story and law forces leave the dashpots
+// out), full Newton and a dense LDL^T. Its response must be RunNewmark's. The floor records its
+// rows in memory and tracks no peaks: what isolab's `run` adds beyond it with every history is
+// the peaks, the file and its rows.
+void BM_FiveStoryTwinFloor(benchmark::State& state) {
+  const structure::Structure building = OpenSeesTwin();
+  const auto& members = building.members();
+  using Isolator = hysteresis::ParallelSlider;  // BHM2's kernel
+  std::array<Isolator, 1> isolator{std::get<Isolator>(members[0].assembly.kernels()[0])};
+  std::array<hysteresis::ElasticSpring, 5> stories;
+  using Floor = benchmarks::NewmarkFloor<5, 1, benchmarks::DenseLdlt, Isolator>;
+  typename Floor::Vector mass;
+  typename Floor::Matrix damping{};
+  for (int s = 0; s < 5; ++s) {
+    stories[s] = std::get<hysteresis::ElasticSpring>(members[s + 1].assembly.kernels()[0]);
+    damping[s][s] += kTwinStoryDashpot;
+    damping[s + 1][s + 1] += kTwinStoryDashpot;
+    damping[s][s + 1] -= kTwinStoryDashpot;
+    damping[s + 1][s] -= kTwinStoryDashpot;
+  }
+  for (int i = 0; i < Floor::kDofs; ++i) mass[i] = building.mass()[i];
+  Floor floor(mass, damping, isolator, stories);
+  TimeFloor(state, floor, building, TwinNoise(), kTwinSteps);
+}
+
+// RunNewmark on the twin, every output recorded in memory (ResponseHistory), as the floor records.
+void BM_FiveStoryTwin(benchmark::State& state) {
+  RunSteps(state, OpenSeesTwin(), kTwinSteps, TwinNoise());
 }
 
 void BM_StoriesTable9(benchmark::State& state) {
@@ -381,6 +451,8 @@ BENCHMARK(BM_FiveStoryTable9)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryDevice)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Floor)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9FloorKlu)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryTwin)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FiveStoryTwinFloor)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FiveStoryTable9Ida)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StoriesTable9)
     ->Arg(5)
