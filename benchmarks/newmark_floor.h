@@ -160,10 +160,10 @@ class NewmarkFloor {
         }
         // Factorised again only when the tangent's values changed, bit for bit, as
         // RunNewmark's TangentSolver does.
-        if (!factored_ || std::memcmp(&tangent, &factored_tangent_, sizeof(Matrix)) != 0) {
+        if (factorisations_ == 0 ||
+            std::memcmp(&tangent, &factored_tangent_, sizeof(Matrix)) != 0) {
           solver_.Factor(tangent);
           factored_tangent_ = tangent;
-          factored_ = true;
           ++factorisations_;
         }
         solver_.Solve(&residual_);
@@ -188,7 +188,6 @@ class NewmarkFloor {
     for (int i = 0; i < kDofs; ++i) load_[i] = -ground.At(0.0) * mass_[i];
     for (int i = 0; i < kDofs; ++i) a_[i] = load_[i] / mass_[i];
     committed_ = trial_ = std::array<hysteresis::LawState, kLaws>{};
-    factored_ = false;
     factorisations_ = 0;
     input_ = viscous_energy_ = 0.0;
     const std::size_t rows = steps + 1;
@@ -299,8 +298,7 @@ class NewmarkFloor {
   }
 
   Solver<kDofs> solver_;
-  Matrix factored_tangent_{};
-  bool factored_ = false;
+  Matrix factored_tangent_{};  // the tangent last factorised, once factorisations_ > 0
   long factorisations_ = 0;
   Vector mass_;
   Matrix damping_;
